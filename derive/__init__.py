@@ -1,0 +1,26 @@
+"""SymPy derivations of the paper's results, one module per step, and the code generator.
+
+Run ``python -m derive`` from the checkout to re-derive everything and rewrite ``generated/``;
+``python -m derive --check`` regenerates in memory and fails with a diff when ``generated/``
+differs.  Import a step and call ``derive()`` to get its :class:`~derive.board.Board`.
+"""
+
+from __future__ import annotations
+
+import importlib
+
+#: The derivation steps in lecture order (module names under ``derive/``).
+STEPS = (
+    "ritz",
+    "contact_fits",
+    "harmonic_balance",
+    "lindstedt",
+    "multiple_scales",
+    "closed_forms",
+    "free_flight",
+)
+
+
+def board(step: str):
+    """Run one derivation step and return its board."""
+    return importlib.import_module(f"derive.{step}").derive()

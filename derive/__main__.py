@@ -1,0 +1,107 @@
+"""``python -m derive [--check] [--steps ...]``: re-derive everything and write ``generated/``.
+
+Prints one row per derived result (name, paper equation, check status, time).  With ``--check``
+nothing is written: the files are regenerated in memory and compared with ``generated/``; any
+difference, missing or stale file is shown as a unified diff and the exit status is 1.
+"""
+
+from __future__ import annotations
+
+import argparse
+import difflib
+import sys
+import time
+from pathlib import Path
+
+from . import STEPS, board
+from .codegen import render_errata, render_module, render_package_init, render_template
+
+ROOT = Path(__file__).resolve().parent.parent
+GENERATED = ROOT / "generated"
+
+
+def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True):
+    """Run the steps; return ({relative path: text}, [boards], all checks passed)."""
+    boards = []
+    ok = True
+    if verbose:
+        print(f"{'result':<52} {'paper Eq.':<10} {'status':<13} {'time':>8}")
+        print("-" * 86)
+    for step in steps:
+        t0 = time.perf_counter()
+        b = board(step)
+        boards.append(b)
+        for c in b.checks:
+            ok &= c.ok
+            if verbose:
+                print(f"{c.name[:52]:<52} {c.equation:<10} {c.status:<13} {c.seconds:>7.2f}s")
+                if not c.ok:
+                    print(f"    {c.detail}")
+        if verbose:
+            print(f"{'  = step ' + step:<52} {b.equations:<10} {'':<13} "
+                  f"{time.perf_counter() - t0:>7.2f}s")
+    files = {f"{b.module}.py": render_module(b) for b in boards}
+    files["_broadcast.py"] = render_template("broadcast.py.j2")
+    files["__init__.py"] = render_package_init(boards)
+    files["errata.md"] = render_errata(boards)
+    return files, boards, ok
+
+
+def compare(files: dict[str, str], folder: Path = GENERATED) -> list[str]:
+    """Unified diffs between ``files`` and the folder (missing and stale files included)."""
+    diffs = []
+    present = {p.name for p in folder.iterdir() if p.is_file()} if folder.exists() else set()
+    for name in sorted(set(files) | present):
+        if name.startswith(".") or name.endswith(".pyc"):
+            continue
+        old = (folder / name).read_text() if name in present else ""
+        new = files.get(name, "")
+        if old != new:
+            diffs.extend(
+                difflib.unified_diff(
+                    old.splitlines(keepends=True),
+                    new.splitlines(keepends=True),
+                    f"generated/{name}" if name in present else "/dev/null",
+                    f"generated/{name} (regenerated)" if name in files else "/dev/null",
+                )
+            )
+    return diffs
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m derive", description=__doc__)
+    parser.add_argument("--check", action="store_true",
+                        help="regenerate in memory; exit 1 with a diff if generated/ differs")
+    parser.add_argument("--quiet", action="store_true", help="print no summary table")
+    args = parser.parse_args(argv)
+    t0 = time.perf_counter()
+    files, boards, ok = generate(verbose=not args.quiet)
+    n_errata = sum(len(b.errata) for b in boards)
+    n_kernels = sum(len(b.kernels) for b in boards)
+    print(f"\n{len(boards)} steps, {n_kernels} kernels, {n_errata} errata; "
+          f"derived in {time.perf_counter() - t0:.1f}s")
+    if not ok:
+        print("some derivation checks FAILED", file=sys.stderr)
+    if args.check:
+        diffs = compare(files)
+        if diffs:
+            sys.stdout.writelines(diffs)
+            print("\ngenerated/ is out of date: run `python -m derive`", file=sys.stderr)
+            return 1
+        print("generated/ is up to date")
+        return 0 if ok else 1
+    GENERATED.mkdir(exist_ok=True)
+    for name in {p.name for p in GENERATED.iterdir() if p.is_file()} - set(files):
+        if name.endswith((".py", ".md")):
+            (GENERATED / name).unlink()
+            print(f"removed stale generated/{name}")
+    for name, text in sorted(files.items()):
+        path = GENERATED / name
+        if not path.exists() or path.read_text() != text:
+            path.write_text(text)
+            print(f"wrote generated/{name}")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

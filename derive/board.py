@@ -1,0 +1,157 @@
+"""The blackboard every derivation step writes on.
+
+A step is a plain function that builds a :class:`Board` top to bottom: it *writes* named
+intermediate results (SymPy objects with a sentence of explanation and the paper's equation
+number), *checks* each result against something independent, records every place where the
+paper's printed equation differs from the derivation (*errata*), and declares the *kernels* to
+emit into ``generated/``.  Documentation renders ``board.lines`` in order; ``python -m derive``
+prints ``board.checks`` as the summary table.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+
+
+@dataclass(frozen=True)
+class Line:
+    """One line on the board: a named intermediate result."""
+
+    name: str
+    value: Any
+    text: str
+    equation: str | None
+
+
+@dataclass(frozen=True)
+class Check:
+    """One row of the summary table."""
+
+    name: str
+    equation: str
+    ok: bool
+    detail: str
+    seconds: float
+    erratum: bool = False
+
+    @property
+    def status(self) -> str:
+        if not self.ok:
+            return "FAIL"
+        return "ok (erratum)" if self.erratum else "ok"
+
+
+@dataclass(frozen=True)
+class Erratum:
+    """A place where the printed equation differs from the derivation.
+
+    ``printed`` and ``derived`` are SymPy expressions in the same symbols; ``point`` is a
+    substitution at which they evaluate to different numbers (so a test can prove that the
+    difference is real and has not silently disappeared).
+    """
+
+    key: str
+    equation: str
+    what: str
+    printed: sp.Basic
+    derived: sp.Basic
+    consequence: str
+    point: dict = field(default_factory=dict)
+
+    def differs(self) -> bool:
+        """True when the printed and derived forms differ numerically at ``point``."""
+        p = sp.N(sp.sympify(self.printed).subs(self.point), 30)
+        d = sp.N(sp.sympify(self.derived).subs(self.point), 30)
+        return bool(abs(p - d) > 1e-20 * (1 + abs(d)))
+
+
+@dataclass(frozen=True)
+class Arg:
+    """A kernel argument: the SymPy symbol, its SI unit, a description and a physical range.
+
+    ``low``/``high`` bound the random points the tests draw (log-uniform when ``log``).
+    """
+
+    symbol: sp.Symbol
+    unit: str
+    doc: str
+    low: float
+    high: float
+    log: bool = False
+
+    @property
+    def name(self) -> str:
+        return self.symbol.name
+
+
+@dataclass(frozen=True)
+class Kernel:
+    """A function to emit: ``name(*args) -> expr`` evaluated with NumPy, broadcasting."""
+
+    name: str
+    args: tuple[Arg, ...]
+    expr: sp.Expr
+    returns: str
+    unit: str
+    equation: str
+    lhs: str
+    note: str = ""
+    printed: bool = False
+    constraints: tuple[sp.Basic, ...] = ()
+
+
+@dataclass(frozen=True)
+class Constant:
+    """A module-level numeric constant of a generated file (computed, never typed in)."""
+
+    name: str
+    values: tuple[str, ...]
+    doc: str
+    digits: tuple[str, ...] = ()
+
+
+class Board:
+    """An ordered record of one derivation step."""
+
+    def __init__(self, module: str, title: str, equations: str) -> None:
+        self.module = module
+        self.title = title
+        self.equations = equations
+        self.lines: list[Line] = []
+        self.checks: list[Check] = []
+        self.errata: list[Erratum] = []
+        self.kernels: list[Kernel] = []
+        self.constants: list[Constant] = []
+        self.values: dict[str, Any] = {}
+        self._clock = time.perf_counter()
+
+    def write(self, name: str, value: Any, text: str = "", equation: str | None = None) -> Any:
+        """Write a named intermediate result on the board and return it unchanged."""
+        self.lines.append(Line(name, value, text, equation))
+        self.values[name] = value
+        return value
+
+    def check(self, name: str, equation: str, ok: bool, detail: str = "", erratum: bool = False):
+        """Record a checked result; the time is the wall time since the previous check."""
+        now = time.perf_counter()
+        self.checks.append(Check(name, equation, bool(ok), detail, now - self._clock, erratum))
+        self._clock = now
+
+    def erratum(self, **kwargs: Any) -> Erratum:
+        e = Erratum(**kwargs)
+        self.errata.append(e)
+        return e
+
+    def kernel(self, **kwargs: Any) -> Kernel:
+        k = Kernel(**kwargs)
+        self.kernels.append(k)
+        return k
+
+    def constant(self, **kwargs: Any) -> Constant:
+        c = Constant(**kwargs)
+        self.constants.append(c)
+        return c
