@@ -66,6 +66,10 @@ class Erratum:
         """True when the printed and derived forms differ numerically at ``point``."""
         p = sp.N(sp.sympify(self.printed).subs(self.point), 30)
         d = sp.N(sp.sympify(self.derived).subs(self.point), 30)
+        if not d.is_finite:
+            raise ValueError(f"erratum {self.key}: derived form not finite at its point")
+        if not p.is_finite:  # the printed form breaks down (e.g. 0/0) where the derived does not
+            return True
         return bool(abs(p - d) > 1e-20 * (1 + abs(d)))
 
 
