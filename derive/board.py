@@ -105,7 +105,11 @@ class Kernel:
     lhs: str
     note: str = ""
     printed: bool = False
+    #: Inequalities (SymPy relationals in the arguments) a physical point must satisfy.
     constraints: tuple[sp.Basic, ...] = ()
+    #: For oscillating results: the amplitude against which rounding near a zero crossing is
+    #: judged (the test's error bound is rtol·(|value| + |magnitude|)).
+    magnitude: sp.Expr | None = None
 
 
 @dataclass(frozen=True)

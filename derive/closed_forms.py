@@ -102,6 +102,7 @@ def derive() -> Board:
     ahz = Arg(k_hz, "N/m^1.5", "Hertz contact stiffness K_Hz", 10.0, 1e10, log=True)
     ak1 = Arg(k1, "N/m", "Linear contact stiffness k₁", 10.0, 1e7, log=True)
     ac1 = Arg(c1, "N s/m", "Contact damping c₁ (below critical)", 0.0, 0.5)
+    underdamped = 4 * m * M * k1 - c1**2 * (m + M) > 0
     board.kernel(name="hertz_contact_duration", args=(am, aM, ahz, av), expr=T_hertz,
                  returns="Hertz contact duration", unit="s", equation="34",
                  lhs=r"T_{CD}^{(Hertz)}")
@@ -113,8 +114,8 @@ def derive() -> Board:
                  equation="34", lhs="z_m")
     board.kernel(name="linear_contact_duration", args=(am, aM, ak1, ac1), expr=T_lin,
                  returns="Linear damped contact duration", unit="s", equation="35",
-                 lhs=r"T_{CD}^{(Linear)}")
+                 lhs=r"T_{CD}^{(Linear)}", constraints=(underdamped,))
     board.kernel(name="linear_restitution", args=(am, aM, ak1, ac1), expr=e_lin,
                  returns="Coefficient of restitution of the linear damped contact", unit="1",
-                 equation="35", lhs="e")
+                 equation="35", lhs="e", constraints=(underdamped,))
     return board

@@ -58,15 +58,19 @@ def derive() -> Board:
     ax = Arg(x0, "m", "Main-mass displacement at t = 0", -1e-2, 1e-2)
     axd = Arg(xd0, "m/s", "Main-mass velocity at t = 0", -1.0, 1.0)
     args = (at, aM, aK, aC, ax, axd)
+    amp = sp.sqrt(x0**2 + ((xd0 + sigma * x0) / wd_value) ** 2)
     board.kernel(name="main_mass_displacement", args=args, expr=x_t,
                  returns="Main-mass displacement x(t) in free flight", unit="m", equation="7",
-                 lhs="x(t)")
+                 lhs="x(t)", magnitude=amp * sp.exp(-sigma * t))
     board.kernel(name="main_mass_velocity", args=args, expr=xd_t,
                  returns="Main-mass velocity ẋ(t) in free flight", unit="m/s", equation="7",
-                 lhs=r"\dot{x}(t)")
+                 lhs=r"\dot{x}(t)", magnitude=amp * sp.sqrt(K / M) * sp.exp(-sigma * t))
+    board.kernel(name="impact_mass_velocity", args=(at, Arg(yd0, "m/s", "Impact-mass velocity", -1.0, 1.0)),
+                 expr=sp.diff(y_t, t) + 0 * t, returns="Impact-mass velocity ẏ(t) in free flight",
+                 unit="m/s", equation="7", lhs=r"\dot{y}(t)")
     board.kernel(name="impact_mass_displacement",
                  args=(at, Arg(y0, "m", "Impact-mass displacement at t = 0", -1e-2, 1e-2),
                        Arg(yd0, "m/s", "Impact-mass velocity at t = 0", -1.0, 1.0)),
                  expr=y_t, returns="Impact-mass displacement y(t) in free flight", unit="m",
-                 equation="7", lhs="y(t)")
+                 equation="7", lhs="y(t)", magnitude=abs(y0) + abs(yd0) * t)
     return board

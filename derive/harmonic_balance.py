@@ -87,8 +87,10 @@ def derive() -> Board:
     eps = w("epsilon_in_R", duffing_lhs.coeff(xs, 3), "Coefficient of x³.", "15")
     board.check("Duffing form (no other powers of x)", "14",
                 sp.expand(duffing_lhs - omega0_sq * xs - eps * xs**3) == 0)
-    omega0_sq_w = w("omega0_squared", omega0_sq.subs(R, ratio), "ω₀² with Eq. 13.", "15")
-    eps_w = w("epsilon", eps.subs(R, ratio), "ε with Eq. 13.", "15")
+    # factor() writes 1 − B/A as ((M + m)ω² − K)/(mω²): one subtraction instead of two.
+    omega0_sq_w = w("omega0_squared", sp.factor(omega0_sq.subs(R, ratio)), "ω₀² with Eq. 13.",
+                    "15")
+    eps_w = w("epsilon", sp.factor(eps.subs(R, ratio)), "ε with Eq. 13.", "15")
     printed15 = (
         K / M + b / M * (1 - (K - M * omega**2) / (m * omega**2)),
         a / M * (1 - (K - M * omega**2) / (m * omega**2)) ** 3,
@@ -130,13 +132,22 @@ def derive() -> Board:
     board.kernel(name="duffing_epsilon", args=(aK, aM, am, aa, aw), expr=eps_w,
                  returns="Cubic coefficient ε of the main-mass Duffing equation",
                  unit="1/(m^2 s^2)", equation="15", lhs=r"\varepsilon")
+    # On the linear modes either balance gives B/A; the impact-mass one, b/(b − mω²), has no
+    # cancellation on the upper mode, Eq. 13 none on the lower one.
+    ratio_12_2 = w("amplitude_ratio_impact_balance", sp.solve(bal2.subs(a, 0), B)[0] / A,
+                   "a = 0: B/A from the impact-mass balance alone.", "12")
+    pt = {K: 566111, M: 3, m: 3, b: sp.Rational(11, 2)}
+    board.check("both balances give the same B/A on the linear modes", "12–13", all(
+        abs(sp.N((ratio - ratio_12_2).subs(omega, sp.sqrt(root)).subs(pt), 30)) < 1e-25
+        for root in (w_low, w_high)))
+    forms = {"in_phase": ratio, "out_of_phase": ratio_12_2}
     for name, root, what in (("in_phase", w_low, "in phase (B/A > 0)"),
                              ("out_of_phase", w_high, "in opposition (B/A < 0), the impact mode")):
         board.kernel(name=f"linear_frequency_squared_{name}", args=(aK, aM, am, ab), expr=root,
                      returns=f"ω² of the linear (a = 0) coupled mode with the masses {what}",
                      unit="rad^2/s^2", equation="12–13", lhs=r"\omega^2")
         board.kernel(name=f"linear_amplitude_ratio_{name}", args=(aK, aM, am, ab),
-                     expr=ratio.subs(omega, sp.sqrt(root)),
+                     expr=forms[name].subs(omega, sp.sqrt(root)),
                      returns=f"B/A of the linear (a = 0) coupled mode with the masses {what}",
                      unit="1", equation="13", lhs=r"\frac{B}{A}")
     return board

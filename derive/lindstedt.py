@@ -208,7 +208,7 @@ def derive() -> Board:
     aw0 = Arg(omega0, "rad/s", "Linear angular frequency ω₀", 1.0, 1e3, log=True)
     aeps = Arg(eps, "1/(m^2 s^2)", "Cubic coefficient ε", 1e-2, 1e6, log=True)
     aal = Arg(alpha, "m", "Turning-point amplitude α", 1e-5, 1e-2, log=True)
-    at = Arg(t, "s", "Time since the turning point", 0.0, 1.0)
+    at = Arg(t, "s", "Time since the turning point", 0.0, 0.1)
     for n in KERNEL_ORDERS:
         board.kernel(name=f"duffing_frequency_order{n}", args=(aw0, aeps, aal), expr=frequency(n),
                      returns=f"Lindstedt–Poincaré angular frequency to order ε^{n}",
@@ -217,7 +217,7 @@ def derive() -> Board:
         board.kernel(name=f"duffing_response_order{n}", args=(at, aw0, aeps, aal),
                      expr=solution(n, t),
                      returns=f"Lindstedt–Poincaré displacement x(t) to order ε^{n}, x(0) = α",
-                     unit="m", equation="17–18" if n == 1 else "17–18 (higher order)",
+                     unit="m", magnitude=alpha, equation="17–18" if n == 1 else "17–18 (higher order)",
                      lhs="x(t)")
     board.kernel(name="duffing_amplitude",
                  args=(Arg(X0, "m", "Initial displacement", -1e-2, 1e-2),

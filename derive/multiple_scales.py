@@ -172,9 +172,10 @@ def derive() -> Board:
                      lhs=r"T_{CD}^{(0)}", printed=printed)
         board.kernel(name=f"relative_displacement{suffix}", args=(at, aO, am, aa, ac, az, aR),
                      expr=z_t.subs(s), returns="Relative displacement z = y − x during contact",
-                     unit="m", equation="32", lhs="z(t)", printed=printed)
+                     unit="m", magnitude=Zd0 / Om * (1 + a * Zd0**2 / (m * Om**4) * abs(R)), equation="32", lhs="z(t)", printed=printed)
         board.kernel(name=f"main_mass_displacement_contact{suffix}",
                      args=(at, aO, am, aa, ac, az, aR), expr=(z_t / (R - 1)).subs(s),
                      returns="Main-mass displacement x = z/(B/A − 1) during contact",
-                     unit="m", equation="33", lhs="x(t)", printed=printed)
+                     unit="m", magnitude=Zd0 / Om * (1 + a * Zd0**2 / (m * Om**4) * abs(R))
+                     / abs(R - 1), equation="33", lhs="x(t)", printed=printed)
     return board
