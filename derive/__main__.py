@@ -38,8 +38,10 @@ def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True):
                 if not c.ok:
                     print(f"    {c.detail}")
         if verbose:
-            print(f"{'  = step ' + step:<52} {b.equations:<10} {'':<13} "
-                  f"{time.perf_counter() - t0:>7.2f}s")
+            print(
+                f"{'  = step ' + step:<52} {b.equations:<10} {'':<13} "
+                f"{time.perf_counter() - t0:>7.2f}s"
+            )
     files = {f"{b.module}.py": render_module(b) for b in boards}
     files["_broadcast.py"] = render_template("broadcast.py.j2")
     files["__init__.py"] = render_package_init(boards)
@@ -70,16 +72,21 @@ def compare(files: dict[str, str], folder: Path = GENERATED) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m derive", description=__doc__)
-    parser.add_argument("--check", action="store_true",
-                        help="regenerate in memory; exit 1 with a diff if generated/ differs")
+    parser.add_argument(
+        "--check",
+        action="store_true",
+        help="regenerate in memory; exit 1 with a diff if generated/ differs",
+    )
     parser.add_argument("--quiet", action="store_true", help="print no summary table")
     args = parser.parse_args(argv)
     t0 = time.perf_counter()
     files, boards, ok = generate(verbose=not args.quiet)
     n_errata = sum(len(b.errata) for b in boards)
     n_kernels = sum(len(b.kernels) for b in boards)
-    print(f"\n{len(boards)} steps, {n_kernels} kernels, {n_errata} errata; "
-          f"derived in {time.perf_counter() - t0:.1f}s")
+    print(
+        f"\n{len(boards)} steps, {n_kernels} kernels, {n_errata} errata; "
+        f"derived in {time.perf_counter() - t0:.1f}s"
+    )
     if not ok:
         print("some derivation checks FAILED", file=sys.stderr)
     if args.check:

@@ -29,38 +29,74 @@ def derive() -> Board:
     z, zm, u = sp.symbols("z z_m u", positive=True)
 
     # --- Hertz ----------------------------------------------------------------------------------
-    energy = w("hertz_energy", sp.Eq(mu * v**2 / 2, mu * sp.Symbol("zdot") ** 2 / 2
-                                     + sp.integrate(k_hz * z ** sp.Rational(3, 2), (z, 0, z))),
-               "Energy conservation during the Hertz contact.", "34")
-    z_max = w("hertz_max_penetration",
-              sp.solve(energy.subs(sp.Symbol("zdot"), 0).subs(z, zm), zm)[0],
-              "Largest penetration (ż = 0).", "34")
-    shape_integral = w("shape_integral", sp.Integral((1 - u ** sp.Rational(5, 2)) ** sp.Rational(
-        -1, 2), (u, 0, 1)), "Time to z_m is (z_m/Ż₀)·∫₀¹(1 − u^{5/2})^{-1/2} du, u = z/z_m.")
+    energy = w(
+        "hertz_energy",
+        sp.Eq(
+            mu * v**2 / 2,
+            mu * sp.Symbol("zdot") ** 2 / 2
+            + sp.integrate(k_hz * z ** sp.Rational(3, 2), (z, 0, z)),
+        ),
+        "Energy conservation during the Hertz contact.",
+        "34",
+    )
+    z_max = w(
+        "hertz_max_penetration",
+        sp.solve(energy.subs(sp.Symbol("zdot"), 0).subs(z, zm), zm)[0],
+        "Largest penetration (ż = 0).",
+        "34",
+    )
+    shape_integral = w(
+        "shape_integral",
+        sp.Integral((1 - u ** sp.Rational(5, 2)) ** sp.Rational(-1, 2), (u, 0, 1)),
+        "Time to z_m is (z_m/Ż₀)·∫₀¹(1 − u^{5/2})^{-1/2} du, u = z/z_m.",
+    )
     s = sp.Symbol("s", positive=True)
     # u = s^{2/5}: du = (2/5) s^{-3/5} ds turns it into Euler's Beta integral B(2/5, 1/2).
     u_of_s = s ** sp.Rational(2, 5)
-    substituted = w("beta_integrand", sp.powsimp(
-        shape_integral.function.subs(u, u_of_s) * sp.diff(u_of_s, s), force=True),
-        "Integrand after u = s^{2/5}: (2/5)·s^{2/5 − 1}(1 − s)^{1/2 − 1}.")
-    board.check("substitution gives Euler's Beta integrand", "34", sp.simplify(
-        substituted - sp.Rational(2, 5) * s ** sp.Rational(-3, 5) * (1 - s) ** sp.Rational(-1, 2)
-    ) == 0)
-    constant = w("hertz_constant", sp.gammasimp(
-        2 * sp.Rational(2, 5) * sp.beta(sp.Rational(2, 5), sp.Rational(1, 2)).rewrite(sp.gamma)),
-        "2·∫₀¹(1 − u^{5/2})^{-1/2} du = (4/5)·B(2/5, 1/2) in Gamma functions.", "34")
+    substituted = w(
+        "beta_integrand",
+        sp.powsimp(shape_integral.function.subs(u, u_of_s) * sp.diff(u_of_s, s), force=True),
+        "Integrand after u = s^{2/5}: (2/5)·s^{2/5 − 1}(1 − s)^{1/2 − 1}.",
+    )
+    board.check(
+        "substitution gives Euler's Beta integrand",
+        "34",
+        sp.simplify(
+            substituted
+            - sp.Rational(2, 5) * s ** sp.Rational(-3, 5) * (1 - s) ** sp.Rational(-1, 2)
+        )
+        == 0,
+    )
+    constant = w(
+        "hertz_constant",
+        sp.gammasimp(
+            2 * sp.Rational(2, 5) * sp.beta(sp.Rational(2, 5), sp.Rational(1, 2)).rewrite(sp.gamma)
+        ),
+        "2·∫₀¹(1 − u^{5/2})^{-1/2} du = (4/5)·B(2/5, 1/2) in Gamma functions.",
+        "34",
+    )
     with mp.workdps(30):
         quad = 2 * mp.quad(lambda x: (1 - x ** mp.mpf(2.5)) ** -0.5, [0, mp.mpf(1) / 2, 1])
-    board.check("Hertz constant = (4/5)B(2/5,1/2) (quadrature)", "34",
-                float(abs(sp.N(constant, 30) - sp.Float(mp.nstr(quad, 30), 30))) < 1e-15,
-                f"{sp.N(constant, 20)} (quadrature {mp.nstr(quad, 20)})")
+    board.check(
+        "Hertz constant = (4/5)B(2/5,1/2) (quadrature)",
+        "34",
+        float(abs(sp.N(constant, 30) - sp.Float(mp.nstr(quad, 30), 30))) < 1e-15,
+        f"{sp.N(constant, 20)} (quadrature {mp.nstr(quad, 20)})",
+    )
     T_hertz = w("hertz_contact_duration", constant * z_max / v, "Hertz contact duration.", "34")
     Kstar = (m + M) / (m * M)
-    printed34 = sp.Rational("2.9432") / v ** sp.Rational(1, 5) * (
-        sp.Rational(5, 4) / (Kstar * k_hz)) ** sp.Rational(2, 5)
+    printed34 = (
+        sp.Rational("2.9432")
+        / v ** sp.Rational(1, 5)
+        * (sp.Rational(5, 4) / (Kstar * k_hz)) ** sp.Rational(2, 5)
+    )
     ratio = sp.simplify(T_hertz / printed34)
-    board.check("Eq. 34 form (up to the constant)", "34", ratio.is_number,
-                f"derived/printed = {sp.N(ratio, 10)}")
+    board.check(
+        "Eq. 34 form (up to the constant)",
+        "34",
+        ratio.is_number,
+        f"derived/printed = {sp.N(ratio, 10)}",
+    )
     board.erratum(
         key="eq34_constant",
         equation="34",
@@ -74,25 +110,50 @@ def derive() -> Board:
 
     # --- linear ---------------------------------------------------------------------------------
     zf = sp.Function("z")
-    sol = sp.dsolve(mu * zf(t).diff(t, 2) + c1 * zf(t).diff(t) + k1 * zf(t), zf(t),
-                    ics={zf(0): 0, zf(t).diff(t).subs(t, 0): v}).rhs
+    sol = sp.dsolve(
+        mu * zf(t).diff(t, 2) + c1 * zf(t).diff(t) + k1 * zf(t),
+        zf(t),
+        ics={zf(0): 0, zf(t).diff(t).subs(t, 0): v},
+    ).rhs
     wd = sp.Symbol("omega_d", positive=True)
-    wd_value = w("linear_damped_frequency", sp.sqrt(k1 / mu - c1**2 / (4 * mu**2)),
-                 "Damped frequency of the linear contact.", "35")
-    z_lin = w("linear_contact_motion",
-              v / wd * sp.exp(-c1 * t / (2 * mu)) * sp.sin(wd * t),
-              "Relative motion during a linear contact.", "35")
-    diffs = [sp.N((sol - z_lin.subs(wd, wd_value)).subs(
-        {t: sp.Rational(tt, 100), m: sp.Rational(1, 4), M: 1, k1: 120, c1: cc, v: 1}), 30)
-        for tt in (3, 7, 19) for cc in (0, sp.Rational(1, 2), 2)]
-    board.check("dsolve agrees with the damped-sine form", "35",
-                max(abs(sp.re(d)) + abs(sp.im(d)) for d in diffs) < 1e-25)
-    T_lin = w("linear_contact_duration", sp.pi / wd_value,
-              "First return of z to 0: ω_d T = π.", "35")
+    wd_value = w(
+        "linear_damped_frequency",
+        sp.sqrt(k1 / mu - c1**2 / (4 * mu**2)),
+        "Damped frequency of the linear contact.",
+        "35",
+    )
+    z_lin = w(
+        "linear_contact_motion",
+        v / wd * sp.exp(-c1 * t / (2 * mu)) * sp.sin(wd * t),
+        "Relative motion during a linear contact.",
+        "35",
+    )
+    diffs = [
+        sp.N(
+            (sol - z_lin.subs(wd, wd_value)).subs(
+                {t: sp.Rational(tt, 100), m: sp.Rational(1, 4), M: 1, k1: 120, c1: cc, v: 1}
+            ),
+            30,
+        )
+        for tt in (3, 7, 19)
+        for cc in (0, sp.Rational(1, 2), 2)
+    ]
+    board.check(
+        "dsolve agrees with the damped-sine form",
+        "35",
+        max(abs(sp.re(d)) + abs(sp.im(d)) for d in diffs) < 1e-25,
+    )
+    T_lin = w(
+        "linear_contact_duration", sp.pi / wd_value, "First return of z to 0: ω_d T = π.", "35"
+    )
     printed35 = 2 * m * M * sp.pi / (sp.sqrt(m + M) * sp.sqrt(4 * m * M * k1 - c1**2 * (m + M)))
     board.check("Eq. 35", "35", sp.simplify(T_lin - printed35) == 0)
-    e_lin = w("linear_restitution", sp.simplify(-(sp.diff(z_lin, t).subs(t, sp.pi / wd)) / v),
-              "Coefficient of restitution −ż(T)/Ż₀.", "35")
+    e_lin = w(
+        "linear_restitution",
+        sp.simplify(-(sp.diff(z_lin, t).subs(t, sp.pi / wd)) / v),
+        "Coefficient of restitution −ż(T)/Ż₀.",
+        "35",
+    )
     e_lin = e_lin.subs(wd, wd_value)
 
     # --- kernels ----------------------------------------------------------------------------------
@@ -103,19 +164,52 @@ def derive() -> Board:
     ak1 = Arg(k1, "N/m", "Linear contact stiffness k₁", 10.0, 1e7, log=True)
     ac1 = Arg(c1, "N s/m", "Contact damping c₁ (below critical)", 0.0, 0.5)
     underdamped = 4 * m * M * k1 - c1**2 * (m + M) > 0
-    board.kernel(name="hertz_contact_duration", args=(am, aM, ahz, av), expr=T_hertz,
-                 returns="Hertz contact duration", unit="s", equation="34",
-                 lhs=r"T_{CD}^{(Hertz)}")
-    board.kernel(name="hertz_contact_duration_printed", args=(am, aM, ahz, av), expr=printed34,
-                 returns="Hertz contact duration with the printed constant 2.9432", unit="s",
-                 equation="34", lhs=r"T_{CD}^{(Hertz)}", printed=True)
-    board.kernel(name="hertz_max_penetration", args=(am, aM, ahz, av),
-                 expr=z_max.subs(mu, mu), returns="Largest Hertz penetration", unit="m",
-                 equation="34", lhs="z_m")
-    board.kernel(name="linear_contact_duration", args=(am, aM, ak1, ac1), expr=T_lin,
-                 returns="Linear damped contact duration", unit="s", equation="35",
-                 lhs=r"T_{CD}^{(Linear)}", constraints=(underdamped,))
-    board.kernel(name="linear_restitution", args=(am, aM, ak1, ac1), expr=e_lin,
-                 returns="Coefficient of restitution of the linear damped contact", unit="1",
-                 equation="35", lhs="e", constraints=(underdamped,))
+    board.kernel(
+        name="hertz_contact_duration",
+        args=(am, aM, ahz, av),
+        expr=T_hertz,
+        returns="Hertz contact duration",
+        unit="s",
+        equation="34",
+        lhs=r"T_{CD}^{(Hertz)}",
+    )
+    board.kernel(
+        name="hertz_contact_duration_printed",
+        args=(am, aM, ahz, av),
+        expr=printed34,
+        returns="Hertz contact duration with the printed constant 2.9432",
+        unit="s",
+        equation="34",
+        lhs=r"T_{CD}^{(Hertz)}",
+        printed=True,
+    )
+    board.kernel(
+        name="hertz_max_penetration",
+        args=(am, aM, ahz, av),
+        expr=z_max.subs(mu, mu),
+        returns="Largest Hertz penetration",
+        unit="m",
+        equation="34",
+        lhs="z_m",
+    )
+    board.kernel(
+        name="linear_contact_duration",
+        args=(am, aM, ak1, ac1),
+        expr=T_lin,
+        returns="Linear damped contact duration",
+        unit="s",
+        equation="35",
+        lhs=r"T_{CD}^{(Linear)}",
+        constraints=(underdamped,),
+    )
+    board.kernel(
+        name="linear_restitution",
+        args=(am, aM, ak1, ac1),
+        expr=e_lin,
+        returns="Coefficient of restitution of the linear damped contact",
+        unit="1",
+        equation="35",
+        lhs="e",
+        constraints=(underdamped,),
+    )
     return board

@@ -54,9 +54,7 @@ def numeric_constants(expr: sp.Expr) -> sp.Expr:
 def kernel_body(kernel: Kernel) -> tuple[list[tuple[str, str]], str, int]:
     """Common-subexpression-eliminated assignments, the returned expression and the op count."""
     expr = numeric_constants(sp.sympify(kernel.expr))
-    replacements, (reduced,) = sp.cse(
-        [expr], symbols=sp.numbered_symbols("_x"), order="canonical"
-    )
+    replacements, (reduced,) = sp.cse([expr], symbols=sp.numbered_symbols("_x"), order="canonical")
     printer = KernelPrinter({"fully_qualified_modules": True})
     lines = [(str(sym), printer.doprint(val)) for sym, val in replacements]
     ops = sum(int(sp.count_ops(val)) for _, val in replacements) + int(sp.count_ops(reduced))

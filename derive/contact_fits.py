@@ -33,7 +33,7 @@ def normal_equations(residual: sp.Expr, unknowns: tuple[sp.Symbol, ...], mean) -
 def derive() -> Board:
     board = Board("contact_fits", "Least-squares fits of the Hertz contact force", "8–9")
     w = board.write
-    k_hz, d_max, delta, u = sp.symbols("k_hz delta_max delta u", positive=True)
+    k_hz, d_max, delta = sp.symbols("k_hz delta_max delta", positive=True)
     a, b, k1 = sp.symbols("a b k_1", real=True)
     n = sp.Symbol("n", integer=True, positive=True)
     i = sp.Symbol("i", integer=True, nonnegative=True)
@@ -61,8 +61,11 @@ def derive() -> Board:
 
     # --- discrete fit on n uniform samples, in the dimensionless u = δ/δ_max ---------------------
     S = {p: sp.Symbol(f"S_{p}") for p in ("2", "4", "6", "5/2", "9/2")}
-    w("power_sum", sp.Sum((i / (n - 1)) ** sp.Symbol("p"), (i, 0, n - 1)),
-      "Power sums S_p = Σ u_i^p over the samples u_i = i/(n − 1).")
+    w(
+        "power_sum",
+        sp.Sum((i / (n - 1)) ** sp.Symbol("p"), (i, 0, n - 1)),
+        "Power sums S_p = Σ u_i^p over the samples u_i = i/(n − 1).",
+    )
     A_, B_, K_ = sp.symbols("ahat bhat khat")
     # Residual K_Hz δ_max^{3/2} (u^{3/2} − â u³ − b̂ u): the normal equations in terms of S_p.
     disc_cubic = w(
@@ -78,8 +81,12 @@ def derive() -> Board:
         "Discrete normal equations for â = a·√δ_max/K_Hz and b̂ = b/(K_Hz·√δ_max).",
         "9",
     )
-    disc_linear = w("discrete_linear_fit", {K_: S["5/2"] / S["2"]},
-                    "Discrete normal equation for k̂ = k₁/(K_Hz·√δ_max).", "35")
+    disc_linear = w(
+        "discrete_linear_fit",
+        {K_: S["5/2"] / S["2"]},
+        "Discrete normal equation for k̂ = k₁/(K_Hz·√δ_max).",
+        "35",
+    )
 
     def power_sums(n_samples: int) -> dict:
         us = [sp.Rational(j, n_samples - 1) for j in range(n_samples)]
@@ -93,29 +100,43 @@ def derive() -> Board:
             disc_linear[K_].subs(sums),
         )
 
-    ahat, bhat, khat = (w(f"{name}_n{PAPER_SAMPLES}", v, f"Exact {name} for n = {PAPER_SAMPLES}.")
-                        for name, v in zip(("ahat", "bhat", "khat"), discrete(PAPER_SAMPLES),
-                                           strict=True))
+    ahat, bhat, khat = (
+        w(f"{name}_n{PAPER_SAMPLES}", v, f"Exact {name} for n = {PAPER_SAMPLES}.")
+        for name, v in zip(("ahat", "bhat", "khat"), discrete(PAPER_SAMPLES), strict=True)
+    )
     # δ = δ_max·u turns the residual into K_Hz δ_max^{3/2} (u^{3/2} − â u³ − b̂ u), so:
     ahat_f, bhat_f, khat_f = (sp.Float(v.evalf(30), 30) for v in (ahat, bhat, khat))
-    scale = {a: ahat_f * k_hz / d_max ** sp.Rational(3, 2), b: bhat_f * k_hz * sp.sqrt(d_max),
-             k1: khat_f * k_hz * sp.sqrt(d_max)}
+    scale = {
+        a: ahat_f * k_hz / d_max ** sp.Rational(3, 2),
+        b: bhat_f * k_hz * sp.sqrt(d_max),
+        k1: khat_f * k_hz * sp.sqrt(d_max),
+    }
 
     # --- which procedure reproduces the paper? -------------------------------------------------
     paper = {k_hz: 1000, d_max: sp.Rational(2, 100)}
     printed = {"a": (0.1553e6, 1e2), "b": (83.60, 1e-2), "k1": (122.7, 1e-1)}  # SI, last digit
 
     def matches(values: dict) -> bool:
-        return all(abs(float(values[key]) - v) <= 0.5 * ulp * 1.000001
-                   for key, (v, ulp) in printed.items())
+        return all(
+            abs(float(values[key]) - v) <= 0.5 * ulp * 1.000001 for key, (v, ulp) in printed.items()
+        )
 
-    cont_vals = {"a": cont_cubic[a].subs(paper), "b": cont_cubic[b].subs(paper),
-                 "k1": cont_linear[k1].subs(paper)}
+    cont_vals = {
+        "a": cont_cubic[a].subs(paper),
+        "b": cont_cubic[b].subs(paper),
+        "k1": cont_linear[k1].subs(paper),
+    }
     disc_vals = {"a": scale[a].subs(paper), "b": scale[b].subs(paper), "k1": scale[k1].subs(paper)}
-    w("paper_values_continuous", {k: sp.N(v, 8) for k, v in cont_vals.items()},
-      "Continuous fit at K_Hz = 1000 N/m^1.5, δ_max = 2 cm (SI).")
-    w("paper_values_discrete", {k: sp.N(v, 8) for k, v in disc_vals.items()},
-      f"Discrete fit, n = {PAPER_SAMPLES}, same inputs (SI).")
+    w(
+        "paper_values_continuous",
+        {k: sp.N(v, 8) for k, v in cont_vals.items()},
+        "Continuous fit at K_Hz = 1000 N/m^1.5, δ_max = 2 cm (SI).",
+    )
+    w(
+        "paper_values_discrete",
+        {k: sp.N(v, 8) for k, v in disc_vals.items()},
+        f"Discrete fit, n = {PAPER_SAMPLES}, same inputs (SI).",
+    )
     board.check(
         "continuous fit does not reproduce a, b, k1",
         "9, Fig. 2",

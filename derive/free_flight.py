@@ -22,33 +22,48 @@ def derive() -> Board:
     x0, xd0, y0, yd0 = sp.symbols("x_0 xdot_0 y_0 ydot_0", real=True)
     x, y = sp.Function("x"), sp.Function("y")
 
-    eq_x = w("main_mass_equation", sp.Eq(M * x(t).diff(t, 2) + C * x(t).diff(t) + K * x(t), 0),
-             "Main mass between impacts.", "7")
-    eq_y = w("impact_mass_equation", sp.Eq(y(t).diff(t, 2), 0), "Impact mass between impacts.",
-             "7")
+    eq_x = w(
+        "main_mass_equation",
+        sp.Eq(M * x(t).diff(t, 2) + C * x(t).diff(t) + K * x(t), 0),
+        "Main mass between impacts.",
+        "7",
+    )
+    eq_y = w("impact_mass_equation", sp.Eq(y(t).diff(t, 2), 0), "Impact mass between impacts.", "7")
     sigma = w("decay_rate", C / (2 * M), "Decay rate σ = ζω_n = C/(2M).", "7")
     wd = sp.Symbol("omega_d", positive=True)
-    wd_value = w("damped_frequency", sp.sqrt(K / M - C**2 / (4 * M**2)),
-                 "Damped frequency ω_d (ζ < 1).", "7")
+    wd_value = w(
+        "damped_frequency", sp.sqrt(K / M - C**2 / (4 * M**2)), "Damped frequency ω_d (ζ < 1).", "7"
+    )
     # dsolve with K written through ω_d keeps the underdamped branch explicit.
     K_of_wd = M * (wd**2 + sigma**2)
-    sol = sp.dsolve(eq_x.lhs.subs(K, K_of_wd), x(t),
-                    ics={x(0): x0, x(t).diff(t).subs(t, 0): xd0}).rhs
-    x_t = w("main_mass_displacement", sp.simplify(sp.expand_complex(sp.simplify(sol))),
-            "Main-mass displacement; dsolve with the initial state (x₀, ẋ₀).", "7")
-    board.check("x(t) solves Eq. 7 with its initial state", "7",
-                sp.simplify(eq_x.lhs.subs(K, K_of_wd).subs(x(t), x_t).doit()) == 0
-                and sp.simplify(x_t.subs(t, 0) - x0) == 0
-                and sp.simplify(x_t.diff(t).subs(t, 0) - xd0) == 0)
-    reference = sp.exp(-sigma * t) * (x0 * sp.cos(wd * t) + (xd0 + sigma * x0) / wd
-                                      * sp.sin(wd * t))
-    board.check("x(t) is the decaying cosine/sine pair", "7",
-                sp.simplify(x_t - reference) == 0)
+    sol = sp.dsolve(
+        eq_x.lhs.subs(K, K_of_wd), x(t), ics={x(0): x0, x(t).diff(t).subs(t, 0): xd0}
+    ).rhs
+    x_t = w(
+        "main_mass_displacement",
+        sp.simplify(sp.expand_complex(sp.simplify(sol))),
+        "Main-mass displacement; dsolve with the initial state (x₀, ẋ₀).",
+        "7",
+    )
+    board.check(
+        "x(t) solves Eq. 7 with its initial state",
+        "7",
+        sp.simplify(eq_x.lhs.subs(K, K_of_wd).subs(x(t), x_t).doit()) == 0
+        and sp.simplify(x_t.subs(t, 0) - x0) == 0
+        and sp.simplify(x_t.diff(t).subs(t, 0) - xd0) == 0,
+    )
+    reference = sp.exp(-sigma * t) * (
+        x0 * sp.cos(wd * t) + (xd0 + sigma * x0) / wd * sp.sin(wd * t)
+    )
+    board.check("x(t) is the decaying cosine/sine pair", "7", sp.simplify(x_t - reference) == 0)
     x_t = reference.subs(wd, wd_value)
     xd_t = w("main_mass_velocity", sp.diff(reference, t).subs(wd, wd_value), "ẋ(t).", "7")
-    y_t = w("impact_mass_displacement",
-            sp.dsolve(eq_y, y(t), ics={y(0): y0, y(t).diff(t).subs(t, 0): yd0}).rhs,
-            "Impact mass: constant velocity.", "7")
+    y_t = w(
+        "impact_mass_displacement",
+        sp.dsolve(eq_y, y(t), ics={y(0): y0, y(t).diff(t).subs(t, 0): yd0}).rhs,
+        "Impact mass: constant velocity.",
+        "7",
+    )
     board.check("y(t) = y₀ + ẏ₀t", "7", sp.expand(y_t - (y0 + yd0 * t)) == 0)
 
     at = Arg(t, "s", "Time since the last event", 0.0, 2.0)
@@ -59,18 +74,47 @@ def derive() -> Board:
     axd = Arg(xd0, "m/s", "Main-mass velocity at t = 0", -1.0, 1.0)
     args = (at, aM, aK, aC, ax, axd)
     amp = sp.sqrt(x0**2 + ((xd0 + sigma * x0) / wd_value) ** 2)
-    board.kernel(name="main_mass_displacement", args=args, expr=x_t,
-                 returns="Main-mass displacement x(t) in free flight", unit="m", equation="7",
-                 lhs="x(t)", magnitude=amp * sp.exp(-sigma * t))
-    board.kernel(name="main_mass_velocity", args=args, expr=xd_t,
-                 returns="Main-mass velocity ẋ(t) in free flight", unit="m/s", equation="7",
-                 lhs=r"\dot{x}(t)", magnitude=amp * sp.sqrt(K / M) * sp.exp(-sigma * t))
-    board.kernel(name="impact_mass_velocity", args=(at, Arg(yd0, "m/s", "Impact-mass velocity", -1.0, 1.0)),
-                 expr=sp.diff(y_t, t) + 0 * t, returns="Impact-mass velocity ẏ(t) in free flight",
-                 unit="m/s", equation="7", lhs=r"\dot{y}(t)")
-    board.kernel(name="impact_mass_displacement",
-                 args=(at, Arg(y0, "m", "Impact-mass displacement at t = 0", -1e-2, 1e-2),
-                       Arg(yd0, "m/s", "Impact-mass velocity at t = 0", -1.0, 1.0)),
-                 expr=y_t, returns="Impact-mass displacement y(t) in free flight", unit="m",
-                 equation="7", lhs="y(t)", magnitude=abs(y0) + abs(yd0) * t)
+    board.kernel(
+        name="main_mass_displacement",
+        args=args,
+        expr=x_t,
+        returns="Main-mass displacement x(t) in free flight",
+        unit="m",
+        equation="7",
+        lhs="x(t)",
+        magnitude=amp * sp.exp(-sigma * t),
+    )
+    board.kernel(
+        name="main_mass_velocity",
+        args=args,
+        expr=xd_t,
+        returns="Main-mass velocity ẋ(t) in free flight",
+        unit="m/s",
+        equation="7",
+        lhs=r"\dot{x}(t)",
+        magnitude=amp * sp.sqrt(K / M) * sp.exp(-sigma * t),
+    )
+    board.kernel(
+        name="impact_mass_velocity",
+        args=(at, Arg(yd0, "m/s", "Impact-mass velocity", -1.0, 1.0)),
+        expr=sp.diff(y_t, t) + 0 * t,
+        returns="Impact-mass velocity ẏ(t) in free flight",
+        unit="m/s",
+        equation="7",
+        lhs=r"\dot{y}(t)",
+    )
+    board.kernel(
+        name="impact_mass_displacement",
+        args=(
+            at,
+            Arg(y0, "m", "Impact-mass displacement at t = 0", -1e-2, 1e-2),
+            Arg(yd0, "m/s", "Impact-mass velocity at t = 0", -1.0, 1.0),
+        ),
+        expr=y_t,
+        returns="Impact-mass displacement y(t) in free flight",
+        unit="m",
+        equation="7",
+        lhs="y(t)",
+        magnitude=abs(y0) + abs(yd0) * t,
+    )
     return board

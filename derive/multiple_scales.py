@@ -31,16 +31,28 @@ def derive() -> Board:
     # --- Eq. 21: the relative-motion equation -----------------------------------------------------
     y_of_z = B / (B - A) * z
     eq10_2 = m * sp.diff(y_of_z, t, 2) + c1 * z.diff(t) + a * z**3 + b * z
-    lam_derived = w("lambda", sp.simplify(sp.expand(eq10_2 / m).coeff(z.diff(t, 2)) ** -1),
-                    "Eq. 10.2 with y = B/(B − A)·z, divided by the coefficient of z̈: "
-                    "z̈ + λ(c₁ż + az³ + bz)/m = 0.", "21")
+    lam_derived = w(
+        "lambda",
+        sp.simplify(sp.expand(eq10_2 / m).coeff(z.diff(t, 2)) ** -1),
+        "Eq. 10.2 with y = B/(B − A)·z, divided by the coefficient of z̈: "
+        "z̈ + λ(c₁ż + az³ + bz)/m = 0.",
+        "21",
+    )
     lam_derived = sp.simplify(lam_derived.subs(B, R * A))
     lam_printed = R / (R - 1)  # B/(B − A) as printed
-    board.check("Eq. 21 factor (B − A)/B", "21", sp.simplify(lam_derived - (R - 1) / R) == 0,
-                "derived λ = 1 − A/B; printed B/(B − A)", erratum=True)
+    board.check(
+        "Eq. 21 factor (B − A)/B",
+        "21",
+        sp.simplify(lam_derived - (R - 1) / R) == 0,
+        "derived λ = 1 − A/B; printed B/(B − A)",
+        erratum=True,
+    )
     M_ = sp.Symbol("M", positive=True)
-    board.check("free bodies (B/A = −M/m): λ b/m = b/(reduced mass)", "21",
-                sp.simplify(lam_derived.subs(R, -M_ / m) * b / m - b * (m + M_) / (m * M_)) == 0)
+    board.check(
+        "free bodies (B/A = −M/m): λ b/m = b/(reduced mass)",
+        "21",
+        sp.simplify(lam_derived.subs(R, -M_ / m) * b / m - b * (m + M_) / (m * M_)) == 0,
+    )
     board.erratum(
         key="eq21_factor",
         equation="21 (and 22, 29–33)",
@@ -59,8 +71,12 @@ def derive() -> Board:
     k1_, k2_ = sp.symbols("kappa_1 kappa_2", positive=True)
     k3 = lam * b / m
     physical = {k1_: lam * c1 / (mu * m), k2_: lam * a / (mu * m)}
-    w("kappa", (physical[k1_], physical[k2_], k3),
-      "κ₁, κ₂, κ₃ with the bookkeeping μ (small damping and cubic).", "22")
+    w(
+        "kappa",
+        (physical[k1_], physical[k2_], k3),
+        "κ₁, κ₂, κ₃ with the bookkeeping μ (small damping and cubic).",
+        "22",
+    )
     xi, eta = sp.symbols("xi eta", real=True)
     Om1 = sp.Function("Omega_1")(eta)
     Z0, Z1 = sp.Function("z_0")(xi, eta), sp.Function("z_1")(xi, eta)
@@ -69,72 +85,127 @@ def derive() -> Board:
     def ddt(f):  # chain rule, Eq. 23
         return Om * sp.diff(f, xi) + mu * sp.diff(f, eta)
 
-    eq24 = w("eq24", sp.expand(ddt(ddt(Z)) + mu * (k1_ * ddt(Z) + k2_ * Z**3)
-                               + (Om**2 + mu * Om1) * Z),
-             "Eq. 22 in (ξ, η) with κ₃ = Ω² + μΩ₁ (Eq. 23–25).", "24–25")
+    eq24 = w(
+        "eq24",
+        sp.expand(ddt(ddt(Z)) + mu * (k1_ * ddt(Z) + k2_ * Z**3) + (Om**2 + mu * Om1) * Z),
+        "Eq. 22 in (ξ, η) with κ₃ = Ω² + μΩ₁ (Eq. 23–25).",
+        "24–25",
+    )
     order0 = w("order0", eq24.coeff(mu, 0), "Order μ⁰.", "26.1")
     order1 = w("order1", sp.expand(eq24.coeff(mu, 1)), "Order μ¹.", "26.2")
     board.check("Eq. 26.1", "26.1", sp.simplify(order0 / Om**2 - (Z0.diff(xi, 2) + Z0)) == 0)
-    printed26_2 = Z1.diff(xi, 2) + Z1 + 2 / Om * Z0.diff(xi, eta) + k1_ / Om * Z0.diff(xi) \
-        + Om1 / Om**2 * Z0 + k2_ / Om**2 * Z0**3
+    printed26_2 = (
+        Z1.diff(xi, 2)
+        + Z1
+        + 2 / Om * Z0.diff(xi, eta)
+        + k1_ / Om * Z0.diff(xi)
+        + Om1 / Om**2 * Z0
+        + k2_ / Om**2 * Z0**3
+    )
     board.check("Eq. 26.2", "26.2", sp.simplify(order1 / Om**2 - printed26_2) == 0)
 
     # --- secular terms ------------------------------------------------------------------------------
     N = sp.Function("N")(eta)
-    forcing = w("forcing", sp.expand(-(order1 - Om**2 * (Z1.diff(xi, 2) + Z1)).subs(
-        Z0, N * sp.sin(xi)).doit() / Om**2), "Right side of Eq. 26.2 with z₀ = N(η) sin ξ.",
-        "26.2")
-    sec_cos = w("secular_cos", sp.simplify(sp.integrate(forcing * sp.cos(xi), (xi, 0, 2 * sp.pi))
-                                           / sp.pi), "cos ξ component.", "27.1")
-    sec_sin = w("secular_sin", sp.simplify(sp.integrate(forcing * sp.sin(xi), (xi, 0, 2 * sp.pi))
-                                           / sp.pi), "sin ξ component.", "27.2")
-    board.check("Eq. 27.1", "27.1",
-                sp.simplify(sec_cos + (2 * N.diff(eta) + k1_ * N) / Om) == 0)
-    board.check("Eq. 27.2", "27.2",
-                sp.simplify(sec_sin + N**3 / Om**2 * (Om1 / N**2 + sp.Rational(3, 4) * k2_))
-                == 0)
-    N_sol = w("N", sp.dsolve(sec_cos, N, ics={N.subs(eta, 0): Zd0 / Om}).rhs,
-              "Slowly decaying amplitude; N(0) = Ż₀/Ω from ż(0) = Ω ∂z₀/∂ξ.", "28.1")
+    forcing = w(
+        "forcing",
+        sp.expand(
+            -(order1 - Om**2 * (Z1.diff(xi, 2) + Z1)).subs(Z0, N * sp.sin(xi)).doit() / Om**2
+        ),
+        "Right side of Eq. 26.2 with z₀ = N(η) sin ξ.",
+        "26.2",
+    )
+    sec_cos = w(
+        "secular_cos",
+        sp.simplify(sp.integrate(forcing * sp.cos(xi), (xi, 0, 2 * sp.pi)) / sp.pi),
+        "cos ξ component.",
+        "27.1",
+    )
+    sec_sin = w(
+        "secular_sin",
+        sp.simplify(sp.integrate(forcing * sp.sin(xi), (xi, 0, 2 * sp.pi)) / sp.pi),
+        "sin ξ component.",
+        "27.2",
+    )
+    board.check("Eq. 27.1", "27.1", sp.simplify(sec_cos + (2 * N.diff(eta) + k1_ * N) / Om) == 0)
+    board.check(
+        "Eq. 27.2",
+        "27.2",
+        sp.simplify(sec_sin + N**3 / Om**2 * (Om1 / N**2 + sp.Rational(3, 4) * k2_)) == 0,
+    )
+    N_sol = w(
+        "N",
+        sp.dsolve(sec_cos, N, ics={N.subs(eta, 0): Zd0 / Om}).rhs,
+        "Slowly decaying amplitude; N(0) = Ż₀/Ω from ż(0) = Ω ∂z₀/∂ξ.",
+        "28.1",
+    )
     Om1_sol = w("Omega_1", sp.solve(sec_sin, Om1)[0], "Frequency correction.", "28.2")
-    board.check("Eq. 28", "28",
-                sp.simplify(N_sol - Zd0 / Om * sp.exp(-k1_ * eta / 2)) == 0
-                and sp.simplify(Om1_sol + sp.Rational(3, 4) * k2_ * N**2) == 0)
+    board.check(
+        "Eq. 28",
+        "28",
+        sp.simplify(N_sol - Zd0 / Om * sp.exp(-k1_ * eta / 2)) == 0
+        and sp.simplify(Om1_sol + sp.Rational(3, 4) * k2_ * N**2) == 0,
+    )
 
     # --- z₁ -------------------------------------------------------------------------------------------
-    nonsecular = sp.expand(sp.expand_trig(forcing).subs(N.diff(eta), sp.solve(sec_cos, N.diff(
-        eta))[0]).subs(Om1, Om1_sol))
+    nonsecular = sp.expand(
+        sp.expand_trig(forcing)
+        .subs(N.diff(eta), sp.solve(sec_cos, N.diff(eta))[0])
+        .subs(Om1, Om1_sol)
+    )
     nonsecular = sp.simplify(sp.fu(nonsecular))
     u = sp.Function("u")
-    z1_sol = sp.dsolve(u(xi).diff(xi, 2) + u(xi) - nonsecular.subs(Z1, 0), u(xi),
-                       ics={u(0): 0, u(xi).diff(xi).subs(xi, 0): 0}).rhs
-    z1_sol = w("z_1", sp.simplify(z1_sol), "Non-secular part solved with z₁(0) = ∂z₁/∂ξ(0) = 0.",
-               "26.2")
+    z1_sol = sp.dsolve(
+        u(xi).diff(xi, 2) + u(xi) - nonsecular.subs(Z1, 0),
+        u(xi),
+        ics={u(0): 0, u(xi).diff(xi).subs(xi, 0): 0},
+    ).rhs
+    z1_sol = w(
+        "z_1", sp.simplify(z1_sol), "Non-secular part solved with z₁(0) = ∂z₁/∂ξ(0) = 0.", "26.2"
+    )
     z_sol = w("z", N * sp.sin(xi) + mu * z1_sol, "z = z₀ + μ z₁.", "32")
-    printed32 = N * sp.sin(xi) - mu * k2_ * N**3 / (32 * Om**2) * (
-        sp.sin(3 * xi) - 3 * sp.sin(xi))
-    board.check("Eq. 32 (with λ)", "32",
-                sp.simplify(sp.expand_trig(z_sol - printed32)) == 0)
+    printed32 = N * sp.sin(xi) - mu * k2_ * N**3 / (32 * Om**2) * (sp.sin(3 * xi) - 3 * sp.sin(xi))
+    board.check("Eq. 32 (with λ)", "32", sp.simplify(sp.expand_trig(z_sol - printed32)) == 0)
 
     # Substitute back into Eq. 24: orders μ⁰ and μ¹ vanish, μ² does not.
-    back = sp.expand((ddt(ddt(z_sol)) + mu * (k1_ * ddt(z_sol) + k2_ * z_sol**3)
-                      + (Om**2 + mu * Om1_sol) * z_sol).subs(N, N_sol).doit())
+    back = sp.expand(
+        (
+            ddt(ddt(z_sol))
+            + mu * (k1_ * ddt(z_sol) + k2_ * z_sol**3)
+            + (Om**2 + mu * Om1_sol) * z_sol
+        )
+        .subs(N, N_sol)
+        .doit()
+    )
     back = sp.expand(sp.expand_trig(back))
     res = [sp.simplify(back.coeff(mu, k)) for k in range(3)]
-    board.check("z₀ + μz₁ leaves an O(μ²) residual in Eq. 24", "24–32",
-                res[0] == 0 and res[1] == 0 and res[2] != 0)
+    board.check(
+        "z₀ + μz₁ leaves an O(μ²) residual in Eq. 24",
+        "24–32",
+        res[0] == 0 and res[1] == 0 and res[2] != 0,
+    )
 
     # --- Eq. 29–31: frequency and contact duration ---------------------------------------------------
-    Om_sq = w("Omega_squared", sp.expand((k3 - mu * Om1_sol).subs(N, N_sol).subs(eta, mu * t)
-                                         .subs(physical)),
-              "Ω² = κ₃ − μΩ₁ at time t.", "29")
+    Om_sq = w(
+        "Omega_squared",
+        sp.expand((k3 - mu * Om1_sol).subs(N, N_sol).subs(eta, mu * t).subs(physical)),
+        "Ω² = κ₃ − μΩ₁ at time t.",
+        "29",
+    )
     printed29 = lam * (b / m + 3 * a / (4 * m) * Zd0**2 / Om**2 * sp.exp(-lam * c1 / m * t))
     board.check("Eq. 29 (with λ)", "29", sp.simplify(Om_sq - printed29) == 0)
     T = sp.Symbol("T", positive=True)
-    T_map = w("contact_duration_map",
-              sp.pi / sp.sqrt(Om_sq.subs(Om, sp.pi / T).subs(t, T)),
-              "T = π/Ω with Ω = π/T inside and t = T: the fixed-point map.", "30–31")
-    T0 = w("contact_duration_start", sp.pi * sp.sqrt(m / (lam * b)),
-           "Linear (a = 0, c₁ = 0) half period: the starting value.", "31")
+    T_map = w(
+        "contact_duration_map",
+        sp.pi / sp.sqrt(Om_sq.subs(Om, sp.pi / T).subs(t, T)),
+        "T = π/Ω with Ω = π/T inside and t = T: the fixed-point map.",
+        "30–31",
+    )
+    T0 = w(
+        "contact_duration_start",
+        sp.pi * sp.sqrt(m / (lam * b)),
+        "Linear (a = 0, c₁ = 0) half period: the starting value.",
+        "31",
+    )
     T0_printed = 2 * sp.pi * sp.sqrt(m / (lam * b))
     board.erratum(
         key="eq31_start_full_period",
@@ -163,19 +234,46 @@ def derive() -> Board:
     board.check("μ cancels from z(t)", "32", mu not in z_t.free_symbols)
     for suffix, lam_v, printed in (("", lam_derived, False), ("_printed", lam_printed, True)):
         s = {lam: lam_v}
-        board.kernel(name=f"contact_duration_map{suffix}", args=(aT, am, aa, ab, ac, az, aR),
-                     expr=T_map.subs(s), returns="Next contact-duration iterate T⁽ⁱ⁾",
-                     unit="s", equation="31", lhs=r"T_{CD}^{(i)}", printed=printed)
-        board.kernel(name=f"contact_duration_start{suffix}", args=(am, ab, aR),
-                     expr=(T0_printed if printed else T0).subs(s),
-                     returns="Starting contact duration T⁽⁰⁾", unit="s", equation="31",
-                     lhs=r"T_{CD}^{(0)}", printed=printed)
-        board.kernel(name=f"relative_displacement{suffix}", args=(at, aO, am, aa, ac, az, aR),
-                     expr=z_t.subs(s), returns="Relative displacement z = y − x during contact",
-                     unit="m", magnitude=Zd0 / Om * (1 + a * Zd0**2 / (m * Om**4) * abs(R)), equation="32", lhs="z(t)", printed=printed)
-        board.kernel(name=f"main_mass_displacement_contact{suffix}",
-                     args=(at, aO, am, aa, ac, az, aR), expr=(z_t / (R - 1)).subs(s),
-                     returns="Main-mass displacement x = z/(B/A − 1) during contact",
-                     unit="m", magnitude=Zd0 / Om * (1 + a * Zd0**2 / (m * Om**4) * abs(R))
-                     / abs(R - 1), equation="33", lhs="x(t)", printed=printed)
+        board.kernel(
+            name=f"contact_duration_map{suffix}",
+            args=(aT, am, aa, ab, ac, az, aR),
+            expr=T_map.subs(s),
+            returns="Next contact-duration iterate T⁽ⁱ⁾",
+            unit="s",
+            equation="31",
+            lhs=r"T_{CD}^{(i)}",
+            printed=printed,
+        )
+        board.kernel(
+            name=f"contact_duration_start{suffix}",
+            args=(am, ab, aR),
+            expr=(T0_printed if printed else T0).subs(s),
+            returns="Starting contact duration T⁽⁰⁾",
+            unit="s",
+            equation="31",
+            lhs=r"T_{CD}^{(0)}",
+            printed=printed,
+        )
+        board.kernel(
+            name=f"relative_displacement{suffix}",
+            args=(at, aO, am, aa, ac, az, aR),
+            expr=z_t.subs(s),
+            returns="Relative displacement z = y − x during contact",
+            unit="m",
+            magnitude=Zd0 / Om * (1 + a * Zd0**2 / (m * Om**4) * abs(R)),
+            equation="32",
+            lhs="z(t)",
+            printed=printed,
+        )
+        board.kernel(
+            name=f"main_mass_displacement_contact{suffix}",
+            args=(at, aO, am, aa, ac, az, aR),
+            expr=(z_t / (R - 1)).subs(s),
+            returns="Main-mass displacement x = z/(B/A − 1) during contact",
+            unit="m",
+            magnitude=Zd0 / Om * (1 + a * Zd0**2 / (m * Om**4) * abs(R)) / abs(R - 1),
+            equation="33",
+            lhs="x(t)",
+            printed=printed,
+        )
     return board

@@ -124,9 +124,12 @@ def derive() -> Board:
     )
 
     # --- 3. the roots ---------------------------------------------------------------------------
-    w("beta_L_roots", [sp.Float(mp.nstr(x, DIGITS), DIGITS) for x in roots],
-      f"First {N_MODES} roots of the frequency equation to {DIGITS} digits.",
-      "4 (text)")
+    w(
+        "beta_L_roots",
+        [sp.Float(mp.nstr(x, DIGITS), DIGITS) for x in roots],
+        f"First {N_MODES} roots of the frequency equation to {DIGITS} digits.",
+        "4 (text)",
+    )
     board.check(
         "β₁L = 1.875104",
         "4 (text)",
@@ -152,9 +155,7 @@ def derive() -> Board:
     )
     strain_integral = w(
         "strain_integral",
-        sp.integrate(sp.expand(sp.diff(mode_s, xi, 2).subs(xi, u) ** 2), (u, 0, 1)).subs(
-            s, sigma
-        ),
+        sp.integrate(sp.expand(sp.diff(mode_s, xi, 2).subs(xi, u) ** 2), (u, 0, 1)).subs(s, sigma),
         "∫₀¹ φ''(ξ)² dξ: strain energy ½(EI/L³) q² ∫φ''² dξ / φ(ξ₀)².",
         "5",
     )
@@ -177,10 +178,16 @@ def derive() -> Board:
         tip_stiff = [fk(x, 1) for x in roots]
         mass_err = max(abs(v - mp.mpf(1) / 4) for v in tip_mass)
         stiff_err = max(abs(v / (x**4 / 4) - 1) for v, x in zip(tip_stiff, roots, strict=True))
-    w("tip_mass_coefficients", [sp.Float(mp.nstr(v, 20), 20) for v in tip_mass],
-      "M/(ρAL) at the tip for each mode: 1/4 for every mode.")
-    w("tip_stiffness_coefficients", [sp.Float(mp.nstr(v, 20), 20) for v in tip_stiff],
-      "K·L³/(EI) at the tip for each mode: (β_i L)⁴/4.")
+    w(
+        "tip_mass_coefficients",
+        [sp.Float(mp.nstr(v, 20), 20) for v in tip_mass],
+        "M/(ρAL) at the tip for each mode: 1/4 for every mode.",
+    )
+    w(
+        "tip_stiffness_coefficients",
+        [sp.Float(mp.nstr(v, 20), 20) for v in tip_stiff],
+        "K·L³/(EI) at the tip for each mode: (β_i L)⁴/4.",
+    )
     board.check(
         "M = 0.25 ρAL at the tip, every mode",
         "6",
@@ -210,8 +217,11 @@ def derive() -> Board:
         "Eq. 3 rearranged without cancellation (for the kernels).",
         "3",
     )
-    board.check("cancellation-free form equals Eq. 3", "3",
-                sp.simplify((mode_stable - mode).rewrite(sp.exp)) == 0)
+    board.check(
+        "cancellation-free form equals Eq. 3",
+        "3",
+        sp.simplify((mode_stable - mode).rewrite(sp.exp)) == 0,
+    )
     # At a root, ∫₀¹φ² dξ = φ(1)²/4 (checked above for 8 modes, and below at interior points).
     mass_at_root = w(
         "mass_coefficient_at_root",

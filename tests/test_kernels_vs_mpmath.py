@@ -29,14 +29,16 @@ def _kernels(boards):
 
 def _sample(kernel, rng):
     points = []
-    checks = [sp.lambdify([a.symbol for a in kernel.args], c, "mpmath")
-              for c in kernel.constraints]
+    checks = [sp.lambdify([a.symbol for a in kernel.args], c, "mpmath") for c in kernel.constraints]
     while len(points) < N_POINTS:
         p = []
         for a in kernel.args:
             u = rng.random()
-            p.append(float(np.exp(np.log(a.low) + u * (np.log(a.high) - np.log(a.low))))
-                     if a.log else float(a.low + u * (a.high - a.low)))
+            p.append(
+                float(np.exp(np.log(a.low) + u * (np.log(a.high) - np.log(a.low))))
+                if a.log
+                else float(a.low + u * (a.high - a.low))
+            )
         if all(c(*p) for c in checks):
             points.append(p)
     return np.array(points)
