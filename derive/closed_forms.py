@@ -23,8 +23,8 @@ def derive() -> Board:
     board = Board("closed_forms", "Hertz and linear contact durations", "34–35")
     w = board.write
     t = sp.Symbol("t", nonnegative=True)
-    m, M, k_hz, k1, v = sp.symbols("m M k_hz k_1 zdot_0", positive=True)
-    c1 = sp.Symbol("c_1", nonnegative=True)
+    m, M, k_hz, k1, v = sp.symbols("m M k_hz k1 zdot0", positive=True)
+    c1 = sp.Symbol("c1", nonnegative=True)
     mu = w("reduced_mass", m * M / (m + M), "Reduced mass μ = 1/K*.", "34")
     z, zm, u = sp.symbols("z z_m u", positive=True)
 

@@ -34,7 +34,7 @@ def derive() -> Board:
     board = Board("contact_fits", "Least-squares fits of the Hertz contact force", "8–9")
     w = board.write
     k_hz, d_max, delta = sp.symbols("k_hz delta_max delta", positive=True)
-    a, b, k1 = sp.symbols("a b k_1", real=True)
+    a, b, k1 = sp.symbols("a b k1", real=True)
     n = sp.Symbol("n", integer=True, positive=True)
     i = sp.Symbol("i", integer=True, nonnegative=True)
 

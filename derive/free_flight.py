@@ -19,7 +19,7 @@ def derive() -> Board:
     t = sp.Symbol("t", nonnegative=True)
     M, K = sp.symbols("M K", positive=True)
     C = sp.Symbol("C", nonnegative=True)
-    x0, xd0, y0, yd0 = sp.symbols("x_0 xdot_0 y_0 ydot_0", real=True)
+    x0, xd0, y0, yd0 = sp.symbols("x0 xdot0 y0 ydot0", real=True)
     x, y = sp.Function("x"), sp.Function("y")
 
     eq_x = w(

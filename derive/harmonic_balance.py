@@ -21,7 +21,7 @@ def derive() -> Board:
     board = Board("harmonic_balance", "Harmonic balance of the contact phase", "10–15")
     w = board.write
     t = sp.Symbol("t", real=True)
-    M, K, C, m, a, b, c1 = sp.symbols("M K C m a b c_1", positive=True)
+    M, K, C, m, a, b, c1 = sp.symbols("M K C m a b c1", positive=True)
     omega = sp.Symbol("omega", positive=True)
     A, B = sp.symbols("A B", real=True)
     x, y = sp.Function("x")(t), sp.Function("y")(t)

@@ -20,7 +20,7 @@ import sympy as sp
 
 from .board import Arg, Board
 
-omega0, eps, alpha = sp.symbols("omega_0 epsilon alpha", positive=True)
+omega0, eps, alpha = sp.symbols("omega0 epsilon alpha", positive=True)
 tau = sp.Symbol("tau", real=True)
 KERNEL_ORDERS = (1, 2, 3)
 
@@ -200,7 +200,7 @@ def derive() -> Board:
     wr("frequency_series", frequency(nmax), f"ω to order ε^{nmax}.", "19")
 
     # --- Eq. 17 amplitude and phase ---------------------------------------------------------------
-    X0, Xd0 = sp.symbols("X_0 Xdot_0", real=True)
+    X0, Xd0 = sp.symbols("x0 xdot0", real=True)
     beta = sp.atan(-Xd0 / (om * X0))
     printed_alpha = X0 / sp.cos(beta)
     derived_alpha = sp.sqrt(X0**2 + (Xd0 / om) ** 2)

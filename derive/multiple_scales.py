@@ -23,8 +23,8 @@ def derive() -> Board:
     board = Board("multiple_scales", "Two-variable expansion and contact duration", "21–33")
     w = board.write
     t = sp.Symbol("t", nonnegative=True)
-    m, a, b, c1, mu, Om = sp.symbols("m a b c_1 mu Omega", positive=True)
-    Zd0 = sp.Symbol("zdot_0", positive=True)
+    m, a, b, c1, mu, Om = sp.symbols("m a b c1 mu Omega", positive=True)
+    Zd0 = sp.Symbol("zdot0", positive=True)
     A, B, R = sp.symbols("A B ba", real=True)  # ba = B/A
     z = sp.Function("z")(t)
 

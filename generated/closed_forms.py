@@ -22,7 +22,7 @@ __all__ = [
 ]
 
 
-def hertz_contact_duration(m, M, k_hz, zdot_0):
+def hertz_contact_duration(m, M, k_hz, zdot0):
     r"""Hertz contact duration [s].
 
     Paper Eq. 34.
@@ -39,7 +39,7 @@ def hertz_contact_duration(m, M, k_hz, zdot_0):
         Main mass M [kg].
     k_hz : array_like
         Hertz contact stiffness K_Hz [N/m^1.5].
-    zdot_0 : array_like
+    zdot0 : array_like
         Relative approach speed Ż₀ [m/s].
 
     Returns
@@ -48,12 +48,12 @@ def hertz_contact_duration(m, M, k_hz, zdot_0):
         Hertz contact duration [s], in the broadcast shape of the arguments.
         Operations: 22.
     """
-    m, M, k_hz, zdot_0 = broadcast(m, M, k_hz, zdot_0)
+    m, M, k_hz, zdot0 = broadcast(m, M, k_hz, zdot0)
     _x0 = 4*k_hz
-    return shaped(1.6605652005106006*5**(2/5)*numpy.sqrt(numpy.pi)*M**(2/5)*m**(2/5)/(zdot_0**(1/5)*(M*_x0 + _x0*m)**(2/5)), m.shape)
+    return shaped(1.6605652005106006*5**(2/5)*numpy.sqrt(numpy.pi)*M**(2/5)*m**(2/5)/(zdot0**(1/5)*(M*_x0 + _x0*m)**(2/5)), m.shape)
 
 
-def hertz_contact_duration_printed(m, M, k_hz, zdot_0):
+def hertz_contact_duration_printed(m, M, k_hz, zdot0):
     r"""Hertz contact duration with the printed constant 2.9432 [s].
 
     Paper Eq. 34, **as printed** (see errata.md).
@@ -70,7 +70,7 @@ def hertz_contact_duration_printed(m, M, k_hz, zdot_0):
         Main mass M [kg].
     k_hz : array_like
         Hertz contact stiffness K_Hz [N/m^1.5].
-    zdot_0 : array_like
+    zdot0 : array_like
         Relative approach speed Ż₀ [m/s].
 
     Returns
@@ -79,11 +79,11 @@ def hertz_contact_duration_printed(m, M, k_hz, zdot_0):
         Hertz contact duration with the printed constant 2.9432 [s], in the broadcast shape of the arguments.
         Operations: 23.
     """
-    m, M, k_hz, zdot_0 = broadcast(m, M, k_hz, zdot_0)
-    return shaped((3679/2500)*2**(1/5)*5**(2/5)*M**(2/5)*m**(2/5)/(k_hz**(2/5)*zdot_0**(1/5)*(M + m)**(2/5)), m.shape)
+    m, M, k_hz, zdot0 = broadcast(m, M, k_hz, zdot0)
+    return shaped((3679/2500)*2**(1/5)*5**(2/5)*M**(2/5)*m**(2/5)/(k_hz**(2/5)*zdot0**(1/5)*(M + m)**(2/5)), m.shape)
 
 
-def hertz_max_penetration(m, M, k_hz, zdot_0):
+def hertz_max_penetration(m, M, k_hz, zdot0):
     r"""Largest Hertz penetration [m].
 
     Paper Eq. 34.
@@ -100,7 +100,7 @@ def hertz_max_penetration(m, M, k_hz, zdot_0):
         Main mass M [kg].
     k_hz : array_like
         Hertz contact stiffness K_Hz [N/m^1.5].
-    zdot_0 : array_like
+    zdot0 : array_like
         Relative approach speed Ż₀ [m/s].
 
     Returns
@@ -109,12 +109,12 @@ def hertz_max_penetration(m, M, k_hz, zdot_0):
         Largest Hertz penetration [m], in the broadcast shape of the arguments.
         Operations: 18.
     """
-    m, M, k_hz, zdot_0 = broadcast(m, M, k_hz, zdot_0)
+    m, M, k_hz, zdot0 = broadcast(m, M, k_hz, zdot0)
     _x0 = 4*k_hz
-    return shaped(5**(2/5)*M**(2/5)*m**(2/5)*zdot_0**(4/5)/(M*_x0 + _x0*m)**(2/5), m.shape)
+    return shaped(5**(2/5)*M**(2/5)*m**(2/5)*zdot0**(4/5)/(M*_x0 + _x0*m)**(2/5), m.shape)
 
 
-def linear_contact_duration(m, M, k_1, c_1):
+def linear_contact_duration(m, M, k1, c1):
     r"""Linear damped contact duration [s].
 
     Paper Eq. 35.
@@ -129,9 +129,9 @@ def linear_contact_duration(m, M, k_1, c_1):
         Impact mass m [kg].
     M : array_like
         Main mass M [kg].
-    k_1 : array_like
+    k1 : array_like
         Linear contact stiffness k₁ [N/m].
-    c_1 : array_like
+    c1 : array_like
         Contact damping c₁ (below critical) [N s/m].
 
     Returns
@@ -140,12 +140,12 @@ def linear_contact_duration(m, M, k_1, c_1):
         Linear damped contact duration [s], in the broadcast shape of the arguments.
         Operations: 16.
     """
-    m, M, k_1, c_1 = broadcast(m, M, k_1, c_1)
+    m, M, k1, c1 = broadcast(m, M, k1, c1)
     _x0 = M + m
-    return shaped(numpy.pi/numpy.sqrt(_x0*k_1/(M*m) - 1/4*_x0**2*c_1**2/(M**2*m**2)), m.shape)
+    return shaped(numpy.pi/numpy.sqrt(_x0*k1/(M*m) - 1/4*_x0**2*c1**2/(M**2*m**2)), m.shape)
 
 
-def linear_restitution(m, M, k_1, c_1):
+def linear_restitution(m, M, k1, c1):
     r"""Coefficient of restitution of the linear damped contact [1].
 
     Paper Eq. 35.
@@ -160,9 +160,9 @@ def linear_restitution(m, M, k_1, c_1):
         Impact mass m [kg].
     M : array_like
         Main mass M [kg].
-    k_1 : array_like
+    k1 : array_like
         Linear contact stiffness k₁ [N/m].
-    c_1 : array_like
+    c1 : array_like
         Contact damping c₁ (below critical) [N s/m].
 
     Returns
@@ -171,7 +171,7 @@ def linear_restitution(m, M, k_1, c_1):
         Coefficient of restitution of the linear damped contact [1], in the broadcast shape of the arguments.
         Operations: 21.
     """
-    m, M, k_1, c_1 = broadcast(m, M, k_1, c_1)
+    m, M, k1, c1 = broadcast(m, M, k1, c1)
     _x0 = M + m
     _x1 = _x0/(M*m)
-    return shaped(numpy.exp(-1/2*numpy.pi*_x1*c_1/numpy.sqrt(_x1*k_1 - 1/4*_x0**2*c_1**2/(M**2*m**2))), m.shape)
+    return shaped(numpy.exp(-1/2*numpy.pi*_x1*c1/numpy.sqrt(_x1*k1 - 1/4*_x0**2*c1**2/(M**2*m**2))), m.shape)

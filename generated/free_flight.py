@@ -21,7 +21,7 @@ __all__ = [
 ]
 
 
-def main_mass_displacement(t, M, K, C, x_0, xdot_0):
+def main_mass_displacement(t, M, K, C, x0, xdot0):
     r"""Main-mass displacement x(t) in free flight [m].
 
     Paper Eq. 7.
@@ -40,9 +40,9 @@ def main_mass_displacement(t, M, K, C, x_0, xdot_0):
         Main stiffness K [N/m].
     C : array_like
         Main damping C (underdamped: C < 2√(KM)) [N s/m].
-    x_0 : array_like
+    x0 : array_like
         Main-mass displacement at t = 0 [m].
-    xdot_0 : array_like
+    xdot0 : array_like
         Main-mass velocity at t = 0 [m/s].
 
     Returns
@@ -51,15 +51,15 @@ def main_mass_displacement(t, M, K, C, x_0, xdot_0):
         Main-mass displacement x(t) in free flight [m], in the broadcast shape of the arguments.
         Operations: 23.
     """
-    t, M, K, C, x_0, xdot_0 = broadcast(t, M, K, C, x_0, xdot_0)
+    t, M, K, C, x0, xdot0 = broadcast(t, M, K, C, x0, xdot0)
     _x0 = M**(-1.0)
     _x1 = (1/2)*C*_x0
     _x2 = numpy.sqrt(-1/4*C**2/M**2 + K*_x0)
     _x3 = _x2*t
-    return shaped((x_0*numpy.cos(_x3) + (_x1*x_0 + xdot_0)*numpy.sin(_x3)/_x2)*numpy.exp(-_x1*t), t.shape)
+    return shaped((x0*numpy.cos(_x3) + (_x1*x0 + xdot0)*numpy.sin(_x3)/_x2)*numpy.exp(-_x1*t), t.shape)
 
 
-def main_mass_velocity(t, M, K, C, x_0, xdot_0):
+def main_mass_velocity(t, M, K, C, x0, xdot0):
     r"""Main-mass velocity ẋ(t) in free flight [m/s].
 
     Paper Eq. 7.
@@ -78,9 +78,9 @@ def main_mass_velocity(t, M, K, C, x_0, xdot_0):
         Main stiffness K [N/m].
     C : array_like
         Main damping C (underdamped: C < 2√(KM)) [N s/m].
-    x_0 : array_like
+    x0 : array_like
         Main-mass displacement at t = 0 [m].
-    xdot_0 : array_like
+    xdot0 : array_like
         Main-mass velocity at t = 0 [m/s].
 
     Returns
@@ -89,19 +89,19 @@ def main_mass_velocity(t, M, K, C, x_0, xdot_0):
         Main-mass velocity ẋ(t) in free flight [m/s], in the broadcast shape of the arguments.
         Operations: 31.
     """
-    t, M, K, C, x_0, xdot_0 = broadcast(t, M, K, C, x_0, xdot_0)
+    t, M, K, C, x0, xdot0 = broadcast(t, M, K, C, x0, xdot0)
     _x0 = M**(-1.0)
     _x1 = (1/2)*C*_x0
     _x2 = numpy.exp(-_x1*t)
-    _x3 = _x1*x_0 + xdot_0
+    _x3 = _x1*x0 + xdot0
     _x4 = numpy.sqrt(-1/4*C**2/M**2 + K*_x0)
     _x5 = _x4*t
     _x6 = numpy.cos(_x5)
     _x7 = numpy.sin(_x5)
-    return shaped(-_x1*_x2*(_x3*_x7/_x4 + _x6*x_0) + _x2*(_x3*_x6 - _x4*_x7*x_0), t.shape)
+    return shaped(-_x1*_x2*(_x3*_x7/_x4 + _x6*x0) + _x2*(_x3*_x6 - _x4*_x7*x0), t.shape)
 
 
-def impact_mass_velocity(t, ydot_0):
+def impact_mass_velocity(t, ydot0):
     r"""Impact-mass velocity ẏ(t) in free flight [m/s].
 
     Paper Eq. 7.
@@ -114,7 +114,7 @@ def impact_mass_velocity(t, ydot_0):
     ----------
     t : array_like
         Time since the last event [s].
-    ydot_0 : array_like
+    ydot0 : array_like
         Impact-mass velocity [m/s].
 
     Returns
@@ -123,11 +123,11 @@ def impact_mass_velocity(t, ydot_0):
         Impact-mass velocity ẏ(t) in free flight [m/s], in the broadcast shape of the arguments.
         Operations: 0.
     """
-    t, ydot_0 = broadcast(t, ydot_0)
-    return shaped(ydot_0, t.shape)
+    t, ydot0 = broadcast(t, ydot0)
+    return shaped(ydot0, t.shape)
 
 
-def impact_mass_displacement(t, y_0, ydot_0):
+def impact_mass_displacement(t, y0, ydot0):
     r"""Impact-mass displacement y(t) in free flight [m].
 
     Paper Eq. 7.
@@ -140,9 +140,9 @@ def impact_mass_displacement(t, y_0, ydot_0):
     ----------
     t : array_like
         Time since the last event [s].
-    y_0 : array_like
+    y0 : array_like
         Impact-mass displacement at t = 0 [m].
-    ydot_0 : array_like
+    ydot0 : array_like
         Impact-mass velocity at t = 0 [m/s].
 
     Returns
@@ -151,5 +151,5 @@ def impact_mass_displacement(t, y_0, ydot_0):
         Impact-mass displacement y(t) in free flight [m], in the broadcast shape of the arguments.
         Operations: 2.
     """
-    t, y_0, ydot_0 = broadcast(t, y_0, ydot_0)
-    return shaped(t*ydot_0 + y_0, t.shape)
+    t, y0, ydot0 = broadcast(t, y0, ydot0)
+    return shaped(t*ydot0 + y0, t.shape)

@@ -25,7 +25,7 @@ __all__ = [
 ]
 
 
-def duffing_frequency_order1(omega_0, epsilon, alpha):
+def duffing_frequency_order1(omega0, epsilon, alpha):
     r"""Lindstedt–Poincaré angular frequency to order ε^1 [rad/s].
 
     Paper Eq. 19.
@@ -36,7 +36,7 @@ def duffing_frequency_order1(omega_0, epsilon, alpha):
 
     Parameters
     ----------
-    omega_0 : array_like
+    omega0 : array_like
         Linear angular frequency ω₀ [rad/s].
     epsilon : array_like
         Cubic coefficient ε [1/(m^2 s^2)].
@@ -49,11 +49,11 @@ def duffing_frequency_order1(omega_0, epsilon, alpha):
         Lindstedt–Poincaré angular frequency to order ε^1 [rad/s], in the broadcast shape of the arguments.
         Operations: 6.
     """
-    omega_0, epsilon, alpha = broadcast(omega_0, epsilon, alpha)
-    return shaped((3/8)*alpha**2*epsilon/omega_0 + omega_0, omega_0.shape)
+    omega0, epsilon, alpha = broadcast(omega0, epsilon, alpha)
+    return shaped((3/8)*alpha**2*epsilon/omega0 + omega0, omega0.shape)
 
 
-def duffing_response_order1(t, omega_0, epsilon, alpha):
+def duffing_response_order1(t, omega0, epsilon, alpha):
     r"""Lindstedt–Poincaré displacement x(t) to order ε^1, x(0) = α [m].
 
     Paper Eq. 17–18.
@@ -66,7 +66,7 @@ def duffing_response_order1(t, omega_0, epsilon, alpha):
     ----------
     t : array_like
         Time since the turning point [s].
-    omega_0 : array_like
+    omega0 : array_like
         Linear angular frequency ω₀ [rad/s].
     epsilon : array_like
         Cubic coefficient ε [1/(m^2 s^2)].
@@ -79,14 +79,14 @@ def duffing_response_order1(t, omega_0, epsilon, alpha):
         Lindstedt–Poincaré displacement x(t) to order ε^1, x(0) = α [m], in the broadcast shape of the arguments.
         Operations: 24.
     """
-    t, omega_0, epsilon, alpha = broadcast(t, omega_0, epsilon, alpha)
-    _x0 = alpha**2*epsilon/omega_0
-    _x1 = numpy.cos(t*((3/8)*_x0 + omega_0))
-    _x2 = (1/32)*alpha**3*epsilon/omega_0**2
-    return shaped(-_x1*_x2 + _x1*alpha + _x2*numpy.cos(t*((9/8)*_x0 + 3*omega_0)), t.shape)
+    t, omega0, epsilon, alpha = broadcast(t, omega0, epsilon, alpha)
+    _x0 = alpha**2*epsilon/omega0
+    _x1 = numpy.cos(t*((3/8)*_x0 + omega0))
+    _x2 = (1/32)*alpha**3*epsilon/omega0**2
+    return shaped(-_x1*_x2 + _x1*alpha + _x2*numpy.cos(t*((9/8)*_x0 + 3*omega0)), t.shape)
 
 
-def duffing_frequency_order2(omega_0, epsilon, alpha):
+def duffing_frequency_order2(omega0, epsilon, alpha):
     r"""Lindstedt–Poincaré angular frequency to order ε^2 [rad/s].
 
     Paper Eq. 19 (higher order).
@@ -97,7 +97,7 @@ def duffing_frequency_order2(omega_0, epsilon, alpha):
 
     Parameters
     ----------
-    omega_0 : array_like
+    omega0 : array_like
         Linear angular frequency ω₀ [rad/s].
     epsilon : array_like
         Cubic coefficient ε [1/(m^2 s^2)].
@@ -110,11 +110,11 @@ def duffing_frequency_order2(omega_0, epsilon, alpha):
         Lindstedt–Poincaré angular frequency to order ε^2 [rad/s], in the broadcast shape of the arguments.
         Operations: 14.
     """
-    omega_0, epsilon, alpha = broadcast(omega_0, epsilon, alpha)
-    return shaped(-21/256*alpha**4*epsilon**2/omega_0**3 + (3/8)*alpha**2*epsilon/omega_0 + omega_0, omega_0.shape)
+    omega0, epsilon, alpha = broadcast(omega0, epsilon, alpha)
+    return shaped(-21/256*alpha**4*epsilon**2/omega0**3 + (3/8)*alpha**2*epsilon/omega0 + omega0, omega0.shape)
 
 
-def duffing_response_order2(t, omega_0, epsilon, alpha):
+def duffing_response_order2(t, omega0, epsilon, alpha):
     r"""Lindstedt–Poincaré displacement x(t) to order ε^2, x(0) = α [m].
 
     Paper Eq. 17–18 (higher order).
@@ -127,7 +127,7 @@ def duffing_response_order2(t, omega_0, epsilon, alpha):
     ----------
     t : array_like
         Time since the turning point [s].
-    omega_0 : array_like
+    omega0 : array_like
         Linear angular frequency ω₀ [rad/s].
     epsilon : array_like
         Cubic coefficient ε [1/(m^2 s^2)].
@@ -140,18 +140,18 @@ def duffing_response_order2(t, omega_0, epsilon, alpha):
         Lindstedt–Poincaré displacement x(t) to order ε^2, x(0) = α [m], in the broadcast shape of the arguments.
         Operations: 59.
     """
-    t, omega_0, epsilon, alpha = broadcast(t, omega_0, epsilon, alpha)
-    _x0 = alpha**2*epsilon/omega_0
+    t, omega0, epsilon, alpha = broadcast(t, omega0, epsilon, alpha)
+    _x0 = alpha**2*epsilon/omega0
     _x1 = epsilon**2
-    _x2 = _x1*alpha**4/omega_0**3
-    _x3 = numpy.cos(t*((3/8)*_x0 - 21/256*_x2 + omega_0))
-    _x4 = (1/32)*alpha**3*epsilon/omega_0**2
-    _x5 = numpy.cos(t*((9/8)*_x0 - 63/256*_x2 + 3*omega_0))
-    _x6 = _x1*alpha**5/omega_0**4
-    return shaped(-_x3*_x4 + (23/1024)*_x3*_x6 + _x3*alpha + _x4*_x5 - 3/128*_x5*_x6 + (1/1024)*_x6*numpy.cos(t*((15/8)*_x0 - 105/256*_x2 + 5*omega_0)), t.shape)
+    _x2 = _x1*alpha**4/omega0**3
+    _x3 = numpy.cos(t*((3/8)*_x0 - 21/256*_x2 + omega0))
+    _x4 = (1/32)*alpha**3*epsilon/omega0**2
+    _x5 = numpy.cos(t*((9/8)*_x0 - 63/256*_x2 + 3*omega0))
+    _x6 = _x1*alpha**5/omega0**4
+    return shaped(-_x3*_x4 + (23/1024)*_x3*_x6 + _x3*alpha + _x4*_x5 - 3/128*_x5*_x6 + (1/1024)*_x6*numpy.cos(t*((15/8)*_x0 - 105/256*_x2 + 5*omega0)), t.shape)
 
 
-def duffing_frequency_order3(omega_0, epsilon, alpha):
+def duffing_frequency_order3(omega0, epsilon, alpha):
     r"""Lindstedt–Poincaré angular frequency to order ε^3 [rad/s].
 
     Paper Eq. 19 (higher order).
@@ -162,7 +162,7 @@ def duffing_frequency_order3(omega_0, epsilon, alpha):
 
     Parameters
     ----------
-    omega_0 : array_like
+    omega0 : array_like
         Linear angular frequency ω₀ [rad/s].
     epsilon : array_like
         Cubic coefficient ε [1/(m^2 s^2)].
@@ -175,11 +175,11 @@ def duffing_frequency_order3(omega_0, epsilon, alpha):
         Lindstedt–Poincaré angular frequency to order ε^3 [rad/s], in the broadcast shape of the arguments.
         Operations: 22.
     """
-    omega_0, epsilon, alpha = broadcast(omega_0, epsilon, alpha)
-    return shaped((81/2048)*alpha**6*epsilon**3/omega_0**5 - 21/256*alpha**4*epsilon**2/omega_0**3 + (3/8)*alpha**2*epsilon/omega_0 + omega_0, omega_0.shape)
+    omega0, epsilon, alpha = broadcast(omega0, epsilon, alpha)
+    return shaped((81/2048)*alpha**6*epsilon**3/omega0**5 - 21/256*alpha**4*epsilon**2/omega0**3 + (3/8)*alpha**2*epsilon/omega0 + omega0, omega0.shape)
 
 
-def duffing_response_order3(t, omega_0, epsilon, alpha):
+def duffing_response_order3(t, omega0, epsilon, alpha):
     r"""Lindstedt–Poincaré displacement x(t) to order ε^3, x(0) = α [m].
 
     Paper Eq. 17–18 (higher order).
@@ -192,7 +192,7 @@ def duffing_response_order3(t, omega_0, epsilon, alpha):
     ----------
     t : array_like
         Time since the turning point [s].
-    omega_0 : array_like
+    omega0 : array_like
         Linear angular frequency ω₀ [rad/s].
     epsilon : array_like
         Cubic coefficient ε [1/(m^2 s^2)].
@@ -205,22 +205,22 @@ def duffing_response_order3(t, omega_0, epsilon, alpha):
         Lindstedt–Poincaré displacement x(t) to order ε^3, x(0) = α [m], in the broadcast shape of the arguments.
         Operations: 104.
     """
-    t, omega_0, epsilon, alpha = broadcast(t, omega_0, epsilon, alpha)
-    _x0 = alpha**2*epsilon/omega_0
+    t, omega0, epsilon, alpha = broadcast(t, omega0, epsilon, alpha)
+    _x0 = alpha**2*epsilon/omega0
     _x1 = epsilon**2
-    _x2 = _x1*alpha**4/omega_0**3
+    _x2 = _x1*alpha**4/omega0**3
     _x3 = epsilon**3
-    _x4 = _x3*alpha**6/omega_0**5
-    _x5 = numpy.cos(t*((3/8)*_x0 - 21/256*_x2 + (81/2048)*_x4 + omega_0))
-    _x6 = (1/32)*alpha**3*epsilon/omega_0**2
-    _x7 = numpy.cos(t*((9/8)*_x0 - 63/256*_x2 + (243/2048)*_x4 + 3*omega_0))
-    _x8 = _x1*alpha**5/omega_0**4
-    _x9 = _x3*alpha**7/omega_0**6
-    _x10 = numpy.cos(t*((15/8)*_x0 - 105/256*_x2 + (405/2048)*_x4 + 5*omega_0))
-    return shaped((1/1024)*_x10*_x8 - 3/2048*_x10*_x9 - _x5*_x6 + (23/1024)*_x5*_x8 - 547/32768*_x5*_x9 + _x5*alpha + _x6*_x7 - 3/128*_x7*_x8 + (297/16384)*_x7*_x9 + (1/32768)*_x9*numpy.cos(t*((21/8)*_x0 - 147/256*_x2 + (567/2048)*_x4 + 7*omega_0)), t.shape)
+    _x4 = _x3*alpha**6/omega0**5
+    _x5 = numpy.cos(t*((3/8)*_x0 - 21/256*_x2 + (81/2048)*_x4 + omega0))
+    _x6 = (1/32)*alpha**3*epsilon/omega0**2
+    _x7 = numpy.cos(t*((9/8)*_x0 - 63/256*_x2 + (243/2048)*_x4 + 3*omega0))
+    _x8 = _x1*alpha**5/omega0**4
+    _x9 = _x3*alpha**7/omega0**6
+    _x10 = numpy.cos(t*((15/8)*_x0 - 105/256*_x2 + (405/2048)*_x4 + 5*omega0))
+    return shaped((1/1024)*_x10*_x8 - 3/2048*_x10*_x9 - _x5*_x6 + (23/1024)*_x5*_x8 - 547/32768*_x5*_x9 + _x5*alpha + _x6*_x7 - 3/128*_x7*_x8 + (297/16384)*_x7*_x9 + (1/32768)*_x9*numpy.cos(t*((21/8)*_x0 - 147/256*_x2 + (567/2048)*_x4 + 7*omega0)), t.shape)
 
 
-def duffing_amplitude(X_0, Xdot_0, omega_0, epsilon):
+def duffing_amplitude(x0, xdot0, omega0, epsilon):
     r"""Exact turning-point amplitude α from the energy [m].
 
     Paper Eq. 17.
@@ -229,15 +229,15 @@ def duffing_amplitude(X_0, Xdot_0, omega_0, epsilon):
 
     .. math::
 
-        \alpha = \frac{\sqrt{X_{0}^{4} \epsilon + 2 X_{0}^{2} \omega_{0}^{2} + 2 \dot{X}_{0}^{2}}}{\sqrt{\omega_{0}^{2} + \sqrt{4 \epsilon \left(\frac{X_{0}^{4} \epsilon}{4} + \frac{X_{0}^{2} \omega_{0}^{2}}{2} + \frac{\dot{X}_{0}^{2}}{2}\right) + \omega_{0}^{4}}}}
+        \alpha = \frac{\sqrt{\epsilon x_{0}^{4} + 2 \omega_{0}^{2} x_{0}^{2} + 2 \dot{x}_{0}^{2}}}{\sqrt{\omega_{0}^{2} + \sqrt{4 \epsilon \left(\frac{\epsilon x_{0}^{4}}{4} + \frac{\omega_{0}^{2} x_{0}^{2}}{2} + \frac{\dot{x}_{0}^{2}}{2}\right) + \omega_{0}^{4}}}}
 
     Parameters
     ----------
-    X_0 : array_like
+    x0 : array_like
         Initial displacement [m].
-    Xdot_0 : array_like
+    xdot0 : array_like
         Initial velocity [m/s].
-    omega_0 : array_like
+    omega0 : array_like
         Linear angular frequency ω₀ [rad/s].
     epsilon : array_like
         Cubic coefficient ε [1/(m^2 s^2)].
@@ -248,15 +248,15 @@ def duffing_amplitude(X_0, Xdot_0, omega_0, epsilon):
         Exact turning-point amplitude α from the energy [m], in the broadcast shape of the arguments.
         Operations: 27.
     """
-    X_0, Xdot_0, omega_0, epsilon = broadcast(X_0, Xdot_0, omega_0, epsilon)
-    _x0 = Xdot_0**2
-    _x1 = X_0**4*epsilon
-    _x2 = omega_0**2
-    _x3 = X_0**2*_x2
-    return shaped(numpy.sqrt(2*_x0 + _x1 + 2*_x3)/numpy.sqrt(_x2 + numpy.sqrt(4*epsilon*((1/2)*_x0 + (1/4)*_x1 + (1/2)*_x3) + omega_0**4)), X_0.shape)
+    x0, xdot0, omega0, epsilon = broadcast(x0, xdot0, omega0, epsilon)
+    _x0 = xdot0**2
+    _x1 = epsilon*x0**4
+    _x2 = omega0**2
+    _x3 = _x2*x0**2
+    return shaped(numpy.sqrt(2*_x0 + _x1 + 2*_x3)/numpy.sqrt(_x2 + numpy.sqrt(4*epsilon*((1/2)*_x0 + (1/4)*_x1 + (1/2)*_x3) + omega0**4)), x0.shape)
 
 
-def frequency_eq20(K, M, a, b, omega_0, alpha):
+def frequency_eq20(K, M, a, b, omega0, alpha):
     r"""First-order frequency ω in the paper's variables [rad/s].
 
     Paper Eq. 20.
@@ -275,7 +275,7 @@ def frequency_eq20(K, M, a, b, omega_0, alpha):
         Cubic coefficient a [N/m^3].
     b : array_like
         Linear coefficient b [N/m].
-    omega_0 : array_like
+    omega0 : array_like
         Linear angular frequency ω₀ [rad/s].
     alpha : array_like
         Turning-point amplitude α [m].
@@ -286,5 +286,5 @@ def frequency_eq20(K, M, a, b, omega_0, alpha):
         First-order frequency ω in the paper's variables [rad/s], in the broadcast shape of the arguments.
         Operations: 14.
     """
-    K, M, a, b, omega_0, alpha = broadcast(K, M, a, b, omega_0, alpha)
-    return shaped(omega_0 + (3/8)*a*alpha**2*(-K + M*omega_0**2)**3/(M*b**3*omega_0), K.shape)
+    K, M, a, b, omega0, alpha = broadcast(K, M, a, b, omega0, alpha)
+    return shaped(omega0 + (3/8)*a*alpha**2*(-K + M*omega0**2)**3/(M*b**3*omega0), K.shape)

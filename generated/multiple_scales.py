@@ -25,7 +25,7 @@ __all__ = [
 ]
 
 
-def contact_duration_map(T, m, a, b, c_1, zdot_0, ba):
+def contact_duration_map(T, m, a, b, c1, zdot0, ba):
     r"""Next contact-duration iterate T⁽ⁱ⁾ [s].
 
     Paper Eq. 31.
@@ -44,9 +44,9 @@ def contact_duration_map(T, m, a, b, c_1, zdot_0, ba):
         Cubic coefficient a [N/m^3].
     b : array_like
         Linear coefficient b [N/m].
-    c_1 : array_like
+    c1 : array_like
         Contact damping c₁ [N s/m].
-    zdot_0 : array_like
+    zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
         Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
@@ -57,9 +57,9 @@ def contact_duration_map(T, m, a, b, c_1, zdot_0, ba):
         Next contact-duration iterate T⁽ⁱ⁾ [s], in the broadcast shape of the arguments.
         Operations: 21.
     """
-    T, m, a, b, c_1, zdot_0, ba = broadcast(T, m, a, b, c_1, zdot_0, ba)
+    T, m, a, b, c1, zdot0, ba = broadcast(T, m, a, b, c1, zdot0, ba)
     _x0 = (ba - 1)/(ba*m)
-    return shaped(numpy.pi/numpy.sqrt((3/4)*T**2*_x0*a*zdot_0**2*numpy.exp(-T*_x0*c_1)/numpy.pi**2 + _x0*b), T.shape)
+    return shaped(numpy.pi/numpy.sqrt((3/4)*T**2*_x0*a*zdot0**2*numpy.exp(-T*_x0*c1)/numpy.pi**2 + _x0*b), T.shape)
 
 
 def contact_duration_start(m, b, ba):
@@ -90,7 +90,7 @@ def contact_duration_start(m, b, ba):
     return shaped(numpy.pi*numpy.sqrt(m)/(numpy.sqrt(b)*numpy.sqrt((ba - 1)/ba)), m.shape)
 
 
-def relative_displacement(t, Omega, m, a, c_1, zdot_0, ba):
+def relative_displacement(t, Omega, m, a, c1, zdot0, ba):
     r"""Relative displacement z = y − x during contact [m].
 
     Paper Eq. 32.
@@ -109,9 +109,9 @@ def relative_displacement(t, Omega, m, a, c_1, zdot_0, ba):
         Impact mass m [kg].
     a : array_like
         Cubic coefficient a [N/m^3].
-    c_1 : array_like
+    c1 : array_like
         Contact damping c₁ [N s/m].
-    zdot_0 : array_like
+    zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
         Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
@@ -122,16 +122,16 @@ def relative_displacement(t, Omega, m, a, c_1, zdot_0, ba):
         Relative displacement z = y − x during contact [m], in the broadcast shape of the arguments.
         Operations: 30.
     """
-    t, Omega, m, a, c_1, zdot_0, ba = broadcast(t, Omega, m, a, c_1, zdot_0, ba)
+    t, Omega, m, a, c1, zdot0, ba = broadcast(t, Omega, m, a, c1, zdot0, ba)
     _x0 = Omega*t
     _x1 = numpy.sin(_x0)
     _x2 = (ba - 1)/(ba*m)
-    _x3 = _x2*c_1*t
-    _x4 = _x2*a*zdot_0**3*numpy.exp(-3/2*_x3)/Omega**5
-    return shaped((3/32)*_x1*_x4 - 1/32*_x4*numpy.sin(3*_x0) + _x1*zdot_0*numpy.exp(-1/2*_x3)/Omega, t.shape)
+    _x3 = _x2*c1*t
+    _x4 = _x2*a*zdot0**3*numpy.exp(-3/2*_x3)/Omega**5
+    return shaped((3/32)*_x1*_x4 - 1/32*_x4*numpy.sin(3*_x0) + _x1*zdot0*numpy.exp(-1/2*_x3)/Omega, t.shape)
 
 
-def main_mass_displacement_contact(t, Omega, m, a, c_1, zdot_0, ba):
+def main_mass_displacement_contact(t, Omega, m, a, c1, zdot0, ba):
     r"""Main-mass displacement x = z/(B/A − 1) during contact [m].
 
     Paper Eq. 33.
@@ -150,9 +150,9 @@ def main_mass_displacement_contact(t, Omega, m, a, c_1, zdot_0, ba):
         Impact mass m [kg].
     a : array_like
         Cubic coefficient a [N/m^3].
-    c_1 : array_like
+    c1 : array_like
         Contact damping c₁ [N s/m].
-    zdot_0 : array_like
+    zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
         Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
@@ -163,17 +163,17 @@ def main_mass_displacement_contact(t, Omega, m, a, c_1, zdot_0, ba):
         Main-mass displacement x = z/(B/A − 1) during contact [m], in the broadcast shape of the arguments.
         Operations: 31.
     """
-    t, Omega, m, a, c_1, zdot_0, ba = broadcast(t, Omega, m, a, c_1, zdot_0, ba)
+    t, Omega, m, a, c1, zdot0, ba = broadcast(t, Omega, m, a, c1, zdot0, ba)
     _x0 = ba - 1
     _x1 = Omega*t
     _x2 = numpy.sin(_x1)
     _x3 = _x0/(ba*m)
-    _x4 = _x3*c_1*t
-    _x5 = _x3*a*zdot_0**3*numpy.exp(-3/2*_x4)/Omega**5
-    return shaped(((3/32)*_x2*_x5 - 1/32*_x5*numpy.sin(3*_x1) + _x2*zdot_0*numpy.exp(-1/2*_x4)/Omega)/_x0, t.shape)
+    _x4 = _x3*c1*t
+    _x5 = _x3*a*zdot0**3*numpy.exp(-3/2*_x4)/Omega**5
+    return shaped(((3/32)*_x2*_x5 - 1/32*_x5*numpy.sin(3*_x1) + _x2*zdot0*numpy.exp(-1/2*_x4)/Omega)/_x0, t.shape)
 
 
-def contact_duration_map_printed(T, m, a, b, c_1, zdot_0, ba):
+def contact_duration_map_printed(T, m, a, b, c1, zdot0, ba):
     r"""Next contact-duration iterate T⁽ⁱ⁾ [s].
 
     Paper Eq. 31, **as printed** (see errata.md).
@@ -192,9 +192,9 @@ def contact_duration_map_printed(T, m, a, b, c_1, zdot_0, ba):
         Cubic coefficient a [N/m^3].
     b : array_like
         Linear coefficient b [N/m].
-    c_1 : array_like
+    c1 : array_like
         Contact damping c₁ [N s/m].
-    zdot_0 : array_like
+    zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
         Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
@@ -205,9 +205,9 @@ def contact_duration_map_printed(T, m, a, b, c_1, zdot_0, ba):
         Next contact-duration iterate T⁽ⁱ⁾ [s], in the broadcast shape of the arguments.
         Operations: 21.
     """
-    T, m, a, b, c_1, zdot_0, ba = broadcast(T, m, a, b, c_1, zdot_0, ba)
+    T, m, a, b, c1, zdot0, ba = broadcast(T, m, a, b, c1, zdot0, ba)
     _x0 = ba/(m*(ba - 1))
-    return shaped(numpy.pi/numpy.sqrt((3/4)*T**2*_x0*a*zdot_0**2*numpy.exp(-T*_x0*c_1)/numpy.pi**2 + _x0*b), T.shape)
+    return shaped(numpy.pi/numpy.sqrt((3/4)*T**2*_x0*a*zdot0**2*numpy.exp(-T*_x0*c1)/numpy.pi**2 + _x0*b), T.shape)
 
 
 def contact_duration_start_printed(m, b, ba):
@@ -238,7 +238,7 @@ def contact_duration_start_printed(m, b, ba):
     return shaped(2*numpy.pi*numpy.sqrt(m)/(numpy.sqrt(b)*numpy.sqrt(ba/(ba - 1))), m.shape)
 
 
-def relative_displacement_printed(t, Omega, m, a, c_1, zdot_0, ba):
+def relative_displacement_printed(t, Omega, m, a, c1, zdot0, ba):
     r"""Relative displacement z = y − x during contact [m].
 
     Paper Eq. 32, **as printed** (see errata.md).
@@ -257,9 +257,9 @@ def relative_displacement_printed(t, Omega, m, a, c_1, zdot_0, ba):
         Impact mass m [kg].
     a : array_like
         Cubic coefficient a [N/m^3].
-    c_1 : array_like
+    c1 : array_like
         Contact damping c₁ [N s/m].
-    zdot_0 : array_like
+    zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
         Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
@@ -270,16 +270,16 @@ def relative_displacement_printed(t, Omega, m, a, c_1, zdot_0, ba):
         Relative displacement z = y − x during contact [m], in the broadcast shape of the arguments.
         Operations: 30.
     """
-    t, Omega, m, a, c_1, zdot_0, ba = broadcast(t, Omega, m, a, c_1, zdot_0, ba)
+    t, Omega, m, a, c1, zdot0, ba = broadcast(t, Omega, m, a, c1, zdot0, ba)
     _x0 = Omega*t
     _x1 = numpy.sin(_x0)
     _x2 = ba/(m*(ba - 1))
-    _x3 = _x2*c_1*t
-    _x4 = _x2*a*zdot_0**3*numpy.exp(-3/2*_x3)/Omega**5
-    return shaped((3/32)*_x1*_x4 - 1/32*_x4*numpy.sin(3*_x0) + _x1*zdot_0*numpy.exp(-1/2*_x3)/Omega, t.shape)
+    _x3 = _x2*c1*t
+    _x4 = _x2*a*zdot0**3*numpy.exp(-3/2*_x3)/Omega**5
+    return shaped((3/32)*_x1*_x4 - 1/32*_x4*numpy.sin(3*_x0) + _x1*zdot0*numpy.exp(-1/2*_x3)/Omega, t.shape)
 
 
-def main_mass_displacement_contact_printed(t, Omega, m, a, c_1, zdot_0, ba):
+def main_mass_displacement_contact_printed(t, Omega, m, a, c1, zdot0, ba):
     r"""Main-mass displacement x = z/(B/A − 1) during contact [m].
 
     Paper Eq. 33, **as printed** (see errata.md).
@@ -298,9 +298,9 @@ def main_mass_displacement_contact_printed(t, Omega, m, a, c_1, zdot_0, ba):
         Impact mass m [kg].
     a : array_like
         Cubic coefficient a [N/m^3].
-    c_1 : array_like
+    c1 : array_like
         Contact damping c₁ [N s/m].
-    zdot_0 : array_like
+    zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
         Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
@@ -311,11 +311,11 @@ def main_mass_displacement_contact_printed(t, Omega, m, a, c_1, zdot_0, ba):
         Main-mass displacement x = z/(B/A − 1) during contact [m], in the broadcast shape of the arguments.
         Operations: 32.
     """
-    t, Omega, m, a, c_1, zdot_0, ba = broadcast(t, Omega, m, a, c_1, zdot_0, ba)
+    t, Omega, m, a, c1, zdot0, ba = broadcast(t, Omega, m, a, c1, zdot0, ba)
     _x0 = (ba - 1)**(-1.0)
     _x1 = Omega*t
     _x2 = numpy.sin(_x1)
     _x3 = _x0*ba/m
-    _x4 = _x3*c_1*t
-    _x5 = _x3*a*zdot_0**3*numpy.exp(-3/2*_x4)/Omega**5
-    return shaped(_x0*((3/32)*_x2*_x5 - 1/32*_x5*numpy.sin(3*_x1) + _x2*zdot_0*numpy.exp(-1/2*_x4)/Omega), t.shape)
+    _x4 = _x3*c1*t
+    _x5 = _x3*a*zdot0**3*numpy.exp(-3/2*_x4)/Omega**5
+    return shaped(_x0*((3/32)*_x2*_x5 - 1/32*_x5*numpy.sin(3*_x1) + _x2*zdot0*numpy.exp(-1/2*_x4)/Omega), t.shape)

@@ -87,3 +87,32 @@ def test_every_kernel_documents_its_equation_and_units():
             if callable(obj):
                 doc = obj.__doc__
                 assert "Paper Eq." in doc and ".. math::" in doc and "[" in doc, name
+
+
+def test_wheel_ships_the_generated_kernels(tmp_path):
+    """A wheel built from the checkout holds generated/ as symimpact/generated/."""
+    import zipfile
+
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pip",
+            "wheel",
+            "--no-deps",
+            "--quiet",
+            "-w",
+            str(tmp_path),
+            str(ROOT),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert run.returncode == 0, run.stderr[-3000:]
+    (wheel,) = tmp_path.glob("symimpact-*.whl")
+    names = set(zipfile.ZipFile(wheel).namelist())
+    for path in (ROOT / "generated").iterdir():
+        if path.suffix in {".py", ".md"}:
+            assert f"symimpact/generated/{path.name}" in names
+    assert not any(n.startswith(("derive/", "tests/")) for n in names)
