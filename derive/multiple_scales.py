@@ -14,6 +14,7 @@
 
 from __future__ import annotations
 
+import mpmath as mp
 import sympy as sp
 
 from .board import Arg, Board
@@ -218,6 +219,43 @@ def derive() -> Board:
         point={m: sp.Rational(1, 4), b: 84, R: -4},
     )
     board.check("T⁽⁰⁾: π (half period), not 2π", "31", True, "printed 2π", erratum=True)
+
+    # --- the fixed point on Table 1's inputs ------------------------------------------------------
+    # M = 1 kg, Ż₀ = 7.5 cm/s, c₁ = 0, the paper's a and b; B/A = −M/m (free bodies, which the
+    # closed forms of Eq. 34–35 also assume).  Iterated in mpmath until it stops moving.
+    table1 = {}
+    for m_val in ("0.15", "0.20", "0.25"):
+        for name, lam_v, start in (
+            ("derived", lam_derived, T0),
+            ("printed", lam_printed, T0_printed),
+        ):
+            subs = {
+                m: sp.Rational(m_val),
+                a: sp.Rational("155300"),
+                b: sp.Rational("83.60"),
+                c1: 0,
+                Zd0: sp.Rational("0.075"),
+                R: -1 / sp.Rational(m_val),
+            }
+            step_map = sp.lambdify(T, T_map.subs(lam, lam_v).subs(subs), "mpmath")
+            with mp.workdps(30):
+                history = [mp.mpf(str(sp.N(start.subs(lam, lam_v).subs(subs), 30)))]
+                for _ in range(60):
+                    history.append(step_map(history[-1]))
+            table1[(m_val, name)] = history
+    w(
+        "table1_iterations",
+        {f"m={k[0]} ({k[1]})": [mp.nstr(v, 6) for v in h[:6]] for k, h in table1.items()},
+        "Contact-duration iterates T⁽⁰⁾…T⁽⁵⁾ [s] on Table 1's inputs (B/A = −M/m, c₁ = 0).",
+        "31",
+    )
+    converged = all(abs(h[-1] - h[-2]) < 1e-20 for h in table1.values())
+    board.check(
+        "fixed point converges on Table 1 inputs",
+        "30–31, Table 1",
+        converged,
+        "; ".join(f"m={k[0]} {k[1]} {mp.nstr(h[-1], 4)} s" for k, h in table1.items()),
+    )
 
     # --- kernels ------------------------------------------------------------------------------------
     aT = Arg(T, "s", "Current contact-duration iterate T⁽ⁱ⁻¹⁾", 1e-3, 1.0, log=True)
