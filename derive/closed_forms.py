@@ -186,7 +186,7 @@ def derive() -> Board:
     board.kernel(
         name="hertz_max_penetration",
         args=(am, aM, ahz, av),
-        expr=z_max.subs(mu, mu),
+        expr=z_max,
         returns="Largest Hertz penetration",
         unit="m",
         equation="34",

@@ -195,5 +195,4 @@ def derive() -> Board:
             equation=eq,
             lhs=sp.latex(sym),
         )
-    del linear
     return board

@@ -21,12 +21,6 @@ RTOL = 1e-12
 N_POINTS = 200
 
 
-def _kernels(boards):
-    for step, b in boards.items():
-        for k in b.kernels:
-            yield step, k
-
-
 def _sample(kernel, rng):
     points = []
     checks = [sp.lambdify([a.symbol for a in kernel.args], c, "mpmath") for c in kernel.constraints]
