@@ -11,6 +11,7 @@ from pathlib import Path
 import jinja2
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
+from sympy.printing.pycode import PythonCodePrinter
 
 from .board import Board, Kernel
 
@@ -28,6 +29,13 @@ _env = jinja2.Environment(
 
 class KernelPrinter(NumPyPrinter):
     """NumPy printer with floats written in full (``repr``) so no digit is lost."""
+
+    def _print_Float(self, expr: sp.Float) -> str:
+        return repr(float(expr))
+
+
+class ScalarKernelPrinter(PythonCodePrinter):
+    """``math``-module printer for the scalar twins that a compiled loop (numba) can call."""
 
     def _print_Float(self, expr: sp.Float) -> str:
         return repr(float(expr))
@@ -51,11 +59,13 @@ def numeric_constants(expr: sp.Expr) -> sp.Expr:
     return expr.replace(is_special_constant, lambda e: sp.Float(e.evalf(30), 30))
 
 
-def kernel_body(kernel: Kernel) -> tuple[list[tuple[str, str]], str, int]:
+def kernel_body(
+    kernel: Kernel, printer_class: type = KernelPrinter
+) -> tuple[list[tuple[str, str]], str, int]:
     """Common-subexpression-eliminated assignments, the returned expression and the op count."""
     expr = numeric_constants(sp.sympify(kernel.expr))
     replacements, (reduced,) = sp.cse([expr], symbols=sp.numbered_symbols("_x"), order="canonical")
-    printer = KernelPrinter({"fully_qualified_modules": True})
+    printer = printer_class({"fully_qualified_modules": True})
     lines = [(str(sym), printer.doprint(val)) for sym, val in replacements]
     ops = sum(int(sp.count_ops(val)) for _, val in replacements) + int(sp.count_ops(reduced))
     return lines, printer.doprint(reduced), ops
@@ -72,12 +82,15 @@ def render_module(board: Board) -> str:
     total_ops = 0
     for k in board.kernels:
         lines, result, ops = kernel_body(k)
+        scalar_lines, scalar_result, _ = kernel_body(k, ScalarKernelPrinter)
         total_ops += ops
         kernels.append(
             {
                 "kernel": k,
                 "lines": lines,
                 "result": result,
+                "scalar_lines": scalar_lines,
+                "scalar_result": scalar_result,
                 "ops": ops,
                 "latex": latex_of(k),
                 "argnames": ", ".join(a.name for a in k.args),

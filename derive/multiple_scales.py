@@ -304,6 +304,18 @@ def derive() -> Board:
             printed=printed,
         )
         board.kernel(
+            name=f"relative_velocity{suffix}",
+            args=(at, aO, am, aa, ac, az, aR),
+            expr=sp.diff(z_t, t).subs(s),
+            returns="Relative velocity ż = ẏ − ẋ during contact (time derivative of Eq. 32)",
+            unit="m/s",
+            magnitude=(Zd0 + c1 * Zd0 / (m * Om) * abs(R - 1) / abs(R))
+            * (1 + a * Zd0**2 / (m * Om**4) * abs(R)),
+            equation="32",
+            lhs=r"\dot{z}(t)",
+            printed=printed,
+        )
+        board.kernel(
             name=f"main_mass_displacement_contact{suffix}",
             args=(at, aO, am, aa, ac, az, aR),
             expr=(z_t / (R - 1)).subs(s),

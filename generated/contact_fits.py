@@ -6,8 +6,11 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
+for compiled loops (numba) and scalar callers. All quantities are in SI units.
 """
+
+import math
 
 import numpy
 
@@ -15,11 +18,17 @@ from ._broadcast import broadcast, shaped
 
 __all__ = [
     "cubic_fit_a",
+    "cubic_fit_a_scalar",
     "cubic_fit_a_continuous",
+    "cubic_fit_a_continuous_scalar",
     "cubic_fit_b",
+    "cubic_fit_b_scalar",
     "cubic_fit_b_continuous",
+    "cubic_fit_b_continuous_scalar",
     "linear_fit_k1",
+    "linear_fit_k1_scalar",
     "linear_fit_k1_continuous",
+    "linear_fit_k1_continuous_scalar",
 ]
 
 
@@ -52,6 +61,11 @@ def cubic_fit_a(k_hz, delta_max):
     return shaped(0.43915629344267737*k_hz/delta_max**(3/2), k_hz.shape)
 
 
+def cubic_fit_a_scalar(k_hz, delta_max):
+    """Cubic coefficient a: least squares on 21 uniform samples of [0, δ_max] [N/m^3]: float twin of `cubic_fit_a` (Eq. 9)."""
+    return 0.43915629344267737*k_hz/delta_max**(3/2)
+
+
 def cubic_fit_a_continuous(k_hz, delta_max):
     r"""Cubic coefficient a: continuous least squares over [0, δ_max] [N/m^3].
 
@@ -76,6 +90,11 @@ def cubic_fit_a_continuous(k_hz, delta_max):
     """
     k_hz, delta_max = broadcast(k_hz, delta_max)
     return shaped((5/11)*k_hz/delta_max**(3/2), k_hz.shape)
+
+
+def cubic_fit_a_continuous_scalar(k_hz, delta_max):
+    """Cubic coefficient a: continuous least squares over [0, δ_max] [N/m^3]: float twin of `cubic_fit_a_continuous` (Eq. 9)."""
+    return (5/11)*k_hz/delta_max**(3/2)
 
 
 def cubic_fit_b(k_hz, delta_max):
@@ -107,6 +126,11 @@ def cubic_fit_b(k_hz, delta_max):
     return shaped(0.5911060702888449*numpy.sqrt(delta_max)*k_hz, k_hz.shape)
 
 
+def cubic_fit_b_scalar(k_hz, delta_max):
+    """Linear coefficient b of the cubic law: least squares on 21 uniform samples of [0, δ_max] [N/m]: float twin of `cubic_fit_b` (Eq. 9)."""
+    return 0.5911060702888449*math.sqrt(delta_max)*k_hz
+
+
 def cubic_fit_b_continuous(k_hz, delta_max):
     r"""Linear coefficient b of the cubic law: continuous least squares over [0, δ_max] [N/m].
 
@@ -131,6 +155,11 @@ def cubic_fit_b_continuous(k_hz, delta_max):
     """
     k_hz, delta_max = broadcast(k_hz, delta_max)
     return shaped((45/77)*numpy.sqrt(delta_max)*k_hz, k_hz.shape)
+
+
+def cubic_fit_b_continuous_scalar(k_hz, delta_max):
+    """Linear coefficient b of the cubic law: continuous least squares over [0, δ_max] [N/m]: float twin of `cubic_fit_b_continuous` (Eq. 9)."""
+    return (45/77)*math.sqrt(delta_max)*k_hz
 
 
 def linear_fit_k1(k_hz, delta_max):
@@ -162,6 +191,11 @@ def linear_fit_k1(k_hz, delta_max):
     return shaped(0.8675549570110103*numpy.sqrt(delta_max)*k_hz, k_hz.shape)
 
 
+def linear_fit_k1_scalar(k_hz, delta_max):
+    """Equivalent linear contact stiffness k₁: least squares on 21 uniform samples of [0, δ_max] [N/m]: float twin of `linear_fit_k1` (Eq. 35)."""
+    return 0.8675549570110103*math.sqrt(delta_max)*k_hz
+
+
 def linear_fit_k1_continuous(k_hz, delta_max):
     r"""Equivalent linear contact stiffness k₁: continuous least squares over [0, δ_max] [N/m].
 
@@ -186,3 +220,8 @@ def linear_fit_k1_continuous(k_hz, delta_max):
     """
     k_hz, delta_max = broadcast(k_hz, delta_max)
     return shaped((6/7)*numpy.sqrt(delta_max)*k_hz, k_hz.shape)
+
+
+def linear_fit_k1_continuous_scalar(k_hz, delta_max):
+    """Equivalent linear contact stiffness k₁: continuous least squares over [0, δ_max] [N/m]: float twin of `linear_fit_k1_continuous` (Eq. 35)."""
+    return (6/7)*math.sqrt(delta_max)*k_hz

@@ -6,8 +6,11 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
+for compiled loops (numba) and scalar callers. All quantities are in SI units.
 """
+
+import math
 
 import numpy
 
@@ -15,9 +18,13 @@ from ._broadcast import broadcast, shaped
 
 __all__ = [
     "main_mass_displacement",
+    "main_mass_displacement_scalar",
     "main_mass_velocity",
+    "main_mass_velocity_scalar",
     "impact_mass_velocity",
+    "impact_mass_velocity_scalar",
     "impact_mass_displacement",
+    "impact_mass_displacement_scalar",
 ]
 
 
@@ -57,6 +64,15 @@ def main_mass_displacement(t, M, K, C, x0, xdot0):
     _x2 = numpy.sqrt(-1/4*C**2/M**2 + K*_x0)
     _x3 = _x2*t
     return shaped((x0*numpy.cos(_x3) + (_x1*x0 + xdot0)*numpy.sin(_x3)/_x2)*numpy.exp(-_x1*t), t.shape)
+
+
+def main_mass_displacement_scalar(t, M, K, C, x0, xdot0):
+    """Main-mass displacement x(t) in free flight [m]: float twin of `main_mass_displacement` (Eq. 7)."""
+    _x0 = 1/M
+    _x1 = (1/2)*C*_x0
+    _x2 = math.sqrt(-1/4*C**2/M**2 + K*_x0)
+    _x3 = _x2*t
+    return (x0*math.cos(_x3) + (_x1*x0 + xdot0)*math.sin(_x3)/_x2)*math.exp(-_x1*t)
 
 
 def main_mass_velocity(t, M, K, C, x0, xdot0):
@@ -101,6 +117,19 @@ def main_mass_velocity(t, M, K, C, x0, xdot0):
     return shaped(-_x1*_x2*(_x3*_x7/_x4 + _x6*x0) + _x2*(_x3*_x6 - _x4*_x7*x0), t.shape)
 
 
+def main_mass_velocity_scalar(t, M, K, C, x0, xdot0):
+    """Main-mass velocity ẋ(t) in free flight [m/s]: float twin of `main_mass_velocity` (Eq. 7)."""
+    _x0 = 1/M
+    _x1 = (1/2)*C*_x0
+    _x2 = math.exp(-_x1*t)
+    _x3 = _x1*x0 + xdot0
+    _x4 = math.sqrt(-1/4*C**2/M**2 + K*_x0)
+    _x5 = _x4*t
+    _x6 = math.cos(_x5)
+    _x7 = math.sin(_x5)
+    return -_x1*_x2*(_x3*_x7/_x4 + _x6*x0) + _x2*(_x3*_x6 - _x4*_x7*x0)
+
+
 def impact_mass_velocity(t, ydot0):
     r"""Impact-mass velocity ẏ(t) in free flight [m/s].
 
@@ -125,6 +154,11 @@ def impact_mass_velocity(t, ydot0):
     """
     t, ydot0 = broadcast(t, ydot0)
     return shaped(ydot0, t.shape)
+
+
+def impact_mass_velocity_scalar(t, ydot0):
+    """Impact-mass velocity ẏ(t) in free flight [m/s]: float twin of `impact_mass_velocity` (Eq. 7)."""
+    return ydot0
 
 
 def impact_mass_displacement(t, y0, ydot0):
@@ -153,3 +187,8 @@ def impact_mass_displacement(t, y0, ydot0):
     """
     t, y0, ydot0 = broadcast(t, y0, ydot0)
     return shaped(t*ydot0 + y0, t.shape)
+
+
+def impact_mass_displacement_scalar(t, y0, ydot0):
+    """Impact-mass displacement y(t) in free flight [m]: float twin of `impact_mass_displacement` (Eq. 7)."""
+    return t*ydot0 + y0

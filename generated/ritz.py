@@ -6,8 +6,11 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
+for compiled loops (numba) and scalar callers. All quantities are in SI units.
 """
+
+import math
 
 import numpy
 
@@ -16,11 +19,17 @@ from ._broadcast import broadcast, shaped
 __all__ = [
     "BETA_L",
     "mode_shape",
+    "mode_shape_scalar",
     "mass_coefficient",
+    "mass_coefficient_scalar",
     "stiffness_coefficient",
+    "stiffness_coefficient_scalar",
     "tip_stiffness",
+    "tip_stiffness_scalar",
     "tip_stiffness_printed",
+    "tip_stiffness_printed_scalar",
     "tip_mass",
+    "tip_mass_scalar",
 ]
 
 #: Roots β_i·L of cos(βL)·cosh(βL) + 1 = 0, modes 1..8 (mpmath, 60 digits).
@@ -76,6 +85,14 @@ def mode_shape(beta_L, xi):
     return shaped(_x2*numpy.cosh(_x0) - (_x2 + 1)*numpy.cos(_x0) + numpy.sin(_x0) + numpy.exp(-_x0), beta_L.shape)
 
 
+def mode_shape_scalar(beta_L, xi):
+    """Mode shape φ(ξ) of Eq. 3 at ξ = r/L [1]: float twin of `mode_shape` (Eq. 3)."""
+    _x0 = beta_L*xi
+    _x1 = math.cos(beta_L)
+    _x2 = (-_x1 + math.sin(beta_L) - math.exp(-beta_L))/(_x1 + math.cosh(beta_L))
+    return _x2*math.cosh(_x0) - (_x2 + 1)*math.cos(_x0) + math.sin(_x0) + math.exp(-_x0)
+
+
 def mass_coefficient(beta_L, xi):
     r"""Generalised mass M/(ρAL) referred to the damper position ξ [1].
 
@@ -110,6 +127,18 @@ def mass_coefficient(beta_L, xi):
     _x5 = _x4 + 1
     _x6 = beta_L*xi
     return shaped((1/4)*(_x0 + _x1 + _x2*_x4 - _x3*_x5)**2/(_x4*numpy.cosh(_x6) - _x5*numpy.cos(_x6) + numpy.sin(_x6) + numpy.exp(-_x6))**2, beta_L.shape)
+
+
+def mass_coefficient_scalar(beta_L, xi):
+    """Generalised mass M/(ρAL) referred to the damper position ξ [1]: float twin of `mass_coefficient` (Eq. 5–6)."""
+    _x0 = math.sin(beta_L)
+    _x1 = math.exp(-beta_L)
+    _x2 = math.cosh(beta_L)
+    _x3 = math.cos(beta_L)
+    _x4 = (_x0 - _x1 - _x3)/(_x2 + _x3)
+    _x5 = _x4 + 1
+    _x6 = beta_L*xi
+    return (1/4)*(_x0 + _x1 + _x2*_x4 - _x3*_x5)**2/(_x4*math.cosh(_x6) - _x5*math.cos(_x6) + math.sin(_x6) + math.exp(-_x6))**2
 
 
 def stiffness_coefficient(beta_L, xi):
@@ -148,6 +177,18 @@ def stiffness_coefficient(beta_L, xi):
     return shaped((1/4)*beta_L**4*(_x0 + _x1 + _x2*_x4 - _x3*_x5)**2/(_x4*numpy.cosh(_x6) - _x5*numpy.cos(_x6) + numpy.sin(_x6) + numpy.exp(-_x6))**2, beta_L.shape)
 
 
+def stiffness_coefficient_scalar(beta_L, xi):
+    """Generalised stiffness K·L³/(EI) referred to the damper position ξ [1]: float twin of `stiffness_coefficient` (Eq. 5–6)."""
+    _x0 = math.sin(beta_L)
+    _x1 = math.exp(-beta_L)
+    _x2 = math.cosh(beta_L)
+    _x3 = math.cos(beta_L)
+    _x4 = (_x0 - _x1 - _x3)/(_x2 + _x3)
+    _x5 = _x4 + 1
+    _x6 = beta_L*xi
+    return (1/4)*beta_L**4*(_x0 + _x1 + _x2*_x4 - _x3*_x5)**2/(_x4*math.cosh(_x6) - _x5*math.cos(_x6) + math.sin(_x6) + math.exp(-_x6))**2
+
+
 def tip_stiffness(E, I, L):
     r"""Tip-referred stiffness K of mode 1 [N/m].
 
@@ -174,6 +215,11 @@ def tip_stiffness(E, I, L):
     """
     E, I, L = broadcast(E, I, L)
     return shaped(3.0905908420815478*E*I/L**3, E.shape)
+
+
+def tip_stiffness_scalar(E, I, L):
+    """Tip-referred stiffness K of mode 1 [N/m]: float twin of `tip_stiffness` (Eq. 6)."""
+    return 3.0905908420815478*E*I/L**3
 
 
 def tip_stiffness_printed(E, I, L):
@@ -204,6 +250,11 @@ def tip_stiffness_printed(E, I, L):
     return shaped((12362361/4000000)*E*I/L**3, E.shape)
 
 
+def tip_stiffness_printed_scalar(E, I, L):
+    """Tip-referred stiffness K of mode 1 with the printed constant 12.362361 [N/m]: float twin of `tip_stiffness_printed` (Eq. 6)."""
+    return (12362361/4000000)*E*I/L**3
+
+
 def tip_mass(rho, A, L):
     r"""Tip-referred mass M of mode 1 [kg].
 
@@ -230,3 +281,8 @@ def tip_mass(rho, A, L):
     """
     rho, A, L = broadcast(rho, A, L)
     return shaped((1/4)*A*L*rho, rho.shape)
+
+
+def tip_mass_scalar(rho, A, L):
+    """Tip-referred mass M of mode 1 [kg]: float twin of `tip_mass` (Eq. 6)."""
+    return (1/4)*A*L*rho

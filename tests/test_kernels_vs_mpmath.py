@@ -1,9 +1,10 @@
 """Every generated kernel against a 50-digit mpmath evaluation of its SymPy expression.
 
 200 random physical points per kernel (seeded; each argument uniform or log-uniform on the range
-its derivation declares, points violating the kernel's constraints redrawn).  Tolerance: 1e-12
-relative; for oscillating results the bound is 1e-12·(|value| + amplitude), because near a zero
-crossing the float64 rounding of the phase dominates any relative measure.
+its derivation declares, points violating the kernel's constraints redrawn).  Each ``_scalar`` twin
+(``math`` module, for numba) is checked at the same points.  Tolerance: 1e-12 relative; for
+oscillating results the bound is 1e-12·(|value| + amplitude), because near a zero crossing the
+float64 rounding of the phase dominates any relative measure.
 """
 
 from __future__ import annotations
@@ -50,12 +51,19 @@ def test_kernels_match_mpmath(boards, step):
         points = _sample(kernel, rng)
         got = getattr(module, kernel.name)(*points.T)  # vectorised call: one array per argument
         assert got.shape == (N_POINTS,)
+        scalar = getattr(module, f"{kernel.name}_scalar")  # the math-module twin, point by point
+        got_scalar = [scalar(*map(float, p)) for p in points]
         with mp.workdps(50):
-            for p, value in zip(points, got, strict=True):
+            for p, value, value_scalar in zip(points, got, got_scalar, strict=True):
                 exact = reference(*[mp.mpf(float(v)) for v in p])
                 assert mp.im(exact) == 0, (kernel.name, p)
                 exact = mp.re(exact)
                 bound = RTOL * (abs(exact) + abs(scale(*[mp.mpf(float(v)) for v in p])))
                 assert abs(mp.mpf(float(value)) - exact) <= bound, (
                     f"{step}.{kernel.name}{tuple(p)} = {value!r}, mpmath {mp.nstr(exact, 20)}"
+                )
+                assert isinstance(value_scalar, float)
+                assert abs(mp.mpf(value_scalar) - exact) <= bound, (
+                    f"{step}.{kernel.name}_scalar{tuple(p)} = {value_scalar!r}, "
+                    f"mpmath {mp.nstr(exact, 20)}"
                 )
