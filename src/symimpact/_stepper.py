@@ -1,0 +1,559 @@
+"""Compiled event-driven stepper (numba, cached on disk): free flight in closed form, contact
+integrated by an embedded Runge–Kutta 5(4) pair (Dormand–Prince) with located events.
+
+Free flight (Eq. 7) uses the generated ``*_scalar`` kernels compiled by numba.  The onset of
+contact, |y − x| = d/2, is found without sampling gaps: on [τa, τb] the relative displacement
+z = y − x obeys |z''| = |ẍ| ≤ A_max (Cauchy–Schwarz on the main mass's energy, which free flight
+never increases), so max z ≤ max(z_a, z_b) + A_max·(τb − τa)²/8.  An interval that this bound
+clears is skipped; one that it does not clear is halved, down to a resolution below which a
+missed excursion would be shorter than 1e-20 of the gap.  Crossings are then bracketed and refined.
+
+Contact (Eq. 10 with the chosen law) is integrated step by step.  Its end δ = 0, and the maxima of
+x (for Eq. 36), are located by re-stepping from the start of the step with a shorter step until
+the event function vanishes (Illinois regula falsi), so located states carry the integrator's
+full accuracy.  Dissipation by C and c₁ is integrated with the motion for the energy balance.
+
+This module is private: :mod:`symimpact.simulation` validates the input and builds the result.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from .generated import free_flight as _ff
+from .generated import multiple_scales as _ms
+
+CUBIC, HERTZ, LINEAR, PERTURBATION = 0, 1, 2, 3
+# parameter vector layout
+P_M, P_K, P_C, P_m, P_h, P_a, P_b, P_khz, P_k1, P_c1, P_ba, P_rtol, P_atolx, P_atolv = range(14)
+N_PARAMS = 14
+# impact-log columns
+(
+    I_T,
+    I_X,
+    I_XD,
+    I_Y,
+    I_YD,
+    I_SIDE,
+    I_TOFF,
+    I_XOFF,
+    I_XDOFF,
+    I_YOFF,
+    I_YDOFF,
+    I_EON,
+    I_EOFF,
+    I_DC1,
+    I_DC,
+    I_DONE,
+) = range(16)
+N_IMPACT_COLS = 16
+# trace columns: t, x, xd, y, yd, xdd, ydd, kind (0: free flight from here, 1: contact point)
+N_TRACE_COLS = 8
+# status codes
+OK, FULL_IMPACTS, FULL_TRACE, STEP_UNDERFLOW, NO_CONVERGENCE = 0, 1, 2, 3, 4
+
+_x_ff = njit(cache=True)(_ff.main_mass_displacement_scalar)
+_xd_ff = njit(cache=True)(_ff.main_mass_velocity_scalar)
+_T_map = njit(cache=True)(_ms.contact_duration_map_scalar)
+_T_start = njit(cache=True)(_ms.contact_duration_start_scalar)
+_z_pert = njit(cache=True)(_ms.relative_displacement_scalar)
+_zd_pert = njit(cache=True)(_ms.relative_velocity_scalar)
+
+# Dormand–Prince 5(4) tableau
+_C2, _C3, _C4, _C5 = 1 / 5, 3 / 10, 4 / 5, 8 / 9
+_A21 = 1 / 5
+_A31, _A32 = 3 / 40, 9 / 40
+_A41, _A42, _A43 = 44 / 45, -56 / 15, 32 / 9
+_A51, _A52, _A53, _A54 = 19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729
+_A61, _A62, _A63, _A64, _A65 = 9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656
+_B1, _B3, _B4, _B5, _B6 = 35 / 384, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84
+_E1, _E3, _E4, _E5, _E6, _E7 = (
+    71 / 57600,
+    -71 / 16695,
+    71 / 1920,
+    -17253 / 339200,
+    22 / 525,
+    -1 / 40,
+)
+NV = 6  # x, ẋ, y, ẏ, ∫Cẋ², ∫c₁δ̇²
+
+
+@njit(cache=True)
+def contact_force(law: int, p: np.ndarray, delta: float, ddelta: float) -> float:
+    """Force pushing the masses apart at penetration δ and rate δ̇ (Eq. 8, 9, 35 + c₁δ̇)."""
+    if law == HERTZ:
+        fe = p[P_khz] * max(delta, 0.0) ** 1.5
+    elif law == LINEAR:
+        fe = p[P_k1] * delta
+    else:
+        fe = (p[P_a] * delta * delta + p[P_b]) * delta
+    return fe + p[P_c1] * ddelta
+
+
+@njit(cache=True)
+def contact_potential(law: int, p: np.ndarray, delta: float) -> float:
+    """Elastic energy stored in the contact at penetration δ ≥ 0."""
+    if delta <= 0.0:
+        return 0.0
+    if law == HERTZ:
+        return 0.4 * p[P_khz] * delta**2.5
+    if law == LINEAR:
+        return 0.5 * p[P_k1] * delta * delta
+    return 0.25 * p[P_a] * delta**4 + 0.5 * p[P_b] * delta * delta
+
+
+@njit(cache=True)
+def _rhs(law, p, side, u, out):
+    x, xd, y, yd = u[0], u[1], u[2], u[3]
+    delta = side * (y - x) - p[P_h]
+    ddelta = side * (yd - xd)
+    f = contact_force(law, p, delta, ddelta)
+    out[0] = xd
+    out[1] = (side * f - p[P_C] * xd - p[P_K] * x) / p[P_M]
+    out[2] = yd
+    out[3] = -side * f / p[P_m]
+    out[4] = p[P_C] * xd * xd
+    out[5] = p[P_c1] * ddelta * ddelta
+
+
+@njit(cache=True)
+def _dp_step(law, p, side, u, k1, h, unew, k7, err_weights):
+    """One Dormand–Prince step from u (k1 = f(u)); writes unew, k7 = f(unew); returns error."""
+    k2 = np.empty(NV)
+    k3 = np.empty(NV)
+    k4 = np.empty(NV)
+    k5 = np.empty(NV)
+    k6 = np.empty(NV)
+    tmp = np.empty(NV)
+    for i in range(NV):
+        tmp[i] = u[i] + h * _A21 * k1[i]
+    _rhs(law, p, side, tmp, k2)
+    for i in range(NV):
+        tmp[i] = u[i] + h * (_A31 * k1[i] + _A32 * k2[i])
+    _rhs(law, p, side, tmp, k3)
+    for i in range(NV):
+        tmp[i] = u[i] + h * (_A41 * k1[i] + _A42 * k2[i] + _A43 * k3[i])
+    _rhs(law, p, side, tmp, k4)
+    for i in range(NV):
+        tmp[i] = u[i] + h * (_A51 * k1[i] + _A52 * k2[i] + _A53 * k3[i] + _A54 * k4[i])
+    _rhs(law, p, side, tmp, k5)
+    for i in range(NV):
+        tmp[i] = u[i] + h * (
+            _A61 * k1[i] + _A62 * k2[i] + _A63 * k3[i] + _A64 * k4[i] + _A65 * k5[i]
+        )
+    _rhs(law, p, side, tmp, k6)
+    for i in range(NV):
+        unew[i] = u[i] + h * (_B1 * k1[i] + _B3 * k3[i] + _B4 * k4[i] + _B5 * k5[i] + _B6 * k6[i])
+    _rhs(law, p, side, unew, k7)
+    acc = 0.0
+    for i in range(4):
+        e = h * (_E1 * k1[i] + _E3 * k3[i] + _E4 * k4[i] + _E5 * k5[i] + _E6 * k6[i] + _E7 * k7[i])
+        sc = err_weights[i] + p[P_rtol] * max(abs(u[i]), abs(unew[i]))
+        acc += (e / sc) ** 2
+    return math.sqrt(acc / 4.0)
+
+
+@njit(cache=True)
+def _energy(law, p, u, side):
+    x, xd, y, yd = u[0], u[1], u[2], u[3]
+    e = 0.5 * p[P_M] * xd * xd + 0.5 * p[P_K] * x * x + 0.5 * p[P_m] * yd * yd
+    if side != 0:
+        e += contact_potential(law, p, side * (y - x) - p[P_h])
+    return e
+
+
+@njit(cache=True)
+def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which, out, kout, wts):
+    """Shortest step θ ∈ (0, h_hi] from u at which event ``which`` vanishes; state in ``out``.
+
+    which = 0: penetration δ (end of contact); which = 1: main-mass velocity ẋ (maximum of x).
+    """
+    lo, hi = 0.0, h_hi
+    flo, fhi = g_lo, g_hi
+    side_kept = 0
+    theta = hi
+    for _ in range(200):
+        theta = (lo * fhi - hi * flo) / (fhi - flo)
+        if not (lo < theta < hi):
+            theta = 0.5 * (lo + hi)
+        _dp_step(law, p, side, u, k1, theta, out, kout, wts)
+        g = side * (out[2] - out[0]) - p[P_h] if which == 0 else out[1]
+        if g == 0.0:
+            return theta
+        if (g > 0.0) == (flo > 0.0):
+            lo, flo = theta, g
+            if side_kept == -1:
+                fhi *= 0.5
+            side_kept = -1
+        else:
+            hi, fhi = theta, g
+            if side_kept == 1:
+                flo *= 0.5
+            side_kept = 1
+        if hi - lo <= 4e-16 * max(hi, 1e-300) + 1e-300:
+            break
+    _dp_step(law, p, side, u, k1, hi, out, kout, wts)
+    return hi
+
+
+@njit(cache=True)
+def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, record):
+    """Integrate one contact from δ = 0; returns (status, t, npk, ntr, done, h_last) with u0 updated
+    in place to the state at the end of contact (or at t_end)."""
+    wts = np.empty(4)
+    wts[0] = p[P_atolx]
+    wts[1] = p[P_atolv]
+    wts[2] = p[P_atolx]
+    wts[3] = p[P_atolv]
+    u = u0.copy()
+    u[4] = 0.0
+    u[5] = 0.0
+    k1 = np.empty(NV)
+    unew = np.empty(NV)
+    k7 = np.empty(NV)
+    uev = np.empty(NV)
+    kev = np.empty(NV)
+    _rhs(law, p, side, u, k1)
+    t = t0
+    h = h_guess
+    status = OK
+    done = False
+    if record:
+        if ntr >= trace.shape[0]:
+            return FULL_TRACE, t, npk, ntr, False, h
+        trace[ntr, 0] = t
+        for i in range(4):
+            trace[ntr, 1 + i] = u[i]
+        trace[ntr, 5] = k1[1]
+        trace[ntr, 6] = k1[3]
+        trace[ntr, 7] = 1.0
+        ntr += 1
+    while True:
+        if t_end - t <= 0.0:
+            break
+        h = min(h, t_end - t)
+        if h < 1e-15 * max(abs(t), 1e-3):
+            status = STEP_UNDERFLOW
+            break
+        err = _dp_step(law, p, side, u, k1, h, unew, k7, wts)
+        if err > 1.0 or not math.isfinite(err):
+            fac = 0.2 if not math.isfinite(err) else max(0.2, 0.9 * err**-0.2)
+            h *= fac
+            continue
+        d_old = side * (u[2] - u[0]) - p[P_h]
+        d_new = side * (unew[2] - unew[0]) - p[P_h]
+        hstep = h
+        ended = d_new < 0.0
+        if ended:
+            hstep = _locate(law, p, side, u, k1, h, d_old, d_new, 0, unew, k7, wts)
+        if u[1] > 0.0 and unew[1] <= 0.0 and npk < peaks.shape[0]:
+            hp = _locate(law, p, side, u, k1, hstep, u[1], unew[1], 1, uev, kev, wts)
+            if uev[0] > 0.0:
+                peaks[npk, 0] = t + hp
+                peaks[npk, 1] = uev[0]
+                npk += 1
+        t = t + hstep
+        for i in range(NV):
+            u[i] = unew[i]
+            k1[i] = k7[i]
+        if record:
+            if ntr >= trace.shape[0]:
+                status = FULL_TRACE
+                break
+            trace[ntr, 0] = t
+            for i in range(4):
+                trace[ntr, 1 + i] = u[i]
+            trace[ntr, 5] = k1[1]
+            trace[ntr, 6] = k1[3]
+            trace[ntr, 7] = 1.0
+            ntr += 1
+        if ended:
+            done = True
+            break
+        h = hstep * min(5.0, max(0.2, 0.9 * max(err, 1e-10) ** -0.2))
+    for i in range(NV):
+        u0[i] = u[i]
+    return status, t, npk, ntr, done, h
+
+
+@njit(cache=True)
+def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk):
+    """Contact by the two-variable solution (Eq. 31–33), about a frame that keeps ẋ continuous.
+
+    Returns (status, t, npk, done); u0 is updated to the end state (dissipation not integrated).
+    """
+    M, m, a, b, c1, ba = p[P_M], p[P_m], p[P_a], p[P_b], p[P_c1], p[P_ba]
+    v = side * (u0[3] - u0[1])
+    T = _T_start(m, b, ba)
+    converged = False
+    for _ in range(500):
+        Tn = _T_map(T, m, a, b, c1, v, ba)
+        if abs(Tn - T) <= 1e-14 * Tn:
+            T = Tn
+            converged = True
+            break
+        T = Tn
+    if not converged or not math.isfinite(T):
+        return NO_CONVERGENCE, t0, npk, False
+    Om = math.pi / T
+    x_on, xd_on = u0[0], u0[1]
+    vdrift = xd_on - side * v / (ba - 1.0)
+    t_stop = min(T, t_end - t0)
+    # maxima of x inside the contact: sign changes of ẋ on a fine grid, refined by bisection
+    n = 64
+    prev_t = 0.0
+    prev_xd = xd_on
+    for j in range(1, n + 1):
+        tj = t_stop * j / n
+        xdj = vdrift + side * _zd_pert(tj, Om, m, a, c1, v, ba) / (ba - 1.0)
+        if prev_xd > 0.0 and xdj <= 0.0 and npk < peaks.shape[0]:
+            lo, hi = prev_t, tj
+            for _ in range(100):
+                mid = 0.5 * (lo + hi)
+                if vdrift + side * _zd_pert(mid, Om, m, a, c1, v, ba) / (ba - 1.0) > 0.0:
+                    lo = mid
+                else:
+                    hi = mid
+            tm = 0.5 * (lo + hi)
+            xm = x_on + vdrift * tm + side * _z_pert(tm, Om, m, a, c1, v, ba) / (ba - 1.0)
+            if xm > 0.0:
+                peaks[npk, 0] = t0 + tm
+                peaks[npk, 1] = xm
+                npk += 1
+        prev_t, prev_xd = tj, xdj
+    d = _z_pert(t_stop, Om, m, a, c1, v, ba)
+    dd = _zd_pert(t_stop, Om, m, a, c1, v, ba)
+    if t_stop >= T:
+        d = 0.0  # sin(π) and sin(3π) in floating point: the contact has ended exactly
+    x = x_on + vdrift * t_stop + side * d / (ba - 1.0)
+    xd = vdrift + side * dd / (ba - 1.0)
+    u0[0] = x
+    u0[1] = xd
+    u0[2] = x + side * (p[P_h] + d)
+    u0[3] = xd + side * dd
+    return OK, t0 + t_stop, npk, t_stop >= T
+
+
+@njit(cache=True)
+def _z_free(p, tau, x0, xd0, y0, yd0):
+    return y0 + yd0 * tau - _x_ff(tau, p[P_M], p[P_K], p[P_C], x0, xd0)
+
+
+@njit(cache=True)
+def _onset(p, x0, xd0, y0, yd0, tau0, T):
+    """First τ in [tau0, T] with |z(τ)| = d/2 (free flight from the state at τ = 0), or -1."""
+    M, K, C, h = p[P_M], p[P_K], p[P_C], p[P_h]
+    energy = 0.5 * M * xd0 * xd0 + 0.5 * K * x0 * x0
+    amax = math.sqrt(C * C / M + K) * math.sqrt(2.0 * energy) / M
+    wd = math.sqrt(K / M - C * C / (4 * M * M))
+    hmax = 2.0 * math.pi / wd / 16.0
+    hmin = 1e-10 * hmax
+    if amax > 0.0:
+        hmin = max(hmin, math.sqrt(8e-20 * h / amax))
+        hmin = min(hmin, 1e-6 * hmax)
+    tau = tau0
+    za = _z_free(p, tau, x0, xd0, y0, yd0)
+    H = hmax
+    while tau < T:
+        H = min(H, T - tau)
+        tb = tau + H
+        zb = _z_free(p, tb, x0, xd0, y0, yd0)
+        slack = amax * H * H / 8.0
+        if max(za, zb) + slack < h and min(za, zb) - slack > -h:
+            tau, za = tb, zb
+            H = min(2.0 * H, hmax)
+            continue
+        if H > hmin and H > 4e-16 * tb:
+            H *= 0.5
+            continue
+        if abs(zb) >= h:
+            s = 1.0 if zb > 0 else -1.0
+            lo, hi = tau, tb
+            flo = s * za - h
+            fhi = s * zb - h
+            kept = 0
+            for _ in range(200):
+                tm = (lo * fhi - hi * flo) / (fhi - flo)
+                if not (lo < tm < hi):
+                    tm = 0.5 * (lo + hi)
+                fm = s * _z_free(p, tm, x0, xd0, y0, yd0) - h
+                if fm >= 0.0:
+                    hi, fhi = tm, fm
+                    if kept == 1:
+                        flo *= 0.5
+                    kept = 1
+                else:
+                    lo, flo = tm, fm
+                    if kept == -1:
+                        fhi *= 0.5
+                    kept = -1
+                if hi - lo <= 4e-16 * hi:
+                    break
+            return hi
+        tau, za = tb, zb  # an excursion shorter than hmin: below 1e-20 of the gap
+        H = hmax
+    return -1.0
+
+
+@njit(cache=True)
+def _free_peaks(p, x0, xd0, t0, tau_a, tau_b, peaks, npk):
+    """Record maxima of x (ẋ from + to −, x > 0) in free flight on [tau_a, tau_b]."""
+    M, K, C = p[P_M], p[P_K], p[P_C]
+    wd = math.sqrt(K / M - C * C / (4 * M * M))
+    step = math.pi / wd / 4.0  # ẋ has at most one zero in a quarter of its half period
+    a = tau_a
+    fa = _xd_ff(a, M, K, C, x0, xd0)
+    while a < tau_b and npk < peaks.shape[0]:
+        b = min(a + step, tau_b)
+        fb = _xd_ff(b, M, K, C, x0, xd0)
+        if fa > 0.0 and fb <= 0.0:
+            lo, hi = a, b
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                if _xd_ff(mid, M, K, C, x0, xd0) > 0.0:
+                    lo = mid
+                else:
+                    hi = mid
+                if hi - lo <= 4e-16 * hi:
+                    break
+            tm = 0.5 * (lo + hi)
+            xm = _x_ff(tm, M, K, C, x0, xd0)
+            if xm > 0.0:
+                peaks[npk, 0] = t0 + tm
+                peaks[npk, 1] = xm
+                npk += 1
+        a, fa = b, fb
+    return npk
+
+
+@njit(cache=True)
+def run(law, p, state0, t_end, impacts, peaks, trace, record):
+    """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end.
+
+    Fills ``impacts`` (one row per contact), ``peaks`` (t, x of positive maxima of x) and, when
+    ``record``, ``trace``.  Returns (status, n_impacts, n_peaks, n_trace, final state [6],
+    dissipated by C, dissipated by c₁, final contact side (0: free)).
+    """
+    M, K, C, m, h = p[P_M], p[P_K], p[P_C], p[P_m], p[P_h]
+    u = np.zeros(NV)
+    for i in range(4):
+        u[i] = state0[i]
+    t = 0.0
+    n_imp = 0
+    npk = 0
+    ntr = 0
+    diss_C = 0.0
+    diss_c1 = 0.0
+    status = OK
+    side = 0.0
+    tau_skip = 0.0
+    h_contact = 1e-3 * 2.0 * math.pi / math.sqrt(K / M)
+    while t < t_end:
+        x0, xd0, y0, yd0 = u[0], u[1], u[2], u[3]
+        if record:
+            if ntr >= trace.shape[0]:
+                status = FULL_TRACE
+                break
+            trace[ntr, 0] = t
+            trace[ntr, 1] = x0
+            trace[ntr, 2] = xd0
+            trace[ntr, 3] = y0
+            trace[ntr, 4] = yd0
+            trace[ntr, 5] = -(C * xd0 + K * x0) / M
+            trace[ntr, 6] = 0.0
+            trace[ntr, 7] = 0.0
+            ntr += 1
+        e_main0 = 0.5 * M * xd0 * xd0 + 0.5 * K * x0 * x0
+        tau = _onset(p, x0, xd0, y0, yd0, tau_skip, t_end - t)
+        tau_stop = tau if tau >= 0.0 else t_end - t
+        npk = _free_peaks(p, x0, xd0, t, 0.0, tau_stop, peaks, npk)
+        x1 = _x_ff(tau_stop, M, K, C, x0, xd0)
+        xd1 = _xd_ff(tau_stop, M, K, C, x0, xd0)
+        u[0] = x1
+        u[1] = xd1
+        u[2] = y0 + yd0 * tau_stop
+        u[3] = yd0
+        diss_C += e_main0 - (0.5 * M * xd1 * xd1 + 0.5 * K * x1 * x1)
+        t = t + tau_stop
+        if tau < 0.0:
+            side = 0.0
+            break
+        # contact onset
+        if n_imp >= impacts.shape[0]:
+            status = FULL_IMPACTS
+            break
+        side = 1.0 if u[2] - u[0] > 0.0 else -1.0
+        u[2] = u[0] + side * h  # exactly on the boundary (the root is located to 4e-16)
+        row = impacts[n_imp]
+        row[I_T] = t
+        row[I_X] = u[0]
+        row[I_XD] = u[1]
+        row[I_Y] = u[2]
+        row[I_YD] = u[3]
+        row[I_SIDE] = side
+        e_on = _energy(law, p, u, side)
+        row[I_EON] = e_on
+        if law == PERTURBATION:
+            status, t1, npk, done = _perturbation_contact(p, side, t, u, t_end, peaks, npk)
+            d_c, d_c1 = 0.0, e_on - _energy(law, p, u, side)
+        else:
+            status, t1, npk, ntr, done, h_contact = _contact(
+                law, p, side, t, u, t_end, h_contact, peaks, npk, trace, ntr, record
+            )
+            d_c, d_c1 = u[4], u[5]
+        n_imp += 1
+        diss_C += d_c
+        diss_c1 += d_c1
+        t = t1
+        row[I_TOFF] = t
+        row[I_XOFF] = u[0]
+        row[I_XDOFF] = u[1]
+        row[I_YOFF] = u[2]
+        row[I_YDOFF] = u[3]
+        row[I_EOFF] = _energy(law, p, u, side)
+        row[I_DC1] = d_c1
+        row[I_DC] = d_c
+        row[I_DONE] = 1.0 if done else 0.0
+        if status != OK or not done:
+            break
+        side_exit = side
+        side = 0.0
+        u[2] = u[0] + side_exit * h  # exactly on the boundary again
+        # leave the boundary: f = s·z − h has f(0) = 0, f'(0) = v < 0, |f''| ≤ A, so f < 0 on
+        # (0, |v|/A]; the search for the next onset starts there.
+        v = side_exit * (u[3] - u[1])
+        e_main = 0.5 * M * u[1] * u[1] + 0.5 * K * u[0] * u[0]
+        amax = math.sqrt(C * C / M + K) * math.sqrt(2.0 * e_main) / M
+        wd = math.sqrt(K / M - C * C / (4 * M * M))
+        cap = 2.0 * math.pi / wd / 16.0
+        if v < 0.0:
+            tau_skip = min(-v / amax, cap) if amax > 0.0 else cap
+        else:
+            tau_skip = 1e-9 * cap  # grazing exit
+    return status, n_imp, npk, ntr, u, diss_C, diss_c1, side
+
+
+@njit(cache=True)
+def one_contact(law, p, v0):
+    """One contact from δ = 0: main mass at rest at x = 0, impact mass at relative speed v0.
+
+    Returns (status, duration, end state, energy at onset, energy at exit).
+    """
+    u = np.zeros(NV)
+    u[2] = p[P_h]
+    u[3] = v0
+    peaks = np.zeros((1, 2))
+    trace = np.zeros((1, N_TRACE_COLS))
+    e_on = _energy(law, p, u, 1.0)
+    # the contact of a free or sprung pair lasts far less than this; it is only a safety stop
+    t_cap = 1e3 * math.pi * math.sqrt(p[P_m] / max(p[P_b] + p[P_k1], 1e-300)) + 1e3
+    h0 = 1e-4 * min(p[P_h] / v0, 1.0)
+    status, t, npk, ntr, done, h = _contact(
+        law, p, 1.0, 0.0, u, t_cap, h0, peaks, 0, trace, 0, False
+    )
+    if not done:
+        return NO_CONVERGENCE, math.inf, u, e_on, e_on
+    return status, t, u, e_on, _energy(law, p, u, 1.0)

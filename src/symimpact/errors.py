@@ -1,0 +1,37 @@
+"""The package's own errors: every one is a ``ValueError`` that names what went wrong."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+
+class SymimpactError(ValueError):
+    """Base class of every error symimpact raises on bad input or an impossible request."""
+
+
+class ParameterError(SymimpactError):
+    """A parameter is invalid: ``parameter`` names it, ``reason`` says why."""
+
+    def __init__(self, parameter: str, reason: str) -> None:
+        self.parameter = parameter
+        self.reason = reason
+        super().__init__(f"{parameter}: {reason}")
+
+
+class MethodNotApplicable(SymimpactError):
+    """A method (e.g. a closed form) has no real answer for the given parameters."""
+
+    def __init__(self, method: str, reason: str) -> None:
+        self.method = method
+        self.reason = reason
+        super().__init__(f"method {method!r} does not apply: {reason}")
+
+
+class ConvergenceError(SymimpactError):
+    """An iteration did not converge; ``history`` holds the last iterates."""
+
+    def __init__(self, what: str, history: Sequence[float]) -> None:
+        self.what = what
+        self.history = list(history)
+        tail = ", ".join(f"{v:.6g}" for v in self.history[-5:])
+        super().__init__(f"{what} did not converge; last iterates: {tail}")

@@ -1,0 +1,367 @@
+"""Free vibration with impacts: the event-driven simulation and what the paper measures on it.
+
+:func:`simulate` runs the compiled stepper of :mod:`symimpact._stepper` (closed-form free flight,
+Eq. 7; contact by Eq. 10 with the chosen law, or by the perturbation solution Eq. 31–33) and
+returns a :class:`SimulationResult`: the impact log with the effective flag of Eq. 37, N_tot,
+N_eff, the effectiveness of Eq. 38, the damping inclination of Eq. 36 and the energy balance.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .errors import ParameterError, SymimpactError
+from .system import ImpactSystem
+from .units import positive, si
+
+CONTACT_PATHS = ("cubic", "hertz", "linear", "perturbation")
+
+
+@dataclass(frozen=True)
+class Impact:
+    """One contact: the state at onset, Eq. 37's effective flag and what the contact did.
+
+    ``t`` [s], ``x``, ``y`` [m], ``xdot``, ``ydot`` [m/s] at onset; ``duration`` [s] (None if the
+    simulation ended during the contact); ``restitution`` = −(relative exit speed)/(approach
+    speed) [1]; ``energy_lost`` [J] = mechanical energy at onset − at exit (c₁ and C together);
+    ``contact_dissipation`` [J] = ∫c₁δ̇² dt.
+    """
+
+    t: float
+    x: float
+    xdot: float
+    y: float
+    ydot: float
+    side: int
+    effective: bool
+    duration: float | None
+    restitution: float | None
+    energy_lost: float | None
+    contact_dissipation: float | None
+
+    def as_dict(self) -> dict[str, Any]:
+        return dict(self.__dict__)
+
+
+@dataclass(frozen=True)
+class SimulationResult:
+    """Outcome of :func:`simulate` (SI units throughout)."""
+
+    system: ImpactSystem
+    contact: str
+    initial_state: tuple[float, float, float, float]
+    t_end: float
+    impacts: list[Impact]
+    peaks: np.ndarray  # (n, 2): time and value of the positive maxima of x
+    energy: dict[str, float | None]
+    history: dict[str, np.ndarray] | None = None
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def n_impacts(self) -> int:
+        """N_tot: number of contacts (Table 3)."""
+        return len(self.impacts)
+
+    @property
+    def n_effective(self) -> int:
+        """N_eff: contacts with ẋ·ẏ < 0 at onset (Eq. 37)."""
+        return sum(1 for i in self.impacts if i.effective)
+
+    @property
+    def effectiveness(self) -> float | None:
+        """N_eff/(N_tot − N_eff) (Eq. 38); None when every impact (or none) is effective."""
+        return effectiveness(self.n_impacts, self.n_effective)
+
+    @property
+    def damping_inclination(self) -> float | None:
+        """DI [m] (Eq. 36): |slope| of the least-squares line through the first four positive
+        maxima of x against t' = t·√(K/M); None with fewer than four maxima."""
+        return damping_inclination(self.peaks, self.system.omega_n)
+
+    def as_dict(self, with_history: bool = False) -> dict[str, Any]:
+        """JSON-ready summary (the ``simulate --json`` contract)."""
+        out: dict[str, Any] = {
+            "n_impacts": self.n_impacts,
+            "n_effective": self.n_effective,
+            "effectiveness": self.effectiveness,
+            "damping_inclination": self.damping_inclination,
+            "impacts": [i.as_dict() for i in self.impacts],
+            "energy_residual": self.energy["residual"],
+            "energy": self.energy,
+            "peaks": [[float(t), float(x)] for t, x in self.peaks],
+            "contact": self.contact,
+            "t_end": self.t_end,
+            "initial_state": dict(zip(("x0", "xdot0", "y0", "ydot0"), self.initial_state)),
+            "system": self.system.as_dict(),
+            "notes": self.notes,
+        }
+        if with_history and self.history is not None:
+            out["history"] = {k: v.tolist() for k, v in self.history.items()}
+        return out
+
+
+def effectiveness(n_total: int, n_effective: int) -> float | None:
+    """Effectiveness N_eff/(N_tot − N_eff) of Eq. 38; None where the ratio is undefined."""
+    if n_total - n_effective <= 0:
+        return None
+    return n_effective / (n_total - n_effective)
+
+
+def damping_inclination(peaks: np.ndarray, omega_n: float, count: int = 4) -> float | None:
+    """Damping inclination DI of Eq. 36 [m].
+
+    |slope| of the least-squares line through the first ``count`` positive maxima (t_k, X_k) of
+    x, with the dimensionless time t' = t·ω_n (ω_n = √(K/M)).  With two maxima this is
+    (X₁ − X₂)/(t'₂ − t'₁), the printed Eq. 36.  None with fewer than ``count`` maxima.
+    """
+    peaks = np.asarray(peaks, dtype=float)
+    if peaks.shape[0] < count:
+        return None
+    tp = peaks[:count, 0] * omega_n
+    slope = np.polyfit(tp, peaks[:count, 1], 1)[0]
+    return float(abs(slope))
+
+
+def _contact_code(contact: str) -> int:
+    from . import _stepper
+
+    codes = {
+        "cubic": _stepper.CUBIC,
+        "hertz": _stepper.HERTZ,
+        "linear": _stepper.LINEAR,
+        "perturbation": _stepper.PERTURBATION,
+    }
+    if contact not in codes:
+        raise ParameterError("contact", f"must be one of {', '.join(CONTACT_PATHS)}")
+    return codes[contact]
+
+
+def simulate(
+    system: ImpactSystem,
+    x0: Any = 0.0,
+    xdot0: Any = 0.0,
+    y0: Any = 0.0,
+    ydot0: Any = 0.0,
+    t_end: Any = 1.0,
+    contact: str | None = None,
+    *,
+    ba: Any = "impact",
+    history: bool = False,
+    samples: int = 2000,
+    rtol: float = 1e-11,
+    max_impacts: int = 100_000,
+) -> SimulationResult:
+    """Free vibration of the main mass with the impact damper (Eq. 7 between impacts, Eq. 10
+    during contact), from the state (x0, xdot0, y0, ydot0) at t = 0 to ``t_end``.
+
+    Parameters
+    ----------
+    system : the :class:`~symimpact.system.ImpactSystem`.
+    x0, y0 : initial displacements [m]; xdot0, ydot0 : initial velocities [m/s]; |y0 − x0| must
+        not exceed d/2.  t_end : end time [s].
+    contact : ``"cubic"``, ``"hertz"``, ``"linear"`` (the force law integrated numerically,
+        default: the system's law) or ``"perturbation"`` (the cubic law by Eq. 31–33, with B/A
+        chosen by ``ba``, see :func:`symimpact.contact.amplitude_ratio`).
+    history : also return x, ẋ, y, ẏ on ``samples`` evenly spaced times (closed form in free
+        flight, cubic Hermite between integrator steps during contact).
+    rtol : relative tolerance of the contact integration (absolute tolerances scale with the gap
+        and the initial speeds).
+
+    Returns
+    -------
+    SimulationResult with the impact log, N_tot, N_eff, effectiveness (Eq. 38), DI (Eq. 36) and
+    the energy balance: initial = final + dissipated by C + dissipated by c₁ + residual.
+    """
+    from . import _stepper
+
+    if not isinstance(system, ImpactSystem):
+        raise ParameterError("system", "must be an ImpactSystem")
+    contact = contact or system.contact
+    law = _contact_code(contact)
+    x0, xdot0, y0, ydot0 = (
+        float(si(n, v)) for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0))
+    )
+    t_end = float(positive("t_end", t_end))
+    if not (isinstance(samples, int) and samples >= 2):
+        raise ParameterError("samples", "must be an integer ≥ 2")
+    if not (1e-14 <= rtol <= 1e-3):
+        raise ParameterError("rtol", "must lie in [1e-14, 1e-3]")
+    h = 0.5 * system.gap
+    if abs(y0 - x0) > h * (1 + 1e-12):
+        raise ParameterError(
+            "y0", f"|y0 − x0| = {abs(y0 - x0):g} m exceeds half the clearance d/2 = {h:g} m"
+        )
+    if law == _stepper.HERTZ and system.k_hz is None:
+        raise ParameterError("k_hz", "the Hertz contact law needs k_hz")
+    if law == _stepper.LINEAR and system.k1 is None:
+        raise ParameterError("k1", "the linear contact law needs k1 (or k_hz to fit it)")
+    if law in (_stepper.CUBIC, _stepper.PERTURBATION) and (system.a is None or system.b is None):
+        raise ParameterError("a", "the cubic contact law needs a and b (or k_hz to fit them)")
+    ba_value = 0.0
+    notes: list[str] = []
+    if law == _stepper.PERTURBATION:
+        from .contact import amplitude_ratio
+
+        ba_value = float(amplitude_ratio(system, ba=ba))
+        notes.append(
+            f"contact by the perturbation solution (Eq. 31–33) with B/A = {ba_value:.6g} "
+            f"({ba if isinstance(ba, str) else 'given'}); dissipation is not integrated on this "
+            "path, so the energy residual is not available"
+        )
+
+    p = np.zeros(_stepper.N_PARAMS)
+    p[_stepper.P_M] = system.M
+    p[_stepper.P_K] = system.K
+    p[_stepper.P_C] = system.C
+    p[_stepper.P_m] = system.m
+    p[_stepper.P_h] = h
+    p[_stepper.P_a] = system.a or 0.0
+    p[_stepper.P_b] = system.b or 0.0
+    p[_stepper.P_khz] = system.k_hz or 0.0
+    p[_stepper.P_k1] = system.k1 or 0.0
+    p[_stepper.P_c1] = system.c1
+    p[_stepper.P_ba] = ba_value
+    p[_stepper.P_rtol] = rtol
+    wn = system.omega_n
+    e0_main = 0.5 * system.M * xdot0**2 + 0.5 * system.K * x0**2
+    amp = math.sqrt(2 * e0_main / system.K)
+    length = max(h, abs(x0), abs(y0), amp)
+    speed = max(abs(xdot0), abs(ydot0), wn * amp, wn * h)
+    p[_stepper.P_atolx] = rtol * 1e-3 * length
+    p[_stepper.P_atolv] = rtol * 1e-3 * speed
+
+    state0 = np.array([x0, xdot0, y0, ydot0])
+    n_imp_cap, n_tr_cap = 64, 4096 if history else 1
+    while True:
+        impacts = np.zeros((n_imp_cap, _stepper.N_IMPACT_COLS))
+        peaks = np.zeros((256, 2))
+        trace = np.zeros((n_tr_cap, _stepper.N_TRACE_COLS))
+        status, n_imp, n_pk, n_tr, u, diss_C, diss_c1, side = _stepper.run(
+            law, p, state0, t_end, impacts, peaks, trace, history
+        )
+        if status == _stepper.FULL_IMPACTS and n_imp_cap < max_impacts:
+            n_imp_cap = min(4 * n_imp_cap, max_impacts)
+            continue
+        if status == _stepper.FULL_TRACE:
+            n_tr_cap *= 4
+            continue
+        break
+    if status == _stepper.FULL_IMPACTS:
+        raise SymimpactError(
+            f"max_impacts: more than {max_impacts} impacts before t_end = {t_end:g} s "
+            "(chattering?); shorten t_end or raise max_impacts"
+        )
+    if status == _stepper.STEP_UNDERFLOW:
+        raise SymimpactError(
+            "contact integration: step size underflow (stiff or singular contact); "
+            "check the contact law parameters"
+        )
+    if status == _stepper.NO_CONVERGENCE:
+        raise SymimpactError(
+            "contact='perturbation': the fixed point of Eq. 31 did not converge for an impact; "
+            "use a numerical contact law"
+        )
+    log = []
+    for row in impacts[:n_imp]:
+        done = row[_stepper.I_DONE] > 0
+        s = row[_stepper.I_SIDE]
+        approach = s * (row[_stepper.I_YD] - row[_stepper.I_XD])
+        exit_speed = s * (row[_stepper.I_YDOFF] - row[_stepper.I_XDOFF])
+        log.append(
+            Impact(
+                t=float(row[_stepper.I_T]),
+                x=float(row[_stepper.I_X]),
+                xdot=float(row[_stepper.I_XD]),
+                y=float(row[_stepper.I_Y]),
+                ydot=float(row[_stepper.I_YD]),
+                side=int(s),
+                effective=bool(row[_stepper.I_XD] * row[_stepper.I_YD] < 0),
+                duration=float(row[_stepper.I_TOFF] - row[_stepper.I_T]) if done else None,
+                restitution=float(-exit_speed / approach) if done and approach > 0 else None,
+                energy_lost=float(row[_stepper.I_EON] - row[_stepper.I_EOFF]) if done else None,
+                contact_dissipation=(
+                    float(row[_stepper.I_DC1]) if done and law != _stepper.PERTURBATION else None
+                ),
+            )
+        )
+    if log and log[-1].duration is None:
+        notes.append("the simulation ended during the last contact")
+    e_initial = e0_main + 0.5 * system.m * ydot0**2
+    from ._stepper import contact_potential
+
+    e_final = 0.5 * system.M * u[1] ** 2 + 0.5 * system.K * u[0] ** 2 + 0.5 * system.m * u[3] ** 2
+    if side != 0:
+        e_final += contact_potential(law, p, side * (u[2] - u[0]) - h)
+    energy: dict[str, float | None] = {
+        "initial": e_initial,
+        "final": float(e_final),
+        "dissipated_C": float(diss_C),
+        "dissipated_c1": float(diss_c1),
+        "residual": None,
+        "relative_residual": None,
+    }
+    if law != _stepper.PERTURBATION:
+        residual = e_initial - e_final - diss_C - diss_c1
+        energy["residual"] = float(residual)
+        energy["relative_residual"] = float(residual / e_initial) if e_initial > 0 else 0.0
+    hist = _history(system, p, trace[:n_tr], t_end, samples, u) if history else None
+    if peaks[:n_pk].shape[0] < 4:
+        notes.append(f"only {n_pk} positive maxima of x: the damping inclination needs four")
+    return SimulationResult(
+        system=system,
+        contact=contact,
+        initial_state=(x0, xdot0, y0, ydot0),
+        t_end=t_end,
+        impacts=log,
+        peaks=peaks[:n_pk].copy(),
+        energy=energy,
+        history=hist,
+        notes=notes,
+    )
+
+
+def _history(system, p, trace, t_end, samples, u_end):
+    """x, ẋ, y, ẏ on an even grid from the stepper's trace rows."""
+    from .generated import free_flight as ff
+
+    t = np.linspace(0.0, t_end, samples)
+    out = np.empty((4, samples))
+    starts = trace[:, 0]
+    idx = np.searchsorted(starts, t, side="right") - 1
+    idx = np.clip(idx, 0, len(trace) - 1)
+    for j in np.unique(idx):
+        sel = idx == j
+        row = trace[j]
+        tau = t[sel] - row[0]
+        nxt = trace[j + 1] if j + 1 < len(trace) else None
+        if row[7] == 0.0:  # free flight from this row, closed form (Eq. 7)
+            args = (system.M, system.K, system.C, row[1], row[2])
+            out[0, sel] = ff.main_mass_displacement(tau, *args)
+            out[1, sel] = ff.main_mass_velocity(tau, *args)
+            out[2, sel] = ff.impact_mass_displacement(tau, row[3], row[4])
+            out[3, sel] = ff.impact_mass_velocity(tau, row[4])
+        elif nxt is not None and nxt[7] == 1.0:  # between two contact steps: cubic Hermite
+            hstep = nxt[0] - row[0]
+            s = tau / hstep
+            h00, h10 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s
+            h01, h11 = -2 * s**3 + 3 * s**2, s**3 - s**2
+            for k, (pos, vel, acc) in enumerate(((1, 2, 5), (3, 4, 6))):
+                out[2 * k, sel] = (
+                    h00 * row[pos]
+                    + h10 * hstep * row[vel]
+                    + h01 * nxt[pos]
+                    + h11 * hstep * nxt[vel]
+                )
+                out[2 * k + 1, sel] = (
+                    h00 * row[vel]
+                    + h10 * hstep * row[acc]
+                    + h01 * nxt[vel]
+                    + h11 * hstep * nxt[acc]
+                )
+        else:  # last contact point at the end of the run
+            out[:, sel] = np.asarray(row[1:5])[:, None]
+    return {"t": t, "x": out[0], "xdot": out[1], "y": out[2], "ydot": out[3]}
