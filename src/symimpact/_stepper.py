@@ -285,7 +285,7 @@ def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk):
 
     Returns (status, t, npk, done); u0 is updated to the end state (dissipation not integrated).
     """
-    M, m, a, b, c1, ba = p[P_M], p[P_m], p[P_a], p[P_b], p[P_c1], p[P_ba]
+    m, a, b, c1, ba = p[P_m], p[P_a], p[P_b], p[P_c1], p[P_ba]
     v = side * (u0[3] - u0[1])
     T = _T_start(m, b, ba)
     converged = False
@@ -437,7 +437,7 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
     ``record``, ``trace``.  Returns (status, n_impacts, n_peaks, n_trace, final state [6],
     dissipated by C, dissipated by c₁, final contact side (0: free)).
     """
-    M, K, C, m, h = p[P_M], p[P_K], p[P_C], p[P_m], p[P_h]
+    M, K, C, h = p[P_M], p[P_K], p[P_C], p[P_h]
     u = np.zeros(NV)
     for i in range(4):
         u[i] = state0[i]
@@ -551,9 +551,7 @@ def one_contact(law, p, v0):
     # the contact of a free or sprung pair lasts far less than this; it is only a safety stop
     t_cap = 1e3 * math.pi * math.sqrt(p[P_m] / max(p[P_b] + p[P_k1], 1e-300)) + 1e3
     h0 = 1e-4 * min(p[P_h] / v0, 1.0)
-    status, t, npk, ntr, done, h = _contact(
-        law, p, 1.0, 0.0, u, t_cap, h0, peaks, 0, trace, 0, False
-    )
+    status, t, _, _, done, _ = _contact(law, p, 1.0, 0.0, u, t_cap, h0, peaks, 0, trace, 0, False)
     if not done:
         return NO_CONVERGENCE, math.inf, u, e_on, e_on
     return status, t, u, e_on, _energy(law, p, u, 1.0)

@@ -294,7 +294,7 @@ def numerical_contact(
     out_d = np.empty(v.shape)
     out_e = np.empty(v.shape)
     out_l = np.empty(v.shape)
-    out_s = np.empty(v.shape + (4,))
+    out_s = np.empty((*v.shape, 4))
     for idx in np.ndindex(v.shape):
         vi = float(v[idx])
         p[_stepper.P_atolx] = rtol * 1e-3 * 0.5 * system.gap

@@ -95,7 +95,9 @@ class SimulationResult:
             "peaks": [[float(t), float(x)] for t, x in self.peaks],
             "contact": self.contact,
             "t_end": self.t_end,
-            "initial_state": dict(zip(("x0", "xdot0", "y0", "ydot0"), self.initial_state)),
+            "initial_state": dict(
+                zip(("x0", "xdot0", "y0", "ydot0"), self.initial_state, strict=True)
+            ),
             "system": self.system.as_dict(),
             "notes": self.notes,
         }
