@@ -1,0 +1,383 @@
+"""``symimpact``: the command line (subcommands ritz, fit, contact-duration, simulate, sweep).
+
+Every parameter takes an SI number or a quantity with units ("100 N/cm", "9 mm").  Bad input exits
+with status 2 and one line naming the parameter and the reason.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import sys
+from collections.abc import Sequence
+from typing import Any
+
+from .errors import SymimpactError
+
+SYSTEM_OPTIONS = [
+    ("--M", "main mass M [kg]", "1 kg"),
+    ("--K", "main stiffness K [N/m]", "100 N/cm"),
+    ("--C", "main damping C [N s/m] (or --zeta)", None),
+    ("--zeta", "damping ratio ζ = C/(2√(KM)) [1]", None),
+    ("--m", "impact mass m [kg]", "0.25 kg"),
+    ("--gap", "clearance d [m]", "9 mm"),
+    ("--a", "cubic coefficient a [N/m^3] (Eq. 9)", "0.1553 N/cm^3"),
+    ("--b", "cubic coefficient b [N/m] (Eq. 9)", "0.8360 N/cm"),
+    ("--k-hz", "Hertz stiffness K_Hz [N/m^1.5] (Eq. 8)", "1000 N/m^1.5"),
+    ("--k1", "linear contact stiffness k1 [N/m] (Eq. 35); default fitted to K_Hz", None),
+    ("--c1", "contact damping c1 [N s/m] (Eq. 10)", "0"),
+]
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> None:  # one line, status 2, no usage dump
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def _add_system(p: argparse.ArgumentParser, contact: bool = True) -> None:
+    g = p.add_argument_group("system (SI numbers or quantities with units)")
+    for flag, helptext, default in SYSTEM_OPTIONS:
+        g.add_argument(
+            flag,
+            dest=flag[2:].replace("-", "_"),
+            default=default,
+            metavar="Q",
+            help=f"{helptext}; default {default!r}" if default else helptext,
+        )
+    if contact:
+        g.add_argument(
+            "--contact",
+            choices=("cubic", "hertz", "linear", "perturbation"),
+            default="cubic",
+            help="contact law integrated numerically, or the perturbation solution (Eq. 31–33); "
+            "default cubic",
+        )
+
+
+def _system(ns: argparse.Namespace):
+    from .system import ImpactSystem
+
+    law = getattr(ns, "contact", "cubic")
+    kw: dict[str, Any] = {
+        k: getattr(ns, k) for k in ("M", "K", "C", "zeta", "m", "gap", "k_hz", "k1", "c1")
+    }
+    return ImpactSystem(contact="cubic" if law == "perturbation" else law, a=ns.a, b=ns.b, **kw)
+
+
+def _add_initial(p: argparse.ArgumentParser) -> None:
+    g = p.add_argument_group("initial state and duration")
+    g.add_argument("--x0", default="0", metavar="Q", help="main-mass displacement [m]; default 0")
+    g.add_argument(
+        "--xdot0", default="0.5 m/s", metavar="Q", help="main-mass velocity [m/s]; default 0.5 m/s"
+    )
+    g.add_argument("--y0", default="0", metavar="Q", help="impact-mass displacement [m]; default 0")
+    g.add_argument(
+        "--ydot0", default="0", metavar="Q", help="impact-mass velocity [m/s]; default 0"
+    )
+    g.add_argument("--t-end", default="1 s", metavar="Q", help="end time [s]; default 1 s")
+
+
+def _add_output(p: argparse.ArgumentParser, plot: bool = False) -> None:
+    p.add_argument("--json", action="store_true", help="machine-readable output on stdout")
+    if plot:
+        p.add_argument("--plot", metavar="FILE.png", help="write a figure")
+        p.add_argument("--csv", metavar="FILE", help="write a table")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The ``symimpact`` argument parser (also used to document the command line)."""
+    parser = _Parser(
+        prog="symimpact",
+        description="Nonlinear resilient impact dampers: Ritz constants, contact fits, contact "
+        "durations, simulations with impacts and gap sweeps.  Quantities accept units.",
+    )
+    from . import __version__
+
+    parser.add_argument("--version", action="version", version=f"symimpact {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
+
+    p = sub.add_parser("ritz", help="Ritz constants of the cantilever (Eq. 1–6)")
+    for flag, helptext in (
+        ("--E", "Young modulus E [Pa]"),
+        ("--I", "second moment of area I [m^4]"),
+        ("--rho", "density ρ [kg/m^3]"),
+        ("--A", "cross-section A [m^2]"),
+        ("--L", "length L [m]"),
+        ("--position", "damper position from the clamp [m]; default the tip"),
+    ):
+        p.add_argument(flag, metavar="Q", help=helptext)
+    _add_output(p)
+
+    p = sub.add_parser("fit", help="cubic and linear fits of the Hertz law (Eq. 8–9, 35)")
+    p.add_argument("--k-hz", default="1000 N/m^1.5", metavar="Q", help="K_Hz [N/m^1.5]")
+    p.add_argument("--delta-max", default="2 cm", metavar="Q", help="fit range [m]; default 2 cm")
+    p.add_argument(
+        "--continuous", action="store_true", help="continuous least squares, not 21 samples"
+    )
+    _add_output(p)
+
+    p = sub.add_parser("contact-duration", help="contact duration of one impact (Eq. 31, 34, 35)")
+    _add_system(p, contact=False)
+    p.add_argument("--v0", default="7.5 cm/s", metavar="Q", help="approach speed [m/s]")
+    p.add_argument(
+        "--method",
+        choices=("perturbation", "hertz", "linear", "numerical", "all"),
+        default="all",
+        help="default all",
+    )
+    p.add_argument(
+        "--law",
+        choices=("cubic", "hertz", "linear"),
+        default="cubic",
+        help="force law of the numerical method; default cubic",
+    )
+    p.add_argument(
+        "--ba",
+        default="impact",
+        metavar="B/A",
+        help="B/A in Eq. 31: impact (default), out_of_phase, in_phase, free (−M/m) or a number",
+    )
+    p.add_argument("--free", action="store_true", help="numerical: no main spring (free bodies)")
+    _add_output(p)
+
+    p = sub.add_parser("simulate", help="free vibration with impacts (Eq. 7, 10, 36–38)")
+    _add_system(p)
+    _add_initial(p)
+    _add_output(p, plot=True)
+
+    p = sub.add_parser("sweep", help="simulations over gaps (or another parameter)")
+    _add_system(p)
+    _add_initial(p)
+    p.add_argument(
+        "--over",
+        default="gap",
+        metavar="NAME",
+        help="parameter swept by --values (default gap)",
+    )
+    p.add_argument(
+        "--values",
+        metavar="RANGE",
+        help='"start:stop:step" or "v1,v2,..." of --over; for gaps --gap may hold the range',
+    )
+    p.add_argument("--workers", type=int, default=None, help="processes; default all cores")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    _add_output(p, plot=True)
+    return parser
+
+
+def _emit(ns, data: dict[str, Any] | list[Any], text: str) -> None:
+    if ns.json:
+        json.dump(_jsonable(data), sys.stdout, indent=2, allow_nan=False)
+        sys.stdout.write("\n")
+    else:
+        print(text)
+
+
+def _jsonable(v: Any) -> Any:
+    import numpy as np
+
+    if isinstance(v, dict):
+        return {str(k): _jsonable(x) for k, x in v.items()}
+    if isinstance(v, list | tuple):
+        return [_jsonable(x) for x in v]
+    if isinstance(v, np.ndarray):
+        return _jsonable(v.tolist())
+    if isinstance(v, np.generic):
+        v = v.item()
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
+
+
+def _cmd_ritz(ns) -> None:
+    from .generated import ritz
+    from .system import beam_constants
+
+    out: dict[str, Any] = {
+        "beta_L": ritz.BETA_L[0],
+        "stiffness_coefficient": float(ritz.stiffness_coefficient(ritz.BETA_L[0], 1.0)),
+        "mass_coefficient": float(ritz.mass_coefficient(ritz.BETA_L[0], 1.0)),
+    }
+    beam = [ns.E, ns.I, ns.rho, ns.A, ns.L]
+    if any(v is not None for v in beam):
+        missing = [n for n, v in zip(("E", "I", "rho", "A", "L"), beam, strict=True) if v is None]
+        if missing:
+            raise SymimpactError(f"{missing[0]}: needed with the other beam parameters")
+        K, M = beam_constants(*beam, position=ns.position)
+        out.update(K=K, M=M)
+        if ns.position is not None:
+            from .units import positive
+
+            xi = float(positive("position", ns.position)) / float(positive("L", ns.L))
+            out["stiffness_coefficient"] = float(ritz.stiffness_coefficient(ritz.BETA_L[0], xi))
+            out["mass_coefficient"] = float(ritz.mass_coefficient(ritz.BETA_L[0], xi))
+    lines = [f"{k} = {v:.10g}" for k, v in out.items()]
+    _emit(ns, out, "\n".join(lines))
+
+
+def _cmd_fit(ns) -> None:
+    from .generated import contact_fits as cf
+    from .units import positive
+
+    k = positive("k-hz", ns.k_hz, "N/m^1.5")
+    d = positive("delta-max", ns.delta_max, "m")
+    sfx = "_continuous" if ns.continuous else ""
+    out = {
+        "a": float(getattr(cf, f"cubic_fit_a{sfx}")(k, d)),
+        "b": float(getattr(cf, f"cubic_fit_b{sfx}")(k, d)),
+        "k1": float(getattr(cf, f"linear_fit_k1{sfx}")(k, d)),
+    }
+    _emit(ns, out, f"a = {out['a']:.6g} N/m^3\nb = {out['b']:.6g} N/m\nk1 = {out['k1']:.6g} N/m")
+
+
+def _cmd_contact_duration(ns) -> None:
+    from .contact import contact_duration
+
+    system = _system(ns)
+    res = contact_duration(
+        system.with_(contact=ns.law) if ns.law != system.contact else system,
+        ns.v0,
+        ns.method,
+        ba=ns.ba,
+        law=ns.law,
+        free=ns.free,
+    )
+    if ns.method != "all":
+        res = {ns.method: res}
+    out: dict[str, Any] = {}
+    for k, v in res.items():
+        if k == "perturbation":
+            out[k] = float(v.value)
+            out["perturbation_printed"] = float(v.printed)
+            out["perturbation_history"] = [float(h) for h in v.history]
+            out["ba"] = float(v.ba)
+        elif k == "not_applicable":
+            out[k] = v
+        else:
+            out[k] = float(v)
+    text = "\n".join(
+        f"{k:<22} {v:.6g} s" if isinstance(v, float) and k != "ba" else f"{k:<22} {v}"
+        for k, v in out.items()
+        if k != "perturbation_history"
+    )
+    _emit(ns, out, text)
+
+
+def _cmd_simulate(ns) -> None:
+    from .simulation import simulate
+
+    system = _system(ns)
+    res = simulate(
+        system,
+        ns.x0,
+        ns.xdot0,
+        ns.y0,
+        ns.ydot0,
+        ns.t_end,
+        contact=ns.contact,
+        history=bool(ns.plot or ns.csv),
+    )
+    if ns.csv:
+        names = list(res.history)
+        columns = zip(*res.history.values(), strict=True)
+        _write_csv(ns.csv, "csv", [dict(zip(names, c, strict=True)) for c in columns])
+    if ns.plot:
+        from .plots import plot_simulation
+
+        plot_simulation(res, ns.plot)
+    out = res.as_dict()
+    di = res.damping_inclination
+    text = (
+        f"impacts {res.n_impacts}, effective {res.n_effective}, effectiveness "
+        f"{res.effectiveness if res.effectiveness is None else round(res.effectiveness, 3)}, "
+        f"DI {'n/a' if di is None else f'{di * 1e6:.2f} µm'}, energy residual "
+        f"{res.energy['relative_residual']}"
+    )
+    _emit(ns, out, text)
+
+
+def _cmd_sweep(ns) -> None:
+    from .sweep import parse_range, sweep
+
+    over = ns.over.replace("-", "_")
+    spec = ns.values
+    if spec is None and over == "gap" and ns.gap and (":" in ns.gap or "," in ns.gap):
+        spec = ns.gap
+        ns.gap = "1 mm"  # placeholder, replaced in every run
+    if spec is None:
+        raise SymimpactError("values: give the swept values (--values, or a range in --gap)")
+    values = parse_range(over, spec)
+    system = _system(ns)
+    rows = sweep(
+        system,
+        values,
+        over,
+        x0=ns.x0,
+        xdot0=ns.xdot0,
+        y0=ns.y0,
+        ydot0=ns.ydot0,
+        t_end=ns.t_end,
+        contact=ns.contact,
+        workers=ns.workers,
+        progress=not (ns.quiet or ns.json),
+    )
+    if ns.csv:
+        _write_csv(ns.csv, "csv", rows)
+    if ns.plot:
+        from .plots import plot_sweep
+
+        plot_sweep(rows, over, ns.plot)
+    head = f"{over:>12} {'N_tot':>6} {'N_eff':>6} {'effect.':>8} {'DI [m]':>11}  class"
+    lines = [head]
+    for r in rows:
+        eff = "—" if r["effectiveness"] is None else f"{r['effectiveness']:.3f}"
+        di = "—" if r["damping_inclination"] is None else f"{r['damping_inclination']:.4e}"
+        lines.append(
+            f"{r[over]:>12.6g} {r['n_impacts']:>6} {r['n_effective']:>6} {eff:>8} {di:>11}  "
+            f"{r['class']}"
+        )
+    _emit(ns, rows, "\n".join(lines))
+
+
+def _write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
+    from .io import atomic_write
+
+    def write(f):
+        w = csv.DictWriter(f, fieldnames=list(rows[0]) if rows else [])
+        w.writeheader()
+        w.writerows(_jsonable(rows))
+
+    atomic_write(path, write, what)
+
+
+COMMANDS = {
+    "ritz": _cmd_ritz,
+    "fit": _cmd_fit,
+    "contact-duration": _cmd_contact_duration,
+    "simulate": _cmd_simulate,
+    "sweep": _cmd_sweep,
+}
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of ``symimpact``; returns the exit status (2 on bad input)."""
+    parser = build_parser()
+    ns = parser.parse_args(argv)
+    try:
+        COMMANDS[ns.command](ns)
+    except SymimpactError as exc:
+        print(f"symimpact {ns.command}: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"symimpact {ns.command}: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:  # output piped into a program that stopped reading (e.g. head)
+        sys.stderr.close()
+        return 0
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
