@@ -523,16 +523,21 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
         side = 0.0
         u[2] = u[0] + side_exit * h  # exactly on the boundary again
         # leave the boundary: f = s·z − h has f(0) = 0, f'(0) = v < 0, |f''| ≤ A, so f < 0 on
-        # (0, |v|/A]; the search for the next onset starts there.
+        # (0, |v|/A]; the opposite wall, 2h away, is not reached while |v|τ + Aτ²/2 < h.  The
+        # search for the next onset starts at the smaller of the two.
         v = side_exit * (u[3] - u[1])
         e_main = 0.5 * M * u[1] * u[1] + 0.5 * K * u[0] * u[0]
         amax = math.sqrt(C * C / M + K) * math.sqrt(2.0 * e_main) / M
         wd = math.sqrt(K / M - C * C / (4 * M * M))
         cap = 2.0 * math.pi / wd / 16.0
-        if v < 0.0:
-            tau_skip = min(-v / amax, cap) if amax > 0.0 else cap
+        if amax > 0.0:
+            far = (math.sqrt(v * v + 2.0 * amax * h) - abs(v)) / amax
         else:
-            tau_skip = 1e-9 * cap  # grazing exit
+            far = h / abs(v) if v != 0.0 else cap
+        if v < 0.0:
+            tau_skip = min(-v / amax if amax > 0.0 else cap, cap, far)
+        else:
+            tau_skip = min(1e-9 * cap, far)  # grazing exit
     return status, n_imp, npk, ntr, u, diss_C, diss_c1, side
 
 

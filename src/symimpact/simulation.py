@@ -154,7 +154,7 @@ def simulate(
     ba: Any = "impact",
     history: bool = False,
     samples: int = 2000,
-    rtol: float = 1e-11,
+    rtol: float = 1e-12,
     max_impacts: int = 100_000,
 ) -> SimulationResult:
     """Free vibration of the main mass with the impact damper (Eq. 7 between impacts, Eq. 10
