@@ -27,6 +27,7 @@ from .generated import free_flight as _ff
 from .generated import multiple_scales as _ms
 
 CUBIC, HERTZ, LINEAR, PERTURBATION = 0, 1, 2, 3
+LAWS = {"cubic": CUBIC, "hertz": HERTZ, "linear": LINEAR, "perturbation": PERTURBATION}
 # parameter vector layout
 P_M, P_K, P_C, P_m, P_h, P_a, P_b, P_khz, P_k1, P_c1, P_ba, P_rtol, P_atolx, P_atolv = range(14)
 N_PARAMS = 14
@@ -79,6 +80,26 @@ _E1, _E3, _E4, _E5, _E6, _E7 = (
     -1 / 40,
 )
 NV = 6  # x, ẋ, y, ẏ, ∫Cẋ², ∫c₁δ̇²
+
+
+def pack(system, rtol, atol_x, atol_v, ba=0.0, free=False):
+    """The stepper's parameter vector for an ImpactSystem (SI floats; ``free`` drops K and C)."""
+    p = np.zeros(N_PARAMS)
+    p[P_M] = system.M
+    p[P_K] = 0.0 if free else system.K
+    p[P_C] = 0.0 if free else system.C
+    p[P_m] = system.m
+    p[P_h] = 0.5 * system.gap
+    p[P_a] = system.a or 0.0
+    p[P_b] = system.b or 0.0
+    p[P_khz] = system.k_hz or 0.0
+    p[P_k1] = system.k1 or 0.0
+    p[P_c1] = system.c1
+    p[P_ba] = ba
+    p[P_rtol] = rtol
+    p[P_atolx] = atol_x
+    p[P_atolv] = atol_v
+    return p
 
 
 @njit(cache=True)

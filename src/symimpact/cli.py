@@ -237,7 +237,7 @@ def _cmd_contact_duration(ns) -> None:
 
     system = _system(ns)
     res = contact_duration(
-        system.with_(contact=ns.law) if ns.law != system.contact else system,
+        system,
         ns.v0,
         ns.method,
         ba=ns.ba,

@@ -269,9 +269,9 @@ def numerical_contact(
     from . import _stepper
 
     law = law or system.contact
-    code = {"cubic": _stepper.CUBIC, "hertz": _stepper.HERTZ, "linear": _stepper.LINEAR}.get(law)
-    if code is None:
+    if law not in ("cubic", "hertz", "linear"):
         raise ParameterError("law", "must be cubic, hertz or linear")
+    code = _stepper.LAWS[law]
     if code == _stepper.HERTZ and system.k_hz is None:
         raise MethodNotApplicable("numerical", "the Hertz law needs k_hz")
     if code == _stepper.LINEAR and system.k1 is None:
@@ -279,28 +279,14 @@ def numerical_contact(
     if code == _stepper.CUBIC and (system.a is None or system.b is None):
         raise MethodNotApplicable("numerical", "the cubic law needs a and b")
     v = np.asarray(positive("v0", v0), dtype=float)
-    p = np.zeros(_stepper.N_PARAMS)
-    p[_stepper.P_M] = system.M
-    p[_stepper.P_K] = 0.0 if free else system.K
-    p[_stepper.P_C] = 0.0 if free else system.C
-    p[_stepper.P_m] = system.m
-    p[_stepper.P_h] = 0.5 * system.gap
-    p[_stepper.P_a] = system.a or 0.0
-    p[_stepper.P_b] = system.b or 0.0
-    p[_stepper.P_khz] = system.k_hz or 0.0
-    p[_stepper.P_k1] = system.k1 or 0.0
-    p[_stepper.P_c1] = system.c1
-    p[_stepper.P_rtol] = rtol
     out_d = np.empty(v.shape)
     out_e = np.empty(v.shape)
     out_l = np.empty(v.shape)
     out_s = np.empty((*v.shape, 4))
     for idx in np.ndindex(v.shape):
         vi = float(v[idx])
-        p[_stepper.P_atolx] = rtol * 1e-3 * 0.5 * system.gap
-        p[_stepper.P_atolv] = rtol * 1e-3 * vi
-        res = _stepper.one_contact(code, p, vi)
-        status, t, u, e_on, e_off = res
+        p = _stepper.pack(system, rtol, rtol * 1e-3 * 0.5 * system.gap, rtol * 1e-3 * vi, free=free)
+        status, t, u, e_on, e_off = _stepper.one_contact(code, p, vi)
         if status != _stepper.OK or not math.isfinite(t):
             raise MethodNotApplicable("numerical", "the contact did not end (sticking contact)")
         out_d[idx] = t

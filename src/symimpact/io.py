@@ -4,15 +4,17 @@ from __future__ import annotations
 
 import os
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import IO
 
 from .errors import ParameterError
 
 
-def atomic_write(path: str | os.PathLike, write: Callable[[IO[str]], None], what: str) -> Path:
-    """Call ``write(file)`` on a temporary file beside ``path`` and rename it to ``path``.
+@contextmanager
+def _temporary_beside(path: str | os.PathLike, what: str, suffix: str) -> Iterator[str]:
+    """A temporary file name beside ``path``, renamed to ``path`` when the block succeeds.
 
     An interrupted write leaves no partial file under ``path``.  A folder that does not exist or
     cannot be written raises :class:`ParameterError` naming ``what`` (the option).
@@ -24,34 +26,27 @@ def atomic_write(path: str | os.PathLike, write: Callable[[IO[str]], None], what
     if target.is_dir():
         raise ParameterError(what, f"{str(target)!r} is a folder")
     try:
-        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{target.name}.", suffix=".tmp")
-    except OSError as exc:
-        raise ParameterError(what, f"cannot write in {str(folder)!r}: {exc.strerror}") from None
-    try:
-        with os.fdopen(fd, "w", newline="") as f:
-            write(f)
-        os.replace(tmp, target)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return target
-
-
-def atomic_savefig(fig, path: str | os.PathLike, what: str = "plot") -> Path:
-    """Save a matplotlib figure as PNG atomically (see :func:`atomic_write`)."""
-    target = Path(path)
-    folder = target.parent if str(target.parent) else Path(".")
-    if not folder.is_dir():
-        raise ParameterError(what, f"folder {str(folder)!r} does not exist")
-    try:
-        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{target.name}.", suffix=".png")
+        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{target.name}.", suffix=suffix)
     except OSError as exc:
         raise ParameterError(what, f"cannot write in {str(folder)!r}: {exc.strerror}") from None
     os.close(fd)
     try:
-        fig.savefig(tmp, format="png", dpi=120)
+        yield tmp
         os.replace(tmp, target)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
-    return target
+
+
+def atomic_write(path: str | os.PathLike, write: Callable[[IO[str]], None], what: str) -> Path:
+    """Call ``write(file)`` on a temporary text file beside ``path`` and rename it to ``path``."""
+    with _temporary_beside(path, what, ".tmp") as tmp, open(tmp, "w", newline="") as f:
+        write(f)
+    return Path(path)
+
+
+def atomic_savefig(fig, path: str | os.PathLike, what: str = "plot") -> Path:
+    """Save a matplotlib figure as PNG atomically (see :func:`atomic_write`)."""
+    with _temporary_beside(path, what, ".png") as tmp:
+        fig.savefig(tmp, format="png", dpi=120)
+    return Path(path)

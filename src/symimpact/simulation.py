@@ -128,20 +128,6 @@ def damping_inclination(peaks: np.ndarray, omega_n: float, count: int = 4) -> fl
     return float(abs(slope))
 
 
-def _contact_code(contact: str) -> int:
-    from . import _stepper
-
-    codes = {
-        "cubic": _stepper.CUBIC,
-        "hertz": _stepper.HERTZ,
-        "linear": _stepper.LINEAR,
-        "perturbation": _stepper.PERTURBATION,
-    }
-    if contact not in codes:
-        raise ParameterError("contact", f"must be one of {', '.join(CONTACT_PATHS)}")
-    return codes[contact]
-
-
 def simulate(
     system: ImpactSystem,
     x0: Any = 0.0,
@@ -183,7 +169,9 @@ def simulate(
     if not isinstance(system, ImpactSystem):
         raise ParameterError("system", "must be an ImpactSystem")
     contact = contact or system.contact
-    law = _contact_code(contact)
+    if contact not in _stepper.LAWS:
+        raise ParameterError("contact", f"must be one of {', '.join(CONTACT_PATHS)}")
+    law = _stepper.LAWS[contact]
     x0, xdot0, y0, ydot0 = (
         float(si(n, v)) for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0))
     )
@@ -215,26 +203,12 @@ def simulate(
             "path, so the energy residual is not available"
         )
 
-    p = np.zeros(_stepper.N_PARAMS)
-    p[_stepper.P_M] = system.M
-    p[_stepper.P_K] = system.K
-    p[_stepper.P_C] = system.C
-    p[_stepper.P_m] = system.m
-    p[_stepper.P_h] = h
-    p[_stepper.P_a] = system.a or 0.0
-    p[_stepper.P_b] = system.b or 0.0
-    p[_stepper.P_khz] = system.k_hz or 0.0
-    p[_stepper.P_k1] = system.k1 or 0.0
-    p[_stepper.P_c1] = system.c1
-    p[_stepper.P_ba] = ba_value
-    p[_stepper.P_rtol] = rtol
     wn = system.omega_n
     e0_main = 0.5 * system.M * xdot0**2 + 0.5 * system.K * x0**2
     amp = math.sqrt(2 * e0_main / system.K)
     length = max(h, abs(x0), abs(y0), amp)
     speed = max(abs(xdot0), abs(ydot0), wn * amp, wn * h)
-    p[_stepper.P_atolx] = rtol * 1e-3 * length
-    p[_stepper.P_atolv] = rtol * 1e-3 * speed
+    p = _stepper.pack(system, rtol, rtol * 1e-3 * length, rtol * 1e-3 * speed, ba=ba_value)
 
     state0 = np.array([x0, xdot0, y0, ydot0])
     n_imp_cap, n_tr_cap = 64, 4096 if history else 1
@@ -293,11 +267,9 @@ def simulate(
     if log and log[-1].duration is None:
         notes.append("the simulation ended during the last contact")
     e_initial = e0_main + 0.5 * system.m * ydot0**2
-    from ._stepper import contact_potential
-
     e_final = 0.5 * system.M * u[1] ** 2 + 0.5 * system.K * u[0] ** 2 + 0.5 * system.m * u[3] ** 2
     if side != 0:
-        e_final += contact_potential(law, p, side * (u[2] - u[0]) - h)
+        e_final += _stepper.contact_potential(law, p, side * (u[2] - u[0]) - h)
     energy: dict[str, float | None] = {
         "initial": e_initial,
         "final": float(e_final),

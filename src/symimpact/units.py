@@ -8,7 +8,6 @@ number in SI units is.  pint is imported only when a value carries units, so the
 
 from __future__ import annotations
 
-import math
 from decimal import Decimal
 from functools import lru_cache
 from typing import Any
@@ -45,7 +44,6 @@ SI_UNITS: dict[str, str] = {
     "position": "m",
     "restitution": "dimensionless",
     "ba": "dimensionless",
-    "dt": "s",
 }
 
 
@@ -130,8 +128,3 @@ def _show(v: Any) -> str:
     arr = np.asarray(v)
     bad = arr.ravel()
     return f"array with min {bad.min():g}" if bad.size else "an empty array"
-
-
-def fmt(value: float) -> str:
-    """A float for messages: ``g`` format, with ``inf``/``nan`` spelled out."""
-    return "nan" if math.isnan(value) else f"{value:g}"
