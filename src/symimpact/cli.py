@@ -1,4 +1,5 @@
-"""``symimpact``: the command line (subcommands ritz, fit, contact-duration, simulate, sweep).
+"""``symimpact``: the command line (subcommands reproduce, ritz, fit, contact-duration, simulate,
+sweep).
 
 Every parameter takes an SI number or a quantity with units ("100 N/cm", "9 mm").  Bad input exits
 with status 2 and one line naming the parameter and the reason.
@@ -97,6 +98,22 @@ def build_parser() -> argparse.ArgumentParser:
 
     parser.add_argument("--version", action="version", version=f"symimpact {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
+
+    p = sub.add_parser(
+        "reproduce",
+        help="the paper's tables and figures beside ours, as a report folder (HTML, Markdown, "
+        "PNG, CSV)",
+    )
+    p.add_argument(
+        "out",
+        nargs="?",
+        default="symimpact-report",
+        help="report folder (created; must be new or empty unless --force); "
+        "default symimpact-report",
+    )
+    p.add_argument("--quick", action="store_true", help="coarser grids: seconds, not a minute")
+    p.add_argument("--force", action="store_true", help="replace a non-empty report folder")
+    p.add_argument("--quiet", action="store_true", help="no progress bars")
 
     p = sub.add_parser("ritz", help="Ritz constants of the cantilever (Eq. 1–6)")
     for flag, helptext in (
@@ -352,7 +369,19 @@ def _write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
     atomic_write(path, write, what)
 
 
+def _cmd_reproduce(ns) -> None:
+    from .report import reproduce
+
+    out, sections = reproduce(ns.out, quick=ns.quick, force=ns.force, progress=not ns.quiet)
+    n_fig = sum(len(s.figures()) for s in sections)
+    n_tab = sum(len(s.tables()) for s in sections)
+    print(
+        f"wrote {out}/index.html (open it in a browser), report.md, {n_fig} figures, {n_tab} tables"
+    )
+
+
 COMMANDS = {
+    "reproduce": _cmd_reproduce,
     "ritz": _cmd_ritz,
     "fit": _cmd_fit,
     "contact-duration": _cmd_contact_duration,
