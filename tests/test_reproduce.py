@@ -1,0 +1,276 @@
+"""`symimpact reproduce`: the report's numbers against independent computations, its files, and
+its folder behaviour (atomic, refuses to overwrite, --force)."""
+
+from __future__ import annotations
+
+import csv
+import math
+import struct
+from pathlib import Path
+
+import mpmath as mp
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from symimpact.cli import main
+from symimpact.errors import ParameterError
+from symimpact.reference import reference_impacts
+from symimpact.report import beyond_stage, contact_stage, paper, reproduce, vibration_stage
+from symimpact.report.document import Figure, Table
+
+
+@pytest.fixture(scope="module")
+def report(tmp_path_factory):
+    out = tmp_path_factory.mktemp("rep") / "report"
+    path, sections = reproduce(out, quick=True, progress=False, command="pytest")
+    return path, {s.key: s for s in sections}
+
+
+# --- files -----------------------------------------------------------------------------------------
+def _png_size(path: Path) -> tuple[int, int]:
+    data = path.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
+    assert data[12:16] == b"IHDR"
+    return struct.unpack(">II", data[16:24])
+
+
+def test_every_figure_is_a_valid_nonempty_png(report):
+    import matplotlib.image
+
+    path, sections = report
+    figures = [b for s in sections.values() for b in s.blocks if isinstance(b, Figure)]
+    names = {f.name for f in figures}
+    assert {"fig2_force_laws", "fig3a_amplitude_ratio", "fig3b_iterations", "fig4_response_9mm",
+            "fig5_relative_motion", "fig6_six_gaps", "fig7_gap_sweep", "accuracy_map",
+            "lindstedt_orders"} <= names  # fmt: skip
+    for f in figures:
+        png = path / f"{f.name}.png"
+        w, h = _png_size(png)
+        assert w > 300 and h > 200
+        img = matplotlib.image.imread(png)
+        assert img.shape[:2] == (h, w)
+        assert float(np.std(img[..., :3])) > 0.01  # not a blank canvas
+
+
+def test_every_table_has_its_csv_with_full_precision(report):
+    path, sections = report
+    tables = [b for s in sections.values() for b in s.blocks if isinstance(b, Table)]
+    assert {"table1", "table3", "table3_as_stated", "table2_readings", "fit_coefficients",
+            "gap_range", "accuracy_map_summary", "lindstedt_orders"} <= {t.name for t in tables}  # fmt: skip
+    for t in tables:
+        with open(path / f"{t.name}.csv", newline="", encoding="utf-8") as f:
+            rows = list(csv.reader(f))
+        assert rows[0] == t.columns
+        assert len(rows) == len(t.rows) + 1
+        for raw, row in zip(t.rows, rows[1:], strict=True):
+            for v, text in zip(raw, row, strict=True):
+                if isinstance(v, float):
+                    assert float(text) == v  # round-trip exact
+
+
+def test_html_and_markdown_carry_version_command_and_every_figure(report):
+    from symimpact import __version__
+
+    path, sections = report
+    page = (path / "index.html").read_text(encoding="utf-8")
+    md = (path / "report.md").read_text(encoding="utf-8")
+    for text in (page, md):
+        assert f"symimpact {__version__}" in text
+        assert "pytest" in text
+        for s in sections.values():
+            for f in s.figures():
+                assert f"{f.name}.png" in text
+    assert "<script" not in page and "http://" not in page and "https://" not in page
+    assert not [p for p in path.parent.iterdir() if p.name.startswith(".report.")]
+
+
+# --- Table 1 and the fit against independent computations ------------------------------------------
+def _row(table: Table, m: float, method: str) -> list:
+    for r in table.rows:
+        if r[0] == m and r[1].startswith(method):
+            return r
+    raise KeyError((m, method))
+
+
+def _hertz_mp(m, M, k_hz, v0):
+    """Eq. 34 with the exact constant, in mpmath (not the generated kernel)."""
+    mp.mp.dps = 30
+    c = 4 * mp.sqrt(mp.pi) * mp.gamma(mp.mpf(2) / 5) / (5 * mp.gamma(mp.mpf(9) / 10))
+    kstar = (mp.mpf(m) + M) / (mp.mpf(m) * M)
+    return float(c * (5 / (4 * kstar * k_hz)) ** (mp.mpf(2) / 5) / mp.mpf(v0) ** (mp.mpf(1) / 5))
+
+
+def _fit_lstsq():
+    d = np.linspace(0, 0.02, 21)
+    f = 1000.0 * d**1.5
+    (a, b), *_ = np.linalg.lstsq(np.c_[d**3, d], f, rcond=None)
+    k1 = float(d @ f / (d @ d))
+    return a, b, k1
+
+
+def _contact_ivp(m, M, K, force, v0):
+    """Contact phase by solve_ivp: main mass at rest at x = 0 on its spring, δ(0) = 0, δ̇ = v0."""
+
+    def rhs(t, u):
+        x, xd, d, dd = u
+        f = force(max(d, 0.0))
+        xdd = (f - K * x) / M
+        return [xd, xdd, dd, -f / m - xdd]
+
+    def end(t, u):
+        return u[2]
+
+    end.terminal, end.direction = True, -1
+    sol = solve_ivp(rhs, (0, 10), [0, 0, 0, v0], method="DOP853", rtol=1e-12, atol=1e-15,
+                    events=end, first_step=1e-7)  # fmt: skip
+    return float(sol.t_events[0][0])
+
+
+def test_table1_against_closed_forms_and_integration(report):
+    _, sections = report
+    t1 = sections["contact"].table("table1")
+    a, b, k1 = _fit_lstsq()
+    for m in contact_stage.TABLE1_M:
+        hertz = _row(t1, m, "Hertz, Eq. 34")
+        assert hertz[2] == pytest.approx(_hertz_mp(m, 1.0, 1000.0, 0.075), rel=1e-13)
+        mu = m / (1 + m)
+        lin = _row(t1, m, "linear, Eq. 35")
+        assert lin[2] == pytest.approx(math.pi * math.sqrt(mu / k1), rel=1e-12)
+        truth = _row(t1, m, "numerical, Hertz law, main mass on K")
+        ivp = _contact_ivp(m, 1.0, 1000.0, lambda d: 1000.0 * d**1.5, 0.075)
+        assert truth[2] == pytest.approx(ivp, rel=1e-8)
+        assert truth[6] == 0.0
+        # the derived Eq. 31 with B/A = −M/m is the free-body contact of the cubic law
+        derived = _row(t1, m, "perturbation Eq. 31 derived, B/A = −M/m")
+        free_cubic = _contact_ivp(m, 1.0, 0.0, lambda d: a * d**3 + b * d, 0.075)
+        assert derived[2] == pytest.approx(free_cubic, rel=2e-4)
+        # every printed Hertz and linear value equals ours at the printed digits
+        for r in (hertz, lin):
+            assert r[4].startswith("=")
+        # errors are recomputed from the columns they name
+        assert hertz[5] == pytest.approx(100 * abs(hertz[2] - hertz[3]) / hertz[3])
+        assert lin[6] == pytest.approx(100 * abs(lin[2] - ivp) / ivp, rel=1e-6)
+
+
+def test_fit_coefficients_against_lstsq(report):
+    _, sections = report
+    fit = sections["contact"].table("fit_coefficients")
+    a, b, k1 = _fit_lstsq()
+    assert fit.cell(0, "ours") == pytest.approx(a * 1e-6, rel=1e-10)
+    assert fit.cell(1, "ours") == pytest.approx(b * 1e-2, rel=1e-10)
+    assert fit.cell(2, "ours") == pytest.approx(k1, rel=1e-10)
+    assert all(v == "= (rounded)" for v in fit.column("ours vs paper"))
+
+
+# --- Table 2 and Table 3 -----------------------------------------------------------------------------
+def test_table2_as_printed_gives_no_impact_and_the_amplitude_bound(report):
+    _, sections = report
+    t = sections["vibration"].table("table3_as_stated")
+    assert t.column("N_tot ours") == [0] * 9
+    bound = 0.005 / 100.0 * 1e3  # Ẋ0/ω_n in mm
+    assert max(t.column("max x [mm]")) <= bound
+    assert min(t.column("d/2 [mm]")) > 10 * bound
+
+
+def test_reading_choice_is_the_minimum_of_the_stated_misfit(report):
+    _, sections = report
+    ranking = sections["vibration"].table("table2_readings")
+    scores = [r for r in ranking.column("misfit") if r is not None]
+    assert scores == sorted(scores) and len(scores) == 12
+    assert ranking.rows[0][5] == "chosen"
+    assert [r[5] for r in ranking.rows].count("as printed") == 1
+    # recompute the chosen reading's misfit from fresh simulations
+    chosen = vibration_stage.Reading(*ranking.rows[0][:3])
+    runs = [(float(d), chosen.run(float(d))) for d in paper.TABLE3]
+    assert vibration_stage.misfit(runs) == pytest.approx(ranking.rows[0][3], rel=1e-12)
+
+
+def test_table3_impacts_against_the_solve_ivp_reference(report):
+    _, sections = report
+    t3 = sections["vibration"].table("table3")
+    ranking = sections["vibration"].table("table2_readings")
+    chosen = vibration_stage.Reading(*ranking.rows[0][:3])
+    for d in (9.0, 25.0):
+        s = chosen.system(d)
+        xdot0 = float(chosen.run(d).initial_state[1])
+        ref = reference_impacts(s, 0.0, xdot0, 0.0, 0.0, vibration_stage.T_PRIME_END / s.omega_n)
+        row = t3.rows[list(paper.TABLE3).index(f"{d:g}")]
+        assert row[3] == len(ref)
+        assert row[5] == sum(1 for r in ref if r["xdot"] * r["ydot"] < 0)
+        assert row[4] == int(paper.TABLE3[f"{d:g}"][1])  # the paper's value sits beside ours
+
+
+# --- beyond the paper ------------------------------------------------------------------------------
+def test_lindstedt_truth_matches_the_elliptic_integral_and_orders_improve():
+    for x in (1e-3, 0.1, 1.0, 3.0):
+        num = beyond_stage.duffing_frequency_numerical(1.0, x, 1.0)
+        ell = beyond_stage.duffing_frequency_elliptic(1.0, x, 1.0)
+        assert num == pytest.approx(ell, rel=1e-10)
+    # against an mpmath elliptic integral as a third, independent value
+    mp.mp.dps = 30
+    k2 = mp.mpf("0.5") / (2 * (1 + mp.mpf("0.5")))
+    exact = mp.pi * mp.sqrt(1 + mp.mpf("0.5")) / (2 * mp.ellipk(k2))
+    assert beyond_stage.duffing_frequency_numerical(1.0, 0.5, 1.0) == pytest.approx(
+        float(exact), rel=1e-10
+    )
+    err = beyond_stage.lindstedt_errors(np.array([0.01, 0.1]))
+    for j in range(2):
+        assert err["order1"][j] > err["order2"][j] > err["order3"][j]
+    # leading error of order 1 is the ε² term of the series: 21/256 (εα²)²
+    assert err["order1"][0] == pytest.approx(21 / 256 * 1e-4, rel=2e-2)
+
+
+def test_accuracy_map_hertz_is_exact_without_spring_and_linear_matches_closed_form():
+    q = np.array([0.05, 0.5])
+    v0 = np.array([0.02, 0.3])
+    err = beyond_stage.accuracy_errors(q, v0, 1e-9)
+    assert np.max(err["hertz"]) < 1e-6  # Eq. 34 is exact for two free bodies (percent)
+    for i, m in enumerate(q):
+        for j, v in enumerate(v0):
+            assert err["truth"][i, j] == pytest.approx(_hertz_mp(m, 1.0, 1000.0, v), rel=1e-8)
+
+
+# --- paper comparison rules ------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "ours, printed, rounds, truncates",
+    [(0.16646, "0.1664", False, True), (0.15092, "0.1509", True, True),
+     (0.14159, "0.1407", False, False), (122.691, "122.7", True, False),
+     (0.83595, "0.8360", True, False)],
+)  # fmt: skip
+def test_compare_knows_rounding_from_truncation(ours, printed, rounds, truncates):
+    c = paper.compare(ours, printed)
+    assert (c.rounds, c.truncates) == (rounds, truncates)
+    assert c.deviation == pytest.approx((ours - float(printed)) / float(printed))
+
+
+# --- folder behaviour ------------------------------------------------------------------------------
+def test_refuses_a_nonempty_folder_and_force_replaces_it(tmp_path, capsys):
+    out = tmp_path / "rep"
+    out.mkdir()
+    (out / "keep.txt").write_text("x")
+    assert main(["reproduce", str(out), "--quick", "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert "out" in err and "--force" in err and "Traceback" not in err
+    assert (out / "keep.txt").exists()
+    assert main(["reproduce", str(out), "--quick", "--quiet", "--force"]) == 0
+    assert not (out / "keep.txt").exists() and (out / "index.html").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["rep"]
+
+
+def test_interrupted_run_leaves_no_report(tmp_path, monkeypatch):
+    out = tmp_path / "rep"
+
+    def boom(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(beyond_stage, "section", boom)
+    with pytest.raises(KeyboardInterrupt):
+        reproduce(out, quick=True, progress=False)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_output_under_a_missing_folder_is_a_parameter_error(tmp_path):
+    with pytest.raises(ParameterError) as exc:
+        reproduce(tmp_path / "no" / "such" / "rep", quick=True, progress=False)
+    assert exc.value.parameter == "out"
