@@ -1,6 +1,6 @@
 """Step 7 — free flight between impacts in closed form (paper Eq. 7).
 
-While |y − x| < d/2 the masses do not touch: Mẍ + Cẋ + Kx = 0 and mÿ = 0.  The main mass is a
+While abs(y − x) < d/2 the masses do not touch: Mẍ + Cẋ + Kx = 0 and mÿ = 0.  The main mass is a
 damped oscillator, ω_n = √(K/M), ζ = C/(2√(KM)); for ζ < 1 (the beams of interest are lightly
 damped) SymPy's ``dsolve`` gives the decaying cosine/sine pair, written here with the damped
 frequency ω_d = ω_n√(1 − ζ²).  The impact mass flies at constant speed.

@@ -40,10 +40,10 @@ def amplitude_ratio_roots(
     With a = 0 (or no ``v0``) the two single-harmonic balances of Eq. 12 are linear and their
     determinant has two roots ω² (kernels ``linear_frequency_squared_*``): ``in_phase`` (B/A > 0)
     and ``out_of_phase`` (B/A < 0).  With a > 0 and an approach speed v0 each root is corrected
-    by the Lindstedt–Poincaré frequency of Eq. 20 at the main-mass amplitude α = v0/(ω|B/A − 1|)
+    by the Lindstedt–Poincaré frequency of Eq. 20 at the main-mass amplitude α = v0/(ω·abs(B/A − 1))
     (the amplitude at which the relative speed amplitude is v0), solved self-consistently with
     Eq. 13 and 15.  ``free`` is the K → 0 limit −M/m (two free bodies; the limit of the
-    out-of-phase root).  ``impact`` is the root with the larger |B/A|: the mode dominated by the
+    out-of-phase root).  ``impact`` is the root with the larger abs(B/A): the mode dominated by the
     impact mass's motion, which is the out-of-phase one when K is small against the contact
     stiffness and the in-phase one when the main spring is much stiffer than the contact.
     """
@@ -148,7 +148,7 @@ def _iterate(start, step, what, tol=1e-14, max_iter=500):
 def perturbation_duration(
     m: Any, a: Any, b: Any, c1: Any, v0: Any, ba: Any
 ) -> PerturbationDuration:
-    """Contact duration T_CD of Eq. 31 iterated from T⁽⁰⁾ to |ΔT| ≤ 1e-14·T [s] (vectorised).
+    """Contact duration T_CD of Eq. 31 iterated from T⁽⁰⁾ to abs(ΔT) ≤ 1e-14·T [s] (vectorised).
 
     ``m`` [kg], ``a`` [N/m³], ``b`` [N/m], ``c1`` [N s/m], approach speed ``v0`` [m/s] and
     ``ba`` = B/A [1] broadcast against each other.  Returns the derived form (see errata.md,

@@ -1,7 +1,7 @@
 """Reference simulation: the whole motion integrated by ``scipy.integrate.solve_ivp`` with events.
 
 Independent of the compiled stepper (no closed forms, no shared code but the contact force law):
-free flight integrates Eq. 7, contact integrates Eq. 10, and terminal events |y − x| = d/2 and
+free flight integrates Eq. 7, contact integrates Eq. 10, and terminal events abs(y − x) = d/2 and
 δ = 0 switch between them.  The tests use it to check :func:`symimpact.simulation.simulate`
 (impact counts and times); the benchmark uses it as the baseline.
 """

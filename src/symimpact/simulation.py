@@ -78,7 +78,7 @@ class SimulationResult:
 
     @property
     def damping_inclination(self) -> float | None:
-        """DI [m] (Eq. 36): |slope| of the least-squares line through the first four positive
+        """DI [m] (Eq. 36): abs(slope) of the least-squares line through the first four positive
         maxima of x against t' = t·√(K/M); None with fewer than four maxima."""
         return damping_inclination(self.peaks, self.system.omega_n)
 
@@ -116,7 +116,7 @@ def effectiveness(n_total: int, n_effective: int) -> float | None:
 def damping_inclination(peaks: np.ndarray, omega_n: float, count: int = 4) -> float | None:
     """Damping inclination DI of Eq. 36 [m].
 
-    |slope| of the least-squares line through the first ``count`` positive maxima (t_k, X_k) of
+    abs(slope) of the least-squares line through the first ``count`` positive maxima (t_k, X_k) of
     x, with the dimensionless time t' = t·ω_n (ω_n = √(K/M)).  With two maxima this is
     (X₁ − X₂)/(t'₂ − t'₁), the printed Eq. 36.  None with fewer than ``count`` maxima.
     """
@@ -149,7 +149,7 @@ def simulate(
     Parameters
     ----------
     system : the :class:`~symimpact.system.ImpactSystem`.
-    x0, y0 : initial displacements [m]; xdot0, ydot0 : initial velocities [m/s]; |y0 − x0| must
+    x0, y0 : initial displacements [m]; xdot0, ydot0 : initial velocities [m/s]; abs(y0 − x0) must
         not exceed d/2.  t_end : end time [s].
     contact : ``"cubic"``, ``"hertz"``, ``"linear"`` (the force law integrated numerically,
         default: the system's law) or ``"perturbation"`` (the cubic law by Eq. 31–33, with B/A

@@ -33,7 +33,7 @@ class ImpactSystem:
     Parameters
     ----------
     M : main mass [kg].  K : main stiffness [N/m].  m : impact mass [kg].
-    gap : clearance d [m]; the masses touch when |y − x| = d/2.
+    gap : clearance d [m]; the masses touch when abs(y − x) = d/2.
     C : main damping [N s/m], or ``zeta``: damping ratio ζ = C/(2√(KM)) [1] (give one, default 0).
         Free flight (Eq. 7) is written for an underdamped main mass, ζ < 1.
     contact : force law during contact: ``"cubic"`` a·δ³ + b·δ (Eq. 9), ``"hertz"`` K_Hz·δ^1.5

@@ -86,19 +86,28 @@ def write_csv(table: Table, f: IO[str]) -> None:
         )
 
 
-def markdown(title: str, meta: list[tuple[str, str]], sections: list[Section]) -> str:
-    """The whole report as Markdown (tables as pipe tables, figures as image links)."""
+def markdown(
+    title: str, meta: list[tuple[str, str]], sections: list[Section], links: bool = True
+) -> str:
+    """The whole report as Markdown (tables as pipe tables, figures as image links).
+
+    ``links=False`` leaves out the contents list, the anchors and the CSV links (for embedding
+    the report in the documentation, which makes its own).
+    """
     out = [f"# {title}", ""]
     out += [f"- **{k}**: {v}" for k, v in meta]
-    out += ["", "## Contents", ""]
-    out += [f"{i}. [{s.title}](#{s.key})" for i, s in enumerate(sections, 1)]
+    if links:
+        out += ["", "## Contents", ""]
+        out += [f"{i}. [{s.title}](#{s.key})" for i, s in enumerate(sections, 1)]
     for s in sections:
-        out += ["", f'<a id="{s.key}"></a>', "", f"## {s.title}", ""]
+        out += ["", f'<a id="{s.key}"></a>'] if links else []
+        out += ["", f"## {s.title}", ""]
         for b in s.blocks:
             if isinstance(b, str):
                 out += [b, ""]
             elif isinstance(b, Table):
-                out += [f"**{b.title}** ([{b.name}.csv]({b.name}.csv))", ""]
+                csv_link = f" ([{b.name}.csv]({b.name}.csv))" if links else ""
+                out += [f"**{b.title}**{csv_link}", ""]
                 out.append("| " + " | ".join(b.columns) + " |")
                 out.append("|" + "---|" * len(b.columns))
                 for row in b.rows:
