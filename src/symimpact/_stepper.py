@@ -221,6 +221,17 @@ def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which, out, kout, wts):
 
 
 @njit(cache=True)
+def _trace_contact_row(trace, ntr, t, u, k):
+    """Row ``ntr`` of the trace: time, state, accelerations (from the stage k), contact flag."""
+    trace[ntr, 0] = t
+    for i in range(4):
+        trace[ntr, 1 + i] = u[i]
+    trace[ntr, 5] = k[1]
+    trace[ntr, 6] = k[3]
+    trace[ntr, 7] = 1.0
+
+
+@njit(cache=True)
 def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, record):
     """Integrate one contact from δ = 0; returns (status, t, npk, ntr, done, h_last) with u0 updated
     in place to the state at the end of contact (or at t_end)."""
@@ -245,12 +256,7 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
     if record:
         if ntr >= trace.shape[0]:
             return FULL_TRACE, t, npk, ntr, False, h
-        trace[ntr, 0] = t
-        for i in range(4):
-            trace[ntr, 1 + i] = u[i]
-        trace[ntr, 5] = k1[1]
-        trace[ntr, 6] = k1[3]
-        trace[ntr, 7] = 1.0
+        _trace_contact_row(trace, ntr, t, u, k1)
         ntr += 1
     while True:
         if t_end - t <= 0.0:
@@ -284,12 +290,7 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
             if ntr >= trace.shape[0]:
                 status = FULL_TRACE
                 break
-            trace[ntr, 0] = t
-            for i in range(4):
-                trace[ntr, 1 + i] = u[i]
-            trace[ntr, 5] = k1[1]
-            trace[ntr, 6] = k1[3]
-            trace[ntr, 7] = 1.0
+            _trace_contact_row(trace, ntr, t, u, k1)
             ntr += 1
         if ended:
             done = True

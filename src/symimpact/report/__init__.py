@@ -16,7 +16,8 @@ import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+
+from tqdm import tqdm
 
 from .document import Section, html, markdown, write_csv
 from .folder import staged_folder
@@ -34,22 +35,6 @@ def _stages() -> list[tuple[str, int, Callable[..., Section]]]:
         ("free vibration (Fig. 4–7, Table 3)", vibration_stage.STEPS, vibration_stage.section),
         ("beyond (accuracy map, Lindstedt)", beyond_stage.STEPS, beyond_stage.section),
     ]
-
-
-def _bar(progress: bool, desc: str, total: int) -> Any:
-    if not progress:
-
-        class _Null:
-            def update(self, n: int = 1) -> None:
-                pass
-
-            def close(self) -> None:
-                pass
-
-        return _Null()
-    from tqdm import tqdm
-
-    return tqdm(total=total, desc=desc, unit="step", file=sys.stderr, leave=True)
 
 
 def reproduce(
@@ -73,7 +58,7 @@ def reproduce(
     sections: list[Section] = []
     with staged_folder(out, force=force) as tmp:
         for desc, steps, build in _stages():
-            bar = _bar(progress, desc, steps)
+            bar = tqdm(total=steps, desc=desc, unit="step", file=sys.stderr, disable=not progress)
             try:
                 sections.append(build(tmp, quick, bar.update))
             finally:

@@ -94,7 +94,7 @@ def _accuracy_map(s: Section, folder: Path, n: int, tick: Any) -> None:
             rows.append([key, K, "max", float(np.max(err[key]))])
         tick()
     fig.colorbar(cs, ax=axes, ticks=[0, *LEVELS], label="|error| vs numerical truth [%]")
-    save_no_tight(fig, folder, "accuracy_map")
+    save(fig, folder, "accuracy_map", tight=False)
     s.blocks += [
         Figure(
             "accuracy_map",
@@ -115,14 +115,6 @@ def _accuracy_map(s: Section, folder: Path, n: int, tick: Any) -> None:
             "main spring, which grows with K and with the contact duration (small v0, large m).",
         ),
     ]
-
-
-def save_no_tight(fig: Any, folder: Path, name: str) -> None:
-    """Save a figure that has a shared colour bar (tight_layout would warn)."""
-    from ..io import atomic_savefig
-
-    atomic_savefig(fig, folder / f"{name}.png", what=f"figure {name}")
-    pyplot().close(fig)
 
 
 def duffing_frequency_numerical(omega0: float, epsilon: float, alpha: float) -> float:

@@ -14,9 +14,11 @@ def pyplot() -> Any:
     return _pyplot()
 
 
-def save(fig: Any, folder: Path, name: str) -> None:
-    """Write ``fig`` as ``folder/name.png`` atomically and close it."""
+def save(fig: Any, folder: Path, name: str, tight: bool = True) -> None:
+    """Write ``fig`` as ``folder/name.png`` atomically and close it (``tight=False`` for figures
+    with a shared colour bar, which tight_layout cannot place)."""
     plt = _pyplot()
-    fig.tight_layout()
+    if tight:
+        fig.tight_layout()
     atomic_savefig(fig, folder / f"{name}.png", what=f"figure {name}")
     plt.close(fig)

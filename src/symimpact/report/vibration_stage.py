@@ -114,18 +114,19 @@ def section(folder: Path, quick: bool, tick: Any, workers: int | None = None) ->
     runs = _table3_runs(chosen)
     s.blocks += _table3_blocks(runs, chosen)
     tick()
-    _fig4(s, folder, chosen)
+    run9 = chosen.run(9.0, history=True)
+    _fig4(s, folder, chosen, run9)
     tick()
     rng = gap_range(
-        chosen.system(9.0),
+        run9.system,
         np.arange(4.0, 61.0, 2.0 if quick else 1.0) * 1e-3,
         xdot0=chosen.xdot0,
-        t_end=T_PRIME_END / chosen.system(9.0).omega_n,
+        t_end=T_PRIME_END / run9.system.omega_n,
         tol=1e-4 if quick else 1e-5,
         workers=workers,
         progress=False,
     )
-    _fig5(s, folder, chosen, rng)
+    _fig5(s, folder, chosen, run9, rng)
     tick()
     _fig6(s, folder, chosen)
     tick()
@@ -242,8 +243,7 @@ def _tprime(s: ImpactSystem, t: np.ndarray) -> np.ndarray:
     return t * s.omega_n
 
 
-def _fig4(s: Section, folder: Path, chosen: Reading) -> None:
-    r = chosen.run(9.0, history=True)
+def _fig4(s: Section, folder: Path, chosen: Reading, r: SimulationResult) -> None:
     sysm = r.system
     h = r.history
     free = free_flight.main_mass_displacement(
@@ -273,8 +273,9 @@ def _fig4(s: Section, folder: Path, chosen: Reading) -> None:
     )
 
 
-def _fig5(s: Section, folder: Path, chosen: Reading, rng: dict[str, Any]) -> None:
-    r = chosen.run(9.0, history=True)
+def _fig5(
+    s: Section, folder: Path, chosen: Reading, r: SimulationResult, rng: dict[str, Any]
+) -> None:
     sysm = r.system
     h = r.history
     rows = []
