@@ -1,5 +1,5 @@
 """``symimpact``: the command line (subcommands reproduce, ritz, fit, contact-duration, simulate,
-sweep).
+sweep or map).
 
 Every parameter takes an SI number or a quantity with units ("100 N/cm", "9 mm").  Bad input exits
 with status 2 and one line naming the parameter and the reason.
@@ -164,23 +164,72 @@ def build_parser() -> argparse.ArgumentParser:
     _add_initial(p)
     _add_output(p, plot=True)
 
-    p = sub.add_parser("sweep", help="simulations over gaps (or another parameter)")
+    p = sub.add_parser(
+        "sweep",
+        aliases=["map"],
+        help="simulations over one or more swept inputs (a sweep, or a map: grid or "
+        "parameter sets), on local processes or a Dask cluster",
+    )
     _add_system(p)
     _add_initial(p)
-    p.add_argument(
-        "--over",
-        default="gap",
-        metavar="NAME",
-        help="parameter swept by --values (default gap)",
+    g = p.add_argument_group("what is swept (give --vary, --sets or --values)")
+    g.add_argument(
+        "--vary",
+        action="append",
+        default=[],
+        metavar="NAME=RANGE",
+        help='a swept input and its values, "start:stop:step" or "v1,v2,..." with units, e.g. '
+        '--vary "gap=6 mm:35 mm:1 mm" --vary mass_ratio=0.1,0.2; repeat for a grid (the '
+        "first varies slowest); names: " + ", ".join(_sweepable()),
     )
-    p.add_argument(
+    g.add_argument(
+        "--sets",
+        metavar="FILE.csv",
+        help="parameter sets, one per row; header cells are input names, optionally with a unit "
+        '("gap [mm]")',
+    )
+    g.add_argument("--over", default="gap", metavar="NAME", help="input swept by --values")
+    g.add_argument(
         "--values",
         metavar="RANGE",
         help='"start:stop:step" or "v1,v2,..." of --over; for gaps --gap may hold the range',
     )
-    p.add_argument("--workers", type=int, default=None, help="processes; default all cores")
-    p.add_argument("--quiet", action="store_true", help="no progress bar")
-    _add_output(p, plot=True)
+    g = p.add_argument_group("execution and files")
+    g.add_argument(
+        "--executor",
+        choices=("serial", "processes", "dask"),
+        default=None,
+        help="default processes (all cores), or dask with --scheduler",
+    )
+    g.add_argument("--workers", type=int, default=None, help="processes; default all cores")
+    g.add_argument(
+        "--scheduler", metavar="ADDRESS", help="run on this Dask scheduler (tcp://host:8786)"
+    )
+    g.add_argument("--chunk-size", type=int, default=None, help="runs per task")
+    g.add_argument(
+        "--out",
+        metavar="FILE",
+        help="stream the table to FILE.csv or FILE.parquet as chunks finish; the same command "
+        "after an interruption computes only the missing runs",
+    )
+    g.add_argument("--force", action="store_true", help="replace an existing --out file")
+    g.add_argument("--quiet", action="store_true", help="no progress bar")
+    g = p.add_argument_group("output")
+    g.add_argument("--json", action="store_true", help="machine-readable rows on stdout")
+    g.add_argument("--csv", metavar="FILE", help="write the table as CSV when done")
+    g.add_argument(
+        "--plot",
+        metavar="FILE.png",
+        help="one swept input: DI, N_eff and effectiveness against it; two or more: a heat map "
+        "of --value over --axes with the optimum marked",
+    )
+    g.add_argument(
+        "--value", default="damping_inclination", metavar="OUTPUT", help="heat-map output"
+    )
+    g.add_argument(
+        "--axes", metavar="X,Y", help="heat-map inputs; default the first two swept inputs"
+    )
+    g.add_argument("--best", choices=("max", "min"), default="max", help="optimum; default max")
     return parser
 
 
@@ -315,47 +364,135 @@ def _cmd_simulate(ns) -> None:
     _emit(ns, out, text)
 
 
-def _cmd_sweep(ns) -> None:
-    from .sweep import parse_range, sweep
+def _sweepable() -> tuple[str, ...]:
+    from .maps import SWEEPABLE
 
-    over = ns.over.replace("-", "_")
-    spec = ns.values
-    if spec is None and over == "gap" and ns.gap and (":" in ns.gap or "," in ns.gap):
-        spec = ns.gap
-        ns.gap = "1 mm"  # placeholder, replaced in every run
-    if spec is None:
-        raise SymimpactError("values: give the swept values (--values, or a range in --gap)")
-    values = parse_range(over, spec)
+    return SWEEPABLE
+
+
+def _points(ns):
+    from .errors import ParameterError
+    from .maps import as_points
+
+    given = [
+        flag for flag, v in (("--vary", ns.vary), ("--sets", ns.sets), ("--values", ns.values)) if v
+    ]
+    if len(given) > 1:
+        raise ParameterError(
+            given[1][2:], f"give one of --vary, --sets, --values, not {', '.join(given)}"
+        )
+    if ns.sets:
+        return as_points(sets=ns.sets)
+    grid: dict[str, str] = {}
+    for item in ns.vary:
+        if "=" not in item:
+            raise ParameterError("vary", f"{item!r} must be NAME=RANGE")
+        name, spec = (t.strip() for t in item.split("=", 1))
+        name = name.replace("-", "_")
+        if name in grid:
+            raise ParameterError(name, "is swept twice")
+        grid[name] = spec
+    if not grid:
+        over = ns.over.replace("-", "_")
+        spec = ns.values
+        if spec is None and over == "gap" and ns.gap and (":" in ns.gap or "," in ns.gap):
+            spec = ns.gap
+        if spec is None:
+            raise ParameterError(
+                "values", "give the swept values (--vary, --sets, --values, or a range in --gap)"
+            )
+        grid[over] = spec
+    for name in grid:
+        value = getattr(ns, name, None)
+        if isinstance(value, str) and (":" in value or "," in value):
+            setattr(ns, name, SYSTEM_DEFAULTS.get(name))  # the range is swept, not the base
+    return as_points(grid)
+
+
+SYSTEM_DEFAULTS = {flag[2:].replace("-", "_"): default for flag, _, default in SYSTEM_OPTIONS}
+
+
+def _cmd_sweep(ns) -> None:
+    from .maps import parameter_map
+
+    points = _points(ns)
     system = _system(ns)
-    rows = sweep(
+    table = parameter_map(
         system,
-        values,
-        over,
+        sets=points,
         x0=ns.x0,
         xdot0=ns.xdot0,
         y0=ns.y0,
         ydot0=ns.ydot0,
         t_end=ns.t_end,
         contact=ns.contact,
+        executor=ns.executor,
         workers=ns.workers,
+        scheduler=ns.scheduler,
+        out=ns.out,
+        force=ns.force,
+        chunk_size=ns.chunk_size,
         progress=not (ns.quiet or ns.json),
     )
+    rows = [
+        {k: (None if v is None or v != v else v) for k, v in r.items()}
+        for r in table.astype(object).to_dict("records")
+    ]
     if ns.csv:
         _write_csv(ns.csv, "csv", rows)
+    notes = []
+    if ns.out:
+        notes.append(f"wrote {ns.out} ({len(rows)} runs)")
     if ns.plot:
-        from .plots import plot_sweep
+        notes.append(_plot_sweep(ns, table, points.names))
+    names = points.names
+    if len(rows) <= 60:
+        head = " ".join(f"{n:>12}" for n in names)
+        lines = [
+            f"{head} {'N_tot':>6} {'N_eff':>6} {'effect.':>8} {'DI [m]':>11} {'ζ_eq':>9}  class"
+        ]
+        for r in rows:
+            lines.append(
+                " ".join(f"{r[n]:>12.6g}" for n in names)
+                + f" {r['n_impacts']:>6} {r['n_effective']:>6} {_fmt(r['effectiveness'], '.3f'):>8}"
+                f" {_fmt(r['damping_inclination'], '.4e'):>11} {_fmt(r['zeta_eq'], '.5f'):>9}  "
+                f"{r['class']}"
+            )
+    else:
+        lines = [f"{len(rows)} runs over {', '.join(names)}"]
+        di = table["damping_inclination"].astype("float64")
+        if di.notna().any():
+            best = rows[int(di.idxmax())]
+            at = ", ".join(f"{n} = {best[n]:.6g}" for n in names)
+            lines.append(f"largest DI {best['damping_inclination']:.4e} m at {at}")
+        counts = table["class"].value_counts()
+        lines.append(", ".join(f"{k}: {v}" for k, v in counts.items()))
+    _emit(ns, rows, "\n".join(lines + notes))
 
-        plot_sweep(rows, over, ns.plot)
-    head = f"{over:>12} {'N_tot':>6} {'N_eff':>6} {'effect.':>8} {'DI [m]':>11}  class"
-    lines = [head]
-    for r in rows:
-        eff = "—" if r["effectiveness"] is None else f"{r['effectiveness']:.3f}"
-        di = "—" if r["damping_inclination"] is None else f"{r['damping_inclination']:.4e}"
-        lines.append(
-            f"{r[over]:>12.6g} {r['n_impacts']:>6} {r['n_effective']:>6} {eff:>8} {di:>11}  "
-            f"{r['class']}"
-        )
-    _emit(ns, rows, "\n".join(lines))
+
+def _fmt(v, spec: str) -> str:
+    return "—" if v is None else format(v, spec)
+
+
+def _plot_sweep(ns, table, names) -> str:
+    from .errors import ParameterError
+    from .plots import plot_map, plot_sweep
+
+    if len(names) == 1:
+        rows = table.astype(object).where(table.notna(), None).to_dict("records")
+        plot_sweep(rows, names[0], ns.plot)
+        return f"wrote {ns.plot}"
+    if ns.axes:
+        axes = [a.strip().replace("-", "_") for a in ns.axes.split(",")]
+        if len(axes) != 2:
+            raise ParameterError("axes", f"{ns.axes!r} must be two swept inputs X,Y")
+    else:
+        axes = list(names[:2])
+    opt = plot_map(table, axes[0], axes[1], ns.value, ns.plot, best=ns.best)
+    return (
+        f"wrote {ns.plot}: {ns.best} {ns.value} {opt[ns.value]:.6g} at {axes[0]} = "
+        f"{opt[axes[0]]:.6g}, {axes[1]} = {opt[axes[1]]:.6g}"
+    )
 
 
 def _write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
@@ -387,6 +524,7 @@ COMMANDS = {
     "contact-duration": _cmd_contact_duration,
     "simulate": _cmd_simulate,
     "sweep": _cmd_sweep,
+    "map": _cmd_sweep,
 }
 
 

@@ -17,6 +17,9 @@ class ParameterError(SymimpactError):
         self.reason = reason
         super().__init__(f"{parameter}: {reason}")
 
+    def __reduce__(self):  # rebuilt from its fields when it crosses a process boundary
+        return (type(self), (self.parameter, self.reason))
+
 
 class MethodNotApplicable(SymimpactError):
     """A method (e.g. a closed form) has no real answer for the given parameters."""
@@ -25,6 +28,9 @@ class MethodNotApplicable(SymimpactError):
         self.method = method
         self.reason = reason
         super().__init__(f"method {method!r} does not apply: {reason}")
+
+    def __reduce__(self):
+        return (type(self), (self.method, self.reason))
 
 
 class ConvergenceError(SymimpactError):
@@ -35,3 +41,6 @@ class ConvergenceError(SymimpactError):
         self.history = list(history)
         tail = ", ".join(f"{v:.6g}" for v in self.history[-5:])
         super().__init__(f"{what} did not converge; last iterates: {tail}")
+
+    def __reduce__(self):
+        return (type(self), (self.what, self.history))

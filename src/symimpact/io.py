@@ -30,6 +30,9 @@ def _temporary_beside(path: str | os.PathLike, what: str, suffix: str) -> Iterat
     except OSError as exc:
         raise ParameterError(what, f"cannot write in {str(folder)!r}: {exc.strerror}") from None
     os.close(fd)
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes 0600; the result gets a normal file's mode
     try:
         yield tmp
         os.replace(tmp, target)

@@ -75,3 +75,100 @@ def plot_sweep(rows: list[dict[str, Any]], over: str, path: str | os.PathLike) -
     fig.tight_layout()
     atomic_savefig(fig, path)
     plt.close(fig)
+
+
+def _unit(name: str) -> str:
+    from .units import SI_UNITS
+
+    outputs = {"damping_inclination": "m", "effectiveness": "1", "zeta_eq": "1"}
+    if name.startswith("energy"):
+        return "J"
+    unit = outputs.get(name) or SI_UNITS.get(name, "1")
+    return "1" if unit == "dimensionless" else unit
+
+
+def _edges(centres):
+    import numpy as np
+
+    c = np.asarray(centres, dtype=float)
+    if c.size == 1:
+        return np.array([c[0] - 0.5, c[0] + 0.5]) if c[0] == 0 else c[0] * np.array([0.95, 1.05])
+    mid = 0.5 * (c[1:] + c[:-1])
+    return np.concatenate([[c[0] - (mid[0] - c[0])], mid, [c[-1] + (c[-1] - mid[-1])]])
+
+
+def plot_map(
+    table: Any,
+    x: str,
+    y: str,
+    value: str = "damping_inclination",
+    path: str | os.PathLike = "map.png",
+    best: str = "max",
+) -> dict[str, Any]:
+    """Heat map of the map output ``value`` over the swept inputs ``x`` and ``y``, with the
+    optimum marked: for each ``y`` the ``x`` that gives the best ``value`` (white dots) and the
+    best cell of the map (star).  ``best`` is ``"max"`` or ``"min"``.
+
+    With more than two swept inputs, each cell shows the best ``value`` over the others (said in
+    the title).  Cells where ``value`` is undefined are left blank.  Returns the optimum:
+    ``{x, y, value}`` and the per-``y`` optima ``{"rows": [(y, x, value), ...]}``.
+    """
+    import numpy as np
+
+    from .errors import ParameterError
+    from .maps import OUTPUTS
+
+    for name, role in ((x, "x"), (y, "y")):
+        if name not in table.columns or name in OUTPUTS or name == "run":
+            raise ParameterError(role, f"{name!r} is not a swept input of this map")
+    if x == y:
+        raise ParameterError("y", "must differ from x")
+    if value not in OUTPUTS or value == "class":
+        raise ParameterError("value", f"must be a numeric output: {', '.join(OUTPUTS[:-1])}")
+    if best not in ("max", "min"):
+        raise ParameterError("best", "must be 'max' or 'min'")
+    others = [c for c in table.columns if c not in ("run", x, y, *OUTPUTS)]
+    v = table[value].astype("float64")  # <NA> → NaN for the reduction only
+    frame = table[[x, y]].assign(_v=v)
+    grouped = frame.groupby([y, x], sort=True)["_v"]
+    cells = grouped.max() if best == "max" else grouped.min()
+    grid = cells.unstack(x)
+    xs, ys = grid.columns.to_numpy(float), grid.index.to_numpy(float)
+    z = grid.to_numpy(float)
+    if not np.any(np.isfinite(z)):
+        raise ParameterError("value", f"{value} is undefined everywhere in this map")
+    pick = np.nanargmax if best == "max" else np.nanargmin
+    rows = []
+    for i, yv in enumerate(ys):
+        if np.any(np.isfinite(z[i])):
+            j = int(pick(z[i]))
+            rows.append((float(yv), float(xs[j]), float(z[i, j])))
+    flat = int(pick(z))
+    i0, j0 = divmod(flat, z.shape[1])
+    optimum = {x: float(xs[j0]), y: float(ys[i0]), value: float(z[i0, j0]), "rows": rows}
+
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(8, 6))
+    mesh = ax.pcolormesh(_edges(xs), _edges(ys), np.ma.masked_invalid(z), cmap="viridis")
+    fig.colorbar(mesh, ax=ax, label=f"{value} [{_unit(value)}]")
+    ax.plot(
+        [r[1] for r in rows],
+        [r[0] for r in rows],
+        "o",
+        mfc="white",
+        mec="black",
+        ms=4,
+        label=f"{best} of {value} for each {y}",
+    )
+    ax.plot(xs[j0], ys[i0], "*", ms=16, mfc="red", mec="white", label=f"{best} of the map")
+    ax.set_xlabel(f"{x} [{_unit(x)}]")
+    ax.set_ylabel(f"{y} [{_unit(y)}]")
+    title = f"{value}: {best} {z[i0, j0]:.4g} at {x} = {xs[j0]:.4g}, {y} = {ys[i0]:.4g}"
+    if others:
+        title += f"\n({best} over {', '.join(others)})"
+    ax.set_title(title, fontsize=10)
+    ax.legend(fontsize=8, loc="best")
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
+    return optimum

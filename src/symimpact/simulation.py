@@ -82,6 +82,12 @@ class SimulationResult:
         maxima of x against t' = t·√(K/M); None with fewer than four maxima."""
         return damping_inclination(self.peaks, self.system.omega_n)
 
+    @property
+    def zeta_eq(self) -> float | None:
+        """Equivalent viscous damping ratio [1] of the envelope of x (see
+        :func:`equivalent_damping_ratio`); None with fewer than two envelope maxima."""
+        return equivalent_damping_ratio(self.peaks, self.system.omega_n)
+
     def as_dict(self, with_history: bool = False) -> dict[str, Any]:
         """JSON-ready summary (the ``simulate --json`` contract)."""
         out: dict[str, Any] = {
@@ -89,6 +95,7 @@ class SimulationResult:
             "n_effective": self.n_effective,
             "effectiveness": self.effectiveness,
             "damping_inclination": self.damping_inclination,
+            "zeta_eq": self.zeta_eq,
             "impacts": [i.as_dict() for i in self.impacts],
             "energy_residual": self.energy["residual"],
             "energy": self.energy,
@@ -126,6 +133,31 @@ def damping_inclination(peaks: np.ndarray, omega_n: float, count: int = 4) -> fl
     tp = peaks[:count, 0] * omega_n
     slope = np.polyfit(tp, peaks[:count, 1], 1)[0]
     return float(abs(slope))
+
+
+def equivalent_damping_ratio(peaks: np.ndarray, omega_n: float) -> float | None:
+    """Equivalent viscous damping ratio ζ_eq [1] from the decay of the envelope of x.
+
+    Not in the paper (a design figure beside DI, Eq. 36).  The upper envelope is made of the
+    positive maxima (t_k, X_k) that exceed every later maximum; ζ_eq = −s/ω_n, where s is the
+    least-squares slope of ln X_k against t_k.  For a linear oscillator
+    x = A·e^(−ζω_n t)·sin(ω_d t + φ) every maximum lies on the envelope, the successive
+    maxima are one damped period apart and ζ_eq = ζ exactly; for an impact damper it is the
+    viscous ratio with the same average logarithmic decay.  None with fewer than two envelope
+    maxima.
+    """
+    peaks = np.asarray(peaks, dtype=float).reshape(-1, 2)
+    peaks = peaks[peaks[:, 1] > 0]
+    if peaks.shape[0] < 2:
+        return None
+    later_max = np.maximum.accumulate(peaks[::-1, 1])[::-1]
+    keep = np.ones(peaks.shape[0], dtype=bool)
+    keep[:-1] = peaks[:-1, 1] > later_max[1:]
+    env = peaks[keep]
+    if env.shape[0] < 2:
+        return None
+    slope = np.polyfit(env[:, 0], np.log(env[:, 1]), 1)[0]
+    return float(-slope / omega_n)
 
 
 def simulate(

@@ -11,21 +11,14 @@ against its out-of-range neighbour.
 
 from __future__ import annotations
 
-import os
 from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from .errors import ParameterError
-from .simulation import simulate
 from .system import ImpactSystem
 from .units import SI_UNITS, si
-
-INITIAL = ("x0", "xdot0", "y0", "ydot0", "t_end")
-SYSTEM_PARAMETERS = ("M", "K", "C", "zeta", "m", "gap", "a", "b", "k_hz", "k1", "c1")
 
 
 def gap_class(n_impacts: int, n_effective: int) -> str:
@@ -54,35 +47,6 @@ def parse_range(name: str, text: str) -> np.ndarray:
     return np.array([float(si(name, p.strip())) for p in text.split(",") if p.strip()])
 
 
-@dataclass(frozen=True)
-class _Job:
-    system: ImpactSystem
-    parameter: str
-    value: float
-    initial: dict[str, float]
-    contact: str | None
-
-
-def _run(job: _Job) -> dict[str, Any]:
-    initial = dict(job.initial)
-    system = job.system
-    if job.parameter in INITIAL:
-        initial[job.parameter] = job.value
-    else:
-        system = system.with_(**{job.parameter: job.value})
-    res = simulate(system, contact=job.contact, **initial)
-    return {
-        job.parameter: job.value,
-        "n_impacts": res.n_impacts,
-        "n_effective": res.n_effective,
-        "effectiveness": res.effectiveness,
-        "damping_inclination": res.damping_inclination,
-        "energy_dissipated": res.energy["dissipated_C"] + res.energy["dissipated_c1"],
-        "energy_residual": res.energy["residual"],
-        "class": gap_class(res.n_impacts, res.n_effective),
-    }
-
-
 def sweep(
     system: ImpactSystem,
     values: Iterable[Any],
@@ -95,70 +59,49 @@ def sweep(
     t_end: Any = 1.0,
     contact: str | None = None,
     workers: int | None = None,
+    executor: str | None = None,
+    client: Any = None,
     progress: bool | Callable[[int, int], None] = True,
 ) -> list[dict[str, Any]]:
     """One simulation per value of ``parameter``: rows with N_tot, N_eff, effectiveness (Eq. 38),
-    DI (Eq. 36), energy dissipated [J] and class, in the order of ``values``.
+    DI (Eq. 36), ζ_eq, energies [J] and class, in the order of ``values``.
 
-    ``parameter`` is a system parameter (``gap``, ``m``, ``c1``, ...) or an initial condition
-    (``x0``, ``xdot0``, ``y0``, ``ydot0``, ``t_end``).  Runs on ``workers`` processes (default: all
-    cores; 1 runs serially) with a progress bar on standard error unless ``progress`` is False.
+    ``parameter`` is a system parameter (``gap``, ``m``, ``c1``, ...), ``mass_ratio`` or an
+    initial condition (``x0``, ``xdot0``, ``y0``, ``ydot0``, ``t_end``).  Runs on the
+    ``executor`` of :func:`symimpact.maps.parameter_map` (default ``workers`` local processes,
+    all cores) with a progress bar on standard error unless ``progress`` is False.  For several
+    swept inputs, files and resuming, use :func:`symimpact.maps.parameter_map`.
     """
-    if parameter not in INITIAL + SYSTEM_PARAMETERS:
+    from .maps import SWEEPABLE, MapPoints, map_rows
+
+    if parameter not in SWEEPABLE:
         raise ParameterError(
-            "parameter",
-            f"cannot sweep {parameter!r}; choose one of {', '.join(INITIAL + SYSTEM_PARAMETERS)}",
+            "parameter", f"cannot sweep {parameter!r}; choose one of {', '.join(SWEEPABLE)}"
         )
-    vals = [float(si(parameter, v, SI_UNITS.get(parameter))) for v in values]
-    if not vals:
+    if isinstance(values, str):
+        vals = parse_range(parameter, values)
+    else:
+        vals = np.array([float(si(parameter, v, SI_UNITS.get(parameter))) for v in values])
+    if vals.size == 0:
         raise ParameterError(parameter, "the sweep has no values")
-    initial = {
-        n: float(si(n, v))
-        for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0), ("t_end", t_end))
-    }
-    jobs = [_Job(system, parameter, v, initial, contact) for v in vals]
-    _run(jobs[0])  # validates the first job (and compiles) before any process starts
-    workers = workers or os.cpu_count() or 1
-    bar = _progress(progress, len(jobs))
-    rows: list[dict[str, Any]] = []
-    try:
-        if workers == 1 or len(jobs) < 4:
-            for job in jobs:
-                rows.append(_run(job))
-                bar(1)
-        else:
-            with ProcessPoolExecutor(max_workers=min(workers, len(jobs))) as pool:
-                for row in pool.map(_run, jobs, chunksize=max(1, len(jobs) // (8 * workers))):
-                    rows.append(row)
-                    bar(1)
-    finally:
-        bar(None)
+    rows = map_rows(
+        system,
+        MapPoints((parameter,), vals.reshape(-1, 1)),
+        x0=x0,
+        xdot0=xdot0,
+        y0=y0,
+        ydot0=ydot0,
+        t_end=t_end,
+        contact=contact,
+        executor=executor,
+        workers=workers,
+        client=client,
+        progress=progress,
+        desc="sweep",
+    )
+    for r in rows:
+        del r["run"]
     return rows
-
-
-def _progress(progress, total):
-    if callable(progress):
-        done = [0]
-
-        def update(n):
-            if n:
-                done[0] += n
-                progress(done[0], total)
-
-        return update
-    if not progress:
-        return lambda n: None
-    from tqdm import tqdm
-
-    bar = tqdm(total=total, unit="run", desc="sweep", leave=False)
-
-    def update(n):
-        if n is None:
-            bar.close()
-        else:
-            bar.update(n)
-
-    return update
 
 
 def gap_range(
@@ -187,11 +130,13 @@ def gap_range(
     }
     if not inside:
         return out
-    initial = {n: float(si(n, kwargs.get(n, 1.0 if n == "t_end" else 0.0))) for n in INITIAL}
+    from .maps import INITIAL, _Base, run_point
+
+    initial = tuple((n, float(si(n, kwargs.get(n, 1.0 if n == "t_end" else 0.0)))) for n in INITIAL)
+    base = _Base(system, initial, kwargs.get("contact"))
 
     def is_in(gap):
-        row = _run(_Job(system, "gap", gap, initial, kwargs.get("contact")))
-        return row["class"] == "in range"
+        return run_point(base, ("gap",), (gap,))["class"] == "in range"
 
     def bisect(lo_in, hi_out):
         a, b = lo_in, hi_out

@@ -44,6 +44,7 @@ SI_UNITS: dict[str, str] = {
     "position": "m",
     "restitution": "dimensionless",
     "ba": "dimensionless",
+    "mass_ratio": "dimensionless",
 }
 
 
