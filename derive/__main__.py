@@ -14,7 +14,13 @@ import time
 from pathlib import Path
 
 from . import STEPS, board
-from .codegen import render_errata, render_module, render_package_init, render_template
+from .codegen import (
+    render_errata,
+    render_fixed_points,
+    render_module,
+    render_package_init,
+    render_template,
+)
 
 ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
@@ -46,6 +52,7 @@ def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True):
     files["_broadcast.py"] = render_template("broadcast.py.j2")
     files["__init__.py"] = render_package_init(boards)
     files["errata.md"] = render_errata(boards)
+    files["fixed_points.py"] = render_fixed_points(boards)
     return files, boards, ok
 
 

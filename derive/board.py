@@ -113,6 +113,27 @@ class Kernel:
 
 
 @dataclass(frozen=True)
+class FixedPoint:
+    """A fixed-point iteration to emit as a loop: ``x⁽⁰⁾ = start(args)``,
+    ``x⁽ⁱ⁾ = step(x⁽ⁱ⁻¹⁾, args)`` until abs(x⁽ⁱ⁾ − x⁽ⁱ⁻¹⁾) ≤ tol·abs(x⁽ⁱ⁾) or ``max_iter``
+    steps; the emitted function returns the last iterate and the number of steps taken."""
+
+    name: str
+    args: tuple[Arg, ...]
+    iterate: sp.Symbol
+    start: sp.Expr
+    step: sp.Expr
+    returns: str
+    unit: str
+    equation: str
+    lhs: str
+    tol: float = 1e-14
+    max_iter: int = 100
+    note: str = ""
+    printed: bool = False
+
+
+@dataclass(frozen=True)
 class Constant:
     """A module-level numeric constant of a generated file (computed, never typed in)."""
 
@@ -134,6 +155,7 @@ class Board:
         self.errata: list[Erratum] = []
         self.kernels: list[Kernel] = []
         self.constants: list[Constant] = []
+        self.fixed_points: list[FixedPoint] = []
         self.values: dict[str, Any] = {}
         self._clock = time.perf_counter()
 
@@ -158,6 +180,11 @@ class Board:
         k = Kernel(**kwargs)
         self.kernels.append(k)
         return k
+
+    def fixed_point(self, **kwargs: Any) -> FixedPoint:
+        f = FixedPoint(**kwargs)
+        self.fixed_points.append(f)
+        return f
 
     def constant(self, **kwargs: Any) -> Constant:
         c = Constant(**kwargs)

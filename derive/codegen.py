@@ -13,7 +13,7 @@ import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.pycode import PythonCodePrinter
 
-from .board import Board, Kernel
+from .board import Board, FixedPoint, Kernel
 
 TEMPLATES = Path(__file__).parent / "templates"
 KERNEL_TEMPLATE = "kernels.py.j2"
@@ -126,3 +126,104 @@ def render_errata(boards: list[Board]) -> str:
 def render_template(name: str, **context) -> str:
     """Render a template that needs no derivation (e.g. the shared broadcasting helpers)."""
     return _env.get_template(name).render(**context)
+
+
+# --- fixed-point iterations as loops (sympy.codegen.ast) ----------------------------------------
+def fixed_point_names(fp: FixedPoint) -> dict[str, sp.Symbol]:
+    """The loop's variables: the iterate, its previous value, the step counter and the limits."""
+    x = fp.iterate.name
+    return {
+        "x": sp.Symbol(x, real=True),
+        "previous": sp.Symbol(f"{x}_previous", real=True),
+        "count": sp.Symbol("iterations", integer=True),
+        "tol": sp.Symbol("tol", real=True),
+        "max_iter": sp.Symbol("max_iter", integer=True),
+    }
+
+
+def fixed_point_ast(fp: FixedPoint) -> tuple[list, sp.Basic]:
+    """The iteration as a target-independent AST: (hoisted assignments, loop block).
+
+    Common subexpressions of the step that do not involve the iterate are computed once, before
+    the loop.  The loop is the one :func:`symimpact.contact.perturbation_duration` runs on arrays::
+
+        x = start; x_previous = inf; iterations = 0
+        while abs(x - x_previous) > tol*abs(x) and iterations < max_iter:
+            x_previous = x; x = step(x_previous); iterations += 1
+
+    A NaN iterate ends the loop (the comparison is false); callers test the value for NaN.
+    """
+    from sympy.codegen.ast import Assignment, CodeBlock, While, aug_assign
+
+    v = fixed_point_names(fp)
+    step = numeric_constants(sp.sympify(fp.step)).subs(fp.iterate, v["previous"])
+    start = numeric_constants(sp.sympify(fp.start))
+    replacements, (step_reduced, start_reduced) = sp.cse(
+        [step, start], symbols=sp.numbered_symbols("_c"), order="canonical"
+    )
+    hoisted, inner = [], []
+    depends = {v["previous"]}
+    for sym, val in replacements:
+        if val.free_symbols & depends:
+            depends.add(sym)
+            inner.append(Assignment(sym, val))
+        else:
+            hoisted.append(Assignment(sym, val))
+    loop = CodeBlock(
+        Assignment(v["x"], start_reduced),
+        Assignment(v["previous"], sp.oo),
+        Assignment(v["count"], 0),
+        While(
+            sp.And(
+                sp.Abs(v["x"] - v["previous"]) > v["tol"] * sp.Abs(v["x"]),
+                sp.StrictLessThan(v["count"], v["max_iter"]),
+            ),
+            CodeBlock(
+                Assignment(v["previous"], v["x"]),
+                *inner,
+                Assignment(v["x"], step_reduced),
+                aug_assign(v["count"], "+", 1),
+            ),
+        ),
+    )
+    return hoisted, loop
+
+
+def fixed_point_ops(fp: FixedPoint) -> int:
+    """Operations of one step after common-subexpression elimination (hoisted part excluded)."""
+    _, loop = fixed_point_ast(fp)
+    body = loop.args[-1].body
+    return sum(int(sp.count_ops(a.rhs)) for a in body.args if hasattr(a, "rhs"))
+
+
+def fixed_point_latex(fp: FixedPoint) -> tuple[str, str]:
+    """LaTeX of the start and of the step."""
+    x = sp.latex(fp.iterate)
+    return (
+        f"{x}^{{(0)}} = {sp.latex(fp.start)}",
+        f"{x}^{{(i)}} = {sp.latex(fp.step.subs(fp.iterate, sp.Symbol(x + '^{(i-1)}')))}",
+    )
+
+
+def render_fixed_points(boards: list[Board]) -> str:
+    """Source text of ``generated/fixed_points.py`` (numba loops of every board's iterations)."""
+    printer = ScalarKernelPrinter({"fully_qualified_modules": True})
+    items = []
+    for b in boards:
+        for fp in b.fixed_points:
+            hoisted, loop = fixed_point_ast(fp)
+            items.append(
+                {
+                    "fp": fp,
+                    "module": b.module,
+                    "argnames": ", ".join(a.name for a in fp.args),
+                    "code": [printer.doprint(h) for h in hoisted]
+                    + printer.doprint(loop).split("\n"),
+                    "latex": fixed_point_latex(fp),
+                    "x": fp.iterate.name,
+                    "ops": fixed_point_ops(fp),
+                }
+            )
+    return _env.get_template("fixed_points.py.j2").render(
+        items=items, template="derive/templates/fixed_points.py.j2"
+    )

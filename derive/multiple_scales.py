@@ -257,6 +257,75 @@ def derive() -> Board:
         "; ".join(f"m={k[0]} {k[1]} {mp.nstr(h[-1], 4)} s" for k, h in table1.items()),
     )
 
+    # --- the same fixed point as a root (for a fast kernel) ----------------------------------------
+    # T = π/√D(T) with D > 0 holds exactly when h(T) = T²·D(T) − π² = 0 (T > 0).  With c₁ = 0,
+    # h is a quadratic in T², so the fixed point is in closed form; with c₁ > 0 Newton's method on
+    # h started there converges in a few steps, also where the iteration of Eq. 31 does not.
+    D_T = Om_sq.subs(Om, sp.pi / T).subs(t, T)
+    h = w(
+        "contact_duration_residual",
+        sp.expand(T**2 * D_T - sp.pi**2),
+        "h(T) = T²·D(T) − π²: zero exactly at the fixed point of Eq. 31 (T = π/√D(T)).",
+        "30–31",
+    )
+    u = sp.Symbol("u", positive=True)
+    quad = sp.Poly(sp.expand(h.subs(c1, 0)).subs(T, sp.sqrt(u)), u)
+    kq, beta, const = quad.all_coeffs()
+    root_stable = 2 * sp.pi**2 / (beta + sp.sqrt(beta**2 - 4 * kq * const))
+    T_c0 = w(
+        "contact_duration_undamped",
+        sp.sqrt(root_stable),
+        "With c₁ = 0, h = k·T⁴ + β·T² − π² (quadratic in T²): the fixed point in closed form, "
+        "written without cancellation for small k: T² = 2π²/(β + √(β² + 4kπ²)).",
+        "31 (c₁ = 0)",
+    )
+    board.check(
+        "c₁ = 0: closed form solves h = 0",
+        "31",
+        sp.simplify(quad.as_expr().subs(u, root_stable)) == 0
+        and sp.simplify(const + sp.pi**2) == 0,
+    )
+    newton_step = w(
+        "contact_duration_newton_step",
+        sp.Max(T - h / sp.diff(h, T), T / 2),
+        "Newton's step on h: T ← T − h(T)/h′(T), never below T/2.  The cut matters: for T < 0 "
+        "the factor exp(−λc₁T/m) grows, so h has a spurious negative root that a full step "
+        "from the c₁ = 0 value can jump to.",
+        "31",
+    )
+    closed = []
+    for m_val in ("0.15", "0.20", "0.25"):
+        subs = {
+            m: sp.Rational(m_val),
+            a: sp.Rational("155300"),
+            b: sp.Rational("83.60"),
+            c1: 0,
+            Zd0: sp.Rational("0.075"),
+            R: -1 / sp.Rational(m_val),
+            lam: lam_derived,
+        }
+        with mp.workdps(30):
+            exact = mp.mpf(str(sp.N(T_c0.subs(lam, lam_derived).subs(subs), 30)))
+            closed.append(abs(exact - table1[(m_val, "derived")][-1]) < 1e-25)
+    with mp.workdps(30):  # c₁ > 0: Newton's limit is the iteration's limit
+        subs = {m: sp.Rational(1, 4), a: 155300, b: sp.Rational("83.6"), c1: 5}
+        subs.update({Zd0: sp.Rational(3, 10), R: -4, lam: lam_derived})
+        it_map = sp.lambdify(T, T_map.subs(lam, lam_derived).subs(subs), "mpmath")
+        nt_map = sp.lambdify(T, newton_step.subs(lam, lam_derived).subs(subs), "mpmath")
+        x_it = x_nt = mp.mpf(str(sp.N(T0.subs(lam, lam_derived).subs(subs), 30)))
+        for _ in range(200):
+            x_it = it_map(x_it)
+        x_nt = mp.mpf(str(sp.N(T_c0.subs(lam, lam_derived).subs(subs), 30)))
+        for _ in range(30):
+            x_nt = nt_map(x_nt)
+        closed.append(abs(x_it - x_nt) < 1e-25)
+    board.check(
+        "closed form (c₁ = 0) and Newton (c₁ = 5) equal the iteration's limit",
+        "31",
+        all(closed),
+        "Table 1 inputs; and m = 0.25, c₁ = 5 N s/m, Ż₀ = 0.3 m/s, B/A = −4 (30 digits)",
+    )
+
     # --- kernels ------------------------------------------------------------------------------------
     aT = Arg(T, "s", "Current contact-duration iterate T⁽ⁱ⁻¹⁾", 1e-3, 1.0, log=True)
     am = Arg(m, "kg", "Impact mass m", 0.05, 5.0, log=True)
@@ -292,6 +361,39 @@ def derive() -> Board:
             lhs=r"T_{CD}^{(0)}",
             printed=printed,
         )
+        board.fixed_point(
+            name=f"contact_duration{suffix}",
+            args=(am, aa, ab, ac, az, aR),
+            iterate=T,
+            start=(T0_printed if printed else T0).subs(s),
+            step=T_map.subs(s),
+            returns="Contact duration T_CD, Eq. 31 iterated from T⁽⁰⁾ to convergence",
+            unit="s",
+            equation="31",
+            lhs=r"T_{CD}",
+            note="The fixed point of the map `contact_duration_map"
+            + suffix
+            + "` started at `contact_duration_start"
+            + suffix
+            + "`.",
+            printed=printed,
+        )
+        if not printed:
+            board.fixed_point(
+                name="contact_duration_newton",
+                args=(am, aa, ab, ac, az, aR),
+                iterate=T,
+                start=T_c0.subs(s),
+                step=newton_step.subs(s),
+                returns="Contact duration T_CD, the fixed point of Eq. 31 by Newton's method",
+                unit="s",
+                equation="31",
+                lhs=r"T_{CD}",
+                note="The same fixed point as `contact_duration`, found as the root of "
+                "h(T) = T²·D(T) − π² by Newton's method from the closed form with c₁ = 0: "
+                "a few steps instead of tens, and it converges also where the iteration of "
+                "Eq. 31 oscillates (strong nonlinearity).",
+            )
         board.kernel(
             name=f"relative_displacement{suffix}",
             args=(at, aO, am, aa, ac, az, aR),

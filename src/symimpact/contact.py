@@ -185,6 +185,83 @@ def perturbation_duration(
     )
 
 
+def perturbation_durations(
+    m: Any,
+    a: Any,
+    b: Any,
+    c1: Any,
+    v0: Any,
+    ba: Any,
+    *,
+    method: str = "iteration",
+    tol: float = 1e-14,
+    max_iter: int = 100,
+) -> Any:
+    """Contact durations T_CD of Eq. 31 [s] for many impacts at once, in compiled code.
+
+    The fixed point of Eq. 31 (derived form) for arguments that broadcast against each other:
+    ``m`` [kg], ``a`` [N/m³], ``b`` [N/m], ``c1`` [N s/m], approach speed ``v0`` [m/s],
+    ``ba`` = B/A [1] (< 0 or > 1).  ``method="iteration"`` (default) runs Eq. 31 itself from
+    T⁽⁰⁾ (``generated.fixed_points.contact_duration``); ``"newton"`` finds a fixed point by
+    Newton's method on h(T) = T²·D(T) − π² from its closed form at c₁ = 0
+    (``contact_duration_newton``): several times faster, and it converges where the iteration
+    oscillates (strong nonlinearity).  Where Eq. 31 has several positive fixed points (c₁ > 0,
+    rare) the two may settle on different ones: the iteration only reaches stable ones.  No
+    history is kept; :func:`perturbation_duration` gives the iterates.
+
+    Raises :class:`ConvergenceError` (with the last iterates of the first such point) where the
+    iteration does not settle to ``tol`` in ``max_iter`` steps, and :class:`MethodNotApplicable`
+    where Eq. 31 has no real fixed point.
+    """
+    from .generated import fixed_points
+
+    if method not in ("newton", "iteration"):
+        raise ParameterError("method", "must be 'newton' or 'iteration'")
+    if not (isinstance(tol, float | int) and 0 < tol < 1e-3):
+        raise ParameterError("tol", "must lie in (0, 1e-3)")
+    if not (isinstance(max_iter, int) and max_iter >= 1):
+        raise ParameterError("max_iter", "must be a positive integer")
+    m, b, v0 = positive("m", m), positive("b", b), positive("v0", v0)
+    a, c1 = nonnegative("a", a), nonnegative("c1", c1)
+    ba = si("ba", ba)
+    if np.any((np.asarray(ba) >= 0) & (np.asarray(ba) <= 1)):
+        raise ParameterError("ba", "B/A in [0, 1] makes Eq. 31 complex; need B/A < 0 or > 1")
+    kernel = (
+        fixed_points.contact_duration_newton
+        if method == "newton"
+        else fixed_points.contact_duration
+    )
+    with np.errstate(all="ignore"):
+        value, steps = kernel(m, a, b, c1, v0, ba, tol, max_iter)
+    bad = ~np.isfinite(value)
+    if np.any(bad):
+        i = np.unravel_index(np.argmax(bad), np.shape(bad))
+        at = ", ".join(
+            f"{n} = {float(np.broadcast_to(v, np.shape(bad))[i]):.6g}"
+            for n, v in (("m", m), ("a", a), ("b", b), ("c1", c1), ("v0", v0), ("ba", ba))
+        )
+        raise MethodNotApplicable(
+            "perturbation",
+            f"Eq. 31 has no real positive fixed point at {at} (an iterate left the reals); the "
+            "numerical method still applies",
+        )
+    stuck = steps >= max_iter
+    if np.any(stuck):
+        i = np.unravel_index(np.argmax(stuck), np.shape(stuck))
+        point = [float(np.broadcast_to(v, np.shape(stuck))[i]) for v in (m, a, b, c1, v0, ba)]
+        with np.errstate(all="ignore"):  # the iterates after max_iter − 5 … max_iter steps
+            history = [
+                float(kernel(*point, tol, n)[0]) for n in range(max(0, max_iter - 5), max_iter + 1)
+            ]
+        raise ConvergenceError(
+            f"Eq. 31 {'iteration' if method == 'iteration' else 'Newton solve'} at m, a, b, c1, "
+            f"v0, ba = {', '.join(f'{p:.6g}' for p in point)} ({int(stuck.sum())} of "
+            f"{stuck.size} points)",
+            history,
+        )
+    return value[()] if isinstance(value, np.ndarray) else value
+
+
 def contact_duration(
     system: ImpactSystem,
     v0: Any,

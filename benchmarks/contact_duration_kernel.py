@@ -1,0 +1,114 @@
+"""Eq. 31 iterated to convergence: the compiled kernels of ``generated/fixed_points.py`` against
+``sympy.lambdify`` of the same expressions (the derivation's own start and step), iterated on
+NumPy arrays with the same stopping rule.  One core.  Prints figures and ratios; asserts nothing.
+
+Points: random over the physical ranges the derivation declares for the kernel's arguments, kept
+where Eq. 31's iteration converges in 100 steps (where it oscillates both would only run to the
+cap), the same points for every method.  Run from the checkout: python -m benchmarks.contact_duration_kernel
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+
+import numpy as np
+import sympy as sp
+from symimpact.generated import fixed_points
+
+from derive import board
+
+TOL, CAP = 1e-14, 100
+
+
+def declared():
+    fps = {f.name: f for f in board("multiple_scales").fixed_points}
+    return fps["contact_duration"], fps["contact_duration_newton"]
+
+
+def physical_points(fp, n, rng):
+    """``n`` points (one array per argument) where the iteration of Eq. 31 converges."""
+    cols = []
+    for a in fp.args:
+        u = rng.random(int(n * 1.15) + 10)
+        lo, hi = a.low, a.high
+        cols.append(np.exp(np.log(lo) + u * np.log(hi / lo)) if a.log else lo + u * (hi - lo))
+    _, steps = fixed_points.contact_duration(*cols)
+    keep = np.flatnonzero(steps < CAP)[:n]
+    if keep.size < n:
+        sys.exit("not enough converging points drawn")
+    return [np.ascontiguousarray(c[keep]) for c in cols]
+
+
+def lambdify_iteration(fp):
+    """The baseline: lambdify(start), lambdify(step), then x ← step(x) on the still-moving
+    elements until abs(Δ) ≤ tol·abs(x) everywhere (the best NumPy loop: no work on converged
+    elements)."""
+    symbols = [a.symbol for a in fp.args]
+    start = sp.lambdify(symbols, fp.start, "numpy")
+    step = sp.lambdify([fp.iterate, *symbols], fp.step, "numpy")
+
+    def run(*args):
+        x = np.asarray(start(*args), dtype=float)
+        active = np.arange(x.size)
+        sub = list(args)
+        steps = np.zeros(x.size, dtype=np.int64)
+        for _ in range(CAP):
+            xa = x[active]
+            new = step(xa, *sub)
+            steps[active] += 1
+            x[active] = new
+            moving = np.abs(new - xa) > TOL * np.abs(new)
+            active = active[moving]
+            if active.size == 0:
+                break
+            sub = [s[moving] for s in sub]
+        return x, steps
+
+    return run
+
+
+def best_of(fn, repeat):
+    best, out = float("inf"), None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return best, out
+
+
+def main() -> None:
+    rng = np.random.default_rng(20261122)
+    plain_fp, newton_fp = declared()
+    cases = (
+        ("iteration of Eq. 31", plain_fp, fixed_points.contact_duration),
+        ("Newton on h(T) (same fixed point)", newton_fp, fixed_points.contact_duration_newton),
+    )
+    print("contact-duration kernel: evaluations per second, one core (the gufunc is serial)")
+    for label, fp, kernel in cases:
+        baseline = lambdify_iteration(fp)
+        small = physical_points(plain_fp, 10, rng)
+        kernel(*small)  # compile / load the cache
+        print(f"\n{label}")
+        print(
+            f"{'N':>10} {'kernel [ev/s]':>15} {'lambdify [ev/s]':>16} {'ratio':>7} "
+            f"{'mean steps':>11} {'max rel. diff':>14}"
+        )
+        for n in (10**3, 10**5, 10**7):
+            args = physical_points(plain_fp, n, rng)
+            repeat = 5 if n < 10**7 else 1
+            tk, (value, steps) = best_of(lambda a=args, f=kernel: f(*a), repeat)
+            tb, (ref, ref_steps) = best_of(lambda a=args, f=baseline: f(*a), 3 if n < 10**7 else 1)
+            both = (steps < CAP) & (ref_steps < CAP)  # converged in both
+            diff = np.max(np.abs(value - ref)[both] / np.abs(ref[both]))
+            print(
+                f"{n:>10.0e} {n / tk:>15.3e} {n / tb:>16.3e} {tb / tk:>6.1f}x "
+                f"{steps.mean():>11.2f} {diff:>14.1e}"
+            )
+    print("\ntargets: ratio >= 1.5x, kernel >= 1e7 evaluations/s")
+    print("max rel. diff: over the points where both converged (Newton may stop at the cap on")
+    print("a few points where the iteration converges)")
+
+
+if __name__ == "__main__":
+    main()

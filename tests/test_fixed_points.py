@@ -1,0 +1,144 @@
+"""The compiled fixed-point loops of Eq. 31 (generated/fixed_points.py) against mpmath.
+
+300 random physical points (the ranges the derivation declares).  The iteration kernel is checked
+against the same iteration run in 30-digit mpmath from the board's own start and map; the Newton
+kernel against ``mpmath.findroot`` of the board's residual h(T) = T²·D(T) − π², a different
+algorithm.  Where the iteration of Eq. 31 does not converge the kernel must say so (its step
+count reaches the cap), never return an unconverged number as converged.
+"""
+
+from __future__ import annotations
+
+import mpmath as mp
+import numpy as np
+import pytest
+import sympy as sp
+from symimpact.generated import fixed_points, multiple_scales
+
+from symimpact.contact import perturbation_duration, perturbation_durations
+from symimpact.errors import ConvergenceError, MethodNotApplicable, ParameterError
+
+RTOL = 1e-13
+N_POINTS = 300
+
+
+def _points(fp, rng, n=N_POINTS):
+    cols = []
+    for a in fp.args:
+        u = rng.random(n)
+        if a.log:
+            cols.append(np.exp(np.log(a.low) + u * (np.log(a.high) - np.log(a.low))))
+        else:
+            cols.append(a.low + u * (a.high - a.low))
+    return np.array(cols).T
+
+
+def _declared(boards, name):
+    return next(f for f in boards["multiple_scales"].fixed_points if f.name == name)
+
+
+@pytest.mark.parametrize("name", ["contact_duration", "contact_duration_printed"])
+def test_iteration_kernel_equals_the_mpmath_iteration(boards, name):
+    fp = _declared(boards, name)
+    symbols = [a.symbol for a in fp.args]
+    start = sp.lambdify(symbols, fp.start, "mpmath")
+    step = sp.lambdify([fp.iterate, *symbols], fp.step, "mpmath")
+    pts = _points(fp, np.random.default_rng(31))
+    value, steps = getattr(fixed_points, name)(*pts.T)
+    assert value.shape == steps.shape == (N_POINTS,)
+    converged_mp = 0
+    with mp.workdps(30):
+        for p, v, k in zip(pts, value, steps, strict=True):
+            args = [mp.mpf(float(x)) for x in p]
+            T = start(*args)
+            for _ in range(400):
+                T_next = step(T, *args)
+                if abs(T_next - T) < mp.mpf(10) ** -25 * abs(T_next):
+                    break
+                T = T_next
+            else:  # mpmath's iteration does not settle either: the kernel must hit its cap
+                assert k == fp.max_iter, (p, v, k)
+                continue
+            converged_mp += 1
+            if k < fp.max_iter:
+                assert abs(v - T_next) <= RTOL * abs(T_next), (p, v, T_next)
+    scalar = getattr(fixed_points, f"{name}_scalar")
+    for p, v, k in zip(pts[:20], value[:20], steps[:20], strict=True):
+        assert scalar(*map(float, p)) == (v, k)  # the float twin is the same loop
+    assert converged_mp >= 0.8 * N_POINTS
+
+
+def test_newton_kernel_equals_findroot_of_the_residual(boards):
+    fp = _declared(boards, "contact_duration_newton")
+    b = boards["multiple_scales"].values
+    lam = sp.Symbol("lambda", positive=True)  # λ → its derived value in B/A (Eq. 21)
+    symbols = [a.symbol for a in fp.args]
+    ratio = next(a.symbol for a in fp.args if a.name == "ba")
+    amp = {s.name: s for s in b["lambda"].free_symbols}
+    lam_ba = sp.simplify(b["lambda"].subs(amp["B"], ratio * amp["A"]))  # B = (B/A)·A
+    h = b["contact_duration_residual"].subs(lam, lam_ba)
+    assert h.free_symbols <= {fp.iterate, *symbols}
+    residual = sp.lambdify([fp.iterate, *symbols], h, "mpmath")
+    pts = _points(fp, np.random.default_rng(32))
+    value, steps = fixed_points.contact_duration_newton(*pts.T)
+    assert (steps < fp.max_iter).mean() >= 0.99, "Newton converges almost everywhere"
+    plain, plain_steps = fixed_points.contact_duration(*pts.T)
+    with mp.workdps(30):
+        for p, v, k in zip(pts, value, steps, strict=True):
+            if k >= fp.max_iter:
+                continue
+            args = [mp.mpf(float(x)) for x in p]
+            root = mp.findroot(lambda T, args=args: residual(T, *args), mp.mpf(float(v)))
+            assert abs(v - root) <= RTOL * root, (p, v, root)
+    # Eq. 31 can have several positive fixed points (h has up to three positive roots when
+    # c₁ > 0, because T⁴·exp(−cT) rises and falls): there the iteration settles on a stable one
+    # and Newton on the one it reaches from the c₁ = 0 value.  Compare where the root is unique.
+    h_np = sp.lambdify([fp.iterate, *symbols], h, "numpy")
+    grid = np.geomspace(1e-5, 1e3, 4000)
+    single = np.array(
+        [np.count_nonzero(np.diff(np.sign(h_np(grid, *p)))) == 1 for p in pts], dtype=bool
+    )
+    assert single.mean() > 0.97
+    ok = (plain_steps < 100) & (steps < 100) & single
+    np.testing.assert_allclose(value[ok], plain[ok], rtol=RTOL, atol=0)
+    assert np.mean(steps[ok]) < np.mean(plain_steps[ok]) / 2  # and in far fewer steps
+
+
+def test_kernels_broadcast_scalar_1d_2d():
+    m = np.array([0.15, 0.2, 0.25])
+    v0 = np.array([[0.01], [0.075], [0.5]])
+    for kernel in (fixed_points.contact_duration, fixed_points.contact_duration_newton):
+        grid, steps = kernel(m, 155300.0, 83.6, 2.0, v0, -4.0)
+        assert grid.shape == steps.shape == (3, 3)
+        for i in range(3):
+            row, _ = kernel(m, 155300.0, 83.6, 2.0, v0[i, 0], -4.0)
+            np.testing.assert_array_equal(row, grid[i])
+            for j in range(3):
+                one, k = kernel(m[j], 155300.0, 83.6, 2.0, v0[i, 0], -4.0)
+                assert np.ndim(one) == 0 and one == grid[i, j] and k == steps[i, j]
+
+
+def test_runtime_wrapper_matches_the_history_iteration_and_reports_failures():
+    v0 = np.array([0.02, 0.075, 0.3])
+    ref = perturbation_duration(0.25, 155300.0, 83.6, 5.0, v0, -4.0)
+    for method in ("iteration", "newton"):
+        got = perturbation_durations(0.25, 155300.0, 83.6, 5.0, v0, -4.0, method=method)
+        np.testing.assert_allclose(got, ref.value, rtol=RTOL, atol=0)
+    for v in v0:  # the same stopping rule: the same number of steps (±1 for the last ulp)
+        one = perturbation_duration(0.25, 155300.0, 83.6, 5.0, v, -4.0)
+        _, k = fixed_points.contact_duration(0.25, 155300.0, 83.6, 5.0, v, -4.0)
+        assert abs(int(k) - one.iterations) <= 1
+    # strong nonlinearity: Eq. 31's iteration oscillates; Newton finds the fixed point
+    with pytest.raises(ConvergenceError, match="last iterates") as err:
+        perturbation_durations(0.25, 1.553e9, 83.6, 0.0, 1.0, -0.1, method="iteration")
+    last = err.value.history
+    assert len(last) == 6 and abs(last[-1] - last[-3]) < abs(last[-1] - last[-2])  # 2-cycle
+    T = perturbation_durations(0.25, 1.553e9, 83.6, 0.0, 1.0, -0.1, method="newton")
+    step = float(multiple_scales.contact_duration_map(T, 0.25, 1.553e9, 83.6, 0.0, 1.0, -0.1))
+    assert step == pytest.approx(T, rel=1e-13)  # it is a fixed point of Eq. 31
+    with pytest.raises(MethodNotApplicable, match="no real positive fixed point"):
+        perturbation_durations(0.25, 1e300, 83.6, 0.0, 1e200, -4.0)
+    with pytest.raises(ParameterError, match="ba: B/A in"):
+        perturbation_durations(0.25, 1.0, 83.6, 0.0, 1.0, 0.5)
+    with pytest.raises(ParameterError, match="method"):
+        perturbation_durations(0.25, 1.0, 83.6, 0.0, 1.0, -1, method="secant")
