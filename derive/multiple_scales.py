@@ -223,20 +223,23 @@ def derive() -> Board:
     # --- the fixed point on Table 1's inputs ------------------------------------------------------
     # M = 1 kg, Ż₀ = 7.5 cm/s, c₁ = 0, the paper's a and b; B/A = −M/m (free bodies, which the
     # closed forms of Eq. 34–35 also assume).  Iterated in mpmath until it stops moving.
+    def table1_inputs(m_val):
+        return {
+            m: sp.Rational(m_val),
+            a: sp.Rational("155300"),
+            b: sp.Rational("83.60"),
+            c1: 0,
+            Zd0: sp.Rational("0.075"),
+            R: -1 / sp.Rational(m_val),
+        }
+
     table1 = {}
     for m_val in ("0.15", "0.20", "0.25"):
         for name, lam_v, start in (
             ("derived", lam_derived, T0),
             ("printed", lam_printed, T0_printed),
         ):
-            subs = {
-                m: sp.Rational(m_val),
-                a: sp.Rational("155300"),
-                b: sp.Rational("83.60"),
-                c1: 0,
-                Zd0: sp.Rational("0.075"),
-                R: -1 / sp.Rational(m_val),
-            }
+            subs = table1_inputs(m_val)
             step_map = sp.lambdify(T, T_map.subs(lam, lam_v).subs(subs), "mpmath")
             with mp.workdps(30):
                 history = [mp.mpf(str(sp.N(start.subs(lam, lam_v).subs(subs), 30)))]
@@ -295,15 +298,7 @@ def derive() -> Board:
     )
     closed = []
     for m_val in ("0.15", "0.20", "0.25"):
-        subs = {
-            m: sp.Rational(m_val),
-            a: sp.Rational("155300"),
-            b: sp.Rational("83.60"),
-            c1: 0,
-            Zd0: sp.Rational("0.075"),
-            R: -1 / sp.Rational(m_val),
-            lam: lam_derived,
-        }
+        subs = {**table1_inputs(m_val), lam: lam_derived}
         with mp.workdps(30):
             exact = mp.mpf(str(sp.N(T_c0.subs(lam, lam_derived).subs(subs), 30)))
             closed.append(abs(exact - table1[(m_val, "derived")][-1]) < 1e-25)
