@@ -197,7 +197,8 @@ def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which, out, kout, wts):
     side_kept = 0
     theta = hi
     for _ in range(200):
-        theta = (lo * fhi - hi * flo) / (fhi - flo)
+        den = fhi - flo  # the secant point, or the midpoint where the chord is flat
+        theta = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
         if not (lo < theta < hi):
             theta = 0.5 * (lo + hi)
         _dp_step(law, p, side, u, k1, theta, out, kout, wts)
@@ -398,7 +399,8 @@ def _onset(p, x0, xd0, y0, yd0, tau0, T):
             fhi = s * zb - h
             kept = 0
             for _ in range(200):
-                tm = (lo * fhi - hi * flo) / (fhi - flo)
+                den = fhi - flo
+                tm = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
                 if not (lo < tm < hi):
                     tm = 0.5 * (lo + hi)
                 fm = s * _z_free(p, tm, x0, xd0, y0, yd0) - h

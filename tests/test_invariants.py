@@ -1,0 +1,90 @@
+"""Physical invariants, checked by hypothesis over wide physical ranges (issue 7, first part).
+
+- The energy balance of every simulation closes: initial = final + dissipated (C and c₁).
+- With c₁ = 0 and C = 0 every impact conserves energy; for free bodies also momentum
+  (restitution 1), and the numerical Hertz contact lasts as long as Eq. 34 says.
+- Results do not depend on the units the input was written in.
+"""
+
+from __future__ import annotations
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from symimpact.simulation import simulate
+from symimpact.system import ImpactSystem
+
+SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+def log_uniform(lo: float, hi: float):
+    return st.floats(lo, hi).map(float)
+
+
+systems = st.builds(
+    lambda M, K, zeta, ratio, gap, c1, law: ImpactSystem(
+        M=M, K=K, zeta=zeta, m=ratio * M, gap=gap, c1=c1, k_hz=1000.0, contact=law
+    ),
+    M=log_uniform(0.1, 10.0),
+    K=log_uniform(10.0, 1e4),
+    zeta=st.floats(0.0, 0.2),
+    ratio=st.floats(0.02, 1.0),
+    gap=st.floats(1e-3, 5e-2),
+    c1=st.floats(0.0, 20.0),
+    law=st.sampled_from(["cubic", "hertz", "linear"]),
+)
+
+
+@SETTINGS
+@given(system=systems, speed=st.floats(0.05, 2.0))
+def test_energy_balance_closes(system, speed):
+    res = simulate(system, 0.0, speed, 0.0, 0.0, 2.0)
+    e = res.energy
+    balance = e["initial"] - e["final"] - e["dissipated_C"] - e["dissipated_c1"]
+    assert abs(balance) <= 1e-8 * e["initial"], (system, speed, e)
+    assert min(e["dissipated_C"], e["dissipated_c1"]) >= -1e-12 * e["initial"]  # rounding only
+
+
+@SETTINGS
+@given(system=systems, speed=st.floats(0.05, 2.0))
+def test_impacts_without_damping_conserve_energy(system, speed):
+    elastic = system.with_(C=0.0, c1=0.0)
+    res = simulate(elastic, 0.0, speed, 0.0, 0.0, 1.0)
+    e0 = res.energy["initial"]
+    for imp in res.impacts:
+        if imp.duration is None:
+            continue
+        assert abs(imp.energy_lost) <= 1e-9 * e0, imp  # (not restitution: K does work)
+    assert abs(res.energy["final"] - e0) <= 1e-9 * e0
+
+
+@SETTINGS
+@given(system=systems, v0=st.floats(0.01, 1.0))
+def test_free_elastic_contact_conserves_momentum_and_energy(system, v0):
+    """Free bodies (no spring), c₁ = 0: restitution 1, momentum m·v0 kept; Hertz law: Eq. 34."""
+    from symimpact.contact import contact_duration, numerical_contact
+
+    elastic = system.with_(c1=0.0)
+    out = numerical_contact(elastic, v0, free=True)
+    _, xdot, _, ydot = out.exit_state
+    m, M = elastic.m, elastic.M
+    assert abs(m * ydot + M * xdot - m * v0) <= 1e-9 * m * v0
+    assert abs(out.restitution - 1.0) <= 1e-8
+    assert abs(out.energy_lost) <= 1e-9 * 0.5 * m * v0**2
+    if elastic.contact == "hertz":
+        closed = contact_duration(elastic, v0, "hertz")
+        assert abs(out.duration - closed) <= 1e-8 * closed
+
+
+@SETTINGS
+@given(gap_mm=st.integers(2, 40), speed_cm=st.integers(5, 200))
+def test_results_do_not_depend_on_units(gap_mm, speed_cm):
+    a = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=gap_mm / 1000, c1=5.0, k_hz=1000.0)
+    b = ImpactSystem(
+        M="1000 g", K="1 N/cm", C="1 N*s/m", m="250 g", gap=f"{gap_mm} mm", c1="0.05 N*s/cm",
+        k_hz="1000 N/m^1.5",
+    )  # fmt: skip
+    assert a == b
+    ra = simulate(a, 0.0, speed_cm / 100, 0.0, 0.0, 2.0)
+    rb = simulate(b, "0 m", f"{speed_cm} cm/s", "0 mm", "0 m/s", "2000 ms")
+    assert ra.as_dict() == rb.as_dict()
