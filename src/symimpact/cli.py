@@ -413,7 +413,7 @@ SYSTEM_DEFAULTS = {flag[2:].replace("-", "_"): default for flag, _, default in S
 
 
 def _cmd_sweep(ns) -> None:
-    from .maps import parameter_map
+    from .maps import parameter_map, table_rows
 
     points = _points(ns)
     system = _system(ns)
@@ -434,10 +434,7 @@ def _cmd_sweep(ns) -> None:
         chunk_size=ns.chunk_size,
         progress=not (ns.quiet or ns.json),
     )
-    rows = [
-        {k: (None if v is None or v != v else v) for k, v in r.items()}
-        for r in table.astype(object).to_dict("records")
-    ]
+    rows = table_rows(table)
     if ns.csv:
         _write_csv(ns.csv, "csv", rows)
     notes = []
@@ -476,11 +473,11 @@ def _fmt(v, spec: str) -> str:
 
 def _plot_sweep(ns, table, names) -> str:
     from .errors import ParameterError
+    from .maps import table_rows
     from .plots import plot_map, plot_sweep
 
     if len(names) == 1:
-        rows = table.astype(object).where(table.notna(), None).to_dict("records")
-        plot_sweep(rows, names[0], ns.plot)
+        plot_sweep(table_rows(table), names[0], ns.plot)
         return f"wrote {ns.plot}"
     if ns.axes:
         axes = [a.strip().replace("-", "_") for a in ns.axes.split(",")]

@@ -44,7 +44,7 @@ def fingerprint(system: Any, points: Any, settings: dict[str, Any]) -> dict[str,
     digest = hashlib.sha256(np.ascontiguousarray(points.values, dtype="<f8").tobytes())
     return {
         "symimpact": __version__,
-        "system": {k: v for k, v in system.as_dict().items()},
+        "system": system.as_dict(),
         "settings": {
             k: (v if isinstance(v, int | float | None) else str(v)) for k, v in settings.items()
         },
@@ -163,8 +163,9 @@ def _read_rows(path: Path, fmt: str) -> list[dict[str, Any]]:
     if fmt == "parquet":
         import pandas as pd
 
-        df = pd.read_parquet(path)
-        return df.astype(object).where(pd.notna(df), None).to_dict("records")
+        from .maps import table_rows
+
+        return table_rows(pd.read_parquet(path))
     import csv
 
     def cell(name: str, text: str) -> Any:

@@ -502,6 +502,13 @@ def parameter_map(
     return table
 
 
+def table_rows(table) -> list[dict[str, Any]]:
+    """A map table (or any DataFrame) as a list of row dicts, missing values as None."""
+    import pandas as pd
+
+    return table.astype(object).where(pd.notna(table), None).to_dict("records")
+
+
 def tidy_table(rows: list[dict[str, Any]], names: Sequence[str]):
     """Rows as a DataFrame with fixed column order and dtypes (missing values as ``<NA>``)."""
     import pandas as pd

@@ -18,7 +18,7 @@ import numpy as np
 
 from .errors import ParameterError
 from .system import ImpactSystem
-from .units import SI_UNITS, si
+from .units import si
 
 
 def gap_class(n_impacts: int, n_effective: int) -> str:
@@ -72,18 +72,13 @@ def sweep(
     all cores) with a progress bar on standard error unless ``progress`` is False.  For several
     swept inputs, files and resuming, use :func:`symimpact.maps.parameter_map`.
     """
-    from .maps import SWEEPABLE, MapPoints, map_rows
+    from .maps import SWEEPABLE, MapPoints, _si_values, map_rows
 
     if parameter not in SWEEPABLE:
         raise ParameterError(
             "parameter", f"cannot sweep {parameter!r}; choose one of {', '.join(SWEEPABLE)}"
         )
-    if isinstance(values, str):
-        vals = parse_range(parameter, values)
-    else:
-        vals = np.array([float(si(parameter, v, SI_UNITS.get(parameter))) for v in values])
-    if vals.size == 0:
-        raise ParameterError(parameter, "the sweep has no values")
+    vals = _si_values(parameter, values)  # ranges, lists or quantities → SI, finite, non-empty
     rows = map_rows(
         system,
         MapPoints((parameter,), vals.reshape(-1, 1)),
