@@ -64,6 +64,29 @@ def test_grazing_impact_is_not_missed():
     assert fast.impacts[-1].duration < 1e-3
 
 
+def test_run_stops_at_rest_where_impacts_are_unresolvable():
+    # Found by hypothesis (tests/test_invariants.py): the impact mass rides the decaying main mass,
+    # one contact per period with approach speeds falling 3-fold each time.  Past 1e-12 m/s
+    # (1e-15 is the velocity tolerance) the stepper found 33 impacts and solve_ivp 31, with
+    # times 0.03 s apart.  With the rest criterion both stop at the same onset.
+    s = ImpactSystem(M=0.1, K=1115, m=0.025, gap=0.0078125, zeta=0.125, k_hz=1000, c1=4)
+    r = simulate(s, 0.0, 1.0, 0.0, 0.0, 2.0, history=True, samples=400)
+    ref = reference_impacts(s, 0.0, 1.0, 0.0, 0.0, 2.0)
+    assert r.n_impacts == len(ref) == 13
+    assert max(abs(a.t - b["t"]) for a, b in zip(r.impacts, ref, strict=True)) < 1e-9
+    e = r.energy
+    assert r.t_rest is not None and r.impacts[-1].t < r.t_rest < 2.0
+    assert e["final"] < 1e-12 * e["initial"]
+    assert abs(e["relative_residual"]) < 1e-10
+    assert any("at rest from t" in n for n in r.notes)
+    held = r.history["t"] > r.t_rest
+    assert np.all(r.history["x"][held] == r.history["x"][held][0])
+    # rest=0 integrates on to t_end, into the unresolvable contacts
+    assert simulate(s, 0.0, 1.0, 0.0, 0.0, 2.0, rest=0.0).n_impacts > 13
+    with pytest.raises(ParameterError, match="rest"):
+        simulate(s, 0.0, 1.0, 0.0, 0.0, 2.0, rest=1.0)
+
+
 def test_energy_balance_and_restitution_without_damping():
     s = ImpactSystem(M=1, K=1e4, m=0.25, gap="9 mm", k_hz=1000, contact="hertz")
     r = simulate(s, xdot0="0.5 m/s", t_end=1.0)

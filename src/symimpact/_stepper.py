@@ -29,8 +29,10 @@ from .generated import multiple_scales as _ms
 CUBIC, HERTZ, LINEAR, PERTURBATION = 0, 1, 2, 3
 LAWS = {"cubic": CUBIC, "hertz": HERTZ, "linear": LINEAR, "perturbation": PERTURBATION}
 # parameter vector layout
-P_M, P_K, P_C, P_m, P_h, P_a, P_b, P_khz, P_k1, P_c1, P_ba, P_rtol, P_atolx, P_atolv = range(14)
-N_PARAMS = 14
+(P_M, P_K, P_C, P_m, P_h, P_a, P_b, P_khz, P_k1, P_c1, P_ba, P_rtol, P_atolx, P_atolv, P_rest) = (
+    range(15)
+)
+N_PARAMS = 15
 # impact-log columns
 (
     I_T,
@@ -51,10 +53,11 @@ N_PARAMS = 14
     I_DONE,
 ) = range(16)
 N_IMPACT_COLS = 16
-# trace columns: t, x, xd, y, yd, xdd, ydd, kind (0: free flight from here, 1: contact point)
+# trace columns: t, x, xd, y, yd, xdd, ydd, kind (0: free flight from here, 1: contact point,
+# 2: at rest from here)
 N_TRACE_COLS = 8
 # status codes
-OK, FULL_IMPACTS, FULL_TRACE, STEP_UNDERFLOW, NO_CONVERGENCE = 0, 1, 2, 3, 4
+OK, FULL_IMPACTS, FULL_TRACE, STEP_UNDERFLOW, NO_CONVERGENCE, AT_REST = 0, 1, 2, 3, 4, 5
 
 _x_ff = njit(cache=True)(_ff.main_mass_displacement_scalar)
 _xd_ff = njit(cache=True)(_ff.main_mass_velocity_scalar)
@@ -82,8 +85,11 @@ _E1, _E3, _E4, _E5, _E6, _E7 = (
 NV = 6  # x, ẋ, y, ẏ, ∫Cẋ², ∫c₁δ̇²
 
 
-def pack(system, rtol, atol_x, atol_v, ba=0.0, free=False):
-    """The stepper's parameter vector for an ImpactSystem (SI floats; ``free`` drops K and C)."""
+def pack(system, rtol, atol_x, atol_v, ba=0.0, free=False, rest_energy=0.0):
+    """The stepper's parameter vector for an ImpactSystem (SI floats; ``free`` drops K and C).
+
+    ``rest_energy`` [J]: a contact whose onset finds less mechanical energy in the system ends
+    the run (status AT_REST); 0 never does."""
     p = np.zeros(N_PARAMS)
     p[P_M] = system.M
     p[P_K] = 0.0 if free else system.K
@@ -99,6 +105,7 @@ def pack(system, rtol, atol_x, atol_v, ba=0.0, free=False):
     p[P_rtol] = rtol
     p[P_atolx] = atol_x
     p[P_atolv] = atol_v
+    p[P_rest] = rest_energy
     return p
 
 
@@ -230,6 +237,17 @@ def _trace_contact_row(trace, ntr, t, u, k):
     trace[ntr, 5] = k[1]
     trace[ntr, 6] = k[3]
     trace[ntr, 7] = 1.0
+
+
+@njit(cache=True)
+def _trace_rest_row(trace, ntr, t, u):
+    """Row ``ntr`` of the trace: the state held from ``t`` on (the run stopped at rest)."""
+    trace[ntr, 0] = t
+    for i in range(4):
+        trace[ntr, 1 + i] = u[i]
+    trace[ntr, 5] = 0.0
+    trace[ntr, 6] = 0.0
+    trace[ntr, 7] = 2.0
 
 
 @njit(cache=True)
@@ -459,7 +477,7 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
 
     Fills ``impacts`` (one row per contact), ``peaks`` (t, x of positive maxima of x) and, when
     ``record``, ``trace``.  Returns (status, n_impacts, n_peaks, n_trace, final state [6],
-    dissipated by C, dissipated by c₁, final contact side (0: free)).
+    dissipated by C, dissipated by c₁, final contact side (0: free), final time).
     """
     M, K, C, h = p[P_M], p[P_K], p[P_C], p[P_h]
     u = np.zeros(NV)
@@ -506,10 +524,17 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
             side = 0.0
             break
         # contact onset
+        side = 1.0 if u[2] - u[0] > 0.0 else -1.0
+        if _energy(law, p, u, 0.0) < p[P_rest]:
+            status = AT_REST  # too little energy left for the contact to be resolved
+            if record and ntr < trace.shape[0]:
+                _trace_rest_row(trace, ntr, t, u)
+                ntr += 1
+            side = 0.0
+            break
         if n_imp >= impacts.shape[0]:
             status = FULL_IMPACTS
             break
-        side = 1.0 if u[2] - u[0] > 0.0 else -1.0
         u[2] = u[0] + side * h  # exactly on the boundary (the root is located to 4e-16)
         row = impacts[n_imp]
         row[I_T] = t
@@ -562,7 +587,7 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
             tau_skip = min(-v / amax if amax > 0.0 else cap, cap, far)
         else:
             tau_skip = min(1e-9 * cap, far)  # grazing exit
-    return status, n_imp, npk, ntr, u, diss_C, diss_c1, side
+    return status, n_imp, npk, ntr, u, diss_C, diss_c1, side, t
 
 
 @njit(cache=True)

@@ -37,10 +37,18 @@ def reference_impacts(
     method: str = "DOP853",
     rtol: float = 1e-12,
     atol: float = 1e-15,
+    rest: float = 1e-12,
 ) -> list[dict[str, Any]]:
-    """Impact log (onset time, side, state at onset, contact end time) by solve_ivp (Eq. 7, 10)."""
+    """Impact log (onset time, side, state at onset, contact end time) by solve_ivp (Eq. 7, 10).
+
+    Stops, as :func:`symimpact.simulation.simulate` does, at the first onset that finds less than
+    ``rest`` × the initial mechanical energy in the system (0: never).
+    """
     law = law or system.contact
     M, K, C, m, h = system.M, system.K, system.C, system.m, 0.5 * system.gap
+
+    def energy(u):
+        return 0.5 * M * u[1] ** 2 + 0.5 * K * u[0] ** 2 + 0.5 * m * u[3] ** 2
 
     def free(t, u):
         return [u[1], -(C * u[1] + K * u[0]) / M, u[3], 0.0]
@@ -60,6 +68,7 @@ def reference_impacts(
     max_step = 2 * np.pi / np.sqrt(K / M) / 200
     impacts: list[dict[str, Any]] = []
     t, u = 0.0, np.array([x0, xdot0, y0, ydot0], dtype=float)
+    e_rest = rest * energy(u)
     while t < t_end:
         sol = solve_ivp(
             free,
@@ -76,6 +85,8 @@ def reference_impacts(
             break
         t, k = min(hits)
         u = sol.y_events[k][0].copy()
+        if energy(u) < e_rest:
+            break
         side = 1.0 if k == 0 else -1.0
         record = {"t": t, "side": int(side), "x": u[0], "xdot": u[1], "y": u[2], "ydot": u[3]}
 
