@@ -58,6 +58,8 @@ N_IMPACT_COLS = 16
 N_TRACE_COLS = 8
 # status codes
 OK, FULL_IMPACTS, FULL_TRACE, STEP_UNDERFLOW, NO_CONVERGENCE, AT_REST = 0, 1, 2, 3, 4, 5
+# what ends a free flight
+ONSET_CONTACT, ONSET_NONE, ONSET_REST = 0, 1, 2
 
 _x_ff = njit(cache=True)(_ff.main_mass_displacement_scalar)
 _xd_ff = njit(cache=True)(_ff.main_mass_velocity_scalar)
@@ -385,8 +387,15 @@ def _z_free(p, tau, x0, xd0, y0, yd0):
 
 @njit(cache=True)
 def _onset(p, x0, xd0, y0, yd0, tau0, T):
-    """First τ in [tau0, T] with |z(τ)| = d/2 (free flight from the state at τ = 0), or -1."""
+    """(τ, code) for free flight from the state at τ = 0, searched on [tau0, T].
+
+    code ONSET_CONTACT: τ is the first time with abs(z(τ)) = d/2.  ONSET_NONE: no contact before T
+    (also returned early once the wall is out of reach: the main mass's amplitude
+    √(2E/K) never grows in free flight).  ONSET_REST: at τ the energy of both masses has fallen
+    below p[P_rest] (the run stops at rest).
+    """
     M, K, C, h = p[P_M], p[P_K], p[P_C], p[P_h]
+    e_damper = 0.5 * p[P_m] * yd0 * yd0
     energy = 0.5 * M * xd0 * xd0 + 0.5 * K * x0 * x0
     amax = math.sqrt(C * C / M + K) * math.sqrt(2.0 * energy) / M
     wd = math.sqrt(K / M - C * C / (4 * M * M))
@@ -398,6 +407,7 @@ def _onset(p, x0, xd0, y0, yd0, tau0, T):
     tau = tau0
     za = _z_free(p, tau, x0, xd0, y0, yd0)
     H = hmax
+    accepted = 0
     while tau < T:
         H = min(H, T - tau)
         tb = tau + H
@@ -406,6 +416,16 @@ def _onset(p, x0, xd0, y0, yd0, tau0, T):
         if max(za, zb) + slack < h and min(za, zb) - slack > -h:
             tau, za = tb, zb
             H = min(2.0 * H, hmax)
+            accepted += 1
+            if accepted % 64 == 0:  # every few periods: at rest, or the wall out of reach?
+                x = y0 + yd0 * tau - za
+                xd = _xd_ff(tau, M, K, C, x0, xd0)
+                e_main = 0.5 * M * xd * xd + 0.5 * K * x * x
+                if e_main + e_damper < p[P_rest]:
+                    return tau, ONSET_REST
+                reach = abs(y0 + yd0 * tau) + abs(yd0) * (T - tau) + math.sqrt(2.0 * e_main / K)
+                if reach < h * (1.0 - 1e-12):
+                    return T, ONSET_NONE
             continue
         if H > hmin and H > 4e-16 * tb:
             H *= 0.5
@@ -434,10 +454,10 @@ def _onset(p, x0, xd0, y0, yd0, tau0, T):
                     kept = -1
                 if hi - lo <= 4e-16 * hi:
                     break
-            return hi
+            return hi, ONSET_CONTACT
         tau, za = tb, zb  # an excursion shorter than hmin: below 1e-20 of the gap
         H = hmax
-    return -1.0
+    return T, ONSET_NONE
 
 
 @njit(cache=True)
@@ -509,8 +529,9 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
             trace[ntr, 7] = 0.0
             ntr += 1
         e_main0 = 0.5 * M * xd0 * xd0 + 0.5 * K * x0 * x0
-        tau = _onset(p, x0, xd0, y0, yd0, tau_skip, t_end - t)
-        tau_stop = tau if tau >= 0.0 else t_end - t
+        tau_stop, onset = _onset(p, x0, xd0, y0, yd0, tau_skip, t_end - t)
+        if onset == ONSET_NONE:
+            tau_stop = t_end - t
         npk = _free_peaks(p, x0, xd0, t, 0.0, tau_stop, peaks, npk)
         x1 = _x_ff(tau_stop, M, K, C, x0, xd0)
         xd1 = _xd_ff(tau_stop, M, K, C, x0, xd0)
@@ -520,12 +541,12 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
         u[3] = yd0
         diss_C += e_main0 - (0.5 * M * xd1 * xd1 + 0.5 * K * x1 * x1)
         t = t + tau_stop
-        if tau < 0.0:
+        if onset == ONSET_NONE:
             side = 0.0
             break
         # contact onset
         side = 1.0 if u[2] - u[0] > 0.0 else -1.0
-        if _energy(law, p, u, 0.0) < p[P_rest]:
+        if onset == ONSET_REST or _energy(law, p, u, 0.0) < p[P_rest]:
             status = AT_REST  # too little energy left for the contact to be resolved
             if record and ntr < trace.shape[0]:
                 _trace_rest_row(trace, ntr, t, u)

@@ -11,6 +11,7 @@ import argparse
 import csv
 import json
 import math
+import re
 import sys
 from collections.abc import Sequence
 from typing import Any
@@ -162,6 +163,13 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("simulate", help="free vibration with impacts (Eq. 7, 10, 36–38)")
     _add_system(p)
     _add_initial(p)
+    p.add_argument(
+        "--rest",
+        default="1e-12",
+        metavar="FRACTION",
+        help="stop at rest once the energy falls below this fraction of its initial value "
+        "(0: never); default 1e-12",
+    )
     _add_output(p, plot=True)
 
     p = sub.add_parser(
@@ -344,6 +352,7 @@ def _cmd_simulate(ns) -> None:
         ns.t_end,
         contact=ns.contact,
         history=bool(ns.plot or ns.csv),
+        rest=_fraction("rest", ns.rest),
     )
     if ns.csv:
         names = list(res.history)
@@ -361,7 +370,17 @@ def _cmd_simulate(ns) -> None:
         f"DI {'n/a' if di is None else f'{di * 1e6:.2f} µm'}, energy residual "
         f"{res.energy['relative_residual']}"
     )
+    text += "".join(f"\nnote: {n}" for n in res.notes)
     _emit(ns, out, text)
+
+
+def _fraction(name: str, text: str) -> float:
+    from .errors import ParameterError
+
+    try:
+        return float(text)
+    except ValueError:
+        raise ParameterError(name, f"{text!r} is not a number") from None
 
 
 def _sweepable() -> tuple[str, ...]:
@@ -525,10 +544,39 @@ COMMANDS = {
 }
 
 
+_NEGATIVE = re.compile(r"^-(\d|\.\d|inf|nan)", re.IGNORECASE)
+
+
+def _value_options(parser: argparse.ArgumentParser) -> set[str]:
+    """Option strings (of the parser and its subcommands) that take a value."""
+    out: set[str] = set()
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in action.choices.values():
+                out |= _value_options(sub)
+        elif action.option_strings and action.nargs != 0:
+            out.update(action.option_strings)
+    return out
+
+
+def _join_negative_values(parser: argparse.ArgumentParser, argv: Sequence[str]) -> list[str]:
+    """``--x0 -1mm`` → ``--x0=-1mm``: argparse takes a value that starts with '-' for an option
+    unless it is a plain number, so negative quantities with units would be refused."""
+    takes_value = _value_options(parser)
+    out: list[str] = []
+    for tok in argv:
+        if out and out[-1] in takes_value and _NEGATIVE.match(tok):
+            out[-1] = f"{out[-1]}={tok}"
+        else:
+            out.append(tok)
+    return out
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of ``symimpact``; returns the exit status (2 on bad input)."""
     parser = build_parser()
-    ns = parser.parse_args(argv)
+    argv = sys.argv[1:] if argv is None else list(argv)
+    ns = parser.parse_args(_join_negative_values(parser, argv))
     try:
         COMMANDS[ns.command](ns)
     except SymimpactError as exc:

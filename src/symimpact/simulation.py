@@ -193,9 +193,9 @@ def simulate(
         flight, cubic Hermite between integrator steps during contact).
     rtol : relative tolerance of the contact integration (absolute tolerances scale with the gap
         and the initial speeds).
-    rest : the motion counts as at rest, and the run stops, at the first contact onset that finds
-        less than ``rest`` × the initial mechanical energy in the system (default 1e-12:
-        velocities about 1e-6 of the initial ones).  Below that the approach speeds sink toward
+    rest : the motion counts as at rest, and the run stops, once the mechanical energy of the two
+        masses is below ``rest`` × its initial value, at a contact onset or during free flight
+        (default 1e-12: velocities about 1e-6 of the initial ones).  Below that the approach speeds sink toward
         the integration's resolution, and neither this stepper nor ``solve_ivp`` can place the
         impacts (their counts and times part ways); 0 disables the stop.
 
@@ -220,7 +220,7 @@ def simulate(
         raise ParameterError("samples", "must be an integer ≥ 2")
     if not (isinstance(rtol, (int, float)) and 1e-14 <= rtol <= 1e-3):
         raise ParameterError("rtol", "must be a number in [1e-14, 1e-3]")
-    if not (isinstance(rest, (int, float)) and 0.0 <= rest < 1.0):
+    if not (isinstance(rest, (int, float)) and 0.0 <= rest < 1.0):  # (NaN fails too)
         raise ParameterError("rest", "must be a number in [0, 1)")
     h = 0.5 * system.gap
     if abs(y0 - x0) > h * (1 + 1e-12):
@@ -320,8 +320,9 @@ def simulate(
     if status == _stepper.AT_REST:
         t_rest = float(t_stop)
         notes.append(
-            f"at rest from t = {t_rest:.6g} s: a contact there would start with less than "
-            f"{rest:g} of the initial energy (see rest=); the state is held from then on"
+            f"at rest from t = {t_rest:.6g} s: the energy of the two masses fell below {rest:g} "
+            "of its initial value (see rest=), where impacts are no longer resolvable; the state "
+            "is held from then on"
         )
     e_final = 0.5 * system.M * u[1] ** 2 + 0.5 * system.K * u[0] ** 2 + 0.5 * system.m * u[3] ** 2
     if side != 0:
