@@ -220,3 +220,42 @@ def test_sweep_parallel_equals_serial():
     assert sweep(s, gaps, workers=2, **kw) == sweep(s, gaps, workers=1, **kw)
     rows = sweep(s, [0.02], "m", **kw)
     assert rows[0]["m"] == 0.02
+
+
+def test_interrupted_sweep_leaves_no_output(tmp_path, monkeypatch, capsys):
+    """Ctrl-C in the middle of a sweep: exit 130, and neither --csv, --plot nor --out leaves a
+    file (complete or partial) under its name, nor a temporary file beside it."""
+    import symimpact.maps as maps
+
+    calls = {"n": 0}
+    real = maps.run_point
+
+    def interrupt_on_third(*args, **kwargs):
+        calls["n"] += 1
+        if calls["n"] == 3:
+            raise KeyboardInterrupt
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(maps, "run_point", interrupt_on_third)
+    argv = ["sweep", "--vary", "gap=4 mm:12 mm:2 mm", "--executor", "serial", "--quiet"]
+    outputs = ["--csv", str(tmp_path / "t.csv"), "--plot", str(tmp_path / "t.png")]
+    assert main([*argv, *outputs]) == 130
+    assert "interrupted" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_atomic_write_interrupted_mid_file_leaves_nothing(tmp_path):
+    from symimpact.io import atomic_write
+
+    def half_then_fail(f):
+        f.write("gap,n_impacts\n0.004,")
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        atomic_write(tmp_path / "t.csv", half_then_fail, "csv")
+    assert list(tmp_path.iterdir()) == []
+    (tmp_path / "t.csv").write_text("old\n")
+    with pytest.raises(KeyboardInterrupt):
+        atomic_write(tmp_path / "t.csv", half_then_fail, "csv")
+    assert (tmp_path / "t.csv").read_text() == "old\n"  # the previous file is untouched
+    assert [p.name for p in tmp_path.iterdir()] == ["t.csv"]

@@ -57,7 +57,16 @@ N_IMPACT_COLS = 16
 # 2: at rest from here)
 N_TRACE_COLS = 8
 # status codes
-OK, FULL_IMPACTS, FULL_TRACE, STEP_UNDERFLOW, NO_CONVERGENCE, AT_REST = 0, 1, 2, 3, 4, 5
+OK, FULL_IMPACTS, FULL_TRACE, STEP_UNDERFLOW, NO_CONVERGENCE, AT_REST, TOO_MANY_STEPS = range(7)
+# a contact of a sane system takes tens to hundreds of steps; this many means a time scale the
+# integrator cannot bridge (e.g. a contact 1e-15 of the main period)
+MAX_CONTACT_STEPS = 100_000
+STATUS_TEXT = {
+    STEP_UNDERFLOW: "step size underflow (stiff or singular contact); check the contact law "
+    "parameters",
+    TOO_MANY_STEPS: f"more than {MAX_CONTACT_STEPS:,} steps in one contact: its time scale is "
+    "out of proportion to the motion (check the masses, the gap and the contact stiffness)",
+}
 # what ends a free flight
 ONSET_CONTACT, ONSET_NONE, ONSET_REST = 0, 1, 2
 
@@ -279,8 +288,13 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
             return FULL_TRACE, t, npk, ntr, False, h
         _trace_contact_row(trace, ntr, t, u, k1)
         ntr += 1
+    nsteps = 0
     while True:
         if t_end - t <= 0.0:
+            break
+        nsteps += 1
+        if nsteps > MAX_CONTACT_STEPS:
+            status = TOO_MANY_STEPS
             break
         h = min(h, t_end - t)
         if h < 1e-15 * max(abs(t), 1e-3):
@@ -627,6 +641,8 @@ def one_contact(law, p, v0):
     t_cap = 1e3 * math.pi * math.sqrt(p[P_m] / max(p[P_b] + p[P_k1], 1e-300)) + 1e3
     h0 = 1e-4 * min(p[P_h] / v0, 1.0)
     status, t, _, _, done, _ = _contact(law, p, 1.0, 0.0, u, t_cap, h0, peaks, 0, trace, 0, False)
+    if status != OK:
+        return status, math.inf, u, e_on, e_on
     if not done:
         return NO_CONVERGENCE, math.inf, u, e_on, e_on
     return status, t, u, e_on, _energy(law, p, u, 1.0)

@@ -282,9 +282,9 @@ def _cmd_ritz(ns) -> None:
         K, M = beam_constants(*beam, position=ns.position)
         out.update(K=K, M=M)
         if ns.position is not None:
-            from .units import positive
+            from .units import positive_float
 
-            xi = float(positive("position", ns.position)) / float(positive("L", ns.L))
+            xi = positive_float("position", ns.position) / positive_float("L", ns.L)
             out["stiffness_coefficient"] = float(ritz.stiffness_coefficient(ritz.BETA_L[0], xi))
             out["mass_coefficient"] = float(ritz.mass_coefficient(ritz.BETA_L[0], xi))
     lines = [f"{k} = {v:.10g}" for k, v in out.items()]
@@ -293,10 +293,10 @@ def _cmd_ritz(ns) -> None:
 
 def _cmd_fit(ns) -> None:
     from .generated import contact_fits as cf
-    from .units import positive
+    from .units import positive_float
 
-    k = positive("k-hz", ns.k_hz, "N/m^1.5")
-    d = positive("delta-max", ns.delta_max, "m")
+    k = positive_float("k-hz", ns.k_hz, "N/m^1.5")
+    d = positive_float("delta-max", ns.delta_max, "m")
     sfx = "_continuous" if ns.continuous else ""
     out = {
         "a": float(getattr(cf, f"cubic_fit_a{sfx}")(k, d)),

@@ -25,7 +25,7 @@ from .errors import ConvergenceError, MethodNotApplicable, ParameterError
 from .generated import closed_forms, harmonic_balance, lindstedt
 from .generated import multiple_scales as ms
 from .system import ImpactSystem
-from .units import nonnegative, positive, si
+from .units import nonnegative, nonnegative_float, positive, positive_float, si, si_float
 
 METHODS = ("perturbation", "hertz", "linear", "numerical")
 BA_CHOICES = ("impact", "out_of_phase", "in_phase", "free")
@@ -47,14 +47,14 @@ def amplitude_ratio_roots(
     impact mass's motion, which is the out-of-phase one when K is small against the contact
     stiffness and the in-phase one when the main spring is much stiffer than the contact.
     """
-    M, K, m, b = (float(positive(n, v)) for n, v in (("M", M), ("K", K), ("m", m), ("b", b)))
-    a = float(nonnegative("a", a))
+    M, K, m, b = (positive_float(n, v) for n, v in (("M", M), ("K", K), ("m", m), ("b", b)))
+    a = nonnegative_float("a", a)
     roots = {}
     for name in ("in_phase", "out_of_phase"):
         w2 = float(getattr(harmonic_balance, f"linear_frequency_squared_{name}")(K, M, m, b))
         ratio = float(getattr(harmonic_balance, f"linear_amplitude_ratio_{name}")(K, M, m, b))
         if a > 0 and v0 is not None:
-            ratio = _eq20_ratio(M, K, m, a, b, float(positive("v0", v0)), math.sqrt(w2), ratio)
+            ratio = _eq20_ratio(M, K, m, a, b, positive_float("v0", v0), math.sqrt(w2), ratio)
         roots[name] = ratio
     roots["free"] = -M / m
     roots["impact"] = max(roots["in_phase"], roots["out_of_phase"], key=abs)
@@ -110,7 +110,7 @@ def amplitude_ratio(
                 "ba", f"must be a number or one of {', '.join(BA_CHOICES)}"
             ) from None
     else:
-        value = float(si("ba", ba))
+        value = si_float("ba", ba)
     if 0.0 <= value <= 1.0:
         raise ParameterError(
             "ba", f"B/A = {value:g} in [0, 1] makes (B/A − 1)/(B/A) ≤ 0: Eq. 31 has no real root"
@@ -364,6 +364,8 @@ def numerical_contact(
         vi = float(v[idx])
         p = _stepper.pack(system, rtol, rtol * 1e-3 * 0.5 * system.gap, rtol * 1e-3 * vi, free=free)
         status, t, u, e_on, e_off = _stepper.one_contact(code, p, vi)
+        if status in (_stepper.TOO_MANY_STEPS, _stepper.STEP_UNDERFLOW):
+            raise MethodNotApplicable("numerical", _stepper.STATUS_TEXT[status])
         if status != _stepper.OK or not math.isfinite(t):
             raise MethodNotApplicable("numerical", "the contact did not end (sticking contact)")
         out_d[idx] = t
@@ -392,10 +394,10 @@ def c1_for_restitution(
     """
     from scipy.optimize import brentq
 
-    e = float(si("restitution", e))
+    e = si_float("restitution", e)
     if not 0.0 < e < 1.0:
         raise ParameterError("restitution", f"must lie strictly between 0 and 1, got {e:g}")
-    v0 = float(positive("v0", v0))
+    v0 = positive_float("v0", v0)
     e_elastic = float(restitution(system.with_(c1=0.0), v0, law, free))
     if e >= e_elastic:
         raise ParameterError(
@@ -425,7 +427,7 @@ def contact_motion(
     Om = math.pi / float(T)
     ratio = float(res.ba)
     sfx = "_printed" if printed else ""
-    args = (t, Om, system.m, system.a, system.c1, float(positive("v0", v0)), ratio)
+    args = (t, Om, system.m, system.a, system.c1, positive_float("v0", v0), ratio)
     return {
         "t": t,
         "z": getattr(ms, f"relative_displacement{sfx}")(*args),

@@ -33,7 +33,7 @@ import numpy as np
 
 from .errors import ParameterError
 from .system import ImpactSystem
-from .units import SI_UNITS, si
+from .units import SI_UNITS, si_float
 
 INITIAL = ("x0", "xdot0", "y0", "ydot0", "t_end")
 SYSTEM_PARAMETERS = ("M", "K", "C", "zeta", "m", "gap", "a", "b", "k_hz", "k1", "c1")
@@ -90,7 +90,7 @@ def _si_values(name: str, values: Iterable[Any]) -> np.ndarray:
         arr = parse_range(name, values)
     else:
         arr = np.array(
-            [float(si(name, v, SI_UNITS.get(name))) for v in np.ravel(np.asarray(values, object))]
+            [si_float(name, v, SI_UNITS.get(name)) for v in np.ravel(np.asarray(values, object))]
         )
     if arr.size == 0:
         raise ParameterError(name, "has no values")
@@ -159,7 +159,7 @@ def read_sets(path: str | os.PathLike) -> MapPoints:
             else:
                 q = number
             try:
-                values[i - 2, j] = float(si(name, q, SI_UNITS.get(name)))
+                values[i - 2, j] = si_float(name, q, SI_UNITS.get(name))
             except ParameterError as exc:
                 raise ParameterError(name, f"line {i} of {str(p)!r}: {exc.reason}") from None
     if not np.all(np.isfinite(values)):
@@ -186,7 +186,7 @@ def as_points(grid: Any = None, sets: Any = None) -> MapPoints:
     for i, s in enumerate(sets):
         if set(s) != set(names):
             raise ParameterError("sets", f"set {i} has inputs {sorted(s)}, set 0 {sorted(names)}")
-    values = np.array([[float(si(n, s[n], SI_UNITS.get(n))) for n in names] for s in sets])
+    values = np.array([[si_float(n, s[n], SI_UNITS.get(n)) for n in names] for s in sets])
     if not np.all(np.isfinite(values)):
         raise ParameterError("sets", "every value must be finite")
     return MapPoints(names, values)
@@ -355,7 +355,7 @@ def map_rows(
     if not isinstance(system, ImpactSystem):
         raise ParameterError("system", "must be an ImpactSystem")
     initial = tuple(
-        (n, float(si(n, v, SI_UNITS[n])))
+        (n, si_float(n, v, SI_UNITS[n]))
         for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0), ("t_end", t_end))
     )
     base = _Base(system, initial, contact)

@@ -16,7 +16,7 @@ import numpy as np
 
 from .errors import ParameterError, SymimpactError
 from .system import ImpactSystem
-from .units import positive, si
+from .units import positive_float, si_float
 
 CONTACT_PATHS = ("cubic", "hertz", "linear", "perturbation")
 
@@ -113,6 +113,11 @@ class SimulationResult:
         if with_history and self.history is not None:
             out["history"] = {k: v.tolist() for k, v in self.history.items()}
         return out
+
+
+#: Longest run, in natural periods 2π/ω_n of the main mass (the free-flight search takes about 16
+#: steps per period, so 1e7 periods cost seconds even without an impact).
+MAX_PERIODS = 1e7
 
 
 def effectiveness(n_total: int, n_effective: int) -> float | None:
@@ -213,9 +218,16 @@ def simulate(
         raise ParameterError("contact", f"must be one of {', '.join(CONTACT_PATHS)}")
     law = _stepper.LAWS[contact]
     x0, xdot0, y0, ydot0 = (
-        float(si(n, v)) for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0))
+        si_float(n, v) for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0))
     )
-    t_end = float(positive("t_end", t_end))
+    t_end = positive_float("t_end", t_end)
+    periods = t_end * system.omega_n / (2 * math.pi)
+    if periods > MAX_PERIODS:
+        raise ParameterError(
+            "t_end",
+            f"{t_end:g} s is {periods:.3g} natural periods of the main mass "
+            f"(2π/ω_n = {2 * math.pi / system.omega_n:.3g} s); at most {MAX_PERIODS:g} are simulated",
+        )
     if not (isinstance(samples, int) and samples >= 2):
         raise ParameterError("samples", "must be an integer ≥ 2")
     if not (isinstance(rtol, (int, float)) and 1e-14 <= rtol <= 1e-3):
@@ -281,11 +293,8 @@ def simulate(
             f"max_impacts: more than {max_impacts} impacts before t_end = {t_end:g} s "
             "(chattering?); shorten t_end or raise max_impacts"
         )
-    if status == _stepper.STEP_UNDERFLOW:
-        raise SymimpactError(
-            "contact integration: step size underflow (stiff or singular contact); "
-            "check the contact law parameters"
-        )
+    if status in (_stepper.STEP_UNDERFLOW, _stepper.TOO_MANY_STEPS):
+        raise SymimpactError(f"contact integration: {_stepper.STATUS_TEXT[status]}")
     if status == _stepper.NO_CONVERGENCE:
         raise SymimpactError(
             "contact='perturbation': the fixed point of Eq. 31 did not converge for an impact; "

@@ -18,7 +18,7 @@ import numpy as np
 
 from .errors import ParameterError
 from .system import ImpactSystem
-from .units import si
+from .units import si_float
 
 
 def gap_class(n_impacts: int, n_effective: int) -> str:
@@ -34,7 +34,7 @@ def parse_range(name: str, text: str) -> np.ndarray:
         parts = text.split(":")
         if len(parts) != 3:
             raise ParameterError(name, f"range {text!r} must be start:stop:step")
-        start, stop, step = (float(si(name, p.strip())) for p in parts)
+        start, stop, step = (si_float(name, p.strip()) for p in parts)
         if step <= 0:
             raise ParameterError(name, f"range step must be positive, got {step:g}")
         if stop < start:
@@ -44,7 +44,7 @@ def parse_range(name: str, text: str) -> np.ndarray:
             raise ParameterError(name, f"range has {n} values; at most 1e6")
         # 12 significant digits: "6 mm:35 mm:1 mm" gives 0.009, not 0.009000000000000001
         return np.array([float(f"{start + step * k:.12g}") for k in range(n)])
-    return np.array([float(si(name, p.strip())) for p in text.split(",") if p.strip()])
+    return np.array([si_float(name, p.strip()) for p in text.split(",") if p.strip()])
 
 
 def sweep(
@@ -127,7 +127,7 @@ def gap_range(
         return out
     from .maps import INITIAL, _Base, run_point
 
-    initial = tuple((n, float(si(n, kwargs.get(n, 1.0 if n == "t_end" else 0.0)))) for n in INITIAL)
+    initial = tuple((n, si_float(n, kwargs.get(n, 1.0 if n == "t_end" else 0.0))) for n in INITIAL)
     base = _Base(system, initial, kwargs.get("contact"))
 
     def is_in(gap):

@@ -6,9 +6,11 @@ import math
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
+import numpy as np
+
 from .errors import ParameterError
 from .generated import contact_fits, ritz
-from .units import nonnegative, positive, si
+from .units import nonnegative, nonnegative_float, positive, positive_float, si, si_float
 
 CONTACT_LAWS = ("cubic", "hertz", "linear")
 
@@ -63,20 +65,20 @@ class ImpactSystem:
     def __post_init__(self) -> None:
         set_ = object.__setattr__
         for name in ("M", "K", "m", "gap", "delta_max"):
-            set_(self, name, float(positive(name, getattr(self, name))))
-        set_(self, "c1", float(nonnegative("c1", self.c1)))
+            set_(self, name, positive_float(name, getattr(self, name)))
+        set_(self, "c1", nonnegative_float("c1", self.c1))
         if self.contact not in CONTACT_LAWS:
             raise ParameterError("contact", f"must be one of {', '.join(CONTACT_LAWS)}")
         critical = 2.0 * math.sqrt(self.K * self.M)
         if self.C is not None and self.zeta is not None:
-            C = float(nonnegative("C", self.C))
-            zeta = float(nonnegative("zeta", self.zeta))
+            C = nonnegative_float("C", self.C)
+            zeta = nonnegative_float("zeta", self.zeta)
             if not math.isclose(C, 2 * zeta * math.sqrt(self.K * self.M), rel_tol=1e-9):
                 raise ParameterError("zeta", "give C or zeta, not two different dampings")
         elif self.zeta is not None:
-            C = 2.0 * float(nonnegative("zeta", self.zeta)) * math.sqrt(self.K * self.M)
+            C = 2.0 * nonnegative_float("zeta", self.zeta) * math.sqrt(self.K * self.M)
         else:
-            C = float(nonnegative("C", 0.0 if self.C is None else self.C))
+            C = nonnegative_float("C", 0.0 if self.C is None else self.C)
         if C >= critical:
             raise ParameterError(
                 "C" if self.zeta is None else "zeta",
@@ -88,9 +90,9 @@ class ImpactSystem:
         for name in ("a", "b", "k_hz", "k1"):
             v = getattr(self, name)
             if v is not None:
-                set_(self, name, float(si(name, v)))
+                set_(self, name, si_float(name, v))
         if self.k_hz is not None:
-            set_(self, "k_hz", float(positive("k_hz", self.k_hz)))
+            set_(self, "k_hz", positive_float("k_hz", self.k_hz))
         if self.contact == "cubic" or (self.a is None and self.b is None and self.k_hz):
             if self.a is None and self.b is None and self.k_hz is not None:
                 set_(self, "a", float(contact_fits.cubic_fit_a(self.k_hz, self.delta_max)))
@@ -172,15 +174,24 @@ def beam_constants(
 ) -> tuple[float, float]:
     """(K [N/m], M [kg]) of the first Ritz mode referred to the damper position (Eq. 5–6)."""
     E, I, rho, A, L = (
-        float(positive(n, v)) for n, v in zip("E I rho A L".split(), (E, I, rho, A, L), strict=True)
+        positive_float(n, v) for n, v in zip("E I rho A L".split(), (E, I, rho, A, L), strict=True)
     )
-    r = L if position is None else float(positive("position", position))
+    r = L if position is None else positive_float("position", position)
     if r > L * (1 + 1e-12):
         raise ParameterError("position", f"{r:g} m lies beyond the beam length L = {L:g} m")
     xi = min(r / L, 1.0)
     beta_L = ritz.BETA_L[0]
-    K = float(ritz.stiffness_coefficient(beta_L, xi)) * E * I / L**3
-    M = float(ritz.mass_coefficient(beta_L, xi)) * rho * A * L
+    with np.errstate(all="ignore"):
+        K = float(ritz.stiffness_coefficient(beta_L, xi) * np.float64(E) * I / L / L / L)
+        M = float(ritz.mass_coefficient(beta_L, xi) * np.float64(rho) * A * L)
+    for name, value in (("K", K), ("M", M)):
+        if not (math.isfinite(value) and value > 0):
+            where = "beam parameters" if position is None else "position and beam parameters"
+            raise ParameterError(
+                "position" if position is not None and xi < 1e-6 else "beam",
+                f"the {where} give {name} = {value:g}, not a finite positive number "
+                "(the mode shape vanishes at the clamp, or a value is out of range)",
+            )
     return K, M
 
 

@@ -48,6 +48,14 @@ SI_UNITS: dict[str, str] = {
 }
 
 
+#: SI values may not exceed the upper magnitude, and positive parameters (masses, stiffnesses,
+#: the gap: scales and divisors) may not fall below the lower one.  The range holds every
+#: physical input (an I of 1e-24 m^4 for a micro-beam, a cubic coefficient a of 1e18 N/m^3 for
+#: steel) and keeps the closed forms, whose terms reach the 8th power of a parameter, clear of
+#: overflow and underflow.
+MAGNITUDE = (1e-30, 1e30)
+
+
 @lru_cache(maxsize=1)
 def _registry():
     import pint
@@ -104,14 +112,27 @@ def si(name: str, value: Any, unit: str | None = None) -> Any:
         raise ParameterError(name, f"expected a number, got {value!r}") from None
     if not np.all(np.isfinite(arr)):
         raise ParameterError(name, f"must be finite, got {value!r}")
+    if arr.size and np.abs(arr).max() > MAGNITUDE[1]:
+        _out_of_range(name, np.abs(arr).max(), unit)
     return float(arr) if arr.ndim == 0 else arr
+
+
+def _out_of_range(name: str, extreme: float, unit: str) -> None:
+    raise ParameterError(
+        name,
+        f"{extreme:g} {unit} lies outside the magnitudes the package computes with "
+        f"({MAGNITUDE[0]:g} to {MAGNITUDE[1]:g} in SI units)",
+    )
 
 
 def positive(name: str, value: Any, unit: str | None = None) -> Any:
     """:func:`si`, then require every value > 0."""
     v = si(name, value, unit)
-    if np.any(np.asarray(v) <= 0):
+    arr = np.asarray(v)
+    if np.any(arr <= 0):
         raise ParameterError(name, f"must be positive, got {_show(v)}")
+    if arr.size and arr.min() < MAGNITUDE[0]:  # a scale or a divisor: no vanishing values
+        _out_of_range(name, arr.min(), unit or SI_UNITS.get(name, "dimensionless"))
     return v
 
 
@@ -129,3 +150,26 @@ def _show(v: Any) -> str:
     arr = np.asarray(v)
     bad = arr.ravel()
     return f"array with min {bad.min():g}" if bad.size else "an empty array"
+
+
+def _one(name: str, v: Any) -> float:
+    if np.size(v) == 0:
+        raise ParameterError(name, "got no value")
+    if np.ndim(v) != 0:
+        raise ParameterError(name, f"expected one number, got an array of shape {np.shape(v)}")
+    return float(v)
+
+
+def si_float(name: str, value: Any, unit: str | None = None) -> float:
+    """:func:`si` for a parameter that takes one number (an array is refused)."""
+    return _one(name, si(name, value, unit))
+
+
+def positive_float(name: str, value: Any, unit: str | None = None) -> float:
+    """:func:`positive` for a parameter that takes one number (an array is refused)."""
+    return _one(name, positive(name, value, unit))
+
+
+def nonnegative_float(name: str, value: Any, unit: str | None = None) -> float:
+    """:func:`nonnegative` for a parameter that takes one number (an array is refused)."""
+    return _one(name, nonnegative(name, value, unit))
