@@ -4,7 +4,7 @@
 - With c₁ = 0 and C = 0 every impact conserves energy; for free bodies also momentum
   (restitution 1), and the numerical Hertz contact lasts as long as Eq. 34 says.
 - The compiled stepper and the solve_ivp reference agree on the impact count and times.
-- Results do not depend on the units the input was written in.
+- Results do not depend on the units the input was written in, nor on the executor of a map.
 """
 
 from __future__ import annotations
@@ -106,3 +106,22 @@ def test_results_do_not_depend_on_units(gap_mm, speed_cm):
     ra = simulate(a, 0.0, speed_cm / 100, 0.0, 0.0, 2.0)
     rb = simulate(b, "0 m", f"{speed_cm} cm/s", "0 mm", "0 m/s", "2000 ms")
     assert ra.as_dict() == rb.as_dict()
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    system=systems,
+    gaps=st.lists(st.floats(2e-3, 3e-2), min_size=3, max_size=4, unique=True),
+    c1s=st.lists(st.floats(0.0, 10.0), min_size=3, max_size=3, unique=True),  # ≥ 9 points: a pool
+    chunk_size=st.integers(1, 5),
+)
+def test_map_does_not_depend_on_the_executor(system, gaps, c1s, chunk_size):
+    """The same table, bit for bit, from one process and from a pool of two, in any chunking."""
+    from pandas.testing import assert_frame_equal
+
+    from symimpact.maps import parameter_map
+
+    kw = dict(grid={"gap": gaps, "c1": c1s}, xdot0=0.5, t_end=0.5, progress=False)
+    serial = parameter_map(system, executor="serial", **kw)
+    pooled = parameter_map(system, executor="processes", workers=2, chunk_size=chunk_size, **kw)
+    assert_frame_equal(serial, pooled, check_exact=True)
