@@ -9,6 +9,10 @@ from __future__ import annotations
 
 import importlib
 
+# Load the submodule derive.board before the function board() below is defined: the first import
+# of a submodule sets it as an attribute of the package, which would otherwise shadow board().
+from . import board as _board_module  # noqa: F401
+
 #: The derivation steps in lecture order (module names under ``derive/``).
 STEPS = (
     "ritz",

@@ -13,7 +13,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import STEPS, board
+from . import STEPS, backend_c, backend_octave, board
 from .codegen import (
     render_errata,
     render_fixed_points,
@@ -53,16 +53,30 @@ def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True):
     files["__init__.py"] = render_package_init(boards)
     files["errata.md"] = render_errata(boards)
     files["fixed_points.py"] = render_fixed_points(boards)
+    files.update(backend_c.render(boards))
+    files.update(backend_octave.render(boards))
     return files, boards, ok
+
+
+def _present(folder: Path) -> set[str]:
+    """Generated files under ``folder`` (relative paths; caches and hidden files left out)."""
+    if not folder.exists():
+        return set()
+    return {
+        p.relative_to(folder).as_posix()
+        for p in folder.rglob("*")
+        if p.is_file()
+        and "__pycache__" not in p.parts
+        and not p.name.startswith(".")
+        and not p.name.endswith(".pyc")
+    }
 
 
 def compare(files: dict[str, str], folder: Path = GENERATED) -> list[str]:
     """Unified diffs between ``files`` and the folder (missing and stale files included)."""
     diffs = []
-    present = {p.name for p in folder.iterdir() if p.is_file()} if folder.exists() else set()
+    present = _present(folder)
     for name in sorted(set(files) | present):
-        if name.startswith(".") or name.endswith(".pyc"):
-            continue
         old = (folder / name).read_text() if name in present else ""
         new = files.get(name, "")
         if old != new:
@@ -105,12 +119,13 @@ def main(argv: list[str] | None = None) -> int:
         print("generated/ is up to date")
         return 0 if ok else 1
     GENERATED.mkdir(exist_ok=True)
-    for name in {p.name for p in GENERATED.iterdir() if p.is_file()} - set(files):
-        if name.endswith((".py", ".md")):
+    for name in _present(GENERATED) - set(files):
+        if name.endswith((".py", ".md", ".c", ".h", ".m")):
             (GENERATED / name).unlink()
             print(f"removed stale generated/{name}")
     for name, text in sorted(files.items()):
         path = GENERATED / name
+        path.parent.mkdir(exist_ok=True)
         if not path.exists() or path.read_text() != text:
             path.write_text(text)
             print(f"wrote generated/{name}")

@@ -60,12 +60,20 @@ def numeric_constants(expr: sp.Expr) -> sp.Expr:
 
 
 def kernel_body(
-    kernel: Kernel, printer_class: type = KernelPrinter
+    kernel: Kernel,
+    printer_class: type = KernelPrinter,
+    settings: dict | None = None,
+    prefix: str = "_x",
 ) -> tuple[list[tuple[str, str]], str, int]:
-    """Common-subexpression-eliminated assignments, the returned expression and the op count."""
+    """Common-subexpression-eliminated assignments, the returned expression and the op count.
+
+    ``printer_class(settings)`` prints them (default settings: the Python printers' fully
+    qualified module names); ``prefix`` names the subexpressions (``_x0``, ``_x1``, ...)."""
     expr = numeric_constants(sp.sympify(kernel.expr))
-    replacements, (reduced,) = sp.cse([expr], symbols=sp.numbered_symbols("_x"), order="canonical")
-    printer = printer_class({"fully_qualified_modules": True})
+    replacements, (reduced,) = sp.cse(
+        [expr], symbols=sp.numbered_symbols(prefix), order="canonical"
+    )
+    printer = printer_class({"fully_qualified_modules": True} if settings is None else settings)
     lines = [(str(sym), printer.doprint(val)) for sym, val in replacements]
     ops = sum(int(sp.count_ops(val)) for _, val in replacements) + int(sp.count_ops(reduced))
     return lines, printer.doprint(reduced), ops
@@ -141,8 +149,10 @@ def fixed_point_names(fp: FixedPoint) -> dict[str, sp.Symbol]:
     }
 
 
-def fixed_point_ast(fp: FixedPoint) -> tuple[list, sp.Basic]:
+def fixed_point_ast(fp: FixedPoint, prefix: str = "_c") -> tuple[list, sp.Basic]:
     """The iteration as a target-independent AST: (hoisted assignments, loop block).
+
+    ``prefix`` names the common subexpressions (``_c0``, ...; MATLAB needs a leading letter).
 
     Common subexpressions of the step that do not involve the iterate are computed once, before
     the loop.  The loop is the one :func:`symimpact.contact.perturbation_duration` runs on arrays::
@@ -159,7 +169,7 @@ def fixed_point_ast(fp: FixedPoint) -> tuple[list, sp.Basic]:
     step = numeric_constants(sp.sympify(fp.step)).subs(fp.iterate, v["previous"])
     start = numeric_constants(sp.sympify(fp.start))
     replacements, (step_reduced, start_reduced) = sp.cse(
-        [step, start], symbols=sp.numbered_symbols("_c"), order="canonical"
+        [step, start], symbols=sp.numbered_symbols(prefix), order="canonical"
     )
     hoisted, inner = [], []
     depends = {v["previous"]}

@@ -17,26 +17,10 @@ import pytest
 import sympy as sp
 
 from derive import STEPS
+from tests.points import physical_points
 
 RTOL = 1e-12
 N_POINTS = 200
-
-
-def _sample(kernel, rng):
-    points = []
-    checks = [sp.lambdify([a.symbol for a in kernel.args], c, "mpmath") for c in kernel.constraints]
-    while len(points) < N_POINTS:
-        p = []
-        for a in kernel.args:
-            u = rng.random()
-            p.append(
-                float(np.exp(np.log(a.low) + u * (np.log(a.high) - np.log(a.low))))
-                if a.log
-                else float(a.low + u * (a.high - a.low))
-            )
-        if all(c(*p) for c in checks):
-            points.append(p)
-    return np.array(points)
 
 
 @pytest.mark.parametrize("step", STEPS)
@@ -48,7 +32,7 @@ def test_kernels_match_mpmath(boards, step):
         symbols = [a.symbol for a in kernel.args]
         reference = sp.lambdify(symbols, kernel.expr, "mpmath")
         scale = sp.lambdify(symbols, kernel.magnitude or 0, "mpmath")
-        points = _sample(kernel, rng)
+        points = physical_points(kernel, rng, N_POINTS)
         got = getattr(module, kernel.name)(*points.T)  # vectorised call: one array per argument
         assert got.shape == (N_POINTS,)
         scalar = getattr(module, f"{kernel.name}_scalar")  # the math-module twin, point by point

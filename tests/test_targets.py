@@ -1,0 +1,263 @@
+"""The C99 and Octave targets (issue 8), compiled or run for real and compared with NumPy.
+
+- C: ``generated/c/symimpact.c`` is compiled with the system compiler (``$CC``, else ``cc``) at
+  ``-std=c99 -Wall -Wextra -pedantic -Werror`` as a shared library and loaded with ctypes.
+- Octave: one ``octave-cli`` run evaluates every ``generated/octave/*.m`` file.
+
+Every kernel is evaluated at 200 random physical points (the ranges its derivation declares) and
+compared with the NumPy kernel to 1e-13 relative (for oscillating results 1e-13·(abs(value) +
+amplitude), as in tests/test_kernels_vs_mpmath.py).  At the few points where a formula's
+cancellation makes rounding exceed that, both must lie within 1e-12 of a 50-digit mpmath value.  The Eq. 31 iterations are compared with the
+numba loops: the value where both converged, and the step count to within one.  On a CI machine
+(``CI`` set) a missing compiler or Octave fails the test; elsewhere it skips.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import importlib
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+import mpmath as mp
+import numpy as np
+import pytest
+import sympy as sp
+
+from derive import STEPS
+from derive.backend_c import c_name
+from derive.backend_octave import octave_name
+from tests.points import physical_points
+
+ROOT = Path(__file__).resolve().parent.parent
+RTOL = 1e-13
+N_POINTS = 200
+SEED = 20261123
+
+
+def _tool(name: str) -> str:
+    path = shutil.which(name)
+    if path is None:
+        if os.environ.get("CI"):
+            pytest.fail(f"{name} is not installed (.ci/run installs it)")
+        pytest.skip(f"{name} is not installed")
+    return path
+
+
+def _cases(boards):
+    """(module, kernel, points, NumPy values, error scale) for every kernel, seeded."""
+    rng = np.random.default_rng(SEED)
+    out = []
+    for step in STEPS:
+        module = importlib.import_module(f"symimpact.generated.{step}")
+        for k in boards[step].kernels:
+            points = physical_points(k, rng, N_POINTS)
+            expected = np.asarray(getattr(module, k.name)(*points.T), dtype=float)
+            symbols = [a.symbol for a in k.args]
+            magnitude = np.broadcast_to(
+                np.abs(sp.lambdify(symbols, k.magnitude or 0, "numpy")(*points.T)), expected.shape
+            )
+            out.append((step, k, points, expected, np.abs(expected) + magnitude))
+    return out
+
+
+def _fixed_cases(boards):
+    from symimpact.generated import fixed_points
+
+    rng = np.random.default_rng(SEED + 1)
+    out = []
+    for step in STEPS:
+        for fp in boards[step].fixed_points:
+            points = physical_points(fp, rng, N_POINTS)
+            value, steps = getattr(fixed_points, fp.name)(*points.T, fp.tol, fp.max_iter)
+            out.append((fp, points, value, steps))
+    return out
+
+
+def _assert_close(name, kernel, points, got, expected, scale):
+    """Agreement to RTOL·scale; where a formula's cancellation amplifies rounding beyond that (at
+    most 5 % of the points), both must instead lie within 1e-12·scale of a 50-digit mpmath
+    evaluation: then they differ only by rounding, as tests/test_kernels_vs_mpmath.py bounds it."""
+    both_nan = np.isnan(got) & np.isnan(expected)
+    bad = ~both_nan & ~(np.abs(got - expected) <= RTOL * scale)
+    if bad.any() and bad.sum() <= len(got) // 20:
+        exact = sp.lambdify([a.symbol for a in kernel.args], kernel.expr, "mpmath")
+        with mp.workdps(50):
+            for i in np.flatnonzero(bad):
+                value = mp.re(exact(*(mp.mpf(float(v)) for v in points[i])))
+                bad[i] = not (
+                    abs(mp.mpf(float(got[i])) - value) <= 1e-12 * scale[i]
+                    and abs(mp.mpf(float(expected[i])) - value) <= 1e-12 * scale[i]
+                )
+    assert not bad.any(), (
+        f"{name}: {bad.sum()} of {len(got)} points differ, e.g. at {points[bad][0].tolist()}: "
+        f"{got[bad][0]!r} against NumPy {expected[bad][0]!r}"
+    )
+
+
+def _assert_fixed_point(name, fp, got, got_steps, value, steps):
+    assert np.all(np.abs(got_steps - steps) <= 1), name
+    done = (steps < fp.max_iter) & (got_steps < fp.max_iter) & np.isfinite(value)
+    assert done.sum() >= N_POINTS // 2, (name, done.sum())  # most points converge
+    assert np.all(np.abs(got[done] - value[done]) <= RTOL * np.abs(value[done])), name
+
+
+# --- C99 ----------------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def libsymimpact(tmp_path_factory):
+    cc = _tool(os.environ.get("CC", "cc"))
+    out = tmp_path_factory.mktemp("c") / "libsymimpact.so"
+    flags = ["-std=c99", "-Wall", "-Wextra", "-pedantic", "-Werror", "-O2", "-shared", "-fPIC"]
+    run = subprocess.run(
+        [cc, *flags, str(ROOT / "generated" / "c" / "symimpact.c"), "-o", str(out), "-lm"],
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 0, run.stderr
+    assert run.stderr == "", run.stderr  # no warning at all
+    return ctypes.CDLL(str(out))
+
+
+def _pointer(array: np.ndarray, ctype=ctypes.c_double):
+    return array.ctypes.data_as(ctypes.POINTER(ctype))
+
+
+def test_header_declares_every_definition():
+    header = (ROOT / "generated" / "c" / "symimpact.h").read_text()
+    source = (ROOT / "generated" / "c" / "symimpact.c").read_text()
+    assert "malloc" not in source and "restrict" in header
+    for line in source.splitlines():
+        if line.startswith(("double symimpact_", "void symimpact_")):
+            assert line + ";" in header, line
+
+
+def test_every_c_kernel_matches_numpy(boards, libsymimpact):
+    cases = _cases(boards)
+    assert len(cases) == sum(len(boards[s].kernels) for s in STEPS)
+    for step, k, points, expected, scale in cases:
+        name = c_name(step, k.name)
+        batch = getattr(libsymimpact, f"{name}_batch")
+        columns = [np.ascontiguousarray(c) for c in points.T]
+        got = np.empty(N_POINTS)
+        batch(ctypes.c_size_t(N_POINTS), *(_pointer(c) for c in columns), _pointer(got))
+        _assert_close(name, k, points, got, expected, scale)
+        one = getattr(libsymimpact, name)
+        one.restype = ctypes.c_double
+        for p, g in zip(points[:5], got[:5], strict=True):  # the scalar entry point is the same
+            assert one(*(ctypes.c_double(v) for v in p)) == g or np.isnan(g)
+
+
+def test_every_c_iteration_matches_numba(boards, libsymimpact):
+    for fp, points, value, steps in _fixed_cases(boards):
+        name = c_name("fixed_points", fp.name)
+        columns = [np.ascontiguousarray(c) for c in points.T]
+        got = np.empty(N_POINTS)
+        got_steps = np.empty(N_POINTS, dtype=np.int64)
+        assert ctypes.sizeof(ctypes.c_long) == 8  # the C long of the entry point is 64 bits here
+        getattr(libsymimpact, f"{name}_batch")(
+            ctypes.c_size_t(N_POINTS),
+            *(_pointer(c) for c in columns),
+            ctypes.c_double(fp.tol),
+            ctypes.c_long(fp.max_iter),
+            _pointer(got),
+            _pointer(got_steps, ctypes.c_long),
+        )
+        _assert_fixed_point(name, fp, got, got_steps, value, steps)
+        one = getattr(libsymimpact, name)
+        one.restype = ctypes.c_double
+        taken = ctypes.c_long(-1)
+        args = [ctypes.c_double(v) for v in points[0]]
+        first = one(*args, ctypes.c_double(fp.tol), ctypes.c_long(fp.max_iter), ctypes.byref(taken))
+        assert (first == got[0] or np.isnan(got[0])) and taken.value == got_steps[0]
+        assert one(*args, ctypes.c_double(fp.tol), ctypes.c_long(fp.max_iter), None) == first
+
+
+# --- Octave -------------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def octave_results(boards, tmp_path_factory):
+    """Run every .m file on the sampled points in one Octave session; read back its output."""
+    octave = _tool("octave-cli")
+    work = tmp_path_factory.mktemp("octave")
+    cases = _cases(boards)
+    fixed = _fixed_cases(boards)
+    lines = [f"addpath('{ROOT / 'generated' / 'octave'}');"]
+    for step, k, points, *_ in cases:
+        name = octave_name(step, k.name)
+        np.savetxt(work / f"{name}.in", points, fmt="%.17g", delimiter=",")
+        args = ", ".join(f"P(:, {i + 1})" for i in range(points.shape[1]))
+        lines += [
+            f"P = dlmread('{work / name}.in', ',');",
+            f"r = {name}({args});",
+            f"f = fopen('{work / name}.out', 'w'); fprintf(f, '%.17g\\n', r); fclose(f);",
+        ]
+    for fp, points, *_ in fixed:
+        name = octave_name("fixed_points", fp.name)
+        np.savetxt(work / f"{name}.in", points, fmt="%.17g", delimiter=",")
+        args = ", ".join(f"P(:, {i + 1})" for i in range(points.shape[1]))
+        lines += [
+            f"P = dlmread('{work / name}.in', ',');",
+            f"[r, s] = {name}({args}, {fp.tol!r}, {fp.max_iter});",
+            f"f = fopen('{work / name}.out', 'w'); fprintf(f, '%.17g %d\\n', [r, s]'); fclose(f);",
+        ]
+    (work / "run_all.m").write_text("\n".join(lines) + "\n")
+    run = subprocess.run(
+        [octave, "--no-gui", "--norc", "--quiet", str(work / "run_all.m")],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "warning" not in run.stderr.lower(), run.stderr[-2000:]
+    return work, cases, fixed
+
+
+def _read(path: Path) -> np.ndarray:
+    return np.array([[float(v) for v in line.split()] for line in path.read_text().splitlines()])
+
+
+def test_every_octave_kernel_matches_numpy(octave_results):
+    work, cases, _ = octave_results
+    files = {p.stem for p in (ROOT / "generated" / "octave").glob("*.m")}
+    for step, k, points, expected, scale in cases:
+        name = octave_name(step, k.name)
+        files.discard(name)
+        got = _read(work / f"{name}.out")[:, 0]
+        _assert_close(name, k, points, got, expected, scale)
+    for fp in octave_results[2]:
+        files.discard(octave_name("fixed_points", fp[0].name))
+    assert files == {"ritz_BETA_L"}, files  # every other file was run (a constant is not sampled)
+
+
+def test_every_octave_iteration_matches_numba(octave_results):
+    work, _, fixed = octave_results
+    for fp, _points, value, steps in fixed:
+        name = octave_name("fixed_points", fp.name)
+        out = _read(work / f"{name}.out")
+        _assert_fixed_point(name, fp, out[:, 0], out[:, 1], value, steps)
+
+
+def test_octave_constant_is_the_python_constant():
+    from symimpact.generated import ritz
+
+    octave = _tool("octave-cli")
+    folder = ROOT / "generated" / "octave"
+    run = subprocess.run(
+        [
+            octave,
+            "--no-gui",
+            "--norc",
+            "--quiet",
+            "--eval",
+            f"addpath('{folder}'); fprintf('%.17g\\n', ritz_BETA_L())",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert [float(v) for v in run.stdout.split()] == list(ritz.BETA_L)
