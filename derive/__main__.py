@@ -52,6 +52,12 @@ def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True):
     files["_broadcast.py"] = render_template("broadcast.py.j2")
     files["__init__.py"] = render_package_init(boards)
     files["errata.md"] = render_errata(boards)
+    files["README.md"] = render_template(
+        "README.md.j2",
+        template="derive/templates/README.md.j2",
+        boards=boards,
+        n_kernels=sum(len(b.kernels) for b in boards),
+    )
     files["fixed_points.py"] = render_fixed_points(boards)
     files.update(backend_c.render(boards))
     files.update(backend_octave.render(boards))

@@ -20,6 +20,7 @@ import json
 import math
 import os
 import re
+import shutil
 from collections import Counter
 from pathlib import Path
 
@@ -187,11 +188,15 @@ def _no_nan_json(text: str) -> None:
     json.loads(text, parse_constant=refuse)
 
 
+def _write_sets(tmp: Path) -> None:
+    (tmp / "sets.csv").write_text("gap [mm],c1\n6,0\n9,1\n")
+    (tmp / "bad.csv").write_text("gap,nonsense\n1,2,3\nx\n")
+
+
 @pytest.fixture(scope="module")
 def fuzz_dir(tmp_path_factory) -> Path:
     tmp = tmp_path_factory.mktemp("fuzz")
-    (tmp / "sets.csv").write_text("gap [mm],c1\n6,0\n9,1\n")
-    (tmp / "bad.csv").write_text("gap,nonsense\n1,2,3\nx\n")
+    _write_sets(tmp)
     return tmp
 
 
@@ -202,7 +207,11 @@ def test_cli_fuzz(fuzz_dir):
     @given(argv=_argv(fuzz_dir))
     def case(argv):
         for f in ("f.csv", "f.png", "f.parquet", "f.txt"):  # --out refuses to overwrite
-            (fuzz_dir / f).unlink(missing_ok=True)
+            path = fuzz_dir / f
+            if path.is_dir():  # export --out makes a folder
+                shutil.rmtree(path)
+            path.unlink(missing_ok=True)
+        _write_sets(fuzz_dir)  # (export --out DIR --force may have replaced the folder)
         rc, out, err = _run_cli(argv)
         seen[rc] = seen.get(rc, 0) + 1
         assert "Traceback" not in err, (argv, err)

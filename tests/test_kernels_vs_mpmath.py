@@ -17,7 +17,7 @@ import pytest
 import sympy as sp
 
 from derive import STEPS
-from tests.points import physical_points
+from tests.helpers import physical_points
 
 RTOL = 1e-12
 N_POINTS = 200

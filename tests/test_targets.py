@@ -17,7 +17,6 @@ from __future__ import annotations
 import ctypes
 import importlib
 import os
-import shutil
 import subprocess
 from pathlib import Path
 
@@ -29,21 +28,12 @@ import sympy as sp
 from derive import STEPS
 from derive.backend_c import c_name
 from derive.backend_octave import octave_name
-from tests.points import physical_points
+from tests.helpers import physical_points, require_tool
 
 ROOT = Path(__file__).resolve().parent.parent
 RTOL = 1e-13
 N_POINTS = 200
 SEED = 20261123
-
-
-def _tool(name: str) -> str:
-    path = shutil.which(name)
-    if path is None:
-        if os.environ.get("CI"):
-            pytest.fail(f"{name} is not installed (.ci/run installs it)")
-        pytest.skip(f"{name} is not installed")
-    return path
 
 
 def _cases(boards):
@@ -109,7 +99,7 @@ def _assert_fixed_point(name, fp, got, got_steps, value, steps):
 
 @pytest.fixture(scope="module")
 def libsymimpact(tmp_path_factory):
-    cc = _tool(os.environ.get("CC", "cc"))
+    cc = require_tool(os.environ.get("CC", "cc"))
     out = tmp_path_factory.mktemp("c") / "libsymimpact.so"
     flags = ["-std=c99", "-Wall", "-Wextra", "-pedantic", "-Werror", "-O2", "-shared", "-fPIC"]
     run = subprocess.run(
@@ -182,7 +172,7 @@ def test_every_c_iteration_matches_numba(boards, libsymimpact):
 @pytest.fixture(scope="module")
 def octave_results(boards, tmp_path_factory):
     """Run every .m file on the sampled points in one Octave session; read back its output."""
-    octave = _tool("octave-cli")
+    octave = require_tool("octave-cli")
     work = tmp_path_factory.mktemp("octave")
     cases = _cases(boards)
     fixed = _fixed_cases(boards)
@@ -245,7 +235,7 @@ def test_every_octave_iteration_matches_numba(octave_results):
 def test_octave_constant_is_the_python_constant():
     from symimpact.generated import ritz
 
-    octave = _tool("octave-cli")
+    octave = require_tool("octave-cli")
     folder = ROOT / "generated" / "octave"
     run = subprocess.run(
         [

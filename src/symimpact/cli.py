@@ -173,6 +173,19 @@ def build_parser() -> argparse.ArgumentParser:
     _add_output(p, plot=True)
 
     p = sub.add_parser(
+        "export",
+        help="copy the generated kernels of one target (NumPy, C99, MATLAB/Octave) into a "
+        "folder, with a README on how to compile, call or import them",
+    )
+    p.add_argument(
+        "--target", required=True, choices=("c", "octave", "numpy"), help="which kernels"
+    )
+    p.add_argument(
+        "--out", required=True, metavar="DIR", help="folder to create (new or empty unless --force)"
+    )
+    p.add_argument("--force", action="store_true", help="replace a non-empty folder")
+
+    p = sub.add_parser(
         "sweep",
         aliases=["map"],
         help="simulations over one or more swept inputs (a sweep, or a map: grid or "
@@ -533,8 +546,16 @@ def _cmd_reproduce(ns) -> None:
     )
 
 
+def _cmd_export(ns) -> None:
+    from .export import export_kernels
+
+    paths = export_kernels(ns.target, ns.out, force=ns.force)
+    print(f"wrote {len(paths)} {ns.target} files to {ns.out} (see {ns.out}/README.md)")
+
+
 COMMANDS = {
     "reproduce": _cmd_reproduce,
+    "export": _cmd_export,
     "ritz": _cmd_ritz,
     "fit": _cmd_fit,
     "contact-duration": _cmd_contact_duration,

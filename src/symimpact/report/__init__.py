@@ -4,7 +4,7 @@
 :mod:`.vibration_stage`: Table 2, Fig. 4–7 and Table 3; :mod:`.beyond_stage`: accuracy map and
 Lindstedt order study), each behind a progress bar, and writes ``index.html``, ``report.md``,
 one PNG per figure and one CSV per table into a temporary folder that is renamed to the target
-only when everything succeeded (:func:`.folder.staged_folder`).
+only when everything succeeded (:func:`symimpact.io.staged_folder`).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from pathlib import Path
 from tqdm import tqdm
 
 from .document import Section, html, markdown, write_csv
-from .folder import staged_folder
+from ..io import staged_folder
 
 TITLE = (
     "symimpact — reproduction of “Free vibration analysis of nonlinear resilient impact dampers”"
