@@ -71,7 +71,7 @@ def _browser(exe: str, tmp_path: Path, *args: str) -> subprocess.CompletedProces
 
 
 def test_docs_build_has_every_page_and_offline_mathjax(site):
-    for page in ("index.html", "api.html", "kernels.html", "_generated/tutorial.html",
+    for page in ("index.html", "api.html", "kernels.html", "targets.html", "_generated/tutorial.html",
                  "_generated/errata.html", "_generated/cli.html", "_generated/report.html",
                  PAGE):  # fmt: skip
         assert (site / page).is_file(), page
