@@ -177,24 +177,23 @@ def octave_results(boards, tmp_path_factory):
     cases = _cases(boards)
     fixed = _fixed_cases(boards)
     lines = [f"addpath('{ROOT / 'generated' / 'octave'}');"]
+
+    def call(name, points, outputs, extra, fmt):
+        """Script lines: read the points, call ``name``, write ``outputs`` in ``fmt``."""
+        np.savetxt(work / f"{name}.in", points, fmt="%.17g", delimiter=",")
+        args = ", ".join([*(f"P(:, {i + 1})" for i in range(points.shape[1])), *extra])
+        return [
+            f"P = dlmread('{work / name}.in', ',');",
+            f"[{', '.join(outputs)}] = {name}({args});",
+            f"f = fopen('{work / name}.out', 'w'); "
+            f"fprintf(f, '{fmt}\\n', [{', '.join(outputs)}]'); fclose(f);",
+        ]
+
     for step, k, points, *_ in cases:
-        name = octave_name(step, k.name)
-        np.savetxt(work / f"{name}.in", points, fmt="%.17g", delimiter=",")
-        args = ", ".join(f"P(:, {i + 1})" for i in range(points.shape[1]))
-        lines += [
-            f"P = dlmread('{work / name}.in', ',');",
-            f"r = {name}({args});",
-            f"f = fopen('{work / name}.out', 'w'); fprintf(f, '%.17g\\n', r); fclose(f);",
-        ]
+        lines += call(octave_name(step, k.name), points, ["r"], [], "%.17g")
     for fp, points, *_ in fixed:
-        name = octave_name("fixed_points", fp.name)
-        np.savetxt(work / f"{name}.in", points, fmt="%.17g", delimiter=",")
-        args = ", ".join(f"P(:, {i + 1})" for i in range(points.shape[1]))
-        lines += [
-            f"P = dlmread('{work / name}.in', ',');",
-            f"[r, s] = {name}({args}, {fp.tol!r}, {fp.max_iter});",
-            f"f = fopen('{work / name}.out', 'w'); fprintf(f, '%.17g %d\\n', [r, s]'); fclose(f);",
-        ]
+        extra = [repr(fp.tol), str(fp.max_iter)]
+        lines += call(octave_name("fixed_points", fp.name), points, ["r", "s"], extra, "%.17g %d")
     (work / "run_all.m").write_text("\n".join(lines) + "\n")
     run = subprocess.run(
         [octave, "--no-gui", "--norc", "--quiet", str(work / "run_all.m")],
