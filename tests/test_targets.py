@@ -36,8 +36,10 @@ N_POINTS = 200
 SEED = 20261123
 
 
-def _cases(boards):
-    """(module, kernel, points, NumPy values, error scale) for every kernel, seeded."""
+@pytest.fixture(scope="module")
+def cases(boards):
+    """(module, kernel, points, NumPy values, error scale) for every kernel, seeded; the C and
+    the Octave tests share them."""
     rng = np.random.default_rng(SEED)
     out = []
     for step in STEPS:
@@ -53,7 +55,9 @@ def _cases(boards):
     return out
 
 
-def _fixed_cases(boards):
+@pytest.fixture(scope="module")
+def fixed_cases(boards):
+    """(fixed point, points, numba values, numba step counts) for every Eq. 31 iteration."""
     from symimpact.generated import fixed_points
 
     rng = np.random.default_rng(SEED + 1)
@@ -125,8 +129,7 @@ def test_header_declares_every_definition():
             assert line + ";" in header, line
 
 
-def test_every_c_kernel_matches_numpy(boards, libsymimpact):
-    cases = _cases(boards)
+def test_every_c_kernel_matches_numpy(boards, cases, libsymimpact):
     assert len(cases) == sum(len(boards[s].kernels) for s in STEPS)
     for step, k, points, expected, scale in cases:
         name = c_name(step, k.name)
@@ -141,8 +144,8 @@ def test_every_c_kernel_matches_numpy(boards, libsymimpact):
             assert one(*(ctypes.c_double(v) for v in p)) == g or np.isnan(g)
 
 
-def test_every_c_iteration_matches_numba(boards, libsymimpact):
-    for fp, points, value, steps in _fixed_cases(boards):
+def test_every_c_iteration_matches_numba(fixed_cases, libsymimpact):
+    for fp, points, value, steps in fixed_cases:
         name = c_name("fixed_points", fp.name)
         columns = [np.ascontiguousarray(c) for c in points.T]
         got = np.empty(N_POINTS)
@@ -170,12 +173,11 @@ def test_every_c_iteration_matches_numba(boards, libsymimpact):
 
 
 @pytest.fixture(scope="module")
-def octave_results(boards, tmp_path_factory):
+def octave_results(cases, fixed_cases, tmp_path_factory):
     """Run every .m file on the sampled points in one Octave session; read back its output."""
     octave = require_tool("octave-cli")
     work = tmp_path_factory.mktemp("octave")
-    cases = _cases(boards)
-    fixed = _fixed_cases(boards)
+    fixed = fixed_cases
     lines = [f"addpath('{ROOT / 'generated' / 'octave'}');"]
 
     def call(name, points, outputs, extra, fmt):

@@ -200,9 +200,10 @@ def simulate(
         and the initial speeds).
     rest : the motion counts as at rest, and the run stops, once the mechanical energy of the two
         masses is below ``rest`` × its initial value, at a contact onset or during free flight
-        (default 1e-12: velocities about 1e-6 of the initial ones).  Below that the approach speeds sink toward
-        the integration's resolution, and neither this stepper nor ``solve_ivp`` can place the
-        impacts (their counts and times part ways); 0 disables the stop.
+        (default 1e-12: velocities about 1e-6 of the initial ones).  Below that the approach
+        speeds sink toward the integration's resolution, and neither this stepper nor
+        ``solve_ivp`` can place the impacts (their counts and times part ways); 0 disables the
+        stop.
 
     Returns
     -------
