@@ -90,7 +90,10 @@ def render_module(board: Board) -> str:
     total_ops = 0
     for k in board.kernels:
         lines, result, ops = kernel_body(k)
-        scalar_lines, scalar_result, _ = kernel_body(k, ScalarKernelPrinter)
+        # The twin evaluates the same formula on NumPy float64 scalars: IEEE arithmetic, so a
+        # singular point gives the same inf or NaN as the array kernel (Python floats and the
+        # math module would raise ZeroDivisionError or ValueError there instead).
+        scalar_lines, scalar_result, _ = kernel_body(k, KernelPrinter)
         total_ops += ops
         kernels.append(
             {

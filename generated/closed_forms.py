@@ -6,8 +6,10 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
-for compiled loops (numba) and scalar callers. All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on one NumPy float64 scalar per argument,
+without broadcasting, for compiled loops (numba) and scalar callers. Its arithmetic is IEEE like
+the kernel's: at a singular point (a zero divisor, a root of a negative number) both give the
+same inf or NaN, never an exception. All quantities are in SI units.
 """
 
 import math
@@ -63,8 +65,12 @@ def hertz_contact_duration(m, M, k_hz, zdot0):
 
 def hertz_contact_duration_scalar(m, M, k_hz, zdot0):
     """Hertz contact duration [s]: float twin of `hertz_contact_duration` (Eq. 34)."""
+    m = numpy.float64(m)
+    M = numpy.float64(M)
+    k_hz = numpy.float64(k_hz)
+    zdot0 = numpy.float64(zdot0)
     _x0 = 4*k_hz
-    return 1.6605652005106006*5**(2/5)*math.sqrt(math.pi)*M**(2/5)*m**(2/5)/(zdot0**(1/5)*(M*_x0 + _x0*m)**(2/5))
+    return 1.6605652005106006*5**(2/5)*numpy.sqrt(numpy.pi)*M**(2/5)*m**(2/5)/(zdot0**(1/5)*(M*_x0 + _x0*m)**(2/5))
 
 
 def hertz_contact_duration_printed(m, M, k_hz, zdot0):
@@ -99,6 +105,10 @@ def hertz_contact_duration_printed(m, M, k_hz, zdot0):
 
 def hertz_contact_duration_printed_scalar(m, M, k_hz, zdot0):
     """Hertz contact duration with the printed constant 2.9432 [s]: float twin of `hertz_contact_duration_printed` (Eq. 34)."""
+    m = numpy.float64(m)
+    M = numpy.float64(M)
+    k_hz = numpy.float64(k_hz)
+    zdot0 = numpy.float64(zdot0)
     return (3679/2500)*2**(1/5)*5**(2/5)*M**(2/5)*m**(2/5)/(k_hz**(2/5)*zdot0**(1/5)*(M + m)**(2/5))
 
 
@@ -135,6 +145,10 @@ def hertz_max_penetration(m, M, k_hz, zdot0):
 
 def hertz_max_penetration_scalar(m, M, k_hz, zdot0):
     """Largest Hertz penetration [m]: float twin of `hertz_max_penetration` (Eq. 34)."""
+    m = numpy.float64(m)
+    M = numpy.float64(M)
+    k_hz = numpy.float64(k_hz)
+    zdot0 = numpy.float64(zdot0)
     _x0 = 4*k_hz
     return 5**(2/5)*M**(2/5)*m**(2/5)*zdot0**(4/5)/(M*_x0 + _x0*m)**(2/5)
 
@@ -172,8 +186,12 @@ def linear_contact_duration(m, M, k1, c1):
 
 def linear_contact_duration_scalar(m, M, k1, c1):
     """Linear damped contact duration [s]: float twin of `linear_contact_duration` (Eq. 35)."""
+    m = numpy.float64(m)
+    M = numpy.float64(M)
+    k1 = numpy.float64(k1)
+    c1 = numpy.float64(c1)
     _x0 = M + m
-    return math.pi/math.sqrt(_x0*k1/(M*m) - 1/4*_x0**2*c1**2/(M**2*m**2))
+    return numpy.pi/numpy.sqrt(_x0*k1/(M*m) - 1/4*_x0**2*c1**2/(M**2*m**2))
 
 
 def linear_restitution(m, M, k1, c1):
@@ -210,6 +228,10 @@ def linear_restitution(m, M, k1, c1):
 
 def linear_restitution_scalar(m, M, k1, c1):
     """Coefficient of restitution of the linear damped contact [1]: float twin of `linear_restitution` (Eq. 35)."""
+    m = numpy.float64(m)
+    M = numpy.float64(M)
+    k1 = numpy.float64(k1)
+    c1 = numpy.float64(c1)
     _x0 = M + m
     _x1 = _x0/(M*m)
-    return math.exp(-1/2*math.pi*_x1*c1/math.sqrt(_x1*k1 - 1/4*_x0**2*c1**2/(M**2*m**2)))
+    return numpy.exp(-1/2*numpy.pi*_x1*c1/numpy.sqrt(_x1*k1 - 1/4*_x0**2*c1**2/(M**2*m**2)))

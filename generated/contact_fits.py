@@ -6,8 +6,10 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
-for compiled loops (numba) and scalar callers. All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on one NumPy float64 scalar per argument,
+without broadcasting, for compiled loops (numba) and scalar callers. Its arithmetic is IEEE like
+the kernel's: at a singular point (a zero divisor, a root of a negative number) both give the
+same inf or NaN, never an exception. All quantities are in SI units.
 """
 
 import math
@@ -63,6 +65,8 @@ def cubic_fit_a(k_hz, delta_max):
 
 def cubic_fit_a_scalar(k_hz, delta_max):
     """Cubic coefficient a: least squares on 21 uniform samples of [0, δ_max] [N/m^3]: float twin of `cubic_fit_a` (Eq. 9)."""
+    k_hz = numpy.float64(k_hz)
+    delta_max = numpy.float64(delta_max)
     return 0.43915629344267737*k_hz/delta_max**(3/2)
 
 
@@ -94,6 +98,8 @@ def cubic_fit_a_continuous(k_hz, delta_max):
 
 def cubic_fit_a_continuous_scalar(k_hz, delta_max):
     """Cubic coefficient a: continuous least squares over [0, δ_max] [N/m^3]: float twin of `cubic_fit_a_continuous` (Eq. 9)."""
+    k_hz = numpy.float64(k_hz)
+    delta_max = numpy.float64(delta_max)
     return (5/11)*k_hz/delta_max**(3/2)
 
 
@@ -128,7 +134,9 @@ def cubic_fit_b(k_hz, delta_max):
 
 def cubic_fit_b_scalar(k_hz, delta_max):
     """Linear coefficient b of the cubic law: least squares on 21 uniform samples of [0, δ_max] [N/m]: float twin of `cubic_fit_b` (Eq. 9)."""
-    return 0.5911060702888449*math.sqrt(delta_max)*k_hz
+    k_hz = numpy.float64(k_hz)
+    delta_max = numpy.float64(delta_max)
+    return 0.5911060702888449*numpy.sqrt(delta_max)*k_hz
 
 
 def cubic_fit_b_continuous(k_hz, delta_max):
@@ -159,7 +167,9 @@ def cubic_fit_b_continuous(k_hz, delta_max):
 
 def cubic_fit_b_continuous_scalar(k_hz, delta_max):
     """Linear coefficient b of the cubic law: continuous least squares over [0, δ_max] [N/m]: float twin of `cubic_fit_b_continuous` (Eq. 9)."""
-    return (45/77)*math.sqrt(delta_max)*k_hz
+    k_hz = numpy.float64(k_hz)
+    delta_max = numpy.float64(delta_max)
+    return (45/77)*numpy.sqrt(delta_max)*k_hz
 
 
 def linear_fit_k1(k_hz, delta_max):
@@ -193,7 +203,9 @@ def linear_fit_k1(k_hz, delta_max):
 
 def linear_fit_k1_scalar(k_hz, delta_max):
     """Equivalent linear contact stiffness k₁: least squares on 21 uniform samples of [0, δ_max] [N/m]: float twin of `linear_fit_k1` (Eq. 35)."""
-    return 0.8675549570110103*math.sqrt(delta_max)*k_hz
+    k_hz = numpy.float64(k_hz)
+    delta_max = numpy.float64(delta_max)
+    return 0.8675549570110103*numpy.sqrt(delta_max)*k_hz
 
 
 def linear_fit_k1_continuous(k_hz, delta_max):
@@ -224,4 +236,6 @@ def linear_fit_k1_continuous(k_hz, delta_max):
 
 def linear_fit_k1_continuous_scalar(k_hz, delta_max):
     """Equivalent linear contact stiffness k₁: continuous least squares over [0, δ_max] [N/m]: float twin of `linear_fit_k1_continuous` (Eq. 35)."""
-    return (6/7)*math.sqrt(delta_max)*k_hz
+    k_hz = numpy.float64(k_hz)
+    delta_max = numpy.float64(delta_max)
+    return (6/7)*numpy.sqrt(delta_max)*k_hz

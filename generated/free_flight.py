@@ -6,8 +6,10 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
-for compiled loops (numba) and scalar callers. All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on one NumPy float64 scalar per argument,
+without broadcasting, for compiled loops (numba) and scalar callers. Its arithmetic is IEEE like
+the kernel's: at a singular point (a zero divisor, a root of a negative number) both give the
+same inf or NaN, never an exception. All quantities are in SI units.
 """
 
 import math
@@ -68,11 +70,17 @@ def main_mass_displacement(t, M, K, C, x0, xdot0):
 
 def main_mass_displacement_scalar(t, M, K, C, x0, xdot0):
     """Main-mass displacement x(t) in free flight [m]: float twin of `main_mass_displacement` (Eq. 7)."""
-    _x0 = 1/M
+    t = numpy.float64(t)
+    M = numpy.float64(M)
+    K = numpy.float64(K)
+    C = numpy.float64(C)
+    x0 = numpy.float64(x0)
+    xdot0 = numpy.float64(xdot0)
+    _x0 = M**(-1.0)
     _x1 = (1/2)*C*_x0
-    _x2 = math.sqrt(-1/4*C**2/M**2 + K*_x0)
+    _x2 = numpy.sqrt(-1/4*C**2/M**2 + K*_x0)
     _x3 = _x2*t
-    return (x0*math.cos(_x3) + (_x1*x0 + xdot0)*math.sin(_x3)/_x2)*math.exp(-_x1*t)
+    return (x0*numpy.cos(_x3) + (_x1*x0 + xdot0)*numpy.sin(_x3)/_x2)*numpy.exp(-_x1*t)
 
 
 def main_mass_velocity(t, M, K, C, x0, xdot0):
@@ -119,14 +127,20 @@ def main_mass_velocity(t, M, K, C, x0, xdot0):
 
 def main_mass_velocity_scalar(t, M, K, C, x0, xdot0):
     """Main-mass velocity ẋ(t) in free flight [m/s]: float twin of `main_mass_velocity` (Eq. 7)."""
-    _x0 = 1/M
+    t = numpy.float64(t)
+    M = numpy.float64(M)
+    K = numpy.float64(K)
+    C = numpy.float64(C)
+    x0 = numpy.float64(x0)
+    xdot0 = numpy.float64(xdot0)
+    _x0 = M**(-1.0)
     _x1 = (1/2)*C*_x0
-    _x2 = math.exp(-_x1*t)
+    _x2 = numpy.exp(-_x1*t)
     _x3 = _x1*x0 + xdot0
-    _x4 = math.sqrt(-1/4*C**2/M**2 + K*_x0)
+    _x4 = numpy.sqrt(-1/4*C**2/M**2 + K*_x0)
     _x5 = _x4*t
-    _x6 = math.cos(_x5)
-    _x7 = math.sin(_x5)
+    _x6 = numpy.cos(_x5)
+    _x7 = numpy.sin(_x5)
     return -_x1*_x2*(_x3*_x7/_x4 + _x6*x0) + _x2*(_x3*_x6 - _x4*_x7*x0)
 
 
@@ -158,6 +172,8 @@ def impact_mass_velocity(t, ydot0):
 
 def impact_mass_velocity_scalar(t, ydot0):
     """Impact-mass velocity ẏ(t) in free flight [m/s]: float twin of `impact_mass_velocity` (Eq. 7)."""
+    t = numpy.float64(t)
+    ydot0 = numpy.float64(ydot0)
     return ydot0
 
 
@@ -191,4 +207,7 @@ def impact_mass_displacement(t, y0, ydot0):
 
 def impact_mass_displacement_scalar(t, y0, ydot0):
     """Impact-mass displacement y(t) in free flight [m]: float twin of `impact_mass_displacement` (Eq. 7)."""
+    t = numpy.float64(t)
+    y0 = numpy.float64(y0)
+    ydot0 = numpy.float64(ydot0)
     return t*ydot0 + y0

@@ -6,8 +6,10 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
-for compiled loops (numba) and scalar callers. All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on one NumPy float64 scalar per argument,
+without broadcasting, for compiled loops (numba) and scalar callers. Its arithmetic is IEEE like
+the kernel's: at a singular point (a zero divisor, a root of a negative number) both give the
+same inf or NaN, never an exception. All quantities are in SI units.
 """
 
 import math
@@ -67,6 +69,10 @@ def amplitude_ratio(K, M, m, omega):
 
 def amplitude_ratio_scalar(K, M, m, omega):
     """Amplitude ratio B/A of impact to main mass [1]: float twin of `amplitude_ratio` (Eq. 13)."""
+    K = numpy.float64(K)
+    M = numpy.float64(M)
+    m = numpy.float64(m)
+    omega = numpy.float64(omega)
     _x0 = omega**2
     return (K - M*_x0)/(_x0*m)
 
@@ -107,6 +113,11 @@ def duffing_omega0_squared(K, M, m, b, omega):
 
 def duffing_omega0_squared_scalar(K, M, m, b, omega):
     """Linear coefficient ω₀² of the main-mass Duffing equation [rad^2/s^2]: float twin of `duffing_omega0_squared` (Eq. 15)."""
+    K = numpy.float64(K)
+    M = numpy.float64(M)
+    m = numpy.float64(m)
+    b = numpy.float64(b)
+    omega = numpy.float64(omega)
     _x0 = omega**2
     _x1 = _x0*m
     return (K*_x1 - K*b + M*_x0*b + _x1*b)/(M*_x0*m)
@@ -147,6 +158,11 @@ def duffing_epsilon(K, M, m, a, omega):
 
 def duffing_epsilon_scalar(K, M, m, a, omega):
     """Cubic coefficient ε of the main-mass Duffing equation [1/(m^2 s^2)]: float twin of `duffing_epsilon` (Eq. 15)."""
+    K = numpy.float64(K)
+    M = numpy.float64(M)
+    m = numpy.float64(m)
+    a = numpy.float64(a)
+    omega = numpy.float64(omega)
     _x0 = omega**2
     return a*(-K + M*_x0 + _x0*m)**3/(M*m**3*omega**6)
 
@@ -189,13 +205,17 @@ def linear_frequency_squared_in_phase(K, M, m, b):
 
 def linear_frequency_squared_in_phase_scalar(K, M, m, b):
     """ω² of the linear (a = 0) coupled mode with the masses in phase (B/A > 0) [rad^2/s^2]: float twin of `linear_frequency_squared_in_phase` (Eq. 12–13)."""
+    K = numpy.float64(K)
+    M = numpy.float64(M)
+    m = numpy.float64(m)
+    b = numpy.float64(b)
     _x0 = (1/2)*m
     _x1 = M*b
     _x2 = 2*m
     _x3 = m**2
     _x4 = b**2
     _x5 = K*b
-    return _x5/(K*_x0 + _x0*b + (1/2)*_x1 + (1/2)*math.sqrt(K**2*_x3 - K*_x1*_x2 + M**2*_x4 + M*_x2*_x4 + _x3*_x4 + 2*_x3*_x5))
+    return _x5/(K*_x0 + _x0*b + (1/2)*_x1 + (1/2)*numpy.sqrt(K**2*_x3 - K*_x1*_x2 + M**2*_x4 + M*_x2*_x4 + _x3*_x4 + 2*_x3*_x5))
 
 
 def linear_amplitude_ratio_in_phase(K, M, m, b):
@@ -236,12 +256,16 @@ def linear_amplitude_ratio_in_phase(K, M, m, b):
 
 def linear_amplitude_ratio_in_phase_scalar(K, M, m, b):
     """B/A of the linear (a = 0) coupled mode with the masses in phase (B/A > 0) [1]: float twin of `linear_amplitude_ratio_in_phase` (Eq. 13)."""
+    K = numpy.float64(K)
+    M = numpy.float64(M)
+    m = numpy.float64(m)
+    b = numpy.float64(b)
     _x0 = (1/2)*m
     _x1 = M*b
     _x2 = 2*K
     _x3 = m**2
     _x4 = b**2
-    _x5 = K*_x0 + _x0*b + (1/2)*_x1 + (1/2)*math.sqrt(K**2*_x3 + M**2*_x4 + 2*M*_x4*m - _x1*_x2*m + _x2*_x3*b + _x3*_x4)
+    _x5 = K*_x0 + _x0*b + (1/2)*_x1 + (1/2)*numpy.sqrt(K**2*_x3 + M**2*_x4 + 2*M*_x4*m - _x1*_x2*m + _x2*_x3*b + _x3*_x4)
     return _x5*(-K*_x1/_x5 + K)/(K*b*m)
 
 
@@ -281,11 +305,15 @@ def linear_frequency_squared_out_of_phase(K, M, m, b):
 
 def linear_frequency_squared_out_of_phase_scalar(K, M, m, b):
     """ω² of the linear (a = 0) coupled mode with the masses in opposition (B/A < 0), the impact mode [rad^2/s^2]: float twin of `linear_frequency_squared_out_of_phase` (Eq. 12–13)."""
+    K = numpy.float64(K)
+    M = numpy.float64(M)
+    m = numpy.float64(m)
+    b = numpy.float64(b)
     _x0 = K*m
     _x1 = M*b
     _x2 = m**2
     _x3 = b**2
-    return (1/2)*(_x0 + _x1 + b*m + math.sqrt(K**2*_x2 + 2*K*_x2*b + M**2*_x3 + 2*M*_x3*m - 2*_x0*_x1 + _x2*_x3))/(M*m)
+    return (1/2)*(_x0 + _x1 + b*m + numpy.sqrt(K**2*_x2 + 2*K*_x2*b + M**2*_x3 + 2*M*_x3*m - 2*_x0*_x1 + _x2*_x3))/(M*m)
 
 
 def linear_amplitude_ratio_out_of_phase(K, M, m, b):
@@ -324,8 +352,12 @@ def linear_amplitude_ratio_out_of_phase(K, M, m, b):
 
 def linear_amplitude_ratio_out_of_phase_scalar(K, M, m, b):
     """B/A of the linear (a = 0) coupled mode with the masses in opposition (B/A < 0), the impact mode [1]: float twin of `linear_amplitude_ratio_out_of_phase` (Eq. 13)."""
+    K = numpy.float64(K)
+    M = numpy.float64(M)
+    m = numpy.float64(m)
+    b = numpy.float64(b)
     _x0 = K*m
     _x1 = M*b
     _x2 = m**2
     _x3 = b**2
-    return b/(b - 1/2*(_x0 + _x1 + b*m + math.sqrt(K**2*_x2 + 2*K*_x2*b + M**2*_x3 + 2*M*_x3*m - 2*_x0*_x1 + _x2*_x3))/M)
+    return b/(b - 1/2*(_x0 + _x1 + b*m + numpy.sqrt(K**2*_x2 + 2*K*_x2*b + M**2*_x3 + 2*M*_x3*m - 2*_x0*_x1 + _x2*_x3))/M)

@@ -6,8 +6,10 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
-for compiled loops (numba) and scalar callers. All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on one NumPy float64 scalar per argument,
+without broadcasting, for compiled loops (numba) and scalar callers. Its arithmetic is IEEE like
+the kernel's: at a singular point (a zero divisor, a root of a negative number) both give the
+same inf or NaN, never an exception. All quantities are in SI units.
 """
 
 import math
@@ -66,6 +68,9 @@ def duffing_frequency_order1(omega0, epsilon, alpha):
 
 def duffing_frequency_order1_scalar(omega0, epsilon, alpha):
     """Lindstedt–Poincaré angular frequency to order ε^1 [rad/s]: float twin of `duffing_frequency_order1` (Eq. 19)."""
+    omega0 = numpy.float64(omega0)
+    epsilon = numpy.float64(epsilon)
+    alpha = numpy.float64(alpha)
     return (3/8)*alpha**2*epsilon/omega0 + omega0
 
 
@@ -104,10 +109,14 @@ def duffing_response_order1(t, omega0, epsilon, alpha):
 
 def duffing_response_order1_scalar(t, omega0, epsilon, alpha):
     """Lindstedt–Poincaré displacement x(t) to order ε^1, x(0) = α [m]: float twin of `duffing_response_order1` (Eq. 17–18)."""
+    t = numpy.float64(t)
+    omega0 = numpy.float64(omega0)
+    epsilon = numpy.float64(epsilon)
+    alpha = numpy.float64(alpha)
     _x0 = alpha**2*epsilon/omega0
-    _x1 = math.cos(t*((3/8)*_x0 + omega0))
+    _x1 = numpy.cos(t*((3/8)*_x0 + omega0))
     _x2 = (1/32)*alpha**3*epsilon/omega0**2
-    return -_x1*_x2 + _x1*alpha + _x2*math.cos(t*((9/8)*_x0 + 3*omega0))
+    return -_x1*_x2 + _x1*alpha + _x2*numpy.cos(t*((9/8)*_x0 + 3*omega0))
 
 
 def duffing_frequency_order2(omega0, epsilon, alpha):
@@ -140,6 +149,9 @@ def duffing_frequency_order2(omega0, epsilon, alpha):
 
 def duffing_frequency_order2_scalar(omega0, epsilon, alpha):
     """Lindstedt–Poincaré angular frequency to order ε^2 [rad/s]: float twin of `duffing_frequency_order2` (Eq. 19 (higher order))."""
+    omega0 = numpy.float64(omega0)
+    epsilon = numpy.float64(epsilon)
+    alpha = numpy.float64(alpha)
     return -21/256*alpha**4*epsilon**2/omega0**3 + (3/8)*alpha**2*epsilon/omega0 + omega0
 
 
@@ -182,14 +194,18 @@ def duffing_response_order2(t, omega0, epsilon, alpha):
 
 def duffing_response_order2_scalar(t, omega0, epsilon, alpha):
     """Lindstedt–Poincaré displacement x(t) to order ε^2, x(0) = α [m]: float twin of `duffing_response_order2` (Eq. 17–18 (higher order))."""
+    t = numpy.float64(t)
+    omega0 = numpy.float64(omega0)
+    epsilon = numpy.float64(epsilon)
+    alpha = numpy.float64(alpha)
     _x0 = alpha**2*epsilon/omega0
     _x1 = epsilon**2
     _x2 = _x1*alpha**4/omega0**3
-    _x3 = math.cos(t*((3/8)*_x0 - 21/256*_x2 + omega0))
+    _x3 = numpy.cos(t*((3/8)*_x0 - 21/256*_x2 + omega0))
     _x4 = (1/32)*alpha**3*epsilon/omega0**2
-    _x5 = math.cos(t*((9/8)*_x0 - 63/256*_x2 + 3*omega0))
+    _x5 = numpy.cos(t*((9/8)*_x0 - 63/256*_x2 + 3*omega0))
     _x6 = _x1*alpha**5/omega0**4
-    return -_x3*_x4 + (23/1024)*_x3*_x6 + _x3*alpha + _x4*_x5 - 3/128*_x5*_x6 + (1/1024)*_x6*math.cos(t*((15/8)*_x0 - 105/256*_x2 + 5*omega0))
+    return -_x3*_x4 + (23/1024)*_x3*_x6 + _x3*alpha + _x4*_x5 - 3/128*_x5*_x6 + (1/1024)*_x6*numpy.cos(t*((15/8)*_x0 - 105/256*_x2 + 5*omega0))
 
 
 def duffing_frequency_order3(omega0, epsilon, alpha):
@@ -222,6 +238,9 @@ def duffing_frequency_order3(omega0, epsilon, alpha):
 
 def duffing_frequency_order3_scalar(omega0, epsilon, alpha):
     """Lindstedt–Poincaré angular frequency to order ε^3 [rad/s]: float twin of `duffing_frequency_order3` (Eq. 19 (higher order))."""
+    omega0 = numpy.float64(omega0)
+    epsilon = numpy.float64(epsilon)
+    alpha = numpy.float64(alpha)
     return (81/2048)*alpha**6*epsilon**3/omega0**5 - 21/256*alpha**4*epsilon**2/omega0**3 + (3/8)*alpha**2*epsilon/omega0 + omega0
 
 
@@ -268,18 +287,22 @@ def duffing_response_order3(t, omega0, epsilon, alpha):
 
 def duffing_response_order3_scalar(t, omega0, epsilon, alpha):
     """Lindstedt–Poincaré displacement x(t) to order ε^3, x(0) = α [m]: float twin of `duffing_response_order3` (Eq. 17–18 (higher order))."""
+    t = numpy.float64(t)
+    omega0 = numpy.float64(omega0)
+    epsilon = numpy.float64(epsilon)
+    alpha = numpy.float64(alpha)
     _x0 = alpha**2*epsilon/omega0
     _x1 = epsilon**2
     _x2 = _x1*alpha**4/omega0**3
     _x3 = epsilon**3
     _x4 = _x3*alpha**6/omega0**5
-    _x5 = math.cos(t*((3/8)*_x0 - 21/256*_x2 + (81/2048)*_x4 + omega0))
+    _x5 = numpy.cos(t*((3/8)*_x0 - 21/256*_x2 + (81/2048)*_x4 + omega0))
     _x6 = (1/32)*alpha**3*epsilon/omega0**2
-    _x7 = math.cos(t*((9/8)*_x0 - 63/256*_x2 + (243/2048)*_x4 + 3*omega0))
+    _x7 = numpy.cos(t*((9/8)*_x0 - 63/256*_x2 + (243/2048)*_x4 + 3*omega0))
     _x8 = _x1*alpha**5/omega0**4
     _x9 = _x3*alpha**7/omega0**6
-    _x10 = math.cos(t*((15/8)*_x0 - 105/256*_x2 + (405/2048)*_x4 + 5*omega0))
-    return (1/1024)*_x10*_x8 - 3/2048*_x10*_x9 - _x5*_x6 + (23/1024)*_x5*_x8 - 547/32768*_x5*_x9 + _x5*alpha + _x6*_x7 - 3/128*_x7*_x8 + (297/16384)*_x7*_x9 + (1/32768)*_x9*math.cos(t*((21/8)*_x0 - 147/256*_x2 + (567/2048)*_x4 + 7*omega0))
+    _x10 = numpy.cos(t*((15/8)*_x0 - 105/256*_x2 + (405/2048)*_x4 + 5*omega0))
+    return (1/1024)*_x10*_x8 - 3/2048*_x10*_x9 - _x5*_x6 + (23/1024)*_x5*_x8 - 547/32768*_x5*_x9 + _x5*alpha + _x6*_x7 - 3/128*_x7*_x8 + (297/16384)*_x7*_x9 + (1/32768)*_x9*numpy.cos(t*((21/8)*_x0 - 147/256*_x2 + (567/2048)*_x4 + 7*omega0))
 
 
 def duffing_amplitude(x0, xdot0, omega0, epsilon):
@@ -320,11 +343,15 @@ def duffing_amplitude(x0, xdot0, omega0, epsilon):
 
 def duffing_amplitude_scalar(x0, xdot0, omega0, epsilon):
     """Exact turning-point amplitude α from the energy [m]: float twin of `duffing_amplitude` (Eq. 17)."""
+    x0 = numpy.float64(x0)
+    xdot0 = numpy.float64(xdot0)
+    omega0 = numpy.float64(omega0)
+    epsilon = numpy.float64(epsilon)
     _x0 = xdot0**2
     _x1 = epsilon*x0**4
     _x2 = omega0**2
     _x3 = _x2*x0**2
-    return math.sqrt(2*_x0 + _x1 + 2*_x3)/math.sqrt(_x2 + math.sqrt(4*epsilon*((1/2)*_x0 + (1/4)*_x1 + (1/2)*_x3) + omega0**4))
+    return numpy.sqrt(2*_x0 + _x1 + 2*_x3)/numpy.sqrt(_x2 + numpy.sqrt(4*epsilon*((1/2)*_x0 + (1/4)*_x1 + (1/2)*_x3) + omega0**4))
 
 
 def frequency_eq20(K, M, a, b, omega0, alpha):
@@ -363,4 +390,10 @@ def frequency_eq20(K, M, a, b, omega0, alpha):
 
 def frequency_eq20_scalar(K, M, a, b, omega0, alpha):
     """First-order frequency ω in the paper's variables [rad/s]: float twin of `frequency_eq20` (Eq. 20)."""
+    K = numpy.float64(K)
+    M = numpy.float64(M)
+    a = numpy.float64(a)
+    b = numpy.float64(b)
+    omega0 = numpy.float64(omega0)
+    alpha = numpy.float64(alpha)
     return omega0 + (3/8)*a*alpha**2*(-K + M*omega0**2)**3/(M*b**3*omega0)

@@ -6,8 +6,10 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
-for compiled loops (numba) and scalar callers. All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on one NumPy float64 scalar per argument,
+without broadcasting, for compiled loops (numba) and scalar callers. Its arithmetic is IEEE like
+the kernel's: at a singular point (a zero divisor, a root of a negative number) both give the
+same inf or NaN, never an exception. All quantities are in SI units.
 """
 
 import math
@@ -79,8 +81,15 @@ def contact_duration_map(T, m, a, b, c1, zdot0, ba):
 
 def contact_duration_map_scalar(T, m, a, b, c1, zdot0, ba):
     """Next contact-duration iterate T⁽ⁱ⁾ [s]: float twin of `contact_duration_map` (Eq. 31)."""
+    T = numpy.float64(T)
+    m = numpy.float64(m)
+    a = numpy.float64(a)
+    b = numpy.float64(b)
+    c1 = numpy.float64(c1)
+    zdot0 = numpy.float64(zdot0)
+    ba = numpy.float64(ba)
     _x0 = (ba - 1)/(ba*m)
-    return math.pi/math.sqrt((3/4)*T**2*_x0*a*zdot0**2*math.exp(-T*_x0*c1)/math.pi**2 + _x0*b)
+    return numpy.pi/numpy.sqrt((3/4)*T**2*_x0*a*zdot0**2*numpy.exp(-T*_x0*c1)/numpy.pi**2 + _x0*b)
 
 
 def contact_duration_start(m, b, ba):
@@ -113,7 +122,10 @@ def contact_duration_start(m, b, ba):
 
 def contact_duration_start_scalar(m, b, ba):
     """Starting contact duration T⁽⁰⁾ [s]: float twin of `contact_duration_start` (Eq. 31)."""
-    return math.pi*math.sqrt(m)/(math.sqrt(b)*math.sqrt((ba - 1)/ba))
+    m = numpy.float64(m)
+    b = numpy.float64(b)
+    ba = numpy.float64(ba)
+    return numpy.pi*numpy.sqrt(m)/(numpy.sqrt(b)*numpy.sqrt((ba - 1)/ba))
 
 
 def relative_displacement(t, Omega, m, a, c1, zdot0, ba):
@@ -159,12 +171,19 @@ def relative_displacement(t, Omega, m, a, c1, zdot0, ba):
 
 def relative_displacement_scalar(t, Omega, m, a, c1, zdot0, ba):
     """Relative displacement z = y − x during contact [m]: float twin of `relative_displacement` (Eq. 32)."""
+    t = numpy.float64(t)
+    Omega = numpy.float64(Omega)
+    m = numpy.float64(m)
+    a = numpy.float64(a)
+    c1 = numpy.float64(c1)
+    zdot0 = numpy.float64(zdot0)
+    ba = numpy.float64(ba)
     _x0 = Omega*t
-    _x1 = math.sin(_x0)
+    _x1 = numpy.sin(_x0)
     _x2 = (ba - 1)/(ba*m)
     _x3 = _x2*c1*t
-    _x4 = _x2*a*zdot0**3*math.exp(-3/2*_x3)/Omega**5
-    return (3/32)*_x1*_x4 - 1/32*_x4*math.sin(3*_x0) + _x1*zdot0*math.exp(-1/2*_x3)/Omega
+    _x4 = _x2*a*zdot0**3*numpy.exp(-3/2*_x3)/Omega**5
+    return (3/32)*_x1*_x4 - 1/32*_x4*numpy.sin(3*_x0) + _x1*zdot0*numpy.exp(-1/2*_x3)/Omega
 
 
 def relative_velocity(t, Omega, m, a, c1, zdot0, ba):
@@ -216,18 +235,25 @@ def relative_velocity(t, Omega, m, a, c1, zdot0, ba):
 
 def relative_velocity_scalar(t, Omega, m, a, c1, zdot0, ba):
     """Relative velocity ż = ẏ − ẋ during contact (time derivative of Eq. 32) [m/s]: float twin of `relative_velocity` (Eq. 32)."""
+    t = numpy.float64(t)
+    Omega = numpy.float64(Omega)
+    m = numpy.float64(m)
+    a = numpy.float64(a)
+    c1 = numpy.float64(c1)
+    zdot0 = numpy.float64(zdot0)
+    ba = numpy.float64(ba)
     _x0 = Omega*t
-    _x1 = math.cos(_x0)
+    _x1 = numpy.cos(_x0)
     _x2 = ba - 1
     _x3 = _x2/(ba*m)
     _x4 = _x3*c1*t
-    _x5 = zdot0*math.exp(-1/2*_x4)
-    _x6 = c1*math.sin(_x0)
-    _x7 = a*zdot0**3*math.exp(-3/2*_x4)
+    _x5 = zdot0*numpy.exp(-1/2*_x4)
+    _x6 = c1*numpy.sin(_x0)
+    _x7 = a*zdot0**3*numpy.exp(-3/2*_x4)
     _x8 = (3/32)*_x3*_x7/Omega**4
     _x9 = 3*_x0
     _x10 = _x2**2*_x7/(Omega**5*ba**2*m**2)
-    return _x1*_x5 + _x1*_x8 - 9/64*_x10*_x6 + (3/64)*_x10*c1*math.sin(_x9) - _x8*math.cos(_x9) - 1/2*_x3*_x5*_x6/Omega
+    return _x1*_x5 + _x1*_x8 - 9/64*_x10*_x6 + (3/64)*_x10*c1*numpy.sin(_x9) - _x8*numpy.cos(_x9) - 1/2*_x3*_x5*_x6/Omega
 
 
 def main_mass_displacement_contact(t, Omega, m, a, c1, zdot0, ba):
@@ -274,13 +300,20 @@ def main_mass_displacement_contact(t, Omega, m, a, c1, zdot0, ba):
 
 def main_mass_displacement_contact_scalar(t, Omega, m, a, c1, zdot0, ba):
     """Main-mass displacement x = z/(B/A − 1) during contact [m]: float twin of `main_mass_displacement_contact` (Eq. 33)."""
+    t = numpy.float64(t)
+    Omega = numpy.float64(Omega)
+    m = numpy.float64(m)
+    a = numpy.float64(a)
+    c1 = numpy.float64(c1)
+    zdot0 = numpy.float64(zdot0)
+    ba = numpy.float64(ba)
     _x0 = ba - 1
     _x1 = Omega*t
-    _x2 = math.sin(_x1)
+    _x2 = numpy.sin(_x1)
     _x3 = _x0/(ba*m)
     _x4 = _x3*c1*t
-    _x5 = _x3*a*zdot0**3*math.exp(-3/2*_x4)/Omega**5
-    return ((3/32)*_x2*_x5 - 1/32*_x5*math.sin(3*_x1) + _x2*zdot0*math.exp(-1/2*_x4)/Omega)/_x0
+    _x5 = _x3*a*zdot0**3*numpy.exp(-3/2*_x4)/Omega**5
+    return ((3/32)*_x2*_x5 - 1/32*_x5*numpy.sin(3*_x1) + _x2*zdot0*numpy.exp(-1/2*_x4)/Omega)/_x0
 
 
 def contact_duration_map_printed(T, m, a, b, c1, zdot0, ba):
@@ -322,8 +355,15 @@ def contact_duration_map_printed(T, m, a, b, c1, zdot0, ba):
 
 def contact_duration_map_printed_scalar(T, m, a, b, c1, zdot0, ba):
     """Next contact-duration iterate T⁽ⁱ⁾ [s]: float twin of `contact_duration_map_printed` (Eq. 31)."""
+    T = numpy.float64(T)
+    m = numpy.float64(m)
+    a = numpy.float64(a)
+    b = numpy.float64(b)
+    c1 = numpy.float64(c1)
+    zdot0 = numpy.float64(zdot0)
+    ba = numpy.float64(ba)
     _x0 = ba/(m*(ba - 1))
-    return math.pi/math.sqrt((3/4)*T**2*_x0*a*zdot0**2*math.exp(-T*_x0*c1)/math.pi**2 + _x0*b)
+    return numpy.pi/numpy.sqrt((3/4)*T**2*_x0*a*zdot0**2*numpy.exp(-T*_x0*c1)/numpy.pi**2 + _x0*b)
 
 
 def contact_duration_start_printed(m, b, ba):
@@ -356,7 +396,10 @@ def contact_duration_start_printed(m, b, ba):
 
 def contact_duration_start_printed_scalar(m, b, ba):
     """Starting contact duration T⁽⁰⁾ [s]: float twin of `contact_duration_start_printed` (Eq. 31)."""
-    return 2*math.pi*math.sqrt(m)/(math.sqrt(b)*math.sqrt(ba/(ba - 1)))
+    m = numpy.float64(m)
+    b = numpy.float64(b)
+    ba = numpy.float64(ba)
+    return 2*numpy.pi*numpy.sqrt(m)/(numpy.sqrt(b)*numpy.sqrt(ba/(ba - 1)))
 
 
 def relative_displacement_printed(t, Omega, m, a, c1, zdot0, ba):
@@ -402,12 +445,19 @@ def relative_displacement_printed(t, Omega, m, a, c1, zdot0, ba):
 
 def relative_displacement_printed_scalar(t, Omega, m, a, c1, zdot0, ba):
     """Relative displacement z = y − x during contact [m]: float twin of `relative_displacement_printed` (Eq. 32)."""
+    t = numpy.float64(t)
+    Omega = numpy.float64(Omega)
+    m = numpy.float64(m)
+    a = numpy.float64(a)
+    c1 = numpy.float64(c1)
+    zdot0 = numpy.float64(zdot0)
+    ba = numpy.float64(ba)
     _x0 = Omega*t
-    _x1 = math.sin(_x0)
+    _x1 = numpy.sin(_x0)
     _x2 = ba/(m*(ba - 1))
     _x3 = _x2*c1*t
-    _x4 = _x2*a*zdot0**3*math.exp(-3/2*_x3)/Omega**5
-    return (3/32)*_x1*_x4 - 1/32*_x4*math.sin(3*_x0) + _x1*zdot0*math.exp(-1/2*_x3)/Omega
+    _x4 = _x2*a*zdot0**3*numpy.exp(-3/2*_x3)/Omega**5
+    return (3/32)*_x1*_x4 - 1/32*_x4*numpy.sin(3*_x0) + _x1*zdot0*numpy.exp(-1/2*_x3)/Omega
 
 
 def relative_velocity_printed(t, Omega, m, a, c1, zdot0, ba):
@@ -459,18 +509,25 @@ def relative_velocity_printed(t, Omega, m, a, c1, zdot0, ba):
 
 def relative_velocity_printed_scalar(t, Omega, m, a, c1, zdot0, ba):
     """Relative velocity ż = ẏ − ẋ during contact (time derivative of Eq. 32) [m/s]: float twin of `relative_velocity_printed` (Eq. 32)."""
+    t = numpy.float64(t)
+    Omega = numpy.float64(Omega)
+    m = numpy.float64(m)
+    a = numpy.float64(a)
+    c1 = numpy.float64(c1)
+    zdot0 = numpy.float64(zdot0)
+    ba = numpy.float64(ba)
     _x0 = Omega*t
-    _x1 = math.cos(_x0)
+    _x1 = numpy.cos(_x0)
     _x2 = ba - 1
     _x3 = ba/(_x2*m)
     _x4 = _x3*c1*t
-    _x5 = zdot0*math.exp(-1/2*_x4)
-    _x6 = c1*math.sin(_x0)
-    _x7 = a*zdot0**3*math.exp(-3/2*_x4)
+    _x5 = zdot0*numpy.exp(-1/2*_x4)
+    _x6 = c1*numpy.sin(_x0)
+    _x7 = a*zdot0**3*numpy.exp(-3/2*_x4)
     _x8 = (3/32)*_x3*_x7/Omega**4
     _x9 = 3*_x0
     _x10 = _x7*ba**2/(Omega**5*_x2**2*m**2)
-    return _x1*_x5 + _x1*_x8 - 9/64*_x10*_x6 + (3/64)*_x10*c1*math.sin(_x9) - _x8*math.cos(_x9) - 1/2*_x3*_x5*_x6/Omega
+    return _x1*_x5 + _x1*_x8 - 9/64*_x10*_x6 + (3/64)*_x10*c1*numpy.sin(_x9) - _x8*numpy.cos(_x9) - 1/2*_x3*_x5*_x6/Omega
 
 
 def main_mass_displacement_contact_printed(t, Omega, m, a, c1, zdot0, ba):
@@ -517,10 +574,17 @@ def main_mass_displacement_contact_printed(t, Omega, m, a, c1, zdot0, ba):
 
 def main_mass_displacement_contact_printed_scalar(t, Omega, m, a, c1, zdot0, ba):
     """Main-mass displacement x = z/(B/A − 1) during contact [m]: float twin of `main_mass_displacement_contact_printed` (Eq. 33)."""
-    _x0 = 1/(ba - 1)
+    t = numpy.float64(t)
+    Omega = numpy.float64(Omega)
+    m = numpy.float64(m)
+    a = numpy.float64(a)
+    c1 = numpy.float64(c1)
+    zdot0 = numpy.float64(zdot0)
+    ba = numpy.float64(ba)
+    _x0 = (ba - 1)**(-1.0)
     _x1 = Omega*t
-    _x2 = math.sin(_x1)
+    _x2 = numpy.sin(_x1)
     _x3 = _x0*ba/m
     _x4 = _x3*c1*t
-    _x5 = _x3*a*zdot0**3*math.exp(-3/2*_x4)/Omega**5
-    return _x0*((3/32)*_x2*_x5 - 1/32*_x5*math.sin(3*_x1) + _x2*zdot0*math.exp(-1/2*_x4)/Omega)
+    _x5 = _x3*a*zdot0**3*numpy.exp(-3/2*_x4)/Omega**5
+    return _x0*((3/32)*_x2*_x5 - 1/32*_x5*numpy.sin(3*_x1) + _x2*zdot0*numpy.exp(-1/2*_x4)/Omega)

@@ -6,8 +6,10 @@
 
 Every function broadcasts its arguments against each other and returns an array of the broadcast
 shape (a NumPy scalar for scalar arguments), also when the result does not depend on them.
-Each ``<name>_scalar`` twin computes the same formula on Python floats with the ``math`` module,
-for compiled loops (numba) and scalar callers. All quantities are in SI units.
+Each ``<name>_scalar`` twin computes the same formula on one NumPy float64 scalar per argument,
+without broadcasting, for compiled loops (numba) and scalar callers. Its arithmetic is IEEE like
+the kernel's: at a singular point (a zero divisor, a root of a negative number) both give the
+same inf or NaN, never an exception. All quantities are in SI units.
 """
 
 import math
@@ -87,10 +89,12 @@ def mode_shape(beta_L, xi):
 
 def mode_shape_scalar(beta_L, xi):
     """Mode shape φ(ξ) of Eq. 3 at ξ = r/L [1]: float twin of `mode_shape` (Eq. 3)."""
+    beta_L = numpy.float64(beta_L)
+    xi = numpy.float64(xi)
     _x0 = beta_L*xi
-    _x1 = math.cos(beta_L)
-    _x2 = (-_x1 + math.sin(beta_L) - math.exp(-beta_L))/(_x1 + math.cosh(beta_L))
-    return _x2*math.cosh(_x0) - (_x2 + 1)*math.cos(_x0) + math.sin(_x0) + math.exp(-_x0)
+    _x1 = numpy.cos(beta_L)
+    _x2 = (-_x1 + numpy.sin(beta_L) - numpy.exp(-beta_L))/(_x1 + numpy.cosh(beta_L))
+    return _x2*numpy.cosh(_x0) - (_x2 + 1)*numpy.cos(_x0) + numpy.sin(_x0) + numpy.exp(-_x0)
 
 
 def mass_coefficient(beta_L, xi):
@@ -131,14 +135,16 @@ def mass_coefficient(beta_L, xi):
 
 def mass_coefficient_scalar(beta_L, xi):
     """Generalised mass M/(ρAL) referred to the damper position ξ [1]: float twin of `mass_coefficient` (Eq. 5–6)."""
-    _x0 = math.sin(beta_L)
-    _x1 = math.exp(-beta_L)
-    _x2 = math.cosh(beta_L)
-    _x3 = math.cos(beta_L)
+    beta_L = numpy.float64(beta_L)
+    xi = numpy.float64(xi)
+    _x0 = numpy.sin(beta_L)
+    _x1 = numpy.exp(-beta_L)
+    _x2 = numpy.cosh(beta_L)
+    _x3 = numpy.cos(beta_L)
     _x4 = (_x0 - _x1 - _x3)/(_x2 + _x3)
     _x5 = _x4 + 1
     _x6 = beta_L*xi
-    return (1/4)*(_x0 + _x1 + _x2*_x4 - _x3*_x5)**2/(_x4*math.cosh(_x6) - _x5*math.cos(_x6) + math.sin(_x6) + math.exp(-_x6))**2
+    return (1/4)*(_x0 + _x1 + _x2*_x4 - _x3*_x5)**2/(_x4*numpy.cosh(_x6) - _x5*numpy.cos(_x6) + numpy.sin(_x6) + numpy.exp(-_x6))**2
 
 
 def stiffness_coefficient(beta_L, xi):
@@ -179,14 +185,16 @@ def stiffness_coefficient(beta_L, xi):
 
 def stiffness_coefficient_scalar(beta_L, xi):
     """Generalised stiffness K·L³/(EI) referred to the damper position ξ [1]: float twin of `stiffness_coefficient` (Eq. 5–6)."""
-    _x0 = math.sin(beta_L)
-    _x1 = math.exp(-beta_L)
-    _x2 = math.cosh(beta_L)
-    _x3 = math.cos(beta_L)
+    beta_L = numpy.float64(beta_L)
+    xi = numpy.float64(xi)
+    _x0 = numpy.sin(beta_L)
+    _x1 = numpy.exp(-beta_L)
+    _x2 = numpy.cosh(beta_L)
+    _x3 = numpy.cos(beta_L)
     _x4 = (_x0 - _x1 - _x3)/(_x2 + _x3)
     _x5 = _x4 + 1
     _x6 = beta_L*xi
-    return (1/4)*beta_L**4*(_x0 + _x1 + _x2*_x4 - _x3*_x5)**2/(_x4*math.cosh(_x6) - _x5*math.cos(_x6) + math.sin(_x6) + math.exp(-_x6))**2
+    return (1/4)*beta_L**4*(_x0 + _x1 + _x2*_x4 - _x3*_x5)**2/(_x4*numpy.cosh(_x6) - _x5*numpy.cos(_x6) + numpy.sin(_x6) + numpy.exp(-_x6))**2
 
 
 def tip_stiffness(E, I, L):
@@ -219,6 +227,9 @@ def tip_stiffness(E, I, L):
 
 def tip_stiffness_scalar(E, I, L):
     """Tip-referred stiffness K of mode 1 [N/m]: float twin of `tip_stiffness` (Eq. 6)."""
+    E = numpy.float64(E)
+    I = numpy.float64(I)
+    L = numpy.float64(L)
     return 3.0905908420815478*E*I/L**3
 
 
@@ -252,6 +263,9 @@ def tip_stiffness_printed(E, I, L):
 
 def tip_stiffness_printed_scalar(E, I, L):
     """Tip-referred stiffness K of mode 1 with the printed constant 12.362361 [N/m]: float twin of `tip_stiffness_printed` (Eq. 6)."""
+    E = numpy.float64(E)
+    I = numpy.float64(I)
+    L = numpy.float64(L)
     return (12362361/4000000)*E*I/L**3
 
 
@@ -285,4 +299,7 @@ def tip_mass(rho, A, L):
 
 def tip_mass_scalar(rho, A, L):
     """Tip-referred mass M of mode 1 [kg]: float twin of `tip_mass` (Eq. 6)."""
+    rho = numpy.float64(rho)
+    A = numpy.float64(A)
+    L = numpy.float64(L)
     return (1/4)*A*L*rho

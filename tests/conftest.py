@@ -1,10 +1,37 @@
-"""Shared fixtures: the derivation boards are built once per test session (about 10 s)."""
+"""Shared fixtures, and the hypothesis profiles every property test runs under.
+
+Profiles (``--hypothesis-profile NAME``):
+
+- ``ci`` (the default): ``derandomize=True``, so each property test draws the same examples on
+  every run and every machine (seeded from the test's own source), and no example database, so a
+  failure seen on one machine is not replayed as a different run on another.  The README's test
+  command and CI use it.
+- ``explore``: fresh random examples on every run.  Run
+  ``python -m pytest --hypothesis-profile explore`` to look for new failures, or
+  ``python -m pytest --hypothesis-seed N`` to replay one seed: a seed on the command line selects
+  this profile's randomness (``derandomize`` would otherwise override the seed).
+"""
 
 from __future__ import annotations
 
 import pytest
+from hypothesis import settings
 
 from derive import STEPS, board
+
+settings.register_profile("ci", derandomize=True, database=None, print_blob=True)
+settings.register_profile("explore", derandomize=False, database=None, print_blob=True)
+# Loaded here, before any test module builds its @settings(...) from the current profile.
+settings.load_profile("ci")
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    if config.getoption("hypothesis_profile", None):
+        return  # the plugin loads the profile named on the command line
+    if config.getoption("hypothesis_seed", None) is not None:
+        # a seed asks for that seed's examples, which derandomize=True would ignore
+        settings.register_profile("seeded", parent=settings.get_profile("ci"), derandomize=False)
+        settings.load_profile("seeded")
 
 
 @pytest.fixture(scope="session")

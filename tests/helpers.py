@@ -40,3 +40,84 @@ def physical_points(kernel, rng: np.random.Generator, n: int) -> np.ndarray:
         if all(c(*p) for c in checks):
             points.append(p)
     return np.array(points)
+
+
+# --- rounding-error bounds -----------------------------------------------------------------------
+#: Unit roundoff of float64 (half an ULP of 1).
+UNIT_ROUNDOFF = 2.0**-53
+#: Error of one elementary function (exp, sin, cos, log, pow, ...) in units of the roundoff:
+#: glibc documents at most 1–2 ULP for them, NumPy's SIMD float64 loops (SVML-derived, used on
+#: AVX-512 machines) at most 4 ULP; 4 ULP = 8 roundoffs covers both.
+ELEMENTARY_ROUNDOFFS = 8
+
+
+def rounding_bound(expr: sp.Expr, symbols, point, dps: int = 40) -> float:
+    """First-order bound on the float64 rounding error of evaluating ``expr`` at ``point``.
+
+    Running error analysis over the expression tree (evaluated in mpmath at ``dps`` digits): every
+    node's result carries a relative error of at most u (arithmetic, correctly rounded square
+    root), (k − 1)·u for a k-term sum or product, or 8u for an elementary function (see
+    ``ELEMENTARY_ROUNDOFFS``); it reaches the result multiplied by |∂f/∂node|.  The bound is
+    Σ |∂f/∂node|·|node|·u_node, i.e. the conditioning of the formula at that point, which is what
+    any two faithful float64 evaluations of it (NumPy's vectorised loops, its scalar loops, C,
+    Octave) can differ by, whatever the CPU.
+    """
+    import mpmath as mp
+
+    env = dict(zip(symbols, point, strict=True))
+    u = mp.mpf(UNIT_ROUNDOFF)
+    with mp.workdps(dps):
+        values: dict[int, mp.mpf] = {}
+
+        def value(node) -> mp.mpf:
+            key = id(node)
+            if key not in values:
+                if node.is_Symbol:
+                    v = mp.mpf(float(env[node]))
+                elif not node.free_symbols:
+                    v = mp.mpf(sp.N(node, dps + 5))
+                elif node.is_Add:
+                    v = mp.fsum(value(a) for a in node.args)
+                elif node.is_Mul:
+                    v = mp.fprod(value(a) for a in node.args)
+                elif node.is_Pow:
+                    v = value(node.args[0]) ** value(node.args[1])
+                else:
+                    v = getattr(mp, node.func.__name__)(*(value(a) for a in node.args))
+                values[key] = mp.re(v) if mp.im(v) == 0 else v
+            return values[key]
+
+        total = mp.mpf(0)
+
+        def visit(node, adj) -> None:
+            nonlocal total
+            if not node.free_symbols or node.is_Symbol or adj == 0:
+                return  # inputs are exact; constants are the same float in every evaluation
+            args = node.args
+            val = value(node)
+            if node.is_Add:
+                total += abs(adj) * (len(args) - 1) * u * sum(abs(value(a)) for a in args)
+                for a in args:
+                    visit(a, adj)
+            elif node.is_Mul:
+                total += abs(adj) * (len(args) - 1) * u * abs(val)
+                for i, a in enumerate(args):
+                    visit(a, adj * mp.fprod(value(b) for j, b in enumerate(args) if j != i))
+            elif node.is_Pow:
+                base, ex = args
+                exact = ex in (sp.Integer(2), sp.Integer(-1), sp.Rational(1, 2), sp.Rational(-1, 2))
+                total += abs(adj) * abs(val) * u * (1 if exact else ELEMENTARY_ROUNDOFFS)
+                vb, ve = value(base), value(ex)
+                visit(base, adj * ve * vb ** (ve - 1))
+                if ex.free_symbols:
+                    visit(ex, adj * val * mp.log(vb))
+            else:
+                total += abs(adj) * abs(val) * u * ELEMENTARY_ROUNDOFFS
+                (arg,) = args
+                x = sp.Dummy()
+                slope = sp.diff(node.func(x), x)
+                visit(arg, adj * mp.mpf(sp.N(slope.subs(x, sp.Float(value(arg), dps)), dps)))
+
+        tree = sp.sympify(expr)  # held, so that the ids keying ``values`` stay unique
+        visit(tree, mp.mpf(1))
+        return float(abs(total))
