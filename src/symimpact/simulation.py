@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import ParameterError, SymimpactError
+from .errors import MethodNotApplicable, ParameterError, SymimpactError
 from .system import ImpactSystem
 from .units import positive_float, si_float
 
@@ -28,7 +28,8 @@ class Impact:
     ``t`` [s], ``x``, ``y`` [m], ``xdot``, ``ydot`` [m/s] at onset; ``duration`` [s] (None if the
     simulation ended during the contact); ``restitution`` = −(relative exit speed)/(approach
     speed) [1]; ``energy_lost`` [J] = mechanical energy at onset − at exit (c₁ and C together);
-    ``contact_dissipation`` [J] = ∫c₁δ̇² dt.
+    ``contact_dissipation`` [J] = ∫c₁δ̇² dt (numerical laws), or for the perturbation path the
+    relative kinetic energy the contact took, ½μ(Ż₀² − ż²) with μ = mM/(m + M).
     """
 
     t: float
@@ -192,8 +193,11 @@ def simulate(
     x0, y0 : initial displacements [m]; xdot0, ydot0 : initial velocities [m/s]; abs(y0 − x0) must
         not exceed d/2.  t_end : end time [s].
     contact : ``"cubic"``, ``"hertz"``, ``"linear"`` (the force law integrated numerically,
-        default: the system's law) or ``"perturbation"`` (the cubic law by Eq. 31–33, with B/A
-        chosen by ``ba``, see :func:`symimpact.contact.amplitude_ratio`).
+        default: the system's law) or ``"perturbation"`` (the cubic law by Eq. 31–33: the contact
+        duration and penetration with B/A chosen by ``ba``, see
+        :func:`symimpact.contact.amplitude_ratio`; the penetration shared between the masses
+        without momentum, Eq. 33 with B/A = −M/m, about a centre of mass that moves on the main
+        spring and damper, so that no contact adds energy).
     history : also return x, ẋ, y, ẏ on ``samples`` evenly spaced times (closed form in free
         flight, cubic Hermite between integrator steps during contact).
     rtol : relative tolerance of the contact integration (absolute tolerances scale with the gap
@@ -254,8 +258,9 @@ def simulate(
         ba_value = float(amplitude_ratio(system, ba=ba))
         notes.append(
             f"contact by the perturbation solution (Eq. 31–33) with B/A = {ba_value:.6g} "
-            f"({ba if isinstance(ba, str) else 'given'}); dissipation is not integrated on this "
-            "path, so the energy residual is not available"
+            f"({ba if isinstance(ba, str) else 'given'}) for the duration and the penetration; "
+            "the masses share the penetration so that it carries no momentum (Eq. 33 with "
+            "B/A = −M/m) while their centre of mass moves on the main spring and damper"
         )
 
     wn = system.omega_n
@@ -297,9 +302,14 @@ def simulate(
     if status in (_stepper.STEP_UNDERFLOW, _stepper.TOO_MANY_STEPS):
         raise SymimpactError(f"contact integration: {_stepper.STATUS_TEXT[status]}")
     if status == _stepper.NO_CONVERGENCE:
-        raise SymimpactError(
-            "contact='perturbation': the fixed point of Eq. 31 did not converge for an impact; "
-            "use a numerical contact law"
+        row = impacts[n_imp - 1]
+        v = abs(row[_stepper.I_YD] - row[_stepper.I_XD])
+        raise MethodNotApplicable(
+            "perturbation",
+            f"Eq. 31 has no converging fixed point for the contact at t = {row[_stepper.I_T]:.6g} s "
+            f"(approach speed {v:.4g} m/s, B/A = {ba_value:.6g}): the cubic term "
+            "3a·Ż₀²·(T/π)²/4 is not a small correction to b there, which the two-variable "
+            "expansion (Eq. 21–33) assumes; use contact='cubic', which integrates the same law",
         )
     log = []
     for row in impacts[:n_imp]:
@@ -319,9 +329,7 @@ def simulate(
                 duration=float(row[_stepper.I_TOFF] - row[_stepper.I_T]) if done else None,
                 restitution=float(-exit_speed / approach) if done and approach > 0 else None,
                 energy_lost=float(row[_stepper.I_EON] - row[_stepper.I_EOFF]) if done else None,
-                contact_dissipation=(
-                    float(row[_stepper.I_DC1]) if done and law != _stepper.PERTURBATION else None
-                ),
+                contact_dissipation=float(row[_stepper.I_DC1]) if done else None,
             )
         )
     if log and log[-1].duration is None:
@@ -345,10 +353,9 @@ def simulate(
         "residual": None,
         "relative_residual": None,
     }
-    if law != _stepper.PERTURBATION:
-        residual = e_initial - e_final - diss_C - diss_c1
-        energy["residual"] = float(residual)
-        energy["relative_residual"] = float(residual / e_initial) if e_initial > 0 else 0.0
+    residual = e_initial - e_final - diss_C - diss_c1
+    energy["residual"] = float(residual)
+    energy["relative_residual"] = float(residual / e_initial) if e_initial > 0 else 0.0
     hist = _history(system, p, trace[:n_tr], t_end, samples, u) if history else None
     if peaks[:n_pk].shape[0] < 4:
         notes.append(f"only {n_pk} positive maxima of x: the damping inclination needs four")
