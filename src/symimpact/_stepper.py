@@ -57,7 +57,7 @@ N_IMPACT_COLS = 16
 # 2: at rest from here)
 N_TRACE_COLS = 8
 # status codes
-OK, FULL_IMPACTS, FULL_TRACE, STEP_UNDERFLOW, NO_CONVERGENCE, AT_REST, TOO_MANY_STEPS = range(7)
+OK, FULL_IMPACTS, STEP_UNDERFLOW, NO_CONVERGENCE, AT_REST, TOO_MANY_STEPS = range(6)
 # a contact of a sane system takes tens to hundreds of steps; this many means a time scale the
 # integrator cannot bridge (e.g. a contact 1e-15 of the main period)
 MAX_CONTACT_STEPS = 100_000
@@ -145,6 +145,48 @@ def contact_potential(law: int, p: np.ndarray, delta: float) -> float:
 
 
 @njit(cache=True)
+def _hermite_min(y0: float, y1: float, m0: float, m1: float) -> float:
+    """(least value, where) of the cubic with values y0, y1 and slopes m0, m1 at 0 and 1 over its
+    interior critical points in (0, 1); (inf, -1) when it has none (the ends are the caller's)."""
+    a1 = m0
+    a2 = -3.0 * y0 - 2.0 * m0 + 3.0 * y1 - m1
+    a3 = 2.0 * y0 + m0 - 2.0 * y1 + m1
+    lowest, where = math.inf, -1.0
+    # H'(s) = 3a3·s² + 2a2·s + a1
+    qa, qb, qc = 3.0 * a3, 2.0 * a2, a1
+    if qa == 0.0:
+        roots = (-qc / qb if qb != 0.0 else -1.0, -1.0)
+    else:
+        disc = qb * qb - 4.0 * qa * qc
+        if disc < 0.0:
+            return lowest, where
+        sq = math.sqrt(disc)
+        roots = ((-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa))
+    for r in roots:
+        if 0.0 < r < 1.0:
+            value = ((a3 * r + a2) * r + a1) * r + y0
+            if value < lowest:
+                lowest, where = value, r
+    return lowest, where
+
+
+@njit(cache=True)
+def _penetration_scale(law: int, p: np.ndarray, v: float) -> float:
+    """Largest penetration [m] of an undamped contact of the free pair (reduced mass
+    μ = mM/(m + M)) at approach speed v: the contact potential equals ½μv²."""
+    mu = p[P_m] * p[P_M] / (p[P_m] + p[P_M])
+    e = 0.5 * mu * v * v
+    if law == HERTZ:
+        return (2.5 * e / p[P_khz]) ** 0.4
+    if law == LINEAR:
+        return math.sqrt(2.0 * e / p[P_k1])
+    a, b = p[P_a], p[P_b]  # a/4·δ⁴ + b/2·δ² = e, a quadratic in δ²
+    if a > 0.0:
+        return math.sqrt(4.0 * e / (b + math.sqrt(b * b + 4.0 * a * e)))
+    return math.sqrt(2.0 * e / b)
+
+
+@njit(cache=True)
 def _rhs(law, p, side, u, out):
     x, xd, y, yd = u[0], u[1], u[2], u[3]
     delta = side * (y - x) - p[P_h]
@@ -212,15 +254,28 @@ def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which, out, kout, wts):
     """
     lo, hi = 0.0, h_hi
     flo, fhi = g_lo, g_hi
+    # A step from the onset itself starts at δ = 0 exactly with δ̇ > 0: θ = 0 is on the inside,
+    # not a root.  Until a point with δ > 0 is found, bisect (a secant through δ = 0 at θ = 0
+    # would return θ ≈ 0: a contact of 1e-17 s whenever a whole short contact fits in one step).
+    inside_unknown = which == 0 and flo <= 0.0
+    if inside_unknown:
+        flo = 1.0
     side_kept = 0
     theta = hi
     for _ in range(200):
         den = fhi - flo  # the secant point, or the midpoint where the chord is flat
         theta = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
-        if not (lo < theta < hi):
+        if inside_unknown or not (lo < theta < hi):
             theta = 0.5 * (lo + hi)
         _dp_step(law, p, side, u, k1, theta, out, kout, wts)
         g = side * (out[2] - out[0]) - p[P_h] if which == 0 else out[1]
+        if inside_unknown:
+            if g > 0.0:
+                inside_unknown = False
+                lo, flo = theta, g
+            else:
+                hi, fhi = theta, g
+            continue
         if g == 0.0:
             return theta
         if (g > 0.0) == (flo > 0.0):
@@ -237,6 +292,17 @@ def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which, out, kout, wts):
             break
     _dp_step(law, p, side, u, k1, hi, out, kout, wts)
     return hi
+
+
+@njit(cache=True)
+def _room(a, n):
+    """``a`` if it has a row ``n``, else a copy with twice the rows (amortised growth: no
+    buffer ever truncates a log or restarts a run)."""
+    if n < a.shape[0]:
+        return a
+    b = np.zeros((2 * a.shape[0] + 16, a.shape[1]))
+    b[: a.shape[0]] = a
+    return b
 
 
 @njit(cache=True)
@@ -263,8 +329,9 @@ def _trace_rest_row(trace, ntr, t, u):
 
 @njit(cache=True)
 def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, record):
-    """Integrate one contact from δ = 0; returns (status, t, npk, ntr, done, h_last) with u0 updated
-    in place to the state at the end of contact (or at t_end)."""
+    """Integrate one contact from δ = 0; returns (status, t, npk, ntr, done, h_last, peaks,
+    trace) with u0 updated in place to the state at the end of contact (or at t_end); ``peaks``
+    and ``trace`` are the buffers, grown where they filled."""
     wts = np.empty(4)
     wts[0] = p[P_atolx]
     wts[1] = p[P_atolv]
@@ -280,12 +347,17 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
     kev = np.empty(NV)
     _rhs(law, p, side, u, k1)
     t = t0
+    # the first step is at most the time to the largest penetration at the approach speed (an
+    # elastic estimate, about a third of the contact): a step that holds a whole short contact
+    # would leave its end to the event search alone
+    v = side * (u[3] - u[1])
     h = h_guess
+    if v > 0.0:
+        h = min(h, _penetration_scale(law, p, v) / v)
     status = OK
     done = False
     if record:
-        if ntr >= trace.shape[0]:
-            return FULL_TRACE, t, npk, ntr, False, h
+        trace = _room(trace, ntr)
         _trace_contact_row(trace, ntr, t, u, k1)
         ntr += 1
     nsteps = 0
@@ -309,11 +381,25 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
         d_new = side * (unew[2] - unew[0]) - p[P_h]
         hstep = h
         ended = d_new < 0.0
-        if ended:
+        if not ended:
+            # both ends in contact: does δ dip below zero inside the step (the masses part and
+            # touch again)?  The cubic Hermite interpolant of δ points at where; a step to that
+            # point says whether the dip is real, and if so the contact ends before it.
+            dip, s_dip = _hermite_min(
+                d_old, d_new, h * side * (u[3] - u[1]), h * side * (unew[3] - unew[1])
+            )
+            if dip < 0.0:
+                _dp_step(law, p, side, u, k1, s_dip * h, uev, kev, wts)
+                d_dip = side * (uev[2] - uev[0]) - p[P_h]
+                if d_dip < 0.0:
+                    ended = True
+                    hstep = _locate(law, p, side, u, k1, s_dip * h, d_old, d_dip, 0, unew, k7, wts)
+        elif ended:
             hstep = _locate(law, p, side, u, k1, h, d_old, d_new, 0, unew, k7, wts)
-        if u[1] > 0.0 and unew[1] <= 0.0 and npk < peaks.shape[0]:
+        if u[1] > 0.0 and unew[1] <= 0.0:
             hp = _locate(law, p, side, u, k1, hstep, u[1], unew[1], 1, uev, kev, wts)
             if uev[0] > 0.0:
+                peaks = _room(peaks, npk)
                 peaks[npk, 0] = t + hp
                 peaks[npk, 1] = uev[0]
                 npk += 1
@@ -322,9 +408,7 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
             u[i] = unew[i]
             k1[i] = k7[i]
         if record:
-            if ntr >= trace.shape[0]:
-                status = FULL_TRACE
-                break
+            trace = _room(trace, ntr)
             _trace_contact_row(trace, ntr, t, u, k1)
             ntr += 1
         if ended:
@@ -333,7 +417,7 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
         h = hstep * min(5.0, max(0.2, 0.9 * max(err, 1e-10) ** -0.2))
     for i in range(NV):
         u0[i] = u[i]
-    return status, t, npk, ntr, done, h
+    return status, t, npk, ntr, done, h, peaks, trace
 
 
 @njit(cache=True)
@@ -373,8 +457,8 @@ def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk, trace, ntr, record
     onset: ½(M+m)Ẋ² + ½KX² cannot grow (Eq. 7, C ≥ 0), and the relative kinetic energy ½μż²
     leaves multiplied by exp(−c₁(B − A)T/(B·m)) ≤ 1 (Eq. 32 at ξ = π).
 
-    Returns (status, t, npk, ntr, done, dissipated by C, dissipated in the contact); u0 is updated
-    to the state at exit (or at t_end).  The dissipation by C is the loss of the centre-of-mass
+    Returns (status, t, npk, ntr, done, dissipated by C, dissipated in the contact, peaks, trace);
+    u0 is updated to the state at exit (or at t_end); the buffers grow where they filled.  The dissipation by C is the loss of the centre-of-mass
     energy; the contact's is the loss of the relative kinetic energy ½μ(Ż₀² − ż²) (plus the
     contact potential at t_end, where the run ends inside the contact).
     """
@@ -390,7 +474,7 @@ def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk, trace, ntr, record
             break
         T = Tn
     if not converged or not math.isfinite(T):
-        return NO_CONVERGENCE, t0, npk, ntr, False, 0.0, 0.0
+        return NO_CONVERGENCE, t0, npk, ntr, False, 0.0, 0.0, peaks, trace
     Om = math.pi / T
     Mt = M + m
     mu = m * M / Mt
@@ -409,8 +493,7 @@ def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk, trace, ntr, record
         tj = t_stop * j / n
         _perturbation_state(p, side, tj, X0, Xd0, Om, v, st)
         if record:
-            if ntr >= trace.shape[0]:
-                return FULL_TRACE, t0, npk, ntr, False, 0.0, 0.0
+            trace = _room(trace, ntr)
             dt = 1e-6 * t_stop
             _perturbation_state(p, side, tj + dt, X0, Xd0, Om, v, st2)
             trace[ntr, 0] = t0 + tj
@@ -426,7 +509,7 @@ def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk, trace, ntr, record
         if j == 0:
             continue
         xdj = st[1]
-        if prev_xd > 0.0 and xdj <= 0.0 and npk < peaks.shape[0]:
+        if prev_xd > 0.0 and xdj <= 0.0:
             lo, hi = prev_t, tj
             for _ in range(100):
                 mid = 0.5 * (lo + hi)
@@ -438,6 +521,7 @@ def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk, trace, ntr, record
             tm = 0.5 * (lo + hi)
             _perturbation_state(p, side, tm, X0, Xd0, Om, v, st2)
             if st2[0] > 0.0:
+                peaks = _room(peaks, npk)
                 peaks[npk, 0] = t0 + tm
                 peaks[npk, 1] = st2[0]
                 npk += 1
@@ -456,7 +540,7 @@ def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk, trace, ntr, record
     d_c1 = 0.5 * mu * (v * v - zd * zd)
     if not done:  # the run ends inside the contact: what the contact holds is not lost yet
         d_c1 -= contact_potential(PERTURBATION, p, z)
-    return OK, t0 + t_stop, npk, ntr, done, d_c, d_c1
+    return OK, t0 + t_stop, npk, ntr, done, d_c, d_c1, peaks, trace
 
 
 @njit(cache=True)
@@ -541,13 +625,14 @@ def _onset(p, x0, xd0, y0, yd0, tau0, T):
 
 @njit(cache=True)
 def _free_peaks(p, x0, xd0, t0, tau_a, tau_b, peaks, npk):
-    """Record maxima of x (ẋ from + to −, x > 0) in free flight on [tau_a, tau_b]."""
+    """Record maxima of x (ẋ from + to −, x > 0) in free flight on [tau_a, tau_b]; returns
+    (npk, peaks), the buffer grown where it filled."""
     M, K, C = p[P_M], p[P_K], p[P_C]
     wd = math.sqrt(K / M - C * C / (4 * M * M))
     step = math.pi / wd / 4.0  # ẋ has at most one zero in a quarter of its half period
     a = tau_a
     fa = _xd_ff(a, M, K, C, x0, xd0)
-    while a < tau_b and npk < peaks.shape[0]:
+    while a < tau_b:
         b = min(a + step, tau_b)
         fb = _xd_ff(b, M, K, C, x0, xd0)
         if fa > 0.0 and fb <= 0.0:
@@ -563,20 +648,23 @@ def _free_peaks(p, x0, xd0, t0, tau_a, tau_b, peaks, npk):
             tm = 0.5 * (lo + hi)
             xm = _x_ff(tm, M, K, C, x0, xd0)
             if xm > 0.0:
+                peaks = _room(peaks, npk)
                 peaks[npk, 0] = t0 + tm
                 peaks[npk, 1] = xm
                 npk += 1
         a, fa = b, fb
-    return npk
+    return npk, peaks
 
 
 @njit(cache=True)
-def run(law, p, state0, t_end, impacts, peaks, trace, record):
+def run(law, p, state0, t_end, impacts, peaks, trace, record, max_impacts):
     """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end.
 
     Fills ``impacts`` (one row per contact), ``peaks`` (t, x of positive maxima of x) and, when
-    ``record``, ``trace``.  Returns (status, n_impacts, n_peaks, n_trace, final state [6],
-    dissipated by C, dissipated by c₁, final contact side (0: free), final time).
+    ``record``, ``trace``, each grown as it fills (status FULL_IMPACTS only past ``max_impacts``
+    contacts).  Returns (status, n_impacts, n_peaks, n_trace, final state [6],
+    dissipated by C, dissipated by c₁, final contact side (0: free), final time, impacts, peaks,
+    trace), the last three the (possibly grown) buffers.
     """
     M, K, C, h = p[P_M], p[P_K], p[P_C], p[P_h]
     u = np.zeros(NV)
@@ -595,9 +683,7 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
     while t < t_end:
         x0, xd0, y0, yd0 = u[0], u[1], u[2], u[3]
         if record:
-            if ntr >= trace.shape[0]:
-                status = FULL_TRACE
-                break
+            trace = _room(trace, ntr)
             trace[ntr, 0] = t
             trace[ntr, 1] = x0
             trace[ntr, 2] = xd0
@@ -611,7 +697,7 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
         tau_stop, onset = _onset(p, x0, xd0, y0, yd0, tau_skip, t_end - t)
         if onset == ONSET_NONE:
             tau_stop = t_end - t
-        npk = _free_peaks(p, x0, xd0, t, 0.0, tau_stop, peaks, npk)
+        npk, peaks = _free_peaks(p, x0, xd0, t, 0.0, tau_stop, peaks, npk)
         x1 = _x_ff(tau_stop, M, K, C, x0, xd0)
         xd1 = _xd_ff(tau_stop, M, K, C, x0, xd0)
         u[0] = x1
@@ -627,14 +713,16 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
         side = 1.0 if u[2] - u[0] > 0.0 else -1.0
         if onset == ONSET_REST or _energy(law, p, u, 0.0) < p[P_rest]:
             status = AT_REST  # too little energy left for the contact to be resolved
-            if record and ntr < trace.shape[0]:
+            if record:
+                trace = _room(trace, ntr)
                 _trace_rest_row(trace, ntr, t, u)
                 ntr += 1
             side = 0.0
             break
-        if n_imp >= impacts.shape[0]:
+        if n_imp >= max_impacts:
             status = FULL_IMPACTS
             break
+        impacts = _room(impacts, n_imp)
         u[2] = u[0] + side * h  # exactly on the boundary (the root is located to 4e-16)
         row = impacts[n_imp]
         row[I_T] = t
@@ -646,11 +734,11 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
         e_on = _energy(law, p, u, side)
         row[I_EON] = e_on
         if law == PERTURBATION:
-            status, t1, npk, ntr, done, d_c, d_c1 = _perturbation_contact(
+            status, t1, npk, ntr, done, d_c, d_c1, peaks, trace = _perturbation_contact(
                 p, side, t, u, t_end, peaks, npk, trace, ntr, record
             )
         else:
-            status, t1, npk, ntr, done, h_contact = _contact(
+            status, t1, npk, ntr, done, h_contact, peaks, trace = _contact(
                 law, p, side, t, u, t_end, h_contact, peaks, npk, trace, ntr, record
             )
             d_c, d_c1 = u[4], u[5]
@@ -688,7 +776,7 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record):
             tau_skip = min(-v / amax if amax > 0.0 else cap, cap, far)
         else:
             tau_skip = min(1e-9 * cap, far)  # grazing exit
-    return status, n_imp, npk, ntr, u, diss_C, diss_c1, side, t
+    return status, n_imp, npk, ntr, u, diss_C, diss_c1, side, t, impacts, peaks, trace
 
 
 @njit(cache=True)
@@ -706,7 +794,9 @@ def one_contact(law, p, v0):
     # the contact of a free or sprung pair lasts far less than this; it is only a safety stop
     t_cap = 1e3 * math.pi * math.sqrt(p[P_m] / max(p[P_b] + p[P_k1], 1e-300)) + 1e3
     h0 = 1e-4 * min(p[P_h] / v0, 1.0)
-    status, t, _, _, done, _ = _contact(law, p, 1.0, 0.0, u, t_cap, h0, peaks, 0, trace, 0, False)
+    status, t, _, _, done, _, _, _ = _contact(
+        law, p, 1.0, 0.0, u, t_cap, h0, peaks, 0, trace, 0, False
+    )
     if status != OK:
         return status, math.inf, u, e_on, e_on
     if not done:
