@@ -43,7 +43,7 @@ def test_every_figure_is_a_valid_nonempty_png(report):
     names = {f.name for f in figures}
     assert {"fig2_force_laws", "fig3a_amplitude_ratio", "fig3b_iterations", "fig4_response_9mm",
             "fig5_relative_motion", "fig6_six_gaps", "fig7_gap_sweep", "accuracy_map",
-            "lindstedt_orders"} <= names  # fmt: skip
+            "lindstedt_orders", "gap_classes"} <= names  # fmt: skip
     for f in figures:
         png = path / f"{f.name}.png"
         w, h = _png_size(png)
@@ -57,7 +57,8 @@ def test_every_table_has_its_csv_with_full_precision(report):
     path, sections = report
     tables = [b for s in sections.values() for b in s.blocks if isinstance(b, Table)]
     assert {"table1", "table3", "table3_as_stated", "table2_readings", "fit_coefficients",
-            "gap_range", "accuracy_map_summary", "lindstedt_orders"} <= {t.name for t in tables}  # fmt: skip
+            "gap_range", "gap_intervals", "accuracy_map_summary", "lindstedt_orders"} <= {
+        t.name for t in tables}  # fmt: skip
     for t in tables:
         with open(path / f"{t.name}.csv", newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f))

@@ -5,8 +5,12 @@ the simulation from the given initial state has at least as many effective impac
 non-effective ones, i.e. effectiveness (Eq. 38) ≥ 1 or every impact effective; otherwise it is
 **out of range** (and **no impact** when the masses never touch).  This criterion gives the class
 printed for every one of the nine gaps of Table 3 from the effectiveness printed beside it.
-d_min and d_max are the smallest and largest in-range gaps of a grid, each refined by bisection
-against its out-of-range neighbour.
+The classes change on fine scales (thin strips of either class, down to 0.01 mm and below), so
+they are reported as intervals of a stated grid with the share of in-range gaps per mm, and d_min,
+d_max by stated criteria: a robust envelope of a fine sweep (:func:`envelope_limits`) and the
+paper's Fig. 5 criterion, the effective-contact condition at the first contact the impact mass
+reaches by its own motion (:func:`fig5_limits`), whose sign changes are true boundaries.  No
+class boundary is placed by bisection between two grid points.
 """
 
 from __future__ import annotations
@@ -99,53 +103,171 @@ def sweep(
     return rows
 
 
+def gap_intervals(rows: Sequence[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Runs of consecutive gaps with the same class, from sweep rows sorted by gap.
+
+    Each interval is ``{"class", "from", "to", "n"}`` [m]: the first and last grid gap of the run
+    and how many grid gaps it holds.  A boundary is known to the grid step, no better: between the
+    last gap of one interval and the first of the next.
+    """
+    out: list[dict[str, Any]] = []
+    for r in sorted(rows, key=lambda r: r["gap"]):
+        if out and out[-1]["class"] == r["class"]:
+            out[-1]["to"] = r["gap"]
+            out[-1]["n"] += 1
+        else:
+            out.append({"class": r["class"], "from": r["gap"], "to": r["gap"], "n": 1})
+    return out
+
+
+def in_range_share(rows: Sequence[dict[str, Any]], bin_width: float = 1e-3) -> list[dict[str, Any]]:
+    """Share of in-range gaps in consecutive bins of ``bin_width`` [m] (default 1 mm):
+    ``[{"from", "to", "n", "share"}]``, bins aligned to multiples of ``bin_width``; the fine
+    structure of the classes, whatever the grid step."""
+    bins: dict[int, list[bool]] = {}
+    for r in rows:
+        k = int(np.floor(r["gap"] / bin_width + 1e-9))
+        bins.setdefault(k, []).append(r["class"] == "in range")
+    return [
+        {
+            "from": k * bin_width,
+            "to": (k + 1) * bin_width,
+            "n": len(v),
+            "share": sum(v) / len(v),
+        }
+        for k, v in sorted(bins.items())
+    ]
+
+
+def envelope_limits(
+    rows: Sequence[dict[str, Any]], share: float = 0.9, window: float = 1e-3
+) -> tuple[float | None, float | None]:
+    """Robust d_min and d_max [m] of a fine gap sweep.
+
+    d_min is the smallest grid gap d such that at least ``share`` of the grid gaps in
+    [d, d + window] are in range; d_max the largest d such that at least ``share`` of those in
+    [d − window, d] are.  A single in-range gap among out-of-range ones (or the reverse), a strip
+    narrower than the window, moves neither limit; each limit is known to the grid step.
+    (None, None) when no window qualifies.
+    """
+    if not 0.0 < share <= 1.0:
+        raise ParameterError("share", "must be in (0, 1]")
+    if not window > 0.0:
+        raise ParameterError("window", "must be positive")
+    pts = sorted((r["gap"], r["class"] == "in range") for r in rows)
+    gaps = np.array([g for g, _ in pts])
+    inside = np.array([i for _, i in pts], dtype=float)
+    tol = 1e-9 * window
+
+    def ok(lo: float, hi: float) -> bool:
+        sel = (gaps >= lo - tol) & (gaps <= hi + tol)
+        return bool(sel.any()) and inside[sel].mean() >= share
+
+    lows = [g for g in gaps if ok(g, g + window)]
+    highs = [g for g in gaps if ok(g - window, g)]
+    return (float(lows[0]) if lows else None, float(highs[-1]) if highs else None)
+
+
+def arrival_condition(system: ImpactSystem, gap: float, **kwargs: Any) -> float:
+    """ẋ·ẏ [m²/s²] at the onset of the first contact the impact mass reaches by its own motion.
+
+    The effective-contact condition of Eq. 37 on the relative motion (Sect. 4, Fig. 5): that
+    contact is effective when this is negative.  "By its own motion": the first contact whose
+    onset finds ẏ ≠ 0; with the paper's initial state (Y0 = Ẏ0 = 0) the main mass meets the
+    resting impact mass first, so it is the second contact, the end of the first flight of the
+    impact mass across the clearance.  It depends continuously on the gap while that contact
+    stays the same event, so its sign changes are boundaries that root-finding can place.
+    NaN when no such contact happens before ``t_end``.  Keywords: those of
+    :func:`symimpact.simulation.simulate` (initial state, t_end, contact).
+    """
+    from .simulation import simulate
+
+    res = simulate(system.with_(gap=gap), **kwargs)
+    for imp in res.impacts:
+        if imp.ydot != 0.0:
+            return imp.xdot * imp.ydot
+    return float("nan")
+
+
+def fig5_limits(
+    system: ImpactSystem, gaps: Sequence[Any], *, xtol: float = 1e-9, **kwargs: Any
+) -> dict[str, Any]:
+    """d_min and d_max [m] by the paper's Fig. 5 criterion: the effective-contact condition
+    (ẋ·ẏ < 0, Eq. 37) at the first contact the impact mass reaches by its own motion
+    (:func:`arrival_condition`).
+
+    The condition is evaluated on the grid ``gaps``; every sign change is placed by Brent's
+    method to ``xtol`` [m].  A boundary where the condition jumps instead of crossing zero (that
+    contact becomes another event, e.g. a grazing one appears) is kept with ``kind="jump"``.
+    d_min is the first boundary entering an acceptable stretch, d_max the last one leaving it;
+    None where the grid's end is reached inside one (then no limit lies within the grid).
+    Returns ``{"d_min", "d_max", "boundaries", "method"}``.
+    """
+    from scipy.optimize import brentq
+
+    grid = np.sort(np.array([si_float("gaps", g) for g in gaps]))
+
+    def g(d: float) -> float:
+        return arrival_condition(system, float(d), **kwargs)
+
+    vals = np.array([g(d) for d in grid])
+    boundaries = []
+    for a, b, ga, gb in zip(grid[:-1], grid[1:], vals[:-1], vals[1:], strict=True):
+        if not (np.isfinite(ga) and np.isfinite(gb)) or (ga < 0) == (gb < 0):
+            continue
+        root = brentq(g, a, b, xtol=xtol)
+        near = max(abs(g(root - 2 * xtol)), abs(g(root + 2 * xtol)))
+        scale = max(abs(ga), abs(gb))
+        boundaries.append(
+            {
+                "gap": float(root),
+                "enters": bool(gb < 0),  # acceptable above the boundary
+                "kind": "zero" if near <= 1e-3 * scale else "jump",
+            }
+        )
+    d_min = next((b["gap"] for b in boundaries if b["enters"]), None)
+    d_max = next((b["gap"] for b in reversed(boundaries) if not b["enters"]), None)
+    return {
+        "d_min": d_min,
+        "d_max": d_max,
+        "boundaries": boundaries,
+        "method": "Fig. 5 criterion: ẋ·ẏ < 0 (Eq. 37) at the first contact the impact mass "
+        f"reaches by its own motion, sign changes placed by Brent's method to {xtol:g} m",
+    }
+
+
 def gap_range(
     system: ImpactSystem,
     gaps: Sequence[Any],
     *,
-    refine: bool = True,
-    tol: float = 1e-5,
+    share: float = 0.9,
+    window: float = 1e-3,
     **kwargs: Any,
 ) -> dict[str, Any]:
-    """d_min and d_max [m]: the extreme in-range gaps of the grid ``gaps`` (see the module text),
-    each refined by bisection to ``tol`` [m] against its out-of-range neighbour.
+    """Gap classes of a fine sweep as intervals, their share per mm, and robust d_min, d_max.
 
-    Keywords are those of :func:`sweep` (initial state, t_end, contact, workers, progress).
-    Returns ``{"d_min", "d_max", "method", "rows"}``; d_min/d_max are None if no gap is in range.
+    Runs :func:`sweep` over ``gaps`` (keywords: those of :func:`sweep`) and returns
+    ``{"d_min", "d_max", "resolution", "intervals", "shares", "method", "rows"}``: the intervals
+    of :func:`gap_intervals`, the per-mm shares of :func:`in_range_share` and the envelope limits
+    of :func:`envelope_limits` (``share``, ``window``), None where it finds none or where it is
+    the grid's first or last gap (the range goes on beyond the grid).  The limits are stated at
+    the grid's resolution (its largest step); no boundary is refined between two grid points,
+    because the classes change on scales far below any grid (thin strips of either class).
     """
     rows = sweep(system, gaps, "gap", **kwargs)
-    grid = [r["gap"] for r in rows]
-    inside = [i for i, r in enumerate(rows) if r["class"] == "in range"]
-    out: dict[str, Any] = {
-        "d_min": None,
-        "d_max": None,
-        "method": "in range ⇔ N_eff ≥ N_tot − N_eff (Eq. 37–38); extreme in-range grid gaps "
-        + ("refined by bisection" if refine else "of the grid"),
+    grid = np.sort([r["gap"] for r in rows])
+    d_min, d_max = envelope_limits(rows, share, window)
+    # a limit at the grid's end only says that the grid ends inside the range
+    d_min = None if d_min == grid[0] else d_min
+    d_max = None if d_max == grid[-1] else d_max
+    return {
+        "d_min": d_min,
+        "d_max": d_max,
+        "resolution": float(np.max(np.diff(grid))) if len(grid) > 1 else None,
+        "intervals": gap_intervals(rows),
+        "shares": in_range_share(rows, window),
+        "method": f"envelope: the extreme gaps from which at least {share:.0%} of the gaps in "
+        f"the next (d_min) or previous (d_max) {window * 1e3:g} mm are in range; in range ⇔ "
+        "N_eff ≥ N_tot − N_eff (Eq. 37–38)",
         "rows": rows,
     }
-    if not inside:
-        return out
-    from .maps import INITIAL, _Base, run_point
-
-    initial = tuple((n, si_float(n, kwargs.get(n, 1.0 if n == "t_end" else 0.0))) for n in INITIAL)
-    base = _Base(system, initial, kwargs.get("contact"))
-
-    def is_in(gap):
-        return run_point(base, ("gap",), (gap,))["class"] == "in range"
-
-    def bisect(lo_in, hi_out):
-        a, b = lo_in, hi_out
-        while abs(b - a) > tol:
-            mid = 0.5 * (a + b)
-            if is_in(mid):
-                a = mid
-            else:
-                b = mid
-        return a
-
-    lo, hi = inside[0], inside[-1]
-    out["d_min"] = grid[lo] if not (refine and lo > 0) else bisect(grid[lo], grid[lo - 1])
-    out["d_max"] = (
-        grid[hi] if not (refine and hi < len(grid) - 1) else bisect(grid[hi], grid[hi + 1])
-    )
-    return out

@@ -70,7 +70,8 @@ def reproduce(
             ("mode", "quick (coarse grids)" if quick else "full"),
             ("machine", f"Python {platform.python_version()} on {platform.platform()}"),
             ("run time", f"{elapsed:.1f} s"),
-            ("paper", "../shared/paper/000_a5c42940aa0beeef.txt (equation numbers are the paper's)"),
+            ("paper", "Free vibration analysis of nonlinear resilient impact dampers (equation "
+             "numbers are the paper's)"),
             ("errata", "generated/errata.md lists where the printed equations differ from the "
              "derivation; 'as printed' and 'derived' results are both shown where they differ"),
         ]  # fmt: skip
