@@ -33,7 +33,7 @@ import numpy as np
 
 from .errors import ParameterError
 from .system import ImpactSystem
-from .units import SI_UNITS, si_float
+from .units import SI_UNITS, si_float, split_quantity
 
 INITIAL = ("x0", "xdot0", "y0", "ydot0", "t_end")
 SYSTEM_PARAMETERS = ("M", "K", "C", "zeta", "m", "gap", "a", "b", "k_hz", "k1", "c1")
@@ -132,7 +132,7 @@ def read_sets(path: str | os.PathLike) -> MapPoints:
 
     p = Path(path)
     try:
-        text = p.read_text()
+        text = p.read_text(encoding="utf-8-sig")  # a byte-order mark (Excel's CSV) is not a cell
     except OSError as exc:
         raise ParameterError("sets", f"cannot read {str(p)!r}: {exc.strerror}") from None
     except UnicodeDecodeError:
@@ -149,16 +149,9 @@ def read_sets(path: str | os.PathLike) -> MapPoints:
         for j, ((name, unit), cell) in enumerate(zip(header, row, strict=True)):
             cell = cell.strip()
             try:
-                number: float | None = float(cell)
-            except ValueError:
-                number = None
-            if number is None:
-                q: Any = cell  # a quantity with its own unit
-            elif unit:
-                q = f"{cell} {unit}"
-            else:
-                q = number
-            try:
+                # read strictly (units.split_quantity); a cell without a unit takes the header's
+                _, own_unit = split_quantity(name, cell)
+                q: Any = cell if own_unit or not unit else f"{cell} {unit}"
                 values[i - 2, j] = si_float(name, q, SI_UNITS.get(name))
             except ParameterError as exc:
                 raise ParameterError(name, f"line {i} of {str(p)!r}: {exc.reason}") from None

@@ -8,6 +8,7 @@ number in SI units is.  pint is imported only when a value carries units, so the
 
 from __future__ import annotations
 
+import re
 from decimal import Decimal
 from functools import lru_cache
 from typing import Any
@@ -63,7 +64,99 @@ def _registry():
     return pint.UnitRegistry()
 
 
-def _to_si(name: str, value: Any, unit: str) -> Any:
+#: Characters read as a minus sign: the ASCII hyphen-minus and every Unicode minus or dash that
+#: text copied from a PDF or a word processor carries in its place.
+MINUS_SIGNS = "-\u2212\u2010\u2011\u2012\u2013\u2014\u2015\ufe58\ufe63\uff0d\u2796"
+PLUS_SIGNS = "+\uff0b"
+#: Longest text read as a quantity (a number and its unit): longer text is refused, not parsed.
+MAX_TEXT = 100
+
+_SIGN = f"[{re.escape(MINUS_SIGNS + PLUS_SIGNS)}]"
+_NUMBER = re.compile(
+    rf"\s*(?P<sign>{_SIGN}?)\s*(?P<mantissa>\d+(?:\.\d*)?|\.\d+)"
+    rf"(?:[eE](?P<esign>{_SIGN}?)(?P<exponent>\d{{1,4}}))?"
+)
+#: A unit: names (letters, µ, Ω, °, %), products (space, *, ·), quotients (/), powers (^ or **
+#: with a signed decimal exponent) and parentheses; "1/s" is allowed as a reciprocal.
+_UNIT_TOKEN = re.compile(
+    r"[A-Za-zµμΩ°%]+|\(|\)|\*\*|[*·/^]|\s+|(?<=\^|\*)[+-]?\d+(?:\.\d+)?|1(?=\s*/)"
+)
+
+
+def split_quantity(name: str, text: str) -> tuple[float, str]:
+    """The number and the unit of a quantity written as text, read strictly.
+
+    One number, then optionally a unit: one sign (any Unicode minus or dash reads as a minus),
+    digits with at most one decimal point, an optional exponent, and nothing else numeric
+    outside the unit's exponents.  Refused, each with a reason naming ``name``: a decimal comma
+    ("use a decimal point"), numbers side by side or digit groups ("1 500"), operators and
+    expressions ("2**1024", "1+2"), text longer than :data:`MAX_TEXT` characters, and text with
+    no number.  Returns (value, unit text); the unit text is empty for a bare number.
+    """
+    if len(text) > MAX_TEXT:
+        raise ParameterError(name, f"text of {len(text)} characters; at most {MAX_TEXT} are read")
+    m = _NUMBER.match(text)
+    if m is None:
+        if re.match(rf"\s*{_SIGN}?\s*(nan|inf)", text, re.IGNORECASE):
+            raise ParameterError(name, f"must be finite, got {text!r}")
+        raise ParameterError(name, f"cannot read {text!r}: it does not start with a number")
+    rest = text[m.end() :]
+    if re.match(r",\d", rest):
+        raise ParameterError(name, f"{text!r}: use a decimal point, not a comma")
+    unit = rest.strip()
+    if unit[:1].isdigit() or unit[:1] == ".":
+        raise ParameterError(
+            name, f"{text!r}: one number expected, found numbers side by side (no digit groups)"
+        )
+    if unit and not unit[:1].isalpha() and unit[:1] not in "µμΩ°%(/":
+        raise ParameterError(name, f"{text!r}: a plain number expected, not an expression")
+    pos = 0
+    while pos < len(unit):
+        t = _UNIT_TOKEN.match(unit, pos)
+        if t is None:
+            raise ParameterError(name, f"{text!r}: unexpected {unit[pos]!r} in the unit {unit!r}")
+        pos = t.end()
+    sign = -1.0 if m["sign"] and m["sign"] in MINUS_SIGNS else 1.0
+    number = m["mantissa"]
+    if m["exponent"] is not None:
+        esign = "-" if m["esign"] and m["esign"] in MINUS_SIGNS else ""
+        number += f"e{esign}{m['exponent']}"
+    value = float(number)
+    if value == float("inf"):
+        raise ParameterError(name, f"{text!r} is beyond the largest float (about 1.8e308)")
+    return sign * value, unit
+
+
+@lru_cache(maxsize=512)
+def _factor(unit_text: str, si_unit: str) -> tuple[str, Any]:
+    """("ok", Decimal factor to ``si_unit``), ("unit", reason) or ("dimension", dimensionality)
+    for a unit written as text; cached, so a column of cells in one unit reads pint once."""
+    import pint
+
+    ureg = _registry()
+    try:
+        parsed = ureg.parse_units("1" + unit_text if unit_text.startswith("/") else unit_text)
+    except Exception as exc:  # pint raises assorted error types on malformed or unknown units
+        return "unit", str(exc)
+    try:
+        factor = ureg.Quantity(1.0, parsed).to(si_unit).magnitude
+    except pint.errors.DimensionalityError:
+        return "dimension", str(ureg.Quantity(1.0, parsed).dimensionality)
+    return "ok", Decimal(f"{float(factor):.15g}")  # pint computes 1/0.01³ as 999999.9999999999
+
+
+def _unit_to_si(name: str, text: str, number: float, unit_text: str, unit: str) -> float:
+    """``number`` in ``unit_text`` as a float in the SI ``unit``, multiplied in decimal (see
+    :func:`_to_si`)."""
+    kind, info = _factor(unit_text, unit)
+    if kind == "unit":
+        raise ParameterError(name, f"cannot read the unit of {text!r} ({info})")
+    if kind == "dimension":
+        raise ParameterError(name, f"{text!r} has dimension {info}, expected units of {unit}")
+    return float(Decimal(repr(number)) * info)
+
+
+def _to_si(name: str, value: Any, unit: str, shown: Any = None) -> Any:
     ureg = _registry()
     import pint
 
@@ -77,7 +170,9 @@ def _to_si(name: str, value: Any, unit: str) -> Any:
         factor = ureg.Quantity(1.0, q.units).to(unit).magnitude
     except pint.errors.DimensionalityError:
         raise ParameterError(
-            name, f"{value!r} has dimension {q.dimensionality}, expected units of {unit}"
+            name,
+            f"{shown if shown is not None else value!r} has dimension {q.dimensionality}, "
+            f"expected units of {unit}",
         ) from None
     # Multiply in decimal the shortest representations of magnitude and factor, so a value
     # written with a prefix gives the float of the SI number typed by hand: "9 mm" is 0.009 and
@@ -98,10 +193,9 @@ def si(name: str, value: Any, unit: str | None = None) -> Any:
         raise ParameterError(name, "is required")
     unit = unit or SI_UNITS.get(name, "dimensionless")
     if isinstance(value, str):
-        try:
-            value = float(value)  # a bare number written as text means SI
-        except ValueError:
-            value = _to_si(name, value, unit)
+        number, unit_text = split_quantity(name, value)
+        # a bare number written as text means SI; a unit is read by pint, without the number
+        value = _unit_to_si(name, value, number, unit_text, unit) if unit_text else number
     elif hasattr(value, "dimensionality"):
         value = _to_si(name, value, unit)
     if isinstance(value, bool):
