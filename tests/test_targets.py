@@ -252,3 +252,63 @@ def test_octave_constant_is_the_python_constant():
         timeout=120,
     )
     assert [float(v) for v in run.stdout.split()] == list(ritz.BETA_L)
+
+
+EDGE_PROGRAM = r"""
+#include <math.h>
+#include <stdio.h>
+#include "symimpact.h"
+
+/* Table 1's m = 0.15 kg case with the paper's B/A = -M/m: the iteration converges. */
+#define ARGS 0.15, 155300.0, 83.6, 0.0, 0.075, -1.0 / 0.15
+int main(void)
+{
+    double m[3] = {0.15, 0.2, 0.25}, a[3] = {155300.0, 155300.0, 155300.0};
+    double b[3] = {83.6, 83.6, 83.6}, c1[3] = {0.0, 0.0, 0.0}, v[3] = {0.075, 0.075, 0.075};
+    double ba[3] = {-1.0 / 0.15, -1.0 / 0.2, -1.0 / 0.25}, out[3];
+    long steps = 99;
+    double T;
+    /* the batch entry points with steps_taken == NULL, as the header allows */
+    symimpact_fixed_points_contact_duration_batch(3, m, a, b, c1, v, ba, 1e-14, 100, out, NULL);
+    symimpact_fixed_points_contact_duration_newton_batch(3, m, a, b, c1, v, ba, 1e-14, 100, out, NULL);
+    symimpact_fixed_points_contact_duration_printed_batch(3, m, a, b, c1, v, ba, 1e-14, 100, out, NULL);
+    printf("batch %.6f %.6f %.6f\n", out[0], out[1], out[2]);
+    T = symimpact_fixed_points_contact_duration(ARGS, 1e-14, 100, &steps);
+    printf("ok %.6f %ld\n", T, steps);
+    T = symimpact_fixed_points_contact_duration(ARGS, NAN, 100, &steps);
+    printf("nan_tol %d %ld\n", isnan(T) ? 1 : 0, steps);
+    T = symimpact_fixed_points_contact_duration_newton(ARGS, -1.0, 100, &steps);
+    printf("negative_tol %d %ld\n", isnan(T) ? 1 : 0, steps);
+    T = symimpact_fixed_points_contact_duration_printed(ARGS, 1e-14, 0, &steps);
+    printf("zero_max_iter %d %ld\n", isnan(T) ? 1 : 0, steps);
+    return 0;
+}
+"""
+
+
+def test_c_iterations_are_honest_at_their_edges_under_sanitizers(tmp_path):
+    """Issue 16, item 6: the batch entry points accept a NULL steps_taken (they wrote through it:
+    a segfault for n ≥ 2); a NaN or negative tol or max_iter ≤ 0 gives NaN and steps_taken = −1
+    (it returned the start with 0 steps, which looks converged).  Compiled with AddressSanitizer
+    and UndefinedBehaviorSanitizer, any report aborting the run."""
+    cc = require_tool(os.environ.get("CC", "cc"))
+    src = tmp_path / "edges.c"
+    src.write_text(EDGE_PROGRAM, encoding="utf-8")
+    exe = tmp_path / "edges"
+    flags = ["-std=c99", "-Wall", "-Wextra", "-pedantic", "-Werror", "-g",
+             "-fsanitize=address,undefined", "-fno-sanitize-recover=all"]  # fmt: skip
+    subprocess.run(
+        [cc, *flags, "-I", str(ROOT / "generated" / "c"), str(src),
+         str(ROOT / "generated" / "c" / "symimpact.c"), "-o", str(exe), "-lm"],
+        check=True, capture_output=True, text=True,
+    )  # fmt: skip
+    run = subprocess.run([str(exe)], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 0, run.stderr
+    assert run.stderr == ""
+    lines = dict(line.split(" ", 1) for line in run.stdout.splitlines())
+    assert lines["nan_tol"] == "1 -1"
+    assert lines["negative_tol"] == "1 -1"
+    assert lines["zero_max_iter"] == "1 -1"
+    value, steps = lines["ok"].split()
+    assert 0 < int(steps) < 100 and 0.05 < float(value) < 0.5
+    assert all(0.05 < float(x) < 0.5 for x in lines["batch"].split())

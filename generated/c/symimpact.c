@@ -817,6 +817,12 @@ double symimpact_fixed_points_contact_duration(double m, double a, double b, dou
 {
     double T, T_previous;
     long iterations;
+    if (!(tol >= 0.0) || max_iter <= 0) {  /* a NaN or negative tol, or no step allowed */
+        if (steps_taken != NULL) {
+            *steps_taken = -1;
+        }
+        return NAN;
+    }
     const double _c0 = (ba - 1)/ba;
     const double _c1 = _c0/m;
     T = 3.141592653589793*sqrt(m)/(sqrt(_c0)*sqrt(b));
@@ -837,7 +843,7 @@ void symimpact_fixed_points_contact_duration_batch(size_t n, const double *restr
 {
     size_t i;
     for (i = 0; i < n; ++i) {
-        out[i] = symimpact_fixed_points_contact_duration(m[i], a[i], b[i], c1[i], zdot0[i], ba[i], tol, max_iter, &steps_taken[i]);
+        out[i] = symimpact_fixed_points_contact_duration(m[i], a[i], b[i], c1[i], zdot0[i], ba[i], tol, max_iter, steps_taken != NULL ? &steps_taken[i] : NULL);
     }
 }
 
@@ -848,6 +854,12 @@ double symimpact_fixed_points_contact_duration_newton(double m, double a, double
     double T, T_previous;
     double _c6, _c7;
     long iterations;
+    if (!(tol >= 0.0) || max_iter <= 0) {  /* a NaN or negative tol, or no step allowed */
+        if (steps_taken != NULL) {
+            *steps_taken = -1;
+        }
+        return NAN;
+    }
     const double _c0 = pow(3.141592653589793, 2);
     const double _c1 = ba - 1;
     const double _c2 = _c1/(ba*m);
@@ -876,7 +888,7 @@ void symimpact_fixed_points_contact_duration_newton_batch(size_t n, const double
 {
     size_t i;
     for (i = 0; i < n; ++i) {
-        out[i] = symimpact_fixed_points_contact_duration_newton(m[i], a[i], b[i], c1[i], zdot0[i], ba[i], tol, max_iter, &steps_taken[i]);
+        out[i] = symimpact_fixed_points_contact_duration_newton(m[i], a[i], b[i], c1[i], zdot0[i], ba[i], tol, max_iter, steps_taken != NULL ? &steps_taken[i] : NULL);
     }
 }
 
@@ -886,6 +898,12 @@ double symimpact_fixed_points_contact_duration_printed(double m, double a, doubl
 {
     double T, T_previous;
     long iterations;
+    if (!(tol >= 0.0) || max_iter <= 0) {  /* a NaN or negative tol, or no step allowed */
+        if (steps_taken != NULL) {
+            *steps_taken = -1;
+        }
+        return NAN;
+    }
     const double _c0 = ba/(ba - 1);
     const double _c1 = _c0/m;
     T = 2*3.141592653589793*sqrt(m)/(sqrt(_c0)*sqrt(b));
@@ -906,6 +924,6 @@ void symimpact_fixed_points_contact_duration_printed_batch(size_t n, const doubl
 {
     size_t i;
     for (i = 0; i < n; ++i) {
-        out[i] = symimpact_fixed_points_contact_duration_printed(m[i], a[i], b[i], c1[i], zdot0[i], ba[i], tol, max_iter, &steps_taken[i]);
+        out[i] = symimpact_fixed_points_contact_duration_printed(m[i], a[i], b[i], c1[i], zdot0[i], ba[i], tol, max_iter, steps_taken != NULL ? &steps_taken[i] : NULL);
     }
 }

@@ -454,7 +454,9 @@ void symimpact_free_flight_impact_mass_displacement_batch(size_t n, const double
 /* Contact duration T_CD, Eq. 31 iterated from T⁽⁰⁾ to convergence [s], paper Eq. 31: iterated
  * until |T(i) - T(i-1)| <= tol*|T(i)| or max_iter steps (suggested: tol = 1e-14,
  * max_iter = 100).  *steps_taken (if not NULL) receives the steps taken, max_iter where the
- * iteration did not converge; the value is NaN where an iterate is not real.
+ * iteration did not converge; the value is NaN where an iterate is not real.  A NaN or negative tol,
+ * or max_iter <= 0, is refused: the value is NaN and *steps_taken is -1.  The _batch entry point
+ * takes steps_taken == NULL too (then no counts are written).
  *   m: Impact mass m [kg]
  *   a: Cubic coefficient a [N/m^3]
  *   b: Linear coefficient b [N/m]
@@ -468,7 +470,9 @@ void symimpact_fixed_points_contact_duration_batch(size_t n, const double *restr
 /* Contact duration T_CD, the fixed point of Eq. 31 by Newton's method [s], paper Eq. 31: iterated
  * until |T(i) - T(i-1)| <= tol*|T(i)| or max_iter steps (suggested: tol = 1e-14,
  * max_iter = 100).  *steps_taken (if not NULL) receives the steps taken, max_iter where the
- * iteration did not converge; the value is NaN where an iterate is not real.
+ * iteration did not converge; the value is NaN where an iterate is not real.  A NaN or negative tol,
+ * or max_iter <= 0, is refused: the value is NaN and *steps_taken is -1.  The _batch entry point
+ * takes steps_taken == NULL too (then no counts are written).
  *   m: Impact mass m [kg]
  *   a: Cubic coefficient a [N/m^3]
  *   b: Linear coefficient b [N/m]
@@ -482,7 +486,9 @@ void symimpact_fixed_points_contact_duration_newton_batch(size_t n, const double
 /* Contact duration T_CD, Eq. 31 iterated from T⁽⁰⁾ to convergence [s], paper Eq. 31 as printed (see errata.md): iterated
  * until |T(i) - T(i-1)| <= tol*|T(i)| or max_iter steps (suggested: tol = 1e-14,
  * max_iter = 100).  *steps_taken (if not NULL) receives the steps taken, max_iter where the
- * iteration did not converge; the value is NaN where an iterate is not real.
+ * iteration did not converge; the value is NaN where an iterate is not real.  A NaN or negative tol,
+ * or max_iter <= 0, is refused: the value is NaN and *steps_taken is -1.  The _batch entry point
+ * takes steps_taken == NULL too (then no counts are written).
  *   m: Impact mass m [kg]
  *   a: Cubic coefficient a [N/m^3]
  *   b: Linear coefficient b [N/m]
