@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import math
+import os
 import struct
 from pathlib import Path
 
@@ -246,17 +247,41 @@ def test_compare_knows_rounding_from_truncation(ours, printed, rounds, truncates
 
 
 # --- folder behaviour ------------------------------------------------------------------------------
-def test_refuses_a_nonempty_folder_and_force_replaces_it(tmp_path, capsys):
+def test_refuses_a_nonempty_folder_and_force_replaces_only_its_own(tmp_path, capsys):
+    """Issue 16, item 5: --force removed any non-empty folder (a thesis.tex went with it); now it
+    replaces only a folder symimpact wrote (it holds the .symimpact-output marker)."""
     out = tmp_path / "rep"
     out.mkdir()
-    (out / "keep.txt").write_text("x")
-    assert main(["reproduce", str(out), "--quick", "--quiet"]) == 2
-    err = capsys.readouterr().err
-    assert "out" in err and "--force" in err and "Traceback" not in err
-    assert (out / "keep.txt").exists()
-    assert main(["reproduce", str(out), "--quick", "--quiet", "--force"]) == 0
-    assert not (out / "keep.txt").exists() and (out / "index.html").exists()
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["rep"]
+    (out / "thesis.tex").write_text("x")
+    for extra in ([], ["--force"]):
+        assert main(["reproduce", str(out), "--quick", "--quiet", *extra]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "out" in err and "Traceback" not in err
+        assert (out / "thesis.tex").exists()
+    assert "not written by symimpact" in err
+    mine = tmp_path / "mine"
+    assert main(["reproduce", str(mine), "--quick", "--quiet"]) == 0
+    (mine / "extra.txt").write_text("x")
+    assert main(["reproduce", str(mine), "--quick", "--quiet", "--force"]) == 0
+    assert not (mine / "extra.txt").exists() and (mine / "index.html").exists()
+    assert (mine / ".symimpact-output").is_file()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["mine", "rep"]  # no leftovers
+
+
+def test_leftovers_of_killed_runs_are_removed_and_links_refused(tmp_path):
+    from symimpact.io import staged_folder
+
+    dead = tmp_path / ".rep.partial-999999999-abc"  # no process has this pid
+    dead.mkdir()
+    live = tmp_path / f".rep.partial-{os.getpid()}-abc"  # a run still going
+    live.mkdir()
+    with staged_folder(tmp_path / "rep") as tmp:
+        (tmp / "a.txt").write_text("a")
+    assert not dead.exists() and live.exists()
+    (tmp_path / "link").symlink_to(tmp_path / "rep")
+    with pytest.raises(ParameterError, match="symbolic link"):
+        with staged_folder(tmp_path / "link", force=True):
+            pass
 
 
 def test_interrupted_run_leaves_no_report(tmp_path, monkeypatch):

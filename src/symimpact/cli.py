@@ -84,8 +84,12 @@ def _add_initial(p: argparse.ArgumentParser) -> None:
 def _add_output(p: argparse.ArgumentParser, plot: bool = False) -> None:
     p.add_argument("--json", action="store_true", help="machine-readable output on stdout")
     if plot:
-        p.add_argument("--plot", metavar="FILE.png", help="write a figure")
-        p.add_argument("--csv", metavar="FILE", help="write a table")
+        p.add_argument(
+            "--plot", metavar="FILE.png", help="write a figure (a symbolic link: to its target)"
+        )
+        p.add_argument(
+            "--csv", metavar="FILE", help="write a table (a symbolic link: to its target)"
+        )
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -113,7 +117,11 @@ def build_parser() -> argparse.ArgumentParser:
         "default symimpact-report",
     )
     p.add_argument("--quick", action="store_true", help="coarser grids: seconds, not a minute")
-    p.add_argument("--force", action="store_true", help="replace a non-empty report folder")
+    p.add_argument(
+        "--force",
+        action="store_true",
+        help="replace a report folder symimpact wrote before (never another non-empty folder)",
+    )
     p.add_argument("--quiet", action="store_true", help="no progress bars")
 
     p = sub.add_parser("ritz", help="Ritz constants of the cantilever (Eq. 1–6)")
@@ -183,7 +191,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--out", required=True, metavar="DIR", help="folder to create (new or empty unless --force)"
     )
-    p.add_argument("--force", action="store_true", help="replace a non-empty folder")
+    p.add_argument(
+        "--force",
+        action="store_true",
+        help="replace a folder symimpact wrote before (never another non-empty folder)",
+    )
 
     p = sub.add_parser(
         "sweep",
@@ -231,18 +243,23 @@ def build_parser() -> argparse.ArgumentParser:
         "--out",
         metavar="FILE",
         help="stream the table to FILE.csv or FILE.parquet as chunks finish; the same command "
-        "after an interruption computes only the missing runs",
+        "after an interruption computes only the missing runs (a symbolic link: written to its "
+        "target)",
     )
     g.add_argument("--force", action="store_true", help="replace an existing --out file")
     g.add_argument("--quiet", action="store_true", help="no progress bar")
     g = p.add_argument_group("output")
     g.add_argument("--json", action="store_true", help="machine-readable rows on stdout")
-    g.add_argument("--csv", metavar="FILE", help="write the table as CSV when done")
+    g.add_argument(
+        "--csv",
+        metavar="FILE",
+        help="write the table as CSV when done (a symbolic link: to its target)",
+    )
     g.add_argument(
         "--plot",
         metavar="FILE.png",
         help="one swept input: DI, N_eff and effectiveness against it; two or more: a heat map "
-        "of --value over --axes with the optimum marked",
+        "of --value over --axes with the optimum marked (a symbolic link: to its target)",
     )
     g.add_argument(
         "--value", default="damping_inclination", metavar="OUTPUT", help="heat-map output"

@@ -54,8 +54,30 @@ def fingerprint(system: Any, points: Any, settings: dict[str, Any]) -> dict[str,
     }
 
 
+class MapStoreWarning(UserWarning):
+    """A map store was found damaged on resume; what was damaged is recomputed."""
+
+
+def _sha256(path: Path) -> str:
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
 class MapStore:
-    """The output file of one map and its folder of finished chunks (see the module text)."""
+    """The output file of one map and its folder of finished chunks (see the module text).
+
+    The folder holds ``spec.json`` (the map's fingerprint), one file per finished chunk and
+    ``manifest.json``: for every chunk, its run indices and the SHA-256 of its bytes, written
+    (atomically, synced to disk) after the chunk itself.  On resume every chunk is verified
+    against the manifest; one that is missing, truncated, unreadable, of another schema,
+    duplicated or altered is reported (a :class:`MapStoreWarning`, one line) and its runs are
+    computed again, so a resumed table never silently differs.  A damaged ``spec.json`` is
+    restored from the manifest's copy when that still matches the inputs.  A lock file beside the
+    output keeps a second map from writing the same ``out`` at the same time.
+    """
 
     def __init__(
         self,
@@ -77,18 +99,75 @@ class MapStore:
             raise ParameterError("out", f"{str(self.out)!r} is a folder")
         self.partial = folder / f".{self.out.name}.partial"
         self.spec = fingerprint(system, points, settings)
+        self._lock(folder)
+        try:
+            self._open(force)
+        except BaseException:
+            self.close()
+            raise
+
+    def _lock(self, folder: Path) -> None:
+        import fcntl
+
+        self._lock_path = folder / f".{self.out.name}.lock"
+        try:
+            self._lock_file: Any = open(self._lock_path, "a+")  # held until close()
+        except OSError as exc:
+            raise ParameterError(
+                "out", f"cannot write in {str(folder)!r}: {exc.strerror}"
+            ) from None
+        try:
+            fcntl.flock(self._lock_file, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            self._lock_file.close()
+            self._lock_file = None
+            raise ParameterError(
+                "out",
+                f"another map is writing {str(self.out)!r} now (lock {str(self._lock_path)!r}); "
+                "wait for it to finish or choose another --out",
+            ) from None
+
+    def close(self) -> None:
+        """Release the lock (the store can no longer be written)."""
+        if getattr(self, "_lock_file", None) is not None:
+            self._lock_file.close()
+            self._lock_file = None
+
+    def _warn(self, message: str) -> None:
+        import warnings
+
+        warnings.warn(f"{str(self.out)!r}: {message}", MapStoreWarning, stacklevel=3)
+
+    def _open(self, force: bool) -> None:
         if self.out.exists() and not force:
             raise ParameterError(
                 "out",
                 f"{str(self.out)!r} exists (a finished map); use force (--force) to replace it",
             )
+        if self.partial.exists() and not self.partial.is_dir():
+            if not force:
+                raise ParameterError(
+                    "out",
+                    f"{str(self.partial)!r} is not a folder; use force (--force) to remove it",
+                )
+            self.partial.unlink()
         spec_file = self.partial / "spec.json"
         if self.partial.exists():
-            try:
-                old = json.loads(spec_file.read_text())
-            except (OSError, ValueError):
-                old = None
-            if old != self.spec:
+            old = _read_json(spec_file)
+            manifest = _read_json(self.partial / "manifest.json")
+            vouched = isinstance(manifest, dict) and manifest.get("spec") == self.spec
+            if old is None and vouched:
+                self._warn(
+                    "spec.json of the unfinished map was damaged; restored from the manifest"
+                )
+                self._write_text(spec_file, json.dumps(self.spec, indent=1, sort_keys=True))
+            elif old is None:
+                self._warn(
+                    "spec.json of the unfinished map is damaged and no manifest vouches for its "
+                    "chunks; every run is computed again"
+                )
+                shutil.rmtree(self.partial)
+            elif old != self.spec:
                 if not force:
                     raise ParameterError(
                         "out",
@@ -99,43 +178,129 @@ class MapStore:
         if not self.partial.exists():
             self.partial.mkdir()
             self._write_text(spec_file, json.dumps(self.spec, indent=1, sort_keys=True))
+        manifest = _read_json(self.partial / "manifest.json")
+        if not (isinstance(manifest, dict) and isinstance(manifest.get("chunks"), dict)):
+            if (self.partial / "manifest.json").exists():
+                self._warn("manifest.json was damaged; the chunks it listed are computed again")
+            manifest = {"spec": self.spec, "chunks": {}}
+        self.manifest = manifest
 
     @property
     def suffix(self) -> str:
         return ".csv" if self.format == "csv" else ".parquet"
 
     def _write_text(self, path: Path, text: str) -> None:
-        with _temporary_beside(path, "out", ".tmp") as tmp:
+        with _temporary_beside(path, "out", ".tmp", sync=True) as tmp:
             Path(tmp).write_text(text)
 
+    def _save_manifest(self) -> None:
+        self._write_text(
+            self.partial / "manifest.json", json.dumps(self.manifest, indent=1, sort_keys=True)
+        )
+
+    def _verify(self, name: str, entry: Any, seen: set[int]) -> list[dict[str, Any]] | str:
+        """The rows of chunk ``name`` if it verifies against its manifest entry, else why not."""
+        from .maps import OUTPUTS
+
+        path = self.partial / name
+        if not isinstance(entry, dict) or not {"sha256", "runs"} <= set(entry):
+            return "its manifest entry is damaged"
+        if not path.is_file():
+            return "it is missing"
+        if _sha256(path) != entry["sha256"]:
+            return "its bytes differ from the checksum recorded when it was written (truncated "
+            "or altered)"
+        try:
+            rows = _read_rows(path, self.format)
+        except Exception as exc:  # any parse failure of a damaged file
+            return f"it cannot be read ({type(exc).__name__})"
+        expected = {"run", *self.spec["names"], *OUTPUTS}
+        if not rows or set(rows[0]) != expected:
+            return "its columns are not this map's"
+        runs = [r["run"] for r in rows]
+        if runs != entry["runs"]:
+            return "its run indices are not the ones recorded"
+        if seen.intersection(runs) or len(set(runs)) != len(runs):
+            return "it repeats runs of another chunk"
+        if not all(isinstance(i, int) and 0 <= i < self.spec["points"] for i in runs):
+            return "its run indices are out of range"
+        return rows
+
     def rows(self) -> list[dict[str, Any]]:
-        """The rows of every finished chunk (as dicts; missing values as None)."""
+        """The rows of every finished chunk that verifies (as dicts; missing values as None).
+
+        A chunk that does not verify, or a file in the folder the manifest does not list, is
+        reported in one line and removed; its runs are then computed again."""
         rows: list[dict[str, Any]] = []
-        for f in sorted(self.partial.glob(f"chunk-*{self.suffix}")):
-            rows.extend(_read_rows(f, self.format))
+        seen: set[int] = set()
+        chunks = self.manifest["chunks"]
+        changed = False
+        for name in sorted(chunks):
+            got = self._verify(name, chunks[name], seen)
+            if isinstance(got, str):
+                n = len(chunks[name].get("runs", [])) if isinstance(chunks[name], dict) else 0
+                self._warn(f"chunk {name}: {got}; its {n} runs are computed again")
+                _remove(self.partial / name)
+                del chunks[name]
+                changed = True
+                continue
+            seen.update(r["run"] for r in got)
+            rows.extend(got)
+        for path in sorted(self.partial.glob("chunk-*")):
+            if path.name not in chunks:
+                if not path.name.endswith(".tmp") and not path.name.startswith("."):
+                    self._warn(
+                        f"chunk {path.name}: not in the manifest (the map stopped while writing "
+                        "it?); its runs are computed again"
+                    )
+                _remove(path)
+        if changed:
+            self._save_manifest()
         return rows
 
     def _write(self, df, path: Path) -> None:
-        with _temporary_beside(path, "out", self.suffix) as tmp:
+        with _temporary_beside(path, "out", self.suffix, sync=True) as tmp:
             if self.format == "csv":
                 df.to_csv(tmp, index=False, float_format="%.17g", na_rep="")
             else:
                 df.to_parquet(tmp, index=False)
 
     def write_chunk(self, rows: list[dict[str, Any]]) -> None:
-        """Save one finished chunk (atomically)."""
+        """Save one finished chunk (atomically, synced), then record it in the manifest."""
         from .maps import tidy_table
 
         names = self.spec["names"]
         df = tidy_table(rows, names)
         first = int(df["run"].iloc[0])
-        self._write(df, self.partial / f"chunk-{first:09d}{self.suffix}")
+        name = f"chunk-{first:09d}{self.suffix}"
+        self._write(df, self.partial / name)
+        self.manifest["chunks"][name] = {
+            "runs": [int(r) for r in df["run"]],
+            "sha256": _sha256(self.partial / name),
+        }
+        self._save_manifest()
 
     def finish(self, table) -> Path:
         """Write the complete table to the output file and remove the chunk folder."""
         self._write(table, self.out)
         shutil.rmtree(self.partial, ignore_errors=True)
+        self._lock_path.unlink(missing_ok=True)
+        self.close()
         return self.out
+
+
+def _read_json(path: Path) -> Any:
+    try:
+        return json.loads(path.read_text())
+    except (OSError, ValueError):
+        return None
+
+
+def _remove(path: Path) -> None:
+    if path.is_dir() and not path.is_symlink():
+        shutil.rmtree(path, ignore_errors=True)
+    else:
+        path.unlink(missing_ok=True)
 
 
 def read_map(path: str | os.PathLike):

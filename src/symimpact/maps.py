@@ -472,26 +472,30 @@ def parameter_map(
             },
             force=force,
         )
-    rows = map_rows(
-        system,
-        points,
-        x0=x0,
-        xdot0=xdot0,
-        y0=y0,
-        ydot0=ydot0,
-        t_end=t_end,
-        contact=contact,
-        executor=executor,
-        workers=workers,
-        client=client,
-        scheduler=scheduler,
-        store=store,
-        chunk_size=chunk_size,
-        progress=progress,
-    )
-    table = tidy_table(rows, points.names)
-    if store is not None:
-        store.finish(table)
+    try:
+        rows = map_rows(
+            system,
+            points,
+            x0=x0,
+            xdot0=xdot0,
+            y0=y0,
+            ydot0=ydot0,
+            t_end=t_end,
+            contact=contact,
+            executor=executor,
+            workers=workers,
+            client=client,
+            scheduler=scheduler,
+            store=store,
+            chunk_size=chunk_size,
+            progress=progress,
+        )
+        table = tidy_table(rows, points.names)
+        if store is not None:
+            store.finish(table)
+    finally:
+        if store is not None:
+            store.close()
     return table
 
 
