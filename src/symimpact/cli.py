@@ -610,22 +610,73 @@ def _join_negative_values(parser: argparse.ArgumentParser, argv: Sequence[str]) 
     return out
 
 
+#: Exit statuses: 0 done, 2 bad input (one line naming the parameter), 3 a fault of the machine
+#: or of the files (full disk, unreadable path, lost Dask cluster: one line saying what and why),
+#: 128 + N when ended by signal N (130 for Ctrl-C, 143 for SIGTERM, 129 for SIGHUP).
+EXIT_BAD_INPUT, EXIT_FAULT = 2, 3
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM or SIGHUP: unwinds like Ctrl-C, so pools and partial files are cleaned up."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+def _on_signal(signum, frame) -> None:
+    raise Terminated(signum)
+
+
+def _one_line_warning(command: str):
+    def show(message, category, filename, lineno, file=None, line=None) -> None:
+        text = " ".join(str(message).split())
+        print(f"symimpact {command}: warning: {text}", file=sys.stderr)
+
+    return show
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    """Entry point of ``symimpact``; returns the exit status (2 on bad input)."""
+    """Entry point of ``symimpact``; returns the exit status (see ``EXIT_*``: 2 on bad input, 3
+    on a fault, 128 + N on signal N)."""
+    import signal
+    import warnings
+
     parser = build_parser()
     argv = sys.argv[1:] if argv is None else list(argv)
     ns = parser.parse_args(_join_negative_values(parser, argv))
+    shown = warnings.showwarning
+    warnings.showwarning = _one_line_warning(ns.command)  # every warning: one line
+    previous = {}
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        try:
+            previous[sig] = signal.signal(sig, _on_signal)
+        except ValueError:  # not the main thread (e.g. called from a worker thread)
+            pass
     try:
         COMMANDS[ns.command](ns)
     except SymimpactError as exc:
         print(f"symimpact {ns.command}: error: {exc}", file=sys.stderr)
-        return 2
+        return EXIT_BAD_INPUT
+    except Terminated as exc:
+        print(f"symimpact {ns.command}: ended by signal {exc.signum}", file=sys.stderr)
+        return 128 + exc.signum
     except KeyboardInterrupt:
         print(f"symimpact {ns.command}: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:  # output piped into a program that stopped reading (e.g. head)
         sys.stderr.close()
         return 0
+    except (OSError, MemoryError) as exc:  # the machine or the files, not the input
+        what = f"{exc.strerror} ({exc.filename})" if getattr(exc, "strerror", None) else exc
+        if getattr(exc, "filename", None) is None and getattr(exc, "strerror", None):
+            what = exc.strerror
+        print(f"symimpact {ns.command}: fault: {what or type(exc).__name__}", file=sys.stderr)
+        return EXIT_FAULT
+    finally:
+        warnings.showwarning = shown
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
     return 0
 
 

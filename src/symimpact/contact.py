@@ -54,6 +54,12 @@ def amplitude_ratio_roots(
         w2 = float(getattr(harmonic_balance, f"linear_frequency_squared_{name}")(K, M, m, b))
         ratio = float(getattr(harmonic_balance, f"linear_amplitude_ratio_{name}")(K, M, m, b))
         if a > 0 and v0 is not None:
+            if not w2 > 0:  # the lower root of Eq. 12 is a difference that can round to ≤ 0
+                raise MethodNotApplicable(
+                    "perturbation",
+                    f"the {name.replace('_', '-')} frequency of Eq. 12 rounds to {w2:g} rad²/s² "
+                    "for these magnitudes of K, M, m and b, so Eq. 20 cannot correct it",
+                )
             ratio = _eq20_ratio(M, K, m, a, b, positive_float("v0", v0), math.sqrt(w2), ratio)
         roots[name] = ratio
     roots["free"] = -M / m
