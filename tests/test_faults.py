@@ -128,3 +128,29 @@ def test_sets_file_with_a_byte_order_mark_reads(tmp_path):
     g.write_text("gap [mm]\n9,5\n")
     with pytest.raises(ParameterError):
         read_sets(g)
+
+
+@pytest.mark.parametrize("rng", ["x0=0:1e30:1e-300", "x0=0:1:5e-324"])
+def test_a_range_too_fine_to_count_is_one_line(rng, capsys):
+    assert main([*MAP, "--vary", rng]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "x0" in err and "1e6" in err
+
+
+def test_a_tiny_impact_mass_does_not_blame_an_option_that_was_not_given(capsys):
+    assert main(["contact-duration", "--m", "1e-30"]) == 0
+    captured = capsys.readouterr()
+    assert "ba" not in captured.err and "warning" not in captured.err
+    assert "not finite" in captured.out  # the perturbation method says why it does not apply
+
+
+def test_an_internal_error_is_one_line_with_its_own_status(monkeypatch, capsys):
+    import symimpact.cli as cli
+
+    def broken(ns):
+        raise TypeError("something the code did not expect")
+
+    monkeypatch.setitem(cli.COMMANDS, "fit", broken)
+    assert main(["fit"]) == cli.EXIT_INTERNAL
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "internal error: TypeError" in err

@@ -612,7 +612,8 @@ def _join_negative_values(parser: argparse.ArgumentParser, argv: Sequence[str]) 
 
 #: Exit statuses: 0 done, 2 bad input (one line naming the parameter), 3 a fault of the machine
 #: or of the files (full disk, unreadable path, lost Dask cluster: one line saying what and why),
-#: 128 + N when ended by signal N (130 for Ctrl-C, 143 for SIGTERM, 129 for SIGHUP).
+#: 128 + N when ended by signal N (130 for Ctrl-C, 143 for SIGTERM, 129 for SIGHUP), 70 for an
+#: internal error (a bug; SYMIMPACT_DEBUG=1 shows its traceback).
 EXIT_BAD_INPUT, EXIT_FAULT = 2, 3
 
 
@@ -634,6 +635,24 @@ def _one_line_warning(command: str):
         print(f"symimpact {command}: warning: {text}", file=sys.stderr)
 
     return show
+
+
+#: Exit status of an internal error (a bug in symimpact, not in the input): EX_SOFTWARE.
+EXIT_INTERNAL = 70
+
+
+def _internal(command: str, exc: BaseException) -> int:
+    import os
+
+    if os.environ.get("SYMIMPACT_DEBUG"):
+        raise exc
+    text = " ".join(str(exc).split())[:300]
+    print(
+        f"symimpact {command}: internal error: {type(exc).__name__}: {text} (a bug; rerun with "
+        "SYMIMPACT_DEBUG=1 for the traceback and report it)",
+        file=sys.stderr,
+    )
+    return EXIT_INTERNAL
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -673,6 +692,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             what = exc.strerror
         print(f"symimpact {ns.command}: fault: {what or type(exc).__name__}", file=sys.stderr)
         return EXIT_FAULT
+    except Exception as exc:  # a bug: one line naming it (SYMIMPACT_DEBUG=1 shows the traceback)
+        return _internal(ns.command, exc)
     finally:
         warnings.showwarning = shown
         for sig, handler in previous.items():

@@ -105,9 +105,17 @@ def amplitude_ratio(
     if isinstance(ba, str) and ba in BA_CHOICES:
         if system.b is None:
             raise ParameterError("b", "B/A from Eq. 13 needs the cubic law's b")
-        value = amplitude_ratio_roots(
-            system.M, system.K, system.m, system.b, system.a or 0.0, v0 if nonlinear else None
-        )[ba]
+        with np.errstate(all="ignore"):  # a non-finite root is reported below, not warned
+            value = amplitude_ratio_roots(
+                system.M, system.K, system.m, system.b, system.a or 0.0, v0 if nonlinear else None
+            )[ba]
+        if not math.isfinite(value):
+            raise MethodNotApplicable(
+                "perturbation",
+                f"the {ba} root B/A of Eq. 13 is not finite for M = {system.M:g} kg, "
+                f"K = {system.K:g} N/m, m = {system.m:g} kg, b = {system.b:g} N/m (the masses "
+                "or stiffnesses are too far apart for float arithmetic)",
+            )
     elif isinstance(ba, str):
         try:
             value = float(ba)

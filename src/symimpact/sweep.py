@@ -43,9 +43,11 @@ def parse_range(name: str, text: str) -> np.ndarray:
             raise ParameterError(name, f"range step must be positive, got {step:g}")
         if stop < start:
             raise ParameterError(name, f"range stop {stop:g} is below its start {start:g}")
-        n = int(np.floor((stop - start) / step * (1 + 1e-12) + 1e-9)) + 1
-        if n > 1_000_000:
-            raise ParameterError(name, f"range has {n} values; at most 1e6")
+        with np.errstate(all="ignore"):
+            steps = (stop - start) / step * (1 + 1e-12) + 1e-9
+        if not steps < 1_000_000:  # also an overflow to inf
+            raise ParameterError(name, f"range {text!r} has more than 1e6 values")
+        n = int(np.floor(steps)) + 1
         # 12 significant digits: "6 mm:35 mm:1 mm" gives 0.009, not 0.009000000000000001
         return np.array([float(f"{start + step * k:.12g}") for k in range(n)])
     return np.array([si_float(name, p.strip()) for p in text.split(",") if p.strip()])
