@@ -431,7 +431,9 @@ def _points(ns):
             given[1][2:], f"give one of --vary, --sets, --values, not {', '.join(given)}"
         )
     if ns.sets:
-        return as_points(sets=ns.sets)
+        from .maps import read_sets
+
+        return read_sets(ns.sets, progress=not ns.quiet)
     grid: dict[str, str] = {}
     for item in ns.vary:
         if "=" not in item:

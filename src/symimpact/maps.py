@@ -123,11 +123,13 @@ def _header_name(cell: str) -> tuple[str, str | None]:
     return cell, None
 
 
-def read_sets(path: str | os.PathLike) -> MapPoints:
+def read_sets(path: str | os.PathLike, progress: bool = False) -> MapPoints:
     """Parameter sets from a CSV file: one column per swept input, one row per run.
 
     A header cell is an input name, optionally with a unit (``gap [mm]``); a cell is a number
-    (in the header's unit, else SI) or a quantity with units (``9 mm``).
+    (in the header's unit, else SI) or a quantity with units (``9 mm``), read strictly
+    (:func:`symimpact.units.split_quantity`).  A byte-order mark is ignored.  ``progress``: a
+    progress bar on standard error for files of more than 10 000 sets (about 30 µs a cell).
     """
     import csv
 
@@ -144,7 +146,12 @@ def read_sets(path: str | os.PathLike) -> MapPoints:
     header = [_header_name(c) for c in rows[0]]
     names = _check_names([n for n, _ in header])
     values = np.empty((len(rows) - 1, len(names)))
-    for i, row in enumerate(rows[1:], start=2):
+    lines: Iterable = enumerate(rows[1:], start=2)
+    if progress and len(rows) > 10_001:
+        from tqdm import tqdm
+
+        lines = tqdm(lines, total=len(rows) - 1, desc="reading sets", unit="set", file=sys.stderr)
+    for i, row in lines:
         if len(row) != len(names):
             raise ParameterError("sets", f"line {i} has {len(row)} cells, the header {len(names)}")
         for j, ((name, unit), cell) in enumerate(zip(header, row, strict=True)):
