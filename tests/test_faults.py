@@ -154,3 +154,31 @@ def test_an_internal_error_is_one_line_with_its_own_status(monkeypatch, capsys):
     assert main(["fit"]) == cli.EXIT_INTERNAL
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "internal error: TypeError" in err
+
+
+def test_a_map_with_no_dask_worker_ends_in_one_line(monkeypatch, capsys):
+    """All workers lost: the map waited silently; now it ends after DASK_NO_WORKER_TIMEOUT with
+    one line and the fault status (here a cluster that never had a worker, timeout 2 s)."""
+    distributed = pytest.importorskip("distributed")
+    import symimpact.maps as maps
+
+    monkeypatch.setattr(maps, "DASK_NO_WORKER_TIMEOUT", 2.0)
+    with distributed.LocalCluster(
+        n_workers=0, host="127.0.0.1", dashboard_address=None, processes=True
+    ) as cluster:
+        started = time.monotonic()
+        code = main([*MAP, "--vary", "gap=6 mm:8 mm:1 mm", "--scheduler",
+                     cluster.scheduler_address])  # fmt: skip
+        assert time.monotonic() - started < 30
+    assert code == EXIT_FAULT
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "no Dask worker" in err
+
+
+def test_the_current_folder_is_never_replaced(tmp_path, monkeypatch, capsys):
+    (tmp_path / "notes.txt").write_text("x")
+    monkeypatch.chdir(tmp_path)
+    assert main(["reproduce", ".", "--force", "--quick", "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "current folder" in err
+    assert (tmp_path / "notes.txt").exists()
