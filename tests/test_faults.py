@@ -182,3 +182,16 @@ def test_the_current_folder_is_never_replaced(tmp_path, monkeypatch, capsys):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "current folder" in err
     assert (tmp_path / "notes.txt").exists()
+
+
+def test_an_output_path_that_is_a_symbolic_link_is_written_through(tmp_path, capsys):
+    """--csv pointing at a link replaced the link by a plain file; now the link stays and its
+    target gets the table (as --help says)."""
+    target = tmp_path / "real.csv"
+    target.write_text("old")
+    link = tmp_path / "link.csv"
+    link.symlink_to(target)
+    assert main(["simulate", "--K", "100 N/m", "--t-end", "1", "--csv", str(link)]) == 0
+    assert link.is_symlink()
+    assert target.read_text().splitlines()[0].startswith("t")  # the table's header, not "old"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link.csv", "real.csv"]
