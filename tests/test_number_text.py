@@ -111,3 +111,12 @@ def test_sets_cells_and_vary_lists_use_the_same_reader(tmp_path):
     bad.write_text('gap [mm]\n"9,5"\n', encoding="utf-8")
     with pytest.raises(ParameterError, match="decimal point"):
         read_sets(bad)
+
+
+def test_a_range_whose_step_has_no_unit_is_refused(capsys):
+    """Issue 17, item 3: "gap=6 mm:12 mm:2" took the step as 2 m and ran one gap."""
+    from symimpact.cli import main
+
+    assert main(["map", "--vary", "gap=6 mm:12 mm:2", "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "gap" in err and "units" in err

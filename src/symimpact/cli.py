@@ -212,8 +212,9 @@ def build_parser() -> argparse.ArgumentParser:
         default=[],
         metavar="NAME=RANGE",
         help='a swept input and its values, "start:stop:step" or "v1,v2,..." with units, e.g. '
-        '--vary "gap=6 mm:35 mm:1 mm" --vary mass_ratio=0.1,0.2; repeat for a grid (the '
-        "first varies slowest); names: " + ", ".join(_sweepable()),
+        '--vary "gap=6 mm:35 mm:1 mm" --vary mass_ratio=0.1,0.2 (in a range every value carries '
+        "its unit, or none for SI: 6 mm:35 mm:1 is refused); repeat for a grid (the first varies "
+        "slowest); names: " + ", ".join(_sweepable()),
     )
     g.add_argument(
         "--sets",

@@ -22,7 +22,7 @@ import numpy as np
 
 from .errors import ParameterError
 from .system import ImpactSystem
-from .units import si_float
+from .units import si_float, split_quantity
 
 
 def gap_class(n_impacts: int, n_effective: int) -> str:
@@ -38,6 +38,14 @@ def parse_range(name: str, text: str) -> np.ndarray:
         parts = text.split(":")
         if len(parts) != 3:
             raise ParameterError(name, f"range {text!r} must be start:stop:step")
+        units = [split_quantity(name, p.strip())[1] if p.strip() else "" for p in parts]
+        if any(units) and not all(units):  # "6 mm:12 mm:2" would take the 2 as 2 m
+            bare = [p.strip() for p, u in zip(parts, units, strict=True) if not u]
+            raise ParameterError(
+                name,
+                f"range {text!r} mixes values with and without units ({', '.join(bare)} has "
+                "none); give every value its unit, or none (SI)",
+            )
         start, stop, step = (si_float(name, p.strip()) for p in parts)
         if step <= 0:
             raise ParameterError(name, f"range step must be positive, got {step:g}")
