@@ -259,3 +259,28 @@ def test_atomic_write_interrupted_mid_file_leaves_nothing(tmp_path):
         atomic_write(tmp_path / "t.csv", half_then_fail, "csv")
     assert (tmp_path / "t.csv").read_text() == "old\n"  # the previous file is untouched
     assert [p.name for p in tmp_path.iterdir()] == ["t.csv"]
+
+
+def test_one_option_name_for_the_contact_law(capsys):
+    """Issue 17, item 1: contact-duration named it --law, simulate --contact."""
+    from symimpact.cli import main
+
+    args = ["contact-duration", "--method", "numerical", "--json"]
+    assert main([*args, "--contact", "hertz"]) == 0
+    new = json.loads(capsys.readouterr().out)
+    assert main([*args, "--law", "hertz"]) == 0  # the former name still works, unlisted
+    assert json.loads(capsys.readouterr().out) == new
+    assert main([*args, "--contact", "cubic"]) == 0
+    assert json.loads(capsys.readouterr().out) != new
+    with pytest.raises(SystemExit):
+        main(["contact-duration", "--help"])
+    help_text = capsys.readouterr().out
+    assert "--contact" in help_text and "--law" not in help_text
+
+
+def test_a_missing_value_reads_as_a_dash_in_text(capsys):
+    from symimpact.cli import main
+
+    assert main(["simulate", "--t-end", "0.01"]) == 0  # too short for four maxima: no DI
+    out = capsys.readouterr().out
+    assert "DI — µm" in out and "None" not in out and "n/a" not in out

@@ -154,11 +154,14 @@ def build_parser() -> argparse.ArgumentParser:
         help="default all",
     )
     p.add_argument(
-        "--law",
+        "--contact",
         choices=("cubic", "hertz", "linear"),
         default="cubic",
-        help="force law of the numerical method; default cubic",
+        help="contact force law of the numerical method (as in simulate); default cubic",
     )
+    # the former name, still read (hidden): one vocabulary in --help, no broken scripts
+    p.add_argument("--law", dest="contact", choices=("cubic", "hertz", "linear"),
+                   help=argparse.SUPPRESS)  # fmt: skip
     p.add_argument(
         "--ba",
         default="impact",
@@ -346,7 +349,7 @@ def _cmd_contact_duration(ns) -> None:
         ns.v0,
         ns.method,
         ba=ns.ba,
-        law=ns.law,
+        law=ns.contact,
         free=ns.free,
     )
     if ns.method != "all":
@@ -395,11 +398,11 @@ def _cmd_simulate(ns) -> None:
         plot_simulation(res, ns.plot)
     out = res.as_dict()
     di = res.damping_inclination
+    residual = res.energy["relative_residual"]
     text = (
         f"impacts {res.n_impacts}, effective {res.n_effective}, effectiveness "
-        f"{res.effectiveness if res.effectiveness is None else round(res.effectiveness, 3)}, "
-        f"DI {'n/a' if di is None else f'{di * 1e6:.2f} µm'}, energy residual "
-        f"{res.energy['relative_residual']}"
+        f"{_fmt(res.effectiveness, '.3g')}, DI {_fmt(None if di is None else di * 1e6, '.2f')} µm, "
+        f"energy residual {_fmt(residual, '.1e')} of the initial energy"
     )
     text += "".join(f"\nnote: {n}" for n in res.notes)
     _emit(ns, out, text)
@@ -520,6 +523,7 @@ def _cmd_sweep(ns) -> None:
 
 
 def _fmt(v, spec: str) -> str:
+    """A value for people: ``spec``-formatted, or "—" where it is missing (JSON has null)."""
     return "—" if v is None else format(v, spec)
 
 
