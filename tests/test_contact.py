@@ -50,7 +50,7 @@ def _ivp_duration(s, v0, law, free=False):
 @pytest.mark.parametrize("free", [False, True])
 def test_numerical_duration_matches_solve_ivp(law, free):
     s = ImpactSystem(M=1, K=1000, m=0.2, gap="9 mm", k_hz=1000, c1=0.3, contact=law)
-    got = contact_duration(s, 0.075, "numerical", free=free)
+    got = contact_duration(s, 0.075, "numerical", free=free).value
     assert got == pytest.approx(_ivp_duration(s, 0.075, law, free), rel=1e-10)
 
 
@@ -58,7 +58,7 @@ def test_numerical_hertz_free_equals_eq34():
     s = ImpactSystem(M=1, K=1000, m=np.array(0.15), gap="9 mm", k_hz=1000)
     for m in (0.15, 0.2, 0.25):
         s2 = s.with_(m=m)
-        got = contact_duration(s2, 0.075, "numerical", law="hertz", free=True)
+        got = contact_duration(s2, 0.075, "numerical", law="hertz", free=True).value
         assert got == pytest.approx(
             closed_forms.hertz_contact_duration(m, 1.0, 1000, 0.075), rel=1e-10
         )
@@ -91,7 +91,7 @@ def test_perturbation_derived_form_matches_free_body_truth_for_weak_cubic():
     # Two free bodies (B/A = −M/m): the derived Eq. 31 agrees with integration of the cubic law
     s = ImpactSystem(M=1, K=1000, m=0.15, gap="9 mm", k_hz=1000)
     pert = contact_duration(s, 0.075, "perturbation", ba="free")
-    truth = contact_duration(s, 0.075, "numerical", free=True)
+    truth = contact_duration(s, 0.075, "numerical", free=True).value
     assert pert.value == pytest.approx(truth, rel=1e-4)
     assert abs(pert.printed / truth - 1) > 0.1  # the printed factor (errata eq21_factor) is off
     assert pert.history.shape[0] == pert.iterations + 1
@@ -137,8 +137,10 @@ def test_linear_overdamped_is_not_applicable_but_numerical_is():
     s = ImpactSystem(M=1, K=1000, m=0.2, gap="9 mm", k1=120.0, c1=50.0, contact="linear")
     with pytest.raises(MethodNotApplicable, match="numerical method still applies"):
         contact_duration(s, 0.075, "linear")
-    out = contact_duration(s, 0.075, "all")
-    assert "linear" in out["not_applicable"]
+    from symimpact.contact import contact_durations
+
+    out = contact_durations(s, 0.075)
+    assert "linear" in out["not_applicable"] and out["numerical"].value > 0
 
 
 def test_bad_ba_and_speed():
@@ -150,3 +152,20 @@ def test_bad_ba_and_speed():
         contact_duration(s, -1, "hertz")
     assert e.value.parameter == "v0"
     assert math.isfinite(contact_duration(s, 0.075, "hertz"))
+
+
+def test_one_return_type_whatever_the_method():
+    """Issue 17, item 5: "perturbation" gave a PerturbationDuration, the others np.float64."""
+    from symimpact.contact import ContactDuration, contact_durations
+
+    s = ImpactSystem(M=1, K=1000, m=0.15, gap="9 mm", k_hz=1000)
+    every = contact_durations(s, 0.075)
+    for method in ("perturbation", "hertz", "linear", "numerical"):
+        one = contact_duration(s, 0.075, method)
+        assert isinstance(one, ContactDuration) and one.method == method
+        assert isinstance(float(one), float) and float(one) == float(every[method].value)
+    assert contact_duration(s, 0.075, "hertz").printed == pytest.approx(
+        closed_forms.hertz_contact_duration_printed(0.15, 1.0, 1000.0, 0.075), rel=1e-15
+    )
+    with pytest.raises(ParameterError, match="contact_durations"):
+        contact_duration(s, 0.075, "all")

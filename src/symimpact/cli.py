@@ -341,30 +341,24 @@ def _cmd_fit(ns) -> None:
 
 
 def _cmd_contact_duration(ns) -> None:
-    from .contact import contact_duration
+    from .contact import contact_duration, contact_durations
 
     system = _system(ns)
-    res = contact_duration(
-        system,
-        ns.v0,
-        ns.method,
-        ba=ns.ba,
-        law=ns.contact,
-        free=ns.free,
-    )
-    if ns.method != "all":
-        res = {ns.method: res}
+    kw = dict(ba=ns.ba, law=ns.contact, free=ns.free)
+    if ns.method == "all":
+        res = contact_durations(system, ns.v0, **kw)
+    else:
+        res = {ns.method: contact_duration(system, ns.v0, ns.method, **kw)}
     out: dict[str, Any] = {}
     for k, v in res.items():
+        if k == "not_applicable":
+            out[k] = v
+            continue
+        out[k] = float(v.value)
         if k == "perturbation":
-            out[k] = float(v.value)
             out["perturbation_printed"] = float(v.printed)
             out["perturbation_history"] = [float(h) for h in v.history]
             out["ba"] = float(v.ba)
-        elif k == "not_applicable":
-            out[k] = v
-        else:
-            out[k] = float(v)
     text = "\n".join(
         f"{k:<22} {v:.6g} s" if isinstance(v, float) and k != "ba" else f"{k:<22} {v}"
         for k, v in out.items()

@@ -134,16 +134,32 @@ def amplitude_ratio(
 
 # --- contact duration -----------------------------------------------------------------------------
 @dataclass(frozen=True)
-class PerturbationDuration:
-    """Eq. 31 iterated to convergence: value and history, derived and as printed [s]."""
+class ContactDuration:
+    """A contact duration by one method [s], with what that method gives besides: what
+    :func:`contact_duration` returns for every method.
+
+    ``value`` [s] (an array when v0 is one) and ``method``.  ``perturbation`` (Eq. 31) also
+    fills ``history`` (the iterates, shape (iterations + 1, ...)), ``printed`` and
+    ``printed_history`` (Eq. 31 as printed), ``ba`` and ``iterations``; ``hertz`` fills
+    ``printed`` (Eq. 34 with the printed constant 2.9432).  Fields a method does not have are
+    None.  ``float(d)`` is ``float(d.value)``.
+    """
 
     value: np.ndarray | float
-    history: np.ndarray  # (iterations + 1, *shape)
-    printed: np.ndarray | float
-    printed_history: np.ndarray
-    ba: np.ndarray | float
+    method: str = "perturbation"
+    history: np.ndarray | None = None
+    printed: np.ndarray | float | None = None
+    printed_history: np.ndarray | None = None
+    ba: np.ndarray | float | None = None
     iterations: int = 0
     notes: list[str] = field(default_factory=list)
+
+    def __float__(self) -> float:
+        return float(self.value)
+
+
+#: The former name of :class:`ContactDuration` (Eq. 31's result).
+PerturbationDuration = ContactDuration
 
 
 def _iterate(start, step, what, tol=1e-14, max_iter=500):
@@ -159,9 +175,7 @@ def _iterate(start, step, what, tol=1e-14, max_iter=500):
     raise ConvergenceError(what, [float(np.ravel(h)[bad]) for h in history[-6:]])
 
 
-def perturbation_duration(
-    m: Any, a: Any, b: Any, c1: Any, v0: Any, ba: Any
-) -> PerturbationDuration:
+def perturbation_duration(m: Any, a: Any, b: Any, c1: Any, v0: Any, ba: Any) -> ContactDuration:
     """Contact duration T_CD of Eq. 31 iterated from T⁽⁰⁾ to abs(ΔT) ≤ 1e-14·T [s] (vectorised).
 
     ``m`` [kg], ``a`` [N/m³], ``b`` [N/m], ``c1`` [N s/m], approach speed ``v0`` [m/s] and
@@ -189,8 +203,9 @@ def perturbation_duration(
         lambda T: ms.contact_duration_map_printed(T, m, a, b, c1, v0, ba),
         "Eq. 31 fixed point (as printed)",
     )
-    return PerturbationDuration(
+    return ContactDuration(
         value=value[()],
+        method="perturbation",
         history=hist,
         printed=pvalue[()],
         printed_history=phist,
@@ -284,32 +299,25 @@ def contact_duration(
     ba: Any = "impact",
     law: str | None = None,
     free: bool = False,
-) -> Any:
-    """Contact duration of one impact at approach speed ``v0`` [m/s], by ``method`` [s].
+) -> ContactDuration:
+    """Contact duration of one impact at approach speed ``v0`` [m/s] by ``method``, as a
+    :class:`ContactDuration` whatever the method (its ``value`` in s).
 
-    - ``perturbation`` (Eq. 31): a :class:`PerturbationDuration` (value, history, printed form).
-    - ``hertz`` (Eq. 34): needs ``system.k_hz``.
+    - ``perturbation`` (Eq. 31): also the iterates and the printed form.
+    - ``hertz`` (Eq. 34): needs ``system.k_hz``; also the printed constant's value.
     - ``linear`` (Eq. 35): needs ``system.k1``; underdamped contact (c₁² < 4k₁μ) only.
     - ``numerical``: integration of the contact phase of ``law`` (default: the system's law),
       main mass on its spring from rest (``free=True``: without the spring), to 1e-10 relative.
-    - ``all``: a dict of the four (methods that do not apply are left out with the reason under
-      ``"not_applicable"``).
 
-    ``v0`` may be an array; the result then has its shape.
+    Every method at once: :func:`contact_durations`.  ``v0`` may be an array; the values then
+    have its shape.
     """
     if method == "all":
-        out: dict[str, Any] = {}
-        skipped = {}
-        for meth in METHODS:
-            try:
-                out[meth] = contact_duration(system, v0, meth, ba=ba, law=law, free=free)
-            except MethodNotApplicable as exc:
-                skipped[meth] = exc.reason
-        if skipped:
-            out["not_applicable"] = skipped
-        return out
+        raise ParameterError(
+            "method", "'all' is contact_durations(); give one of " + ", ".join(METHODS)
+        )
     if method not in METHODS:
-        raise ParameterError("method", f"must be one of {', '.join(METHODS)} or all")
+        raise ParameterError("method", f"must be one of {', '.join(METHODS)}")
     v0 = positive("v0", v0)
     if method == "perturbation":
         if system.a is None or system.b is None:
@@ -319,7 +327,12 @@ def contact_duration(
     if method == "hertz":
         if system.k_hz is None:
             raise MethodNotApplicable("hertz", "Eq. 34 needs the Hertz stiffness k_hz")
-        return closed_forms.hertz_contact_duration(system.m, system.M, system.k_hz, v0)[()]
+        args = (system.m, system.M, system.k_hz, v0)
+        return ContactDuration(
+            value=closed_forms.hertz_contact_duration(*args)[()],
+            method="hertz",
+            printed=closed_forms.hertz_contact_duration_printed(*args)[()],
+        )
     if method == "linear":
         if system.k1 is None:
             raise MethodNotApplicable("linear", "Eq. 35 needs the linear stiffness k1")
@@ -331,11 +344,35 @@ def contact_duration(
                 "contact is overdamped and Eq. 35's square root is imaginary; the numerical "
                 "method still applies",
             )
-        return np.broadcast_to(
+        value = np.broadcast_to(
             closed_forms.linear_contact_duration(system.m, system.M, system.k1, system.c1),
             np.shape(v0),
         )[()]
-    return numerical_contact(system, v0, law=law, free=free).duration
+        return ContactDuration(value=value, method="linear")
+    duration = numerical_contact(system, v0, law=law, free=free).duration
+    return ContactDuration(value=duration, method="numerical")
+
+
+def contact_durations(
+    system: ImpactSystem,
+    v0: Any,
+    *,
+    ba: Any = "impact",
+    law: str | None = None,
+    free: bool = False,
+) -> dict[str, Any]:
+    """:func:`contact_duration` by every method: ``{method: ContactDuration}``, and under
+    ``"not_applicable"`` a ``{method: reason}`` for the methods that do not apply."""
+    out: dict[str, Any] = {}
+    skipped = {}
+    for meth in METHODS:
+        try:
+            out[meth] = contact_duration(system, v0, meth, ba=ba, law=law, free=free)
+        except MethodNotApplicable as exc:
+            skipped[meth] = exc.reason
+    if skipped:
+        out["not_applicable"] = skipped
+    return out
 
 
 # --- numerical contact ----------------------------------------------------------------------------

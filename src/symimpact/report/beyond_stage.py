@@ -49,8 +49,8 @@ def accuracy_errors(m_ratio: np.ndarray, v0: np.ndarray, K: float) -> dict[str, 
         truth = np.asarray(numerical_contact(s, v0, law="hertz").duration)
         out["truth"][i] = truth
         out["perturbation"][i] = contact_duration(s, v0, "perturbation").value
-        out["hertz"][i] = contact_duration(s, v0, "hertz")
-        out["linear"][i] = contact_duration(s, v0, "linear")
+        out["hertz"][i] = contact_duration(s, v0, "hertz").value
+        out["linear"][i] = contact_duration(s, v0, "linear").value
         out["penetration"][i] = closed_forms.hertz_max_penetration(s.m, s.M, K_HZ, v0)
         for k in ("perturbation", "hertz", "linear"):
             out[k][i] = 100 * np.abs(out[k][i] - truth) / truth
