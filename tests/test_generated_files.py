@@ -136,3 +136,15 @@ def test_wheel_ships_the_generated_kernels(tmp_path):
             relative = path.relative_to(ROOT / "generated").as_posix()
             assert f"symimpact/generated/{relative}" in names, relative
     assert not any(n.startswith(("derive/", "tests/")) for n in names)
+
+
+def test_reading_a_quantity_does_not_import_dask():
+    """pint imports dask's graph machinery when dask is installed; symimpact hides it (issue 17,
+    item 7: a quarter of a second of every command's start-up)."""
+    code = (
+        "import sys; from symimpact.units import si\n"
+        "assert si('gap', '9 mm') == 0.009\n"
+        "print('dask' in sys.modules); sys.exit(1 if 'dask' in sys.modules else 0)\n"
+    )
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout + run.stderr

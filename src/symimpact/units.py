@@ -59,8 +59,22 @@ MAGNITUDE = (1e-30, 1e30)
 
 @lru_cache(maxsize=1)
 def _registry():
-    import pint
+    """pint's unit registry, imported on first use.
 
+    pint imports dask's graph machinery when dask is installed (it is, for the Dask executor):
+    a quarter of a second of a command's start-up for nothing, since no quantity here holds a
+    dask array.  So dask is hidden from pint's import check unless something already imported
+    it."""
+    import sys
+
+    hide = "dask" not in sys.modules
+    if hide:
+        sys.modules["dask"] = None  # type: ignore[assignment]  # importlib then finds no dask
+    try:
+        import pint
+    finally:
+        if hide:
+            del sys.modules["dask"]
     return pint.UnitRegistry()
 
 
@@ -131,9 +145,9 @@ def split_quantity(name: str, text: str) -> tuple[float, str]:
 def _factor(unit_text: str, si_unit: str) -> tuple[str, Any]:
     """("ok", Decimal factor to ``si_unit``), ("unit", reason) or ("dimension", dimensionality)
     for a unit written as text; cached, so a column of cells in one unit reads pint once."""
+    ureg = _registry()  # first: it imports pint without dask
     import pint
 
-    ureg = _registry()
     try:
         parsed = ureg.parse_units("1" + unit_text if unit_text.startswith("/") else unit_text)
     except Exception as exc:  # pint raises assorted error types on malformed or unknown units
