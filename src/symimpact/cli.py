@@ -18,18 +18,20 @@ from typing import Any
 
 from .errors import SymimpactError
 
+#: The defaults are one stated system in which impacts happen and DI is defined: the report's
+#: reading of the paper's Table 2 (K in N/m, c1 = 5C = 5 N s/m, Ẋ0 = 0.5 m/s, t' = t·√(K/M) = 200).
 SYSTEM_OPTIONS = [
     ("--M", "main mass M [kg]", "1 kg"),
-    ("--K", "main stiffness K [N/m]", "100 N/cm"),
-    ("--C", "main damping C [N s/m] (or --zeta)", None),
-    ("--zeta", "damping ratio ζ = C/(2√(KM)) [1]", None),
+    ("--K", "main stiffness K [N/m]", "100 N/m"),
+    ("--C", "main damping C [N s/m] (or --zeta)", "1 N s/m"),
+    ("--zeta", "damping ratio ζ = C/(2√(KM)) [1], instead of --C", None),
     ("--m", "impact mass m [kg]", "0.25 kg"),
     ("--gap", "clearance d [m]", "9 mm"),
     ("--a", "cubic coefficient a [N/m^3] (Eq. 9)", "0.1553 N/cm^3"),
     ("--b", "cubic coefficient b [N/m] (Eq. 9)", "0.8360 N/cm"),
     ("--k-hz", "Hertz stiffness K_Hz [N/m^1.5] (Eq. 8)", "1000 N/m^1.5"),
     ("--k1", "linear contact stiffness k1 [N/m] (Eq. 35); default fitted to K_Hz", None),
-    ("--c1", "contact damping c1 [N s/m] (Eq. 10)", "0"),
+    ("--c1", "contact damping c1 [N s/m] (Eq. 10)", "5 N s/m"),
 ]
 
 
@@ -44,7 +46,7 @@ def _add_system(p: argparse.ArgumentParser, contact: bool = True) -> None:
         g.add_argument(
             flag,
             dest=flag[2:].replace("-", "_"),
-            default=default,
+            default=None if flag == "--C" else default,  # --zeta replaces the default C
             metavar="Q",
             help=f"{helptext}; default {default!r}" if default else helptext,
         )
@@ -65,6 +67,8 @@ def _system(ns: argparse.Namespace):
     kw: dict[str, Any] = {
         k: getattr(ns, k) for k in ("M", "K", "C", "zeta", "m", "gap", "k_hz", "k1", "c1")
     }
+    if kw["C"] is None and kw["zeta"] is None:
+        kw["C"] = dict((f, d) for f, _, d in SYSTEM_OPTIONS)["--C"]
     return ImpactSystem(contact="cubic" if law == "perturbation" else law, a=ns.a, b=ns.b, **kw)
 
 
@@ -78,7 +82,7 @@ def _add_initial(p: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--ydot0", default="0", metavar="Q", help="impact-mass velocity [m/s]; default 0"
     )
-    g.add_argument("--t-end", default="1 s", metavar="Q", help="end time [s]; default 1 s")
+    g.add_argument("--t-end", default="20 s", metavar="Q", help="end time [s]; default 20 s")
 
 
 def _add_output(p: argparse.ArgumentParser, plot: bool = False) -> None:
