@@ -622,16 +622,24 @@ def _join_negative_values(parser: argparse.ArgumentParser, argv: Sequence[str]) 
 EXIT_BAD_INPUT, EXIT_FAULT = 2, 3
 
 
-class Terminated(KeyboardInterrupt):
-    """SIGTERM or SIGHUP: unwinds like Ctrl-C, so pools and partial files are cleaned up."""
+def _ending_on_signal(command: str):
+    """A SIGTERM/SIGHUP handler: end the pool workers, say so in one line, exit 128 + N.
 
-    def __init__(self, signum: int) -> None:
-        super().__init__(signum)
-        self.signum = signum
+    It does not raise into the main thread: an exception raised by a signal handler while a
+    finaliser runs is printed and dropped, and the command would go on to the end.  Nothing is
+    lost by ending at once: every output is written to a temporary name and renamed when
+    complete, and the leftovers of an ended run are removed by the next one."""
 
+    def end(signum, frame) -> None:
+        import multiprocessing
+        import os
 
-def _on_signal(signum, frame) -> None:
-    raise Terminated(signum)
+        for child in multiprocessing.active_children():
+            child.terminate()
+        print(f"symimpact {command}: ended by signal {signum}", file=sys.stderr, flush=True)
+        os._exit(128 + signum)
+
+    return end
 
 
 def _one_line_warning(command: str):
@@ -674,7 +682,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     previous = {}
     for sig in (signal.SIGTERM, signal.SIGHUP):
         try:
-            previous[sig] = signal.signal(sig, _on_signal)
+            previous[sig] = signal.signal(sig, _ending_on_signal(ns.command))
         except ValueError:  # not the main thread (e.g. called from a worker thread)
             pass
     try:
@@ -682,9 +690,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     except SymimpactError as exc:
         print(f"symimpact {ns.command}: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
-    except Terminated as exc:
-        print(f"symimpact {ns.command}: ended by signal {exc.signum}", file=sys.stderr)
-        return 128 + exc.signum
     except KeyboardInterrupt:
         print(f"symimpact {ns.command}: interrupted", file=sys.stderr)
         return 130

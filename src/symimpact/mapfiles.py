@@ -246,6 +246,8 @@ class MapStore:
                 continue
             seen.update(r["run"] for r in got)
             rows.extend(got)
+        for path in sorted(self.partial.glob(".*.tmp")) + sorted(self.partial.glob(".chunk-*")):
+            _remove(path)  # temporary files of a run that was ended while writing
         for path in sorted(self.partial.glob("chunk-*")):
             if path.name not in chunks:
                 if not path.name.endswith(".tmp") and not path.name.startswith("."):
