@@ -300,3 +300,16 @@ def test_output_under_a_missing_folder_is_a_parameter_error(tmp_path):
     with pytest.raises(ParameterError) as exc:
         reproduce(tmp_path / "no" / "such" / "rep", quick=True, progress=False)
     assert exc.value.parameter == "out"
+
+
+def test_long_tables_are_links_and_the_paper_is_cited_by_title(report):
+    """Issue 17, item 8: the gap sweep behind Fig. 7 (hundreds of rows in the full report) is its
+    CSV link with a summary; the report cites the paper by its title, not by a path."""
+    path, sections = report
+    t = sections["vibration"].table("fig7_gap_sweep")
+    assert t.link_only and "gaps in range" in t.note
+    md = (path / "report.md").read_text(encoding="utf-8")
+    assert f"{len(t.rows)} rows, in the CSV file." in md
+    assert "| d [mm] | N_tot | N_eff | effectiveness | DI [µm] | class |" not in md
+    assert "shared/paper" not in md and "Free vibration analysis of nonlinear resilient" in md
+    assert "shared/paper" not in (path / "index.html").read_text(encoding="utf-8")

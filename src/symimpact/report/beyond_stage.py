@@ -26,6 +26,18 @@ from .figures import pyplot, save
 K_HZ = 1000.0  # N/m^1.5
 MAP_K = (100.0, 1000.0, 10000.0)  # N/m
 LEVELS = (1.0, 5.0, 10.0)  # per cent
+#: Bands of the accuracy map: cividis (readable with any colour vision), dark to light =
+#: within 1 %, 5 %, 10 %, beyond.
+BAND_COLOURS = ["#00204d", "#575d6d", "#a59c74", "#ffea46"]
+
+
+def _halo():
+    from matplotlib import patheffects
+
+    return [patheffects.withStroke(linewidth=3, foreground="w")]  # a line seen on any band
+
+
+HALO = _halo()
 STEPS = 1 + len(MAP_K)
 
 
@@ -77,9 +89,10 @@ def _accuracy_map(s: Section, folder: Path, n: int, tick: Any) -> None:
                 m_ratio,
                 err[key],
                 levels=[0, *LEVELS, max(100.0, float(np.max(err[key])) + 1)],
-                colors=["#1a9850", "#91cf60", "#fee08b", "#d73027"],
+                colors=BAND_COLOURS,
             )
-            ax.contour(v0, m_ratio, err["penetration"], levels=[0.02], colors="k", linewidths=0.8)
+            ax.contour(v0, m_ratio, err["penetration"], levels=[0.02], colors="k",
+                       linewidths=1.0, linestyles="--", path_effects=HALO)  # fmt: skip
             ax.set_xscale("log")
             ax.set_yscale("log")
             if i == 0:
@@ -94,6 +107,13 @@ def _accuracy_map(s: Section, folder: Path, n: int, tick: Any) -> None:
             rows.append([key, K, "max", float(np.max(err[key]))])
         tick()
     fig.colorbar(cs, ax=axes, ticks=[0, *LEVELS], label="|error| vs numerical truth [%]")
+    from matplotlib.lines import Line2D
+
+    fig.legend(
+        [Line2D([], [], color="k", lw=1.0, ls="--", path_effects=HALO)],
+        ["Hertz penetration = 2 cm (the fits' range; extrapolated to its right)"],
+        loc="upper center", fontsize=9, frameon=False,
+    )  # fmt: skip
     save(fig, folder, "accuracy_map", tight=False)
     s.blocks += [
         Figure(
@@ -101,9 +121,10 @@ def _accuracy_map(s: Section, folder: Path, n: int, tick: Any) -> None:
             "Accuracy map of the contact-duration formulas",
             "Colour: |T − T_truth|/T_truth with T_truth the contact phase of the Hertz law "
             "K_Hz = 1000 N/m^1.5 integrated with the main mass (M = 1 kg) on its spring K "
-            "(c1 = 0). Bands: within 1 %, 5 %, 10 % and beyond. The black line is where the "
-            "Hertz penetration reaches 2 cm, the range of the cubic and linear fits (to its right "
-            f"the fits are extrapolated). Grid {n}×{n} per panel, log-spaced.",
+            "(c1 = 0). Bands, dark to light (cividis, readable with any colour vision): within "
+            "1 %, 5 %, 10 % and beyond. The dashed black line (white halo) is where the Hertz "
+            "penetration reaches 2 cm, the range of the cubic and linear fits (to its right the "
+            f"fits are extrapolated). Grid {n}×{n} per panel, log-spaced.",
         ),
         Table(
             "accuracy_map_summary",

@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from ..contact import amplitude_ratio_roots, contact_duration, numerical_contact
 from ..generated import contact_fits
@@ -59,7 +60,8 @@ def _fig2(s: Section, folder: Path) -> None:
     plt = pyplot()
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True, height_ratios=(2, 1))
     ax1.plot(d * 1e3, hertz, "k", lw=2, label="Hertz $K_{Hz}z^{3/2}$ (Eq. 8)")
-    ax1.plot(d * 1e3, cubic, "C0--", label=f"cubic $az^3+bz$ (Eq. 9), a={a:.4g}, b={b:.4g}")
+    ax1.plot(d * 1e3, cubic, "C0--",
+             label=f"cubic $az^3+bz$ (Eq. 9), a = {a:.4g} N/m³, b = {b:.4g} N/m")  # fmt: skip
     ax1.plot(d * 1e3, linear, "C3:", label=f"linear $k_1z$, k1={k1:.4g} N/m")
     ax1.set_ylabel("contact force [N]")
     ax1.legend(fontsize=8)
@@ -156,6 +158,7 @@ def _fig3b(s: Section, folder: Path) -> None:
                 )  # fmt: skip
         ax.set_title(f"c1 = {c1:g} N s/m", fontsize=10)
         ax.set_xlabel("iteration i")
+        ax.xaxis.set_major_locator(MaxNLocator(integer=True))
     axes[0].set_ylabel("$T_{CD}^{(i)}$ [s]")
     axes[1].legend(fontsize=8)
     save(fig, folder, "fig3b_iterations")

@@ -24,6 +24,8 @@ class Table:
     rows: list[list[Any]]
     formats: list[str | None] | None = None
     note: str = ""
+    #: A long table (hundreds of rows) is shown as its CSV link and ``note`` only.
+    link_only: bool = False
 
     def cell(self, row: int, column: str) -> Any:
         """The raw value in ``row`` under the column headed ``column``."""
@@ -108,6 +110,9 @@ def markdown(
             elif isinstance(b, Table):
                 csv_link = f" ([{b.name}.csv]({b.name}.csv))" if links else ""
                 out += [f"**{b.title}**{csv_link}", ""]
+                if b.link_only:
+                    out += [f"{len(b.rows)} rows, in the CSV file. {b.note}".rstrip(), ""]
+                    continue
                 out.append("| " + " | ".join(b.columns) + " |")
                 out.append("|" + "---|" * len(b.columns))
                 for row in b.rows:
@@ -153,9 +158,11 @@ def html(title: str, meta: list[tuple[str, str]], sections: list[Section]) -> st
             if isinstance(b, str):
                 out.append(f"<p>{e(b)}</p>")
             elif isinstance(b, Table):
-                out.append(
-                    f'<p><b>{e(b.title)}</b> (<a href="{b.name}.csv">{b.name}.csv</a>)</p><table>'
-                )
+                head = f'<p><b>{e(b.title)}</b> (<a href="{b.name}.csv">{b.name}.csv</a>)</p>'
+                if b.link_only:
+                    out.append(head + f"<p>{len(b.rows)} rows, in the CSV file. {e(b.note)}</p>")
+                    continue
+                out.append(head + "<table>")
                 out.append("<tr>" + "".join(f"<th>{e(c)}</th>" for c in b.columns) + "</tr>")
                 for row in b.rows:
                     cells = "".join(f"<td>{e(b.display(v, j))}</td>" for j, v in enumerate(row))
