@@ -13,6 +13,15 @@ from typing import IO
 from .errors import ParameterError
 
 
+def _fsync(path: str | os.PathLike) -> None:
+    """Flush a file's (or a folder's entries') data to the disk."""
+    fd = os.open(path, os.O_RDONLY)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
 @contextmanager
 def _temporary_beside(
     path: str | os.PathLike, what: str, suffix: str, sync: bool = False
@@ -45,18 +54,10 @@ def _temporary_beside(
     try:
         yield tmp
         if sync:
-            fd = os.open(tmp, os.O_RDONLY)
-            try:
-                os.fsync(fd)
-            finally:
-                os.close(fd)
+            _fsync(tmp)
         os.replace(tmp, target)
         if sync:
-            fd = os.open(folder, os.O_RDONLY)
-            try:
-                os.fsync(fd)
-            finally:
-                os.close(fd)
+            _fsync(folder)  # the rename itself
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
