@@ -16,6 +16,7 @@ import sys
 from collections.abc import Sequence
 from typing import Any
 
+from .display import label, shown
 from .errors import SymimpactError
 
 #: The defaults are one stated system in which impacts happen and DI is defined: the report's
@@ -85,8 +86,21 @@ def _add_initial(p: argparse.ArgumentParser) -> None:
     g.add_argument("--t-end", default="20 s", metavar="Q", help="end time [s]; default 20 s")
 
 
+def _add_show(p: Any) -> None:
+    p.add_argument(
+        "--show",
+        action="append",
+        default=[],
+        metavar="NAME=UNIT",
+        help="show a quantity in another unit in text and plots, e.g. --show gap=µm "
+        "(defaults: mm for gaps and displacements, µm for DI, ms for durations; JSON and CSV "
+        "stay SI)",
+    )
+
+
 def _add_output(p: argparse.ArgumentParser, plot: bool = False) -> None:
-    p.add_argument("--json", action="store_true", help="machine-readable output on stdout")
+    p.add_argument("--json", action="store_true", help="machine-readable output on stdout (SI)")
+    _add_show(p)
     if plot:
         p.add_argument(
             "--plot", metavar="FILE.png", help="write a figure (a symbolic link: to its target)"
@@ -257,7 +271,8 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--force", action="store_true", help="replace an existing --out file")
     g.add_argument("--quiet", action="store_true", help="no progress bar")
     g = p.add_argument_group("output")
-    g.add_argument("--json", action="store_true", help="machine-readable rows on stdout")
+    g.add_argument("--json", action="store_true", help="machine-readable rows on stdout (SI)")
+    _add_show(g)
     g.add_argument(
         "--csv",
         metavar="FILE",
@@ -325,7 +340,9 @@ def _cmd_ritz(ns) -> None:
             xi = positive_float("position", ns.position) / positive_float("L", ns.L)
             out["stiffness_coefficient"] = float(ritz.stiffness_coefficient(ritz.BETA_L[0], xi))
             out["mass_coefficient"] = float(ritz.mass_coefficient(ritz.BETA_L[0], xi))
-    lines = [f"{k} = {v:.10g}" for k, v in out.items()]
+    units = {"K": "N/m", "M": "kg", "stiffness_coefficient": "(× EI/L³)",
+             "mass_coefficient": "(× ρAL)"}  # fmt: skip
+    lines = [f"{k} = {v:.10g} {units.get(k, '')}".rstrip() for k, v in out.items()]
     _emit(ns, out, "\n".join(lines))
 
 
@@ -364,10 +381,11 @@ def _cmd_contact_duration(ns) -> None:
             out["perturbation_history"] = [float(h) for h in v.history]
             out["ba"] = float(v.ba)
     text = "\n".join(
-        f"{k:<22} {v:.6g} s" if isinstance(v, float) and k != "ba" else f"{k:<22} {v}"
+        f"{k:<22} {_quantity('duration', v)}" if isinstance(v, float) and k != "ba"
+        else f"{k:<22} {v}"
         for k, v in out.items()
         if k != "perturbation_history"
-    )
+    )  # fmt: skip
     _emit(ns, out, text)
 
 
@@ -496,28 +514,40 @@ def _cmd_sweep(ns) -> None:
     if ns.plot:
         notes.append(_plot_sweep(ns, table, points.names))
     names = points.names
+    di_head = label("damping_inclination").replace("damping_inclination", "DI")
     if len(rows) <= 60:
-        head = " ".join(f"{n:>12}" for n in names)
+        head = " ".join(f"{label(n):>14}" for n in names)
         lines = [
-            f"{head} {'N_tot':>6} {'N_eff':>6} {'effect.':>8} {'DI [m]':>11} {'ζ_eq':>9}  class"
+            f"{head} {'N_tot':>6} {'N_eff':>6} {'effect.':>8} {di_head:>11} {'ζ_eq':>9}  class"
         ]
         for r in rows:
             lines.append(
-                " ".join(f"{r[n]:>12.6g}" for n in names)
+                " ".join(f"{shown(n, r[n]):>14.6g}" for n in names)
                 + f" {r['n_impacts']:>6} {r['n_effective']:>6} {_fmt(r['effectiveness'], '.3f'):>8}"
-                f" {_fmt(r['damping_inclination'], '.4e'):>11} {_fmt(r['zeta_eq'], '.5f'):>9}  "
-                f"{r['class']}"
+                f" {_fmt(shown('damping_inclination', r['damping_inclination']), '.5g'):>11}"
+                f" {_fmt(r['zeta_eq'], '.5f'):>9}  {r['class']}"
             )
     else:
         lines = [f"{len(rows)} runs over {', '.join(names)}"]
         di = table["damping_inclination"].astype("float64")
         if di.notna().any():
             best = rows[int(di.idxmax())]
-            at = ", ".join(f"{n} = {best[n]:.6g}" for n in names)
-            lines.append(f"largest DI {best['damping_inclination']:.4e} m at {at}")
+            at = ", ".join(f"{n} = {_quantity(n, best[n])}" for n in names)
+            lines.append(
+                f"largest DI {_quantity('damping_inclination', best['damping_inclination'])} at {at}"
+            )
         counts = table["class"].value_counts()
         lines.append(", ".join(f"{k}: {v}" for k, v in counts.items()))
     _emit(ns, rows, "\n".join(lines + notes))
+
+
+def _quantity(name: str, value: float) -> str:
+    """``6 mm``-style text of an SI value in its display unit."""
+    from .display import display_unit
+
+    unit = display_unit(name)
+    text = f"{shown(name, value):.6g}"
+    return text if unit == "dimensionless" else f"{text} {unit}"
 
 
 def _fmt(v, spec: str) -> str:
@@ -541,18 +571,21 @@ def _plot_sweep(ns, table, names) -> str:
         axes = list(names[:2])
     opt = plot_map(table, axes[0], axes[1], ns.value, ns.plot, best=ns.best)
     return (
-        f"wrote {ns.plot}: {ns.best} {ns.value} {opt[ns.value]:.6g} at {axes[0]} = "
-        f"{opt[axes[0]]:.6g}, {axes[1]} = {opt[axes[1]]:.6g}"
+        f"wrote {ns.plot}: {ns.best} {ns.value} {_quantity(ns.value, opt[ns.value])} at "
+        f"{axes[0]} = {_quantity(axes[0], opt[axes[0]])}, "
+        f"{axes[1]} = {_quantity(axes[1], opt[axes[1]])}"
     )
 
 
 def _write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
+    from .display import csv_header
     from .io import atomic_write
 
-    def write(f):
-        w = csv.DictWriter(f, fieldnames=list(rows[0]) if rows else [])
-        w.writeheader()
-        w.writerows(_jsonable(rows))
+    def write(f):  # SI values, each header with its SI unit ("gap [m]")
+        names = list(rows[0]) if rows else []
+        w = csv.writer(f)
+        w.writerow([csv_header(n) for n in names])
+        w.writerows([[r[n] for n in names] for r in _jsonable(rows)])
 
     atomic_write(path, write, what)
 
@@ -677,7 +710,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     argv = sys.argv[1:] if argv is None else list(argv)
     ns = parser.parse_args(_join_negative_values(parser, argv))
-    shown = warnings.showwarning
+    from . import display
+
+    units_before = dict(display.DISPLAY_UNITS)
+    shown_warning = warnings.showwarning
     warnings.showwarning = _one_line_warning(ns.command)  # every warning: one line
     previous = {}
     for sig in (signal.SIGTERM, signal.SIGHUP):
@@ -686,6 +722,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         except ValueError:  # not the main thread (e.g. called from a worker thread)
             pass
     try:
+        display.parse_show(getattr(ns, "show", []))
         COMMANDS[ns.command](ns)
     except SymimpactError as exc:
         print(f"symimpact {ns.command}: error: {exc}", file=sys.stderr)
@@ -705,7 +742,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except Exception as exc:  # a bug: one line naming it (SYMIMPACT_DEBUG=1 shows the traceback)
         return _internal(ns.command, exc)
     finally:
-        warnings.showwarning = shown
+        warnings.showwarning = shown_warning
+        display.DISPLAY_UNITS.clear()
+        display.DISPLAY_UNITS.update(units_before)
         for sig, handler in previous.items():
             signal.signal(sig, handler)
     return 0

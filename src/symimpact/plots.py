@@ -60,31 +60,25 @@ def plot_simulation(result: Any, path: str | os.PathLike) -> None:
 
 def plot_sweep(rows: list[dict[str, Any]], over: str, path: str | os.PathLike) -> None:
     """DI, N_eff and effectiveness against the swept parameter (as Fig. 7)."""
+    from .display import label, shown
+
     plt = _pyplot()
-    x = [r[over] for r in rows]
+    x = [shown(over, r[over]) for r in rows]
     fig, axes = plt.subplots(3, 1, figsize=(8, 7), sharex=True)
     series = (
-        ("damping_inclination", "DI [m]"),
+        ("damping_inclination", label("damping_inclination").replace("damping_inclination", "DI")),
         ("n_effective", "N_eff"),
         ("effectiveness", "effectiveness"),
     )
-    for ax, (key, label) in zip(axes, series, strict=True):
-        ax.plot(x, [float("nan") if r[key] is None else r[key] for r in rows], "o-", ms=3)
-        ax.set_ylabel(label)
-    axes[-1].set_xlabel(over + " [SI]")
+    for ax, (key, text) in zip(axes, series, strict=True):
+        ys = [float("nan") if r[key] is None else shown(key, r[key]) for r in rows]
+        ax.plot(x, ys, "o-", ms=3)
+        ax.set_ylabel(text)
+        ax.ticklabel_format(axis="y", useOffset=False)
+    axes[-1].set_xlabel(label(over))
     fig.tight_layout()
     atomic_savefig(fig, path)
     plt.close(fig)
-
-
-def _unit(name: str) -> str:
-    from .units import SI_UNITS
-
-    outputs = {"damping_inclination": "m", "effectiveness": "1", "zeta_eq": "1"}
-    if name.startswith("energy"):
-        return "J"
-    unit = outputs.get(name) or SI_UNITS.get(name, "1")
-    return "1" if unit == "dimensionless" else unit
 
 
 def _edges(centres):
@@ -147,23 +141,30 @@ def plot_map(
     i0, j0 = divmod(flat, z.shape[1])
     optimum = {x: float(xs[j0]), y: float(ys[i0]), value: float(z[i0, j0]), "rows": rows}
 
+    from .display import label, shown
+
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 6))
-    mesh = ax.pcolormesh(_edges(xs), _edges(ys), np.ma.masked_invalid(z), cmap="viridis")
-    fig.colorbar(mesh, ax=ax, label=f"{value} [{_unit(value)}]")
+    sx, sy = shown(x, xs), shown(y, ys)  # axes and colours in display units
+    mesh = ax.pcolormesh(_edges(sx), _edges(sy), np.ma.masked_invalid(shown(value, z)),
+                         cmap="viridis")  # fmt: skip
+    fig.colorbar(mesh, ax=ax, label=label(value))
     ax.plot(
-        [r[1] for r in rows],
-        [r[0] for r in rows],
+        [shown(x, r[1]) for r in rows],
+        [shown(y, r[0]) for r in rows],
         "o",
         mfc="white",
         mec="black",
         ms=4,
         label=f"{best} of {value} for each {y}",
     )
-    ax.plot(xs[j0], ys[i0], "*", ms=16, mfc="red", mec="white", label=f"{best} of the map")
-    ax.set_xlabel(f"{x} [{_unit(x)}]")
-    ax.set_ylabel(f"{y} [{_unit(y)}]")
-    title = f"{value}: {best} {z[i0, j0]:.4g} at {x} = {xs[j0]:.4g}, {y} = {ys[i0]:.4g}"
+    ax.plot(sx[j0], sy[i0], "*", ms=16, mfc="red", mec="white", label=f"{best} of the map")
+    ax.set_xlabel(label(x))
+    ax.set_ylabel(label(y))
+    title = (
+        f"{label(value)}: {best} {shown(value, z[i0, j0]):.4g} at {x} = {sx[j0]:.4g}, "
+        f"{y} = {sy[i0]:.4g}"
+    )
     if others:
         title += f"\n({best} over {', '.join(others)})"
     ax.set_title(title, fontsize=10)

@@ -1,0 +1,110 @@
+"""Units for people: the unit each quantity is shown in, and values converted to it.
+
+SI inside the package, in JSON and in CSV files (whose headers carry the SI unit:
+``gap [m]``).  Text output, printed tables and plot axes show each quantity in an engineering
+unit chosen for it (:data:`DISPLAY_UNITS`: mm for gaps and displacements, µm for the damping
+inclination DI, ms for contact durations…), with the unit in every header and label.  A user may
+choose another unit per quantity (:func:`set_display_unit`, ``--show NAME=UNIT`` on the command
+line).
+"""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from typing import Any
+
+from .errors import ParameterError
+from .units import SI_UNITS, _factor
+
+#: SI units of the outputs of a simulation or map (inputs: :data:`symimpact.units.SI_UNITS`).
+OUTPUT_SI_UNITS = {
+    "n_impacts": "dimensionless",
+    "n_effective": "dimensionless",
+    "effectiveness": "dimensionless",
+    "damping_inclination": "m",
+    "zeta_eq": "dimensionless",
+    "energy_initial": "J",
+    "energy_dissipated": "J",
+    "energy_dissipated_contact": "J",
+    "energy_residual": "J",
+    "t": "s",
+    "x": "m",
+    "y": "m",
+    "xdot": "m/s",
+    "ydot": "m/s",
+    "duration": "s",
+}
+
+#: The unit each quantity is shown in (quantities not listed: their SI unit).
+DISPLAY_UNITS: dict[str, str] = {
+    "gap": "mm",
+    "x0": "mm",
+    "y0": "mm",
+    "x": "mm",
+    "y": "mm",
+    "delta_max": "mm",
+    "position": "mm",
+    "damping_inclination": "µm",
+    "duration": "ms",
+    "energy_initial": "mJ",
+    "energy_dissipated": "mJ",
+    "energy_dissipated_contact": "mJ",
+    "energy_residual": "mJ",
+}
+
+_PRETTY = {"N*s/m": "N s/m", "N/m^1.5": "N/m^1.5", "N/m^3": "N/m³", "kg/m^3": "kg/m³",
+           "m^2": "m²", "m^4": "m⁴"}  # fmt: skip
+
+
+def si_unit(name: str) -> str:
+    """The SI unit of quantity ``name`` (``"dimensionless"`` for pure numbers)."""
+    return SI_UNITS.get(name) or OUTPUT_SI_UNITS.get(name, "dimensionless")
+
+
+def display_unit(name: str) -> str:
+    """The unit quantity ``name`` is shown in."""
+    return DISPLAY_UNITS.get(name, si_unit(name))
+
+
+def _bracket(unit: str) -> str:
+    return "" if unit == "dimensionless" else f" [{_PRETTY.get(unit, unit)}]"
+
+
+def label(name: str) -> str:
+    """``name [unit]`` in the display unit (no brackets for a pure number): for text headers and
+    plot axes."""
+    return name + _bracket(display_unit(name))
+
+
+def csv_header(name: str) -> str:
+    """``name [SI unit]``: for CSV headers, whose values stay SI."""
+    return name + _bracket(si_unit(name))
+
+
+def shown(name: str, value: Any) -> Any:
+    """``value`` [SI] of quantity ``name`` in its display unit (None stays None)."""
+    if value is None:
+        return None
+    unit = display_unit(name)
+    if unit == si_unit(name):
+        return value
+    kind, factor = _factor(unit, si_unit(name))
+    return value / float(factor) if kind == "ok" else value
+
+
+def set_display_unit(name: str, unit: str) -> None:
+    """Show quantity ``name`` in ``unit`` from now on (checked against its SI unit)."""
+    kind, info = _factor(unit, si_unit(name))
+    if kind != "ok" or info == Decimal(0):
+        why = info if kind == "unit" else f"dimension {info}, expected units of {si_unit(name)}"
+        raise ParameterError("show", f"{name} cannot be shown in {unit!r}: {why}")
+    DISPLAY_UNITS[name] = unit
+
+
+def parse_show(specs: list[str]) -> None:
+    """Apply ``NAME=UNIT`` options (the command line's ``--show``)."""
+    for spec in specs:
+        name, sep, unit = spec.partition("=")
+        if not sep or not name.strip() or not unit.strip():
+            raise ParameterError("show", f"{spec!r} must be NAME=UNIT, e.g. gap=µm")
+        set_display_unit(name.strip(), unit.strip())

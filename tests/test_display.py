@@ -1,0 +1,70 @@
+"""Engineering units for people, SI for programs (issue 17, item 2)."""
+
+from __future__ import annotations
+
+import csv
+
+import pytest
+
+from symimpact import display
+from symimpact.cli import main
+
+
+def test_sweep_text_is_in_display_units_and_csv_in_si(tmp_path, capsys):
+    out = tmp_path / "s.csv"
+    assert main(["sweep", "--gap", "6 mm:8 mm:1 mm", "--csv", str(out), "--quiet"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert "gap [mm]" in lines[0] and "DI [µm]" in lines[0]
+    first = lines[1].split()
+    assert float(first[0]) == 6.0  # mm, not 0.006
+    assert 100 < float(first[4]) < 1e5  # DI in µm (about 1300 µm here), not 1.3e-03
+    with open(out, newline="") as f:
+        rows = list(csv.reader(f))
+    assert rows[0][:2] == ["run", "gap [m]"] and "damping_inclination [m]" in rows[0]
+    assert float(rows[1][1]) == 0.006  # SI in the file
+    di = float(rows[1][rows[0].index("damping_inclination [m]")])
+    assert di * 1e6 == pytest.approx(float(first[4]), rel=1e-4)
+
+
+def test_simulate_csv_headers_carry_si_units(tmp_path):
+    out = tmp_path / "sim.csv"
+    assert main(["simulate", "--t-end", "1", "--csv", str(out)]) == 0
+    assert out.read_text().splitlines()[0] == "t [s],x [m],xdot [m/s],y [m],ydot [m/s]"
+
+
+def test_show_picks_another_unit_and_refuses_a_wrong_one(capsys):
+    assert main(["sweep", "--gap", "6 mm:7 mm:1 mm", "--show", "gap=µm", "--quiet"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert "gap [µm]" in lines[0] and float(lines[1].split()[0]) == 6000.0
+    assert display.display_unit("gap") == "mm"  # restored after the command
+    assert main(["sweep", "--show", "gap=kg", "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "show" in err and "dimension" in err
+
+
+def test_plot_axes_carry_display_units(monkeypatch, tmp_path):
+    import symimpact.plots as plots
+    from symimpact.maps import parameter_map, table_rows
+    from symimpact.system import ImpactSystem
+
+    seen = {}
+
+    def keep(fig, path, what="plot"):
+        seen[str(path)] = [(a.get_xlabel(), a.get_ylabel()) for a in fig.axes]
+
+    monkeypatch.setattr(plots, "atomic_savefig", keep)
+    s = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, c1=5.0, k_hz=1000.0)
+    grid = {"gap": [0.006, 0.009], "mass_ratio": [0.1, 0.25]}
+    table = parameter_map(s, grid, executor="serial", xdot0=0.5, t_end=5.0, progress=False)
+    plots.plot_sweep(table_rows(table)[:2], "gap", tmp_path / "a.png")
+    plots.plot_map(table, "gap", "mass_ratio", path=tmp_path / "b.png")
+    sweep_labels = seen[str(tmp_path / "a.png")]
+    assert sweep_labels[0][1] == "DI [µm]" and sweep_labels[-1][0] == "gap [mm]"
+    assert ("gap [mm]", "mass_ratio") in seen[str(tmp_path / "b.png")]
+
+
+def test_a_long_map_summary_names_each_input_with_its_unit(capsys):
+    args = ["map", "--vary", "gap=4 mm:40 mm:4 mm", "--vary", "mass_ratio=0.1:0.7:0.1", "--quiet"]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "µm at gap = " in out and " mm, mass_ratio = " in out
