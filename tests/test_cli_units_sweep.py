@@ -284,3 +284,21 @@ def test_a_missing_value_reads_as_a_dash_in_text(capsys):
     assert main(["simulate", "--t-end", "0.01"]) == 0  # too short for four maxima: no DI
     out = capsys.readouterr().out
     assert "DI — µm" in out and "None" not in out and "n/a" not in out
+
+
+def test_the_command_line_is_a_package_of_subcommands():
+    """Issue 17, item 6: one module per subcommand, each registered by one line in SUBCOMMANDS,
+    with its parser (add_parser) and what runs it (COMMANDS); the parser offers exactly the
+    registered names."""
+    import argparse
+    import pkgutil
+
+    import symimpact.cli as cli
+
+    modules = {m.name for m in pkgutil.iter_modules(cli.__path__)} - {"common", "__main__"}
+    assert modules == {m.__name__.rsplit(".", 1)[1] for m in cli.SUBCOMMANDS}
+    for module in cli.SUBCOMMANDS:
+        assert callable(module.add_parser) and module.COMMANDS
+    parser = cli.build_parser()
+    (sub,) = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+    assert set(sub.choices) == set(cli.COMMANDS)

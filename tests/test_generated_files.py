@@ -136,6 +136,10 @@ def test_wheel_ships_the_generated_kernels(tmp_path):
             relative = path.relative_to(ROOT / "generated").as_posix()
             assert f"symimpact/generated/{relative}" in names, relative
     assert not any(n.startswith(("derive/", "tests/")) for n in names)
+    # the command line is a package: every subcommand module ships
+    cli = ROOT / "src" / "symimpact" / "cli"
+    for module in cli.glob("*.py"):
+        assert f"symimpact/cli/{module.name}" in names, module.name
 
 
 def test_reading_a_quantity_does_not_import_dask():

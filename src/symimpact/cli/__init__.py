@@ -1,0 +1,176 @@
+"""``symimpact``: the command line, one module per subcommand.
+
+Every parameter takes an SI number or a quantity with units ("100 N/cm", "9 mm").  Bad input exits
+with status 2 and one line naming the parameter and the reason.
+
+Adding a subcommand: a module here with ``add_parser(sub)`` (its options, from the shared groups
+of :mod:`.common`), the function that runs it and ``COMMANDS = {"name": function}``, and one line
+in :data:`SUBCOMMANDS`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from collections.abc import Sequence
+
+from ..errors import SymimpactError
+from . import contact_duration, export, fit, reproduce, ritz, simulate, sweep
+from .common import Parser
+
+#: The subcommands, in the order of ``symimpact --help``.
+SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, export, sweep]
+
+#: What runs each subcommand (by name, aliases included).
+COMMANDS = {name: run for module in SUBCOMMANDS for name, run in module.COMMANDS.items()}
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The ``symimpact`` argument parser (also used to document the command line)."""
+    parser = Parser(
+        prog="symimpact",
+        description="Nonlinear resilient impact dampers: Ritz constants, contact fits, contact "
+        "durations, simulations with impacts and gap sweeps.  Quantities accept units.",
+    )
+    from .. import __version__
+
+    parser.add_argument("--version", action="version", version=f"symimpact {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=Parser)
+    for module in SUBCOMMANDS:
+        module.add_parser(sub)
+    return parser
+
+
+_NEGATIVE = re.compile(r"^-(\d|\.\d|inf|nan)", re.IGNORECASE)
+
+
+def _value_options(parser: argparse.ArgumentParser) -> set[str]:
+    """Option strings (of the parser and its subcommands) that take a value."""
+    out: set[str] = set()
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in action.choices.values():
+                out |= _value_options(sub)
+        elif action.option_strings and action.nargs != 0:
+            out.update(action.option_strings)
+    return out
+
+
+def _join_negative_values(parser: argparse.ArgumentParser, argv: Sequence[str]) -> list[str]:
+    """``--x0 -1mm`` → ``--x0=-1mm``: argparse takes a value that starts with '-' for an option
+    unless it is a plain number, so negative quantities with units would be refused."""
+    takes_value = _value_options(parser)
+    out: list[str] = []
+    for tok in argv:
+        if out and out[-1] in takes_value and _NEGATIVE.match(tok):
+            out[-1] = f"{out[-1]}={tok}"
+        else:
+            out.append(tok)
+    return out
+
+
+#: Exit statuses: 0 done, 2 bad input (one line naming the parameter), 3 a fault of the machine
+#: or of the files (full disk, unreadable path, lost Dask cluster: one line saying what and why),
+#: 128 + N when ended by signal N (130 for Ctrl-C, 143 for SIGTERM, 129 for SIGHUP), 70 for an
+#: internal error (a bug; SYMIMPACT_DEBUG=1 shows its traceback).
+EXIT_BAD_INPUT, EXIT_FAULT = 2, 3
+
+
+def _ending_on_signal(command: str):
+    """A SIGTERM/SIGHUP handler: end the pool workers, say so in one line, exit 128 + N.
+
+    It does not raise into the main thread: an exception raised by a signal handler while a
+    finaliser runs is printed and dropped, and the command would go on to the end.  Nothing is
+    lost by ending at once: every output is written to a temporary name and renamed when
+    complete, and the leftovers of an ended run are removed by the next one."""
+
+    def end(signum, frame) -> None:
+        import multiprocessing
+        import os
+
+        for child in multiprocessing.active_children():
+            child.terminate()
+        print(f"symimpact {command}: ended by signal {signum}", file=sys.stderr, flush=True)
+        os._exit(128 + signum)
+
+    return end
+
+
+def _one_line_warning(command: str):
+    def show(message, category, filename, lineno, file=None, line=None) -> None:
+        text = " ".join(str(message).split())
+        print(f"symimpact {command}: warning: {text}", file=sys.stderr)
+
+    return show
+
+
+#: Exit status of an internal error (a bug in symimpact, not in the input): EX_SOFTWARE.
+EXIT_INTERNAL = 70
+
+
+def _internal(command: str, exc: BaseException) -> int:
+    import os
+
+    if os.environ.get("SYMIMPACT_DEBUG"):
+        raise exc
+    text = " ".join(str(exc).split())[:300]
+    print(
+        f"symimpact {command}: internal error: {type(exc).__name__}: {text} (a bug; rerun with "
+        "SYMIMPACT_DEBUG=1 for the traceback and report it)",
+        file=sys.stderr,
+    )
+    return EXIT_INTERNAL
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of ``symimpact``; returns the exit status (see ``EXIT_*``: 2 on bad input, 3
+    on a fault, 128 + N on signal N)."""
+    import signal
+    import warnings
+
+    parser = build_parser()
+    argv = sys.argv[1:] if argv is None else list(argv)
+    ns = parser.parse_args(_join_negative_values(parser, argv))
+    from .. import display
+
+    units_before = dict(display.DISPLAY_UNITS)
+    shown_warning = warnings.showwarning
+    warnings.showwarning = _one_line_warning(ns.command)  # every warning: one line
+    previous = {}
+    for sig in (signal.SIGTERM, signal.SIGHUP):
+        try:
+            previous[sig] = signal.signal(sig, _ending_on_signal(ns.command))
+        except ValueError:  # not the main thread (e.g. called from a worker thread)
+            pass
+    try:
+        display.parse_show(getattr(ns, "show", []))
+        COMMANDS[ns.command](ns)
+    except SymimpactError as exc:
+        print(f"symimpact {ns.command}: error: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except KeyboardInterrupt:
+        print(f"symimpact {ns.command}: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:  # output piped into a program that stopped reading (e.g. head)
+        sys.stderr.close()
+        return 0
+    except (OSError, MemoryError) as exc:  # the machine or the files, not the input
+        what = f"{exc.strerror} ({exc.filename})" if getattr(exc, "strerror", None) else exc
+        if getattr(exc, "filename", None) is None and getattr(exc, "strerror", None):
+            what = exc.strerror
+        print(f"symimpact {ns.command}: fault: {what or type(exc).__name__}", file=sys.stderr)
+        return EXIT_FAULT
+    except Exception as exc:  # a bug: one line naming it (SYMIMPACT_DEBUG=1 shows the traceback)
+        return _internal(ns.command, exc)
+    finally:
+        warnings.showwarning = shown_warning
+        display.DISPLAY_UNITS.clear()
+        display.DISPLAY_UNITS.update(units_before)
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,165 @@
+"""What the subcommands share: the option groups (system, initial state, output, --show),
+building the system from them, and writing results (text in display units, JSON, CSV)."""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import sys
+from typing import Any
+
+from ..display import shown
+
+#: The defaults are one stated system in which impacts happen and DI is defined: the report's
+#: reading of the paper's Table 2 (K in N/m, c1 = 5C = 5 N s/m, Ẋ0 = 0.5 m/s, t' = t·√(K/M) = 200).
+SYSTEM_OPTIONS = [
+    ("--M", "main mass M [kg]", "1 kg"),
+    ("--K", "main stiffness K [N/m]", "100 N/m"),
+    ("--C", "main damping C [N s/m] (or --zeta)", "1 N s/m"),
+    ("--zeta", "damping ratio ζ = C/(2√(KM)) [1], instead of --C", None),
+    ("--m", "impact mass m [kg]", "0.25 kg"),
+    ("--gap", "clearance d [m]", "9 mm"),
+    ("--a", "cubic coefficient a [N/m^3] (Eq. 9)", "0.1553 N/cm^3"),
+    ("--b", "cubic coefficient b [N/m] (Eq. 9)", "0.8360 N/cm"),
+    ("--k-hz", "Hertz stiffness K_Hz [N/m^1.5] (Eq. 8)", "1000 N/m^1.5"),
+    ("--k1", "linear contact stiffness k1 [N/m] (Eq. 35); default fitted to K_Hz", None),
+    ("--c1", "contact damping c1 [N s/m] (Eq. 10)", "5 N s/m"),
+]
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> None:  # one line, status 2, no usage dump
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def add_system(p: argparse.ArgumentParser, contact: bool = True) -> None:
+    """The system options (SYSTEM_OPTIONS; with ``contact``, --contact too)."""
+    g = p.add_argument_group("system (SI numbers or quantities with units)")
+    for flag, helptext, default in SYSTEM_OPTIONS:
+        g.add_argument(
+            flag,
+            dest=flag[2:].replace("-", "_"),
+            default=None if flag == "--C" else default,  # --zeta replaces the default C
+            metavar="Q",
+            help=f"{helptext}; default {default!r}" if default else helptext,
+        )
+    if contact:
+        g.add_argument(
+            "--contact",
+            choices=("cubic", "hertz", "linear", "perturbation"),
+            default="cubic",
+            help="contact law integrated numerically, or the perturbation solution (Eq. 31–33); "
+            "default cubic",
+        )
+
+
+def system_from(ns: argparse.Namespace):
+    """The :class:`~symimpact.system.ImpactSystem` the system options describe."""
+    from ..system import ImpactSystem
+
+    law = getattr(ns, "contact", "cubic")
+    kw: dict[str, Any] = {
+        k: getattr(ns, k) for k in ("M", "K", "C", "zeta", "m", "gap", "k_hz", "k1", "c1")
+    }
+    if kw["C"] is None and kw["zeta"] is None:
+        kw["C"] = dict((f, d) for f, _, d in SYSTEM_OPTIONS)["--C"]
+    return ImpactSystem(contact="cubic" if law == "perturbation" else law, a=ns.a, b=ns.b, **kw)
+
+
+def add_initial(p: argparse.ArgumentParser) -> None:
+    """The initial state and duration options (x0, xdot0, y0, ydot0, t_end)."""
+    g = p.add_argument_group("initial state and duration")
+    g.add_argument("--x0", default="0", metavar="Q", help="main-mass displacement [m]; default 0")
+    g.add_argument(
+        "--xdot0", default="0.5 m/s", metavar="Q", help="main-mass velocity [m/s]; default 0.5 m/s"
+    )
+    g.add_argument("--y0", default="0", metavar="Q", help="impact-mass displacement [m]; default 0")
+    g.add_argument(
+        "--ydot0", default="0", metavar="Q", help="impact-mass velocity [m/s]; default 0"
+    )
+    g.add_argument("--t-end", default="20 s", metavar="Q", help="end time [s]; default 20 s")
+
+
+def add_show(p: Any) -> None:
+    """--show NAME=UNIT: display units (:mod:`symimpact.display`)."""
+    p.add_argument(
+        "--show",
+        action="append",
+        default=[],
+        metavar="NAME=UNIT",
+        help="show a quantity in another unit in text and plots, e.g. --show gap=µm "
+        "(defaults: mm for gaps and displacements, µm for DI, ms for durations; JSON and CSV "
+        "stay SI)",
+    )
+
+
+def add_output(p: argparse.ArgumentParser, plot: bool = False) -> None:
+    """--json and --show (with ``plot``: --plot and --csv too)."""
+    p.add_argument("--json", action="store_true", help="machine-readable output on stdout (SI)")
+    add_show(p)
+    if plot:
+        p.add_argument(
+            "--plot", metavar="FILE.png", help="write a figure (a symbolic link: to its target)"
+        )
+        p.add_argument(
+            "--csv", metavar="FILE", help="write a table (a symbolic link: to its target)"
+        )
+
+
+def emit(ns, data: dict[str, Any] | list[Any], text: str) -> None:
+    """Print ``data`` as strict JSON (SI) with --json, else ``text``."""
+    if ns.json:
+        json.dump(jsonable(data), sys.stdout, indent=2, allow_nan=False)
+        sys.stdout.write("\n")
+    else:
+        print(text)
+
+
+def jsonable(v: Any) -> Any:
+    """``v`` with NumPy values as Python ones and non-finite floats as None (JSON null)."""
+    import numpy as np
+
+    if isinstance(v, dict):
+        return {str(k): jsonable(x) for k, x in v.items()}
+    if isinstance(v, list | tuple):
+        return [jsonable(x) for x in v]
+    if isinstance(v, np.ndarray):
+        return jsonable(v.tolist())
+    if isinstance(v, np.generic):
+        v = v.item()
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
+
+
+def quantity_text(name: str, value: float) -> str:
+    """``6 mm``-style text of an SI value in its display unit."""
+    from ..display import display_unit
+
+    unit = display_unit(name)
+    text = f"{shown(name, value):.6g}"
+    return text if unit == "dimensionless" else f"{text} {unit}"
+
+
+def fmt(v, spec: str) -> str:
+    """A value for people: ``spec``-formatted, or "—" where it is missing (JSON has null)."""
+    return "—" if v is None else format(v, spec)
+
+
+def write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
+    """``rows`` as CSV at ``path`` (atomically): SI values, SI units in the headers."""
+    from ..display import csv_header
+    from ..io import atomic_write
+
+    def write(f):  # SI values, each header with its SI unit ("gap [m]")
+        names = list(rows[0]) if rows else []
+        w = csv.writer(f)
+        w.writerow([csv_header(n) for n in names])
+        w.writerows([[r[n] for n in names] for r in jsonable(rows)])
+
+    atomic_write(path, write, what)
+
+
+SYSTEM_DEFAULTS = {flag[2:].replace("-", "_"): default for flag, _, default in SYSTEM_OPTIONS}
