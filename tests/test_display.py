@@ -68,3 +68,20 @@ def test_a_long_map_summary_names_each_input_with_its_unit(capsys):
     assert main(args) == 0
     out = capsys.readouterr().out
     assert "µm at gap = " in out and " mm, mass_ratio = " in out
+
+
+def test_the_first_compilation_is_announced_on_a_terminal_only(monkeypatch, capsys):
+    """Issue 17, item 7: the first run compiled for 10–17 s and printed nothing."""
+    import sys
+
+    from symimpact import _stepper
+
+    monkeypatch.setattr(_stepper, "compiled_before", lambda: False)
+    assert main(["simulate", "--t-end", "0.1"]) == 0
+    assert capsys.readouterr().err == ""  # not a terminal: nothing
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
+    assert main(["simulate", "--t-end", "0.1"]) == 0
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "compiling the simulation once" in err
+    monkeypatch.undo()
+    assert _stepper.compiled_before()  # the runs above left numba's cache on disk

@@ -802,3 +802,14 @@ def one_contact(law, p, v0):
     if not done:
         return NO_CONVERGENCE, math.inf, u, e_on, e_on
     return status, t, u, e_on, _energy(law, p, u, 1.0)
+
+
+def compiled_before() -> bool:
+    """Whether numba's on-disk cache already holds the compiled stepper (else the first call
+    compiles it, 10–20 s).  True where that cannot be told (numba's cache layout is private)."""
+    import os
+
+    try:
+        return os.path.exists(run._cache._cache_file._index_path)
+    except AttributeError:  # another numba version: no notice rather than a wrong one
+        return True

@@ -163,3 +163,19 @@ def write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
 
 
 SYSTEM_DEFAULTS = {flag[2:].replace("-", "_"): default for flag, _, default in SYSTEM_OPTIONS}
+
+
+def notice_first_compilation(command: str) -> None:
+    """One line on a terminal before the first run compiles the simulation (10–20 s, then
+    cached on disk), so that a person does not wait on a silent command; nothing when the
+    output is not a terminal (a pipe, a log, the tests)."""
+    if not sys.stderr.isatty():
+        return
+    from .. import _stepper
+
+    if not _stepper.compiled_before():
+        print(
+            f"symimpact {command}: compiling the simulation once (10–20 s; cached for later runs)",
+            file=sys.stderr,
+            flush=True,
+        )

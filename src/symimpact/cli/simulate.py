@@ -4,7 +4,16 @@ from __future__ import annotations
 
 from typing import Any
 
-from .common import add_initial, add_output, add_system, emit, fmt, system_from, write_csv
+from .common import (
+    add_initial,
+    add_output,
+    add_system,
+    emit,
+    fmt,
+    notice_first_compilation,
+    system_from,
+    write_csv,
+)
 
 
 def add_parser(sub: Any) -> None:
@@ -23,6 +32,7 @@ def add_parser(sub: Any) -> None:
 
 
 def run(ns) -> None:
+    notice_first_compilation(ns.command)
     from ..simulation import simulate
 
     system = system_from(ns)

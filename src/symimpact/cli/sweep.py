@@ -12,6 +12,7 @@ from .common import (
     add_system,
     emit,
     fmt,
+    notice_first_compilation,
     quantity_text,
     system_from,
     write_csv,
@@ -143,6 +144,7 @@ def _points(ns):
 
 
 def run(ns) -> None:
+    notice_first_compilation(ns.command)
     from ..maps import parameter_map, table_rows
 
     points = _points(ns)
