@@ -75,7 +75,10 @@ def _registry():
     finally:
         if hide:
             del sys.modules["dask"]
-    return pint.UnitRegistry()
+    try:  # pint caches its parsed definitions on disk: 0.04 s instead of 0.2 s from the 2nd run
+        return pint.UnitRegistry(cache_folder=":auto:")
+    except Exception:  # no writable cache folder, or a damaged cache file: parse every time
+        return pint.UnitRegistry()
 
 
 #: Characters read as a minus sign: the ASCII hyphen-minus and every Unicode minus or dash that
