@@ -195,3 +195,16 @@ def test_an_output_path_that_is_a_symbolic_link_is_written_through(tmp_path, cap
     assert link.is_symlink()
     assert target.read_text().splitlines()[0].startswith("t")  # the table's header, not "old"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["link.csv", "real.csv"]
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [["simulate", "--show=--"], ["simulate", "--M=--"],
+     ["sweep", "--gap", "6 mm:7 mm:1 mm", "--scheduler=--", "--quiet"]],
+)  # fmt: skip
+def test_an_option_given_the_end_of_options_marker_is_one_line(argv, capsys):
+    """Found by the CLI fuzz under a fresh seed: ``--show=--`` reached the code as a list and
+    ended in an internal error."""
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "internal error" not in err

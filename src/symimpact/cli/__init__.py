@@ -123,6 +123,21 @@ def _internal(command: str, exc: BaseException) -> int:
     return EXIT_INTERNAL
 
 
+#: Options that collect a list (action="append"); every other option holds one string.
+LIST_OPTIONS = ("vary", "show")
+
+
+def _dashes_as_empty(ns: argparse.Namespace) -> argparse.Namespace:
+    """``--opt=--`` reaches argparse as the end-of-options marker and leaves ``[]`` as the value;
+    read it as an empty value instead, which the checks then refuse by name."""
+    for key, value in vars(ns).items():
+        if key in LIST_OPTIONS:
+            setattr(ns, key, ["" if v == [] else v for v in value])
+        elif value == []:
+            setattr(ns, key, "")
+    return ns
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of ``symimpact``; returns the exit status (see ``EXIT_*``: 2 on bad input, 3
     on a fault, 128 + N on signal N)."""
@@ -131,7 +146,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     parser = build_parser()
     argv = sys.argv[1:] if argv is None else list(argv)
-    ns = parser.parse_args(_join_negative_values(parser, argv))
+    ns = _dashes_as_empty(parser.parse_args(_join_negative_values(parser, argv)))
     from .. import display
 
     units_before = dict(display.DISPLAY_UNITS)
