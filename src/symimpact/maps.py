@@ -72,6 +72,10 @@ def _check_names(names: Sequence[str]) -> tuple[str, ...]:
     if not names:
         raise ParameterError("grid", "sweep at least one input")
     for n in names:
+        if not str(n).strip():
+            raise ParameterError(
+                "grid", f"an input name is empty; choose from {', '.join(SWEEPABLE)}"
+            )
         if n not in SWEEPABLE:
             raise ParameterError(n, f"cannot be swept; choose from {', '.join(SWEEPABLE)}")
     if len(set(names)) != len(names):
