@@ -95,6 +95,15 @@ def add_show(p: Any) -> None:
     )
 
 
+def add_force(p: Any) -> None:
+    """--force for a command that writes a folder (:func:`symimpact.io.staged_folder`)."""
+    p.add_argument(
+        "--force",
+        action="store_true",
+        help="replace a folder symimpact wrote before (never another non-empty folder)",
+    )
+
+
 def add_output(p: argparse.ArgumentParser, plot: bool = False) -> None:
     """--json and --show (with ``plot``: --plot and --csv too)."""
     p.add_argument("--json", action="store_true", help="machine-readable output on stdout (SI)")

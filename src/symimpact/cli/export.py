@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from .common import add_force
+
 
 def add_parser(sub: Any) -> None:
     """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
@@ -18,11 +20,7 @@ def add_parser(sub: Any) -> None:
     p.add_argument(
         "--out", required=True, metavar="DIR", help="folder to create (new or empty unless --force)"
     )
-    p.add_argument(
-        "--force",
-        action="store_true",
-        help="replace a folder symimpact wrote before (never another non-empty folder)",
-    )
+    add_force(p)
 
 
 def run(ns) -> None:

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from .common import add_force
+
 
 def add_parser(sub: Any) -> None:
     """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
@@ -20,11 +22,7 @@ def add_parser(sub: Any) -> None:
         "default symimpact-report",
     )
     p.add_argument("--quick", action="store_true", help="coarser grids: seconds, not a minute")
-    p.add_argument(
-        "--force",
-        action="store_true",
-        help="replace a report folder symimpact wrote before (never another non-empty folder)",
-    )
+    add_force(p)
     p.add_argument("--quiet", action="store_true", help="no progress bars")
 
 
