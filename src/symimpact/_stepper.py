@@ -145,7 +145,7 @@ def contact_potential(law: int, p: np.ndarray, delta: float) -> float:
 
 
 @njit(cache=True)
-def _hermite_min(y0: float, y1: float, m0: float, m1: float) -> float:
+def _hermite_min(y0: float, y1: float, m0: float, m1: float) -> tuple[float, float]:
     """(least value, where) of the cubic with values y0, y1 and slopes m0, m1 at 0 and 1 over its
     interior critical points in (0, 1); (inf, -1) when it has none (the ends are the caller's)."""
     a1 = m0
@@ -394,7 +394,7 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
                 if d_dip < 0.0:
                     ended = True
                     hstep = _locate(law, p, side, u, k1, s_dip * h, d_old, d_dip, 0, unew, k7, wts)
-        elif ended:
+        else:
             hstep = _locate(law, p, side, u, k1, h, d_old, d_new, 0, unew, k7, wts)
         if u[1] > 0.0 and unew[1] <= 0.0:
             hp = _locate(law, p, side, u, k1, hstep, u[1], unew[1], 1, uev, kev, wts)
@@ -458,9 +458,10 @@ def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk, trace, ntr, record
     leaves multiplied by exp(−c₁(B − A)T/(B·m)) ≤ 1 (Eq. 32 at ξ = π).
 
     Returns (status, t, npk, ntr, done, dissipated by C, dissipated in the contact, peaks, trace);
-    u0 is updated to the state at exit (or at t_end); the buffers grow where they filled.  The dissipation by C is the loss of the centre-of-mass
-    energy; the contact's is the loss of the relative kinetic energy ½μ(Ż₀² − ż²) (plus the
-    contact potential at t_end, where the run ends inside the contact).
+    u0 is updated to the state at exit (or at t_end); the buffers grow where they filled.  The
+    dissipation by C is the loss of the centre-of-mass energy; the contact's is the loss of the
+    relative kinetic energy ½μ(Ż₀² − ż²) (plus the contact potential at t_end, where the run
+    ends inside the contact).
     """
     M, K, m, b, c1, ba = p[P_M], p[P_K], p[P_m], p[P_b], p[P_c1], p[P_ba]
     v = side * (u0[3] - u0[1])

@@ -163,8 +163,11 @@ def _factor(unit_text: str, si_unit: str) -> tuple[str, Any]:
 
 
 def _unit_to_si(name: str, text: str, number: float, unit_text: str, unit: str) -> float:
-    """``number`` in ``unit_text`` as a float in the SI ``unit``, multiplied in decimal (see
-    :func:`_to_si`)."""
+    """``number`` in ``unit_text`` as a float in the SI ``unit``.
+
+    The shortest representations of the number and of the factor are multiplied in decimal, so
+    a value written with a prefix gives the float of the SI number typed by hand: "9 mm" is
+    0.009 and "0.1553 N/cm^3" is 155300.0, not 0.009000000000000001 and 155299.99999999997."""
     kind, info = _factor(unit_text, unit)
     if kind == "unit":
         raise ParameterError(name, f"cannot read the unit of {text!r} ({info})")
@@ -173,29 +176,15 @@ def _unit_to_si(name: str, text: str, number: float, unit_text: str, unit: str) 
     return float(Decimal(repr(number)) * info)
 
 
-def _to_si(name: str, value: Any, unit: str, shown: Any = None) -> Any:
-    ureg = _registry()
-    import pint
-
-    try:
-        q = ureg.Quantity(value) if isinstance(value, str) else value
-    except Exception as exc:  # pint's parser raises assorted error types on malformed text
-        raise ParameterError(name, f"cannot read {value!r} as a quantity ({exc})") from None
-    if not isinstance(q, ureg.Quantity):
-        raise ParameterError(name, f"cannot read {value!r} as a quantity")
-    try:
-        factor = ureg.Quantity(1.0, q.units).to(unit).magnitude
-    except pint.errors.DimensionalityError:
-        raise ParameterError(
-            name,
-            f"{shown if shown is not None else value!r} has dimension {q.dimensionality}, "
-            f"expected units of {unit}",
-        ) from None
-    # Multiply in decimal the shortest representations of magnitude and factor, so a value
-    # written with a prefix gives the float of the SI number typed by hand: "9 mm" is 0.009 and
-    # "0.1553 N/cm^3" is 155300.0, not 0.009000000000000001 and 155299.99999999997.
-    exact = Decimal(f"{float(factor):.15g}")  # pint computes 1/0.01³ as 999999.9999999999
-    scaled = np.vectorize(lambda v: float(Decimal(repr(float(v))) * exact), otypes=[float])
+def _to_si(name: str, q: Any, unit: str) -> Any:
+    """A pint quantity (a number or an array with units) in the SI ``unit``, multiplied in
+    decimal like :func:`_unit_to_si`."""
+    kind, info = _factor(str(q.units), unit)
+    if kind == "unit":
+        raise ParameterError(name, f"cannot read the unit of {q!r} ({info})")
+    if kind == "dimension":
+        raise ParameterError(name, f"{q!r} has dimension {info}, expected units of {unit}")
+    scaled = np.vectorize(lambda v: float(Decimal(repr(float(v))) * info), otypes=[float])
     return scaled(np.asarray(q.magnitude, dtype=float))
 
 

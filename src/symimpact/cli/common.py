@@ -10,7 +10,7 @@ import math
 import sys
 from typing import Any
 
-from ..display import shown
+from ..display import csv_header, display_unit, shown
 
 #: The defaults are one stated system in which impacts happen and DI is defined: the report's
 #: reading of the paper's Table 2 (K in N/m, c1 = 5C = 5 N s/m, Ẋ0 = 0.5 m/s, t' = t·√(K/M) = 200).
@@ -145,8 +145,6 @@ def jsonable(v: Any) -> Any:
 
 def quantity_text(name: str, value: float) -> str:
     """``6 mm``-style text of an SI value in its display unit."""
-    from ..display import display_unit
-
     unit = display_unit(name)
     text = f"{shown(name, value):.6g}"
     return text if unit == "dimensionless" else f"{text} {unit}"
@@ -159,7 +157,6 @@ def fmt(v, spec: str) -> str:
 
 def write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
     """``rows`` as CSV at ``path`` (atomically): SI values, SI units in the headers."""
-    from ..display import csv_header
     from ..io import atomic_write
 
     def write(f):  # SI values, each header with its SI unit ("gap [m]")
