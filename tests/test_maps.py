@@ -204,3 +204,11 @@ def test_cli_map_bad_input_exits_2_with_one_line(argv, message, capsys):
     assert main([*argv, "--quiet", "--executor", "serial"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err, err
+
+
+def test_progress_bar_ends_on_the_last_run(capsys):
+    """tqdm draws at most every 0.1 s, so a fast map's last drawn state was an early count (the
+    issue saw 69 %); the bar now draws its final count and leaves that line."""
+    parameter_map(BASE, {"gap": "6 mm:30 mm:2 mm"}, executor="serial", xdot0=0.5, t_end=2.0)
+    drawn = [s for s in capsys.readouterr().err.replace("\r", "\n").splitlines() if "%" in s]
+    assert drawn and "100%" in drawn[-1] and "13/13" in drawn[-1]

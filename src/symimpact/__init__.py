@@ -8,13 +8,21 @@ The kernels in :mod:`symimpact.generated` are emitted by the SymPy derivations i
 0.1509
 """
 
-from importlib.metadata import PackageNotFoundError, version
-
 from . import generated
 
-try:
-    __version__ = version("symimpact")
-except PackageNotFoundError:  # pragma: no cover - running from a bare source tree
-    __version__ = "0+unknown"
-
 __all__ = ["__version__", "generated"]
+
+
+def __getattr__(name: str) -> str:
+    """``symimpact.__version__``, read from the installed metadata on first use (importing
+    :mod:`importlib.metadata` costs 0.04 s of every command's start-up otherwise)."""
+    if name != "__version__":
+        raise AttributeError(f"module 'symimpact' has no attribute {name!r}")
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        found = version("symimpact")
+    except PackageNotFoundError:  # pragma: no cover - running from a bare source tree
+        found = "0+unknown"
+    globals()["__version__"] = found
+    return found

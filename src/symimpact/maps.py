@@ -436,13 +436,14 @@ def _progress(progress: bool | Callable[[int, int], None], total: int, done: int
         initial=done,
         unit="run",
         desc=desc,
-        leave=False,
+        leave=True,  # the last line stays: runs done, time taken, rate
         disable=not progress,
         smoothing=0.05,
     )
 
     def update(n: int | None) -> None:
-        if n is None:
+        if n is None:  # tqdm draws at most every 0.1 s: draw the final count before closing
+            bar.refresh()
             bar.close()
         else:
             bar.update(n)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from decimal import Decimal
 from functools import lru_cache
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -144,10 +145,9 @@ def split_quantity(name: str, text: str) -> tuple[float, str]:
     return sign * value, unit
 
 
-@lru_cache(maxsize=512)
-def _factor(unit_text: str, si_unit: str) -> tuple[str, Any]:
-    """("ok", Decimal factor to ``si_unit``), ("unit", reason) or ("dimension", dimensionality)
-    for a unit written as text; cached, so a column of cells in one unit reads pint once."""
+def _pint_factor(unit_text: str, si_unit: str) -> tuple[str, str]:
+    """What pint says of ``unit_text`` against ``si_unit``: ("ok", factor as shortest decimal
+    text), ("unit", reason) or ("dimension", dimensionality)."""
     ureg = _registry()  # first: it imports pint without dask
     import pint
 
@@ -159,7 +159,98 @@ def _factor(unit_text: str, si_unit: str) -> tuple[str, Any]:
         factor = ureg.Quantity(1.0, parsed).to(si_unit).magnitude
     except pint.errors.DimensionalityError:
         return "dimension", str(ureg.Quantity(1.0, parsed).dimensionality)
-    return "ok", Decimal(f"{float(factor):.15g}")  # pint computes 1/0.01³ as 999999.9999999999
+    return "ok", f"{float(factor):.15g}"  # pint computes 1/0.01³ as 999999.9999999999
+
+
+class _FactorFile:
+    """pint's answers for unit texts already met, kept on disk between runs.
+
+    A command that reads "100 N/m" would otherwise import pint and build its registry (a quarter
+    of a second of start-up) to learn a factor it computed the run before.  The file is keyed by
+    pint's definitions file (path, size and modification time): a new pint, or an edited
+    definitions file, starts a new table.  Writes go through a temporary file and a rename, so
+    concurrent map workers never see half a file; any failure (no cache folder, a read-only
+    home, a damaged file) falls back to asking pint."""
+
+    def __init__(self) -> None:
+        self.entries: dict[str, list[str]] | None = None
+        self.path: Path | None = None
+        self.key = ""
+
+    def _open(self) -> dict[str, list[str]]:
+        if self.entries is not None:
+            return self.entries
+        self.entries = {}
+        try:
+            import importlib.util
+            import json
+            import os
+
+            spec = importlib.util.find_spec("pint")
+            if spec is None or spec.origin is None:
+                return self.entries
+            definitions = Path(spec.origin).with_name("default_en.txt")
+            st = definitions.stat()
+            self.key = f"{definitions}|{st.st_size}|{st.st_mtime_ns}"
+            home = os.environ.get("XDG_CACHE_HOME") or os.path.join(Path.home(), ".cache")
+            self.path = Path(home) / "symimpact" / "unit-factors.json"
+            if self.path.is_file():
+                stored = json.loads(self.path.read_text(encoding="utf-8"))
+                if stored.get("pint") == self.key and isinstance(stored.get("factors"), dict):
+                    self.entries = {
+                        k: v
+                        for k, v in stored["factors"].items()
+                        if isinstance(v, list) and len(v) == 2 and v[0] in _FACTOR_KINDS
+                    }
+        except Exception:  # an unreadable cache only costs the time it was meant to save
+            self.path = None
+        return self.entries
+
+    def get(self, unit_text: str, si_unit: str) -> tuple[str, str]:
+        entries = self._open()
+        key = f"{unit_text}\x00{si_unit}"
+        if key in entries:
+            kind, info = entries[key]
+            return kind, info
+        kind, info = _pint_factor(unit_text, si_unit)
+        entries[key] = [kind, info]
+        if self.path is not None and len(entries) <= _MAX_STORED_FACTORS:
+            self._save()
+        return kind, info
+
+    def _save(self) -> None:
+        import json
+        import os
+        import tempfile
+
+        assert self.path is not None
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+            fd, tmp = tempfile.mkstemp(dir=self.path.parent, prefix=".unit-factors.")
+            with os.fdopen(fd, "w", encoding="utf-8") as f:
+                json.dump({"pint": self.key, "factors": self.entries}, f, ensure_ascii=False)
+            os.replace(tmp, self.path)
+        except Exception:
+            try:
+                os.unlink(tmp)
+            except Exception:
+                pass
+
+
+_FACTOR_KINDS = ("ok", "unit", "dimension")
+#: Unit texts kept on disk at most (a fuzzing session must not grow the file without bound).
+_MAX_STORED_FACTORS = 2000
+_FACTOR_FILE = _FactorFile()
+
+
+@lru_cache(maxsize=512)
+def _factor(unit_text: str, si_unit: str) -> tuple[str, Any]:
+    """("ok", Decimal factor to ``si_unit``), ("unit", reason) or ("dimension", dimensionality)
+    for a unit written as text.  pint answers the first time a unit text is met; the answer is
+    kept on disk (:class:`_FactorFile`) and in memory, so a column of cells in one unit, and the
+    next command, do not ask pint again."""
+    kind, info = _FACTOR_FILE.get(unit_text, si_unit)
+    return (kind, Decimal(info)) if kind == "ok" else (kind, info)
 
 
 def _unit_to_si(name: str, text: str, number: float, unit_text: str, unit: str) -> float:

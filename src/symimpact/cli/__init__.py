@@ -26,6 +26,15 @@ SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, export, sweep]
 COMMANDS = {name: run for module in SUBCOMMANDS for name, run in module.COMMANDS.items()}
 
 
+class _Version(argparse.Action):
+    """``--version``: the installed version, looked up only when asked for."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from .. import __version__
+
+        parser.exit(message=f"symimpact {__version__}\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The ``symimpact`` argument parser (also used to document the command line)."""
     parser = Parser(
@@ -33,9 +42,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="Nonlinear resilient impact dampers: Ritz constants, contact fits, contact "
         "durations, simulations with impacts and gap sweeps.  Quantities accept units.",
     )
-    from .. import __version__
-
-    parser.add_argument("--version", action="version", version=f"symimpact {__version__}")
+    parser.add_argument("--version", action=_Version, nargs=0, help="show the version and exit")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=Parser)
     for module in SUBCOMMANDS:
         module.add_parser(sub)

@@ -26,6 +26,9 @@ def add_parser(sub: Any) -> None:
         aliases=["map"],
         help="simulations over one or more swept inputs (a sweep, or a map: grid or "
         "parameter sets), on local processes or a Dask cluster",
+        description="Simulations over one or more swept inputs: a sweep, or a map (a grid or "
+        "parameter sets), on local processes or a Dask cluster.  'symimpact map' and "
+        "'symimpact sweep' are two names of this one command.",
     )
     add_system(p)
     add_initial(p)
