@@ -25,6 +25,11 @@ class Line:
     value: Any
     text: str
     equation: str | None
+    #: How the value is written on the board when SymPy's form is not how a teacher would write
+    #: it: an expression in the symbols of ``names``, equal to ``value`` once they are
+    #: substituted (a test checks it at random points).
+    shown: Any = None
+    names: dict | None = None
 
 
 @dataclass(frozen=True)
@@ -159,9 +164,20 @@ class Board:
         self.values: dict[str, Any] = {}
         self._clock = time.perf_counter()
 
-    def write(self, name: str, value: Any, text: str = "", equation: str | None = None) -> Any:
-        """Write a named intermediate result on the board and return it unchanged."""
-        self.lines.append(Line(name, value, text, equation))
+    def write(
+        self,
+        name: str,
+        value: Any,
+        text: str = "",
+        equation: str | None = None,
+        shown: Any = None,
+        names: dict | None = None,
+    ) -> Any:
+        """Write a named intermediate result on the board and return it unchanged.
+
+        ``shown`` and ``names``: the form a reader sees, when it differs from the value's own
+        (see :class:`Line`); :mod:`derive.present` writes either on the page."""
+        self.lines.append(Line(name, value, text, equation, shown, names))
         self.values[name] = value
         return value
 

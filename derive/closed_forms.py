@@ -1,14 +1,19 @@
-"""Step 6 — closed-form contact durations for comparison: Hertz (Eq. 34) and linear (Eq. 35).
+r"""Step 6 — closed-form contact durations for comparison: Hertz (Eq. 34) and linear (Eq. 35).
 
 Both treat the contact as two free bodies, i.e. one body of reduced mass μ = mM/(m + M)
 (K* = 1/μ in the paper) on the relative coordinate z, starting at z = 0 with ż = Ż₀.
 
-* Hertz: μz̈ + K_Hz z^{3/2} = 0.  Energy gives ż² = Ż₀² − (4K_Hz/(5μ)) z^{5/2}; the contact lasts
-  twice the time to the largest penetration z_m = (5μŻ₀²/(4K_Hz))^{2/5}:
-  T = 2(z_m/Ż₀) ∫₀¹ (1 − u^{5/2})^{-1/2} du = (4/5)·B(2/5, 1/2)·(z_m/Ż₀).  The constant
-  (4/5)·B(2/5, 1/2) = 4√π Γ(2/5)/(5Γ(9/10)) = 2.943275…; the paper prints 2.9432 (truncated).
-* Linear: μz̈ + c₁ż + k₁z = 0 gives z = (Ż₀/ω_d) e^{−c₁t/(2μ)} sin ω_d t; z returns to zero at
-  T = π/ω_d, which is Eq. 35.  The restitution coefficient is −ż(T)/Ż₀ = exp(−c₁T/(2μ)).
+* Hertz: $\mu\ddot z + K_{Hz} z^{3/2} = 0$.  Energy gives
+  $\dot z^2 = \dot Z_0^2 - \frac{4K_{Hz}}{5\mu} z^{5/2}$; the contact lasts twice the time to the
+  largest penetration $z_m = (5\mu\dot Z_0^2/(4K_{Hz}))^{2/5}$:
+  $T = 2\frac{z_m}{\dot Z_0}\int_0^1 (1 - u^{5/2})^{-1/2}\,du
+  = \frac45 B(\tfrac25, \tfrac12)\,\frac{z_m}{\dot Z_0}$.  The constant
+  $\frac45 B(\tfrac25, \tfrac12) = 4\sqrt\pi\,\Gamma(\tfrac25)/(5\Gamma(\tfrac{9}{10}))$
+  = 2.943275…; the paper prints 2.9432 (truncated).
+* Linear: $\mu\ddot z + c_1\dot z + k_1 z = 0$ gives
+  $z = (\dot Z_0/\omega_d)\,e^{-c_1 t/(2\mu)} \sin\omega_d t$; z returns to zero at
+  $T = \pi/\omega_d$, which is Eq. 35.  The restitution coefficient is
+  $-\dot z(T)/\dot Z_0 = \exp(-c_1 T/(2\mu))$.
 """
 
 from __future__ import annotations
@@ -48,7 +53,7 @@ def derive() -> Board:
     shape_integral = w(
         "shape_integral",
         sp.Integral((1 - u ** sp.Rational(5, 2)) ** sp.Rational(-1, 2), (u, 0, 1)),
-        "Time to z_m is (z_m/Ż₀)·∫₀¹(1 − u^{5/2})^{-1/2} du, u = z/z_m.",
+        r"Time to $z_m$ is $(z_m/\dot Z_0)\int_0^1 (1 - u^{5/2})^{-1/2}\,du$, $u = z/z_m$.",
     )
     s = sp.Symbol("s", positive=True)
     # u = s^{2/5}: du = (2/5) s^{-3/5} ds turns it into Euler's Beta integral B(2/5, 1/2).
@@ -56,7 +61,7 @@ def derive() -> Board:
     substituted = w(
         "beta_integrand",
         sp.powsimp(shape_integral.function.subs(u, u_of_s) * sp.diff(u_of_s, s), force=True),
-        "Integrand after u = s^{2/5}: (2/5)·s^{2/5 − 1}(1 − s)^{1/2 − 1}.",
+        r"Integrand after $u = s^{2/5}$: $\frac25 s^{2/5 - 1}(1 - s)^{1/2 - 1}$.",
     )
     board.check(
         "substitution gives Euler's Beta integrand",
@@ -72,7 +77,7 @@ def derive() -> Board:
         sp.gammasimp(
             2 * sp.Rational(2, 5) * sp.beta(sp.Rational(2, 5), sp.Rational(1, 2)).rewrite(sp.gamma)
         ),
-        "2·∫₀¹(1 − u^{5/2})^{-1/2} du = (4/5)·B(2/5, 1/2) in Gamma functions.",
+        r"$2\int_0^1 (1 - u^{5/2})^{-1/2}\,du = \frac45 B(\tfrac25, \tfrac12)$ in Gamma functions.",
         "34",
     )
     with mp.workdps(30):
@@ -144,7 +149,10 @@ def derive() -> Board:
         max(abs(sp.re(d)) + abs(sp.im(d)) for d in diffs) < 1e-25,
     )
     T_lin = w(
-        "linear_contact_duration", sp.pi / wd_value, "First return of z to 0: ω_d T = π.", "35"
+        "linear_contact_duration",
+        sp.pi / wd_value,
+        r"First return of z to 0: $\omega_d T = \pi$.",
+        "35",
     )
     printed35 = 2 * m * M * sp.pi / (sp.sqrt(m + M) * sp.sqrt(4 * m * M * k1 - c1**2 * (m + M)))
     board.check("Eq. 35", "35", sp.simplify(T_lin - printed35) == 0)

@@ -1,16 +1,21 @@
-"""Step 2 — least-squares fits of the Hertz force by a cubic and by a line (paper Eq. 8–9, Fig. 2).
+r"""Step 2 — least-squares fits of the Hertz force by a cubic and by a line (paper Eq. 8–9, Fig. 2).
 
-The Hertz force K_Hz·δ^{3/2} on [0, δ_max] is replaced by a·δ³ + b·δ (Eq. 9) and by k₁·δ.  Two
-least-squares procedures are derived and compared with the paper's a = 0.1553 N/cm³,
-b = 0.8360 N/cm and k₁ = 122.7 N/m (K_Hz = 1000 N/m^1.5, δ_max = 2 cm):
+The Hertz force $K_{Hz}\,\delta^{3/2}$ on $[0, \delta_{\max}]$ is replaced by
+$a\delta^3 + b\delta$ (Eq. 9) and by $k_1\delta$.  Two least-squares procedures are derived and
+compared with the paper's a = 0.1553 N/cm³, b = 0.8360 N/cm and $k_1$ = 122.7 N/m
+($K_{Hz}$ = 1000 N/m<sup>1.5</sup>, $\delta_{\max}$ = 2 cm):
 
-* the *continuous* fit minimises ∫₀^δmax (K_Hz δ^{3/2} − a δ³ − b δ)² dδ (closed form);
-* the *discrete* fit minimises the sum of squares over n uniform samples δ_i = i·δ_max/(n − 1),
-  i = 0 … n − 1 — what MATLAB's curve-fitting toolbox does with sampled data.
+* the *continuous* fit minimises
+  $\int_0^{\delta_{\max}} (K_{Hz}\delta^{3/2} - a\delta^3 - b\delta)^2\,d\delta$ (closed form);
+* the *discrete* fit minimises the sum of squares over n uniform samples
+  $\delta_i = i\,\delta_{\max}/(n - 1)$, $i = 0 \dots n - 1$ — what MATLAB's curve-fitting
+  toolbox does with sampled data.
 
-Both scale exactly: a = â(n)·K_Hz/δ_max^{3/2}, b = b̂(n)·K_Hz·√δ_max, k₁ = k̂(n)·K_Hz·√δ_max, with pure
-numbers â, b̂, k̂.  The discrete fit on n = 21 samples (a 1 mm step, δ = 0 included) reproduces all
-three printed values; the continuous fit does not.  n = 21 is therefore the default.
+Both scale exactly: $a = \hat a(n)\,K_{Hz}/\delta_{\max}^{3/2}$,
+$b = \hat b(n)\,K_{Hz}\sqrt{\delta_{\max}}$, $k_1 = \hat k(n)\,K_{Hz}\sqrt{\delta_{\max}}$, with
+pure numbers $\hat a$, $\hat b$, $\hat k$.  The discrete fit on n = 21 samples (a 1 mm step,
+δ = 0 included) reproduces all three printed values; the continuous fit does not.  n = 21 is
+therefore the default.
 """
 
 from __future__ import annotations
@@ -49,7 +54,8 @@ def derive() -> Board:
     cont_cubic = w(
         "continuous_cubic_fit",
         normal_equations(hertz - cubic, (a, b), integral),
-        "Continuous least squares: zero gradient of ∫₀^δmax (F_Hz − F_cc)² dδ in (a, b).",
+        r"Continuous least squares: zero gradient of "
+        r"$\int_0^{\delta_{\max}} (F_{Hz} - F_{cc})^2\,d\delta$ in (a, b).",
         "9",
     )
     cont_linear = w(
@@ -64,7 +70,7 @@ def derive() -> Board:
     w(
         "power_sum",
         sp.Sum((i / (n - 1)) ** sp.Symbol("p"), (i, 0, n - 1)),
-        "Power sums S_p = Σ u_i^p over the samples u_i = i/(n − 1).",
+        r"Power sums $S_p = \sum_i u_i^p$ over the samples $u_i = i/(n - 1)$.",
     )
     A_, B_, K_ = sp.symbols("ahat bhat khat")
     # Residual K_Hz δ_max^{3/2} (u^{3/2} − â u³ − b̂ u): the normal equations in terms of S_p.
@@ -78,13 +84,14 @@ def derive() -> Board:
             (A_, B_),
             dict=True,
         )[0],
-        "Discrete normal equations for â = a·√δ_max/K_Hz and b̂ = b/(K_Hz·√δ_max).",
+        r"Discrete normal equations for $\hat a = a\sqrt{\delta_{\max}}/K_{Hz}$ and "
+        r"$\hat b = b/(K_{Hz}\sqrt{\delta_{\max}})$.",
         "9",
     )
     disc_linear = w(
         "discrete_linear_fit",
         {K_: S["5/2"] / S["2"]},
-        "Discrete normal equation for k̂ = k₁/(K_Hz·√δ_max).",
+        r"Discrete normal equation for $\hat k = k_1/(K_{Hz}\sqrt{\delta_{\max}})$.",
         "35",
     )
 
@@ -130,7 +137,7 @@ def derive() -> Board:
     w(
         "paper_values_continuous",
         {k: sp.N(v, 8) for k, v in cont_vals.items()},
-        "Continuous fit at K_Hz = 1000 N/m^1.5, δ_max = 2 cm (SI).",
+        r"Continuous fit at $K_{Hz}$ = 1000 N/m<sup>1.5</sup>, $\delta_{\max}$ = 2 cm (SI).",
     )
     w(
         "paper_values_discrete",

@@ -1,9 +1,10 @@
-"""Step 7 — free flight between impacts in closed form (paper Eq. 7).
+r"""Step 7 — free flight between impacts in closed form (paper Eq. 7).
 
 While abs(y − x) < d/2 the masses do not touch: Mẍ + Cẋ + Kx = 0 and mÿ = 0.  The main mass is a
-damped oscillator, ω_n = √(K/M), ζ = C/(2√(KM)); for ζ < 1 (the beams of interest are lightly
-damped) SymPy's ``dsolve`` gives the decaying cosine/sine pair, written here with the damped
-frequency ω_d = ω_n√(1 − ζ²).  The impact mass flies at constant speed.
+damped oscillator, $\omega_n = \sqrt{K/M}$, $\zeta = C/(2\sqrt{KM})$; for ζ < 1 (the beams of
+interest are lightly damped) SymPy's ``dsolve`` gives the decaying cosine/sine pair, written here
+with the damped frequency $\omega_d = \omega_n\sqrt{1 - \zeta^2}$.  The impact mass flies at
+constant speed.
 """
 
 from __future__ import annotations
@@ -29,10 +30,13 @@ def derive() -> Board:
         "7",
     )
     eq_y = w("impact_mass_equation", sp.Eq(y(t).diff(t, 2), 0), "Impact mass between impacts.", "7")
-    sigma = w("decay_rate", C / (2 * M), "Decay rate σ = ζω_n = C/(2M).", "7")
+    sigma = w("decay_rate", C / (2 * M), r"Decay rate $\sigma = \zeta\omega_n = C/(2M)$.", "7")
     wd = sp.Symbol("omega_d", positive=True)
     wd_value = w(
-        "damped_frequency", sp.sqrt(K / M - C**2 / (4 * M**2)), "Damped frequency ω_d (ζ < 1).", "7"
+        "damped_frequency",
+        sp.sqrt(K / M - C**2 / (4 * M**2)),
+        r"Damped frequency $\omega_d$ (ζ < 1).",
+        "7",
     )
     # dsolve with K written through ω_d keeps the underdamped branch explicit.
     K_of_wd = M * (wd**2 + sigma**2)

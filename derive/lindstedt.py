@@ -1,9 +1,11 @@
-"""Step 4 — Lindstedt–Poincaré solution of the main-mass Duffing equation (paper Eq. 14–20).
+r"""Step 4 — Lindstedt–Poincaré solution of the main-mass Duffing equation (paper Eq. 14–20).
 
-ẍ + ω₀² x + ε x³ = 0.  Stretch time, τ = ω t, so the unknown frequency ω appears in the equation,
-ω² x'' + ω₀² x + ε x³ = 0, and expand both x = Σ εᵏ x_k(τ) and ω = Σ εᵏ ω_k (ω₀ first).  At every
-order x_k'' + x_k = (known harmonics)/ω₀²; a cos τ term on the right would grow without bound
-(secular), so its coefficient must vanish — that fixes ω_k.  The remaining harmonics give x_k.
+$\ddot x + \omega_0^2 x + \varepsilon x^3 = 0$.  Stretch time, τ = ω t, so the unknown frequency
+ω appears in the equation, $\omega^2 x'' + \omega_0^2 x + \varepsilon x^3 = 0$, and expand both
+$x = \sum_k \varepsilon^k x_k(\tau)$ and $\omega = \sum_k \varepsilon^k \omega_k$ (ω₀ first).  At
+every order $x_k'' + x_k$ = (known harmonics)/ω₀²; a cos τ term on the right would grow without
+bound (secular), so its coefficient must vanish — that fixes $\omega_k$.  The remaining harmonics
+give $x_k$.
 
 The paper does order 1 (Eq. 16–19) and substitutes ε and ω₀ from Eq. 15 (Eq. 20).  Here any order
 n is available: ``lindstedt_poincare(n)``, normalised at a turning point, x(0) = α, ẋ(0) = 0 (any
@@ -25,6 +27,11 @@ tau = sp.Symbol("tau", real=True)
 KERNEL_ORDERS = (1, 2, 3)
 
 Harmonics = dict[int, sp.Expr]  # {j: c_j} stands for Σ c_j cos(jτ)
+
+
+def _sup(n: int) -> str:
+    """``n`` in Unicode superscript digits (ε³ in plain text)."""
+    return str(n).translate(str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹"))
 
 
 def _mul(p: Harmonics, q: Harmonics) -> Harmonics:
@@ -173,11 +180,16 @@ def derive() -> Board:
 
     w, xs = lindstedt_poincare(3)
     for k in range(1, 4):
-        wr(f"omega_{k}", w[k], f"Secular condition at order ε^{k}.", "19" if k == 1 else None)
+        wr(
+            f"omega_{k}",
+            w[k],
+            rf"Secular condition at order $\varepsilon^{k}$.",
+            "19" if k == 1 else None,
+        )
         wr(
             f"x_{k}",
             sum(c * sp.cos(j * tau) for j, c in xs[k].items()),
-            f"Order-ε^{k} correction of the solution (τ = ωt).",
+            rf"Order-$\varepsilon^{k}$ correction of the solution (τ = ωt).",
             "18" if k == 1 else None,
         )
     board.check("ω₁ = 3α²/(8ω₀)", "19", sp.simplify(w[1] - 3 * alpha**2 / (8 * omega0)) == 0)
@@ -185,19 +197,19 @@ def derive() -> Board:
     for n in KERNEL_ORDERS:
         zero, first = residual_orders(n)
         board.check(
-            f"order {n}: residual is O(ε^{n + 1})",
+            f"order {n}: residual is O(ε{_sup(n + 1)})",
             "16–18",
             all(cf == 0 for cf in zero) and first != 0,
-            f"ε^{n + 1} coefficient ≠ 0, lower ones vanish exactly",
+            f"ε{_sup(n + 1)} coefficient ≠ 0, lower ones vanish exactly",
         )
     nmax = max(KERNEL_ORDERS)
     exact = sp.series(exact_frequency(), eps, 0, nmax + 1).removeO()
     board.check(
-        f"frequency series = exact elliptic-integral series to ε^{nmax}",
+        f"frequency series = exact elliptic-integral series to ε{_sup(nmax)}",
         "19–20",
         sp.simplify(sp.expand(exact - frequency(nmax))) == 0,
     )
-    wr("frequency_series", frequency(nmax), f"ω to order ε^{nmax}.", "19")
+    wr("frequency_series", frequency(nmax), rf"ω to order $\varepsilon^{nmax}$.", "19")
 
     # --- Eq. 17 amplitude and phase ---------------------------------------------------------------
     X0, Xd0 = sp.symbols("x0 xdot0", real=True)

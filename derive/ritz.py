@@ -1,8 +1,8 @@
-"""Step 1 — Ritz reduction of the cantilever to one mass and one spring (paper Eq. 1–6).
+r"""Step 1 — Ritz reduction of the cantilever to one mass and one spring (paper Eq. 1–6).
 
 On the board:
 
-1. Separate x(r, t) = q(t) φ(r) in ρA x_tt + EI x_rrrr = 0 (Eq. 1–2): φ'''' = β⁴ φ.
+1. Separate x(r, t) = q(t) φ(r) in $\rho A\,x_{tt} + EI\,x_{rrrr} = 0$ (Eq. 1–2): φ'''' = β⁴ φ.
 2. Impose the cantilever's boundary conditions (clamped at r = 0, free at r = L) on the general
    solution; a non-trivial φ needs a zero determinant, which simplifies to the frequency equation
    cos βL cosh βL + 1 = 0 (quoted before Eq. 4).  Its null vector is the mode shape of Eq. 3.
@@ -10,7 +10,7 @@ On the board:
 4. Ritz / virtual work with the displacement referred to the damper's position r₀ (the tip in the
    paper): q is the beam deflection at r₀, x = q φ(r)/φ(r₀), so the kinetic and strain energies
    give M = ρA ∫φ² dr / φ(r₀)² and K = EI ∫φ''² dr / φ(r₀)².  At the tip and for every mode
-   M = ρAL/4 and K = (β_i L)⁴ EI / (4 L³); for mode 1 K = 3.0906 EI/L³ (Eq. 6).
+   M = ρAL/4 and $K = (\beta_i L)^4 EI/(4L^3)$; for mode 1 K = 3.0906 EI/L³ (Eq. 6).
 """
 
 from __future__ import annotations
@@ -41,6 +41,12 @@ def beta_l_roots(n: int = N_MODES, dps: int = DIGITS) -> list[mp.mpf]:
             )
             roots.append(root)
     return roots
+
+
+def _by_powers(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
+    """``expr`` as a polynomial in ``s`` with each coefficient simplified (the board's form)."""
+    poly = sp.Poly(sp.expand(expr), s)
+    return sum((sp.factor(sp.simplify(c)) * s**k for (k,), c in poly.terms()), start=sp.Integer(0))
 
 
 def derive() -> Board:
@@ -153,29 +159,45 @@ def derive() -> Board:
     s = sp.Symbol("sigma")
     mode_s = sp.sin(k * xi) - sp.sinh(k * xi) - s * (sp.cos(k * xi) - sp.cosh(k * xi))
     u = sp.Symbol("u", positive=True)
+    # On the board the integrals are written as polynomials in σ (how they were computed), with
+    # σ named; the values carry σ substituted, for the checks and kernels below.
+    sig = {s: sigma}
+    mass_in_s = sp.integrate(sp.expand(mode_s.subs(xi, u) ** 2), (u, 0, 1))
+    strain_in_s = sp.integrate(sp.expand(sp.diff(mode_s, xi, 2).subs(xi, u) ** 2), (u, 0, 1))
     mass_integral = w(
         "mass_integral",
-        sp.integrate(sp.expand(mode_s.subs(xi, u) ** 2), (u, 0, 1)).subs(s, sigma),
-        "∫₀¹ φ(ξ)² dξ: kinetic energy ½ρAL q̇²∫φ²dξ/φ(ξ₀)² of x = q φ(ξ)/φ(ξ₀).",
+        mass_in_s.subs(s, sigma),
+        r"$\int_0^1 \varphi(\xi)^2\,d\xi$: the kinetic energy of $x = q\,\varphi(\xi)/"
+        r"\varphi(\xi_0)$ is $\tfrac12\rho A L\,\dot q^2\int_0^1\varphi^2 d\xi/"
+        r"\varphi(\xi_0)^2$.",
         "4–5",
+        shown=(mass_shown := _by_powers(mass_in_s, s)),
+        names=sig,
     )
     strain_integral = w(
         "strain_integral",
-        sp.integrate(sp.expand(sp.diff(mode_s, xi, 2).subs(xi, u) ** 2), (u, 0, 1)).subs(s, sigma),
-        "∫₀¹ φ''(ξ)² dξ: strain energy ½(EI/L³) q² ∫φ''² dξ / φ(ξ₀)².",
+        strain_in_s.subs(s, sigma),
+        r"$\int_0^1 \varphi''(\xi)^2\,d\xi$: the strain energy is "
+        r"$\tfrac12 (EI/L^3)\, q^2 \int_0^1 \varphi''^2 d\xi / \varphi(\xi_0)^2$.",
         "5",
+        shown=(strain_shown := _by_powers(strain_in_s, s)),
+        names=sig,
     )
     mass_coefficient = w(
         "mass_coefficient",
         mass_integral / mode**2,
-        "Generalised mass referred to the damper at ξ = r₀/L, in units of ρAL.",
+        "Generalised mass referred to the damper at $\\xi = r_0/L$, in units of $\\rho A L$.",
         "5–6",
+        shown=sp.Symbol("I_M") / sp.Symbol("varphi") ** 2,
+        names={sp.Symbol("I_M"): mass_shown, sp.Symbol("varphi"): mode_s, **sig},
     )
     stiffness_coefficient = w(
         "stiffness_coefficient",
         strain_integral / mode**2,
-        "Generalised stiffness referred to the damper at ξ = r₀/L, in units of EI/L³.",
+        "Generalised stiffness referred to the damper at $\\xi = r_0/L$, in units of $EI/L^3$.",
         "5–6",
+        shown=sp.Symbol("I_K") / sp.Symbol("varphi") ** 2,
+        names={sp.Symbol("I_K"): strain_shown, sp.Symbol("varphi"): mode_s, **sig},
     )
     fm = sp.lambdify((k, xi), mass_coefficient, "mpmath")
     fk = sp.lambdify((k, xi), stiffness_coefficient, "mpmath")
@@ -192,7 +214,7 @@ def derive() -> Board:
     w(
         "tip_stiffness_coefficients",
         [sp.Float(mp.nstr(v, 20), 20) for v in tip_stiff],
-        "K·L³/(EI) at the tip for each mode: (β_i L)⁴/4.",
+        r"K·L³/(EI) at the tip for each mode: $(\beta_i L)^4/4$.",
     )
     board.check(
         "M = 0.25 ρAL at the tip, every mode",
@@ -264,7 +286,7 @@ def derive() -> Board:
             for i, a in enumerate(roots[:4])
             for b in roots[i + 1 : 4]
         )
-    board.check("modes orthogonal", "4", off < 1e-20, f"max |∫φ_iφ_j dξ| = {mp.nstr(off, 2)}")
+    board.check("modes orthogonal", "4", off < 1e-20, f"max |∫φᵢφⱼ dξ| = {mp.nstr(off, 2)}")
 
     # --- errata ---------------------------------------------------------------------------------
     k1_exact = sp.Float(mp.nstr(roots[0] ** 4, 30), 30)

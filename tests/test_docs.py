@@ -1,9 +1,10 @@
 """The documentation builds with warnings as errors, and its math is typeset in a real browser.
 
-The site is built once (``sphinx-build -W``) into ``docs/_build/html``; one derivation page is
-served on loopback and opened in headless Chromium (Debian's ``chromium``, installed by
-``.ci/run``).  The check reads the DOM *after* MathJax ran — not the HTML source — and a
-screenshot is saved under the build folder.
+The site is built once (``sphinx-build -W``) into ``docs/_build/html`` and served on loopback;
+every page a student reads (the derivation steps, the errata, the tutorial) is opened in headless
+Chromium (Debian's ``chromium``, installed by ``.ci/run``) at a 1000 px wide window.  The checks
+read the rendered page *after* MathJax ran — not the HTML source — through tests/browser.py, and
+a screenshot of each page is saved under ``docs/_build/html/screenshots/``.
 """
 
 from __future__ import annotations
@@ -20,6 +21,8 @@ import threading
 from pathlib import Path
 
 import pytest
+
+from tests import browser
 
 ROOT = Path(__file__).resolve().parent.parent
 BUILD = ROOT / "docs" / "_build" / "html"
@@ -40,7 +43,7 @@ def site():
 
 
 def _chromium() -> str:
-    exe = shutil.which("chromium") or shutil.which("chromium-browser")
+    exe = browser.chromium()
     if exe is None:
         if os.environ.get("CI"):
             pytest.fail("chromium is not installed (.ci/run installs Debian's chromium)")
@@ -63,13 +66,6 @@ def server(site):
     httpd.shutdown()
 
 
-def _browser(exe: str, tmp_path: Path, *args: str) -> subprocess.CompletedProcess:
-    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-             "--disable-background-networking", "--disable-component-update", "--disable-sync",
-             f"--user-data-dir={tmp_path / 'profile'}", "--virtual-time-budget=15000"]  # fmt: skip
-    return subprocess.run([exe, *flags, *args], capture_output=True, text=True, timeout=180)
-
-
 def test_docs_build_has_every_page_and_offline_mathjax(site):
     for page in ("index.html", "api.html", "kernels.html", "targets.html", "_generated/tutorial.html",
                  "_generated/errata.html", "_generated/cli.html", "_generated/report.html",
@@ -84,28 +80,47 @@ def test_docs_build_has_every_page_and_offline_mathjax(site):
     assert "contact_duration" in api and "Eq. 31" in api  # docstrings made it in
 
 
-def test_derivation_math_is_typeset_in_chromium(site, server, tmp_path):
+import derive  # noqa: E402
+
+#: Every page a student reads: the derivation steps, the errata and the tutorial.
+READ_PAGES = [f"_generated/derivations/{step}.html" for step in derive.STEPS] + [
+    "_generated/errata.html",
+    "_generated/tutorial.html",
+]
+#: Prose left with TeX markup: a caret, a backslash command, a one-letter name with a
+#: subscript (K_Hz, δ_max, ω_d), a braced subscript or a dollar sign.
+RAW_TEX = re.compile(r"\^|\\[a-zA-Z]+|(?<![A-Za-z])[A-Za-zα-ωΑ-Ω]_[A-Za-z{0-9]|_\{|\$")
+
+
+@pytest.mark.parametrize("page", READ_PAGES)
+def test_page_is_typeset_and_fits_a_1000px_window(site, server, tmp_path, page):
+    """In headless Chromium at a 1000 px wide window, after MathJax ran: every display formula
+    of the page's source is typeset, no MathJax error, no TeX markup left in the prose, and no
+    element wider than the content column (the rendered boxes, scroll widths included).  A
+    screenshot of the page is saved under the build folder."""
     exe = _chromium()
-    url = f"{server}/{PAGE}"
-    dom = _browser(exe, tmp_path, "--dump-dom", url)
-    assert dom.returncode == 0, dom.stderr[-2000:]
-    rendered = dom.stdout
-    source = (ROOT / "docs" / "_generated" / "derivations" / "multiple_scales.md").read_text()
+    copy = browser.instrumented(site / page)
+    figures, dom = browser.measure(exe, tmp_path / "profile", f"{server}/{copy.relative_to(site)}")
+    assert figures.get("mathjax") and "error" not in figures, figures
+    source = (ROOT / "docs" / page.replace(".html", ".md")).read_text(encoding="utf-8")
     n_display = source.count("$$\n") // 2
-    containers = re.findall(r"<mjx-container[^>]*>", rendered)
-    assert n_display > 10
-    assert len(containers) >= n_display, (len(containers), n_display)
-    assert "<mjx-merror" not in rendered  # no TeX error anywhere on the page
-    # what is left outside the typeset containers holds no raw TeX any more
-    body = rendered.split("<body", 1)[1]
-    for tag in ("script", "style", "mjx-container"):
-        body = re.sub(rf"<{tag}\b.*?</{tag}>", "", body, flags=re.S)
-    assert "\\frac" not in body and "\\[" not in body and "\\(" not in body
-    shot = BUILD / "screenshots" / "multiple_scales.png"
+    assert figures["containers"] >= n_display, (figures["containers"], n_display)
+    assert figures["merror"] == 0
+    prose = browser.text_outside_math(dom)
+    raw = [prose[max(0, m.start() - 30) : m.end() + 30] for m in RAW_TEX.finditer(prose)]
+    assert not raw, raw[:5]
+    assert figures["n_over"] == 0, (figures["column"], figures["over"][:5])
+    assert figures["widest"]["width"] <= figures["column"] + 1, figures["widest"]
+    shot = BUILD / "screenshots" / (Path(page).stem + ".png")
     shot.parent.mkdir(parents=True, exist_ok=True)
-    res = _browser(exe, tmp_path, f"--screenshot={shot}", "--window-size=1200,1600", url)
+    res = browser.run(exe, tmp_path / "profile", f"--screenshot={shot}",
+                      "--window-size=1000,2400", f"{server}/{page}")  # fmt: skip
     assert res.returncode == 0, res.stderr[-2000:]
     data = shot.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
-    assert struct.unpack(">II", data[16:24]) == (1200, 1600)
-    assert len(data) > 20_000
+    assert struct.unpack(">II", data[16:24]) == (1000, 2400)
+    widest = figures["content"]
+    print(
+        f"{page}: column {figures['column']:.0f} px; widest formula, code, table or figure "
+        f"{widest['width']:.0f} px: {widest['what'][:70]}"
+    )

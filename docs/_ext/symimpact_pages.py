@@ -18,6 +18,8 @@ import functools
 import importlib
 import inspect
 import io
+import pprint
+import re
 import shutil
 from pathlib import Path
 
@@ -27,14 +29,39 @@ HERE = Path(__file__).resolve().parent.parent
 OUT = HERE / "_generated"
 
 
-def _latex(value) -> str | None:
-    if isinstance(value, sp.Basic | sp.MatrixBase):
-        return sp.latex(value)
-    if isinstance(value, list | tuple) and value and all(isinstance(v, sp.Basic) for v in value):
-        return r",\quad ".join(sp.latex(v) for v in value)
-    if isinstance(value, dict) and value and all(isinstance(v, sp.Basic) for v in value.values()):
-        return r",\quad ".join(f"{sp.latex(k)} = {sp.latex(v)}" for k, v in value.items())
-    return None
+def _shown(value, shown=None, names=None) -> list[str]:
+    """A board value as Markdown: display math written the way a teacher writes it
+    (:func:`derive.present.board_form`), a table for a table of numbers, else wrapped text."""
+    from derive.present import board_form, latex_blocks
+
+    form = board_form(value if shown is None else shown, names=names)
+    if form is not None:
+        main, where = latex_blocks(form)
+        out = ["$$", main, "$$"]
+        if where:
+            out += ["", "where", "", "$$", where, "$$"]
+        return out
+    if (
+        isinstance(value, dict)
+        and value
+        and all(isinstance(v, list | tuple) for v in value.values())
+    ):
+        width = max(len(v) for v in value.values())
+        rows = ["| | " + " | ".join(str(i) for i in range(width)) + " |",
+                "|---" * (width + 1) + "|"]  # fmt: skip
+        rows += [
+            f"| {_cell(k)} | " + " | ".join(_cell(x) for x in v) + " |" for k, v in value.items()
+        ]
+        return rows
+    return ["```text", pprint.pformat(value, width=72, compact=True)[:3000], "```"]
+
+
+def _prose(text: str) -> str:
+    """Plain text from code (kernel docs, units, check names) for a page: exponents and
+    subscripts written with ^ and _ become superscripts and subscripts."""
+    text = re.sub(r"\^\{?([-+\d./]+|[a-zA-Z])\}?", r"<sup>\1</sup>", str(text))
+    return re.sub(r"(?<![A-Za-z])([A-Za-zα-ωΑ-Ω])_(\{[^}]*\}|[A-Za-z0-9]+)",
+                  lambda m: f"{m[1]}<sub>{m[2].strip('{}')}</sub>", text)  # fmt: skip
 
 
 def _cell(text: str) -> str:
@@ -58,33 +85,28 @@ def derivation_page(step: str) -> str:
         "",
     ]
     doc = inspect.getdoc(module) or ""
-    out += ["```{eval-rst}", doc, "```", "", "## On the board", ""]
+    out += [doc, "", "## On the board", ""]  # the step's text is Markdown with $…$ math
     for line in b.lines:
         eq = f" (Eq. {line.equation})" if line.equation else ""
         out += [f"### `{line.name}`{eq}", ""]
         if line.text:
             out += [line.text, ""]
-        tex = _latex(line.value)
-        if tex is not None:
-            out += ["$$", tex, "$$", ""]
-        else:
-            text = repr(line.value)
-            out += ["```text", text if len(text) < 2000 else text[:2000] + " …", "```", ""]
+        out += [*_shown(line.value, line.shown, line.names), ""]
     out += ["## Checks", "", "| check | equation | status | detail |", "|---|---|---|---|"]
-    out += [f"| {_cell(c.name)} | {_cell(c.equation)} | {c.status} | {_cell(c.detail)} |"
+    out += [f"| {_cell(_prose(c.name))} | {_cell(c.equation)} | {c.status} | "
+            f"{_cell(_prose(c.detail))} |"
             for c in b.checks]  # fmt: skip
     out.append("")
     if b.errata:
         out += ["## Where the paper's printed equation differs", ""]
         for e in b.errata:
-            out += [f"**{e.equation}: {e.what}.** {e.consequence}", "", "Printed:", "", "$$",
-                    sp.latex(e.printed), "$$", "", "Derived:", "", "$$", sp.latex(e.derived), "$$",
-                    ""]  # fmt: skip
+            out += [f"**{e.equation}: {e.what}.** {e.consequence}", "", "Printed:", "",
+                    *_shown(e.printed), "", "Derived:", "", *_shown(e.derived), ""]  # fmt: skip
     if b.kernels:
         out += ["## Kernels emitted into `generated/`", "", "| kernel | equation | returns |",
                 "|---|---|---|"]  # fmt: skip
         out += [f"| `{k.name}({', '.join(a.name for a in k.args)})` | {k.equation} | "
-                f"{_cell(k.returns)} [{k.unit}] |" for k in b.kernels]  # fmt: skip
+                f"{_cell(_prose(k.returns))} [{_prose(k.unit)}] |" for k in b.kernels]  # fmt: skip
         out.append("")
     return "\n".join(out)
 
@@ -95,9 +117,21 @@ def errata_page() -> str:
     from symimpact.generated import closed_forms, lindstedt, ritz
     from symimpact.generated import multiple_scales as ms
 
+    import derive
+
     src = (HERE.parent / "generated" / "errata.md").read_text(encoding="utf-8")
-    body = src.split("\n", 1)[1]  # drop the generator comment
-    body = body.replace("# Paper vs derivation", "# Paper vs derivation (errata)", 1)
+    intro = src.split("\n", 1)[1].split("\n| ", 1)[0]  # the file's own text, before its table
+    intro = intro.replace("# Paper vs derivation", "# Paper vs derivation (errata)", 1)
+    body = [intro.rstrip(), ""]
+    number = 0
+    for step in derive.STEPS:
+        for e in _board(step).errata:
+            number += 1
+            body += [f"## {number}. Eq. {e.equation}: {e.what}", "",
+                     f"From [{_board(step).title}](derivations/{step}.md). {e.consequence}.", "",
+                     "Printed:", "", *_shown(e.printed), "", "Derived:", "", *_shown(e.derived),
+                     ""]  # fmt: skip
+    body = "\n".join(body) + "\n"
     rows = []
     k_d = float(ritz.tip_stiffness(1.0, 1.0, 1.0))
     k_p = float(ritz.tip_stiffness_printed(1.0, 1.0, 1.0))

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import textwrap
 from collections.abc import Callable
 from pathlib import Path
 
@@ -22,6 +23,36 @@ def _py(code: str, env: dict) -> str:
     with contextlib.redirect_stdout(buf):
         exec(code, env)  # the tutorial's own code, shown verbatim on the page
     return buf.getvalue().rstrip()
+
+
+#: Longest line of a code block: what the docs' content column shows without scrolling at a
+#: 1000 px wide window (the docs test measures the rendered page).
+CODE_COLUMNS = 64
+
+
+def _command(argv: list[str]) -> str:
+    """``$ symimpact …`` with its options wrapped (shell line continuations) to
+    :data:`CODE_COLUMNS` columns, an option and its value kept together."""
+    words = ["$ symimpact", argv[0]]
+    i = 1
+    while i < len(argv):
+        a = argv[i]
+        if a.startswith("--") and i + 1 < len(argv) and not argv[i + 1].startswith("--"):
+            v = argv[i + 1]
+            words.append(f'{a} "{v}"' if " " in v else f"{a} {v}")
+            i += 2
+        else:
+            words.append(a)
+            i += 1
+    lines, current = [], words[0]
+    for w in words[1:]:
+        if len(current) + 1 + len(w) + 2 > CODE_COLUMNS:
+            lines.append(current + " \\")
+            current = "    " + w
+        else:
+            current += " " + w
+    lines.append(current)
+    return "\n".join(lines)
 
 
 def tutorial_page(folder: Path, run_cli: Callable[[list[str]], str]) -> str:
@@ -40,31 +71,35 @@ def tutorial_page(folder: Path, run_cli: Callable[[list[str]], str]) -> str:
     ]
     argv = ["ritz", "--E", E, "--I", f"{I_AREA:.6g}", "--rho", RHO, "--A", f"{AREA:.6g}",
             "--L", L]  # fmt: skip
-    out += ["```console", "$ symimpact " + " ".join(f'"{a}"' if " " in a else a for a in argv),
-            run_cli(argv), "```", ""]  # fmt: skip
+    out += ["```console", _command(argv), run_cli(argv), "```", ""]
     env: dict = {}
     code1 = f"""from symimpact.system import ImpactSystem, beam_constants
-K, M = beam_constants(E="{E}", I={I_AREA:.6g}, rho="{RHO}", A={AREA:.6g}, L="{L}")
+K, M = beam_constants(E="{E}", I={I_AREA:.6g}, rho="{RHO}",
+                      A={AREA:.6g}, L="{L}")
 print(f"K = {{K:.3f}} N/m, M = {{M:.4f}} kg")"""
     out += ["```python", code1, "```", "", "```text", _py(code1, env), "```", ""]
     out += [
         "## 2. The contact law (Eq. 8–9)",
         "",
         "A steel ball against a steel insert: we keep the paper's Hertz stiffness "
-        "K_Hz = 1000 N/m^1.5 and fit the cubic (and linear) law over penetrations up to 2 cm.",
+        "$K_{Hz}$ = 1000 N/m<sup>1.5</sup> and fit the cubic (and linear) law over "
+        "penetrations up to 2 cm.",
         "",
     ]
     argv = ["fit", "--k-hz", "1000 N/m^1.5", "--delta-max", "2 cm"]
-    out += ["```console", '$ symimpact fit --k-hz "1000 N/m^1.5" --delta-max "2 cm"',
-            run_cli(argv), "```", ""]  # fmt: skip
-    code2 = """system = ImpactSystem.from_beam(E="70 GPa", I=I, rho="2700 kg/m^3", A=A, L="0.5 m",
-                                m=0.1 * M, gap="10 mm", zeta=0.01, k_hz=1000, c1=0.05)
-print(f"M = {system.M:.4f} kg, K = {system.K:.2f} N/m, m = {system.m:.4f} kg, "
-      f"a = {system.a:.4g} N/m^3, b = {system.b:.4g} N/m, f_n = {system.omega_n / 6.2832:.2f} Hz")"""
+    out += ["```console", _command(argv), run_cli(argv), "```", ""]
+    code2 = """system = ImpactSystem.from_beam(
+    E="70 GPa", I=I, rho="2700 kg/m^3", A=A, L="0.5 m",
+    m=0.1 * M, gap="10 mm", zeta=0.01, k_hz=1000, c1=0.05,
+)
+print(f"M = {system.M:.4f} kg, K = {system.K:.2f} N/m, "
+      f"m = {system.m:.4f} kg")
+print(f"a = {system.a:.4g} N/m^3, b = {system.b:.4g} N/m, "
+      f"f_n = {system.omega_n / 6.2832:.2f} Hz")"""
     env.update({"I": I_AREA, "A": AREA})
     out += [
         "A loose mass of 10 % of the beam's modal mass, a 1 % damped beam and a little contact "
-        "damping c1 = 0.05 N s/m:",
+        "damping $c_1$ = 0.05 N s/m:",
         "",
         "```python",
         code2,
@@ -82,7 +117,7 @@ print(f"M = {system.M:.4f} kg, K = {system.K:.2f} N/m, m = {system.m:.4f} kg, "
     ]
     code3 = """from symimpact.contact import contact_duration
 for method in ("perturbation", "hertz", "linear", "numerical"):
-    T = contact_duration(system, "0.2 m/s", method).value  # [s], whatever the method
+    T = contact_duration(system, "0.2 m/s", method).value  # [s]
     print(f"{method:>12}: {T * 1e3:7.2f} ms")"""
     out += ["```python", code3, "```", "", "```text", _py(code3, env), "```", ""]
     out += [
@@ -100,12 +135,16 @@ for method in ("perturbation", "hertz", "linear", "numerical"):
 from symimpact.sweep import sweep
 import numpy as np
 gaps = np.arange(2, 20.1, 1.0) * 1e-3
-rows = sweep(system, gaps, "gap", xdot0=1.0, t_end=3.0, workers=1, progress=False)
+rows = sweep(system, gaps, "gap", xdot0=1.0, t_end=3.0,
+             workers=1, progress=False)
 plot_sweep(rows, "gap", "{plot}")
-inside = [r for r in rows if r["class"] == "in range" and r["damping_inclination"]]
+inside = [r for r in rows if r["class"] == "in range"
+          and r["damping_inclination"]]
 best = max(inside, key=lambda r: r["damping_inclination"])
-print(f"in range: {{len(inside)}} of {{len(rows)}} gaps; largest DI at d = {{best['gap'] * 1e3:.0f}} mm: "
-      f"DI = {{best['damping_inclination'] * 1e6:.1f}} µm, N_tot = {{best['n_impacts']}}, "
+print(f"in range: {{len(inside)}} of {{len(rows)}} gaps; "
+      f"largest DI at d = {{best['gap'] * 1e3:.0f}} mm:")
+print(f"DI = {{best['damping_inclination'] * 1e6:.1f}} µm, "
+      f"N_tot = {{best['n_impacts']}}, "
       f"N_eff = {{best['n_effective']}}")"""
     shown4 = code4.replace(str(plot), "sweep.png")
     out += ["```python", shown4, "```", "", "```text", _py(code4, env), "```", ""]
@@ -113,10 +152,10 @@ print(f"in range: {{len(inside)}} of {{len(rows)}} gaps; largest DI at d = {{bes
     argv = ["sweep", "--M", f"{sysd.M:.6g}", "--K", f"{sysd.K:.6g}", "--zeta", "0.01",
             "--m", f"{sysd.m:.6g}", "--c1", "0.05", "--gap", "2 mm:20 mm:1 mm", "--xdot0", "1 m/s",
             "--t-end", "3", "--workers", "1", "--quiet", "--csv", str(folder / "sweep.csv")]  # fmt: skip
-    shown = " ".join(f'"{a}"' if " " in a else a for a in argv).replace(str(folder) + "/", "")
-    lines = run_cli(argv).splitlines()
+    shown = _command(argv).replace(str(folder) + "/", "")
+    lines = textwrap.dedent(run_cli(argv)).splitlines()
     out += ["The same from the command line (`--plot` writes the figure, `--csv` the table; the "
-            "first lines of its output):", "", "```console", f"$ symimpact {shown}",
+            "first lines of its output):", "", "```console", shown,
             *lines[:8], "```", "",
             "![DI, N_eff and effectiveness against the gap](tutorial/sweep.png)", ""]  # fmt: skip
     sim_plot = folder / "simulation.png"
@@ -125,8 +164,9 @@ from symimpact.simulation import simulate
 chosen = system.with_(gap=best["gap"])
 result = simulate(chosen, xdot0=1.0, t_end=3.0, history=True)
 plot_simulation(result, "{sim_plot}")
-print(f"N_tot = {{result.n_impacts}}, N_eff = {{result.n_effective}}, "
-      f"energy residual {{result.energy['relative_residual']:.1e}}")"""
+print(f"N_tot = {{result.n_impacts}}, "
+      f"N_eff = {{result.n_effective}}, energy residual "
+      f"{{result.energy['relative_residual']:.1e}}")"""
     out += [
         "## 5. The chosen design",
         "",
@@ -141,7 +181,7 @@ print(f"N_tot = {{result.n_impacts}}, N_eff = {{result.n_effective}}, "
         "![Response with the chosen gap](tutorial/simulation.png)",
         "",
         'Next: check the design against the other contact laws (`contact="hertz"`), against '
-        "the solve_ivp reference (`symimpact.reference.reference_impacts`), and map it over "
+        "the `solve_ivp` reference (`symimpact.reference.reference_impacts`), and map it over "
         "mass ratio and contact damping with `symimpact sweep --over m` or `--over c1`.",
         "",
     ]
