@@ -194,7 +194,7 @@ def _decimal_text(q: sp.Rational) -> str:
     return ("-" if q < 0 else "") + text
 
 
-def readable_numbers(expr: sp.Basic) -> tuple[sp.Basic, bool]:
+def readable_numbers(expr: sp.Basic, digits: int = DIGITS) -> tuple[sp.Basic, bool]:
     """``expr`` with the numbers written as the paper writes them; True when any was rounded.
 
     A rational with a denominator above 64 becomes a decimal (exact when it terminates within 12
@@ -212,10 +212,10 @@ def readable_numbers(expr: sp.Basic) -> tuple[sp.Basic, bool]:
                 return sp.Float(_decimal_text(value), 15)
         if isinstance(value, sp.Integer) and abs(value) < 10**9:
             return value
-        if isinstance(value, sp.Float) and len(_float_digits(value)) <= DIGITS:
+        if isinstance(value, sp.Float) and len(_float_digits(value)) <= digits:
             return value
         rounded = True
-        return sp.Float(sp.N(value, DIGITS + 5), DIGITS)
+        return sp.Float(sp.N(value, digits + 5), digits)
 
     def walk(e: sp.Basic) -> sp.Basic:
         if isinstance(e, sp.Number):
@@ -375,12 +375,14 @@ def board_form(
     lhs: str = "",
     names: dict[sp.Symbol, sp.Basic] | None = None,
     limit: float = WIDTH_EM,
+    digits: int = DIGITS,
 ) -> Shown | None:
     """``value`` as written on the board (see the module text), or None for a value that is not
     SymPy math (shown as text by the caller).
 
     ``lhs``: LaTeX written before the value ("K ="); ``names``: the step's own names for
-    sub-expressions, used where they occur (symbol → expression).
+    sub-expressions, used where they occur (symbol → expression); ``digits``: significant
+    digits of a rounded number (more where two numbers that differ late are compared).
     """
     if isinstance(value, dict) and value and all(isinstance(v, sp.Basic) for v in value.values()):
         items = [(tex(k), v) for k, v in value.items()]
@@ -402,7 +404,7 @@ def board_form(
             left, v = f"{left} {tex(v.lhs)}".strip(), v.rhs
         elif isinstance(v, sp.Eq):  # a long left side: written first, "= 0" after it
             suffix, v = f" = {tex(v.rhs)}", v.lhs
-        v, rounded = _prepare(v, own)
+        v, rounded = _prepare(v, own, digits)
         approx |= rounded
         for symbol in sorted(v.free_symbols & set(own), key=sp.default_sort_key):
             if symbol not in state.definitions:
@@ -436,11 +438,13 @@ def _names_in(v: sp.Basic) -> set[str]:
     return {s.name for s in v.free_symbols if isinstance(s, sp.Symbol)}
 
 
-def _prepare(v: sp.Basic, own: dict[sp.Symbol, sp.Basic]) -> tuple[sp.Basic, bool]:
+def _prepare(
+    v: sp.Basic, own: dict[sp.Symbol, sp.Basic], digits: int = DIGITS
+) -> tuple[sp.Basic, bool]:
     v = paper_symbols(v)
     for symbol, sub in own.items():
         v = v.subs(sub, symbol)
-    v, rounded = readable_numbers(v)
+    v, rounded = readable_numbers(v, digits)
     v = min(_shapes(v), key=lambda e: width_em(tex(e)))
     return v, rounded
 

@@ -76,6 +76,10 @@ def test_docs_build_has_every_page_and_offline_mathjax(site):
     assert any("mathjax/tex-chtml.js" in s for s in scripts)
     assert not [s for s in scripts if s.startswith(("http:", "https:", "//"))], scripts
     assert (site / "_static" / "mathjax" / "tex-chtml.js").is_file()
+    errata = (ROOT / "docs" / "_generated" / "errata.md").read_text(encoding="utf-8")
+    # Eq. 6: the printed and derived constants differ in the 7th digit, so the page shows 12
+    assert "3.09059025" in errata and "3.09059084208" in errata
+    assert r"\frac{B}{B - A}" in errata or "B - A" in errata  # the paper's B/A, not ba
     api = (site / "api.html").read_text(encoding="utf-8")
     assert "contact_duration" in api and "Eq. 31" in api  # docstrings made it in
 

@@ -29,12 +29,12 @@ HERE = Path(__file__).resolve().parent.parent
 OUT = HERE / "_generated"
 
 
-def _shown(value, shown=None, names=None) -> list[str]:
+def _shown(value, shown=None, names=None, digits=7) -> list[str]:
     """A board value as Markdown: display math written the way a teacher writes it
     (:func:`derive.present.board_form`), a table for a table of numbers, else wrapped text."""
     from derive.present import board_form, latex_blocks
 
-    form = board_form(value if shown is None else shown, names=names)
+    form = board_form(value if shown is None else shown, names=names, digits=digits)
     if form is not None:
         main, where = latex_blocks(form)
         out = ["$$", main, "$$"]
@@ -101,7 +101,8 @@ def derivation_page(step: str) -> str:
         out += ["## Where the paper's printed equation differs", ""]
         for e in b.errata:
             out += [f"**{e.equation}: {e.what}.** {e.consequence}", "", "Printed:", "",
-                    *_shown(e.printed), "", "Derived:", "", *_shown(e.derived), ""]  # fmt: skip
+                    *_shown(e.printed, digits=12), "", "Derived:", "",
+                    *_shown(e.derived, digits=12), ""]  # fmt: skip
     if b.kernels:
         out += ["## Kernels emitted into `generated/`", "", "| kernel | equation | returns |",
                 "|---|---|---|"]  # fmt: skip
@@ -128,9 +129,9 @@ def errata_page() -> str:
         for e in _board(step).errata:
             number += 1
             body += [f"## {number}. Eq. {e.equation}: {e.what}", "",
-                     f"From [{_board(step).title}](derivations/{step}.md). {e.consequence}.", "",
-                     "Printed:", "", *_shown(e.printed), "", "Derived:", "", *_shown(e.derived),
-                     ""]  # fmt: skip
+                     f"From [{_board(step).title}](derivations/{step}.md): {e.consequence}.", "",
+                     "Printed:", "", *_shown(e.printed, digits=12), "", "Derived:", "",
+                     *_shown(e.derived, digits=12), ""]  # fmt: skip
     body = "\n".join(body) + "\n"
     rows = []
     k_d = float(ritz.tip_stiffness(1.0, 1.0, 1.0))
