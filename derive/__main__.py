@@ -1,4 +1,4 @@
-"""``python -m derive [--check] [--steps ...]``: re-derive everything and write ``generated/``.
+"""``python -m derive [--check] [--notebooks DIR]``: re-derive everything and write ``generated/``.
 
 Prints one row per derived result (name, paper equation, check status, time).  With ``--check``
 nothing is written: the files are regenerated in memory and compared with ``generated/``; any
@@ -97,6 +97,24 @@ def compare(files: dict[str, str], folder: Path = GENERATED) -> list[str]:
     return diffs
 
 
+def _notebooks(folder: str) -> int:
+    try:
+        from .notebooks import write_notebooks
+
+        paths = write_notebooks(folder)
+    except ModuleNotFoundError as exc:
+        print(
+            f"--notebooks: {exc.name} is not installed (pip install -e '.[teach]')", file=sys.stderr
+        )
+        return 2
+    except OSError as exc:
+        print(f"--notebooks: cannot write to {folder!r} ({exc.strerror})", file=sys.stderr)
+        return 2
+    for path in paths:
+        print(f"wrote {path}")
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m derive", description=__doc__)
     parser.add_argument(
@@ -105,7 +123,15 @@ def main(argv: list[str] | None = None) -> int:
         help="regenerate in memory; exit 1 with a diff if generated/ differs",
     )
     parser.add_argument("--quiet", action="store_true", help="print no summary table")
+    parser.add_argument(
+        "--notebooks",
+        metavar="DIR",
+        help="write one Jupyter notebook per step into DIR (needs nbformat: the teach extra) "
+        "and nothing else",
+    )
     args = parser.parse_args(argv)
+    if args.notebooks is not None:
+        return _notebooks(args.notebooks)
     t0 = time.perf_counter()
     files, boards, ok = generate(verbose=not args.quiet)
     n_errata = sum(len(b.errata) for b in boards)

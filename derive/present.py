@@ -197,7 +197,7 @@ def _decimal_text(q: sp.Rational) -> str:
 def readable_numbers(expr: sp.Basic, digits: int = DIGITS) -> tuple[sp.Basic, bool]:
     """``expr`` with the numbers written as the paper writes them; True when any was rounded.
 
-    A rational with a denominator above 64 becomes a decimal (exact when it terminates within 12
+    A rational with a numerator or denominator above 1000 becomes a decimal (exact when it terminates within 12
     significant digits); a float, or a sub-expression without symbols whose LaTeX is longer than
     16 characters (an exact algebraic number), is rounded to :data:`DIGITS` digits.
     """
@@ -206,8 +206,8 @@ def readable_numbers(expr: sp.Basic, digits: int = DIGITS) -> tuple[sp.Basic, bo
     def number(value: sp.Basic) -> sp.Basic:
         nonlocal rounded
         if isinstance(value, sp.Rational) and not isinstance(value, sp.Integer):
-            if value.q <= 64 and abs(value.p) < 10**4:
-                return value
+            if value.q <= 1000 and abs(value.p) <= 1000:
+                return value  # a fraction a reader works with (3/8, 33/140)
             if _terminating(value) and len(_decimal_text(value).replace("-", "")) <= 13:
                 return sp.Float(_decimal_text(value), 15)
         if isinstance(value, sp.Integer) and abs(value) < 10**9:

@@ -44,9 +44,9 @@ def beta_l_roots(n: int = N_MODES, dps: int = DIGITS) -> list[mp.mpf]:
 
 
 def _by_powers(expr: sp.Expr, s: sp.Symbol) -> sp.Expr:
-    """``expr`` as a polynomial in ``s`` with each coefficient simplified (the board's form)."""
+    """``expr`` as a polynomial in ``s``, each coefficient trigsimp-ed (the board's form)."""
     poly = sp.Poly(sp.expand(expr), s)
-    return sum((sp.factor(sp.simplify(c)) * s**k for (k,), c in poly.terms()), start=sp.Integer(0))
+    return sum((sp.trigsimp(c) * s**k for (k,), c in poly.terms()), start=sp.Integer(0))
 
 
 def derive() -> Board:

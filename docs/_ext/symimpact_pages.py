@@ -81,7 +81,8 @@ def derivation_page(step: str) -> str:
     out = [
         f"# {b.title}",
         "",
-        f"Paper equations: **{b.equations}**. Source: `derive/{step}.py`.",
+        f"Paper equations: **{b.equations}**. Source: `derive/{step}.py`. As a notebook that "
+        f"re-derives it live, with exercises: [notebooks](../notebooks.md).",
         "",
     ]
     doc = inspect.getdoc(module) or ""
@@ -174,6 +175,33 @@ def errata_page() -> str:
     return body + "\n" + "\n".join(table) + "\n"
 
 
+def notebooks_page(folder: Path) -> str:
+    """The teaching notebooks, written with ``python -m derive --notebooks`` into the build and
+    offered for download."""
+    from derive.notebooks import write_notebooks
+
+    paths = write_notebooks(folder)
+    import derive
+
+    out = ["# Notebooks", "",
+           "One Jupyter notebook per derivation step: each runs the step's own statements from "
+           "`derive/` one board line at a time, in the paper's order, showing every result, "
+           "check and erratum as it arises, and ends with exercises that change one assumption "
+           "and show its effect. A last notebook walks through [regenerating after a "
+           "change](regenerating.md).", "",
+           "Run them from the checkout:", "", "```console",
+           "$ pip install -e \".[teach]\"        # JupyterLab, nbformat, ipykernel",
+           "$ python -m derive --notebooks notebooks", "$ jupyter lab notebooks", "```", "",
+           "or download them here (open them inside the checkout, or set `SYMIMPACT_CHECKOUT` "
+           "to its path):", ""]  # fmt: skip
+    titles = {step: _board(step).title for step in derive.STEPS}
+    for path in paths:
+        step = path.stem.split("_", 1)[1]
+        title = titles.get(step, "Regenerating after a change")
+        out.append(f"- {{download}}`{path.name} <notebooks/{path.name}>` — {title}")
+    return "\n".join(out) + "\n"
+
+
 def cli_page() -> str:
     """The command line, from the parser itself."""
     from symimpact.cli import build_parser
@@ -232,6 +260,10 @@ def write_pages(app=None) -> None:
              *names, "```", ""]  # fmt: skip
     (OUT / "derivations" / "index.md").write_text("\n".join(index), encoding="utf-8")
     (OUT / "errata.md").write_text(errata_page(), encoding="utf-8")
+    (OUT / "notebooks.md").write_text(notebooks_page(OUT / "notebooks"), encoding="utf-8")
+    from derive.walkthrough import page as regenerating_page
+
+    (OUT / "regenerating.md").write_text(regenerating_page(HERE.parent), encoding="utf-8")
     (OUT / "cli.md").write_text(cli_page(), encoding="utf-8")
     (OUT / "tutorial.md").write_text(tutorial_page(OUT / "tutorial", _run_cli), encoding="utf-8")
     (OUT / "report.md").write_text(report_page(OUT / "report"), encoding="utf-8")

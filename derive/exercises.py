@@ -1,0 +1,189 @@
+"""Exercises of the derivation notebooks: per step, two or three changes of one assumption and
+their effect, computed live.
+
+Each exercise runs at the end of its step's notebook, where every name of the step's
+``derive()`` (its symbols, intermediate results and helpers) is defined, because the notebook ran
+the step's own statements.  Each prints or displays its result; the tests execute them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Exercise:
+    title: str
+    text: str
+    code: str
+
+
+EXERCISES: dict[str, tuple[Exercise, ...]] = {
+    "ritz": (
+        Exercise(
+            "Put the damper at mid-span",
+            "Refer the motion to ξ₀ = 1/2 instead of the tip: M and K change, their ratio — the "
+            "frequency — does not.",
+            """for where in (1, sp.Rational(1, 2)):
+    Mc, Kc = fm(roots[0], where), fk(roots[0], where)
+    print(f"xi0 = {where}: M/(rho A L) = {mp.nstr(Mc, 6)}, K L^3/(EI) = {mp.nstr(Kc, 6)}, "
+          f"K/M = {mp.nstr(Kc / Mc, 8)}")
+print("(beta_1 L)^4 =", mp.nstr(roots[0] ** 4, 8))""",
+        ),
+        Exercise(
+            "The second mode",
+            "The same reduction for mode 2: K·L³/(EI) at the tip is (β₂L)⁴/4.",
+            """print("K L^3/(EI), mode 2:", mp.nstr(fk(roots[1], 1), 10))
+print("(beta_2 L)^4 / 4:     ", mp.nstr(roots[1] ** 4 / 4, 10))""",
+        ),
+        Exercise(
+            "Rayleigh with the static deflection shape",
+            "Use the static tip-load shape ψ(ξ) = (3ξ² − ξ³)/2 instead of the mode: the classic "
+            "K = 3EI/L³ and M = 33/140 ρAL, and a frequency a little above the exact one "
+            "(Rayleigh's quotient bounds it from above).",
+            """u_ = sp.Symbol("u")
+psi = (3 * u_**2 - u_**3) / 2
+M_psi = sp.integrate(psi**2, (u_, 0, 1))
+K_psi = sp.integrate(sp.diff(psi, u_, 2) ** 2, (u_, 0, 1))
+show_value(sp.Eq(sp.Symbol("M_psi"), M_psi))
+show_value(sp.Eq(sp.Symbol("K_psi"), K_psi))
+ratio = mp.sqrt(mp.mpf(str(K_psi / M_psi))) / roots[0] ** 2
+print("omega_Rayleigh / omega_exact =", mp.nstr(ratio, 8))""",
+        ),
+    ),
+    "contact_fits": (
+        Exercise(
+            "How many samples?",
+            "The discrete fit depends on the number of samples; only n = 21 gives the paper's "
+            "a = 0.1553 N/cm³ and b = 0.8360 N/cm.",
+            """for ns in (6, 11, 21, 41):
+    ah, bh, kh = discrete(ns)
+    a_v = float(ah) * 1000 / 0.02**1.5  # N/m^3
+    b_v = float(bh) * 1000 * 0.02**0.5  # N/m
+    print(f"n = {ns:2d}: a = {a_v / 1e6:.4f} N/cm^3, b = {b_v / 100:.4f} N/cm")
+print(f"continuous: a = {float(cont_vals['a']) / 1e6:.4f} N/cm^3, "
+      f"b = {float(cont_vals['b']) / 100:.4f} N/cm")""",
+        ),
+        Exercise(
+            "Keep the full Hertz law",
+            "How far is the cubic fit from the Hertz force it replaces, inside the fitted range "
+            "and beyond it (a harder impact penetrates further)?",
+            """F_hz = sp.lambdify(delta, hertz.subs(paper))
+F_cc = sp.lambdify(delta, cubic.subs(scale).subs(paper))
+for frac in (0.25, 0.5, 1.0, 1.5, 2.0):
+    d = frac * 0.02
+    print(f"delta = {frac:4.2f} delta_max: Hertz {F_hz(d):8.3f} N, cubic {F_cc(d):8.3f} N, "
+          f"cubic/Hertz = {F_cc(d) / F_hz(d):.3f}")""",
+        ),
+        Exercise(
+            "A shorter fit range",
+            "Fit over δ_max = 1 cm: a grows as δ_max^(−3/2) and b shrinks as δ_max^(1/2).",
+            """for dm in (sp.Rational(2, 100), sp.Rational(1, 100)):
+    vals = {k_hz: 1000, d_max: dm}
+    print(f"delta_max = {float(dm) * 100:.0f} cm: a = {float(scale[a].subs(vals)) / 1e6:.4f} "
+          f"N/cm^3, b = {float(scale[b].subs(vals)) / 100:.4f} N/cm")""",
+        ),
+    ),
+    "harmonic_balance": (
+        Exercise(
+            "Keep the damping",
+            "With C and c₁ kept, the residual of Eq. 10.1 has a sin ωt part as well: "
+            "a single cosine cannot balance it, the response needs a phase.",
+            """damped = sp.expand(eq10_1.subs(trial).doit())
+theta = sp.Symbol("theta")
+sin_part = sp.simplify(sp.integrate((damped * sp.sin(omega * t)).subs(t, theta / omega),
+                                    (theta, 0, 2 * sp.pi)) / sp.pi)
+show_value(sp.Eq(sp.Symbol("S_1"), sin_part))""",
+        ),
+        Exercise(
+            "Linear contact, numbers",
+            "With a = 0 the two balances are linear: the two natural frequencies of the masses "
+            "coupled through b, for M = 1 kg, m = 0.25 kg, K = 100 N/m, b = 83.6 N/m.",
+            """vals = {M: 1, m: sp.Rational(1, 4), K: 100, b: sp.Rational("83.6")}
+for root in sorted(sp.solve(char.subs(vals), W)):
+    f_hz = sp.sqrt(root) / (2 * sp.pi)
+    print(f"omega^2 = {float(root):9.3f} rad^2/s^2, f = {float(f_hz):.3f} Hz")""",
+        ),
+    ),
+    "lindstedt": (
+        Exercise(
+            "How far does each order go?",
+            "ω₀ = 1 rad/s, ε = 1: the Lindstedt series against the exact (elliptic-integral) "
+            "frequency as the amplitude grows.",
+            """for al in (0.5, 1.0, 2.0):
+    vals = {omega0: 1, eps: 1, alpha: al}
+    exact_w = float(exact_frequency().subs(vals).evalf())
+    orders = ", ".join(f"order {n}: {float(frequency(n).subs(vals)):.6f}" for n in (1, 2, 3))
+    print(f"alpha = {al}: {orders}; exact {exact_w:.6f}")""",
+        ),
+        Exercise(
+            "A softening contact (ε < 0)",
+            "The same series for ε = −0.2: the frequency now falls with amplitude.",
+            """for al in (0.5, 1.0, 1.5):
+    vals = {omega0: 1, eps: -sp.Rational(1, 5), alpha: al}
+    print(f"alpha = {al}: order 1 {float(frequency(1).subs(vals)):.6f}, "
+          f"order 3 {float(frequency(3).subs(vals)):.6f}, "
+          f"exact {float(exact_frequency().subs(vals).evalf()):.6f}")""",
+        ),
+    ),
+    "multiple_scales": (
+        Exercise(
+            "Keep the contact damping",
+            "Table 1's case with m = 0.25 kg and c₁ > 0: the fixed point of Eq. 31 moves.",
+            """for c1_val in (0, sp.Rational(1, 20), sp.Rational(1, 2)):
+    subs = {**table1_inputs("0.25"), c1: c1_val}
+    step_map = sp.lambdify(T, T_map.subs(lam, lam_derived).subs(subs), "mpmath")
+    Tk = mp.mpf(str(sp.N(T0.subs(lam, lam_derived).subs(subs), 30)))
+    for _ in range(60):
+        Tk = step_map(Tk)
+    print(f"c1 = {float(c1_val):.2f} N s/m: T = {mp.nstr(Tk, 6)} s")""",
+        ),
+        Exercise(
+            "The printed factor for a heavier impact mass",
+            "With the printed λ the linear start value T⁽⁰⁾ of the contact duration is too long "
+            "by the factor 1 + m/M (M = 1 kg): the error grows with the mass ratio.",
+            """for m_val in ("0.15", "0.25", "0.5"):
+    subs = table1_inputs(m_val)
+    t_p = sp.N(T0.subs(lam, lam_printed).subs(subs), 12)
+    t_d = sp.N(T0.subs(lam, lam_derived).subs(subs), 12)
+    print(f"m = {m_val} kg: printed/derived = {float(t_p / t_d):.5f}, "
+          f"1 + m/M = {1 + float(m_val):.5f}")""",
+        ),
+    ),
+    "closed_forms": (
+        Exercise(
+            "Another contact exponent",
+            "For a force K·zⁿ the same steps give the constant "
+            "2/(n+1)·B(1/(n+1), 1/2): π for the linear law (n = 1), 2.9433 for Hertz.",
+            """n_ = sp.Symbol("n", positive=True)
+const_n = 2 * sp.beta(1 / (n_ + 1), sp.Rational(1, 2)) / (n_ + 1)
+for n_val in (1, sp.Rational(3, 2), 2, 3):
+    print(f"n = {n_val}: constant = {float(sp.N(const_n.subs(n_, n_val), 15)):.6f}")
+print("pi =", float(sp.pi))""",
+        ),
+        Exercise(
+            "Restitution of the linear law",
+            "The coefficient of restitution exp(−c₁T/(2μ)) for M = 1 kg, m = 0.25 kg, "
+            "k₁ = 122.7 N/m and a few contact dampings.",
+            """for c1_val in (0, sp.Rational(1, 20), sp.Rational(1, 2), 2):
+    vals = {m: sp.Rational(1, 4), M: 1, k1: sp.Rational("122.7"), c1: c1_val}
+    print(f"c1 = {float(c1_val):.2f} N s/m: T = {float(T_lin.subs(vals)) * 1e3:.2f} ms, "
+          f"e = {float(e_lin.subs(vals)):.4f}")""",
+        ),
+    ),
+    "free_flight": (
+        Exercise(
+            "An overdamped beam",
+            "ζ > 1 (M = 1 kg, K = 1 N/m, C = 3 N s/m): dsolve returns two decaying "
+            "exponentials and no oscillation.",
+            """over = sp.dsolve(eq_x.lhs.subs({M: 1, K: 1, C: 3}), x(t),
+                 ics={x(0): x0, x(t).diff(t).subs(t, 0): xd0}).rhs
+show_value(sp.Eq(sp.Symbol("x_over"), sp.simplify(over)))""",
+        ),
+        Exercise(
+            "The undamped limit",
+            "C → 0 in the free-flight solution gives the undamped oscillator.",
+            """show_value(sp.Eq(sp.Symbol("x_undamped"), sp.simplify(x_t.subs(C, 0))))""",
+        ),
+    ),
+}

@@ -1,0 +1,201 @@
+"""Regenerating after a change: a walk-through, run for real.
+
+A reader changes one assumption of a derivation step in a working copy of the checkout,
+regenerates, and watches ``python -m derive --check`` show the diff, the step's own checks fail,
+the errata table change and the tests respond.  The assumption: Eq. 10.2 written for the relative
+coordinate z = y − x needs y in terms of z; with y = B·cos ωt and x = A·cos ωt,
+y = B/(B − A)·z.  The paper's printed factor of Eq. 21 corresponds to the inverted relation
+y = (B − A)/B·z — the change made here.
+
+The same snippets make the docs page (executed when the docs are built, their printed output
+inserted) and the notebook ``08_regenerating.ipynb`` (``python -m derive --notebooks DIR``).
+Each snippet runs in one namespace where ``root`` is the checkout.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+from dataclasses import dataclass
+from pathlib import Path
+
+OLD = "y_of_z = B / (B - A) * z"
+NEW = "y_of_z = (B - A) / B * z"
+
+
+@dataclass(frozen=True)
+class Snippet:
+    text: str
+    code: str
+
+
+SNIPPETS = (
+    Snippet(
+        "Work in a copy of the checkout, so nothing here touches your files: the derivation "
+        "package, what it generates, the tests and the project file.",
+        """import difflib
+import os
+import shutil
+import textwrap
+import subprocess
+import sys
+import tempfile
+
+work = Path(tempfile.mkdtemp(prefix="symimpact-try-")) / "checkout"
+skip = shutil.ignore_patterns("__pycache__")
+for part in ("derive", "generated", "tests"):
+    shutil.copytree(root / part, work / part, ignore=skip)
+shutil.copy(root / "pyproject.toml", work / "pyproject.toml")
+print("copied:", ", ".join(sorted(p.name for p in work.iterdir())))""",
+    ),
+    Snippet(
+        "Change one assumption in `derive/multiple_scales.py`: the relation between the impact "
+        "mass's motion y and the relative coordinate z (Eq. 21). The derivation has "
+        "y = B/(B − A)·z; write the inverted relation, the one the paper's printed factor "
+        "corresponds to.",
+        f"""module = work / "derive" / "multiple_scales.py"
+before = module.read_text(encoding="utf-8")
+after = before.replace(
+    {OLD!r},
+    {NEW!r},
+)
+assert after != before, "the line to change was not found"
+module.write_text(after, encoding="utf-8")
+name = "derive/multiple_scales.py"
+diff = difflib.unified_diff(before.splitlines(True),
+                            after.splitlines(True),
+                            "a/" + name, "b/" + name, n=0)
+print("".join(diff))""",
+    ),
+    Snippet(
+        "Regenerate in memory and compare with `generated/`: `python -m derive --check`. The "
+        "step's own checks fail — the one that compares two free bodies with their reduced mass "
+        "catches the wrong relation — and every generated file that holds the contact-duration "
+        "kernels differs.",
+        """run = subprocess.run([sys.executable, "-m", "derive", "--check"],
+                     cwd=work, capture_output=True, text=True)
+lines = run.stdout.splitlines()
+failed = []  # the table's FAIL rows, each with its detail line
+for k, line in enumerate(lines):
+    detail = line.startswith("    ") and "FAIL" in lines[k - 1]
+    if "FAIL" in line or detail:
+        failed.append(line)
+print("\\n".join(" ".join(line.split()) for line in failed))
+changed = [line[14:] for line in lines
+           if line.startswith("--- generated/")]
+print(f"\\n{len(changed)} files of generated/ differ:")
+print(textwrap.fill(", ".join(changed), 60))
+start = lines.index("--- generated/multiple_scales.py")
+kernel = [line[1:].strip() for line in lines[start:]
+          if line.startswith(("-    return", "+    return"))]
+p = len(os.path.commonprefix(kernel[:2]))  # where they part
+print("\\nfirst changed formula, generated/multiple_scales.py:")
+print("was …" + kernel[0][max(p - 25, 0) : p + 20] + "…")
+print("now …" + kernel[1][max(p - 25, 0) : p + 20] + "…")
+print("\\nexit status:", run.returncode)""",
+    ),
+    Snippet(
+        "Regenerate for real (`python -m derive`) and look at the errata table: the Eq. 21 "
+        "erratum is no longer a difference between the paper and the derivation — they now "
+        "agree, on the wrong relation.",
+        """errata = work / "generated" / "errata.md"
+errata_before = errata.read_text(encoding="utf-8")
+run = subprocess.run([sys.executable, "-m", "derive", "--quiet"],
+                     cwd=work, capture_output=True, text=True)
+errata_after = errata.read_text(encoding="utf-8")
+print("exit status:", run.returncode, "(a check failed)")
+diff = difflib.unified_diff(errata_before.splitlines(),
+                            errata_after.splitlines(),
+                            lineterm="", n=0)
+rows = [line for line in diff if line.startswith(("-|", "+|"))]
+for row in rows:  # # | equation | what | printed | derived
+    cells = [c.strip() for c in row[2:].split("|")]
+    print(f"{row[0]} erratum {cells[0]} ({cells[1]}):")
+    print(f"{' ' * 13}printed {cells[3]}")
+    print(f"{' ' * 13}derived {cells[4]}")""",
+    ),
+    Snippet(
+        "Run the derivation tests on the working copy: the tests that pin the errata and the "
+        "checks respond.",
+        """tests = "tests/test_derivations.py"
+run = subprocess.run([sys.executable, "-m", "pytest", "-q", "--color=no",
+                      "-p", "no:cacheprovider", tests],
+                     cwd=work, capture_output=True, text=True)
+for line in run.stdout.splitlines():
+    if line.startswith(("FAILED", "ERROR")):
+        test = line.split(" - ")[0]
+        print(test.replace(tests + "::", ""))
+    elif line[:1].isdigit():
+        print(line)""",
+    ),
+    Snippet(
+        "Undo the change; the copy is as it was (in your own checkout: `git checkout derive/` "
+        "and `python -m derive`).",
+        """module.write_text(before, encoding="utf-8")
+subprocess.run([sys.executable, "-m", "derive", "--quiet"],
+               cwd=work, capture_output=True)
+same = all((work / "generated" / p).read_bytes()
+           == (root / "generated" / p).read_bytes()
+           for p in ("errata.md", "multiple_scales.py"))
+print("generated files as in the checkout again:", same)
+shutil.rmtree(work.parent)""",
+    ),
+)
+
+TITLE = "Regenerating after a change"
+INTRO = (
+    "What happens when a derivation changes: one assumption of a step is changed in a working "
+    "copy, the formulas are regenerated, and `python -m derive --check`, the step's checks, the "
+    "errata table and the tests respond. Every output below was produced when this page was "
+    "built; the notebook `08_regenerating.ipynb` runs the same cells."
+)
+
+
+def run(root: Path) -> list[tuple[Snippet, str]]:
+    """Execute the snippets in one namespace with ``root`` the checkout; (snippet, its printed
+    output) in order."""
+    ns: dict = {"Path": Path, "root": Path(root)}
+    out = []
+    for s in SNIPPETS:
+        buf = io.StringIO()
+        with contextlib.redirect_stdout(buf):
+            exec(compile(s.code, "<walkthrough>", "exec"), ns)
+        out.append((s, buf.getvalue().rstrip()))
+    return out
+
+
+def page(root: Path) -> str:
+    """The docs page: text, code and real output of every snippet."""
+    out = [f"# {TITLE}", "", INTRO, ""]
+    for k, (s, printed) in enumerate(run(root), 1):
+        out += [f"## {k}.", "", s.text, "", "```python", s.code, "```", "", "```text",
+                printed or "(no output)", "```", ""]  # fmt: skip
+    return "\n".join(out)
+
+
+def notebook(root: Path):
+    """The same walk-through as a notebook (nbformat v4)."""
+    import nbformat
+
+    nb = nbformat.v4.new_notebook()
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
+    nb.cells.append(nbformat.v4.new_markdown_cell(f"# {TITLE}\n\n{INTRO}"))
+    boot = f"""import os
+from pathlib import Path
+
+_here = Path.cwd().resolve()
+_places = [os.environ.get("SYMIMPACT_CHECKOUT"), _here, *_here.parents, {str(root)!r}]
+root = next((Path(p) for p in _places if p and (Path(p) / "derive" / "board.py").is_file()), None)
+if root is None:
+    raise RuntimeError("derive/ not found: open the notebook inside the symimpact checkout "
+                       "or set SYMIMPACT_CHECKOUT")
+print("checkout:", root.name)"""
+    nb.cells.append(nbformat.v4.new_code_cell(boot))
+    for s in SNIPPETS:
+        nb.cells.append(nbformat.v4.new_markdown_cell(s.text))
+        nb.cells.append(nbformat.v4.new_code_cell(s.code))
+    return nb

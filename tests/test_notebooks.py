@@ -1,0 +1,99 @@
+"""The teaching notebooks: ``python -m derive --notebooks DIR`` writes one per derivation step,
+and each is executed here with nbclient on a fresh kernel, as a teacher would run it.
+
+A notebook fails the test on any error or any code cell without output; it must re-derive the
+step's board exactly (its last cell compares it with ``derive()``'s), show the paper's equation
+numbers, its checks and its errata where they arise, and hold two or three exercises.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+import derive
+from derive.exercises import EXERCISES
+
+nbformat = pytest.importorskip("nbformat")
+nbclient = pytest.importorskip("nbclient")
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+@pytest.fixture(scope="module")
+def notebooks(tmp_path_factory) -> list[Path]:
+    folder = tmp_path_factory.mktemp("notebooks")
+    res = subprocess.run([sys.executable, "-m", "derive", "--notebooks", str(folder)],
+                         cwd=ROOT, capture_output=True, text=True, timeout=600)  # fmt: skip
+    assert res.returncode == 0, res.stderr[-3000:]
+    paths = sorted(folder.glob("*.ipynb"))
+    assert [p.stem.split("_", 1)[1] for p in paths] == [*derive.STEPS, "regenerating"]
+    return paths
+
+
+def _outputs_text(cell) -> str:
+    out = []
+    for o in cell.get("outputs", []):
+        if o.get("output_type") == "stream":
+            out.append(o.get("text", ""))
+        out += [str(v) for v in o.get("data", {}).values()]
+    return "\n".join(out)
+
+
+@pytest.mark.parametrize("step", derive.STEPS)
+def test_notebook_runs_and_rederives_its_step(notebooks, step, tmp_path):
+    path = next(p for p in notebooks if p.stem.endswith(step))
+    nb = nbformat.read(path, as_version=4)
+    t0 = time.perf_counter()
+    nbclient.NotebookClient(nb, timeout=600, kernel_name="python3",
+                            resources={"metadata": {"path": str(tmp_path)}}).execute()  # fmt: skip
+    seconds = time.perf_counter() - t0
+    code = [c for c in nb.cells if c.cell_type == "code"]
+    empty = [c.source.splitlines()[0] for c in code if not c.get("outputs")]
+    assert not empty, empty  # every cell shows something
+    errors = [o for c in code for o in c.outputs if o.get("output_type") == "error"]
+    assert not errors
+    board = derive.board(step)
+    last = _outputs_text(code[-1])
+    n = len(board.lines)
+    assert f"{n} of {n} board lines identical" in last, last
+    markdown = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
+    equations = {line.equation for line in board.lines if line.equation}
+    assert all(f"(Eq. {eq})" in markdown for eq in equations), equations
+    shown = "\n".join(_outputs_text(c) for c in code)
+    assert all(f"check *{c.name}*" in shown for c in board.checks)
+    assert all(f"Erratum, Eq. {e.equation}" in shown for e in board.errata)
+    assert 2 <= len(EXERCISES[step]) <= 3
+    assert sum("### Exercise" in c.source for c in nb.cells if c.cell_type == "markdown") == len(
+        EXERCISES[step]
+    )
+    print(f"{path.name}: {len(code)} code cells executed in {seconds:.1f} s")
+
+
+def test_regenerating_notebook_walks_through_a_change(notebooks, tmp_path):
+    """The walk-through changes Eq. 21's assumption in a working copy: the checks fail, 11 files
+    of generated/ differ, the errata row changes, 3 derivation tests fail, and undoing it brings
+    the generated files back."""
+    nb = nbformat.read(notebooks[-1], as_version=4)
+    nbclient.NotebookClient(nb, timeout=600, kernel_name="python3",
+                            resources={"metadata": {"path": str(tmp_path)}}).execute()  # fmt: skip
+    code = [c for c in nb.cells if c.cell_type == "code"]
+    assert all(c.get("outputs") for c in code)
+    text = "\n".join(_outputs_text(c) for c in code)
+    assert "Eq. 21 factor (B − A)/B 21 FAIL" in text
+    assert "files of generated/ differ" in text and "erratum 5" in text
+    assert "FAILED test_each_erratum_is_a_real_difference[eq21_factor]" in text
+    assert "generated files as in the checkout again: True" in text
+
+
+def test_notebooks_refuse_a_folder_they_cannot_write(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    res = subprocess.run([sys.executable, "-m", "derive", "--notebooks", str(blocker / "nb")],
+                         cwd=ROOT, capture_output=True, text=True, timeout=600)  # fmt: skip
+    assert res.returncode == 2
+    assert res.stderr.count("\n") == 1 and "--notebooks" in res.stderr, res.stderr
