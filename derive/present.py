@@ -262,7 +262,27 @@ def _shapes(expr: sp.Basic) -> list[sp.Basic]:
                 out.append(sp.factor(expr))
             except (sp.PolynomialError, NotImplementedError, TypeError):
                 pass
+            out.append(sp.expand(expr, deep=False))  # a sum of fractions, not a fraction of sums
     return out
+
+
+def nested_fractions(latex: str) -> int:
+    """Fractions written inside the numerator or denominator of another (set small, hard to
+    read on a board)."""
+    count, i = 0, 0
+    while (i := latex.find("\\frac", i)) >= 0:
+        num, j = _group(latex, i + 5)
+        den, _ = _group(latex, j)
+        count += num.count("\\frac") + den.count("\\frac")
+        i += 5
+    return count
+
+
+def _readability(e: sp.Basic, limit: float = 10**9) -> tuple[bool, int, float]:
+    """Sort key of the forms of a result: fits the board, fewest nested fractions, narrowest."""
+    text = tex(e)
+    w = width_em(text)
+    return (w > limit, nested_fractions(text), w)
 
 
 # --- naming and breaking ------------------------------------------------------------------------
@@ -389,7 +409,7 @@ def board_form(
     elif isinstance(value, list | tuple) and value and all(isinstance(v, sp.Basic) for v in value):
         if all(isinstance(v, sp.Number) for v in value):
             return _number_list(value, limit)
-        items = [("", v) for v in value]
+        return _expression_list(value, names or {}, limit, digits)
     elif isinstance(value, sp.Basic):
         items = [(lhs, value)]
     else:
@@ -445,8 +465,37 @@ def _prepare(
     for symbol, sub in own.items():
         v = v.subs(sub, symbol)
     v, rounded = readable_numbers(v, digits)
-    v = min(_shapes(v), key=lambda e: width_em(tex(e)))
+    v = min(_shapes(v), key=lambda e: _readability(e, WIDTH_EM))
     return v, rounded
+
+
+def _expression_list(values, own, limit: float, digits: int) -> Shown:
+    """A list of results: side by side, separated by commas, in rows that fit; a result wider
+    than a row is written on its own (named pieces and all)."""
+    shown = [board_form(v, names=own, limit=limit, digits=digits) for v in values]
+    lines: list[str] = []
+    where: list = []
+    definitions: dict = {}
+    current = ""
+    for form in shown:
+        assert form is not None
+        if len(form.lines) > 1 or form.where:
+            lines += [current] if current else []
+            lines += form.lines
+            where += form.where
+            definitions.update(form.definitions)
+            current = ""
+            continue
+        text = form.lines[0]
+        candidate = f"{current},\\quad {text}" if current else text
+        if current and width_em(candidate) > limit:
+            lines.append(current + ",")
+            current = text
+        else:
+            current = candidate
+    if current:
+        lines.append(current)
+    return Shown(lines, where, any(f.approx for f in shown if f), definitions)
 
 
 def _number_list(values, limit: float) -> Shown:

@@ -118,8 +118,8 @@ for row in rows:  # # | equation | what | printed | derived
         "Run the derivation tests on the working copy: the tests that pin the errata and the "
         "checks respond.",
         """tests = "tests/test_derivations.py"
-run = subprocess.run([sys.executable, "-m", "pytest", "-q", "--color=no",
-                      "-p", "no:cacheprovider", tests],
+run = subprocess.run([sys.executable, "-m", "pytest", "-q",
+                      "--color=no", "-p", "no:cacheprovider", tests],
                      cwd=work, capture_output=True, text=True)
 for line in run.stdout.splitlines():
     if line.startswith(("FAILED", "ERROR")):

@@ -97,3 +97,12 @@ def test_notebooks_refuse_a_folder_they_cannot_write(tmp_path):
                          cwd=ROOT, capture_output=True, text=True, timeout=600)  # fmt: skip
     assert res.returncode == 2
     assert res.stderr.count("\n") == 1 and "--notebooks" in res.stderr, res.stderr
+
+
+def test_walkthrough_code_fits_the_docs_code_column():
+    """The walk-through's code is shown on a docs page: no line longer than the code column
+    holds at a 1000 px window (measured by tests/test_docs.py: 69 characters fit, 72 scroll)."""
+    from derive.walkthrough import SNIPPETS
+
+    widths = [len(line) for s in SNIPPETS for line in s.code.splitlines()]
+    assert max(widths) <= 69, max(widths)
