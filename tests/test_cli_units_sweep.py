@@ -13,8 +13,8 @@ from symimpact.generated import closed_forms, contact_fits, ritz
 
 from symimpact.cli import main
 from symimpact.errors import ParameterError
+from symimpact.maps import gap_class, parse_range, sweep
 from symimpact.simulation import simulate
-from symimpact.sweep import gap_class, parse_range, sweep
 from symimpact.system import ImpactSystem, table2_system
 from symimpact.units import si
 
@@ -225,7 +225,7 @@ def test_sweep_parallel_equals_serial():
 def test_interrupted_sweep_leaves_no_output(tmp_path, monkeypatch, capsys):
     """Ctrl-C in the middle of a sweep: exit 130, and neither --csv, --plot nor --out leaves a
     file (complete or partial) under its name, nor a temporary file beside it."""
-    import symimpact.maps as maps
+    import symimpact.maps.runs as maps
 
     calls = {"n": 0}
     real = maps.run_point

@@ -160,7 +160,7 @@ def test_a_map_with_no_dask_worker_ends_in_one_line(monkeypatch, capsys):
     """All workers lost: the map waited silently; now it ends after DASK_NO_WORKER_TIMEOUT with
     one line and the fault status (here a cluster that never had a worker, timeout 2 s)."""
     distributed = pytest.importorskip("distributed")
-    import symimpact.maps as maps
+    import symimpact.maps.executors as maps
 
     monkeypatch.setattr(maps, "DASK_NO_WORKER_TIMEOUT", 2.0)
     with distributed.LocalCluster(

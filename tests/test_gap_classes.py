@@ -13,14 +13,14 @@ import numpy as np
 import pytest
 
 from symimpact.errors import ParameterError
-from symimpact.reference import reference_impacts
-from symimpact.sweep import (
+from symimpact.maps.sweep import (
     arrival_condition,
     envelope_limits,
     fig5_limits,
     gap_intervals,
     in_range_share,
 )
+from symimpact.reference import reference_impacts
 from symimpact.system import ImpactSystem
 
 

@@ -16,10 +16,9 @@ import warnings
 import pandas as pd
 import pytest
 
-from symimpact import mapfiles
 from symimpact.errors import ParameterError
-from symimpact.mapfiles import MapStore, MapStoreWarning
-from symimpact.maps import as_points, parameter_map
+from symimpact.maps import MapStore, MapStoreWarning, as_points, parameter_map
+from symimpact.maps import store as mapfiles
 from symimpact.system import ImpactSystem
 
 BASE = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, c1=5.0, k_hz=1000.0)
@@ -164,3 +163,25 @@ def test_a_second_map_on_the_same_out_is_refused_while_the_first_runs(tmp_path):
     finally:
         first.close()
     MapStore(out, system=BASE, points=points, settings={}).close()  # free again
+
+
+def test_maps_package_imports_flow_one_way():
+    """symimpact.maps: each module imports only the modules before it in the map's flow
+    (points → runs → executors → table → store → engine → sweep), at the top or inside
+    functions — no circle (maps, mapfiles and sweep used to import each other)."""
+    import ast
+    from pathlib import Path
+
+    import symimpact.maps as pkg
+
+    order = ["points", "runs", "executors", "table", "store", "engine", "sweep"]
+    folder = Path(pkg.__file__).parent
+    assert sorted(p.stem for p in folder.glob("*.py") if p.stem != "__init__") == sorted(order)
+    for k, name in enumerate(order):
+        tree = ast.parse((folder / f"{name}.py").read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.level == 1:
+                target = (node.module or "").split(".")[0]
+                assert target in order[:k], f"{name} imports .{target}"
+            if isinstance(node, ast.ImportFrom) and node.level >= 2 and node.module:
+                assert not node.module.startswith(("maps", "cli", "report")), (name, node.module)

@@ -11,8 +11,7 @@ import pytest
 
 from symimpact.cli import main
 from symimpact.errors import ParameterError
-from symimpact.mapfiles import read_map
-from symimpact.maps import OUTPUTS, parameter_map, read_sets
+from symimpact.maps import OUTPUTS, parameter_map, read_map, read_sets
 from symimpact.plots import plot_map
 from symimpact.simulation import equivalent_damping_ratio, simulate
 from symimpact.system import ImpactSystem

@@ -99,8 +99,7 @@ def test_cli_reads_a_unicode_minus_as_a_minus_and_refuses_a_comma():
 
 
 def test_sets_cells_and_vary_lists_use_the_same_reader(tmp_path):
-    from symimpact.maps import read_sets
-    from symimpact.sweep import parse_range
+    from symimpact.maps import parse_range, read_sets
 
     assert list(parse_range("x0", "−2 mm,2 mm")) == [-0.002, 0.002]
     csv = tmp_path / "sets.csv"

@@ -12,8 +12,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from symimpact.maps.sweep import fig5_limits, gap_range
 from symimpact.report import contact_stage, paper, vibration_stage
-from symimpact.sweep import fig5_limits, gap_range
 
 README = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
 TEXT = " ".join(README.split())  # line breaks as spaces

@@ -132,7 +132,7 @@ for method in ("perturbation", "hertz", "linear", "numerical"):
     ]
     plot = folder / "sweep.png"
     code4 = f"""from symimpact.plots import plot_sweep
-from symimpact.sweep import sweep
+from symimpact.maps import sweep
 import numpy as np
 gaps = np.arange(2, 20.1, 1.0) * 1e-3
 rows = sweep(system, gaps, "gap", xdot0=1.0, t_end=3.0,

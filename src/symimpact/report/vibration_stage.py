@@ -15,7 +15,8 @@ import numpy as np
 from ..errors import SymimpactError
 from ..generated import free_flight
 from ..simulation import SimulationResult, simulate
-from ..sweep import fig5_limits, gap_class, gap_range, sweep
+from ..maps import gap_class
+from ..maps.sweep import fig5_limits, gap_range, sweep
 from ..system import ImpactSystem
 from ..units import si
 from . import paper
@@ -238,7 +239,7 @@ def _table3_blocks(runs, chosen: Reading) -> list[Any]:
             rows,
             [".0f", None, None, None, None, None, None, ".2f", ".2f", ".2f", ".2f", "+.0f"],
             note=f"The class agrees at {agree} of 9 gaps. Class: in range ⇔ N_eff ≥ N_tot − N_eff "
-            "(symimpact.sweep; with the paper's own N_tot and N_eff this rule gives every printed "
+            "(symimpact.maps.sweep; with the paper's own N_tot and N_eff this rule gives every printed "
             "class). DI: |slope| of the least-squares line through the first four positive "
             "maxima of x against t' = t·√(K/M). Effectiveness '–': every impact effective. "
             "Counts depend on the horizon t' and on the reading; no reading of the family "

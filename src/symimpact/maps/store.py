@@ -24,8 +24,10 @@ from typing import Any
 
 import numpy as np
 
-from .errors import ParameterError
-from .io import _temporary_beside
+from ..errors import ParameterError
+from ..io import _temporary_beside
+from .runs import OUTPUTS
+from .table import table_rows, tidy_table
 
 FORMATS = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
 
@@ -39,7 +41,7 @@ def _format(path: Path) -> str:
 
 def fingerprint(system: Any, points: Any, settings: dict[str, Any]) -> dict[str, Any]:
     """What identifies a map: version, system, settings, swept names and a hash of the points."""
-    from . import __version__
+    from .. import __version__
 
     digest = hashlib.sha256(np.ascontiguousarray(points.values, dtype="<f8").tobytes())
     return {
@@ -200,7 +202,6 @@ class MapStore:
 
     def _verify(self, name: str, entry: Any, seen: set[int]) -> list[dict[str, Any]] | str:
         """The rows of chunk ``name`` if it verifies against its manifest entry, else why not."""
-        from .maps import OUTPUTS
 
         path = self.partial / name
         if not isinstance(entry, dict) or not {"sha256", "runs"} <= set(entry):
@@ -269,7 +270,6 @@ class MapStore:
 
     def write_chunk(self, rows: list[dict[str, Any]]) -> None:
         """Save one finished chunk (atomically, synced), then record it in the manifest."""
-        from .maps import tidy_table
 
         names = self.spec["names"]
         df = tidy_table(rows, names)
@@ -308,7 +308,6 @@ def _remove(path: Path) -> None:
 def read_map(path: str | os.PathLike):
     """A finished map file (``.csv`` or ``.parquet``) as the DataFrame :func:`parameter_map`
     returned (same dtypes, missing values as ``<NA>``)."""
-    from .maps import OUTPUTS, tidy_table
 
     p = Path(path)
     fmt = _format(p)
@@ -329,8 +328,6 @@ def _read_rows(path: Path, fmt: str) -> list[dict[str, Any]]:
     back to the same double; empty cells and Parquet nulls are None)."""
     if fmt == "parquet":
         import pandas as pd
-
-        from .maps import table_rows
 
         return table_rows(pd.read_parquet(path))
     import csv

@@ -20,45 +20,11 @@ from typing import Any
 
 import numpy as np
 
-from .errors import ParameterError
-from .system import ImpactSystem
-from .units import si_float, split_quantity
-
-
-def gap_class(n_impacts: int, n_effective: int) -> str:
-    """``in range``, ``out of range`` or ``no impact`` by the criterion of this module."""
-    if n_impacts == 0:
-        return "no impact"
-    return "in range" if n_effective >= n_impacts - n_effective else "out of range"
-
-
-def parse_range(name: str, text: str) -> np.ndarray:
-    """``"6 mm:35 mm:1 mm"`` (start:stop:step, stop included) or ``"7 mm,9 mm,15 mm"`` → SI."""
-    if ":" in text:
-        parts = text.split(":")
-        if len(parts) != 3:
-            raise ParameterError(name, f"range {text!r} must be start:stop:step")
-        units = [split_quantity(name, p.strip())[1] if p.strip() else "" for p in parts]
-        if any(units) and not all(units):  # "6 mm:12 mm:2" would take the 2 as 2 m
-            bare = [p.strip() for p, u in zip(parts, units, strict=True) if not u]
-            raise ParameterError(
-                name,
-                f"range {text!r} mixes values with and without units ({', '.join(bare)} has "
-                "none); give every value its unit, or none (SI)",
-            )
-        start, stop, step = (si_float(name, p.strip()) for p in parts)
-        if step <= 0:
-            raise ParameterError(name, f"range step must be positive, got {step:g}")
-        if stop < start:
-            raise ParameterError(name, f"range stop {stop:g} is below its start {start:g}")
-        with np.errstate(all="ignore"):
-            steps = (stop - start) / step * (1 + 1e-12) + 1e-9
-        if not steps < 1_000_000:  # also an overflow to inf
-            raise ParameterError(name, f"range {text!r} has more than 1e6 values")
-        n = int(np.floor(steps)) + 1
-        # 12 significant digits: "6 mm:35 mm:1 mm" gives 0.009, not 0.009000000000000001
-        return np.array([float(f"{start + step * k:.12g}") for k in range(n)])
-    return np.array([si_float(name, p.strip()) for p in text.split(",") if p.strip()])
+from ..errors import ParameterError
+from ..system import ImpactSystem
+from ..units import si_float
+from .engine import map_rows
+from .points import SWEEPABLE, MapPoints, _si_values
 
 
 def sweep(
@@ -86,7 +52,6 @@ def sweep(
     all cores) with a progress bar on standard error unless ``progress`` is False.  For several
     swept inputs, files and resuming, use :func:`symimpact.maps.parameter_map`.
     """
-    from .maps import SWEEPABLE, MapPoints, _si_values, map_rows
 
     if parameter not in SWEEPABLE:
         raise ParameterError(
@@ -190,7 +155,7 @@ def arrival_condition(system: ImpactSystem, gap: float, **kwargs: Any) -> float:
     NaN when no such contact happens before ``t_end``.  Keywords: those of
     :func:`symimpact.simulation.simulate` (initial state, t_end, contact).
     """
-    from .simulation import simulate
+    from ..simulation import simulate
 
     res = simulate(system.with_(gap=gap), **kwargs)
     for imp in res.impacts:

@@ -1,0 +1,41 @@
+"""Parameter maps and sweeps, in the order a map flows (each module imports only the ones before
+it):
+
+- :mod:`.points` — what is swept: a grid, range texts or a CSV of parameter sets, read as SI;
+- :mod:`.runs` — one run: the point's system simulated, its row and gap class;
+- :mod:`.executors` — where chunks of runs execute: this process, local processes or Dask;
+- :mod:`.table` — rows as a tidy table;
+- :mod:`.store` — the resumable map file (chunks, manifest, lock);
+- :mod:`.engine` — :func:`parameter_map`: points → executor → store → table;
+- :mod:`.sweep` — sweeps over one input and the gap classification of Sect. 4 (Fig. 5).
+"""
+
+from .engine import map_rows, parameter_map
+from .executors import EXECUTORS, DaskLost
+from .points import SWEEPABLE, MapPoints, as_points, grid_points, parse_range, read_sets
+from .runs import OUTPUTS, gap_class, run_point
+from .store import MapStore, MapStoreWarning, read_map
+from .sweep import sweep
+from .table import table_rows, tidy_table
+
+__all__ = [
+    "EXECUTORS",
+    "OUTPUTS",
+    "SWEEPABLE",
+    "DaskLost",
+    "MapPoints",
+    "MapStore",
+    "MapStoreWarning",
+    "as_points",
+    "gap_class",
+    "grid_points",
+    "map_rows",
+    "parameter_map",
+    "parse_range",
+    "read_map",
+    "read_sets",
+    "run_point",
+    "sweep",
+    "table_rows",
+    "tidy_table",
+]

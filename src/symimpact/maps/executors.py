@@ -1,0 +1,171 @@
+"""Where the runs of a map execute: in this process, on local worker processes, or on a Dask
+cluster (a scheduler address, a client, or a loopback LocalCluster).  Each takes chunks of
+points and yields the chunks' rows as they finish."""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Iterator
+from typing import Any
+
+from ..errors import ParameterError
+from .runs import _run_chunk
+
+EXECUTORS = ("serial", "processes", "dask")
+
+
+def _serial(payloads: list) -> Iterator[list[dict[str, Any]]]:
+    for p in payloads:
+        yield _run_chunk(p)
+
+
+def _worker_init(parent: int) -> None:
+    """Pool workers end with the map that started them: on Linux the kernel sends SIGTERM when
+    the parent dies (prctl PR_SET_PDEATHSIG), whatever killed it; Ctrl-C is left to the parent,
+    which then ends the pool."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    for sig in (signal.SIGTERM, signal.SIGHUP):  # not the handlers a forked worker inherits
+        signal.signal(sig, signal.SIG_DFL)
+    if sys.platform.startswith("linux"):
+        import ctypes
+
+        ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGTERM))  # PR_SET_PDEATHSIG
+    if os.getppid() != parent:  # the parent died before the line above took effect
+        os._exit(1)
+
+
+def _processes(payloads: list, workers: int) -> Iterator[list[dict[str, Any]]]:
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    pool = ProcessPoolExecutor(
+        max_workers=workers, initializer=_worker_init, initargs=(os.getpid(),)
+    )
+    finished = False
+    try:
+        futures = [pool.submit(_run_chunk, p) for p in payloads]
+        for f in as_completed(futures):
+            yield f.result()
+        finished = True
+    finally:
+        if not finished:  # interrupted, terminated or failed: do not wait for running chunks
+            for proc in list((getattr(pool, "_processes", None) or {}).values()):
+                proc.terminate()
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
+#: How long a Dask map waits with no worker before it gives up (all workers lost), and how
+#: long it waits to connect to a scheduler.
+DASK_NO_WORKER_TIMEOUT = 60.0
+DASK_CONNECT_TIMEOUT = 10.0
+
+
+def _scheduler_address(scheduler: str) -> tuple[str, str, int]:
+    """(protocol, host, port) of ``tcp://HOST:PORT`` or ``tls://HOST:PORT`` (``HOST:PORT`` is
+    taken as tcp); anything else is refused naming ``scheduler``."""
+    import re
+
+    m = re.fullmatch(r"(?:(tcp|tls)://)?(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+):(\d{1,5})", scheduler)
+    if m is None or not 0 < int(m[3]) < 65536:
+        raise ParameterError(
+            "scheduler", f"{scheduler!r} is not a scheduler address like tcp://10.0.0.5:8786"
+        )
+    return m[1] or "tcp", m[2].strip("[]"), int(m[3])
+
+
+def _connect(scheduler: str) -> Any:
+    """A ``distributed.Client`` of the scheduler at ``scheduler``, or one line saying why not."""
+    import socket
+
+    from distributed import Client
+
+    protocol, host, port = _scheduler_address(scheduler)
+    try:  # say "refused" at once rather than a time-out 20 s later
+        socket.create_connection((host, port), timeout=DASK_CONNECT_TIMEOUT).close()
+    except ConnectionRefusedError:
+        raise ParameterError(
+            "scheduler", f"nothing listens at {host}:{port} (connection refused)"
+        ) from None
+    except TimeoutError:
+        raise ParameterError(
+            "scheduler", f"{host}:{port} did not answer within {DASK_CONNECT_TIMEOUT:g} s"
+        ) from None
+    except OSError as exc:
+        raise ParameterError(
+            "scheduler", f"cannot reach {host}:{port}: {exc.strerror or exc}"
+        ) from None
+    try:
+        return Client(f"{protocol}://{host}:{port}", timeout=f"{DASK_CONNECT_TIMEOUT:g}s")
+    except Exception as exc:  # distributed raises assorted types (OSError, TimeoutError, ...)
+        raise ParameterError(
+            "scheduler",
+            f"{scheduler!r} is not a Dask scheduler that answers ({type(exc).__name__})",
+        ) from None
+
+
+class DaskLost(OSError):
+    """The Dask scheduler or every worker was lost during a map (a fault, not bad input)."""
+
+
+def _dask(payloads: list, client: Any, scheduler: str | None) -> Iterator[list[dict[str, Any]]]:
+    import time
+
+    try:
+        from distributed import Client, LocalCluster, as_completed
+    except ImportError:  # pragma: no cover - distributed is a dependency
+        raise ParameterError("executor", "dask needs the 'distributed' package") from None
+    cluster = None
+    own = client is None
+    if own and scheduler is None:
+        # a local cluster: on the loopback interface only, no dashboard
+        cluster = LocalCluster(
+            host="127.0.0.1", dashboard_address=None, threads_per_worker=1, processes=True
+        )
+        client = Client(cluster)
+    elif own:
+        client = _connect(scheduler)
+    try:
+        futures = client.map(_run_chunk, payloads, pure=False)
+        pending = as_completed(futures)
+        alone_since = None
+        try:
+            while not pending.is_empty():
+                batch = pending.next_batch(block=False)
+                for f in batch:
+                    try:
+                        yield f.result()
+                    except ParameterError:
+                        raise
+                    except Exception as exc:
+                        raise DaskLost(
+                            f"the Dask map failed: {type(exc).__name__}: {exc}"
+                        ) from None
+                if batch:
+                    continue
+                if client.status != "running":
+                    raise DaskLost("the Dask scheduler was lost during the map")
+                try:
+                    workers = len(client.scheduler_info()["workers"])
+                except Exception:
+                    raise DaskLost("the Dask scheduler was lost during the map") from None
+                now = time.monotonic()
+                alone_since = None if workers else (alone_since or now)
+                if alone_since is not None and now - alone_since > DASK_NO_WORKER_TIMEOUT:
+                    raise DaskLost(
+                        f"no Dask worker for {DASK_NO_WORKER_TIMEOUT:g} s: every worker was lost"
+                    )
+                time.sleep(0.05)
+        finally:
+            try:
+                client.cancel(futures)
+            except Exception:  # a lost scheduler: nothing left to cancel
+                pass
+    finally:
+        if own:
+            try:
+                client.close()
+            finally:
+                if cluster is not None:
+                    cluster.close()
