@@ -119,3 +119,40 @@ def test_a_range_whose_step_has_no_unit_is_refused(capsys):
     assert main(["map", "--vary", "gap=6 mm:12 mm:2", "--quiet"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "gap" in err and "units" in err
+
+
+def _outcome(fn, name, value):
+    from symimpact.errors import ParameterError
+
+    try:
+        return ("value", fn(name, value))
+    except ParameterError as exc:
+        return ("refused", str(exc).split(",")[0])
+
+
+@given(
+    st.one_of(
+        st.floats(allow_nan=True, allow_infinity=True),
+        st.integers(min_value=-(10**32), max_value=10**32),
+        st.sampled_from([0.0, -0.0, 1e-31, 1e-30, 1e30, 1.0000001e30, 5e-324]),
+    ),
+    st.sampled_from(["gap", "x0", "c1"]),
+)
+@settings(max_examples=300)
+def test_a_plain_number_reads_as_through_the_array_path(value, name):
+    """si/positive/nonnegative read a Python float or int without NumPy (a map validates
+    every point): the value, or the refusal, is the one the array path gives for the same
+    number as a 0-d array."""
+    import numpy as np
+
+    from symimpact.units import nonnegative_float, positive_float, si_float
+
+    for fn in (si_float, positive_float, nonnegative_float):
+        fast = _outcome(fn, name, value)
+        try:
+            slow = _outcome(fn, name, np.asarray(float(value)))
+        except OverflowError:
+            continue
+        assert fast[0] == slow[0], (fn.__name__, value, fast, slow)
+        if fast[0] == "value":
+            assert fast[1] == slow[1] and type(fast[1]) is float

@@ -8,6 +8,7 @@ number in SI units is.  pint is imported only when a value carries units, so the
 
 from __future__ import annotations
 
+import math
 import re
 from decimal import Decimal
 from functools import lru_cache
@@ -56,6 +57,8 @@ SI_UNITS: dict[str, str] = {
 #: steel) and keeps the closed forms, whose terms reach the 8th power of a parameter, clear of
 #: overflow and underflow.
 MAGNITUDE = (1e-30, 1e30)
+#: Types read as a plain number without NumPy (bool is not one: it is refused below).
+_PLAIN = (float, int, np.float64)
 
 
 @lru_cache(maxsize=1)
@@ -286,6 +289,16 @@ def si(name: str, value: Any, unit: str | None = None) -> Any:
     the parameter's entry in :data:`SI_UNITS`.  Raises :class:`ParameterError` naming ``name`` for
     a malformed unit, a wrong dimension, a non-numeric value, NaN or infinity.
     """
+    if type(value) in _PLAIN:  # a plain number: the same checks without NumPy (0.5 µs, not 5)
+        try:
+            v = float(value)
+        except OverflowError:
+            raise ParameterError(name, "an integer beyond the largest float (about 1.8e308)") from None
+        if not math.isfinite(v):
+            raise ParameterError(name, f"must be finite, got {value!r}")
+        if abs(v) > MAGNITUDE[1]:
+            _out_of_range(name, abs(v), unit or SI_UNITS.get(name, "dimensionless"))
+        return v
     if value is None:
         raise ParameterError(name, "is required")
     unit = unit or SI_UNITS.get(name, "dimensionless")
@@ -319,6 +332,12 @@ def _out_of_range(name: str, extreme: float, unit: str) -> None:
 def positive(name: str, value: Any, unit: str | None = None) -> Any:
     """:func:`si`, then require every value > 0."""
     v = si(name, value, unit)
+    if type(v) is float:
+        if not v > 0:
+            raise ParameterError(name, f"must be positive, got {_show(v)}")
+        if v < MAGNITUDE[0]:
+            _out_of_range(name, v, unit or SI_UNITS.get(name, "dimensionless"))
+        return v
     arr = np.asarray(v)
     if np.any(arr <= 0):
         raise ParameterError(name, f"must be positive, got {_show(v)}")
@@ -330,6 +349,10 @@ def positive(name: str, value: Any, unit: str | None = None) -> Any:
 def nonnegative(name: str, value: Any, unit: str | None = None) -> Any:
     """:func:`si`, then require every value ≥ 0."""
     v = si(name, value, unit)
+    if type(v) is float:
+        if v < 0:
+            raise ParameterError(name, f"must not be negative, got {_show(v)}")
+        return v
     if np.any(np.asarray(v) < 0):
         raise ParameterError(name, f"must not be negative, got {_show(v)}")
     return v
@@ -344,6 +367,8 @@ def _show(v: Any) -> str:
 
 
 def _one(name: str, v: Any) -> float:
+    if type(v) is float:
+        return v
     if np.size(v) == 0:
         raise ParameterError(name, "got no value")
     if np.ndim(v) != 0:
