@@ -293,7 +293,9 @@ def si(name: str, value: Any, unit: str | None = None) -> Any:
         try:
             v = float(value)
         except OverflowError:
-            raise ParameterError(name, "an integer beyond the largest float (about 1.8e308)") from None
+            raise ParameterError(
+                name, "an integer beyond the largest float (about 1.8e308)"
+            ) from None
         if not math.isfinite(v):
             raise ParameterError(name, f"must be finite, got {value!r}")
         if abs(v) > MAGNITUDE[1]:
