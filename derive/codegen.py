@@ -225,13 +225,20 @@ def render_fixed_points(boards: list[Board]) -> str:
     for b in boards:
         for fp in b.fixed_points:
             hoisted, loop = fixed_point_ast(fp)
+            loop_lines = printer.doprint(loop).split("\n")
+            # the loop as printed: start, previous = inf, count = 0, "while COND:", the body
+            assert loop_lines[3].startswith("while ") and loop_lines[3].endswith(":")
             items.append(
                 {
                     "fp": fp,
                     "module": b.module,
                     "argnames": ", ".join(a.name for a in fp.args),
-                    "code": [printer.doprint(h) for h in hoisted]
-                    + printer.doprint(loop).split("\n"),
+                    "hoisted": [printer.doprint(h) for h in hoisted],
+                    "hoisted_names": [str(h.lhs) for h in hoisted],
+                    "start": loop_lines[0],
+                    "condition": loop_lines[3][len("while ") : -1],
+                    "body": [line[4:] for line in loop_lines[4:]],
+                    "code": [printer.doprint(h) for h in hoisted] + loop_lines,
                     "latex": fixed_point_latex(fp),
                     "x": fp.iterate.name,
                     "ops": fixed_point_ops(fp),

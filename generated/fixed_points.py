@@ -4,9 +4,14 @@
 # Loop-body operations after common-subexpression elimination (per step): 18, 28, 18.
 """Fixed-point iterations as compiled loops: generated numba kernels.
 
-Each ``<name>(*args, tol=1e-14, max_iter=100)`` broadcasts its arguments against each other (a
-NumPy generalised ufunc: no copies of broadcast inputs), iterates every element in compiled code
-and returns ``(value, iterations)``.  ``iterations == max_iter`` where the iteration did not
+Each ``<name>(*args, tol=1e-14, max_iter=100)`` broadcasts its arguments against each other,
+iterates every element in compiled code and returns ``(value, iterations)``.  Arguments of one
+shape (no broadcasting) of at least LANES elements go through ``_<name>_lanes``: LANES elements
+are iterated side by side, one step each per sweep, and a lane whose element has converged takes
+the next one, so the processor overlaps LANES independent chains of dependent operations
+instead of waiting on one; every element takes exactly the steps, in the same order, of the
+scalar loop, so the results are the same bits.  Other shapes go through a NumPy generalised
+ufunc (no copies of broadcast inputs).  ``iterations == max_iter`` where the iteration did not
 converge; ``value`` is NaN where an iterate left the real numbers.  ``<name>_scalar`` is the same
 loop on floats, callable from other numba code.  All quantities are in SI units.
 
@@ -18,6 +23,9 @@ import math
 
 import numba
 import numpy
+
+#: Elements iterated side by side by the ``_<name>_lanes`` loops.
+LANES = 16
 
 __all__ = [
     "contact_duration",
@@ -51,6 +59,86 @@ def contact_duration_scalar(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
 )
 def _contact_duration_gufunc(m, a, b, c1, zdot0, ba, tol, max_iter, value, iterations):
     value[0], iterations[0] = contact_duration_scalar(m, a, b, c1, zdot0, ba, tol, max_iter)
+
+
+@numba.njit(cache=True, error_model="numpy")  # IEEE division, as in the generalised ufunc
+def _contact_duration_lanes(m_all, a_all, b_all, c1_all, zdot0_all, ba_all, tol, max_iter, value, steps):
+    """`contact_duration_scalar` over 1-D arrays, LANES elements side by side (see the module text)."""
+    n = value.size
+    element = numpy.full(LANES, -1, dtype=numpy.int64)
+    current = numpy.empty(LANES)
+    previous = numpy.empty(LANES)
+    taken = numpy.zeros(LANES, dtype=numpy.int64)
+    _c0_lane = numpy.empty(LANES)
+    _c1_lane = numpy.empty(LANES)
+    following = 0
+    busy = 0
+    for lane in range(LANES):  # every lane takes an element (or stays idle)
+        if following < n:
+            e = following
+            following += 1
+            busy += 1
+            element[lane] = e
+            m = m_all[e]
+            a = a_all[e]
+            b = b_all[e]
+            c1 = c1_all[e]
+            zdot0 = zdot0_all[e]
+            ba = ba_all[e]
+            _c0 = (ba - 1)/ba
+            _c1 = _c0/m
+            T = math.pi*math.sqrt(m)/(math.sqrt(_c0)*math.sqrt(b))
+            current[lane] = T
+            previous[lane] = math.inf
+            _c0_lane[lane] = _c0
+            _c1_lane[lane] = _c1
+    while busy > 0:
+        for lane in range(LANES):
+            e = element[lane]
+            if e < 0:
+                continue
+            m = m_all[e]
+            a = a_all[e]
+            b = b_all[e]
+            c1 = c1_all[e]
+            zdot0 = zdot0_all[e]
+            ba = ba_all[e]
+            _c0 = _c0_lane[lane]
+            _c1 = _c1_lane[lane]
+            T = current[lane]
+            T_previous = previous[lane]
+            iterations = taken[lane]
+            if (abs(T - T_previous) > tol*abs(T)) and (iterations < max_iter):
+                T_previous = T
+                T = math.pi/math.sqrt((3/4)*T_previous**2*_c1*a*zdot0**2*math.exp(-T_previous*_c1*c1)/math.pi**2 + _c1*b)
+                iterations += 1
+                current[lane] = T
+                previous[lane] = T_previous
+                taken[lane] = iterations
+                continue
+            value[e] = T
+            steps[e] = iterations
+            if following < n:  # the lane takes the next element
+                e = following
+                following += 1
+                element[lane] = e
+                m = m_all[e]
+                a = a_all[e]
+                b = b_all[e]
+                c1 = c1_all[e]
+                zdot0 = zdot0_all[e]
+                ba = ba_all[e]
+                _c0 = (ba - 1)/ba
+                _c1 = _c0/m
+                T = math.pi*math.sqrt(m)/(math.sqrt(_c0)*math.sqrt(b))
+                current[lane] = T
+                previous[lane] = math.inf
+                taken[lane] = 0
+                _c0_lane[lane] = _c0
+                _c1_lane[lane] = _c1
+            else:
+                element[lane] = -1
+                busy -= 1
 
 
 def contact_duration(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
@@ -97,7 +185,15 @@ def contact_duration(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
     iterations : numpy.ndarray of int64
         Steps taken; ``max_iter`` where the iteration did not converge.
     """
-    value, iterations = _contact_duration_gufunc(m, a, b, c1, zdot0, ba, float(tol), int(max_iter))
+    arrays = [numpy.asarray(v, dtype=numpy.float64) for v in (m, a, b, c1, zdot0, ba,)]
+    shape = arrays[0].shape
+    if all(v.shape == shape for v in arrays) and arrays[0].size >= LANES:
+        flat = [numpy.ascontiguousarray(v).reshape(-1) for v in arrays]
+        value = numpy.empty(flat[0].size)
+        iterations = numpy.empty(flat[0].size, dtype=numpy.int64)
+        _contact_duration_lanes(*flat, float(tol), int(max_iter), value, iterations)
+        return value.reshape(shape), iterations.reshape(shape)
+    value, iterations = _contact_duration_gufunc(*arrays, float(tol), int(max_iter))
     return value, iterations
 
 
@@ -131,6 +227,124 @@ def contact_duration_newton_scalar(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=1
 )
 def _contact_duration_newton_gufunc(m, a, b, c1, zdot0, ba, tol, max_iter, value, iterations):
     value[0], iterations[0] = contact_duration_newton_scalar(m, a, b, c1, zdot0, ba, tol, max_iter)
+
+
+@numba.njit(cache=True, error_model="numpy")  # IEEE division, as in the generalised ufunc
+def _contact_duration_newton_lanes(m_all, a_all, b_all, c1_all, zdot0_all, ba_all, tol, max_iter, value, steps):
+    """`contact_duration_newton_scalar` over 1-D arrays, LANES elements side by side (see the module text)."""
+    n = value.size
+    element = numpy.full(LANES, -1, dtype=numpy.int64)
+    current = numpy.empty(LANES)
+    previous = numpy.empty(LANES)
+    taken = numpy.zeros(LANES, dtype=numpy.int64)
+    _c0_lane = numpy.empty(LANES)
+    _c1_lane = numpy.empty(LANES)
+    _c2_lane = numpy.empty(LANES)
+    _c3_lane = numpy.empty(LANES)
+    _c4_lane = numpy.empty(LANES)
+    _c5_lane = numpy.empty(LANES)
+    _c8_lane = numpy.empty(LANES)
+    _c9_lane = numpy.empty(LANES)
+    following = 0
+    busy = 0
+    for lane in range(LANES):  # every lane takes an element (or stays idle)
+        if following < n:
+            e = following
+            following += 1
+            busy += 1
+            element[lane] = e
+            m = m_all[e]
+            a = a_all[e]
+            b = b_all[e]
+            c1 = c1_all[e]
+            zdot0 = zdot0_all[e]
+            ba = ba_all[e]
+            _c0 = math.pi**2
+            _c1 = ba - 1
+            _c2 = _c1/(ba*m)
+            _c3 = _c2*b
+            _c4 = a*zdot0**2
+            _c5 = _c2*_c4
+            _c8 = 3*_c5
+            _c9 = _c1**2/(ba**2*m**2)
+            T = math.sqrt(2)*math.pi/math.sqrt(_c3 + math.sqrt(_c8 + _c9*b**2))
+            current[lane] = T
+            previous[lane] = math.inf
+            _c0_lane[lane] = _c0
+            _c1_lane[lane] = _c1
+            _c2_lane[lane] = _c2
+            _c3_lane[lane] = _c3
+            _c4_lane[lane] = _c4
+            _c5_lane[lane] = _c5
+            _c8_lane[lane] = _c8
+            _c9_lane[lane] = _c9
+    while busy > 0:
+        for lane in range(LANES):
+            e = element[lane]
+            if e < 0:
+                continue
+            m = m_all[e]
+            a = a_all[e]
+            b = b_all[e]
+            c1 = c1_all[e]
+            zdot0 = zdot0_all[e]
+            ba = ba_all[e]
+            _c0 = _c0_lane[lane]
+            _c1 = _c1_lane[lane]
+            _c2 = _c2_lane[lane]
+            _c3 = _c3_lane[lane]
+            _c4 = _c4_lane[lane]
+            _c5 = _c5_lane[lane]
+            _c8 = _c8_lane[lane]
+            _c9 = _c9_lane[lane]
+            T = current[lane]
+            T_previous = previous[lane]
+            iterations = taken[lane]
+            if (abs(T - T_previous) > tol*abs(T)) and (iterations < max_iter):
+                T_previous = T
+                _c6 = math.exp(-T_previous*_c2*c1)/_c0
+                _c7 = (3/4)*T_previous**4*_c6
+                T = max((1/2)*T_previous, T_previous - (T_previous**2*_c3 - _c0 + _c5*_c7)/(T_previous**3*_c6*_c8 + 2*T_previous*_c3 - _c4*_c7*_c9*c1))
+                iterations += 1
+                current[lane] = T
+                previous[lane] = T_previous
+                taken[lane] = iterations
+                continue
+            value[e] = T
+            steps[e] = iterations
+            if following < n:  # the lane takes the next element
+                e = following
+                following += 1
+                element[lane] = e
+                m = m_all[e]
+                a = a_all[e]
+                b = b_all[e]
+                c1 = c1_all[e]
+                zdot0 = zdot0_all[e]
+                ba = ba_all[e]
+                _c0 = math.pi**2
+                _c1 = ba - 1
+                _c2 = _c1/(ba*m)
+                _c3 = _c2*b
+                _c4 = a*zdot0**2
+                _c5 = _c2*_c4
+                _c8 = 3*_c5
+                _c9 = _c1**2/(ba**2*m**2)
+                T = math.sqrt(2)*math.pi/math.sqrt(_c3 + math.sqrt(_c8 + _c9*b**2))
+                current[lane] = T
+                previous[lane] = math.inf
+                taken[lane] = 0
+                _c0_lane[lane] = _c0
+                _c1_lane[lane] = _c1
+                _c2_lane[lane] = _c2
+                _c3_lane[lane] = _c3
+                _c4_lane[lane] = _c4
+                _c5_lane[lane] = _c5
+                _c8_lane[lane] = _c8
+                _c9_lane[lane] = _c9
+            else:
+                element[lane] = -1
+                busy -= 1
 
 
 def contact_duration_newton(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
@@ -179,7 +393,15 @@ def contact_duration_newton(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
     iterations : numpy.ndarray of int64
         Steps taken; ``max_iter`` where the iteration did not converge.
     """
-    value, iterations = _contact_duration_newton_gufunc(m, a, b, c1, zdot0, ba, float(tol), int(max_iter))
+    arrays = [numpy.asarray(v, dtype=numpy.float64) for v in (m, a, b, c1, zdot0, ba,)]
+    shape = arrays[0].shape
+    if all(v.shape == shape for v in arrays) and arrays[0].size >= LANES:
+        flat = [numpy.ascontiguousarray(v).reshape(-1) for v in arrays]
+        value = numpy.empty(flat[0].size)
+        iterations = numpy.empty(flat[0].size, dtype=numpy.int64)
+        _contact_duration_newton_lanes(*flat, float(tol), int(max_iter), value, iterations)
+        return value.reshape(shape), iterations.reshape(shape)
+    value, iterations = _contact_duration_newton_gufunc(*arrays, float(tol), int(max_iter))
     return value, iterations
 
 
@@ -205,6 +427,86 @@ def contact_duration_printed_scalar(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=
 )
 def _contact_duration_printed_gufunc(m, a, b, c1, zdot0, ba, tol, max_iter, value, iterations):
     value[0], iterations[0] = contact_duration_printed_scalar(m, a, b, c1, zdot0, ba, tol, max_iter)
+
+
+@numba.njit(cache=True, error_model="numpy")  # IEEE division, as in the generalised ufunc
+def _contact_duration_printed_lanes(m_all, a_all, b_all, c1_all, zdot0_all, ba_all, tol, max_iter, value, steps):
+    """`contact_duration_printed_scalar` over 1-D arrays, LANES elements side by side (see the module text)."""
+    n = value.size
+    element = numpy.full(LANES, -1, dtype=numpy.int64)
+    current = numpy.empty(LANES)
+    previous = numpy.empty(LANES)
+    taken = numpy.zeros(LANES, dtype=numpy.int64)
+    _c0_lane = numpy.empty(LANES)
+    _c1_lane = numpy.empty(LANES)
+    following = 0
+    busy = 0
+    for lane in range(LANES):  # every lane takes an element (or stays idle)
+        if following < n:
+            e = following
+            following += 1
+            busy += 1
+            element[lane] = e
+            m = m_all[e]
+            a = a_all[e]
+            b = b_all[e]
+            c1 = c1_all[e]
+            zdot0 = zdot0_all[e]
+            ba = ba_all[e]
+            _c0 = ba/(ba - 1)
+            _c1 = _c0/m
+            T = 2*math.pi*math.sqrt(m)/(math.sqrt(_c0)*math.sqrt(b))
+            current[lane] = T
+            previous[lane] = math.inf
+            _c0_lane[lane] = _c0
+            _c1_lane[lane] = _c1
+    while busy > 0:
+        for lane in range(LANES):
+            e = element[lane]
+            if e < 0:
+                continue
+            m = m_all[e]
+            a = a_all[e]
+            b = b_all[e]
+            c1 = c1_all[e]
+            zdot0 = zdot0_all[e]
+            ba = ba_all[e]
+            _c0 = _c0_lane[lane]
+            _c1 = _c1_lane[lane]
+            T = current[lane]
+            T_previous = previous[lane]
+            iterations = taken[lane]
+            if (abs(T - T_previous) > tol*abs(T)) and (iterations < max_iter):
+                T_previous = T
+                T = math.pi/math.sqrt((3/4)*T_previous**2*_c1*a*zdot0**2*math.exp(-T_previous*_c1*c1)/math.pi**2 + _c1*b)
+                iterations += 1
+                current[lane] = T
+                previous[lane] = T_previous
+                taken[lane] = iterations
+                continue
+            value[e] = T
+            steps[e] = iterations
+            if following < n:  # the lane takes the next element
+                e = following
+                following += 1
+                element[lane] = e
+                m = m_all[e]
+                a = a_all[e]
+                b = b_all[e]
+                c1 = c1_all[e]
+                zdot0 = zdot0_all[e]
+                ba = ba_all[e]
+                _c0 = ba/(ba - 1)
+                _c1 = _c0/m
+                T = 2*math.pi*math.sqrt(m)/(math.sqrt(_c0)*math.sqrt(b))
+                current[lane] = T
+                previous[lane] = math.inf
+                taken[lane] = 0
+                _c0_lane[lane] = _c0
+                _c1_lane[lane] = _c1
+            else:
+                element[lane] = -1
+                busy -= 1
 
 
 def contact_duration_printed(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
@@ -252,5 +554,13 @@ def contact_duration_printed(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
     iterations : numpy.ndarray of int64
         Steps taken; ``max_iter`` where the iteration did not converge.
     """
-    value, iterations = _contact_duration_printed_gufunc(m, a, b, c1, zdot0, ba, float(tol), int(max_iter))
+    arrays = [numpy.asarray(v, dtype=numpy.float64) for v in (m, a, b, c1, zdot0, ba,)]
+    shape = arrays[0].shape
+    if all(v.shape == shape for v in arrays) and arrays[0].size >= LANES:
+        flat = [numpy.ascontiguousarray(v).reshape(-1) for v in arrays]
+        value = numpy.empty(flat[0].size)
+        iterations = numpy.empty(flat[0].size, dtype=numpy.int64)
+        _contact_duration_printed_lanes(*flat, float(tol), int(max_iter), value, iterations)
+        return value.reshape(shape), iterations.reshape(shape)
+    value, iterations = _contact_duration_printed_gufunc(*arrays, float(tol), int(max_iter))
     return value, iterations

@@ -143,3 +143,35 @@ def test_runtime_wrapper_matches_the_history_iteration_and_reports_failures():
         perturbation_durations(0.25, 1.0, 83.6, 0.0, 1.0, 0.5)
     with pytest.raises(ParameterError, match="method"):
         perturbation_durations(0.25, 1.0, 83.6, 0.0, 1.0, -1, method="secant")
+
+
+@pytest.mark.parametrize(
+    "name", ["contact_duration", "contact_duration_newton", "contact_duration_printed"]
+)
+@pytest.mark.parametrize(("tol", "max_iter"), [(1e-14, 100), (1e-6, 3), (0.0, 7), (np.nan, 100)])
+def test_lanes_give_the_scalar_loops_bits(boards, name, tol, max_iter):
+    """Arguments of one shape go through the lane-interleaved loop: every element takes the
+    scalar loop's steps, so value and step count equal the generalised ufunc's bit for bit —
+    over the declared ranges and beyond them (B/A in (0, 1) makes the start imaginary: NaN), at
+    a length that is not a multiple of LANES, with a 2-D shape, and with odd tol and max_iter."""
+    (fp,) = [f for b in boards.values() for f in b.fixed_points if f.name == name]
+    rng = np.random.default_rng(20261122)
+    n = 3 * fixed_points.LANES * 97 + 5
+    cols = []
+    for a in fp.args:
+        u = rng.random(n)
+        lo, hi = (a.low / 10, a.high * 10) if a.log else (a.low - 1, a.high + 1)
+        cols.append(np.exp(np.log(lo) + u * np.log(hi / lo)) if a.log else lo + u * (hi - lo))
+    kernel = getattr(fixed_points, name)
+    gufunc = getattr(fixed_points, f"_{name}_gufunc")
+    value, steps = kernel(*cols, tol=tol, max_iter=max_iter)
+    with np.errstate(all="ignore"):  # the ufunc reports the NaN it makes; the lanes do not
+        ref_value, ref_steps = gufunc(*cols, float(tol), int(max_iter))
+    assert np.isnan(value).any() and np.isfinite(value).any()  # both kinds of element met
+    np.testing.assert_array_equal(value, ref_value)  # NaN where NaN, else the same bits
+    np.testing.assert_array_equal(steps, ref_steps)
+    square = [c[: 40 * 40].reshape(40, 40) for c in cols]
+    v2, s2 = kernel(*square, tol=tol, max_iter=max_iter)
+    assert v2.shape == (40, 40)
+    np.testing.assert_array_equal(v2, ref_value[:1600].reshape(40, 40))
+    np.testing.assert_array_equal(s2, ref_steps[:1600].reshape(40, 40))
