@@ -371,7 +371,7 @@ class _State:
     order: list[sp.Symbol] = field(default_factory=list)
 
 
-def _fit(lhs: str, expr: sp.Basic, limit: float, state: _State, depth: int = 0) -> list[str]:
+def _fit(lhs: str, expr: sp.Basic, limit: float, state: _State) -> list[str]:
     """Lines of ``lhs = expr`` no wider than ``limit``, naming pieces into ``state``."""
     for _ in range(40):
         one = f"{lhs} {tex(expr)}".strip()
@@ -408,7 +408,7 @@ def board_form(
         items = [(tex(k), v) for k, v in value.items()]
     elif isinstance(value, list | tuple) and value and all(isinstance(v, sp.Basic) for v in value):
         if all(isinstance(v, sp.Number) for v in value):
-            return _number_list(value, limit)
+            return _number_list(value, limit, digits)
         return _expression_list(value, names or {}, limit, digits)
     elif isinstance(value, sp.Basic):
         items = [(lhs, value)]
@@ -469,52 +469,44 @@ def _prepare(
     return v, rounded
 
 
-def _expression_list(values, own, limit: float, digits: int) -> Shown:
-    """A list of results: side by side, separated by commas, in rows that fit; a result wider
-    than a row is written on its own (named pieces and all)."""
-    shown = [board_form(v, names=own, limit=limit, digits=digits) for v in values]
-    lines: list[str] = []
-    where: list = []
-    definitions: dict = {}
-    current = ""
-    for form in shown:
-        assert form is not None
-        if len(form.lines) > 1 or form.where:
-            lines += [current] if current else []
-            lines += form.lines
-            where += form.where
-            definitions.update(form.definitions)
-            current = ""
-            continue
-        text = form.lines[0]
+def _rows(texts: list[str], limit: float) -> list[str]:
+    """Formulas side by side, separated by commas, in rows no wider than ``limit``."""
+    lines, current = [], ""
+    for text in texts:
         candidate = f"{current},\\quad {text}" if current else text
         if current and width_em(candidate) > limit:
             lines.append(current + ",")
             current = text
         else:
             current = candidate
-    if current:
-        lines.append(current)
+    return [*lines, current] if current else lines
+
+
+def _expression_list(values, own, limit: float, digits: int) -> Shown:
+    """A list of results: side by side in rows that fit (:func:`_rows`); a result wider than a
+    row is written on its own (named pieces and all)."""
+    shown = [board_form(v, names=own, limit=limit, digits=digits) for v in values]
+    lines: list[str] = []
+    where: list = []
+    definitions: dict = {}
+    pending: list[str] = []
+    for form in shown:
+        assert form is not None
+        if len(form.lines) > 1 or form.where:
+            lines += _rows(pending, limit) + form.lines
+            where += form.where
+            definitions.update(form.definitions)
+            pending = []
+        else:
+            pending.append(form.lines[0])
+    lines += _rows(pending, limit)
     return Shown(lines, where, any(f.approx for f in shown if f), definitions)
 
 
-def _number_list(values, limit: float) -> Shown:
-    """A list of numbers: i-th entries in rows that fit."""
-    shown, approx = [], False
-    for v in values:
-        r, rounded = readable_numbers(v)
-        approx |= rounded
-        shown.append(tex(r))
-    lines, current = [], ""
-    for s in shown:
-        candidate = f"{current},\\quad {s}" if current else s
-        if current and width_em(candidate) > limit:
-            lines.append(current + ",")
-            current = s
-        else:
-            current = candidate
-    lines.append(current)
-    return Shown(lines, [], approx)
+def _number_list(values, limit: float, digits: int = DIGITS) -> Shown:
+    """A list of numbers in rows that fit (one ≈ for the list is the caller's to say)."""
+    shown = [readable_numbers(v, digits) for v in values]
+    return Shown(_rows([tex(r) for r, _ in shown], limit), [], any(r for _, r in shown))
 
 
 def latex_blocks(shown: Shown) -> tuple[str, str | None]:

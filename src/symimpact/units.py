@@ -223,21 +223,19 @@ class _FactorFile:
 
     def _save(self) -> None:
         import json
-        import os
-        import tempfile
+
+        from .io import _temporary_beside  # the package's atomic write (temporary + rename)
 
         assert self.path is not None
         try:
             self.path.parent.mkdir(parents=True, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(dir=self.path.parent, prefix=".unit-factors.")
-            with os.fdopen(fd, "w", encoding="utf-8") as f:
-                json.dump({"pint": self.key, "factors": self.entries}, f, ensure_ascii=False)
-            os.replace(tmp, self.path)
-        except Exception:
-            try:
-                os.unlink(tmp)
-            except Exception:
-                pass
+            with _temporary_beside(self.path, "unit cache", ".json") as tmp:
+                Path(tmp).write_text(
+                    json.dumps({"pint": self.key, "factors": self.entries}, ensure_ascii=False),
+                    encoding="utf-8",
+                )
+        except Exception:  # a cache that cannot be written only costs the time it saves
+            pass
 
 
 _FACTOR_KINDS = ("ok", "unit", "dimension")
