@@ -225,10 +225,10 @@ def test_sweep_parallel_equals_serial():
 def test_interrupted_sweep_leaves_no_output(tmp_path, monkeypatch, capsys):
     """Ctrl-C in the middle of a sweep: exit 130, and neither --csv, --plot nor --out leaves a
     file (complete or partial) under its name, nor a temporary file beside it."""
-    import symimpact.maps.runs as maps
+    import symimpact.maps.executors as executors
 
     calls = {"n": 0}
-    real = maps.run_point
+    real = executors._run_chunk
 
     def interrupt_on_third(*args, **kwargs):
         calls["n"] += 1
@@ -236,8 +236,9 @@ def test_interrupted_sweep_leaves_no_output(tmp_path, monkeypatch, capsys):
             raise KeyboardInterrupt
         return real(*args, **kwargs)
 
-    monkeypatch.setattr(maps, "run_point", interrupt_on_third)
+    monkeypatch.setattr(executors, "_run_chunk", interrupt_on_third)  # the third chunk
     argv = ["sweep", "--vary", "gap=4 mm:12 mm:2 mm", "--executor", "serial", "--quiet"]
+    argv += ["--chunk-size", "1"]
     outputs = ["--csv", str(tmp_path / "t.csv"), "--plot", str(tmp_path / "t.png")]
     assert main([*argv, *outputs]) == 130
     assert "interrupted" in capsys.readouterr().err

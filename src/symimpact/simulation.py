@@ -148,12 +148,13 @@ def damping_inclination(peaks: np.ndarray, omega_n: float, count: int = 4) -> fl
     x, with the dimensionless time t' = t·ω_n (ω_n = √(K/M)).  With two maxima this is
     (X₁ − X₂)/(t'₂ − t'₁), the printed Eq. 36.  None with fewer than ``count`` maxima.
     """
-    peaks = np.asarray(peaks, dtype=float)
-    if peaks.shape[0] < count:
-        return None
-    tp = peaks[:count, 0] * omega_n
-    slope = np.polyfit(tp, peaks[:count, 1], 1)[0]
-    return float(abs(slope))
+    from . import _batch
+
+    peaks = np.ascontiguousarray(peaks, dtype=float).reshape(-1, 2)
+    if not (isinstance(count, int) and count >= 2):
+        raise ParameterError("count", "must be an integer ≥ 2")
+    di = _batch.damping_inclination_of(peaks, peaks.shape[0], float(omega_n), count)
+    return None if math.isnan(di) else float(di)
 
 
 def equivalent_damping_ratio(peaks: np.ndarray, omega_n: float) -> float | None:
@@ -167,18 +168,11 @@ def equivalent_damping_ratio(peaks: np.ndarray, omega_n: float) -> float | None:
     viscous ratio with the same average logarithmic decay.  None with fewer than two envelope
     maxima.
     """
-    peaks = np.asarray(peaks, dtype=float).reshape(-1, 2)
-    peaks = peaks[peaks[:, 1] > 0]
-    if peaks.shape[0] < 2:
-        return None
-    later_max = np.maximum.accumulate(peaks[::-1, 1])[::-1]
-    keep = np.ones(peaks.shape[0], dtype=bool)
-    keep[:-1] = peaks[:-1, 1] > later_max[1:]
-    env = peaks[keep]
-    if env.shape[0] < 2:
-        return None
-    slope = np.polyfit(env[:, 0], np.log(env[:, 1]), 1)[0]
-    return float(-slope / omega_n)
+    from . import _batch
+
+    peaks = np.ascontiguousarray(peaks, dtype=float).reshape(-1, 2)
+    zeta = _batch.zeta_eq_of(peaks, peaks.shape[0], float(omega_n))
+    return None if math.isnan(zeta) else float(zeta)
 
 
 def simulate(
@@ -232,7 +226,7 @@ def simulate(
     SimulationResult with the impact log, N_tot, N_eff, effectiveness (Eq. 38), DI (Eq. 36) and
     the energy balance: initial = final + dissipated by C + dissipated by c₁ + residual.
     """
-    from . import _stepper
+    from . import _batch, _stepper
 
     if not isinstance(system, ImpactSystem):
         raise ParameterError("system", "must be an ImpactSystem")
@@ -283,20 +277,8 @@ def simulate(
             "B/A = −M/m) while their centre of mass moves on the main spring and damper"
         )
 
-    wn = system.omega_n
-    e0_main = 0.5 * system.M * xdot0**2 + 0.5 * system.K * x0**2
-    amp = math.sqrt(2 * e0_main / system.K)
-    length = max(h, abs(x0), abs(y0), amp)
-    speed = max(abs(xdot0), abs(ydot0), wn * amp, wn * h)
-    e_initial = e0_main + 0.5 * system.m * ydot0**2
-    p = _stepper.pack(
-        system,
-        rtol,
-        rtol * 1e-3 * length,
-        rtol * 1e-3 * speed,
-        ba=ba_value,
-        rest_energy=rest * e_initial,
-    )
+    p = _stepper.pack(system, rtol, 0.0, 0.0, ba=ba_value)
+    e_initial = _batch.prepare(p, x0, xdot0, y0, ydot0, rtol, rest)
 
     state0 = np.array([x0, xdot0, y0, ydot0])
     # the buffers grow inside the stepper as they fill; these are only first sizes
@@ -361,20 +343,15 @@ def simulate(
             "of its initial value (see rest=), where impacts are no longer resolvable; the state "
             "is held from then on"
         )
-    e_final = 0.5 * system.M * u[1] ** 2 + 0.5 * system.K * u[0] ** 2 + 0.5 * system.m * u[3] ** 2
-    if side != 0:
-        e_final += _stepper.contact_potential(law, p, side * (u[2] - u[0]) - h)
+    e_final, residual = _batch.ledger(law, p, u, side, e_initial, diss_C, diss_c1)
     energy: dict[str, float | None] = {
         "initial": e_initial,
         "final": float(e_final),
         "dissipated_C": float(diss_C),
         "dissipated_c1": float(diss_c1),
-        "residual": None,
-        "relative_residual": None,
+        "residual": float(residual),
+        "relative_residual": float(residual / e_initial) if e_initial > 0 else 0.0,
     }
-    residual = e_initial - e_final - diss_C - diss_c1
-    energy["residual"] = float(residual)
-    energy["relative_residual"] = float(residual / e_initial) if e_initial > 0 else 0.0
     hist = _history(system, p, trace[:n_tr], t_end, samples, u) if history else None
     if peaks[:n_pk].shape[0] < 4:
         notes.append(f"only {n_pk} positive maxima of x: the damping inclination needs four")

@@ -33,7 +33,7 @@ from ..system import ImpactSystem
 from ..units import SI_UNITS, si_float
 from .executors import EXECUTORS, _dask, _processes, _serial
 from .points import MapPoints, as_points
-from .runs import _Base, _point_system, run_point
+from .runs import _Base, _check_points, _point_system, run_point
 from .store import MapStore
 from .table import tidy_table
 
@@ -126,6 +126,7 @@ def map_rows(
         # the first point runs here: a bad system fails before any worker starts (and numba
         # compiles or loads its cache once in this process)
         run_point(base, points.names, points.values[todo[0]])
+        _check_points(base, points.names, points.values[todo])
     if executor == "serial" or (
         executor == "processes" and (workers == 1 or len(payloads) < 2 or todo.size < 8)
     ):
