@@ -187,54 +187,125 @@ def _penetration_scale(law: int, p: np.ndarray, v: float) -> float:
 
 
 @njit(cache=True)
-def _rhs(law, p, side, u, out):
-    x, xd, y, yd = u[0], u[1], u[2], u[3]
+def _f(law, p, side, x, xd, y, yd):
+    """Right-hand side of Eq. 10 in contact on ``side`` as a 6-tuple: ẋ, ẍ, ẏ, ÿ and the
+    dissipation rates Cẋ², c₁δ̇² (scalars, no arrays: the step stays in registers)."""
     delta = side * (y - x) - p[P_h]
     ddelta = side * (yd - xd)
     f = contact_force(law, p, delta, ddelta)
-    out[0] = xd
-    out[1] = (side * f - p[P_C] * xd - p[P_K] * x) / p[P_M]
-    out[2] = yd
-    out[3] = -side * f / p[P_m]
-    out[4] = p[P_C] * xd * xd
-    out[5] = p[P_c1] * ddelta * ddelta
+    return (
+        xd,
+        (side * f - p[P_C] * xd - p[P_K] * x) / p[P_M],
+        yd,
+        -side * f / p[P_m],
+        p[P_C] * xd * xd,
+        p[P_c1] * ddelta * ddelta,
+    )
 
 
 @njit(cache=True)
-def _dp_step(law, p, side, u, k1, h, unew, k7, err_weights):
-    """One Dormand–Prince step from u (k1 = f(u)); writes unew, k7 = f(unew); returns error."""
-    k2 = np.empty(NV)
-    k3 = np.empty(NV)
-    k4 = np.empty(NV)
-    k5 = np.empty(NV)
-    k6 = np.empty(NV)
-    tmp = np.empty(NV)
-    for i in range(NV):
-        tmp[i] = u[i] + h * _A21 * k1[i]
-    _rhs(law, p, side, tmp, k2)
-    for i in range(NV):
-        tmp[i] = u[i] + h * (_A31 * k1[i] + _A32 * k2[i])
-    _rhs(law, p, side, tmp, k3)
-    for i in range(NV):
-        tmp[i] = u[i] + h * (_A41 * k1[i] + _A42 * k2[i] + _A43 * k3[i])
-    _rhs(law, p, side, tmp, k4)
-    for i in range(NV):
-        tmp[i] = u[i] + h * (_A51 * k1[i] + _A52 * k2[i] + _A53 * k3[i] + _A54 * k4[i])
-    _rhs(law, p, side, tmp, k5)
-    for i in range(NV):
-        tmp[i] = u[i] + h * (
-            _A61 * k1[i] + _A62 * k2[i] + _A63 * k3[i] + _A64 * k4[i] + _A65 * k5[i]
-        )
-    _rhs(law, p, side, tmp, k6)
-    for i in range(NV):
-        unew[i] = u[i] + h * (_B1 * k1[i] + _B3 * k3[i] + _B4 * k4[i] + _B5 * k5[i] + _B6 * k6[i])
-    _rhs(law, p, side, unew, k7)
-    acc = 0.0
-    for i in range(4):
-        e = h * (_E1 * k1[i] + _E3 * k3[i] + _E4 * k4[i] + _E5 * k5[i] + _E6 * k6[i] + _E7 * k7[i])
-        sc = err_weights[i] + p[P_rtol] * max(abs(u[i]), abs(unew[i]))
-        acc += (e / sc) ** 2
-    return math.sqrt(acc / 4.0)
+def _stage2(u, h, k1):
+    return u + h * _A21 * k1
+
+
+@njit(cache=True)
+def _stage3(u, h, k1, k2):
+    return u + h * (_A31 * k1 + _A32 * k2)
+
+
+@njit(cache=True)
+def _stage4(u, h, k1, k2, k3):
+    return u + h * (_A41 * k1 + _A42 * k2 + _A43 * k3)
+
+
+@njit(cache=True)
+def _stage5(u, h, k1, k2, k3, k4):
+    return u + h * (_A51 * k1 + _A52 * k2 + _A53 * k3 + _A54 * k4)
+
+
+@njit(cache=True)
+def _stage6(u, h, k1, k2, k3, k4, k5):
+    return u + h * (_A61 * k1 + _A62 * k2 + _A63 * k3 + _A64 * k4 + _A65 * k5)
+
+
+@njit(cache=True)
+def _stage7(u, h, k1, k3, k4, k5, k6):
+    return u + h * (_B1 * k1 + _B3 * k3 + _B4 * k4 + _B5 * k5 + _B6 * k6)
+
+
+@njit(cache=True)
+def _err(h, k1, k3, k4, k5, k6, k7, u, unew, atol, rtol):
+    e = h * (_E1 * k1 + _E3 * k3 + _E4 * k4 + _E5 * k5 + _E6 * k6 + _E7 * k7)
+    sc = atol + rtol * max(abs(u), abs(unew))
+    return (e / sc) ** 2
+
+
+@njit(cache=True)
+def _dp_step(law, p, side, u, k1, h):
+    """One Dormand–Prince step of length h from the 6-tuple state u with k1 = f(u).
+
+    Returns (unew, k7 = f(unew), error norm), all in scalars and tuples (the state, the stages
+    and the error stay in registers; no array is allocated per step)."""
+    k2 = _f(
+        law,
+        p,
+        side,
+        _stage2(u[0], h, k1[0]),
+        _stage2(u[1], h, k1[1]),
+        _stage2(u[2], h, k1[2]),
+        _stage2(u[3], h, k1[3]),
+    )
+    k3 = _f(
+        law,
+        p,
+        side,
+        _stage3(u[0], h, k1[0], k2[0]),
+        _stage3(u[1], h, k1[1], k2[1]),
+        _stage3(u[2], h, k1[2], k2[2]),
+        _stage3(u[3], h, k1[3], k2[3]),
+    )
+    k4 = _f(
+        law,
+        p,
+        side,
+        _stage4(u[0], h, k1[0], k2[0], k3[0]),
+        _stage4(u[1], h, k1[1], k2[1], k3[1]),
+        _stage4(u[2], h, k1[2], k2[2], k3[2]),
+        _stage4(u[3], h, k1[3], k2[3], k3[3]),
+    )
+    k5 = _f(
+        law,
+        p,
+        side,
+        _stage5(u[0], h, k1[0], k2[0], k3[0], k4[0]),
+        _stage5(u[1], h, k1[1], k2[1], k3[1], k4[1]),
+        _stage5(u[2], h, k1[2], k2[2], k3[2], k4[2]),
+        _stage5(u[3], h, k1[3], k2[3], k3[3], k4[3]),
+    )
+    k6 = _f(
+        law,
+        p,
+        side,
+        _stage6(u[0], h, k1[0], k2[0], k3[0], k4[0], k5[0]),
+        _stage6(u[1], h, k1[1], k2[1], k3[1], k4[1], k5[1]),
+        _stage6(u[2], h, k1[2], k2[2], k3[2], k4[2], k5[2]),
+        _stage6(u[3], h, k1[3], k2[3], k3[3], k4[3], k5[3]),
+    )
+    unew = (
+        _stage7(u[0], h, k1[0], k3[0], k4[0], k5[0], k6[0]),
+        _stage7(u[1], h, k1[1], k3[1], k4[1], k5[1], k6[1]),
+        _stage7(u[2], h, k1[2], k3[2], k4[2], k5[2], k6[2]),
+        _stage7(u[3], h, k1[3], k3[3], k4[3], k5[3], k6[3]),
+        _stage7(u[4], h, k1[4], k3[4], k4[4], k5[4], k6[4]),
+        _stage7(u[5], h, k1[5], k3[5], k4[5], k5[5], k6[5]),
+    )
+    k7 = _f(law, p, side, unew[0], unew[1], unew[2], unew[3])
+    ax, av, rtol = p[P_atolx], p[P_atolv], p[P_rtol]
+    acc = _err(h, k1[0], k3[0], k4[0], k5[0], k6[0], k7[0], u[0], unew[0], ax, rtol)
+    acc += _err(h, k1[1], k3[1], k4[1], k5[1], k6[1], k7[1], u[1], unew[1], av, rtol)
+    acc += _err(h, k1[2], k3[2], k4[2], k5[2], k6[2], k7[2], u[2], unew[2], ax, rtol)
+    acc += _err(h, k1[3], k3[3], k4[3], k5[3], k6[3], k7[3], u[3], unew[3], av, rtol)
+    return unew, k7, math.sqrt(acc / 4.0)
 
 
 @njit(cache=True)
@@ -247,8 +318,9 @@ def _energy(law, p, u, side):
 
 
 @njit(cache=True)
-def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which, out, kout, wts):
-    """Shortest step θ ∈ (0, h_hi] from u at which event ``which`` vanishes; state in ``out``.
+def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which):
+    """Shortest step θ ∈ (0, h_hi] from u at which event ``which`` vanishes: (θ, state there,
+    f of that state).
 
     which = 0: penetration δ (end of contact); which = 1: main-mass velocity ẋ (maximum of x).
     """
@@ -267,7 +339,7 @@ def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which, out, kout, wts):
         theta = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
         if inside_unknown or not (lo < theta < hi):
             theta = 0.5 * (lo + hi)
-        _dp_step(law, p, side, u, k1, theta, out, kout, wts)
+        out, kout, _ = _dp_step(law, p, side, u, k1, theta)
         g = side * (out[2] - out[0]) - p[P_h] if which == 0 else out[1]
         if inside_unknown:
             if g > 0.0:
@@ -277,7 +349,7 @@ def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which, out, kout, wts):
                 hi, fhi = theta, g
             continue
         if g == 0.0:
-            return theta
+            return theta, out, kout
         if (g > 0.0) == (flo > 0.0):
             lo, flo = theta, g
             if side_kept == -1:
@@ -290,8 +362,8 @@ def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which, out, kout, wts):
             side_kept = 1
         if hi - lo <= 4e-16 * max(hi, 1e-300) + 1e-300:
             break
-    _dp_step(law, p, side, u, k1, hi, out, kout, wts)
-    return hi
+    out, kout, _ = _dp_step(law, p, side, u, k1, hi)
+    return hi, out, kout
 
 
 @njit(cache=True)
@@ -332,20 +404,8 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
     """Integrate one contact from δ = 0; returns (status, t, npk, ntr, done, h_last, peaks,
     trace) with u0 updated in place to the state at the end of contact (or at t_end); ``peaks``
     and ``trace`` are the buffers, grown where they filled."""
-    wts = np.empty(4)
-    wts[0] = p[P_atolx]
-    wts[1] = p[P_atolv]
-    wts[2] = p[P_atolx]
-    wts[3] = p[P_atolv]
-    u = u0.copy()
-    u[4] = 0.0
-    u[5] = 0.0
-    k1 = np.empty(NV)
-    unew = np.empty(NV)
-    k7 = np.empty(NV)
-    uev = np.empty(NV)
-    kev = np.empty(NV)
-    _rhs(law, p, side, u, k1)
+    u = (u0[0], u0[1], u0[2], u0[3], 0.0, 0.0)
+    k1 = _f(law, p, side, u[0], u[1], u[2], u[3])
     t = t0
     # the first step is at most the time to the largest penetration at the approach speed (an
     # elastic estimate, about a third of the contact): a step that holds a whole short contact
@@ -372,7 +432,7 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
         if h < 1e-15 * max(abs(t), 1e-3):
             status = STEP_UNDERFLOW
             break
-        err = _dp_step(law, p, side, u, k1, h, unew, k7, wts)
+        unew, k7, err = _dp_step(law, p, side, u, k1, h)
         if err > 1.0 or not math.isfinite(err):
             fac = 0.2 if not math.isfinite(err) else max(0.2, 0.9 * err**-0.2)
             h *= fac
@@ -389,24 +449,23 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
                 d_old, d_new, h * side * (u[3] - u[1]), h * side * (unew[3] - unew[1])
             )
             if dip < 0.0:
-                _dp_step(law, p, side, u, k1, s_dip * h, uev, kev, wts)
+                uev, _, _ = _dp_step(law, p, side, u, k1, s_dip * h)
                 d_dip = side * (uev[2] - uev[0]) - p[P_h]
                 if d_dip < 0.0:
                     ended = True
-                    hstep = _locate(law, p, side, u, k1, s_dip * h, d_old, d_dip, 0, unew, k7, wts)
+                    hstep, unew, k7 = _locate(law, p, side, u, k1, s_dip * h, d_old, d_dip, 0)
         else:
-            hstep = _locate(law, p, side, u, k1, h, d_old, d_new, 0, unew, k7, wts)
+            hstep, unew, k7 = _locate(law, p, side, u, k1, h, d_old, d_new, 0)
         if u[1] > 0.0 and unew[1] <= 0.0:
-            hp = _locate(law, p, side, u, k1, hstep, u[1], unew[1], 1, uev, kev, wts)
+            hp, uev, _ = _locate(law, p, side, u, k1, hstep, u[1], unew[1], 1)
             if uev[0] > 0.0:
                 peaks = _room(peaks, npk)
                 peaks[npk, 0] = t + hp
                 peaks[npk, 1] = uev[0]
                 npk += 1
         t = t + hstep
-        for i in range(NV):
-            u[i] = unew[i]
-            k1[i] = k7[i]
+        u = unew
+        k1 = k7
         if record:
             trace = _room(trace, ntr)
             _trace_contact_row(trace, ntr, t, u, k1)
