@@ -684,6 +684,37 @@ def _onset(p, x0, xd0, y0, yd0, tau0, T):
 
 
 @njit(cache=True)
+def _velocity_zero(M, K, C, x0, xd0, lo, hi, flo, fhi):
+    """The τ in [lo, hi] where the free-flight velocity ẋ (Eq. 7) falls through zero, given
+    ẋ(lo) = flo > 0 ≥ fhi = ẋ(hi): Illinois regula falsi (a secant that halves the value kept
+    twice on one side), to the resolution of τ, at most 200 steps.  ẋ is smooth and nearly
+    linear at its zero, so a few evaluations do what bisection did in about fifty."""
+    if fhi == 0.0:
+        return hi
+    kept = 0
+    for _ in range(200):
+        tm = (lo * fhi - hi * flo) / (fhi - flo)
+        if not (lo < tm < hi):
+            tm = 0.5 * (lo + hi)
+        fm = _xd_ff(tm, M, K, C, x0, xd0)
+        if fm == 0.0:
+            return tm
+        if fm > 0.0:
+            lo, flo = tm, fm
+            if kept == -1:
+                fhi *= 0.5
+            kept = -1
+        else:
+            hi, fhi = tm, fm
+            if kept == 1:
+                flo *= 0.5
+            kept = 1
+        if hi - lo <= 4e-16 * hi:
+            break
+    return 0.5 * (lo + hi)
+
+
+@njit(cache=True)
 def _free_peaks(p, x0, xd0, t0, tau_a, tau_b, peaks, npk):
     """Record maxima of x (ẋ from + to −, x > 0) in free flight on [tau_a, tau_b]; returns
     (npk, peaks), the buffer grown where it filled."""
@@ -696,16 +727,7 @@ def _free_peaks(p, x0, xd0, t0, tau_a, tau_b, peaks, npk):
         b = min(a + step, tau_b)
         fb = _xd_ff(b, M, K, C, x0, xd0)
         if fa > 0.0 and fb <= 0.0:
-            lo, hi = a, b
-            for _ in range(200):
-                mid = 0.5 * (lo + hi)
-                if _xd_ff(mid, M, K, C, x0, xd0) > 0.0:
-                    lo = mid
-                else:
-                    hi = mid
-                if hi - lo <= 4e-16 * hi:
-                    break
-            tm = 0.5 * (lo + hi)
+            tm = _velocity_zero(M, K, C, x0, xd0, a, b, fa, fb)
             xm = _x_ff(tm, M, K, C, x0, xd0)
             if xm > 0.0:
                 peaks = _room(peaks, npk)
