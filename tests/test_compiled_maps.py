@@ -115,3 +115,32 @@ def test_figures_are_undefined_below_their_count():
     assert damping_inclination(peaks, 10.0, count=2) == pytest.approx(0.01 / 10.0, rel=1e-12)
     assert equivalent_damping_ratio(peaks[:1], 10.0) is None
     assert math.isfinite(equivalent_damping_ratio(peaks, 10.0))
+
+
+def test_cached_machine_code_is_dropped_when_a_compiled_source_changes(tmp_path, monkeypatch):
+    """numba keys a cache to its own file only; the stepper keeps a digest of every source that
+    is compiled into it and drops its cached code (and _batch's) when the digest changes."""
+    from symimpact import _stepper as st
+
+    monkeypatch.setattr(st.run._cache, "_cache_path", str(tmp_path))
+    names = ["_stepper.run-9.py311.nbi", "_stepper.run-9.py311.1.nbc", "_batch.run_many-3.nbi"]
+    other = tmp_path / "contact.kernel-1.py311.nbi"  # another module's cache: kept
+
+    def make():
+        for n in names:
+            (tmp_path / n).write_bytes(b"stale")
+        other.write_bytes(b"kept")
+
+    make()
+    st._forget_stale_compilations()  # no digest yet: everything of the stepper goes
+    assert sorted(f.name for f in tmp_path.iterdir()) == [
+        other.name,
+        "symimpact-compiled-sources.sha256",
+    ]
+    make()
+    st._forget_stale_compilations()  # same sources: the cache stays
+    assert all((tmp_path / n).exists() for n in names)
+    stamp = tmp_path / "symimpact-compiled-sources.sha256"
+    stamp.write_text("0" * 64)  # as after an edit of a source
+    st._forget_stale_compilations()
+    assert not any((tmp_path / n).exists() for n in names) and other.exists()

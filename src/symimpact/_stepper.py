@@ -895,3 +895,43 @@ def compiled_before() -> bool:
         return os.path.exists(run._cache._cache_file._index_path)
     except AttributeError:  # another numba version: no notice rather than a wrong one
         return True
+
+
+def _forget_stale_compilations() -> None:
+    """Drop numba's cached machine code of this module and of :mod:`symimpact._batch` when any
+    source compiled into it changed.
+
+    numba keys a cached function to the time stamp of its own file only, while a compiled
+    caller holds its callees' code inlined: after an edit of this file, a regeneration of the
+    free-flight or multiple-scales kernels, or an upgrade, a cached ``_batch.run_many`` would
+    still run the old stepper.  A digest of every such source, kept beside the cache, tells.
+    """
+    import hashlib
+    import os
+    from pathlib import Path
+
+    try:
+        folder = Path(run._cache._cache_path)  # numba's cache layout is private
+    except AttributeError:  # another numba version: nothing to do safely
+        return
+    sources = [Path(__file__), Path(__file__).with_name("_batch.py"), Path(_ff.__file__)]
+    sources.append(Path(_ms.__file__))
+    digest = hashlib.sha256(b"".join(s.read_bytes() for s in sources if s.exists())).hexdigest()
+    stamp = folder / "symimpact-compiled-sources.sha256"
+    try:
+        if stamp.read_text() == digest:
+            return
+    except OSError:
+        pass
+    try:
+        for f in folder.iterdir():
+            if f.name.startswith(("_stepper.", "_batch.")) and f.suffix in (".nbi", ".nbc"):
+                f.unlink(missing_ok=True)
+        tmp = stamp.with_name(f"{stamp.name}.{os.getpid()}.tmp")
+        tmp.write_text(digest)
+        os.replace(tmp, stamp)
+    except OSError:  # a read-only cache: numba then compiles in memory, nothing is stale
+        pass
+
+
+_forget_stale_compilations()
