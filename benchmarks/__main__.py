@@ -1,41 +1,80 @@
-"""Run every benchmark in turn: ``python -m benchmarks`` from the checkout (a few minutes).
+"""Run every benchmark in turn: ``python -m benchmarks`` from the checkout (about 20 minutes on
+2 cores); ``python -m benchmarks --write benchmarks/RESULTS.md`` also writes what the run printed
+into that file, under a header naming the date and the machine.
 
-Each prints its figures, the baseline measured in the same run and the ratio; none asserts a
-time.  The figures of one run, with the machine, are kept in ``benchmarks/RESULTS.md``.
+Each benchmark prints its figures (medians of at least five repeats with their spread), the
+baseline measured in the same run and the ratio; none asserts a time.  RESULTS.md is only ever
+written this way, from a run's output, never by hand.
 """
 
 from __future__ import annotations
 
-import os
-import platform
+import argparse
+import contextlib
+import datetime
+import io
 import sys
 import time
 
-from . import contact_duration_kernel, map_throughput, simulation_speed, startup
+from . import (
+    contact_duration_kernel,
+    map_throughput,
+    million_map,
+    startup,
+    stepper_peers,
+)
+from .timing import machine
 
 SUITE = (
-    ("1. simulation: fast path vs solve_ivp", simulation_speed.main),
-    ("2. contact-duration kernel (Eq. 31) vs sympy.lambdify", contact_duration_kernel.main),
-    ("3. map throughput and Dask scaling", map_throughput.main),
-    ("4. start-up: import symimpact, python -m derive", startup.main),
+    ("1. the stepper against its peers, each tuned to 1e-9 s impact times", stepper_peers.main),
+    ("2. contact-duration kernel (Eq. 31) against sympy.lambdify", contact_duration_kernel.main),
+    ("3. map throughput: compiled chunks against the per-point path; Dask", map_throughput.main),
+    ("4. a map of 10^6 runs", million_map.main),
+    ("5. start-up: import symimpact, symimpact simulate, python -m derive --check", startup.main),
 )
 
 
-def main() -> None:
-    import numba
-    import numpy
+class _Tee(io.TextIOBase):
+    def __init__(self, *streams):
+        self.streams = streams
 
-    print(
-        f"machine: {platform.machine()} {platform.processor() or platform.platform()}, "
-        f"{os.cpu_count()} cores; Python {sys.version.split()[0]}, NumPy {numpy.__version__}, "
-        f"numba {numba.__version__}"
+    def write(self, text: str) -> int:
+        for s in self.streams:
+            s.write(text)
+            s.flush()
+        return len(text)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m benchmarks", description=__doc__)
+    parser.add_argument("--write", metavar="FILE", help="also write the run's output to FILE")
+    parser.add_argument(
+        "--only", metavar="N", type=int, action="append", help="run benchmark N only (repeatable)"
     )
-    for title, run in SUITE:
-        print(f"\n=== {title} ===")
-        t0 = time.perf_counter()
-        run()
-        print(f"({time.perf_counter() - t0:.0f} s)")
+    ns = parser.parse_args(argv)
+    captured = io.StringIO()
+    started = datetime.datetime.now(datetime.UTC)
+    with contextlib.redirect_stdout(_Tee(sys.stdout, captured)):
+        print(f"machine: {machine()}")
+        for k, (title, run) in enumerate(SUITE, start=1):
+            if ns.only and k not in ns.only:
+                continue
+            print(f"\n=== {title} ===")
+            t0 = time.perf_counter()
+            run()
+            print(f"({time.perf_counter() - t0:.0f} s)")
+    if ns.write:
+        with open(ns.write, "w") as f:
+            f.write(
+                "# Benchmark figures of one run\n\n"
+                f"Written by `python -m benchmarks --write {ns.write}` from the output of the "
+                f"run started {started:%Y-%m-%d %H:%M} UTC; not edited by hand. Each figure is "
+                "the median of at least five repeats with the spread (fastest–slowest), unless "
+                "the line says otherwise; every baseline was measured in the same run.\n\n"
+                "```text\n" + captured.getvalue().strip() + "\n```\n"
+            )
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -10,13 +10,14 @@ cap), the same points for every method.  Run from the checkout: python -m benchm
 from __future__ import annotations
 
 import sys
-import time
 
 import numpy as np
 import sympy as sp
 from symimpact.generated import fixed_points
 
 from derive import board
+
+from .timing import REPEATS, timed
 
 TOL, CAP = 1e-14, 100
 
@@ -68,15 +69,6 @@ def lambdify_iteration(fp):
     return run
 
 
-def best_of(fn, repeat):
-    best, out = float("inf"), None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
-
-
 def main() -> None:
     rng = np.random.default_rng(20261122)
     plain_fp, newton_fp = declared()
@@ -84,26 +76,26 @@ def main() -> None:
         ("iteration of Eq. 31", plain_fp, fixed_points.contact_duration),
         ("Newton on h(T) (same fixed point)", newton_fp, fixed_points.contact_duration_newton),
     )
-    print("contact-duration kernel: evaluations per second, one core (the gufunc is serial)")
+    print(
+        "contact-duration kernel: evaluations per second on one core, median of "
+        f"{REPEATS} runs (slowest-fastest)"
+    )
     for label, fp, kernel in cases:
         baseline = lambdify_iteration(fp)
         small = physical_points(plain_fp, 10, rng)
         kernel(*small)  # compile / load the cache
         print(f"\n{label}")
-        print(
-            f"{'N':>10} {'kernel [ev/s]':>15} {'lambdify [ev/s]':>16} {'ratio':>7} "
-            f"{'mean steps':>11} {'max rel. diff':>14}"
-        )
         for n in (10**3, 10**5, 10**7):
             args = physical_points(plain_fp, n, rng)
-            repeat = 5 if n < 10**7 else 1
-            tk, (value, steps) = best_of(lambda a=args, f=kernel: f(*a), repeat)
-            tb, (ref, ref_steps) = best_of(lambda a=args, f=baseline: f(*a), 3 if n < 10**7 else 1)
+            tk = timed(lambda a=args, f=kernel: f(*a))
+            tb = timed(lambda a=args, f=baseline: f(*a))
+            (value, steps), (ref, ref_steps) = tk.out, tb.out
             both = (steps < CAP) & (ref_steps < CAP)  # converged in both
             diff = np.max(np.abs(value - ref)[both] / np.abs(ref[both]))
             print(
-                f"{n:>10.0e} {n / tk:>15.3e} {n / tb:>16.3e} {tb / tk:>6.1f}x "
-                f"{steps.mean():>11.2f} {diff:>14.1e}"
+                f"  N = {n:.0e}: kernel {tk.rate(n, 'ev/s')}; lambdify {tb.rate(n, 'ev/s')}; "
+                f"ratio {tb.median / tk.median:.1f}x; mean steps {steps.mean():.2f}; max rel. "
+                f"diff {diff:.1e}"
             )
     print("\ntargets: ratio >= 1.5x, kernel >= 1e7 evaluations/s")
     print("max rel. diff: over the points where both converged (Newton may stop at the cap on")

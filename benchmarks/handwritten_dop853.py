@@ -171,7 +171,5 @@ def impact_times(system, state, t_end, rtol, rest=1e-12, cap_per_period=200):
     scale_v = max(abs(state[1]), abs(state[3]))
     atol = np.array([scale_x, scale_v, scale_x, scale_v]) * rtol * 1e-3
     out = np.empty(100_000)
-    n = simulate(
-        q, np.asarray(state, float), t_end, rtol, atol, period / cap_per_period, rest, out
-    )
+    n = simulate(q, np.asarray(state, float), t_end, rtol, atol, period / cap_per_period, rest, out)
     return out[:n].copy()

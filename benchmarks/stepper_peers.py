@@ -132,7 +132,7 @@ def main() -> dict:
                 )
             ]
 
-        hand(CAPS[-1:] + (1e-12,))  # compile / load the cache of the hand-written stepper
+        hand((CAPS[-1], 1e-12))  # compile / load the cache of the hand-written stepper
         rows = {}
         methods = {
             "symimpact": (ours, [RTOLS]),

@@ -72,7 +72,7 @@ class MapStore:
     """The output file of one map and its folder of finished chunks (see the module text).
 
     The folder holds ``spec.json`` (the map's fingerprint), one file per finished chunk and
-    ``manifest.json``: for every chunk, its run indices and the SHA-256 of its bytes, written
+    ``manifest.json``: for every chunk, its run indices (as spans of consecutive runs) and the SHA-256 of its bytes, written
     (atomically, synced to disk) after the chunk itself.  On resume every chunk is verified
     against the manifest; one that is missing, truncated, unreadable, of another schema,
     duplicated or altered is reported (a :class:`MapStoreWarning`, one line) and its runs are
@@ -219,7 +219,7 @@ class MapStore:
         if not rows or set(rows[0]) != expected:
             return "its columns are not this map's"
         runs = [r["run"] for r in rows]
-        if runs != entry["runs"]:
+        if _spans(runs) != entry["runs"]:
             return "its run indices are not the ones recorded"
         if seen.intersection(runs) or len(set(runs)) != len(runs):
             return "it repeats runs of another chunk"
@@ -239,7 +239,7 @@ class MapStore:
         for name in sorted(chunks):
             got = self._verify(name, chunks[name], seen)
             if isinstance(got, str):
-                n = len(chunks[name].get("runs", [])) if isinstance(chunks[name], dict) else 0
+                n = _count(chunks[name].get("runs")) if isinstance(chunks[name], dict) else 0
                 self._warn(f"chunk {name}: {got}; its {n} runs are computed again")
                 _remove(self.partial / name)
                 del chunks[name]
@@ -277,7 +277,7 @@ class MapStore:
         name = f"chunk-{first:09d}{self.suffix}"
         self._write(df, self.partial / name)
         self.manifest["chunks"][name] = {
-            "runs": [int(r) for r in df["run"]],
+            "runs": _spans(int(r) for r in df["run"]),
             "sha256": _sha256(self.partial / name),
         }
         self._save_manifest()
@@ -289,6 +289,26 @@ class MapStore:
         self._lock_path.unlink(missing_ok=True)
         self.close()
         return self.out
+
+
+def _spans(runs) -> list[list[int]]:
+    """Run indices as [first, last + 1] spans of consecutive runs (a chunk is one span unless
+    a resumed map skips runs already done): the manifest stays small for a 10⁶-run map."""
+    spans: list[list[int]] = []
+    for r in runs:
+        if spans and r == spans[-1][1]:
+            spans[-1][1] = r + 1
+        else:
+            spans.append([r, r + 1])
+    return spans
+
+
+def _count(spans: Any) -> int:
+    """How many runs ``spans`` (as written by :func:`_spans`) hold; 0 if it is not such a list."""
+    try:
+        return sum(int(b) - int(a) for a, b in spans)
+    except (TypeError, ValueError):
+        return 0
 
 
 def _read_json(path: Path) -> Any:
