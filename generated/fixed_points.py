@@ -352,9 +352,11 @@ def contact_duration_newton(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
 
     Paper Eq. 31.
 
-    The same fixed point as `contact_duration`, found as the root of h(T) = T²·D(T) − π² by
-    Newton's method from the closed form with c₁ = 0: a few steps instead of tens, and it
-    converges also where the iteration of Eq. 31 oscillates (strong nonlinearity).
+    A fixed point of Eq. 31, found as the root of h(T) = T²·D(T) − π² by Newton's method from
+    the closed form with c₁ = 0: a few steps instead of tens, and it converges also where the
+    iteration of Eq. 31 oscillates (strong nonlinearity).  Where Eq. 31 has two positive fixed
+    points (a strong cubic term with strong contact damping) it finds the shorter one, and
+    `contact_duration` may find the other: the documentation's kernel page says where.
 
     .. math::
 

@@ -175,3 +175,46 @@ def test_lanes_give_the_scalar_loops_bits(boards, name, tol, max_iter):
     assert v2.shape == (40, 40)
     np.testing.assert_array_equal(v2, ref_value[:1600].reshape(40, 40))
     np.testing.assert_array_equal(s2, ref_steps[:1600].reshape(40, 40))
+
+
+def test_where_newton_and_the_iteration_part(boards):
+    """Every figure of the docs paragraph "Where Newton and the iteration reach different fixed
+    points" (docs/kernels.md), recomputed from the same 2·10⁶ seeded points; the paragraph must
+    state exactly these figures."""
+    import re
+    from pathlib import Path
+
+    fp = _declared(boards, "contact_duration")
+    n = 2_000_000
+    pts = _points(fp, np.random.default_rng(20261122), n).T
+    m, a, b, c1, zdot0, _ = pts
+    t_it, s_it = fixed_points.contact_duration(*pts)
+    t_nt, s_nt = fixed_points.contact_duration_newton(*pts)
+    both = (s_it < fp.max_iter) & (s_nt < fp.max_iter)
+    part = both & (np.abs(t_it - t_nt) > 1e-9 * t_it)
+    kappa = 3 * a * zdot0**2 * (t_it / np.pi) ** 2 / (4 * b)
+    damping = c1 * t_it / m
+    residual = max(
+        float(np.max(np.abs(multiple_scales.contact_duration_map(t, *pts) - t)[part] / t[part]))
+        for t in (t_it, t_nt)
+    )
+    ratio = t_nt[part] / t_it[part]
+    assert np.all(ratio < 1)  # Newton's is the shorter one at every such point
+    floor = lambda x, d: np.floor(x * 10**d) / 10**d  # noqa: E731 (bounds stated downwards)
+    ceil = lambda x, d: np.ceil(x * 10**d) / 10**d  # noqa: E731
+    figures = [
+        f"{n:,} points",
+        "seed 20261122",
+        f"converge at {both.sum():,} of the points",
+        f"differ at {part.sum():,} of those ({100 * part.sum() / both.sum():.2f} %)",
+        f"within {ceil(residual * 1e15, 1):.1f}e-15 of itself",
+        f"κ = 3a·Ż₀²·(T/π)²/(4b) ≥ {floor(kappa[part].min(), 0):.0f}",
+        f"the median κ is {np.median(kappa[both]):.2g}",
+        f"c₁·T/m ≥ {floor(damping[part].min(), 2):.2f}",
+        f"{floor(ratio.min(), 3):.3f} to {ceil(ratio.max(), 2):.2f} times",
+        f"(κ ≥ {floor(kappa[part].min(), 0):.0f} with c₁·T/m ≥ {floor(damping[part].min(), 2):.2f})",
+    ]
+    doc = Path(__file__).resolve().parents[1] / "docs" / "kernels.md"
+    text = re.sub(r"\s+", " ", doc.read_text())
+    missing = [f for f in figures if f not in text]
+    assert not missing, missing

@@ -234,8 +234,10 @@ def perturbation_durations(
     T⁽⁰⁾ (``generated.fixed_points.contact_duration``); ``"newton"`` finds a fixed point by
     Newton's method on h(T) = T²·D(T) − π² from its closed form at c₁ = 0
     (``contact_duration_newton``): several times faster, and it converges where the iteration
-    oscillates (strong nonlinearity).  Where Eq. 31 has several positive fixed points (c₁ > 0,
-    rare) the two may settle on different ones: the iteration only reaches stable ones.  No
+    oscillates (strong nonlinearity).  Where Eq. 31 has two positive fixed points (a strong
+    cubic term with strong contact damping: 0.40 % of the declared ranges, see the Kernels page
+    of the documentation) the two settle on different ones: Newton on the shorter, the
+    iteration on the one that attracts it.  No
     history is kept; :func:`perturbation_duration` gives the iterates.
 
     Raises :class:`ConvergenceError` (with the last iterates of the first such point) where the
