@@ -313,7 +313,7 @@ def simulate(
             "expansion (Eq. 21–33) assumes; use contact='cubic', which integrates the same law",
         )
     log = []
-    for row in impacts[:n_imp]:
+    for row in impacts[:n_imp].tolist():  # Python floats: the same values, cheaper arithmetic
         done = row[_stepper.I_DONE] > 0
         s = row[_stepper.I_SIDE]
         approach = s * (row[_stepper.I_YD] - row[_stepper.I_XD])
