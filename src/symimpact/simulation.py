@@ -129,6 +129,10 @@ IMPACT_TIME_ACCURACY = {
     1e-3: 2.2e-3,
 }
 
+#: Defaults of :func:`simulate` (contact rtol, the impact limit, the rest fraction), which the
+#: compiled map loop uses too.
+RTOL, MAX_IMPACTS, REST = 1e-12, 100_000, 1e-12
+
 #: Longest run, in natural periods 2π/ω_n of the main mass (the free-flight search takes about 16
 #: steps per period, so 1e7 periods cost seconds even without an impact).
 MAX_PERIODS = 1e7
@@ -187,9 +191,9 @@ def simulate(
     ba: Any = "impact",
     history: bool = False,
     samples: int = 2000,
-    rtol: float = 1e-12,
-    max_impacts: int = 100_000,
-    rest: float = 1e-12,
+    rtol: float = RTOL,
+    max_impacts: int = MAX_IMPACTS,
+    rest: float = REST,
 ) -> SimulationResult:
     """Free vibration of the main mass with the impact damper (Eq. 7 between impacts, Eq. 10
     during contact), from the state (x0, xdot0, y0, ydot0) at t = 0 to ``t_end``.

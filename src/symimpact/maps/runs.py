@@ -202,6 +202,7 @@ def _chunk_rows(base: _Base, names: tuple[str, ...], runs: list[int], values: np
     row holds the bits :func:`run_point` gives for the same point."""
     from .. import _batch
     from .. import _stepper as st
+    from ..simulation import MAX_IMPACTS, REST, RTOL, effectiveness
 
     values = np.asarray(values, dtype=float).reshape(len(runs), len(names))
     P = _packed(base, names, values)
@@ -212,9 +213,9 @@ def _chunk_rows(base: _Base, names: tuple[str, ...], runs: list[int], values: np
         P,
         np.ascontiguousarray(init[:, :4]),
         np.ascontiguousarray(init[:, 4]),
-        1e-12,  # simulate's defaults: rtol, rest, max_impacts
-        1e-12,
-        100_000,
+        RTOL,  # simulate's defaults
+        REST,
+        MAX_IMPACTS,
         out,
     )
     rows = []
@@ -229,7 +230,7 @@ def _chunk_rows(base: _Base, names: tuple[str, ...], runs: list[int], values: np
         row.update(
             n_impacts=n_imp,
             n_effective=n_eff,
-            effectiveness=None if n_imp - n_eff <= 0 else n_eff / (n_imp - n_eff),
+            effectiveness=effectiveness(n_imp, n_eff),
             damping_inclination=_number(r[_batch.R_DI]),
             zeta_eq=_number(r[_batch.R_ZETA]),
             energy_initial=float(r[_batch.R_E_INITIAL]),
