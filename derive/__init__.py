@@ -22,6 +22,7 @@ STEPS = (
     "multiple_scales",
     "closed_forms",
     "free_flight",
+    "forced_flight",
 )
 
 

@@ -23,6 +23,7 @@ from .codegen import _env, fixed_point_ast, fixed_point_latex, kernel_body, late
 
 FOLDER = "octave"
 MAX_NAME = 63  # namelengthmax of MATLAB and Octave
+PICK = "pick"  # the local element-wise selection function of a kernel with a case distinction
 
 
 class OctaveKernelPrinter(OctaveCodePrinter):
@@ -42,12 +43,31 @@ class OctaveKernelPrinter(OctaveCodePrinter):
         inner = "\n".join("  " + line for line in body.split("\n"))
         return f"while ({self._print(expr.condition)})\n{inner}\nend"
 
+    def _print_Piecewise(self, expr) -> str:
+        """``pick(condition, value, otherwise)``: a local function of the kernel file that selects
+        element by element, so the branch not taken (e.g. a division by zero at a resonance)
+        cannot turn the result into NaN as SymPy's ``(c).*(a) + (~c).*(b)`` would."""
+        *cases, (last, cond) = expr.args
+        if cond != sp.true:
+            raise ValueError("a kernel's Piecewise must end with an otherwise branch")
+        out = self._print(last)
+        for value, condition in reversed(cases):
+            out = f"{PICK}({self._print(condition)}, {self._print(value)}, {out})"
+        return out
+
     def _print_And(self, expr) -> str:  # scalar loop conditions: short-circuit &&
         return " && ".join(f"({self._print(a)})" for a in expr.args)
 
     def _print_AddAugmentedAssignment(self, expr) -> str:
         lhs = self._print(expr.lhs)
         return f"{lhs} = {lhs} + {self._print(expr.rhs)};"
+
+
+class OctaveArrayPrinter(OctaveKernelPrinter):
+    """The kernels' printer: their conditions hold element by element (``&``, not ``&&``)."""
+
+    def _print_And(self, expr) -> str:
+        return " & ".join(f"({self._print(a)})" for a in expr.args)
 
 
 def _indented(lines: list[str]) -> list[str]:
@@ -88,7 +108,7 @@ def render(boards: list[Board]) -> dict[str, str]:
         for c in b.constants:
             emit("constant.m.j2", octave_name(b.module, c.name), board=b, const=c)
         for k in b.kernels:
-            lines, result, ops = kernel_body(k, OctaveKernelPrinter, {}, prefix="x_")
+            lines, result, ops = kernel_body(k, OctaveArrayPrinter, {}, prefix="x_")
             emit(
                 "kernel.m.j2",
                 octave_name(b.module, k.name),
@@ -99,6 +119,7 @@ def render(boards: list[Board]) -> dict[str, str]:
                 ops=ops,
                 latex=latex_of(k),
                 argnames=", ".join(a.name for a in k.args),
+                pick=PICK if any(f"{PICK}(" in text for _, text in [*lines, ("", result)]) else "",
             )
     for b in boards:
         for fp in b.fixed_points:

@@ -27,11 +27,44 @@ _env = jinja2.Environment(
 )
 
 
+def cite(equation: str) -> str:
+    """How a generated file names an equation: ``paper Eq. 7``, or ``Eq. F1 (derived here, beyond
+    the paper)`` for the forced-response steps, whose numbers start with F."""
+    if equation.startswith("F"):
+        return f"Eq. {equation} (derived here, beyond the paper)"
+    return f"paper Eq. {equation}"
+
+
+_env.filters["cite"] = cite
+_env.filters["capitalize_first"] = lambda text: text[:1].upper() + text[1:]
+
+
 class KernelPrinter(NumPyPrinter):
     """NumPy printer with floats written in full (``repr``) so no digit is lost."""
 
     def _print_Float(self, expr: sp.Float) -> str:
         return repr(float(expr))
+
+
+class ScalarTwinPrinter(KernelPrinter):
+    """The ``*_scalar`` twins: NumPy float64 arithmetic, and a case distinction (``Piecewise``)
+    written as a conditional expression, so that numba compiles it and only the branch taken is
+    evaluated."""
+
+    def _print_Piecewise(self, expr: sp.Piecewise) -> str:
+        *cases, (last, cond) = expr.args
+        if cond != sp.true:
+            raise ValueError("a kernel's Piecewise must end with an otherwise branch")
+        out = self._print(last)
+        for value, condition in reversed(cases):
+            out = f"(({self._print(value)}) if ({self._print(condition)}) else ({out}))"
+        return out
+
+    def _print_Relational(self, expr) -> str:
+        return PythonCodePrinter._print_Relational(self, expr)
+
+    def _print_And(self, expr) -> str:
+        return " and ".join(f"({self._print(a)})" for a in expr.args)
 
 
 class ScalarKernelPrinter(PythonCodePrinter):
@@ -93,7 +126,7 @@ def render_module(board: Board) -> str:
         # The twin evaluates the same formula on NumPy float64 scalars: IEEE arithmetic, so a
         # singular point gives the same inf or NaN as the array kernel (Python floats and the
         # math module would raise ZeroDivisionError or ValueError there instead).
-        scalar_lines, scalar_result, _ = kernel_body(k, KernelPrinter)
+        scalar_lines, scalar_result, _ = kernel_body(k, ScalarTwinPrinter)
         total_ops += ops
         kernels.append(
             {
@@ -105,6 +138,7 @@ def render_module(board: Board) -> str:
                 "ops": ops,
                 "latex": latex_of(k),
                 "argnames": ", ".join(a.name for a in k.args),
+                "cases": sp.sympify(k.expr).has(sp.Piecewise),
             }
         )
     return _env.get_template(KERNEL_TEMPLATE).render(

@@ -15,6 +15,7 @@ from . import (
     multiple_scales,
     closed_forms,
     free_flight,
+    forced_flight,
 )
 
 __all__ = [
@@ -25,4 +26,5 @@ __all__ = [
     "multiple_scales",
     "closed_forms",
     "free_flight",
+    "forced_flight",
 ]
