@@ -23,6 +23,7 @@ STEPS = (
     "closed_forms",
     "free_flight",
     "forced_flight",
+    "rigid_impact",
 )
 
 

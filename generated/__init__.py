@@ -16,6 +16,7 @@ from . import (
     closed_forms,
     free_flight,
     forced_flight,
+    rigid_impact,
 )
 
 __all__ = [
@@ -27,4 +28,5 @@ __all__ = [
     "closed_forms",
     "free_flight",
     "forced_flight",
+    "rigid_impact",
 ]
