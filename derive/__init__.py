@@ -24,6 +24,7 @@ STEPS = (
     "free_flight",
     "forced_flight",
     "rigid_impact",
+    "periodic_orbit",
 )
 
 

@@ -185,6 +185,20 @@ def derive() -> Board:
         lhs=r"\dot{x}(t)",
         magnitude=(amp_s * W + amp_d * sp.sqrt(K / M) * sp.exp(-sigma * t)),
     )
+    for name, coefficient, which in (
+        ("steady_cosine", A_value, "cos"),
+        ("steady_sine", B_value, "sin"),
+    ):
+        board.kernel(
+            name=name,
+            args=(aM, aK, aC, aF, aXb, aW),
+            expr=coefficient.subs({P: P_value, Q: Q_value}),
+            returns=f"Coefficient of {which}(Ωt + φ) in the steady solution of the primary",
+            unit="m",
+            equation="F1",
+            lhs="A" if which == "cos" else "B",
+            magnitude=amp_s,
+        )
     board.kernel(
         name="linear_amplitude",
         args=(aM, aK, aC, aF, aXb, aW),

@@ -17,6 +17,7 @@ from . import (
     free_flight,
     forced_flight,
     rigid_impact,
+    periodic_orbit,
 )
 
 __all__ = [
@@ -29,4 +30,5 @@ __all__ = [
     "free_flight",
     "forced_flight",
     "rigid_impact",
+    "periodic_orbit",
 ]

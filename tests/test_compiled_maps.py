@@ -135,12 +135,12 @@ def test_cached_machine_code_is_dropped_when_a_compiled_source_changes(tmp_path,
     st._forget_stale_compilations()  # no digest yet: everything of the stepper goes
     assert sorted(f.name for f in tmp_path.iterdir()) == [
         other.name,
-        "symimpact-compiled-sources.sha256",
+        "symimpact-compiled-sources-_stepper.sha256",
     ]
     make()
     st._forget_stale_compilations()  # same sources: the cache stays
     assert all((tmp_path / n).exists() for n in names)
-    stamp = tmp_path / "symimpact-compiled-sources.sha256"
+    stamp = tmp_path / "symimpact-compiled-sources-_stepper.sha256"
     stamp.write_text("0" * 64)  # as after an edit of a source
     st._forget_stale_compilations()
     assert not any((tmp_path / n).exists() for n in names) and other.exists()

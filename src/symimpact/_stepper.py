@@ -897,27 +897,27 @@ def compiled_before() -> bool:
         return True
 
 
-def _forget_stale_compilations() -> None:
-    """Drop numba's cached machine code of this module and of :mod:`symimpact._batch` when any
-    source compiled into it changed.
+def forget_stale_compilations(dispatcher, sources, prefixes) -> None:
+    """Drop numba's cached machine code of the modules named by ``prefixes`` (file-name prefixes
+    such as ``"_stepper."``) when any of ``sources`` (paths) changed.
 
     numba keys a cached function to the time stamp of its own file only, while a compiled
-    caller holds its callees' code inlined: after an edit of this file, a regeneration of the
-    free-flight or multiple-scales kernels, or an upgrade, a cached ``_batch.run_many`` would
-    still run the old stepper.  A digest of every such source, kept beside the cache, tells.
+    caller holds its callees' code inlined: after an edit of a module, a regeneration of the
+    generated kernels it calls, or an upgrade, a cached caller would still run the old code.  A
+    digest of every such source, kept beside the cache of ``dispatcher`` (one of the modules'
+    compiled functions), tells.
     """
     import hashlib
     import os
     from pathlib import Path
 
     try:
-        folder = Path(run._cache._cache_path)  # numba's cache layout is private
+        folder = Path(dispatcher._cache._cache_path)  # numba's cache layout is private
     except AttributeError:  # another numba version: nothing to do safely
         return
-    sources = [Path(__file__), Path(__file__).with_name("_batch.py"), Path(_ff.__file__)]
-    sources.append(Path(_ms.__file__))
-    digest = hashlib.sha256(b"".join(s.read_bytes() for s in sources if s.exists())).hexdigest()
-    stamp = folder / "symimpact-compiled-sources.sha256"
+    digest = hashlib.sha256(b"".join(Path(s).read_bytes() for s in sources if Path(s).exists()))
+    digest = digest.hexdigest()
+    stamp = folder / f"symimpact-compiled-sources-{prefixes[0].rstrip('.')}.sha256"
     try:
         if stamp.read_text() == digest:
             return
@@ -925,13 +925,23 @@ def _forget_stale_compilations() -> None:
         pass
     try:
         for f in folder.iterdir():
-            if f.name.startswith(("_stepper.", "_batch.")) and f.suffix in (".nbi", ".nbc"):
+            if f.name.startswith(tuple(prefixes)) and f.suffix in (".nbi", ".nbc"):
                 f.unlink(missing_ok=True)
         tmp = stamp.with_name(f"{stamp.name}.{os.getpid()}.tmp")
         tmp.write_text(digest)
         os.replace(tmp, stamp)
     except OSError:  # a read-only cache: numba then compiles in memory, nothing is stale
         pass
+
+
+def _forget_stale_compilations() -> None:
+    """This module's and :mod:`symimpact._batch`'s cached code, dropped when this file, the batch
+    loop or the free-flight and multiple-scales kernels changed."""
+    from pathlib import Path
+
+    here = Path(__file__)
+    sources = [here, here.with_name("_batch.py"), Path(_ff.__file__), Path(_ms.__file__)]
+    forget_stale_compilations(run, sources, ("_stepper.", "_batch."))
 
 
 _forget_stale_compilations()

@@ -48,6 +48,14 @@ SI_UNITS: dict[str, str] = {
     "restitution": "dimensionless",
     "ba": "dimensionless",
     "mass_ratio": "dimensionless",
+    "F0": "N",
+    "X_b": "m",
+    "omega": "rad/s",
+    "freq": "Hz",
+    "phase": "rad",
+    "e": "dimensionless",
+    "periods": "dimensionless",
+    "discard": "dimensionless",
 }
 
 

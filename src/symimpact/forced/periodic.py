@@ -1,0 +1,218 @@
+"""The symmetric two-impact periodic motions in closed form (Step 10, Eq. F3), with their
+amplitude, admissibility and stability.
+
+At a fixed forcing phase φ of the first impact, Step 10's conditions are linear in the state after
+it (X, V, U); the last one is a·cos φ + b·sin φ = c, solved as φ = atan2(b, a) ± arccos(c/r),
+r = √(a² + b²).  Each solution is then checked:
+
+- *amplitude*: max abs(x) over the half period (the other half is its negative), from Step 8's
+  flight, sampled and refined where ẋ = 0;
+- *admissible*: the impact mass approaches the second wall (U − ẋ(τ⁻) < 0) and touches no wall in
+  between (abs(z) < d/2 on (0, τ), z = y − x, refined where ż = 0);
+- *stable*: the eigenvalues of the linearised impact-to-impact map all have modulus < 1.  The map
+  G takes the state after an impact on the wall +d/2, (t0, X, V, U), through the flight to the
+  next impact (its time t1 implicit in z(t1) = −d/2) and the impact law, and negates the result
+  with the time shifted by τ = π/Ω (the symmetry).  Its Jacobian follows from the chain rule:
+  the flight is affine in (X, V) with the free-decay matrix Φ(t1 − t0), depends on t0 through the
+  forcing phase (∂x/∂t0 = ẋ_p(t1) − Φ₁₁ẋ_p(t0) − Φ₁₂ẍ_p(t0), x_p Step 8's steady solution), and
+  the impact time moves by dτ = −(∂g/∂s)·ds/(U − ẋ(t1)) with g = z + d/2.  The full period is G
+  applied twice, so its multipliers are the squares of G's eigenvalues.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import MethodNotApplicable, ParameterError
+from ..generated import forced_flight as ff
+from ..generated import periodic_orbit as po
+from ..system import ImpactSystem
+from ..units import nonnegative_float
+from .forcing import Forcing
+
+#: Samples per half period for the extremes of x and z before refinement (the flight holds at
+#: most a few natural periods per half forcing period in the band of interest; 512 samples
+#: bracket every extremum whose neighbours are more than 1/512 of the half period apart).
+SAMPLES = 512
+
+
+@dataclass(frozen=True)
+class PeriodicOrbit:
+    """One symmetric two-impact orbit (SI units).
+
+    ``impact_phase`` [rad]: forcing phase Ωt + φ at the impact on the wall +d/2.
+    ``amplitude`` [m]: max abs(x).  ``impact_speed`` [m/s]: relative approach speed.
+    ``X`` [m], ``V``, ``U`` [m/s]: x, ẋ, ẏ after that impact.  ``admissible``: approaches the
+    next wall and touches none in between.  ``stable``: every multiplier inside the unit circle.
+    ``multipliers``: moduli of the full-period multipliers, sorted descending.
+    """
+
+    impact_phase: float
+    amplitude: float
+    impact_speed: float
+    X: float
+    V: float
+    U: float
+    admissible: bool
+    stable: bool
+    multipliers: tuple[float, ...]
+
+    def as_dict(self) -> dict[str, Any]:
+        d = dict(self.__dict__)
+        d["multipliers"] = list(self.multipliers)
+        return d
+
+
+def periodic_orbits(system: ImpactSystem, forcing: Forcing, e: Any) -> list[PeriodicOrbit]:
+    """The symmetric two-impact periodic motions of the rigid-impact damper (Eq. F3): zero, one
+    or two solutions, each with amplitude, impact speed, admissibility and stability."""
+    e = nonnegative_float("e", e)
+    if e > 1.0:
+        raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+    if system.C == 0.0 and math.isclose(forcing.omega, system.omega_n, rel_tol=1e-12):
+        raise MethodNotApplicable(
+            "closed-form", "the undamped resonance has no steady solution to build the orbit on"
+        )
+    args = (
+        system.M,
+        system.K,
+        system.C,
+        system.m,
+        e,
+        system.gap,
+        forcing.F0,
+        forcing.X_b,
+        forcing.omega,
+    )
+    a = float(po.phase_cos_coefficient(*args))
+    b = float(po.phase_sin_coefficient(*args))
+    c = float(po.phase_right_side(*args))
+    r = math.hypot(a, b)
+    if not (r > 0.0) or abs(c) > r:
+        return []
+    base, spread = math.atan2(b, a), math.acos(c / r)
+    phases = [base + spread] if spread == 0.0 else [base + spread, base - spread]
+    orbits = []
+    for phi in phases:
+        phi = math.remainder(phi, 2.0 * math.pi)
+        X = float(po.impact_displacement(*args, phi))
+        V = float(po.main_velocity_after(*args, phi))
+        U = float(po.impact_mass_velocity_after(*args, phi))
+        orbits.append(_describe(system, forcing, e, phi, X, V, U))
+    return orbits
+
+
+def _flight(system, forcing, phi, X, V, tau):
+    """(x, ẋ) a time τ after the first impact (Eq. F1 with the forcing phase φ at it)."""
+    args = (system.M, system.K, system.C, forcing.F0, forcing.X_b, forcing.omega, phi, X, V)
+    return ff.forced_displacement(tau, *args), ff.forced_velocity(tau, *args)
+
+
+def _refined_extremes(f, df, t):
+    """Values of f at the samples t and at the zeros of df between them (bisection on df)."""
+    values = [f(t)]
+    d = df(t)
+    idx = np.nonzero(np.sign(d[:-1]) * np.sign(d[1:]) < 0)[0]
+    for i in idx:
+        lo, hi = t[i], t[i + 1]
+        dlo = d[i]
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            dm = df(np.array([mid]))[0]
+            if (dm > 0) == (dlo > 0):
+                lo, dlo = mid, dm
+            else:
+                hi = mid
+        values.append(f(np.array([0.5 * (lo + hi)])))
+    return np.concatenate(values)
+
+
+def _describe(system, forcing, e, phi, X, V, U) -> PeriodicOrbit:
+    W, h = forcing.omega, system.gap / 2.0
+    tau = math.pi / W
+    t = np.linspace(0.0, tau, SAMPLES + 1)
+
+    def x_of(s):
+        return _flight(system, forcing, phi, X, V, s)[0]
+
+    def v_of(s):
+        return _flight(system, forcing, phi, X, V, s)[1]
+
+    amplitude = float(np.max(np.abs(_refined_extremes(x_of, v_of, t))))
+    v1 = float(_flight(system, forcing, phi, X, V, tau)[1])
+    approach = -(U - v1)  # towards the wall −d/2: z decreasing
+
+    def z_of(s):
+        return h + U * s - (x_of(s) - X)
+
+    def zd_of(s):
+        return U - v_of(s)
+
+    inner = t[1:-1]
+    z_inner = _refined_extremes(z_of, zd_of, np.concatenate(([t[1]], inner, [t[-2]])))
+    slack = 1e-9 * h
+    admissible = bool(approach > 0.0 and np.all(np.abs(z_inner) < h - slack))
+    moduli = _multipliers(system, forcing, e, phi, X, V, U, tau)
+    return PeriodicOrbit(
+        impact_phase=phi,
+        amplitude=amplitude,
+        impact_speed=approach,
+        X=X,
+        V=V,
+        U=U,
+        admissible=admissible,
+        stable=bool(moduli[0] < 1.0),
+        multipliers=tuple(float(m) for m in moduli),
+    )
+
+
+def _steady(system, forcing, theta):
+    """(ẋ_p, ẍ_p) of Step 8's steady solution at forcing phase θ."""
+    s = (system.M, system.K, system.C, forcing.F0, forcing.X_b, forcing.omega)
+    A, B = float(ff.steady_cosine(*s)), float(ff.steady_sine(*s))
+    W = forcing.omega
+    v = W * (B * math.cos(theta) - A * math.sin(theta))
+    a = -W * W * (A * math.cos(theta) + B * math.sin(theta))
+    return v, a
+
+
+def _jacobian(system, forcing, e, phi, X, V, U, tau):
+    """Jacobian of the half-period map G at the orbit (module docstring), variables
+    (t0, X, V, U) after the impact on the wall +d/2."""
+    M, K, C, m, W = system.M, system.K, system.C, system.m, forcing.omega
+    unforced = Forcing(F0=0.0, omega=W)
+    # free-decay matrix over τ: flights from unit displacement and unit velocity, no forcing
+    p11, p21 = (float(v) for v in _flight(system, unforced, 0.0, 1.0, 0.0, tau))
+    p12, p22 = (float(v) for v in _flight(system, unforced, 0.0, 0.0, 1.0, tau))
+    x1, v1 = (float(v) for v in _flight(system, forcing, phi, X, V, tau))
+    theta1 = phi + W * tau
+    P = forcing.F0 + K * forcing.X_b
+    Q = -C * W * forcing.X_b
+    a1 = (P * math.cos(theta1) + Q * math.sin(theta1) - C * v1 - K * x1) / M
+    vp0, ap0 = _steady(system, forcing, phi)
+    vp1, ap1 = _steady(system, forcing, theta1)
+    x_t0 = vp1 - p11 * vp0 - p12 * ap0
+    v_t0 = ap1 - p21 * vp0 - p22 * ap0
+    # d(flight time) from g = z(τ) + d/2 = 2h + Uτ − (x(τ) − X), ∂g/∂τ = U − ẋ(τ)
+    gt = U - v1
+    g_s = np.array([-x_t0, 1.0 - p11, -p12, tau])  # ∂g/∂(t0, X, V, U)
+    dtau = -g_s / gt
+    dt1 = np.array([1.0, 0.0, 0.0, 0.0]) + dtau
+    dx1 = np.array([x_t0, p11, p12, 0.0]) + v1 * dtau
+    dv1 = np.array([v_t0, p21, p22, 0.0]) + a1 * dtau
+    du = np.array([0.0, 0.0, 0.0, 1.0])
+    mu = M * m / (M + m)
+    dv_plus = dv1 + (1.0 + e) * mu / M * (du - dv1)
+    du_plus = du - (1.0 + e) * mu / m * (du - dv1)
+    return np.vstack([dt1, -dx1, -dv_plus, -du_plus])
+
+
+def _multipliers(system, forcing, e, phi, X, V, U, tau):
+    """Moduli of the full-period multipliers (squares of G's eigenvalues), descending."""
+    J = _jacobian(system, forcing, e, phi, X, V, U, tau)
+    lam = np.linalg.eigvals(J)
+    return np.sort(np.abs(lam) ** 2)[::-1]

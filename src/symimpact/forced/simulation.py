@@ -1,0 +1,300 @@
+"""Forced response with rigid impacts: :func:`simulate_forced`, and the steady state it reaches.
+
+The simulation is event driven and closed form between events (:mod:`symimpact.forced._rigid`:
+Step 8's forced flight, Eq. F1; Step 9's impact law, Eq. F2), with chatter taken to its
+accumulation point and sticking phases.  The steady state is read over the kept forcing periods:
+the amplitude max abs(x), the impacts per period, and the period of the motion from the Poincaré
+section at t = k·T (the state once per forcing period).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import MethodNotApplicable, ParameterError, SymimpactError
+from ..system import ImpactSystem
+from ..units import nonnegative_float, si_float
+from . import _rigid
+from .forcing import Forcing
+
+#: Chatter is taken to its accumulation point when the remaining impacts would all fall within
+#: this fraction of a forcing period (the constant-acceleration limit is then exact to O(Δ²)).
+CHATTER = 1e-7
+#: The Poincaré section repeats when two of its points agree to this fraction of the state's
+#: scale (the motion's amplitude and velocity amplitude): far above the closed-form flight's
+#: rounding, far below any physical difference between distinct orbits.
+SECTION_RTOL = 1e-6
+MAX_EVENTS = 10_000_000
+MAX_MULTIPLE = 8
+
+
+@dataclass(frozen=True)
+class Steady:
+    """The steady state over the kept periods.
+
+    ``amplitude`` [m]: max abs(x); ``impacts_per_period``: impacts (accumulated chatter counts as
+    one) per forcing period; ``periodic``: the Poincaré section repeats; ``period_multiple``: the
+    smallest k ≤ 8 with which it repeats (0 when it does not); ``section_spread`` [1]: the largest
+    distance between points k periods apart, relative to the state's scale.
+    """
+
+    amplitude: float
+    impacts_per_period: float
+    periodic: bool
+    period_multiple: int
+    section_spread: float
+
+    def as_dict(self) -> dict[str, Any]:
+        return dict(self.__dict__)
+
+
+@dataclass(frozen=True)
+class ForcedResult:
+    """Outcome of :func:`simulate_forced` (SI units)."""
+
+    system: ImpactSystem
+    forcing: Forcing
+    e: float
+    t_end: float
+    events: np.ndarray  # (n, 10): columns named by EVENT_COLUMNS
+    sections: np.ndarray  # (periods + 1, 5): x, ẋ, z = y − x, ẏ, sticking at t = k·T
+    period_max: np.ndarray  # largest abs(x) in each whole forcing period
+    energy: dict[str, float]
+    final_state: tuple[float, float, float, float]
+    initial_state: tuple[float, float, float, float]
+    final_stuck: bool
+    steady: Steady | None = None
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def impacts(self) -> np.ndarray:
+        """Times of the impacts (chatter accumulations included) [s]."""
+        kinds = self.events[:, _rigid.E_KIND]
+        return self.events[kinds != _rigid.KIND_RELEASE, _rigid.E_T]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {
+            "system": {k: self.system.as_dict()[k] for k in ("M", "K", "C", "m", "gap")},
+            "forcing": self.forcing.as_dict(),
+            "contact": "rigid",
+            "e": self.e,
+            "t_end": self.t_end,
+            "n_impacts": len(self.impacts),
+            "energy": self.energy,
+            "final_state": list(self.final_state),
+            "steady": None if self.steady is None else self.steady.as_dict(),
+            "notes": self.notes,
+        }
+
+
+EVENT_COLUMNS = (
+    "t",
+    "x",
+    "xdot_before",
+    "ydot_before",
+    "side",
+    "approach_speed",
+    "energy_lost",
+    "kind",
+    "xdot_after",
+    "ydot_after",
+)
+
+
+def simulate_forced(
+    system: ImpactSystem,
+    forcing: Forcing,
+    *,
+    contact: str = "rigid",
+    e: Any = None,
+    periods: Any = 100,
+    discard: Any = None,
+    x0: Any = 0.0,
+    xdot0: Any = 0.0,
+    y0: Any = 0.0,
+    ydot0: Any = 0.0,
+    chatter: float = CHATTER,
+) -> ForcedResult:
+    """Forced response of the primary with the impact damper, for ``periods`` forcing periods.
+
+    Implements Eq. F1 (forced flight, Step 8) between impacts and Eq. F2 (rigid impact law with
+    Newton's coefficient ``e``, Step 9) at them; chatter accumulates to its limit point
+    t∞ = t₀ + 2w/(a(1 − e)) and a sticking phase follows while the contact force is compressive.
+    With ``discard`` (a number of periods) the result's ``steady`` describes the periods after
+    it.  ``system`` supplies M, K, C, m and the clearance d (its compliant law is not used).
+    """
+    if contact != "rigid":
+        raise MethodNotApplicable(
+            "simulate_forced", f"contact {contact!r}: the forced simulation handles rigid impacts"
+        )
+    if e is None:
+        raise ParameterError("e", "rigid impacts need Newton's coefficient of restitution e")
+    e = nonnegative_float("e", e)
+    if e > 1.0:
+        raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+    n_periods = _count("periods", periods)
+    if n_periods < 1:
+        raise ParameterError("periods", "must be at least 1")
+    n_discard = 0 if discard is None else _count("discard", discard)
+    if discard is not None and n_discard >= n_periods:
+        raise ParameterError("discard", f"{n_discard} leaves none of the {n_periods} periods")
+    state = [
+        si_float(n, v) for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0))
+    ]
+    h = system.gap / 2.0
+    if abs(state[2] - state[0]) > h * (1.0 + 1e-12):
+        raise ParameterError("y0", f"abs(y0 − x0) must not exceed d/2 = {h:g} m")
+    if not (chatter >= 0.0):
+        raise ParameterError("chatter", "must be a fraction ≥ 0 of the forcing period")
+    p = np.zeros(_rigid.N_PARAMS)
+    p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
+    p[_rigid.P_m], p[_rigid.P_h], p[_rigid.P_e] = system.m, h, e
+    p[_rigid.P_F0], p[_rigid.P_XB] = forcing.F0, forcing.X_b
+    p[_rigid.P_W], p[_rigid.P_PHI], p[_rigid.P_CHAT] = forcing.omega, forcing.phase, chatter
+    t_end = n_periods * forcing.period
+    status, events, n_ev, sections, period_max, ledger, final = _rigid.run(
+        p, np.array(state), t_end, MAX_EVENTS
+    )
+    if status == _rigid.TOO_MANY_EVENTS:
+        raise SymimpactError(
+            f"more than {MAX_EVENTS:,} impacts in {n_periods} periods: raise the chatter "
+            "fraction or shorten the run"
+        )
+    events = events[:n_ev].copy()
+    energy = _ledger(system, forcing, state, final, ledger)
+    result = ForcedResult(
+        system=system,
+        forcing=forcing,
+        e=e,
+        t_end=float(final[0]),
+        events=events,
+        sections=sections,
+        period_max=period_max[:n_periods],
+        energy=energy,
+        final_state=(float(final[1]), float(final[2]), float(final[3]), float(final[4])),
+        initial_state=tuple(state),
+        final_stuck=bool(final[5]),
+    )
+    if discard is not None:
+        object.__setattr__(result, "steady", steady_state(result, n_discard))
+    return result
+
+
+def _count(name: str, value: Any) -> int:
+    v = si_float(name, value)
+    if v != int(v) or v < 0:
+        raise ParameterError(name, f"must be a whole number of periods, got {v:g}")
+    if v > 10_000_000:
+        raise ParameterError(name, f"{v:g} periods is more than 10^7")
+    return int(v)
+
+
+def _energy(system: ImpactSystem, forcing: Forcing, t: float, s) -> float:
+    """½Mẋ² + ½K(x − x_b)² + ½mẏ² at time t."""
+    xb = forcing.X_b * math.cos(forcing.omega * t + forcing.phase)
+    return (
+        0.5 * system.M * s[1] ** 2 + 0.5 * system.K * (s[0] - xb) ** 2 + 0.5 * system.m * s[3] ** 2
+    )
+
+
+def _ledger(system, forcing, state0, final, ledger) -> dict[str, float]:
+    """The energy balance: E(end) − E(0) = work of the forcing − dissipation by C − impact loss."""
+    e0 = _energy(system, forcing, 0.0, state0)
+    e1 = _energy(system, forcing, float(final[0]), [final[1], final[2], final[3], final[4]])
+    work, d_c, d_imp = (float(v) for v in ledger)
+    residual = (e1 - e0) - (work - d_c - d_imp)
+    scale = max(abs(work), d_c + d_imp, e0, e1, 1e-300)
+    return {
+        "initial": e0,
+        "final": e1,
+        "forcing_work": work,
+        "dissipated_C": d_c,
+        "dissipated_impacts": d_imp,
+        "residual": residual,
+        "relative_residual": abs(residual) / scale,
+    }
+
+
+def state_at(result: ForcedResult, times: np.ndarray) -> np.ndarray:
+    """The state (x, ẋ, z = y − x, ẏ) at the given times [s], rebuilt from the event log: the
+    closed-form flight (Eq. F1) from the last event before each time, with the mass M + m in a
+    sticking phase.  At an event's time the state after it is returned."""
+    from ..generated import forced_flight as ff
+
+    times = np.asarray(times, dtype=float)
+    ev = result.events
+    sysm, f = result.system, result.forcing
+    h = sysm.gap / 2.0
+    i = np.searchsorted(ev[:, _rigid.E_T], times, side="right") - 1
+    out = np.empty((len(times), 4))
+    kinds = ev[:, _rigid.E_KIND]
+    # stuck after event j: the next event is a release, or the run ended stuck after the last
+    nxt = np.append(kinds[1:] == _rigid.KIND_RELEASE, result.final_stuck)
+    for j in np.unique(i):
+        sel = i == j
+        if j < 0:
+            t0, x0, v0 = 0.0, result.initial_state[0], result.initial_state[1]
+            z0, u0, stuck = result.initial_state[2] - x0, result.initial_state[3], False
+        else:
+            row = ev[j]
+            t0, x0, v0 = row[_rigid.E_T], row[_rigid.E_X], row[_rigid.E_XD1]
+            z0, u0, stuck = row[_rigid.E_SIDE] * h, row[_rigid.E_YD1], bool(nxt[j])
+        mass = sysm.M + sysm.m if stuck else sysm.M
+        tau = times[sel] - t0
+        args = (mass, sysm.K, sysm.C, f.F0, f.X_b, f.omega, f.omega * t0 + f.phase, x0, v0)
+        x = ff.forced_displacement(tau, *args)
+        v = ff.forced_velocity(tau, *args)
+        out[sel, 0], out[sel, 1] = x, v
+        out[sel, 2] = z0 if stuck else z0 + u0 * tau - (x - x0)
+        out[sel, 3] = v if stuck else u0
+    return out
+
+
+#: Candidate section phases: sixteen per period; the one farthest from every impact is used.
+_SECTION_PHASES = np.arange(16) / 16.0
+
+
+def steady_state(result: ForcedResult, discard: int) -> Steady:
+    """The steady state over the periods after ``discard`` (see :class:`Steady`).
+
+    The Poincaré section is taken once per forcing period at the fraction of the period farthest
+    from every impact in the kept window (a section at an impact would see the state before it in
+    one period and after it in the next)."""
+    n = len(result.period_max)
+    amplitude = float(np.max(result.period_max[discard:n]))
+    T = result.forcing.period
+    t0, t1 = discard * T, n * T
+    times = result.impacts
+    kept = times[(times >= t0) & (times < t1)]
+    fractions = (kept / T) % 1.0
+    if len(fractions):
+        gaps = np.abs(_SECTION_PHASES[:, None] - fractions[None, :])
+        gaps = np.minimum(gaps, 1.0 - gaps).min(axis=1)
+        offset = float(_SECTION_PHASES[int(np.argmax(gaps))])
+    else:
+        offset = 0.0
+    sec = state_at(result, (np.arange(discard, n) + offset) * T)
+    w = result.forcing.omega
+    scale = np.array([amplitude, amplitude * w, result.system.gap, amplitude * w])
+    rel = sec / np.where(scale > 0, scale, 1.0)
+    multiple, spread = 0, math.inf
+    for k in range(1, MAX_MULTIPLE + 1):
+        if len(rel) <= 2 * k:
+            break
+        d = float(np.max(np.abs(rel[k:] - rel[:-k])))
+        if k == 1:
+            spread = d
+        if d <= SECTION_RTOL:
+            multiple, spread = k, d
+            break
+    return Steady(
+        amplitude=amplitude,
+        impacts_per_period=len(kept) / (n - discard),
+        periodic=multiple > 0,
+        period_multiple=multiple,
+        section_spread=spread,
+    )

@@ -1,0 +1,117 @@
+"""The forced simulation with rigid impacts (Eq. F1, F2) and the closed-form symmetric orbits
+(Eq. F3), each against something independent of it.
+
+- A stable closed-form orbit is reached by a long simulation started off it (amplitude to 1e-8
+  relative: the simulation's own error is rounding, ~1e-12, and the perturbation decays by the
+  largest multiplier to the power 500); an unstable one is left by a simulation started on it.
+- Without reachable walls the steady amplitude is the linear frequency response.
+- The energy ledger closes: E(end) − E(0) = work of the forcing − dissipation (quadrature and
+  impacts), to 1e-11 of the energies exchanged (8-point Gauss–Legendre on 1/16 periods is exact
+  to rounding; ~1e3 events each add a few ULPs).
+- A chatter sequence jumps to the limit the explicit impact sequence converges to.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from symimpact.generated import forced_flight as ff
+
+from symimpact.errors import ParameterError
+from symimpact.forced import Forcing, periodic_orbits, simulate_forced
+from symimpact.system import ImpactSystem
+
+SYSTEM = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+E = 0.6
+
+
+def _start_on(orbit, omega, scale=1.0):
+    forcing = Forcing(F0=2, omega=omega, phase=orbit.impact_phase)
+    h = SYSTEM.gap / 2
+    return forcing, dict(x0=orbit.X * scale, xdot0=orbit.V, y0=orbit.X * scale + h, ydot0=orbit.U)
+
+
+def test_a_stable_closed_form_orbit_is_reached():
+    (orbit,) = [o for o in periodic_orbits(SYSTEM, Forcing(F0=2, omega=38), E) if o.stable]
+    assert orbit.admissible and orbit.multipliers[0] < 1
+    forcing, start = _start_on(orbit, 38, scale=1 + 1e-4)
+    res = simulate_forced(SYSTEM, forcing, e=E, periods=600, discard=500, **start)
+    assert res.steady.amplitude == pytest.approx(orbit.amplitude, rel=1e-8)
+    assert res.steady.impacts_per_period == 2
+    assert res.steady.periodic and res.steady.period_multiple == 1
+    # the impacts of the last period: the closed form's speed and alternating walls
+    last = res.events[-2:]
+    assert list(last[:, 4]) in ([1.0, -1.0], [-1.0, 1.0])
+    np.testing.assert_allclose(last[:, 5], orbit.impact_speed, rtol=1e-8)
+
+
+@pytest.mark.parametrize("omega", [25.0, 34.0])
+def test_an_unstable_closed_form_orbit_is_left(omega):
+    orbit = next(o for o in periodic_orbits(SYSTEM, Forcing(F0=2, omega=omega), E) if o.admissible)
+    assert not orbit.stable and orbit.multipliers[0] > 1
+    forcing, start = _start_on(orbit, omega)
+    res = simulate_forced(SYSTEM, forcing, e=E, periods=600, discard=500, **start)
+    assert abs(res.steady.amplitude - orbit.amplitude) > 1e-6 * orbit.amplitude
+
+
+@pytest.mark.parametrize("omega", [20.0, 31.0, 45.0])
+def test_without_reachable_walls_the_response_is_linear(omega):
+    system = ImpactSystem(M=1, K=1000, C=5.0, m=0.05, gap=2.0, contact="linear", k1=1e6)
+    forcing = Forcing(F0=2, X_b="1 mm", omega=omega)
+    res = simulate_forced(system, forcing, e=E, periods=300, discard=200)
+    expected = float(ff.linear_amplitude(1, 1000, 5.0, 2, 1e-3, omega))
+    assert len(res.impacts) == 0
+    assert res.steady.amplitude == pytest.approx(expected, rel=1e-9)
+    assert res.steady.periodic and res.steady.period_multiple == 1
+
+
+@pytest.mark.parametrize("e", [0.0, 0.3, 0.9])
+def test_the_energy_ledger_closes_with_forcing_chatter_and_sticking(e):
+    forcing = Forcing(F0=2, X_b=0.003, omega=30)
+    res = simulate_forced(SYSTEM, forcing, e=e, periods=40)
+    assert len(res.impacts) > 10
+    assert res.energy["relative_residual"] < 1e-11, res.energy
+
+
+def test_chatter_jumps_to_the_limit_of_the_impact_sequence():
+    forcing = Forcing(F0=2, X_b=0.003, omega=30)
+    e = 0.3
+    res = simulate_forced(SYSTEM, forcing, e=e, periods=3)
+    i = int(np.nonzero(res.events[:, 7] == 1)[0][0])  # the first accumulation
+    t_jump, t_from = res.events[i, 0], res.events[i - 1, 0]
+    explicit = simulate_forced(SYSTEM, forcing, e=e, periods=3, chatter=0.0).events[:, 0]
+    seq = explicit[(explicit > t_from - 1e-3) & (explicit < t_jump + 1e-3)]
+    flights = np.diff(seq)
+    # the flights shrink by e while they are resolved; extrapolate the geometric tail from the
+    # last resolved one (ratio within 1 % of e)
+    ok = np.nonzero(np.abs(flights[1:] / flights[:-1] - e) < 0.01 * e)[0]
+    k = ok[-1] + 1
+    limit = seq[k + 1] + flights[k] * e / (1 - e)
+    # the jump assumes a constant relative acceleration over Δ = t_jump − t_from: its error is
+    # second order in Δ; 1e-3·Δ is far above that and far below Δ
+    assert abs(limit - t_jump) < 1e-3 * (t_jump - t_from)
+
+
+@pytest.mark.parametrize(
+    "kw, parameter",
+    [
+        (dict(e=1.5), "e"),
+        (dict(e=-0.1), "e"),
+        (dict(e=None), "e"),
+        (dict(e=0.5, periods=0), "periods"),
+        (dict(e=0.5, periods=10, discard=10), "discard"),
+        (dict(e=0.5, y0=0.5), "y0"),
+    ],
+)
+def test_bad_input_names_the_parameter(kw, parameter):
+    with pytest.raises(ParameterError) as info:
+        simulate_forced(SYSTEM, Forcing(F0=2, omega=30), **kw)
+    assert info.value.parameter == parameter
+
+
+def test_forcing_refuses_hz_as_omega_and_two_frequencies():
+    with pytest.raises(ParameterError, match="omega"):
+        Forcing(F0=1, omega="5 Hz")
+    with pytest.raises(ParameterError, match="omega"):
+        Forcing(F0=1, omega=3, freq=1)
+    assert Forcing(F0=1, freq="5 Hz").omega == pytest.approx(2 * np.pi * 5)
