@@ -186,4 +186,61 @@ show_value(sp.Eq(sp.Symbol("x_over"), sp.simplify(over)))""",
             """show_value(sp.Eq(sp.Symbol("x_undamped"), sp.simplify(x_t.subs(C, 0))))""",
         ),
     ),
+    "forced_flight": (
+        Exercise(
+            "Base motion: the transmissibility",
+            "With F0 = 0 the amplitude over X_b is the transmissibility √(K² + (CΩ)²)/√D; it "
+            "passes through 1 at Ω = √2·ω_n whatever the damping.",
+            """T2 = sp.simplify((amplitude**2).subs({P: P_value, Q: Q_value}).subs(F0, 0) / Xb**2)
+show_value(sp.Eq(sp.Symbol("T_b") ** 2, T2))
+print("at Omega = sqrt(2 K/M):", sp.simplify(T2.subs(W, sp.sqrt(2 * K / M))))""",
+        ),
+        Exercise(
+            "Beats below resonance, growth at it",
+            "Undamped and from rest, the response beats at a detuned Ω and grows like t at Ω = ω_n.",
+            """vals = {M: 1, K: 900, C: 0, F0: 1, Xb: 0, phi: 0, x0: 0, xd0: 0}
+for Wv in (27, 29.5, 30):
+    expr = resonant if Wv == 30 else general
+    at_W = expr.subs(vals).subs(W, Wv)
+    print(f"Omega = {Wv}:", [sp.N(at_W.subs(t, tt), 4) for tt in (1, 2, 4, 8)])""",
+        ),
+    ),
+    "rigid_impact": (
+        Exercise(
+            "How much a light damper takes",
+            "With the primary at rest, the share of the impact mass's kinetic energy lost is "
+            "(1 − e²)·M/(m + M): nearly all of (1 − e²) for a light damper.",
+            """share = sp.simplify(loss_mu.subs(xm, 0) / (m * ym**2 / 2))
+show_value(sp.Eq(sp.Symbol("share"), share))
+for r in (sp.Rational(1, 100), sp.Rational(1, 10), 1):
+    print(f"m/M = {r}, e = 0.6:", sp.N(share.subs({m: r * M, e: sp.Rational(3, 5)}), 6))""",
+        ),
+        Exercise(
+            "The c1 for a wanted e",
+            "The linear law's contact damping for e = 0.9, 0.6, 0.3 (m = 0.25 kg, M = 1 kg, "
+            "k1 = 10⁵ N/m).",
+            """for ev in (0.9, 0.6, 0.3):
+    print(f"e = {ev}: c1 =", sp.N(c1_value.subs({m: 0.25, M: 1, k1: 1e5, e: ev}), 6), "N s/m")""",
+        ),
+    ),
+    "periodic_orbit": (
+        Exercise(
+            "Where the orbit exists",
+            "Two phases solve a·cos φ + b·sin φ = c while abs(c) < √(a² + b²); the issue's system "
+            "(M 1 kg, K 1000 N/m, C 0.5 N s/m, m 0.05 kg, d 20 mm, F0 2 N, e 0.6).",
+            """import math
+vals = {M: 1, K: 1000, C: sp.Rational(1, 2), m: sp.Rational(1, 20), e: sp.Rational(3, 5),
+        d: sp.Rational(1, 50), F0: 2, Xb: 0}
+fabc = sp.lambdify(W, [v.subs(closed).subs(vals) for v in (a_coef, b_coef, c_coef)], "math")
+for Wv in (10, 20, 30, 38, 60):
+    a_, b_, c_ = fabc(Wv)
+    r_ = math.hypot(a_, b_)
+    print(f"Omega = {Wv}: c/r = {c_ / r_:.4f}:", "two phases" if abs(c_) < r_ else "no orbit")""",
+        ),
+        Exercise(
+            "Elastic impacts",
+            "At e = 1 no energy is lost in the impacts; the right side c keeps its form.",
+            """show_value(sp.Eq(sp.Symbol("c"), sp.factor(c_coef.subs(e, 1))))""",
+        ),
+    ),
 }

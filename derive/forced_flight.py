@@ -10,7 +10,7 @@ Moving the base terms to the right gives one harmonic right-hand side
 $P\cos(\Omega t + \varphi) + Q\sin(\Omega t + \varphi)$ with $P = F_0 + KX_b$ and
 $Q = -C\Omega X_b$, so both kinds of forcing share one solution.  It is the steady (particular)
 solution found by undetermined coefficients plus the free decay of Step 7 that corrects the
-initial state.  At the undamped resonance (C = 0, Ω = ω_n) the undetermined coefficients have no
+initial state.  At the undamped resonance (C = 0, $\Omega = \omega_n$) the undetermined coefficients have no
 solution; the particular solution grows like t there, and the kernel takes that branch instead of
 dividing by zero.  The impact mass still flies at constant speed (Step 7).
 """
@@ -75,7 +75,7 @@ def derive() -> Board:
         r"Coefficient $B$ of $\sin(\Omega t+\varphi)$ in the steady solution.",
     )
     board.check(
-        "undetermined coefficients: A and B over (K − MΩ²)² + (CΩ)², zero only at C = 0, Ω = ω_n",
+        "undetermined coefficients: A and B over (K − MΩ²)² + (CΩ)², zero only at C = 0, Ω = ωₙ",
         "F1",
         sp.simplify(A_value - coefficients[A]) == 0 and sp.simplify(B_value - coefficients[B]) == 0,
     )
@@ -136,7 +136,7 @@ def derive() -> Board:
         W,
     )
     board.check(
-        "the resonant response is the limit Ω → ω_n of the undamped general one",
+        "the resonant response is the limit Ω → ωₙ of the undamped general one",
         "F1",
         sp.simplify(sp.expand_trig(resonant_limit - resonant)) == 0,
     )

@@ -29,6 +29,14 @@ import sympy as sp
 from .board import Arg, Board
 
 
+def _rounding_scale(expr: sp.Expr) -> sp.Expr:
+    """The size of the terms that cancel in ``expr``: the absolute values of its numerator's
+    expanded terms summed, over the absolute denominator.  The kernels' rounding is judged
+    against it (near the orbit's existence boundary a, b, c are small differences)."""
+    num, den = sp.fraction(sp.together(expr))
+    return sum(sp.Abs(term) for term in sp.Add.make_args(sp.expand(num))) / sp.Abs(den)
+
+
 def derive() -> Board:
     board = Board("periodic_orbit", "The symmetric two-impact periodic motion", "F3")
     w = board.write
@@ -54,13 +62,16 @@ def derive() -> Board:
             [sp.diff(decay(1, 0), t), sp.diff(decay(0, 1), t)],
         ]
     ).subs(t, tau)
-    w(
-        "fundamental_matrix",
-        Phi,
-        r"Φ: the free decay (Step 7) over τ from a unit displacement (first column) and from a "
-        "unit velocity (second column).",
-        "F3",
-    )
+    for (i, j), name in zip(
+        ((0, 0), (0, 1), (1, 0), (1, 1)), ("11", "12", "21", "22"), strict=True
+    ):
+        w(
+            f"Phi_{name}",
+            Phi[i, j],
+            rf"$\Phi_{{{name}}}$: the free decay (Step 7) over τ; first column from a unit "
+            "displacement, second from a unit velocity (rows: x, ẋ).",
+            "F3",
+        )
     xp0 = A * cphi + B * sphi
     vp0 = W * (B * cphi - A * sphi)
     board.check(
@@ -77,7 +88,8 @@ def derive() -> Board:
     F = sp.Matrix([[f11, f12], [f21, f22]])
     before = -sp.Matrix([xp0, vp0]) + F * sp.Matrix([X - xp0, V - vp0])
     x_before, v_before = before
-    w("state_before_second_impact", before, r"$(x(\tau^-), \dot x(\tau^-))$.", "F3")
+    w("x_before_second_impact", x_before, r"$x(\tau^-)$.", "F3")
+    w("v_before_second_impact", v_before, r"$\dot x(\tau^-)$.", "F3")
 
     conditions = [
         sp.Eq(x_before, -X),
@@ -168,6 +180,7 @@ def derive() -> Board:
             name=name,
             args=args,
             expr=expr.subs(closed),
+            magnitude=_rounding_scale(expr).subs(closed),
             returns=what,
             unit=unit,
             equation="F3",
@@ -191,6 +204,7 @@ def derive() -> Board:
             name=name,
             args=(*args, aphi),
             expr=expr.subs(on_phase).subs(closed),
+            magnitude=_rounding_scale(expr).subs(on_phase).subs(closed),
             returns=what,
             unit=unit,
             equation="F3",

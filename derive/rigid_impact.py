@@ -6,7 +6,7 @@ after it: the momentum of the pair is conserved (the contact force is internal, 
 do no impulse in zero time), and the relative velocity is reversed and multiplied by Newton's
 coefficient of restitution e ∈ [0, 1].  The energy lost follows, through the reduced mass
 μ = mM/(m + M) of Step 6.  For the linear contact law of the paper (k1, c1) Step 6 gave
-e = exp(−c1·T/(2μ)) with T = π/ω_d; solving it for c1 tells a user which contact damping to put in
+$e = \exp(-c_1 T/(2\mu))$ with $T = \pi/\omega_d$; solving it for c1 tells a user which contact damping to put in
 the compliant model to get a wanted e.
 """
 
@@ -65,7 +65,7 @@ def derive() -> Board:
     )
     loss_mu = (1 - e**2) * mu * (ym - xm) ** 2 / 2
     board.check(
-        "energy lost = ½·μ·(1 − e²)·v_rel²: none at e = 1, the most at e = 0",
+        "energy lost = ½·μ·(1 − e²)·v² (v the approach speed): none at e = 1, the most at e = 0",
         "F2",
         sp.simplify(loss - loss_mu) == 0,
     )
