@@ -46,12 +46,12 @@ N_PARAMS = 11
 E_T, E_X, E_XD, E_YD, E_SIDE, E_VREL, E_LOST, E_KIND, E_XD1, E_YD1 = range(10)
 N_EVENT_COLS = 10
 KIND_IMPACT, KIND_ACCUMULATION, KIND_RELEASE = 0, 1, 2
-# section columns (state at t = k·T): x, xdot, z = y − x, ydot, sticking (1.0 or 0.0)
-N_SECTION_COLS = 5
 OK, TOO_MANY_EVENTS = 0, 1
 
 _xf = njit(cache=True)(_fl.forced_displacement_scalar)
 _vf = njit(cache=True)(_fl.forced_velocity_scalar)
+_steady_cos = njit(cache=True)(_fl.steady_cosine_scalar)
+_steady_sin = njit(cache=True)(_fl.steady_sine_scalar)
 
 #: 8-point Gauss–Legendre nodes and weights on [−1, 1] (NumPy computes them; none typed in).
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
@@ -92,8 +92,8 @@ def _accel_bound(p, mass, t0, x0, v0, span):
     D = (K - M * W * W) ** 2 + (C * W) ** 2
     th = _phase(p, t0)
     if D > 1e-24 * K * K:
-        A = ((K - M * W * W) * P - C * W * Q) / D
-        B = (C * W * P + (K - M * W * W) * Q) / D
+        A = _steady_cos(M, K, C, p[P_F0], p[P_XB], W)
+        B = _steady_sin(M, K, C, p[P_F0], p[P_XB], W)
         xp = A * math.cos(th) + B * math.sin(th)
         vp = W * (B * math.cos(th) - A * math.sin(th))
         dx, dv = x0 - xp, v0 - vp
@@ -236,10 +236,10 @@ def _release(p, t0, x0, v0, side, T):
 
 
 @njit(cache=True)
-def _segment(p, mass, t0, x0, v0, tau, ledger, sections, period_max, n_periods):
+def _segment(p, mass, t0, x0, v0, tau, ledger, period_max, n_periods):
     """Account for the segment [t0, t0 + τ] of the primary (moving mass ``mass``): the work of
-    the forcing and the dissipation of C (ledger[0], ledger[1]), the sections at t = k·T inside
-    it, and the largest abs(x) of every forcing period it crosses."""
+    the forcing and the dissipation of C (ledger[0], ledger[1]) and the largest abs(x) of every
+    forcing period it crosses."""
     K, C, W, F0, Xb = p[P_K], p[P_C], p[P_W], p[P_F0], p[P_XB]
     T_f = 2.0 * math.pi / W
     wd = math.sqrt(K / mass - C * C / (4 * mass * mass))
@@ -292,35 +292,25 @@ def _segment(p, mass, t0, x0, v0, tau, ledger, sections, period_max, n_periods):
             if k < n_periods:
                 period_max[k] = max(period_max[k], abs(xm))
         v_prev = v_b
-    # sections t = k·T strictly inside (t0, t0 + τ]
-    k0 = int(math.floor(t0 / T_f)) + 1  # noqa: RUF046 (int() spelled out for numba)
-    k1 = int(math.floor((t0 + tau) / T_f))  # noqa: RUF046 (int() spelled out for numba)
-    for k in range(k0, k1 + 1):
-        if k < sections.shape[0]:
-            x, v = _state(p, mass, t0, x0, v0, k * T_f - t0)
-            sections[k, 0], sections[k, 1] = x, v
-    return k0, k1
 
 
 @njit(cache=True)
 def run(p, state0, t_end, max_events):
     """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end.
 
-    Returns (status, events, n_events, sections, period_max, ledger, final state): the event log
-    (columns E_*), the state at every t = k·T (columns: x, ẋ, z, ẏ, sticking), the largest abs(x)
-    in every forcing period, ledger = (work of the forcing, dissipation by C, loss in impacts).
+    Returns (status, events, n_events, period_max, ledger, final state): the event log
+    (columns E_*), the largest abs(x) in every forcing period, ledger = (work of the forcing,
+    dissipation by C, loss in impacts), final = (t, x, ẋ, y, ẏ, 1.0 if it ended stuck).
     """
     M, m, h, e = p[P_M], p[P_m], p[P_h], p[P_e]
     T_f = 2.0 * math.pi / p[P_W]
     n_periods = int(math.floor(t_end / T_f))  # noqa: RUF046 (int() spelled out for numba)
-    sections = np.full((n_periods + 1, N_SECTION_COLS), np.nan)
     period_max = np.zeros(n_periods + 1)
     ledger = np.zeros(3)
     events = np.zeros((64, N_EVENT_COLS))
     n_ev = 0
     t, x, v, y, u = 0.0, state0[0], state0[1], state0[2], state0[3]
     z = y - x
-    sections[0, 0], sections[0, 1], sections[0, 2], sections[0, 3], sections[0, 4] = x, v, z, u, 0.0
     side0 = 0
     if abs(z) >= h:
         side0 = 1 if z > 0 else -1
@@ -333,11 +323,7 @@ def run(p, state0, t_end, max_events):
             break
         # --- free flight to the next impact ---
         tau, side = _next_impact(p, t, x, v, z, u, side0, t_end - t)
-        k0, k1 = _segment(p, M, t, x, v, tau, ledger, sections, period_max, n_periods)
-        for k in range(k0, min(k1, n_periods) + 1):
-            sections[k, 2] = z + u * (k * T_f - t) - (sections[k, 0] - x)
-            sections[k, 3] = u
-            sections[k, 4] = 0.0
+        _segment(p, M, t, x, v, tau, ledger, period_max, n_periods)
         xn, vn = _state(p, M, t, x, v, tau)
         t_new = t + tau
         if side == 0:
@@ -372,11 +358,7 @@ def run(p, state0, t_end, max_events):
             delta = 2.0 * w / (a * (1.0 - e))
             if delta <= p[P_CHAT] * T_f and t + delta < t_end:
                 # jump to the accumulation point; the pair moves on together
-                k0, k1 = _segment(p, M, t, x, v, delta, ledger, sections, period_max, n_periods)
-                for k in range(k0, min(k1, n_periods) + 1):
-                    sections[k, 2] = s * h
-                    sections[k, 3] = sections[k, 1]
-                    sections[k, 4] = 1.0
+                _segment(p, M, t, x, v, delta, ledger, period_max, n_periods)
                 xj, vj = _state(p, M, t, x, v, delta)
                 t = t + delta
                 vc = (M * vj + m * u) / (M + m)
@@ -402,11 +384,7 @@ def run(p, state0, t_end, max_events):
             if t >= t_end:
                 break
             tau = _release(p, t, x, v, s, t_end - t)
-            k0, k1 = _segment(p, M + m, t, x, v, tau, ledger, sections, period_max, n_periods)
-            for k in range(k0, min(k1, n_periods) + 1):
-                sections[k, 2] = s * h
-                sections[k, 3] = sections[k, 1]
-                sections[k, 4] = 1.0
+            _segment(p, M + m, t, x, v, tau, ledger, period_max, n_periods)
             x, v = _state(p, M + m, t, x, v, tau)
             t = t + tau
             u = v
@@ -426,7 +404,7 @@ def run(p, state0, t_end, max_events):
                 )
                 n_ev += 1
     final = np.array([t, x, v, x + z, u, stuck])
-    return status, events, n_ev, sections, period_max, ledger, final
+    return status, events, n_ev, period_max, ledger, final
 
 
 @njit(cache=True)

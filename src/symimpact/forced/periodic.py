@@ -113,22 +113,20 @@ def _flight(system, forcing, phi, X, V, tau):
 
 
 def _refined_extremes(f, df, t):
-    """Values of f at the samples t and at the zeros of df between them (bisection on df)."""
-    values = [f(t)]
+    """Values of f at the samples t and at the zeros of df between them (scipy's brentq)."""
+    from scipy.optimize import brentq
+
     d = df(t)
     idx = np.nonzero(np.sign(d[:-1]) * np.sign(d[1:]) < 0)[0]
-    for i in idx:
-        lo, hi = t[i], t[i + 1]
-        dlo = d[i]
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            dm = df(np.array([mid]))[0]
-            if (dm > 0) == (dlo > 0):
-                lo, dlo = mid, dm
-            else:
-                hi = mid
-        values.append(f(np.array([0.5 * (lo + hi)])))
-    return np.concatenate(values)
+
+    def scalar_df(s):
+        return float(df(np.array([s]))[0])
+
+    roots = [
+        brentq(scalar_df, t[i], t[i + 1], xtol=1e-15 * t[-1], rtol=4 * np.finfo(float).eps)
+        for i in idx
+    ]
+    return np.concatenate([f(t), f(np.array(roots))])
 
 
 def _describe(system, forcing, e, phi, X, V, U) -> PeriodicOrbit:

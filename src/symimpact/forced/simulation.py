@@ -10,7 +10,7 @@ section at t = k·T (the state once per forcing period).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -61,7 +61,6 @@ class ForcedResult:
     e: float
     t_end: float
     events: np.ndarray  # (n, 10): columns named by EVENT_COLUMNS
-    sections: np.ndarray  # (periods + 1, 5): x, ẋ, z = y − x, ẏ, sticking at t = k·T
     period_max: np.ndarray  # largest abs(x) in each whole forcing period
     energy: dict[str, float]
     final_state: tuple[float, float, float, float]
@@ -156,7 +155,7 @@ def simulate_forced(
     p[_rigid.P_F0], p[_rigid.P_XB] = forcing.F0, forcing.X_b
     p[_rigid.P_W], p[_rigid.P_PHI], p[_rigid.P_CHAT] = forcing.omega, forcing.phase, chatter
     t_end = n_periods * forcing.period
-    status, events, n_ev, sections, period_max, ledger, final = _rigid.run(
+    status, events, n_ev, period_max, ledger, final = _rigid.run(
         p, np.array(state), t_end, MAX_EVENTS
     )
     if status == _rigid.TOO_MANY_EVENTS:
@@ -172,7 +171,6 @@ def simulate_forced(
         e=e,
         t_end=float(final[0]),
         events=events,
-        sections=sections,
         period_max=period_max[:n_periods],
         energy=energy,
         final_state=(float(final[1]), float(final[2]), float(final[3]), float(final[4])),
@@ -180,7 +178,7 @@ def simulate_forced(
         final_stuck=bool(final[5]),
     )
     if discard is not None:
-        object.__setattr__(result, "steady", steady_state(result, n_discard))
+        result = replace(result, steady=steady_state(result, n_discard))
     return result
 
 
