@@ -58,6 +58,48 @@ def plot_simulation(result: Any, path: str | os.PathLike) -> None:
     plt.close(fig)
 
 
+def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.PathLike) -> None:
+    """Forced response with rigid impacts (Eq. F1, F2): x(t) with the impacts marked, the kept
+    (steady) window after ``discard`` periods shaded with ±amplitude dotted, and the relative displacement z = y − x between the walls ±d/2."""
+    from .display import label, shown
+
+    plt = _pyplot()
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    ax1.plot(t, shown("x", state[:, 0]), lw=0.8, label="main mass x")
+    imp = result.impacts
+    if len(imp):
+        from .forced.simulation import state_at
+
+        ax1.plot(imp, shown("x", state_at(result, imp)[:, 0]), "k.", ms=2, label="impact")
+    st = result.steady
+    if st is not None:
+        kept_from = discard * result.forcing.period
+        ax1.axvspan(kept_from, t[-1], color="C3", alpha=0.08, lw=0, label="steady window")
+        for sign in (-1, 1):
+            ax1.axhline(sign * shown("x", st.amplitude), color="C3", lw=0.8, ls=":")
+    ax1.set_ylabel(label("x"))
+    ax1.legend(fontsize=8, ncol=3)
+    ax2.plot(t, shown("z", state[:, 2]), lw=0.8, color="C2", label="z = y − x")
+    for s in (-1, 1):
+        ax2.axhline(s * shown("z", 0.5 * result.system.gap), color="grey", ls="--", lw=0.8)
+    ax2.set_xlabel(label("t"))
+    ax2.set_ylabel(label("z"))
+    ax2.legend(fontsize=8)
+    f = result.forcing
+    fig.suptitle(
+        f"Ω = {f.omega:.4g} rad/s, e = {result.e:g}: {len(imp)} impacts"
+        + (
+            ""
+            if st is None
+            else f", steady amplitude {shown('x', st.amplitude):.4g} "
+            f"{label('x').split('[')[1].rstrip(']')}"
+        )
+    )
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
+
+
 def plot_sweep(rows: list[dict[str, Any]], over: str, path: str | os.PathLike) -> None:
     """DI, N_eff and effectiveness against the swept parameter (as Fig. 7)."""
     from .display import label, shown

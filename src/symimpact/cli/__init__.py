@@ -16,11 +16,11 @@ import sys
 from collections.abc import Sequence
 
 from ..errors import SymimpactError
-from . import contact_duration, export, fit, reproduce, ritz, simulate, sweep
+from . import contact_duration, export, fit, periodic, reproduce, ritz, simulate, sweep
 from .common import Parser
 
 #: The subcommands, in the order of ``symimpact --help``.
-SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, export, sweep]
+SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, periodic, export, sweep]
 
 #: What runs each subcommand (by name, aliases included).
 COMMANDS = {name: run for module in SUBCOMMANDS for name, run in module.COMMANDS.items()}
@@ -40,7 +40,8 @@ def build_parser() -> argparse.ArgumentParser:
     parser = Parser(
         prog="symimpact",
         description="Nonlinear resilient impact dampers: Ritz constants, contact fits, contact "
-        "durations, simulations with impacts and gap sweeps.  Quantities accept units.",
+        "durations, simulations with impacts (free, or forced with rigid impacts), periodic "
+        "orbits and gap sweeps.  Quantities accept units.",
     )
     parser.add_argument("--version", action=_Version, nargs=0, help="show the version and exit")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=Parser)

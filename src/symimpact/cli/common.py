@@ -34,8 +34,15 @@ class Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
-def add_system(p: argparse.ArgumentParser, contact: bool = True) -> None:
-    """The system options (SYSTEM_OPTIONS; with ``contact``, --contact too)."""
+#: The compliant contact laws every command with --contact takes; commands add their own.
+COMPLIANT_LAWS = ("cubic", "hertz", "linear", "perturbation")
+
+
+def add_system(
+    p: argparse.ArgumentParser, contact: bool = True, extra_laws: tuple[str, ...] = ()
+) -> None:
+    """The system options (SYSTEM_OPTIONS; with ``contact``, --contact too, taking the compliant
+    laws and ``extra_laws``)."""
     g = p.add_argument_group("system (SI numbers or quantities with units)")
     for flag, helptext, default in SYSTEM_OPTIONS:
         g.add_argument(
@@ -48,10 +55,15 @@ def add_system(p: argparse.ArgumentParser, contact: bool = True) -> None:
     if contact:
         g.add_argument(
             "--contact",
-            choices=("cubic", "hertz", "linear", "perturbation"),
+            choices=COMPLIANT_LAWS + extra_laws,
             default="cubic",
-            help="contact law integrated numerically, or the perturbation solution (Eq. 31–33); "
-            "default cubic",
+            help="contact law integrated numerically, or the perturbation solution (Eq. 31–33)"
+            + (
+                "; rigid: instantaneous impacts with Newton's e (Eq. F2)"
+                if "rigid" in extra_laws
+                else ""
+            )
+            + "; default cubic",
         )
 
 
@@ -65,21 +77,95 @@ def system_from(ns: argparse.Namespace):
     }
     if kw["C"] is None and kw["zeta"] is None:
         kw["C"] = dict((f, d) for f, _, d in SYSTEM_OPTIONS)["--C"]
-    return ImpactSystem(contact="cubic" if law == "perturbation" else law, a=ns.a, b=ns.b, **kw)
+    # the rigid law takes M, K, C, m and d from the system; its compliant law is not used
+    law = "cubic" if law in ("perturbation", "rigid") else law
+    return ImpactSystem(contact=law, a=ns.a, b=ns.b, **kw)
 
 
-def add_initial(p: argparse.ArgumentParser) -> None:
-    """The initial state and duration options (x0, xdot0, y0, ydot0, t_end)."""
+def add_initial(p: argparse.ArgumentParser, forced: bool = False) -> None:
+    """The initial state and duration options (x0, xdot0, y0, ydot0, t_end).  With ``forced``
+    the defaults of --xdot0 and --t-end are left to the command (None): a forced run starts at
+    rest and lasts --periods forcing periods."""
     g = p.add_argument_group("initial state and duration")
     g.add_argument("--x0", default="0", metavar="Q", help="main-mass displacement [m]; default 0")
     g.add_argument(
-        "--xdot0", default="0.5 m/s", metavar="Q", help="main-mass velocity [m/s]; default 0.5 m/s"
+        "--xdot0",
+        default=None if forced else "0.5 m/s",
+        metavar="Q",
+        help="main-mass velocity [m/s]; default 0.5 m/s"
+        + (" (free vibration) or 0 (forced)" if forced else ""),
     )
     g.add_argument("--y0", default="0", metavar="Q", help="impact-mass displacement [m]; default 0")
     g.add_argument(
         "--ydot0", default="0", metavar="Q", help="impact-mass velocity [m/s]; default 0"
     )
-    g.add_argument("--t-end", default="20 s", metavar="Q", help="end time [s]; default 20 s")
+    g.add_argument(
+        "--t-end",
+        default=None if forced else "20 s",
+        metavar="Q",
+        help="end time [s]; default 20 s"
+        + (" (forced runs use --periods instead)" if forced else ""),
+    )
+
+
+class _Once(argparse.Action):
+    """An option that may be given once: a second value is refused, not silently kept."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        if getattr(namespace, self.dest) is not None:
+            parser.error(f"argument {option_string}: given twice")
+        setattr(namespace, self.dest, values)
+
+
+def add_forcing(p: argparse.ArgumentParser, required: bool = False) -> None:
+    """The harmonic forcing options (Eq. F1): --force F0 and/or --base X_b, at --omega Ω or
+    --freq f, with --phase φ; each may be given once."""
+    g = p.add_argument_group(
+        "harmonic forcing F0·cos(Ωt + φ) and/or base motion X_b·cos(Ωt + φ) (Eq. F1)"
+    )
+    once = {"action": _Once, "default": None, "metavar": "Q"}
+    g.add_argument("--force", dest="F0", help="force amplitude F0 on the main mass [N]", **once)
+    g.add_argument(
+        "--base", dest="X_b", help="base-motion amplitude X_b under the primary [m]", **once
+    )
+    g.add_argument("--omega", help="forcing frequency Ω [rad/s] (or --freq)", **once)
+    g.add_argument("--freq", help="forcing frequency f [Hz], Ω = 2πf (or --omega)", **once)
+    g.add_argument("--phase", help="forcing phase φ at t = 0 [rad]; default 0", **once)
+    g.add_argument(
+        "--e",
+        help="Newton's coefficient of restitution of the rigid law, 0 ≤ e ≤ 1",
+        **once,
+    )
+    p.set_defaults(forcing_required=required)
+
+
+def has_forcing(ns: argparse.Namespace) -> bool:
+    """Whether any forcing option was given."""
+    return any(getattr(ns, k) is not None for k in ("F0", "X_b", "omega", "freq", "phase"))
+
+
+def forcing_from(ns: argparse.Namespace):
+    """The :class:`~symimpact.forced.Forcing` the forcing options describe."""
+    from ..errors import ParameterError
+    from ..forced import Forcing
+
+    if ns.F0 is None and ns.X_b is None:
+        raise ParameterError("force", "give the forcing amplitude: --force F0 or --base X_b")
+    if ns.omega is None and ns.freq is None:
+        raise ParameterError("omega", "give the forcing frequency: --omega Ω or --freq f")
+    if ns.omega is not None and ns.freq is not None:
+        raise ParameterError("omega", "give the forcing frequency once: --omega or --freq")
+    try:
+        return Forcing(
+            F0=0.0 if ns.F0 is None else ns.F0,
+            X_b=0.0 if ns.X_b is None else ns.X_b,
+            omega=ns.omega,
+            freq=ns.freq,
+            phase=0.0 if ns.phase is None else ns.phase,
+        )
+    except ParameterError as exc:  # name the option the user typed
+        flag = {"F0": "force", "X_b": "base"}.get(exc.parameter, exc.parameter)
+        raise ParameterError(flag, exc.reason) from None
 
 
 def add_show(p: Any) -> None:

@@ -39,7 +39,9 @@ class Steady:
     ``amplitude`` [m]: max abs(x); ``impacts_per_period``: impacts (accumulated chatter counts as
     one) per forcing period; ``periodic``: the Poincaré section repeats; ``period_multiple``: the
     smallest k ≤ 8 with which it repeats (0 when it does not); ``section_spread`` [1]: the largest
-    distance between points k periods apart, relative to the state's scale.
+    distance between points k periods apart, relative to the state's scale; ``settling``: the
+    change from one period to the next shrank more than twofold across the kept window (a
+    transient still decaying: the verdict may change with a larger ``discard``).
     """
 
     amplitude: float
@@ -47,6 +49,7 @@ class Steady:
     periodic: bool
     period_multiple: int
     section_spread: float
+    settling: bool = False
 
     def as_dict(self) -> dict[str, Any]:
         return dict(self.__dict__)
@@ -178,7 +181,14 @@ def simulate_forced(
         final_stuck=bool(final[5]),
     )
     if discard is not None:
-        result = replace(result, steady=steady_state(result, n_discard))
+        steady = steady_state(result, n_discard)
+        notes = []
+        if steady.settling:
+            notes.append(
+                "still settling: the state once per period changes less and less across the kept "
+                f"window; discard more than {n_discard} periods for a settled verdict"
+            )
+        result = replace(result, steady=steady, notes=notes)
     return result
 
 
@@ -295,4 +305,17 @@ def steady_state(result: ForcedResult, discard: int) -> Steady:
         periodic=multiple > 0,
         period_multiple=multiple,
         section_spread=spread,
+        settling=multiple != 1 and _settling(rel),
     )
+
+
+def _settling(rel: np.ndarray) -> bool:
+    """Whether the period-to-period change of the section shrinks more than twofold from the
+    first to the last quarter of the kept window (medians, so that a chaotic motion's scatter
+    does not count as a trend)."""
+    if len(rel) < 9:
+        return False
+    step = np.max(np.abs(np.diff(rel, axis=0)), axis=1)
+    q = len(step) // 4
+    first, last = float(np.median(step[:q])), float(np.median(step[-q:]))
+    return last < 0.5 * first

@@ -1,0 +1,123 @@
+"""The forced-response command line: ``simulate`` with forcing and rigid impacts, and ``periodic``
+— the JSON contracts, --freq as Ω/2π, and bad input refused in one line naming the parameter."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from symimpact.cli import main
+from symimpact.forced import Forcing, periodic_orbits
+from symimpact.system import ImpactSystem
+
+SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm"]
+
+
+def _json(capsys, argv):
+    assert main(argv) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_periodic_json_is_the_closed_form_contract(capsys):
+    argv = ["periodic", "--method", "closed-form", "--contact", "rigid", "--e", "0.6"]
+    out = _json(capsys, [*argv, "--omega", "34 rad/s", *SYSTEM, "--force", "2 N", "--json"])
+    system = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+    api = periodic_orbits(system, Forcing(F0=2.0, omega=34.0), 0.6)
+    assert len(out) == len(api) == 2
+    for row, orbit in zip(out, api, strict=True):
+        for key in ("impact_phase", "amplitude", "impact_speed"):
+            assert isinstance(row[key], float) and row[key] == getattr(orbit, key)
+        assert isinstance(row["admissible"], bool) and isinstance(row["stable"], bool)
+        assert row["multipliers"] == sorted(row["multipliers"], reverse=True)
+    # Ω 34 rad/s: one admissible unstable orbit (the simulation leaves it: test_forced_rigid)
+    assert [r["admissible"] for r in out] == [True, False] and not any(r["stable"] for r in out)
+
+
+def test_freq_in_hz_is_omega_over_two_pi(capsys):
+    base = ["periodic", "--contact", "rigid", "--e", "0.6", *SYSTEM, "--force", "2", "--json"]
+    by_omega = _json(capsys, [*base, "--omega", "38"])
+    by_freq = _json(capsys, [*base, "--freq", f"{38 / (2 * math.pi)!r} Hz"])
+    for a, b in zip(by_omega, by_freq, strict=True):
+        # Ω = 2π·(38/2π) rounds to 38 within one ULP; the orbit is well conditioned there
+        assert b["amplitude"] == pytest.approx(a["amplitude"], rel=1e-13)
+
+
+def test_simulate_forced_json_adds_the_steady_state(capsys):
+    argv = ["simulate", *SYSTEM, "--gap", "2 m", "--force", "2 N", "--omega", "31 rad/s"]
+    argv += ["--contact", "rigid", "--e", "0.6", "--periods", "1200", "--discard", "1100"]
+    out = _json(capsys, [*argv, "--json"])
+    steady = out["steady"]
+    assert set(steady) >= {"amplitude", "impacts_per_period", "periodic", "period_multiple"}
+    # no wall within reach: the linear frequency response |F0|/√((K − MΩ²)² + (CΩ)²), typed
+    # here from the textbook rather than from the generated kernels; after 1100 periods the
+    # free transient has decayed by exp(−ζωn·t) ≈ 1e-24, so rounding is all that is left
+    linear = 2.0 / math.hypot(1000.0 - 31.0**2, 0.5 * 31.0)
+    assert steady["amplitude"] == pytest.approx(linear, rel=1e-9)
+    assert steady["impacts_per_period"] == 0 and steady["periodic"]
+    assert steady["period_multiple"] == 1 and out["n_impacts"] == 0
+
+
+def test_simulate_forced_writes_csv_and_plot(tmp_path, capsys):
+    csv, png = tmp_path / "f.csv", tmp_path / "f.png"
+    argv = ["simulate", *SYSTEM, "--force", "2 N", "--omega", "34 rad/s", "--contact", "rigid"]
+    argv += ["--e", "0.6", "--periods", "40", "--csv", str(csv), "--plot", str(png)]
+    assert main(argv) == 0
+    assert "impacts per period" in capsys.readouterr().out
+    header = csv.read_text().splitlines()[0]
+    assert header == "t [s],x [m],xdot [m/s],z [m],ydot [m/s]"
+    assert len(csv.read_text().splitlines()) == 40 * 64 + 2 and png.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize(
+    ("extra", "parameter"),
+    [
+        (["--e", "1.5", "--omega", "30"], "e:"),
+        (["--e", "-0.1", "--omega", "30"], "e:"),
+        (["--e", "0.6", "--omega", "0"], "omega:"),
+        (["--e", "0.6", "--omega", "30", "--freq", "5"], "omega:"),
+        (["--e", "0.6", "--omega", "30", "--omega", "31"], "--omega"),
+        (["--e", "0.6", "--omega", "30 Hz"], "omega:"),
+        (["--e", "0.6"], "omega:"),
+        (["--omega", "30"], "e:"),
+    ],
+)
+def test_periodic_bad_input_is_one_line_naming_the_parameter(capsys, extra, parameter):
+    assert _status(["periodic", "--contact", "rigid", *SYSTEM, "--force", "2 N", *extra]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and parameter in err
+
+
+def _status(argv) -> int:
+    """The exit status of ``symimpact argv`` (argparse's own refusals exit through SystemExit)."""
+    try:
+        return main(argv)
+    except SystemExit as exc:
+        return exc.code
+
+
+def test_a_closed_form_for_a_compliant_law_is_refused(capsys):
+    argv = ["periodic", "--contact", "hertz", "--e", "0.6", *SYSTEM, "--force", "2"]
+    assert main([*argv, "--omega", "30"]) == 2
+    assert "closed form holds for rigid impacts" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(
+    ("extra", "parameter"),
+    [
+        (["--contact", "rigid", "--force", "2", "--omega", "30"], "e:"),
+        (["--contact", "rigid", "--e", "0.5"], "force:"),
+        (["--contact", "rigid", "--e", "0.5", "--force", "2", "--omega", "30", "--t-end", "3"],
+         "t-end:"),
+        (["--contact", "rigid", "--e", "0.5", "--force", "2", "--omega", "30", "--periods", "10",
+          "--discard", "10"], "discard:"),
+        (["--e", "0.5"], "e:"),
+        (["--periods", "5"], "periods:"),
+        (["--force", "2", "--omega", "30", "--e", "0.5"], "contact"),
+    ],
+)  # fmt: skip
+def test_simulate_bad_forcing_input_is_one_line(capsys, extra, parameter):
+    assert _status(["simulate", *SYSTEM, *extra]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and parameter in err
