@@ -25,6 +25,7 @@ STEPS = (
     "forced_flight",
     "rigid_impact",
     "periodic_orbit",
+    "hunt_crossley",
 )
 
 

@@ -44,6 +44,13 @@ class CKernelPrinter(C99CodePrinter):
     _print_Pi = _print_NumberSymbol
     _print_Exp1 = _print_NumberSymbol
 
+    def _print_Assignment(self, expr) -> str:
+        """``x = value;`` with a case distinction as a conditional expression (SymPy would write
+        an if/else block, which cannot follow the ``const double`` of a hoisted temporary)."""
+        if expr.rhs.has(sp.Piecewise):
+            return f"{self._print(expr.lhs)} = {self._print(expr.rhs)};"
+        return super()._print_Assignment(expr)
+
 
 def c_name(module: str, name: str) -> str:
     """The C function name of kernel ``name`` of the Python module ``module``."""

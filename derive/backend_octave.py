@@ -55,6 +55,9 @@ class OctaveKernelPrinter(OctaveCodePrinter):
             out = f"{PICK}({self._print(condition)}, {self._print(value)}, {out})"
         return out
 
+    def _print_log1p(self, expr) -> str:  # Octave has log1p; SymPy's printer does not know it
+        return f"log1p({self._print(expr.args[0])})"
+
     def _print_And(self, expr) -> str:  # scalar loop conditions: short-circuit &&
         return " && ".join(f"({self._print(a)})" for a in expr.args)
 
@@ -124,13 +127,16 @@ def render(boards: list[Board]) -> dict[str, str]:
     for b in boards:
         for fp in b.fixed_points:
             hoisted, loop = fixed_point_ast(fp, prefix="c_")
+            hoisted_text = [printer.doprint(h) for h in hoisted]
+            loop_text = _indented(printer.doprint(loop).split("\n"))
             emit(
                 "fixed_point.m.j2",
                 octave_name("fixed_points", fp.name),
                 board=b,
                 fp=fp,
-                hoisted=[printer.doprint(h) for h in hoisted],
-                loop=_indented(printer.doprint(loop).split("\n")),
+                hoisted=hoisted_text,
+                loop=loop_text,
+                pick=PICK if any(f"{PICK}(" in t for t in [*hoisted_text, *loop_text]) else "",
                 x=fp.iterate.name,
                 latex=fixed_point_latex(fp),
                 argnames=", ".join(a.name for a in fp.args),

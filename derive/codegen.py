@@ -45,6 +45,13 @@ class KernelPrinter(NumPyPrinter):
     def _print_Float(self, expr: sp.Float) -> str:
         return repr(float(expr))
 
+    def _print_Max(self, expr) -> str:  # nested numpy.maximum: no functools import needed
+        *rest, last = expr.args
+        out = self._print(last)
+        for a in reversed(rest):
+            out = f"numpy.maximum({self._print(a)}, {out})"
+        return out
+
 
 class ScalarTwinPrinter(KernelPrinter):
     """The ``*_scalar`` twins: NumPy float64 arithmetic, and a case distinction (``Piecewise``)
@@ -72,6 +79,11 @@ class ScalarKernelPrinter(PythonCodePrinter):
 
     def _print_Float(self, expr: sp.Float) -> str:
         return repr(float(expr))
+
+    def _print_Assignment(self, expr) -> str:
+        """``x = value``, also for a case distinction (SymPy would write the assignment into
+        each branch of a conditional expression, which Python does not parse)."""
+        return f"{self._print(expr.lhs)} = {self._print(expr.rhs)}"
 
 
 def numeric_constants(expr: sp.Expr) -> sp.Expr:

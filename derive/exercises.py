@@ -243,4 +243,28 @@ for Wv in (10, 20, 30, 38, 60):
             """show_value(sp.Eq(sp.Symbol("c"), sp.factor(c_coef.subs(e, 1))))""",
         ),
     ),
+    "hunt_crossley": (
+        Exercise(
+            "Which χ for a wanted e",
+            "Users set χ from a wanted e.  The e they actually get with Hunt–Crossley's "
+            "χ = 3(1 − e)/(2v₀) and Lankarani–Nikravesh's χ = 3(1 − e²)/(4v₀), from the exact "
+            "condition g(−e·z) = g(z) solved at 30 digits.",
+            """def exact_e(zv):
+    return mp.findroot(lambda ev: (-ev * zv - mp.log1p(-ev * zv)) - (zv - mp.log1p(zv)),
+                       (mp.mpf("1e-9"), 1 - mp.mpf("1e-30")), solver="anderson")
+with mp.workdps(30):
+    for wanted in (0.95, 0.8, 0.6, 0.4):
+        z_hc, z_ln = 1.5 * (1 - wanted), 0.75 * (1 - wanted**2)
+        print(f"wanted e = {wanted}: HC gives {mp.nstr(exact_e(mp.mpf(z_hc)), 6)}, "
+              f"LN gives {mp.nstr(exact_e(mp.mpf(z_ln)), 6)}")""",
+        ),
+        Exercise(
+            "How long the Kelvin–Voigt law pulls",
+            "The share of the contact time during which the paper's linear law k₁δ + c₁δ̇ is "
+            "tensile, for c₁ set from e (Step 9): 2·atan(−ln e/π)/π.",
+            """for ev in (0.9, 0.6, 0.3, 0.1):
+    share = 2 * sp.atan(-sp.log(sp.Float(ev)) / sp.pi) / sp.pi
+    print(f"e = {ev}: pulls during {sp.N(100 * share, 4)} % of the contact")""",
+        ),
+    ),
 }

@@ -18,6 +18,7 @@ from . import (
     forced_flight,
     rigid_impact,
     periodic_orbit,
+    hunt_crossley,
 )
 
 __all__ = [
@@ -31,4 +32,5 @@ __all__ = [
     "forced_flight",
     "rigid_impact",
     "periodic_orbit",
+    "hunt_crossley",
 ]
