@@ -50,7 +50,8 @@ def derive() -> Board:
     mu, K, chi, v0, n = sp.symbols("mu K_Hz chi v0 n", positive=True)
     delta = sp.Symbol("delta", nonnegative=True)
     v, vv = sp.symbols("v vv", real=True)
-    z, s, e = sp.symbols("z s e", positive=True)
+    z, e = sp.symbols("z e", positive=True)
+    s = sp.Symbol("s", real=True)  # the rate of penetration over v₀: from 1 down to −e
 
     w(
         "hunt_crossley_force",
@@ -397,6 +398,75 @@ def derive() -> Board:
         # z < 1 and s above −(1 − 2z/3), which lies below −e (the exact e exceeds Hunt–Crossley's
         # 1 − 2z/3 there: the error series starts at +4z²/9)
         constraints=(sp.StrictLessThan(zz, 1), sp.StrictGreaterThan(s, -1 + 2 * zz / 3)),
+    )
+    # --- the duration's integrand, free of cancellation at both ends ---------------------------
+    # P(s) = h(z) − s²h(zs) vanishes at s = 1 and s = −e; written from each end it needs no
+    # difference of nearly equal numbers: from the touch-down, r = (1 − s)/(1 + zs) and
+    # P = r²h(zr) + r·s; from the separation, ρ = (s + e)/(1 − ez) and P = ρe − ρ²h(zρ).
+    r_top = (1 - s) / (1 + z * s)
+    rho = (s + e) / (1 - e * z)
+    P_exact = h_of(z) - s**2 * h_of(z * s)
+    P_top = r_top**2 * h_of(z * r_top) + r_top * s
+    P_bottom = rho * e - rho**2 * h_of(z * rho)
+    on_exit = {s: -e}
+    with mp.workdps(40):
+        worst = mp.mpf(0)
+        for zv, sv in ((sp.Rational(1, 5), sp.Rational(-1, 3)), (1, sp.Rational(1, 2)),
+                       (3, sp.Rational(-1, 10))):  # fmt: skip
+            e_v = mp.re(closed_e(mp.mpf(zv)))
+            vals = {z: zv, s: sv}
+            ref = sp.lambdify(e, P_exact.subs(vals), "mpmath")(e_v)
+            for form in (P_top, P_bottom):
+                got = sp.lambdify(e, form.subs(vals), "mpmath")(e_v)
+                worst = max(worst, abs(got - ref) / abs(ref))
+    board.check(
+        "written from the touch-down and from the separation, P(s) is the same function "
+        "(z = 1/5, 1, 3 at 40 digits, e the root of the restitution condition)",
+        "F4",
+        worst < mp.mpf(10) ** -30
+        and sp.simplify(P_top.subs(s, 1)) == 0
+        and sp.simplify(P_bottom.subs(on_exit)) == 0,
+        detail=f"largest relative difference {mp.nstr(worst, 3)}",
+    )
+    w(
+        "duration_integrand_regular_part",
+        sp.Piecewise(
+            (1 / ((1 + z * s) * (s + e)) * (r_top * sp.Function("h")(z * r_top) + s), s >= 0),
+            ((e - rho * sp.Function("h")(z * rho)) / ((1 - e * z) * (1 - s)), True),
+        ),
+        r"P(s)/((1 − s)(s + e)): finite at both ends (1/((1 + z)(1 + e)) and e/((1 − ez)(1 + e))), "
+        r"so the duration is a weight $((1-s)(s+e))^{-3/5}$ times a smooth function.",
+        "F4",
+    )
+    ratio_top = (r_top * h_kernel(zz * r_top.subs(z, zz)) + s) / ((1 + zz * s) * (s + e))
+    ratio_bottom = (e - rho.subs(z, zz) * h_kernel(zz * rho.subs(z, zz))) / ((1 - e * zz) * (1 - s))
+    ratio = sp.Piecewise((ratio_top.subs(z, zz), s >= 0), (ratio_bottom, True))
+    board.kernel(
+        name="duration_density",
+        args=(
+            as_,
+            Arg(e, "1", "Coefficient of restitution e (from hunt_crossley_restitution)", 0.1, 1.0),
+            am,
+            aM,
+            aK,
+            achi,
+            av0,
+        ),
+        expr=mu_mM
+        * v0
+        / (K * (sp.Rational(5, 2) * mu_mM * v0**2 / K) ** sp.Rational(3, 5))
+        / (ratio ** sp.Rational(3, 5) * (1 + zz * s)),
+        returns="μv₀/F(s) times ((1 − s)(s + e))^{3/5}: the contact duration is its integral "
+        "over s ∈ [−e, 1] against the weight ((1 − s)(s + e))^{−3/5}",
+        unit="s",
+        equation="F4",
+        lhs=r"\tau(s)",
+        # z < 1, s above −(1 − 2z/3) and e above Hunt–Crossley's 1 − 2z/3: a point of a contact
+        constraints=(
+            sp.StrictLessThan(zz, 1),
+            sp.StrictGreaterThan(s, -1 + 2 * zz / 3),
+            sp.StrictGreaterThan(e, 1 - 2 * zz / 3),
+        ),
     )
     s_it = sp.Symbol("s", real=True)
     peak_residual = 5 * zz * (h_z - s_it**2 * h_kernel(zz * s_it)) - 3 * s_it

@@ -1305,7 +1305,7 @@ void symimpact_hunt_crossley_max_penetration_batch(size_t n, const double *restr
     }
 }
 
-/* Eq. F4: \delta(s) = \frac{2^{\frac{3}{5}} \cdot 5^{\frac{2}{5}} M^{\frac{2}{5}} m^{\frac{2}{5}} v_{0}^{\frac{4}{5}} \left(- s^{2} \left(\begin{cases} \frac{\chi^{12} s^{12} v_{0}^{12}}{14} - \frac{\chi^{11} s^{11} v_{0}^{11}}{13} + \frac{\chi^{10} s^{10} v_{0}^{10}}{12} - \frac{\chi^{9} s^{9} v_{0}^{9}}{11} + \frac{\chi^{8} s^{8} v_{0}^{8}}{10} - \frac{\chi^{7} s^{7} v_{0}^{7}}{9} + \frac{\chi^{6} s^{6} v_{0}^{6}}{8} - \frac{\chi^{5} s^{5} v_{0}^{5}}{7} + \frac{\chi^{4} s^{4} v_{0}^{4}}{6} - \frac{\chi^{3} s^{3} v_{0}^{3}}{5} + \frac{\chi^{2} s^{2} v_{0}^{2}}{4} - \frac{\chi s v_{0}}{3} + \frac{1}{2} & \text{for}\: \chi s v_{0} < \frac{1}{20} \\\frac{\chi s v_{0} - \operatorname{log1p}{\left(\chi s v_{0} \right)}}{\max\left(\frac{1}{400}, \chi^{2} s^{2} v_{0}^{2}\right)} & \text{otherwise} \end{cases}\right) + \begin{cases} \frac{\chi^{12} v_{0}^{12}}{14} - \frac{\chi^{11} v_{0}^{11}}{13} + \frac{\chi^{10} v_{0}^{10}}{12} - \frac{\chi^{9} v_{0}^{9}}{11} + \frac{\chi^{8} v_{0}^{8}}{10} - \frac{\chi^{7} v_{0}^{7}}{9} + \frac{\chi^{6} v_{0}^{6}}{8} - \frac{\chi^{5} v_{0}^{5}}{7} + \frac{\chi^{4} v_{0}^{4}}{6} - \frac{\chi^{3} v_{0}^{3}}{5} + \frac{\chi^{2} v_{0}^{2}}{4} - \frac{\chi v_{0}}{3} + \frac{1}{2} & \text{for}\: \chi v_{0} < \frac{1}{20} \\\frac{\chi v_{0} - \operatorname{log1p}{\left(\chi v_{0} \right)}}{\max\left(\frac{1}{400}, \chi^{2} v_{0}^{2}\right)} & \text{otherwise} \end{cases}\right)^{\frac{2}{5}}}{2 K_{Hz}^{\frac{2}{5}} \left(M + m\right)^{\frac{2}{5}}} */
+/* Eq. F4: \delta(s) = \frac{2^{\frac{3}{5}} \cdot 5^{\frac{2}{5}} M^{\frac{2}{5}} m^{\frac{2}{5}} v_{0}^{\frac{4}{5}} \left(- s^{2} \left(\begin{cases} \frac{\chi^{12} s^{12} v_{0}^{12}}{14} - \frac{\chi^{11} s^{11} v_{0}^{11}}{13} + \frac{\chi^{10} s^{10} v_{0}^{10}}{12} - \frac{\chi^{9} s^{9} v_{0}^{9}}{11} + \frac{\chi^{8} s^{8} v_{0}^{8}}{10} - \frac{\chi^{7} s^{7} v_{0}^{7}}{9} + \frac{\chi^{6} s^{6} v_{0}^{6}}{8} - \frac{\chi^{5} s^{5} v_{0}^{5}}{7} + \frac{\chi^{4} s^{4} v_{0}^{4}}{6} - \frac{\chi^{3} s^{3} v_{0}^{3}}{5} + \frac{\chi^{2} s^{2} v_{0}^{2}}{4} - \frac{\chi s v_{0}}{3} + \frac{1}{2} & \text{for}\: \chi v_{0} \left|{s}\right| < \frac{1}{20} \\\frac{\chi s v_{0} - \operatorname{log1p}{\left(\chi s v_{0} \right)}}{\max\left(\frac{1}{400}, \chi^{2} s^{2} v_{0}^{2}\right)} & \text{otherwise} \end{cases}\right) + \begin{cases} \frac{\chi^{12} v_{0}^{12}}{14} - \frac{\chi^{11} v_{0}^{11}}{13} + \frac{\chi^{10} v_{0}^{10}}{12} - \frac{\chi^{9} v_{0}^{9}}{11} + \frac{\chi^{8} v_{0}^{8}}{10} - \frac{\chi^{7} v_{0}^{7}}{9} + \frac{\chi^{6} v_{0}^{6}}{8} - \frac{\chi^{5} v_{0}^{5}}{7} + \frac{\chi^{4} v_{0}^{4}}{6} - \frac{\chi^{3} v_{0}^{3}}{5} + \frac{\chi^{2} v_{0}^{2}}{4} - \frac{\chi v_{0}}{3} + \frac{1}{2} & \text{for}\: \chi v_{0} < \frac{1}{20} \\\frac{\chi v_{0} - \operatorname{log1p}{\left(\chi v_{0} \right)}}{\max\left(\frac{1}{400}, \chi^{2} v_{0}^{2}\right)} & \text{otherwise} \end{cases}\right)^{\frac{2}{5}}}{2 K_{Hz}^{\frac{2}{5}} \left(M + m\right)^{\frac{2}{5}}} */
 double symimpact_hunt_crossley_penetration_at_speed(double s, double m, double M, double K_Hz, double chi, double v0)
 {
     const double _x0 = chi*v0;
@@ -1323,7 +1323,7 @@ double symimpact_hunt_crossley_penetration_at_speed(double s, double m, double M
     const double _x12 = pow(s, 2);
     const double _x13 = _x0*s;
     const double _x14 = _x1*_x12;
-    return (1.0/2.0)*pow(2, 3.0/5.0)*pow(5, 2.0/5.0)*pow(M, 2.0/5.0)*pow(m, 2.0/5.0)*pow(v0, 4.0/5.0)*pow(-_x12*((_x13 < 1.0/20.0) ? (
+    return (1.0/2.0)*pow(2, 3.0/5.0)*pow(5, 2.0/5.0)*pow(M, 2.0/5.0)*pow(m, 2.0/5.0)*pow(v0, 4.0/5.0)*pow(-_x12*((_x0*fabs(s) < 1.0/20.0) ? (
    -_x10*pow(s, 11) + _x11*pow(s, 12) - 1.0/3.0*_x13 + (1.0/4.0)*_x14 - _x2*pow(s, 3) + _x3*pow(s, 4) - _x4*pow(s, 5) + _x5*pow(s, 6) - _x6*pow(s, 7) + _x7*pow(s, 8) - _x8*pow(s, 9) + _x9*pow(s, 10) + 1.0/2.0
 )
 : (
@@ -1344,7 +1344,7 @@ void symimpact_hunt_crossley_penetration_at_speed_batch(size_t n, const double *
     }
 }
 
-/* Eq. F4: F(s) = \frac{2^{\frac{2}{5}} \cdot 5^{\frac{3}{5}} K_{Hz}^{\frac{2}{5}} M^{\frac{3}{5}} m^{\frac{3}{5}} v_{0}^{\frac{6}{5}} \left(- s^{2} \left(\begin{cases} \frac{\chi^{12} s^{12} v_{0}^{12}}{14} - \frac{\chi^{11} s^{11} v_{0}^{11}}{13} + \frac{\chi^{10} s^{10} v_{0}^{10}}{12} - \frac{\chi^{9} s^{9} v_{0}^{9}}{11} + \frac{\chi^{8} s^{8} v_{0}^{8}}{10} - \frac{\chi^{7} s^{7} v_{0}^{7}}{9} + \frac{\chi^{6} s^{6} v_{0}^{6}}{8} - \frac{\chi^{5} s^{5} v_{0}^{5}}{7} + \frac{\chi^{4} s^{4} v_{0}^{4}}{6} - \frac{\chi^{3} s^{3} v_{0}^{3}}{5} + \frac{\chi^{2} s^{2} v_{0}^{2}}{4} - \frac{\chi s v_{0}}{3} + \frac{1}{2} & \text{for}\: \chi s v_{0} < \frac{1}{20} \\\frac{\chi s v_{0} - \operatorname{log1p}{\left(\chi s v_{0} \right)}}{\max\left(\frac{1}{400}, \chi^{2} s^{2} v_{0}^{2}\right)} & \text{otherwise} \end{cases}\right) + \begin{cases} \frac{\chi^{12} v_{0}^{12}}{14} - \frac{\chi^{11} v_{0}^{11}}{13} + \frac{\chi^{10} v_{0}^{10}}{12} - \frac{\chi^{9} v_{0}^{9}}{11} + \frac{\chi^{8} v_{0}^{8}}{10} - \frac{\chi^{7} v_{0}^{7}}{9} + \frac{\chi^{6} v_{0}^{6}}{8} - \frac{\chi^{5} v_{0}^{5}}{7} + \frac{\chi^{4} v_{0}^{4}}{6} - \frac{\chi^{3} v_{0}^{3}}{5} + \frac{\chi^{2} v_{0}^{2}}{4} - \frac{\chi v_{0}}{3} + \frac{1}{2} & \text{for}\: \chi v_{0} < \frac{1}{20} \\\frac{\chi v_{0} - \operatorname{log1p}{\left(\chi v_{0} \right)}}{\max\left(\frac{1}{400}, \chi^{2} v_{0}^{2}\right)} & \text{otherwise} \end{cases}\right)^{\frac{3}{5}} \left(\chi s v_{0} + 1\right)}{2 \left(M + m\right)^{\frac{3}{5}}} */
+/* Eq. F4: F(s) = \frac{2^{\frac{2}{5}} \cdot 5^{\frac{3}{5}} K_{Hz}^{\frac{2}{5}} M^{\frac{3}{5}} m^{\frac{3}{5}} v_{0}^{\frac{6}{5}} \left(- s^{2} \left(\begin{cases} \frac{\chi^{12} s^{12} v_{0}^{12}}{14} - \frac{\chi^{11} s^{11} v_{0}^{11}}{13} + \frac{\chi^{10} s^{10} v_{0}^{10}}{12} - \frac{\chi^{9} s^{9} v_{0}^{9}}{11} + \frac{\chi^{8} s^{8} v_{0}^{8}}{10} - \frac{\chi^{7} s^{7} v_{0}^{7}}{9} + \frac{\chi^{6} s^{6} v_{0}^{6}}{8} - \frac{\chi^{5} s^{5} v_{0}^{5}}{7} + \frac{\chi^{4} s^{4} v_{0}^{4}}{6} - \frac{\chi^{3} s^{3} v_{0}^{3}}{5} + \frac{\chi^{2} s^{2} v_{0}^{2}}{4} - \frac{\chi s v_{0}}{3} + \frac{1}{2} & \text{for}\: \chi v_{0} \left|{s}\right| < \frac{1}{20} \\\frac{\chi s v_{0} - \operatorname{log1p}{\left(\chi s v_{0} \right)}}{\max\left(\frac{1}{400}, \chi^{2} s^{2} v_{0}^{2}\right)} & \text{otherwise} \end{cases}\right) + \begin{cases} \frac{\chi^{12} v_{0}^{12}}{14} - \frac{\chi^{11} v_{0}^{11}}{13} + \frac{\chi^{10} v_{0}^{10}}{12} - \frac{\chi^{9} v_{0}^{9}}{11} + \frac{\chi^{8} v_{0}^{8}}{10} - \frac{\chi^{7} v_{0}^{7}}{9} + \frac{\chi^{6} v_{0}^{6}}{8} - \frac{\chi^{5} v_{0}^{5}}{7} + \frac{\chi^{4} v_{0}^{4}}{6} - \frac{\chi^{3} v_{0}^{3}}{5} + \frac{\chi^{2} v_{0}^{2}}{4} - \frac{\chi v_{0}}{3} + \frac{1}{2} & \text{for}\: \chi v_{0} < \frac{1}{20} \\\frac{\chi v_{0} - \operatorname{log1p}{\left(\chi v_{0} \right)}}{\max\left(\frac{1}{400}, \chi^{2} v_{0}^{2}\right)} & \text{otherwise} \end{cases}\right)^{\frac{3}{5}} \left(\chi s v_{0} + 1\right)}{2 \left(M + m\right)^{\frac{3}{5}}} */
 double symimpact_hunt_crossley_force_at_speed(double s, double m, double M, double K_Hz, double chi, double v0)
 {
     const double _x0 = chi*v0;
@@ -1362,7 +1362,7 @@ double symimpact_hunt_crossley_force_at_speed(double s, double m, double M, doub
     const double _x12 = (1.0/14.0)*pow(chi, 12)*pow(v0, 12);
     const double _x13 = pow(s, 2);
     const double _x14 = _x13*_x2;
-    return (1.0/2.0)*pow(2, 2.0/5.0)*pow(5, 3.0/5.0)*pow(K_Hz, 2.0/5.0)*pow(M, 3.0/5.0)*pow(m, 3.0/5.0)*pow(v0, 6.0/5.0)*(_x1 + 1)*pow(-_x13*((_x1 < 1.0/20.0) ? (
+    return (1.0/2.0)*pow(2, 2.0/5.0)*pow(5, 3.0/5.0)*pow(K_Hz, 2.0/5.0)*pow(M, 3.0/5.0)*pow(m, 3.0/5.0)*pow(v0, 6.0/5.0)*(_x1 + 1)*pow(-_x13*((_x0*fabs(s) < 1.0/20.0) ? (
    -1.0/3.0*_x1 + _x10*pow(s, 10) - _x11*pow(s, 11) + _x12*pow(s, 12) + (1.0/4.0)*_x14 - _x3*pow(s, 3) + _x4*pow(s, 4) - _x5*pow(s, 5) + _x6*pow(s, 6) - _x7*pow(s, 7) + _x8*pow(s, 8) - _x9*pow(s, 9) + 1.0/2.0
 )
 : (
@@ -1380,6 +1380,61 @@ void symimpact_hunt_crossley_force_at_speed_batch(size_t n, const double *restri
     size_t i;
     for (i = 0; i < n; ++i) {
         out[i] = symimpact_hunt_crossley_force_at_speed(s[i], m[i], M[i], K_Hz[i], chi[i], v0[i]);
+    }
+}
+
+/* Eq. F4: \tau(s) = \frac{2^{\frac{3}{5}} \cdot 5^{\frac{2}{5}} M^{\frac{2}{5}} m^{\frac{2}{5}} \left(\begin{cases} \frac{1}{\left(\frac{s + \frac{\left(1 - s\right) \left(\begin{cases} \frac{\chi^{12} v_{0}^{12} \left(1 - s\right)^{12}}{14 \left(\chi s v_{0} + 1\right)^{12}} - \frac{\chi^{11} v_{0}^{11} \left(1 - s\right)^{11}}{13 \left(\chi s v_{0} + 1\right)^{11}} + \frac{\chi^{10} v_{0}^{10} \left(1 - s\right)^{10}}{12 \left(\chi s v_{0} + 1\right)^{10}} - \frac{\chi^{9} v_{0}^{9} \left(1 - s\right)^{9}}{11 \left(\chi s v_{0} + 1\right)^{9}} + \frac{\chi^{8} v_{0}^{8} \left(1 - s\right)^{8}}{10 \left(\chi s v_{0} + 1\right)^{8}} - \frac{\chi^{7} v_{0}^{7} \left(1 - s\right)^{7}}{9 \left(\chi s v_{0} + 1\right)^{7}} + \frac{\chi^{6} v_{0}^{6} \left(1 - s\right)^{6}}{8 \left(\chi s v_{0} + 1\right)^{6}} - \frac{\chi^{5} v_{0}^{5} \left(1 - s\right)^{5}}{7 \left(\chi s v_{0} + 1\right)^{5}} + \frac{\chi^{4} v_{0}^{4} \left(1 - s\right)^{4}}{6 \left(\chi s v_{0} + 1\right)^{4}} - \frac{\chi^{3} v_{0}^{3} \left(1 - s\right)^{3}}{5 \left(\chi s v_{0} + 1\right)^{3}} + \frac{\chi^{2} v_{0}^{2} \left(1 - s\right)^{2}}{4 \left(\chi s v_{0} + 1\right)^{2}} - \frac{\chi v_{0} \left(1 - s\right)}{3 \left(\chi s v_{0} + 1\right)} + \frac{1}{2} & \text{for}\: \chi v_{0} \left|{\frac{s - 1}{\chi s v_{0} + 1}}\right| < \frac{1}{20} \\\frac{\frac{\chi v_{0} \left(1 - s\right)}{\chi s v_{0} + 1} - \operatorname{log1p}{\left(\frac{\chi v_{0} \left(1 - s\right)}{\chi s v_{0} + 1} \right)}}{\max\left(\frac{1}{400}, \frac{\chi^{2} v_{0}^{2} \left(1 - s\right)^{2}}{\left(\chi s v_{0} + 1\right)^{2}}\right)} & \text{otherwise} \end{cases}\right)}{\chi s v_{0} + 1}}{\left(e + s\right) \left(\chi s v_{0} + 1\right)}\right)^{\frac{3}{5}}} & \text{for}\: s \geq 0 \\\frac{1}{\left(\frac{e - \frac{\left(e + s\right) \left(\begin{cases} \frac{\chi^{12} v_{0}^{12} \left(e + s\right)^{12}}{14 \left(- \chi e v_{0} + 1\right)^{12}} - \frac{\chi^{11} v_{0}^{11} \left(e + s\right)^{11}}{13 \left(- \chi e v_{0} + 1\right)^{11}} + \frac{\chi^{10} v_{0}^{10} \left(e + s\right)^{10}}{12 \left(- \chi e v_{0} + 1\right)^{10}} - \frac{\chi^{9} v_{0}^{9} \left(e + s\right)^{9}}{11 \left(- \chi e v_{0} + 1\right)^{9}} + \frac{\chi^{8} v_{0}^{8} \left(e + s\right)^{8}}{10 \left(- \chi e v_{0} + 1\right)^{8}} - \frac{\chi^{7} v_{0}^{7} \left(e + s\right)^{7}}{9 \left(- \chi e v_{0} + 1\right)^{7}} + \frac{\chi^{6} v_{0}^{6} \left(e + s\right)^{6}}{8 \left(- \chi e v_{0} + 1\right)^{6}} - \frac{\chi^{5} v_{0}^{5} \left(e + s\right)^{5}}{7 \left(- \chi e v_{0} + 1\right)^{5}} + \frac{\chi^{4} v_{0}^{4} \left(e + s\right)^{4}}{6 \left(- \chi e v_{0} + 1\right)^{4}} - \frac{\chi^{3} v_{0}^{3} \left(e + s\right)^{3}}{5 \left(- \chi e v_{0} + 1\right)^{3}} + \frac{\chi^{2} v_{0}^{2} \left(e + s\right)^{2}}{4 \left(- \chi e v_{0} + 1\right)^{2}} - \frac{\chi v_{0} \left(e + s\right)}{3 \left(- \chi e v_{0} + 1\right)} + \frac{1}{2} & \text{for}\: \chi v_{0} \left|{\frac{e + s}{\chi e v_{0} - 1}}\right| < \frac{1}{20} \\\frac{\frac{\chi v_{0} \left(e + s\right)}{- \chi e v_{0} + 1} - \operatorname{log1p}{\left(\frac{\chi v_{0} \left(e + s\right)}{- \chi e v_{0} + 1} \right)}}{\max\left(\frac{1}{400}, \frac{\chi^{2} v_{0}^{2} \left(e + s\right)^{2}}{\left(- \chi e v_{0} + 1\right)^{2}}\right)} & \text{otherwise} \end{cases}\right)}{- \chi e v_{0} + 1}}{\left(1 - s\right) \left(- \chi e v_{0} + 1\right)}\right)^{\frac{3}{5}}} & \text{otherwise} \end{cases}\right)}{5 K_{Hz}^{\frac{2}{5}} \sqrt[5]{v_{0}} \left(M + m\right)^{\frac{2}{5}} \left(\chi s v_{0} + 1\right)} */
+double symimpact_hunt_crossley_duration_density(double s, double e, double m, double M, double K_Hz, double chi, double v0)
+{
+    const double _x0 = chi*v0;
+    const double _x1 = _x0*s + 1;
+    const double _x2 = 1.0/_x1;
+    const double _x3 = e + s;
+    const double _x4 = s - 1;
+    const double _x5 = -_x4;
+    const double _x6 = _x2*_x5;
+    const double _x7 = _x0*_x6;
+    const double _x8 = pow(chi, 2)*pow(v0, 2);
+    const double _x9 = pow(_x5, 2)*_x8/pow(_x1, 2);
+    const double _x10 = (1.0/5.0)*pow(chi, 3)*pow(v0, 3);
+    const double _x11 = (1.0/6.0)*pow(chi, 4)*pow(v0, 4);
+    const double _x12 = (1.0/7.0)*pow(chi, 5)*pow(v0, 5);
+    const double _x13 = (1.0/8.0)*pow(chi, 6)*pow(v0, 6);
+    const double _x14 = (1.0/9.0)*pow(chi, 7)*pow(v0, 7);
+    const double _x15 = (1.0/10.0)*pow(chi, 8)*pow(v0, 8);
+    const double _x16 = (1.0/11.0)*pow(chi, 9)*pow(v0, 9);
+    const double _x17 = (1.0/12.0)*pow(chi, 10)*pow(v0, 10);
+    const double _x18 = (1.0/13.0)*pow(chi, 11)*pow(v0, 11);
+    const double _x19 = (1.0/14.0)*pow(chi, 12)*pow(v0, 12);
+    const double _x20 = _x0*e - 1;
+    const double _x21 = -_x20;
+    const double _x22 = 1.0/_x21;
+    const double _x23 = _x22*_x3;
+    const double _x24 = _x0*_x23;
+    const double _x25 = pow(_x3, 2)*_x8/pow(_x21, 2);
+    return (1.0/5.0)*pow(2, 3.0/5.0)*pow(5, 2.0/5.0)*pow(M, 2.0/5.0)*_x2*pow(m, 2.0/5.0)*((s >= 0) ? (
+   pow(_x2*(_x6*((_x0*fabs(_x2*_x4) < 1.0/20.0) ? (
+      -1.0/3.0*_x7 + (1.0/4.0)*_x9 + 1.0/2.0 - _x10*pow(_x5, 3)/pow(_x1, 3) + _x11*pow(_x5, 4)/pow(_x1, 4) - _x12*pow(_x5, 5)/pow(_x1, 5) + _x13*pow(_x5, 6)/pow(_x1, 6) - _x14*pow(_x5, 7)/pow(_x1, 7) + _x15*pow(_x5, 8)/pow(_x1, 8) - _x16*pow(_x5, 9)/pow(_x1, 9) + _x17*pow(_x5, 10)/pow(_x1, 10) - _x18*pow(_x5, 11)/pow(_x1, 11) + _x19*pow(_x5, 12)/pow(_x1, 12)
+   )
+   : (
+      (_x7 - log1p(_x7))/fmax(1.0/400.0, _x9)
+   )) + s)/_x3, -3.0/5.0)
+)
+: (
+   pow(_x22*(-_x23*((_x0*fabs(_x3/_x20) < 1.0/20.0) ? (
+      -_x10*pow(_x3, 3)/pow(_x21, 3) + _x11*pow(_x3, 4)/pow(_x21, 4) - _x12*pow(_x3, 5)/pow(_x21, 5) + _x13*pow(_x3, 6)/pow(_x21, 6) - _x14*pow(_x3, 7)/pow(_x21, 7) + _x15*pow(_x3, 8)/pow(_x21, 8) - _x16*pow(_x3, 9)/pow(_x21, 9) + _x17*pow(_x3, 10)/pow(_x21, 10) - _x18*pow(_x3, 11)/pow(_x21, 11) + _x19*pow(_x3, 12)/pow(_x21, 12) - 1.0/3.0*_x24 + (1.0/4.0)*_x25 + 1.0/2.0
+   )
+   : (
+      (_x24 - log1p(_x24))/fmax(1.0/400.0, _x25)
+   )) + e)/_x5, -3.0/5.0)
+))/(pow(K_Hz, 2.0/5.0)*pow(v0, 1.0/5.0)*pow(M + m, 2.0/5.0));
+}
+
+void symimpact_hunt_crossley_duration_density_batch(size_t n, const double *restrict s, const double *restrict e, const double *restrict m, const double *restrict M, const double *restrict K_Hz, const double *restrict chi, const double *restrict v0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_hunt_crossley_duration_density(s[i], e[i], m[i], M[i], K_Hz[i], chi[i], v0[i]);
     }
 }
 

@@ -32,6 +32,7 @@ SI_UNITS: dict[str, str] = {
     "b": "N/m",
     "k1": "N/m",
     "k_hz": "N/m^1.5",
+    "chi": "s/m",
     "delta_max": "m",
     "x0": "m",
     "y0": "m",
