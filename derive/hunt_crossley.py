@@ -456,8 +456,8 @@ def derive() -> Board:
         * v0
         / (K * (sp.Rational(5, 2) * mu_mM * v0**2 / K) ** sp.Rational(3, 5))
         / (ratio ** sp.Rational(3, 5) * (1 + zz * s)),
-        returns="μv₀/F(s) times ((1 − s)(s + e))^{3/5}: the contact duration is its integral "
-        "over s ∈ [−e, 1] against the weight ((1 − s)(s + e))^{−3/5}",
+        returns="μv₀/F(s) times the 3/5 power of (1 − s)(s + e): the contact duration is its "
+        "integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e)) to the power −3/5",
         unit="s",
         equation="F4",
         lhs=r"\tau(s)",

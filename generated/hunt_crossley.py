@@ -238,7 +238,7 @@ def force_at_speed_scalar(s, m, M, K_Hz, chi, v0):
 
 
 def duration_density(s, e, m, M, K_Hz, chi, v0):
-    r"""μv₀/F(s) times ((1 − s)(s + e))^{3/5}: the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e))^{−3/5} [s].
+    r"""μv₀/F(s) times the 3/5 power of (1 − s)(s + e): the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e)) to the power −3/5 [s].
 
     Eq. F4 (derived here, beyond the paper).
 
@@ -266,7 +266,7 @@ def duration_density(s, e, m, M, K_Hz, chi, v0):
     Returns
     -------
     numpy.ndarray
-        μv₀/F(s) times ((1 − s)(s + e))^{3/5}: the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e))^{−3/5} [s], in the broadcast shape of the arguments.
+        μv₀/F(s) times the 3/5 power of (1 − s)(s + e): the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e)) to the power −3/5 [s], in the broadcast shape of the arguments.
         Operations: 235.
     """
     s, e, m, M, K_Hz, chi, v0 = broadcast(s, e, m, M, K_Hz, chi, v0)
@@ -303,7 +303,7 @@ def duration_density(s, e, m, M, K_Hz, chi, v0):
 
 
 def duration_density_scalar(s, e, m, M, K_Hz, chi, v0):
-    """μv₀/F(s) times ((1 − s)(s + e))^{3/5}: the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e))^{−3/5} [s]: float twin of `duration_density` (Eq. F4)."""
+    """μv₀/F(s) times the 3/5 power of (1 − s)(s + e): the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e)) to the power −3/5 [s]: float twin of `duration_density` (Eq. F4)."""
     s = numpy.float64(s)
     e = numpy.float64(e)
     m = numpy.float64(m)

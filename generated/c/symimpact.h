@@ -678,7 +678,7 @@ void symimpact_hunt_crossley_penetration_at_speed_batch(size_t n, const double *
 double symimpact_hunt_crossley_force_at_speed(double s, double m, double M, double K_Hz, double chi, double v0);
 void symimpact_hunt_crossley_force_at_speed_batch(size_t n, const double *restrict s, const double *restrict m, const double *restrict M, const double *restrict K_Hz, const double *restrict chi, const double *restrict v0, double *restrict out);
 
-/* μv₀/F(s) times ((1 − s)(s + e))^{3/5}: the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e))^{−3/5} [s], Eq. F4 (derived here, beyond the paper).
+/* μv₀/F(s) times the 3/5 power of (1 − s)(s + e): the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e)) to the power −3/5 [s], Eq. F4 (derived here, beyond the paper).
  *   s: Rate of penetration as a fraction s of v₀ (−e ≤ s ≤ 1) [1]
  *   e: Coefficient of restitution e (from hunt_crossley_restitution) [1]
  *   m: Impact mass m [kg]

@@ -1,5 +1,5 @@
 function r = hunt_crossley_duration_density(s, e, m, M, K_Hz, chi, v0)
-% HUNT_CROSSLEY_DURATION_DENSITY  μv₀/F(s) times ((1 − s)(s + e))^{3/5}: the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e))^{−3/5} [s], Eq. F4 (derived here, beyond the paper).
+% HUNT_CROSSLEY_DURATION_DENSITY  μv₀/F(s) times the 3/5 power of (1 − s)(s + e): the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e)) to the power −3/5 [s], Eq. F4 (derived here, beyond the paper).
 %
 %   r = hunt_crossley_duration_density(s, e, m, M, K_Hz, chi, v0)
 %
