@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import mpmath as mp
 import sympy as sp
+from sympy.codegen.cfunctions import log1p
 
 from .board import Arg, Board
 
@@ -318,8 +319,6 @@ def derive() -> Board:
     )
 
     # --- kernels -------------------------------------------------------------------------------
-    from sympy.codegen.cfunctions import log1p as _log1p
-
     def h_kernel(p):
         """h(p) = (p − log1p(p))/p², by its series where the difference would cancel."""
         h_series = sum((-1) ** k * p ** (k - 2) / k for k in range(2, ORDER + 3))
@@ -327,7 +326,7 @@ def derive() -> Board:
         # 0/0) where compiled code evaluates both branches before choosing
         return sp.Piecewise(
             (h_series, sp.Abs(p) < SERIES_BELOW),
-            ((p - _log1p(p)) / sp.Max(p**2, SERIES_BELOW**2), True),
+            ((p - log1p(p)) / sp.Max(p**2, SERIES_BELOW**2), True),
         )
 
     m, M = sp.symbols("m M", positive=True)
@@ -339,7 +338,7 @@ def derive() -> Board:
     av0 = Arg(v0, "m/s", "Approach speed v₀", 1e-3, 3.0, log=True)
     as_ = Arg(s, "1", "Rate of penetration as a fraction s of v₀ (−e ≤ s ≤ 1)", -0.9, 1.0)
     zz = chi * v0
-    g_emit = lambda p: p - _log1p(p)  # noqa: E731
+    g_emit = lambda p: p - log1p(p)  # noqa: E731
     e_it = sp.Symbol("e", positive=True)
     series_e = series.subs(z, zz)
     large_e = (1 - sp.exp(-(1 + g_emit(zz)))) / sp.Max(zz, SERIES_BELOW)  # = zz on its branch
@@ -431,8 +430,8 @@ def derive() -> Board:
     w(
         "duration_integrand_regular_part",
         sp.Piecewise(
-            (1 / ((1 + z * s) * (s + e)) * (r_top * sp.Function("h")(z * r_top) + s), s >= 0),
-            ((e - rho * sp.Function("h")(z * rho)) / ((1 - e * z) * (1 - s)), True),
+            (1 / ((1 + z * s) * (s + e)) * (r_top * h(z * r_top) + s), s >= 0),
+            ((e - rho * h(z * rho)) / ((1 - e * z) * (1 - s)), True),
         ),
         r"P(s)/((1 − s)(s + e)): finite at both ends (1/((1 + z)(1 + e)) and e/((1 − ez)(1 + e))), "
         r"so the duration is a weight $((1-s)(s+e))^{-3/5}$ times a smooth function.",

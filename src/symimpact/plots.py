@@ -61,7 +61,7 @@ def plot_simulation(result: Any, path: str | os.PathLike) -> None:
 def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.PathLike) -> None:
     """Forced response with rigid impacts (Eq. F1, F2): x(t) with the impacts marked, the kept
     (steady) window after ``discard`` periods shaded with ±amplitude dotted, and the relative displacement z = y − x between the walls ±d/2."""
-    from .display import label, shown
+    from .display import display_unit, label, shown
 
     plt = _pyplot()
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
@@ -91,8 +91,7 @@ def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.Pa
         + (
             ""
             if st is None
-            else f", steady amplitude {shown('x', st.amplitude):.4g} "
-            f"{label('x').split('[')[1].rstrip(']')}"
+            else f", steady amplitude {shown('x', st.amplitude):.4g} {display_unit('x')}"
         )
     )
     fig.tight_layout()

@@ -117,7 +117,7 @@ class _Once(argparse.Action):
         setattr(namespace, self.dest, values)
 
 
-def add_forcing(p: argparse.ArgumentParser, required: bool = False) -> None:
+def add_forcing(p: argparse.ArgumentParser) -> None:
     """The harmonic forcing options (Eq. F1): --force F0 and/or --base X_b, at --omega Ω or
     --freq f, with --phase φ; each may be given once."""
     g = p.add_argument_group(
@@ -136,7 +136,6 @@ def add_forcing(p: argparse.ArgumentParser, required: bool = False) -> None:
         help="Newton's coefficient of restitution of the rigid law, 0 ≤ e ≤ 1",
         **once,
     )
-    p.set_defaults(forcing_required=required)
 
 
 def has_forcing(ns: argparse.Namespace) -> bool:

@@ -31,6 +31,7 @@ def add_parser(sub: Any) -> None:
 
 
 def run(ns) -> None:
+    from ..display import display_unit, shown
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced import periodic_orbits
 
@@ -53,11 +54,14 @@ def run(ns) -> None:
         )
     else:
         lines = [f"Ω {forcing.omega:.6g} rad/s: {len(orbits)} symmetric two-impact orbit(s)"]
-        lines.append("impact phase [rad]  amplitude [mm]  impact speed [m/s]  admissible  stable  "
-                     "largest |multiplier|")  # fmt: skip
+        unit = display_unit("x")  # the amplitude is a displacement of the main mass
+        lines.append(
+            f"impact phase [rad]  amplitude [{unit}]  impact speed [m/s]  admissible  stable  "
+            "largest |multiplier|"
+        )
         for o in orbits:
             lines.append(
-                f"{o.impact_phase:18.6f}  {o.amplitude * 1e3:14.6g}  {o.impact_speed:18.6g}  "
+                f"{o.impact_phase:18.6f}  {shown('x', o.amplitude):14.6g}  {o.impact_speed:18.6g}  "
                 f"{'yes' if o.admissible else 'no':>10}  {'yes' if o.stable else 'no':>6}  "
                 f"{o.multipliers[0]:.6g}"
             )

@@ -106,7 +106,7 @@ def run_forced(ns) -> None:
     """The forced response with rigid impacts (Eq. F1, F2) and its steady state."""
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced import simulate_forced
-    from ..forced.simulation import MAX_MULTIPLE
+    from ..forced.simulation import MAX_MULTIPLE, period_count
 
     if ns.contact != "rigid":
         raise MethodNotApplicable(
@@ -128,10 +128,8 @@ def run_forced(ns) -> None:
         raise ParameterError("e", "contact rigid needs Newton's coefficient of restitution --e")
     system = system_from(ns)
     forcing = forcing_from(ns)
-    periods = "400" if ns.periods is None else ns.periods
-    discard = ns.discard
-    if discard is None:
-        discard = str(_default_discard(periods))
+    periods = period_count("periods", "400" if ns.periods is None else ns.periods)
+    discard = int(0.75 * periods) if ns.discard is None else period_count("discard", ns.discard)
     res = simulate_forced(
         system,
         forcing,
@@ -145,11 +143,11 @@ def run_forced(ns) -> None:
         ydot0=ns.ydot0,
     )
     if ns.csv or ns.plot:
-        _forced_outputs(ns, res, int(discard))
+        _forced_outputs(ns, res, discard)
     st = res.steady
     text = (
         f"Ω {forcing.omega:.6g} rad/s ({forcing.freq:.6g} Hz), {len(res.impacts)} impacts in "
-        f"{len(res.period_max)} periods; steady over the last {len(res.period_max) - int(discard)}"
+        f"{len(res.period_max)} periods; steady over the last {len(res.period_max) - discard}"
         f": amplitude {quantity_text('x', st.amplitude)}, {st.impacts_per_period:.4g} impacts "
         "per period, "
         + (
@@ -161,16 +159,6 @@ def run_forced(ns) -> None:
     )
     text += "".join(f"\nnote: {n}" for n in res.notes)
     emit(ns, res.as_dict(), text)
-
-
-def _default_discard(periods: str) -> int:
-    from ..errors import ParameterError
-
-    try:
-        n = float(periods)
-    except ValueError:
-        raise ParameterError("periods", f"{periods!r} is not a whole number") from None
-    return int(0.75 * n) if n == int(n) and n >= 2 else 0
 
 
 def _forced_outputs(ns, res, discard: int) -> None:

@@ -138,10 +138,10 @@ def simulate_forced(
     e = nonnegative_float("e", e)
     if e > 1.0:
         raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
-    n_periods = _count("periods", periods)
+    n_periods = period_count("periods", periods)
     if n_periods < 1:
         raise ParameterError("periods", "must be at least 1")
-    n_discard = 0 if discard is None else _count("discard", discard)
+    n_discard = 0 if discard is None else period_count("discard", discard)
     if discard is not None and n_discard >= n_periods:
         raise ParameterError("discard", f"{n_discard} leaves none of the {n_periods} periods")
     state = [
@@ -192,7 +192,8 @@ def simulate_forced(
     return result
 
 
-def _count(name: str, value: Any) -> int:
+def period_count(name: str, value: Any) -> int:
+    """A whole number of forcing periods, 0 to 10⁷ (``periods``, ``discard``)."""
     v = si_float(name, value)
     if v != int(v) or v < 0:
         raise ParameterError(name, f"must be a whole number of periods, got {v:g}")
