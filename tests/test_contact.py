@@ -169,3 +169,15 @@ def test_one_return_type_whatever_the_method():
     )
     with pytest.raises(ParameterError, match="contact_durations"):
         contact_duration(s, 0.075, "all")
+
+
+@pytest.mark.parametrize(
+    "law, name, value",
+    [("cubic", "k1", -1.0), ("hertz", "k1", 0.0), ("linear", "a", -5.0), ("hertz", "b", -1.0)],
+)
+def test_a_stiffness_given_is_checked_whichever_law_runs(law, name, value):
+    # found by the fuzz under another hash seed: a cubic system took k1 = −1, and Eq. 35's
+    # duration then reached math.sqrt of a negative number instead of refusing
+    kw = {"a": 1.5e5, "b": 80.0, "k_hz": 1000.0, "k1": 120.0, name: value}
+    with pytest.raises(ParameterError, match=f"^{name}: "):
+        ImpactSystem(M=1, K=1e4, m=0.25, gap="9 mm", contact=law, **kw)

@@ -258,10 +258,10 @@ ODD_VALUES = st.sampled_from(
 
 
 @st.composite
-def _values(draw, dest: str):
-    """A valid value for ``dest`` in 85 % of draws, else an odd one (hypothesis's own choice among
-    alternatives leans to the later ones, so the odds are drawn explicitly)."""
-    if draw(st.integers(0, 99)) < 85:
+def _values(draw, dest: str, odd_percent: int = 15):
+    """A valid value for ``dest`` in (100 − odd_percent) % of draws, else an odd one (hypothesis's
+    own choice among alternatives leans to the later ones, so the odds are drawn explicitly)."""
+    if draw(st.integers(0, 99)) < 100 - odd_percent:
         return draw(st.sampled_from(GOOD[dest]))
     return draw(ODD_VALUES)
 
@@ -322,7 +322,9 @@ SYSTEM_KEYS = ("M", "K", "C", "zeta", "m", "gap", "k_hz", "k1", "c1", "a", "b")
 
 @st.composite
 def _system_kwargs(draw):
-    keys = draw(st.sets(st.sampled_from(SYSTEM_KEYS)))
+    # in SYSTEM_KEYS' order: a set's iteration order follows PYTHONHASHSEED, which would make the
+    # derandomized draws differ from one process to the next
+    keys = sorted(draw(st.sets(st.sampled_from(SYSTEM_KEYS))), key=SYSTEM_KEYS.index)
     kw = {k: draw(_values(k)) for k in keys}
     for k in ("M", "K", "m", "gap"):  # the required ones, mostly valid
         kw.setdefault(k, draw(st.sampled_from(GOOD[k])))
@@ -380,7 +382,9 @@ def test_api_fuzz_contact():
     seen = _fuzz(
         _contact_case,
         kw=_system_kwargs(),
-        v0=_values("v0"),
+        # odd more often than the system's values: a call is refused on v0 only when the system
+        # (eleven values, each odd 15 % of the time) got through, about 4 cases in 10
+        v0=_values("v0", odd_percent=35),
         method=st.sampled_from(["perturbation", "hertz", "linear", "numerical", "all", "bogus"]),
         ba=_values("ba"),
         free=st.booleans(),

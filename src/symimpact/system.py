@@ -93,6 +93,14 @@ class ImpactSystem:
                 set_(self, name, si_float(name, v))
         if self.k_hz is not None:
             set_(self, "k_hz", positive_float("k_hz", self.k_hz))
+        # a stiffness given is checked whichever law the run uses: other methods (Eq. 35's
+        # duration, the fits) read it too, and a negative one means nothing there either
+        if self.k1 is not None:
+            positive("k1", self.k1)
+        if self.a is not None:
+            nonnegative("a", self.a)
+        if self.b is not None:
+            positive("b", self.b)
         if self.contact == "cubic" or (self.a is None and self.b is None and self.k_hz):
             if self.a is None and self.b is None and self.k_hz is not None:
                 set_(self, "a", float(contact_fits.cubic_fit_a(self.k_hz, self.delta_max)))
