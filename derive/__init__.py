@@ -26,6 +26,7 @@ STEPS = (
     "rigid_impact",
     "periodic_orbit",
     "hunt_crossley",
+    "slow_flow",
 )
 
 

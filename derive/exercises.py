@@ -267,4 +267,28 @@ with mp.workdps(30):
     print(f"e = {ev}: pulls during {sp.N(100 * share, 4)} % of the contact")""",
         ),
     ),
+    "slow_flow": (
+        Exercise(
+            "How hard the walls must be hit",
+            "The activation threshold ξ_a = ρ/√(1 + ρ²): the primary's amplitude, in half "
+            "clearances, below which the impact mass cannot reach both walls each period.",
+            """for ev in (1, 0.9, 0.6, 0.3, 0):
+    rv = rho_value.subs(e, ev)
+    print(f"e = {ev}: rho = {sp.N(rv, 4)}, threshold = {sp.N(threshold.subs(rho, rv), 4)}")""",
+        ),
+        Exercise(
+            "The best clearance",
+            "Along the backbone, the clearance d_b(ξ) rises and falls: its largest value is the "
+            "best clearance.  The issue's system (M 1 kg, K 1000 N/m, C 0.5 N s/m, m 0.05 kg, "
+            "F0 2 N, e 0.6), scanned over ξ.",
+            """import numpy as np
+vals = {M: 1, K: 1000, C: sp.Rational(1, 2), m: sp.Rational(1, 20), F0: 2, Xb: 0,
+        rho: rho_value.subs(e, sp.Rational(3, 5))}
+f = sp.lambdify(xi, backbone_clear.subs(Theta, Theta_of_xi).subs(vals), "numpy")
+grid = np.geomspace(float(threshold.subs(vals)) * 1.0001, 50, 4000)
+best = grid[np.argmax(f(grid))]
+print(f"best clearance about {1e3 * f(best):.3f} mm at xi = {best:.3f}: "
+      f"primary peak {1e3 * best * f(best) / 2:.3f} mm")""",
+        ),
+    ),
 }

@@ -19,6 +19,7 @@ from . import (
     rigid_impact,
     periodic_orbit,
     hunt_crossley,
+    slow_flow,
 )
 
 __all__ = [
@@ -33,4 +34,5 @@ __all__ = [
     "rigid_impact",
     "periodic_orbit",
     "hunt_crossley",
+    "slow_flow",
 ]
