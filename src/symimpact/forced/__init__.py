@@ -2,21 +2,38 @@
 
 - :class:`Forcing`: a force F0·cos(Ωt + φ) on the main mass and/or base motion X_b·cos(Ωt + φ).
 - :func:`simulate_forced`: event-driven simulation with rigid impacts (Eq. F1, F2), chatter and
-  sticking; its ``steady`` summary (amplitude, impacts per period, period of the motion).
+  sticking, or with a compliant contact (cubic, Hertz, linear, Hunt–Crossley, Eq. F4) integrated
+  with the forcing; its ``steady`` summary (amplitude, impacts per period, period of the motion).
 - :func:`periodic_orbits`: the symmetric two-impact periodic motions in closed form (Eq. F3),
   admissibility and stability.
+- :func:`slow_flow_responses`, :func:`backbone`, :func:`best_clearance`: the 1:1 slow flow of a
+  vibro-impact absorber (Eq. F5), for a light impact mass.
 """
 
 from .forcing import Forcing
 from .periodic import PeriodicOrbit, periodic_orbits
 from .simulation import ForcedResult, Steady, simulate_forced, steady_state
+from .slow_flow import (
+    Backbone,
+    BestClearance,
+    SlowFlowResponse,
+    backbone,
+    best_clearance,
+    slow_flow_responses,
+)
 
 __all__ = [
+    "Backbone",
+    "BestClearance",
     "ForcedResult",
     "Forcing",
     "PeriodicOrbit",
+    "SlowFlowResponse",
     "Steady",
+    "backbone",
+    "best_clearance",
     "periodic_orbits",
     "simulate_forced",
+    "slow_flow_responses",
     "steady_state",
 ]

@@ -18,7 +18,7 @@ import numpy as np
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from ..units import nonnegative_float, si_float
-from . import _rigid
+from . import _compliant, _rigid
 from .forcing import Forcing
 
 #: Chatter is taken to its accumulation point when the remaining impacts would all fall within
@@ -71,6 +71,12 @@ class ForcedResult:
     final_stuck: bool
     steady: Steady | None = None
     notes: list[str] = field(default_factory=list)
+    #: "rigid", or the compliant law ("cubic", "hertz", "linear", "hunt-crossley")
+    contact: str = "rigid"
+    #: Hunt–Crossley's χ [s/m] (None for the other laws)
+    chi: float | None = None
+    #: compliant runs: the state (x, ẋ, z, ẏ) at t = k·T/samples_per_period
+    samples: np.ndarray | None = None
 
     @property
     def impacts(self) -> np.ndarray:
@@ -82,7 +88,8 @@ class ForcedResult:
         return {
             "system": {k: self.system.as_dict()[k] for k in ("M", "K", "C", "m", "gap")},
             "forcing": self.forcing.as_dict(),
-            "contact": "rigid",
+            "contact": self.contact,
+            **({"chi": self.chi} if self.chi is not None else {}),
             "e": self.e,
             "t_end": self.t_end,
             "n_impacts": len(self.impacts),
@@ -107,12 +114,17 @@ EVENT_COLUMNS = (
 )
 
 
+#: The compliant laws the forced simulation integrates (besides "rigid").
+COMPLIANT = ("cubic", "hertz", "linear", "hunt-crossley")
+
+
 def simulate_forced(
     system: ImpactSystem,
     forcing: Forcing,
     *,
     contact: str = "rigid",
     e: Any = None,
+    chi: Any = None,
     periods: Any = 100,
     discard: Any = None,
     x0: Any = 0.0,
@@ -120,24 +132,39 @@ def simulate_forced(
     y0: Any = 0.0,
     ydot0: Any = 0.0,
     chatter: float = CHATTER,
+    samples_per_period: int = 16,
 ) -> ForcedResult:
     """Forced response of the primary with the impact damper, for ``periods`` forcing periods.
 
-    Implements Eq. F1 (forced flight, Step 8) between impacts and Eq. F2 (rigid impact law with
-    Newton's coefficient ``e``, Step 9) at them; chatter accumulates to its limit point
+    ``contact="rigid"``: Eq. F1 (forced flight, Step 8) between impacts and Eq. F2 (rigid impact
+    law with Newton's coefficient ``e``, Step 9) at them; chatter accumulates to its limit point
     t∞ = t₀ + 2w/(a(1 − e)) and a sticking phase follows while the contact force is compressive.
-    With ``discard`` (a number of periods) the result's ``steady`` describes the periods after
-    it.  ``system`` supplies M, K, C, m and the clearance d (its compliant law is not used).
+    ``contact`` "cubic", "hertz", "linear" (the system's law parameters and c1) or
+    "hunt-crossley" (the system's k_hz and ``chi`` [s/m], Eq. F4): Eq. F1 in flight, the contact
+    phase integrated with the forcing (:mod:`symimpact.forced._compliant`).  With ``discard`` (a
+    number of periods) the result's ``steady`` describes the periods after it.
     """
-    if contact != "rigid":
-        raise MethodNotApplicable(
-            "simulate_forced", f"contact {contact!r}: the forced simulation handles rigid impacts"
+    if contact != "rigid" and contact not in COMPLIANT:
+        raise ParameterError(
+            "contact", f"must be rigid or one of {', '.join(COMPLIANT)}, got {contact!r}"
         )
-    if e is None:
-        raise ParameterError("e", "rigid impacts need Newton's coefficient of restitution e")
-    e = nonnegative_float("e", e)
-    if e > 1.0:
-        raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+    if contact == "rigid":
+        if e is None:
+            raise ParameterError("e", "rigid impacts need Newton's coefficient of restitution e")
+        e = nonnegative_float("e", e)
+        if e > 1.0:
+            raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+    elif e is not None:
+        raise ParameterError("e", f"applies to rigid impacts; contact {contact} sets its own")
+    if contact == "hunt-crossley":
+        if chi is None:
+            raise ParameterError("chi", "the Hunt–Crossley law needs its damping χ [s/m]")
+        chi = nonnegative_float("chi", chi)
+        if system.k_hz is None:
+            raise ParameterError("k_hz", "the Hunt–Crossley law needs the Hertz stiffness k_hz")
+    elif chi is not None:
+        raise ParameterError("chi", "applies to the Hunt–Crossley contact only")
+    law = _law_parameters(system, contact, chi)
     n_periods = period_count("periods", periods)
     if n_periods < 1:
         raise ParameterError("periods", "must be at least 1")
@@ -152,22 +179,36 @@ def simulate_forced(
         raise ParameterError("y0", f"abs(y0 − x0) must not exceed d/2 = {h:g} m")
     if not (chatter >= 0.0):
         raise ParameterError("chatter", "must be a fraction ≥ 0 of the forcing period")
+    if samples_per_period < 16 or samples_per_period % 16:
+        raise ParameterError("samples_per_period", "must be a multiple of 16")
     p = np.zeros(_rigid.N_PARAMS)
     p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
-    p[_rigid.P_m], p[_rigid.P_h], p[_rigid.P_e] = system.m, h, e
+    p[_rigid.P_m], p[_rigid.P_h], p[_rigid.P_e] = system.m, h, 1.0 if e is None else e
     p[_rigid.P_F0], p[_rigid.P_XB] = forcing.F0, forcing.X_b
     p[_rigid.P_W], p[_rigid.P_PHI], p[_rigid.P_CHAT] = forcing.omega, forcing.phase, chatter
     t_end = n_periods * forcing.period
-    status, events, n_ev, period_max, ledger, final = _rigid.run(
-        p, np.array(state), t_end, MAX_EVENTS
-    )
+    samples = None
+    potential = 0.0
+    if contact == "rigid":
+        status, events, n_ev, period_max, ledger, final = _rigid.run(
+            p, np.array(state), t_end, MAX_EVENTS
+        )
+    else:
+        status, events, period_max, ledger, final, samples = _compliant.run(
+            contact, law, p, state, t_end, MAX_EVENTS, samples_per_period
+        )
+        n_ev = len(events)
+        if final is not None and final[5]:
+            side = 1.0 if final[3] > final[1] else -1.0
+            delta = side * (final[3] - final[1]) - h
+            potential = _compliant.contact_potential(contact, law, delta)
     if status == _rigid.TOO_MANY_EVENTS:
         raise SymimpactError(
             f"more than {MAX_EVENTS:,} impacts in {n_periods} periods: raise the chatter "
             "fraction or shorten the run"
         )
     events = events[:n_ev].copy()
-    energy = _ledger(system, forcing, state, final, ledger)
+    energy = _ledger(system, forcing, state, final, ledger, potential)
     result = ForcedResult(
         system=system,
         forcing=forcing,
@@ -178,7 +219,10 @@ def simulate_forced(
         energy=energy,
         final_state=(float(final[1]), float(final[2]), float(final[3]), float(final[4])),
         initial_state=tuple(state),
-        final_stuck=bool(final[5]),
+        final_stuck=bool(final[5]) if contact == "rigid" else False,
+        contact=contact,
+        chi=chi,
+        samples=samples,
     )
     if discard is not None:
         steady = steady_state(result, n_discard)
@@ -190,6 +234,26 @@ def simulate_forced(
             )
         result = replace(result, steady=steady, notes=notes)
     return result
+
+
+def _law_parameters(system: ImpactSystem, contact: str, chi: float | None) -> dict:
+    """The compliant law's parameters (SI) from the system, refused in one line when missing."""
+    if contact == "rigid":
+        return {}
+    if contact == "cubic" and (system.a is None or system.b is None):
+        raise ParameterError("a", "the cubic contact law needs a and b (or k_hz to fit them)")
+    if contact == "linear" and system.k1 is None:
+        raise ParameterError("k1", "the linear contact law needs k1 (or k_hz to fit it)")
+    if contact == "hertz" and system.k_hz is None:
+        raise ParameterError("k_hz", "the Hertz contact law needs k_hz")
+    return {
+        "a": system.a,
+        "b": system.b,
+        "k_hz": system.k_hz,
+        "k1": system.k1,
+        "c1": system.c1,
+        "chi": chi,
+    }
 
 
 def period_count(name: str, value: Any) -> int:
@@ -210,10 +274,13 @@ def _energy(system: ImpactSystem, forcing: Forcing, t: float, s) -> float:
     )
 
 
-def _ledger(system, forcing, state0, final, ledger) -> dict[str, float]:
-    """The energy balance: E(end) − E(0) = work of the forcing − dissipation by C − impact loss."""
+def _ledger(system, forcing, state0, final, ledger, potential=0.0) -> dict[str, float]:
+    """The energy balance: E(end) − E(0) = work of the forcing − dissipation by C − impact loss
+    (rigid) or the contact's damping (compliant); ``potential``: the contact's elastic energy
+    when the run ends in contact."""
     e0 = _energy(system, forcing, 0.0, state0)
     e1 = _energy(system, forcing, float(final[0]), [final[1], final[2], final[3], final[4]])
+    e1 += potential
     work, d_c, d_imp = (float(v) for v in ledger)
     residual = (e1 - e0) - (work - d_c - d_imp)
     scale = max(abs(work), d_c + d_imp, e0, e1, 1e-300)
@@ -235,6 +302,8 @@ def state_at(result: ForcedResult, times: np.ndarray) -> np.ndarray:
     from ..generated import forced_flight as ff
 
     times = np.asarray(times, dtype=float)
+    if result.samples is not None:
+        return _sampled(result, times)
     ev = result.events
     sysm, f = result.system, result.forcing
     h = sysm.gap / 2.0
@@ -261,6 +330,20 @@ def state_at(result: ForcedResult, times: np.ndarray) -> np.ndarray:
         out[sel, 2] = z0 if stuck else z0 + u0 * tau - (x - x0)
         out[sel, 3] = v if stuck else u0
     return out
+
+
+def _sampled(result: ForcedResult, times: np.ndarray) -> np.ndarray:
+    """A compliant run's recorded states at ``times`` (each on its sample grid k·T/n)."""
+    n = (result.samples.shape[0] - 1) // max(len(result.period_max), 1)
+    dt = result.forcing.period / n
+    k = np.rint(times / dt).astype(int)
+    if np.any(np.abs(times - k * dt) > 1e-9 * result.forcing.period) or np.any(
+        (k < 0) | (k >= result.samples.shape[0])
+    ):
+        raise MethodNotApplicable(
+            "state_at", f"a compliant run records the state at k·T/{n} only (its sample grid)"
+        )
+    return result.samples[k]
 
 
 #: Candidate section phases: sixteen per period; the one farthest from every impact is used.
