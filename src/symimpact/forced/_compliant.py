@@ -22,41 +22,37 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
+from .. import _stepper
 from . import _rigid
 
-CUBIC, HERTZ, LINEAR, HUNT_CROSSLEY = "cubic", "hertz", "linear", "hunt-crossley"
+HUNT_CROSSLEY = "hunt-crossley"
 #: DOP853's tolerances in contact: rtol 1e-11 (the closed-form flight carries ~1e-15; a tighter
 #: rtol than ~1e-12 only adds steps), atol 1e-14 of the clearance (state components in m, m/s
 #: scaled by the contact's own time scale would be finer than needed for a 1e-8 amplitude).
 RTOL = 1e-11
 
 
-def contact_force(law: str, q: dict, delta: float, ddelta: float) -> tuple[float, float]:
+def _parts(law: str, q: np.ndarray, chi: float, delta: float, ddelta: float):
     """(elastic, damping) parts of the contact force [N] at penetration δ [m] and rate δ̇ [m/s]:
-    cubic aδ³ + bδ (Eq. 8), Hertz k_hz·δ^1.5 (Eq. 9), linear k1·δ (Eq. 35), each with c1·δ̇; or
-    Hunt–Crossley k_hz·δ^1.5·(1 + χδ̇) (Eq. F4)."""
-    if law == CUBIC:
-        return q["a"] * delta**3 + q["b"] * delta, q["c1"] * ddelta
-    if law == HERTZ:
-        return q["k_hz"] * delta**1.5, q["c1"] * ddelta
-    if law == LINEAR:
-        return q["k1"] * delta, q["c1"] * ddelta
-    elastic = q["k_hz"] * delta**1.5
-    return elastic, elastic * q["chi"] * ddelta
+    the stepper's laws (Eq. 8, 9, 35) with c1·δ̇, or Hunt–Crossley k_hz·δ^1.5·(1 + χδ̇) (Eq. F4).
+    ``q``: the stepper's parameter vector (:func:`symimpact._stepper.pack`)."""
+    elastic = _stepper.contact_force(_stepper.LAWS[_base(law)], q, delta, 0.0)
+    if law == HUNT_CROSSLEY:
+        return elastic, elastic * chi * ddelta
+    return elastic, q[_stepper.P_c1] * ddelta
 
 
-def contact_potential(law: str, q: dict, delta: float) -> float:
-    """Elastic energy stored in the contact at penetration δ [J]."""
-    if delta <= 0.0:
-        return 0.0
-    if law == CUBIC:
-        return q["a"] * delta**4 / 4.0 + q["b"] * delta**2 / 2.0
-    if law == LINEAR:
-        return q["k1"] * delta**2 / 2.0
-    return q["k_hz"] * delta**2.5 / 2.5
+def _base(law: str) -> str:
+    """The stepper's elastic law under ``law`` (Hunt–Crossley's is Hertz's)."""
+    return "hertz" if law == HUNT_CROSSLEY else law
 
 
-def run(law, q, p, state0, t_end, max_events, samples):
+def contact_potential(law: str, q: np.ndarray, delta: float) -> float:
+    """Elastic energy stored in the contact at penetration δ [J] (the stepper's, by law)."""
+    return _stepper.contact_potential(_stepper.LAWS[_base(law)], q, delta)
+
+
+def run(law, q, chi, p, state0, t_end, max_events, samples):
     """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end; returns the rigid run's outputs
     (status, events, n_events, period_max, ledger = (forcing work, C's dissipation, contact's
     dissipation), final = (t, x, ẋ, y, ẏ, 1.0 if it ended in contact)) and the sampled states
@@ -93,7 +89,7 @@ def run(law, q, p, state0, t_end, max_events, samples):
         xb, vb = Xb * math.cos(th), -Xb * W * math.sin(th)
         delta = side * (yy - xx) - h
         dd = side * (uu - vv)
-        el, dm = contact_force(law, q, max(delta, 0.0), dd)
+        el, dm = _parts(law, q, chi, max(delta, 0.0), dd)
         F = el + dm
         rel = vv - vb
         a_x = (F0 * math.cos(th) - K * (xx - xb) - C * rel + side * F) / M

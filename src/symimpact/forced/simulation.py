@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import _stepper
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from ..units import nonnegative_float, si_float
@@ -164,7 +165,7 @@ def simulate_forced(
             raise ParameterError("k_hz", "the Hunt–Crossley law needs the Hertz stiffness k_hz")
     elif chi is not None:
         raise ParameterError("chi", "applies to the Hunt–Crossley contact only")
-    law = _law_parameters(system, contact, chi)
+    law = _law_parameters(system, contact)
     n_periods = period_count("periods", periods)
     if n_periods < 1:
         raise ParameterError("periods", "must be at least 1")
@@ -195,7 +196,7 @@ def simulate_forced(
         )
     else:
         status, events, period_max, ledger, final, samples = _compliant.run(
-            contact, law, p, state, t_end, MAX_EVENTS, samples_per_period
+            contact, law, chi, p, state, t_end, MAX_EVENTS, samples_per_period
         )
         n_ev = len(events)
         if final is not None and final[5]:
@@ -236,24 +237,18 @@ def simulate_forced(
     return result
 
 
-def _law_parameters(system: ImpactSystem, contact: str, chi: float | None) -> dict:
-    """The compliant law's parameters (SI) from the system, refused in one line when missing."""
+def _law_parameters(system: ImpactSystem, contact: str) -> np.ndarray:
+    """The compliant law's parameters as the stepper's vector, refused in one line when
+    missing."""
     if contact == "rigid":
-        return {}
+        return np.zeros(0)
     if contact == "cubic" and (system.a is None or system.b is None):
         raise ParameterError("a", "the cubic contact law needs a and b (or k_hz to fit them)")
     if contact == "linear" and system.k1 is None:
         raise ParameterError("k1", "the linear contact law needs k1 (or k_hz to fit it)")
     if contact == "hertz" and system.k_hz is None:
         raise ParameterError("k_hz", "the Hertz contact law needs k_hz")
-    return {
-        "a": system.a,
-        "b": system.b,
-        "k_hz": system.k_hz,
-        "k1": system.k1,
-        "c1": system.c1,
-        "chi": chi,
-    }
+    return _stepper.pack(system, 0.0, 0.0, 0.0)
 
 
 def period_count(name: str, value: Any) -> int:

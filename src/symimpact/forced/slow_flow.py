@@ -61,10 +61,6 @@ def _restitution(e: Any) -> float:
     return e
 
 
-def _rho(e: float) -> float:
-    return float(sf.rho(e))
-
-
 def _between_walls(xi: float, theta: float, delta: float) -> bool:
     """The relative motion Θ·tri(τ − Δ) − ξ·cos τ (in half clearances) stays within ±1 over the
     half period from the impact on the wall +d/2 (Eq. F5's ansatz)."""
@@ -92,7 +88,7 @@ def slow_flow_responses(system: ImpactSystem, forcing: Forcing, e: Any) -> list[
     coefficients = [float(getattr(sf, f"response_quartic_{p}")(*args)) for p in (4, 3, 2, 1, 0)]
     if not any(coefficients):
         return []
-    rho = _rho(e)
+    rho = float(sf.rho(e))
     out = []
     for root in np.roots(coefficients):
         if abs(root.imag) > IMAG_SHARE * abs(root) or root.real <= 0.0:
@@ -174,7 +170,7 @@ def best_clearance(system: ImpactSystem, forcing: Forcing, e: Any) -> BestCleara
             )
         )
 
-    lo = math.log(max(threshold, 1e-300) * (1.0 + 1e-9)) if threshold > 0 else math.log(1e-9)
+    lo = math.log(threshold * (1.0 + 1e-9)) if threshold > 0.0 else math.log(1e-9)  # e = 1
     # d_b rises from the threshold and falls like 1/ξ for large ξ: scan, then refine
     grid = np.linspace(lo, lo + math.log(1e6), 241)
     values = np.array([minus_clearance(g) for g in grid])
