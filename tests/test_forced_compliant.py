@@ -129,3 +129,16 @@ def test_compliant_refusals_are_one_line():
         simulate_forced(s, f, contact="hertz", e=0.5)
     with pytest.raises(ParameterError, match=r"^contact: "):
         simulate_forced(s, f, contact="sticky")
+
+
+@pytest.mark.parametrize("contact", ["rigid", "linear"])
+def test_every_period_is_recorded_when_n_times_t_rounds_below_n(contact):
+    """At Ω = 36 rad/s, 25·T/T rounds below 25 (so do about 8 % of the period counts): the run
+    must still record the largest abs(x) of all 25 periods and, compliant, 25·16 + 1 states."""
+    assert math.floor(25 * (2 * math.pi / W) / (2 * math.pi / W)) == 24  # the case in question
+    s = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e7, c1=200.0)
+    kw = {"e": E} if contact == "rigid" else {}
+    res = simulate_forced(s, Forcing(F0=2.0, omega=W), contact=contact, periods=25, **kw)
+    assert len(res.period_max) == 25 and np.all(res.period_max > 0.0)
+    if contact != "rigid":
+        assert res.samples.shape == (25 * 16 + 1, 4) and np.all(np.isfinite(res.samples))

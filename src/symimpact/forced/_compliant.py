@@ -61,7 +61,7 @@ def run(law, q, chi, p, state0, t_end, max_events, samples):
     K, C, W, F0, Xb, phi = (p[i] for i in (_rigid.P_K, _rigid.P_C, _rigid.P_W, _rigid.P_F0,
                                            _rigid.P_XB, _rigid.P_PHI))  # fmt: skip
     T_f = 2.0 * math.pi / W
-    n_periods = math.floor(t_end / T_f)
+    n_periods = round(t_end / T_f)  # a whole number of periods (floor may give one less)
     period_max = np.zeros(n_periods + 1)
     ledger = np.zeros(3)
     dt_s = T_f / samples
