@@ -1,5 +1,6 @@
-"""The forced-response command line: ``simulate`` with forcing and rigid impacts, and ``periodic``
-— the JSON contracts, --freq as Ω/2π, and bad input refused in one line naming the parameter."""
+"""The forced-response command line: ``simulate`` with forcing and rigid impacts or a compliant
+contact, and ``periodic`` — the JSON contracts, --freq as Ω/2π, and bad input refused in one line
+naming the parameter."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import math
 import pytest
 
 from symimpact.cli import main
-from symimpact.forced import Forcing, periodic_orbits
+from symimpact.forced import Forcing, periodic_orbits, simulate_forced
 from symimpact.system import ImpactSystem
 
 SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm"]
@@ -71,6 +72,38 @@ def test_simulate_forced_writes_csv_and_plot(tmp_path, capsys):
 
 
 @pytest.mark.parametrize(
+    ("law", "extra", "kw"),
+    [
+        ("hertz", ["--k-hz", "1e9", "--c1", "20"], {"k_hz": 1e9, "c1": 20.0}),
+        ("hunt-crossley", ["--k-hz", "1e9 N/m^1.5", "--chi", "0.4 s/m"], {"k_hz": 1e9}),
+        ("linear", ["--k1", "1e7 N/m", "--c1", "200 N*s/m"], {"k1": 1e7, "c1": 200.0}),
+    ],
+)
+def test_simulate_forced_with_a_compliant_contact_is_the_api_run(capsys, law, extra, kw):
+    """The command line's compliant forced run is simulate_forced's, to the last bit (the same
+    parameters reach the same code), and its JSON names the law (and χ)."""
+    argv = ["simulate", *SYSTEM, "--force", "2 N", "--omega", "36 rad/s", "--contact", law]
+    out = _json(capsys, [*argv, *extra, "--periods", "12", "--discard", "8", "--json"])
+    system = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, contact=law.replace(
+        "hunt-crossley", "hertz"), **kw)  # fmt: skip
+    chi = {"chi": 0.4} if law == "hunt-crossley" else {}
+    api = simulate_forced(system, Forcing(F0=2.0, omega=36.0), contact=law, periods=12, discard=8,
+                          **chi)  # fmt: skip
+    assert out["contact"] == law and out.get("chi") == chi.get("chi")
+    assert out["steady"]["amplitude"] == api.steady.amplitude > 0.0
+    assert out["n_impacts"] == len(api.impacts) > 0
+    assert out["energy"]["relative_residual"] < 1e-8  # the ledger with the forcing's work
+
+
+def test_simulate_compliant_forced_writes_the_sampled_csv(tmp_path, capsys):
+    csv = tmp_path / "h.csv"
+    argv = ["simulate", *SYSTEM, "--force", "2 N", "--omega", "36", "--contact", "hertz"]
+    assert main([*argv, "--k-hz", "1e9", "--periods", "5", "--csv", str(csv)]) == 0
+    assert "contact hertz" in capsys.readouterr().out
+    assert len(csv.read_text().splitlines()) == 5 * 64 + 2
+
+
+@pytest.mark.parametrize(
     ("extra", "parameter"),
     [
         (["--e", "1.5", "--omega", "30"], "e:"),
@@ -114,7 +147,14 @@ def test_a_closed_form_for_a_compliant_law_is_refused(capsys):
           "--discard", "10"], "discard:"),
         (["--e", "0.5"], "e:"),
         (["--periods", "5"], "periods:"),
-        (["--force", "2", "--omega", "30", "--e", "0.5"], "contact"),
+        (["--force", "2", "--omega", "30", "--e", "0.5"], "contact:"),
+        (["--force", "2", "--omega", "30", "--contact", "hunt-crossley"], "chi:"),
+        (["--contact", "hunt-crossley", "--chi", "1"], "force:"),
+        (["--force", "2", "--omega", "30", "--contact", "hertz", "--chi", "1"], "chi:"),
+        (["--force", "2", "--omega", "30", "--contact", "hertz", "--e", "0.5"], "e:"),
+        (["--force", "2", "--omega", "30", "--contact", "perturbation"], "free-vibration"),
+        (["--force", "2", "--omega", "30", "--contact", "hunt-crossley", "--chi", "-1"], "chi:"),
+        (["--chi", "1"], "chi:"),
     ],
 )  # fmt: skip
 def test_simulate_bad_forcing_input_is_one_line(capsys, extra, parameter):

@@ -142,3 +142,29 @@ def test_every_period_is_recorded_when_n_times_t_rounds_below_n(contact):
     assert len(res.period_max) == 25 and np.all(res.period_max > 0.0)
     if contact != "rigid":
         assert res.samples.shape == (25 * 16 + 1, 4) and np.all(np.isfinite(res.samples))
+
+
+def test_a_run_past_its_work_budget_stops_and_says_so(monkeypatch):
+    """The contacts' work budget (evaluations of the equations of motion) and the length cap in
+    natural periods stop a run that would take hours, in one line, instead of hanging."""
+    from symimpact.errors import SymimpactError
+    from symimpact.forced import _compliant
+
+    s = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, k_hz=1e9, contact="hertz")
+    f = Forcing(F0=2.0, omega=36.0)
+    monkeypatch.setattr(_compliant, "RHS_BUDGET", 3000)  # a few contacts' worth
+    with pytest.raises(SymimpactError, match="need more than 3,000 evaluations"):
+        simulate_forced(s, f, contact="hertz", periods=20)
+    with pytest.raises(ParameterError, match=r"^periods: .* natural periods"):
+        simulate_forced(s, Forcing(F0=2.0, omega=1e-9), contact="rigid", e=0.5, periods=1)
+
+
+@pytest.mark.parametrize("contact", ["rigid", "linear"])
+def test_a_subnormal_state_does_not_stop_the_root_search(contact):
+    """x0 = 1e-308 and no forcing: ẋ is subnormal, the Illinois halving underflows one end's value
+    to zero and the secant was 0/0 (a ZeroDivisionError found by fuzzing); it now bisects."""
+    s = ImpactSystem(M=1, K=100, C=1, m=0.25, gap=0.009, contact="linear", k1=120.0, c1=5.0)
+    kw = {"e": 0.5} if contact == "rigid" else {}
+    res = simulate_forced(s, Forcing(F0=0.0, omega=1e-3), contact=contact, periods=2,
+                          x0=1e-308, **kw)  # fmt: skip
+    assert len(res.impacts) == 0 and np.all(res.period_max <= 1e-308)

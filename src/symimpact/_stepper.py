@@ -684,6 +684,20 @@ def _onset(p, x0, xd0, y0, yd0, tau0, T):
 
 
 @njit(cache=True)
+def secant_point(lo, hi, flo, fhi):
+    """The secant's zero between (lo, flo) and (hi, fhi), or the midpoint where it falls outside
+    (lo, hi) or the two values are equal (the Illinois halving can underflow a subnormal value
+    to zero, and 0/0 must not stop a run)."""
+    den = fhi - flo
+    if den == 0.0:
+        return 0.5 * (lo + hi)
+    tm = (lo * fhi - hi * flo) / den
+    if not (lo < tm < hi):
+        tm = 0.5 * (lo + hi)
+    return tm
+
+
+@njit(cache=True)
 def _velocity_zero(M, K, C, x0, xd0, lo, hi, flo, fhi):
     """The τ in [lo, hi] where the free-flight velocity ẋ (Eq. 7) falls through zero, given
     ẋ(lo) = flo > 0 ≥ fhi = ẋ(hi): Illinois regula falsi (a secant that halves the value kept
@@ -693,9 +707,7 @@ def _velocity_zero(M, K, C, x0, xd0, lo, hi, flo, fhi):
         return hi
     kept = 0
     for _ in range(200):
-        tm = (lo * fhi - hi * flo) / (fhi - flo)
-        if not (lo < tm < hi):
-            tm = 0.5 * (lo + hi)
+        tm = secant_point(lo, hi, flo, fhi)
         fm = _xd_ff(tm, M, K, C, x0, xd0)
         if fm == 0.0:
             return tm

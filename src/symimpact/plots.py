@@ -59,8 +59,9 @@ def plot_simulation(result: Any, path: str | os.PathLike) -> None:
 
 
 def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.PathLike) -> None:
-    """Forced response with rigid impacts (Eq. F1, F2): x(t) with the impacts marked, the kept
-    (steady) window after ``discard`` periods shaded with ±amplitude dotted, and the relative displacement z = y − x between the walls ±d/2."""
+    """Forced response (Eq. F1; rigid impacts, Eq. F2, or a compliant contact): x(t) with the
+    impacts (contact onsets) marked, the kept (steady) window after ``discard`` periods shaded
+    with ±amplitude dotted, and the relative displacement z = y − x between the walls ±d/2."""
     from .display import display_unit, label, shown
 
     plt = _pyplot()
@@ -68,9 +69,7 @@ def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.Pa
     ax1.plot(t, shown("x", state[:, 0]), lw=0.8, label="main mass x")
     imp = result.impacts
     if len(imp):
-        from .forced.simulation import state_at
-
-        ax1.plot(imp, shown("x", state_at(result, imp)[:, 0]), "k.", ms=2, label="impact")
+        ax1.plot(imp, shown("x", result.impact_displacements), "k.", ms=2, label="impact")
     st = result.steady
     if st is not None:
         kept_from = discard * result.forcing.period
@@ -87,7 +86,9 @@ def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.Pa
     ax2.legend(fontsize=8)
     f = result.forcing
     fig.suptitle(
-        f"Ω = {f.omega:.4g} rad/s, e = {result.e:g}: {len(imp)} impacts"
+        f"Ω = {f.omega:.4g} rad/s, "
+        + (f"rigid, e = {result.e:g}" if result.contact == "rigid" else f"{result.contact} contact")
+        + f": {len(imp)} impacts"
         + (
             ""
             if st is None

@@ -39,10 +39,13 @@ COMPLIANT_LAWS = ("cubic", "hertz", "linear", "perturbation")
 
 
 def add_system(
-    p: argparse.ArgumentParser, contact: bool = True, extra_laws: tuple[str, ...] = ()
+    p: argparse.ArgumentParser,
+    contact: bool = True,
+    extra_laws: tuple[str, ...] = (),
+    contact_default: str | None = "cubic",
 ) -> None:
     """The system options (SYSTEM_OPTIONS; with ``contact``, --contact too, taking the compliant
-    laws and ``extra_laws``)."""
+    laws and ``extra_laws``; ``contact_default`` None leaves the choice to the command)."""
     g = p.add_argument_group("system (SI numbers or quantities with units)")
     for flag, helptext, default in SYSTEM_OPTIONS:
         g.add_argument(
@@ -56,14 +59,19 @@ def add_system(
         g.add_argument(
             "--contact",
             choices=COMPLIANT_LAWS + extra_laws,
-            default="cubic",
+            default=contact_default,
             help="contact law integrated numerically, or the perturbation solution (Eq. 31–33)"
             + (
                 "; rigid: instantaneous impacts with Newton's e (Eq. F2)"
                 if "rigid" in extra_laws
                 else ""
             )
-            + "; default cubic",
+            + (
+                "; hunt-crossley: K_Hz·δ^1.5·(1 + χ·δ̇) with --chi (Eq. F4)"
+                if "hunt-crossley" in extra_laws
+                else ""
+            )
+            + ("; default cubic" if contact_default == "cubic" else ""),
         )
 
 
@@ -71,14 +79,15 @@ def system_from(ns: argparse.Namespace):
     """The :class:`~symimpact.system.ImpactSystem` the system options describe."""
     from ..system import ImpactSystem
 
-    law = getattr(ns, "contact", "cubic")
+    law = getattr(ns, "contact", None) or "cubic"
     kw: dict[str, Any] = {
         k: getattr(ns, k) for k in ("M", "K", "C", "zeta", "m", "gap", "k_hz", "k1", "c1")
     }
     if kw["C"] is None and kw["zeta"] is None:
         kw["C"] = dict((f, d) for f, _, d in SYSTEM_OPTIONS)["--C"]
-    # the rigid law takes M, K, C, m and d from the system; its compliant law is not used
-    law = "cubic" if law in ("perturbation", "rigid") else law
+    # the rigid law takes M, K, C, m and d from the system; its compliant law is not used.
+    # Hunt–Crossley's elastic part is Hertz's (k_hz)
+    law = {"perturbation": "cubic", "rigid": "cubic", "hunt-crossley": "hertz"}.get(law, law)
     return ImpactSystem(contact=law, a=ns.a, b=ns.b, **kw)
 
 

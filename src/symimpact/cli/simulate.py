@@ -1,5 +1,6 @@
 """``symimpact simulate``: free vibration with impacts (Eq. 7, 10, 36–38), or the forced response
-with rigid impacts (Eq. F1, F2) and its steady state."""
+(Eq. F1) with rigid impacts (Eq. F2) or a compliant contact (Eq. 8–10, 35, F4) and its steady
+state."""
 
 from __future__ import annotations
 
@@ -25,10 +26,11 @@ def add_parser(sub: Any) -> None:
     """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
     p = sub.add_parser(
         "simulate",
-        help="free vibration with impacts (Eq. 7, 10, 36–38), or the forced response with rigid "
-        "impacts (Eq. F1, F2)",
+        help="free vibration with impacts (Eq. 7, 10, 36–38), or the forced response (Eq. F1) "
+        "with rigid impacts (Eq. F2) or a compliant contact",
     )
-    add_system(p, extra_laws=("rigid",))
+    # no default law: free vibration takes cubic, a forced run asks for the law by name
+    add_system(p, extra_laws=("rigid", "hunt-crossley"), contact_default=None)
     add_initial(p, forced=True)
     p.add_argument(
         "--rest",
@@ -38,7 +40,14 @@ def add_parser(sub: Any) -> None:
         "initial value (0: never); default 1e-12",
     )
     add_forcing(p)
-    g = p.add_argument_group("forced response: duration and steady state")
+    g = p.add_argument_group("forced response: contact, duration and steady state")
+    g.add_argument(
+        "--chi",
+        default=None,
+        metavar="Q",
+        help="Hunt–Crossley damping χ [s/m] of --contact hunt-crossley (Eq. F4; Step 11 gives "
+        "the χ·v of a wanted restitution)",
+    )
     g.add_argument(
         "--periods", default=None, metavar="N", help="forcing periods to simulate; default 400"
     )
@@ -52,20 +61,24 @@ def add_parser(sub: Any) -> None:
     add_output(p, plot=True)
 
 
-_FORCED_ONLY = {"periods": "--periods", "discard": "--discard", "e": "--e"}
+_FORCED_ONLY = {"periods": "--periods", "discard": "--discard", "e": "--e", "chi": "--chi"}
+#: The laws the forced run takes (the perturbation solution is free vibration only).
+_FORCED_LAWS = ("rigid", "cubic", "hertz", "linear", "hunt-crossley")
+#: Samples of the state per forcing period for --csv and --plot.
+_SAMPLES = 64
 
 
 def run(ns) -> None:
     from ..errors import ParameterError
 
-    if ns.contact == "rigid" or has_forcing(ns):
+    if ns.contact in ("rigid", "hunt-crossley") or has_forcing(ns):
         return run_forced(ns)
     for key, flag in _FORCED_ONLY.items():
         if getattr(ns, key) is not None:
             raise ParameterError(
                 flag[2:],
                 "applies to the forced response (give --force or --base, --omega or "
-                "--freq, and --contact rigid)",
+                "--freq, and --contact)",
             )
     notice_first_compilation(ns.command)
     from ..simulation import simulate
@@ -78,7 +91,7 @@ def run(ns) -> None:
         ns.y0,
         ns.ydot0,
         "20 s" if ns.t_end is None else ns.t_end,
-        contact=ns.contact,
+        contact=ns.contact or "cubic",
         history=bool(ns.plot or ns.csv),
         rest=_fraction("rest", "1e-12" if ns.rest is None else ns.rest),
     )
@@ -103,29 +116,44 @@ def run(ns) -> None:
 
 
 def run_forced(ns) -> None:
-    """The forced response with rigid impacts (Eq. F1, F2) and its steady state."""
+    """The forced response (Eq. F1) with rigid impacts (Eq. F2) or a compliant contact, and its
+    steady state."""
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced import simulate_forced
     from ..forced.simulation import MAX_MULTIPLE, period_count
 
-    if ns.contact != "rigid":
+    if ns.contact is None:
+        raise ParameterError(
+            "contact",
+            f"a forced run needs the contact law by name: one of {', '.join(_FORCED_LAWS)} "
+            "(rigid with --e, hunt-crossley with --chi)",
+        )
+    if ns.contact not in _FORCED_LAWS:
         raise MethodNotApplicable(
             "simulate",
-            f"contact {ns.contact!r} with forcing: the forced simulation takes "
-            "--contact rigid (with --e)",
+            f"contact {ns.contact!r} is a free-vibration solution; a forced run takes "
+            f"{', '.join(_FORCED_LAWS)}",
         )
     if not has_forcing(ns):
         raise ParameterError(
             "force",
-            "contact rigid simulates the forced response: give --force F0 or --base "
+            f"contact {ns.contact} simulates the forced response: give --force F0 or --base "
             "X_b, and --omega or --freq",
         )
     if ns.t_end is not None:
         raise ParameterError("t-end", "a forced run lasts --periods forcing periods")
     if ns.rest is not None:
         raise ParameterError("rest", "applies to free vibration; a forced run never comes to rest")
-    if ns.e is None:
+    if ns.contact == "rigid" and ns.e is None:
         raise ParameterError("e", "contact rigid needs Newton's coefficient of restitution --e")
+    if ns.contact != "rigid" and ns.e is not None:
+        raise ParameterError(
+            "e", f"applies to --contact rigid; contact {ns.contact} sets its own restitution"
+        )
+    if ns.contact == "hunt-crossley" and ns.chi is None:
+        raise ParameterError("chi", "contact hunt-crossley needs its damping --chi χ [s/m]")
+    if ns.contact != "hunt-crossley" and ns.chi is not None:
+        raise ParameterError("chi", "applies to --contact hunt-crossley only")
     system = system_from(ns)
     forcing = forcing_from(ns)
     periods = period_count("periods", "400" if ns.periods is None else ns.periods)
@@ -133,20 +161,22 @@ def run_forced(ns) -> None:
     res = simulate_forced(
         system,
         forcing,
-        contact="rigid",
+        contact=ns.contact,
         e=ns.e,
+        chi=ns.chi,
         periods=periods,
         discard=discard,
         x0=ns.x0,
         xdot0="0" if ns.xdot0 is None else ns.xdot0,
         y0=ns.y0,
         ydot0=ns.ydot0,
+        samples_per_period=_SAMPLES if (ns.csv or ns.plot) else 16,
     )
     if ns.csv or ns.plot:
         _forced_outputs(ns, res, discard)
     st = res.steady
     text = (
-        f"Ω {forcing.omega:.6g} rad/s ({forcing.freq:.6g} Hz), {len(res.impacts)} impacts in "
+        f"contact {ns.contact}, Ω {forcing.omega:.6g} rad/s ({forcing.freq:.6g} Hz), {len(res.impacts)} impacts in "
         f"{len(res.period_max)} periods; steady over the last {len(res.period_max) - discard}"
         f": amplitude {quantity_text('x', st.amplitude)}, {st.impacts_per_period:.4g} impacts "
         "per period, "
@@ -162,14 +192,15 @@ def run_forced(ns) -> None:
 
 
 def _forced_outputs(ns, res, discard: int) -> None:
-    """--csv: the state sampled 64 times per forcing period; --plot: x(t) and the impacts."""
+    """--csv: the state sampled _SAMPLES times per forcing period; --plot: x(t) and the
+    impacts."""
     import numpy as np
 
     from ..forced.simulation import state_at
 
     T = res.forcing.period
     n = len(res.period_max)
-    t = np.arange(n * 64 + 1) * (T / 64)
+    t = np.arange(n * _SAMPLES + 1) * (T / _SAMPLES)
     s = state_at(res, t)
     if ns.csv:
         rows = [

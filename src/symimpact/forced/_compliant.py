@@ -30,6 +30,15 @@ HUNT_CROSSLEY = "hunt-crossley"
 #: rtol than ~1e-12 only adds steps), atol 1e-14 of the clearance (state components in m, m/s
 #: scaled by the contact's own time scale would be finer than needed for a 1e-8 amplitude).
 RTOL = 1e-11
+#: The contacts' work budget in evaluations of the equations of motion (about 15 µs each, so a
+#: minute or two): a typical contact takes 500–1000, so this is thousands of contacts; a run
+#: that would need more (long, stiff contacts under an enormous force) stops and says so.
+RHS_BUDGET = 5_000_000
+TOO_MUCH_WORK = 2
+
+
+class _OutOfWork(Exception):
+    """Raised inside the integration when the run has spent :data:`RHS_BUDGET`."""
 
 
 def _parts(law: str, q: np.ndarray, chi: float, delta: float, ddelta: float):
@@ -83,7 +92,12 @@ def run(law, q, chi, p, state0, t_end, max_events, samples):
             xs, vs = _rigid._state(p, M, t0, x0, v0, tau)
             sampled[k] = (xs, vs, z0 + u0 * tau - (xs - x0), u0)
 
+    spent = [0]
+
     def rhs(tt, s_, side):
+        spent[0] += 1
+        if spent[0] > RHS_BUDGET:
+            raise _OutOfWork
         xx, vv, yy, uu = s_[0], s_[1], s_[2], s_[3]
         th = W * tt + phi
         xb, vb = Xb * math.cos(th), -Xb * W * math.sin(th)
@@ -119,17 +133,10 @@ def run(law, q, chi, p, state0, t_end, max_events, samples):
         exit_.terminal, exit_.direction = True, -1
         scale = max(abs(vrel), abs(v), abs(u), 1e-300)
         energy = 0.5 * (M * v * v + m * u * u) + 0.5 * K * x * x + 1e-300
-        sol = solve_ivp(
-            rhs,
-            (t, t_end),
-            [x, v, y, u, 0.0, 0.0, 0.0],
-            method="DOP853",
-            rtol=RTOL,
-            atol=[1e-14 * h, 1e-14 * scale, 1e-14 * h, 1e-14 * scale, *(3 * [1e-14 * energy])],
-            events=exit_,
-            dense_output=True,
-            args=(s,),
-        )
+        try:
+            sol = _contact_phase(rhs, t, t_end, [x, v, y, u], s, h, scale, energy, exit_)
+        except _OutOfWork:
+            return TOO_MUCH_WORK, events, period_max, ledger, None, sampled
         t_exit = float(sol.t_events[0][0]) if len(sol.t_events[0]) else float(sol.t[-1])
         end = sol.sol(t_exit) if len(sol.t_events[0]) else sol.y[:, -1]
         # extremes of x in contact: the steps' ends and the zeros of ẋ between them
@@ -167,3 +174,19 @@ def run(law, q, chi, p, state0, t_end, max_events, samples):
     final = np.array([t, x, v, x + z, u, in_contact])
     ev = np.array(events, dtype=float).reshape(-1, _rigid.N_EVENT_COLS)
     return _rigid.OK, ev, period_max, ledger, final, sampled
+
+
+def _contact_phase(rhs, t, t_end, state, side, h, scale, energy, exit_):
+    """One contact phase from ``t`` (at most to ``t_end``) by DOP853, with the forcing's work and
+    the dissipations integrated alongside (three more components), ended by ``exit_``."""
+    return solve_ivp(
+        rhs,
+        (t, t_end),
+        [*state, 0.0, 0.0, 0.0],
+        method="DOP853",
+        rtol=RTOL,
+        atol=[1e-14 * h, 1e-14 * scale, 1e-14 * h, 1e-14 * scale, *(3 * [1e-14 * energy])],
+        events=exit_,
+        dense_output=True,
+        args=(side,),
+    )

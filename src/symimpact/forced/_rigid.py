@@ -36,6 +36,7 @@ import math
 import numpy as np
 from numba import njit
 
+from .._stepper import secant_point
 from ..generated import forced_flight as _fl
 
 # parameter vector layout
@@ -213,9 +214,7 @@ def _release(p, t0, x0, v0, side, T):
                 flo = min(side * _accel(p, mass, t0, x0, v0), -1e-300)
             kept = 0
             for _ in range(200):
-                tm = (lo * fhi - hi * flo) / (fhi - flo)
-                if not (lo < tm < hi):
-                    tm = 0.5 * (lo + hi)
+                tm = secant_point(lo, hi, flo, fhi)
                 x, v = _state(p, mass, t0, x0, v0, tm)
                 fm = side * _accel(p, mass, t0 + tm, x, v)
                 if fm > 0.0:
@@ -269,9 +268,7 @@ def _segment(p, mass, t0, x0, v0, tau, ledger, period_max, n_periods):
             lo, hi, flo, fhi = a, b, v_prev, v_b
             kept = 0
             for _ in range(100):
-                tm = (lo * fhi - hi * flo) / (fhi - flo)
-                if not (lo < tm < hi):
-                    tm = 0.5 * (lo + hi)
+                tm = secant_point(lo, hi, flo, fhi)
                 xm, vm = _state(p, mass, t0, x0, v0, tm)
                 if vm == 0.0:
                     break

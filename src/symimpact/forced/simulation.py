@@ -30,6 +30,13 @@ CHATTER = 1e-7
 #: rounding, far below any physical difference between distinct orbits.
 SECTION_RTOL = 1e-6
 MAX_EVENTS = 10_000_000
+#: A compliant run integrates every contact (about 10 ms each): it stops, saying so, past this
+#: many (minutes of work) rather than running on for hours.
+MAX_CONTACTS = 20_000
+#: The longest run, in natural periods of the primary 2π√(M/K): flight is evaluated 16 times per
+#: natural period, so 10⁶ of them are seconds of work; a slower forcing (Ω → 0) or more periods
+#: would run for hours and is refused at once.
+MAX_NATURAL_PERIODS = 1_000_000
 MAX_MULTIPLE = 8
 
 
@@ -84,6 +91,13 @@ class ForcedResult:
         """Times of the impacts (chatter accumulations included) [s]."""
         kinds = self.events[:, _rigid.E_KIND]
         return self.events[kinds != _rigid.KIND_RELEASE, _rigid.E_T]
+
+    @property
+    def impact_displacements(self) -> np.ndarray:
+        """The main mass's displacement x at each of :attr:`impacts` (a compliant contact's
+        onset) [m]."""
+        kinds = self.events[:, _rigid.E_KIND]
+        return self.events[kinds != _rigid.KIND_RELEASE, _rigid.E_X]
 
     def as_dict(self) -> dict[str, Any]:
         return {
@@ -188,6 +202,13 @@ def simulate_forced(
     p[_rigid.P_F0], p[_rigid.P_XB] = forcing.F0, forcing.X_b
     p[_rigid.P_W], p[_rigid.P_PHI], p[_rigid.P_CHAT] = forcing.omega, forcing.phase, chatter
     t_end = n_periods * forcing.period
+    natural = t_end * math.sqrt(system.K / system.M) / (2.0 * math.pi)
+    if not natural <= MAX_NATURAL_PERIODS:
+        raise ParameterError(
+            "periods",
+            f"{n_periods} forcing periods at Ω = {forcing.omega:.3g} rad/s last "
+            f"{natural:.3g} natural periods of the primary; at most {MAX_NATURAL_PERIODS:.0e}",
+        )
     samples = None
     potential = 0.0
     if contact == "rigid":
@@ -196,13 +217,23 @@ def simulate_forced(
         )
     else:
         status, events, period_max, ledger, final, samples = _compliant.run(
-            contact, law, chi, p, state, t_end, MAX_EVENTS, samples_per_period
+            contact, law, chi, p, state, t_end, MAX_CONTACTS, samples_per_period
         )
         n_ev = len(events)
         if final is not None and final[5]:
             side = 1.0 if final[3] > final[1] else -1.0
             delta = side * (final[3] - final[1]) - h
             potential = _compliant.contact_potential(contact, law, delta)
+    if status == _compliant.TOO_MUCH_WORK:
+        raise SymimpactError(
+            f"the contacts of {n_periods} periods need more than {_compliant.RHS_BUDGET:,} "
+            "evaluations (long, stiff contacts): shorten the run or use contact rigid"
+        )
+    if status == _rigid.TOO_MANY_EVENTS and contact != "rigid":
+        raise SymimpactError(
+            f"more than {MAX_CONTACTS:,} contacts in {n_periods} periods, each integrated: "
+            "shorten the run or use contact rigid"
+        )
     if status == _rigid.TOO_MANY_EVENTS:
         raise SymimpactError(
             f"more than {MAX_EVENTS:,} impacts in {n_periods} periods: raise the chatter "
