@@ -168,3 +168,15 @@ def test_a_subnormal_state_does_not_stop_the_root_search(contact):
     res = simulate_forced(s, Forcing(F0=0.0, omega=1e-3), contact=contact, periods=2,
                           x0=1e-308, **kw)  # fmt: skip
     assert len(res.impacts) == 0 and np.all(res.period_max <= 1e-308)
+
+
+def test_a_transient_spiralling_in_is_not_called_periodic():
+    """Hunt–Crossley (k_hz 1e9, χ 0.9 s/m) at 36 rad/s from rest: over periods 225–300 the
+    section still spirals in (complex multipliers) and comes back within 1e-6 after 7 periods,
+    which read as 'periodic with 7 periods'; it is settling, and 400 periods (the default) give
+    the period-1 orbit."""
+    s = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, k_hz=1e9, contact="hertz")
+    res = simulate_forced(s, Forcing(F0=2.0, omega=W), contact="hunt-crossley", chi=0.9,
+                          periods=300, discard=225)  # fmt: skip
+    assert res.steady.settling and not res.steady.periodic and res.steady.period_multiple == 0
+    assert res.steady.impacts_per_period == 2.0

@@ -409,13 +409,18 @@ def steady_state(result: ForcedResult, discard: int) -> Steady:
         if d <= SECTION_RTOL:
             multiple, spread = k, d
             break
+    settling = multiple != 1 and _settling(rel)
+    if settling:
+        # a transient spiralling in (complex multipliers) can come back within SECTION_RTOL
+        # after k periods while the period-to-period step still shrinks: not a period-k motion
+        multiple = 0
     return Steady(
         amplitude=amplitude,
         impacts_per_period=len(kept) / (n - discard),
         periodic=multiple > 0,
         period_multiple=multiple,
         section_spread=spread,
-        settling=multiple != 1 and _settling(rel),
+        settling=settling,
     )
 
 
