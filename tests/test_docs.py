@@ -70,7 +70,7 @@ def test_docs_build_has_every_page_and_offline_mathjax(site):
     for page in ("index.html", "api.html", "kernels.html", "targets.html", "_generated/tutorial.html",
                  "_generated/notebooks.html", "_generated/regenerating.html",
                  "_generated/errata.html", "_generated/cli.html", "_generated/report.html",
-                 PAGE):  # fmt: skip
+                 "_generated/forced.html", PAGE):  # fmt: skip
         assert (site / page).is_file(), page
     # the notebooks are offered for download, one per step and the walk-through
     downloads = sorted(p.name for p in (site / "_downloads").rglob("*.ipynb"))
@@ -88,6 +88,10 @@ def test_docs_build_has_every_page_and_offline_mathjax(site):
     # Eq. 6: the printed and derived constants differ in the 7th digit, so the page shows 12
     assert "3.09059025" in errata and "3.09059084208" in errata
     assert r"\frac{B}{B - A}" in errata or "B - A" in errata  # the paper's B/A, not ba
+    forced = (ROOT / "docs" / "_generated" / "forced.md").read_text(encoding="utf-8")
+    # every admissible closed-form orbit: the simulation stays on it exactly when it is stable
+    rows = [r.split("|") for r in forced.splitlines() if r.startswith("| ") and "yes" in r]
+    assert len(rows) >= 6 and all(("(stable)" in r[5]) == (r[7].strip() == "stays") for r in rows)
     api = (site / "api.html").read_text(encoding="utf-8")
     assert "contact_duration" in api and "Eq. 31" in api  # docstrings made it in
 
@@ -95,12 +99,13 @@ def test_docs_build_has_every_page_and_offline_mathjax(site):
 import derive  # noqa: E402
 
 #: Every page a student reads: the derivation steps, the errata, the tutorial, the notebooks'
-#: page and the regeneration walk-through.
+#: page, the regeneration walk-through and the forced-response checks.
 READ_PAGES = [f"_generated/derivations/{step}.html" for step in derive.STEPS] + [
     "_generated/errata.html",
     "_generated/tutorial.html",
     "_generated/notebooks.html",
     "_generated/regenerating.html",
+    "_generated/forced.html",
 ]
 #: Prose left with TeX markup: a caret, a backslash command, a one-letter name with a
 #: subscript (K_Hz, δ_max, ω_d), a braced subscript or a dollar sign.

@@ -7,6 +7,8 @@
 - ``tutorial.md``: the damper design tutorial, every command run and its output captured.
 - ``cli.md``: the command line from the argument parser itself.
 - ``report/``: ``symimpact reproduce --quick``, embedded.
+- ``forced.md``: the forced-response checks (closed-form orbits against the simulator, the
+  compliant contacts' rigid limit), computed at build time.
 
 Nothing in these pages is typed in by hand, so they cannot drift from the code.
 """
@@ -242,6 +244,7 @@ def report_page(folder: Path) -> str:
 
 def write_pages(app=None) -> None:
     """Write every generated page (called at ``builder-inited``)."""
+    from forced_page import forced_checks_page
     from tutorial_page import tutorial_page
 
     import derive
@@ -267,6 +270,7 @@ def write_pages(app=None) -> None:
     (OUT / "cli.md").write_text(cli_page(), encoding="utf-8")
     (OUT / "tutorial.md").write_text(tutorial_page(OUT / "tutorial", _run_cli), encoding="utf-8")
     (OUT / "report.md").write_text(report_page(OUT / "report"), encoding="utf-8")
+    (OUT / "forced.md").write_text(forced_checks_page(), encoding="utf-8")
 
 
 def setup(app):

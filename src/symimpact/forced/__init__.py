@@ -6,12 +6,15 @@
   with the forcing; its ``steady`` summary (amplitude, impacts per period, period of the motion).
 - :func:`periodic_orbits`: the symmetric two-impact periodic motions in closed form (Eq. F3),
   admissibility and stability.
+- :func:`rigid_limit`: compliant contacts stiffened with their damping set from e, against the
+  rigid orbit they converge to.
 - :func:`slow_flow_responses`, :func:`backbone`, :func:`best_clearance`: the 1:1 slow flow of a
   vibro-impact absorber (Eq. F5), for a light impact mass.
 """
 
 from .forcing import Forcing
 from .periodic import PeriodicOrbit, periodic_orbits
+from .rigid_limit import RigidLimitRow, rigid_limit
 from .simulation import ForcedResult, Steady, simulate_forced, steady_state
 from .slow_flow import (
     Backbone,
@@ -28,11 +31,13 @@ __all__ = [
     "ForcedResult",
     "Forcing",
     "PeriodicOrbit",
+    "RigidLimitRow",
     "SlowFlowResponse",
     "Steady",
     "backbone",
     "best_clearance",
     "periodic_orbits",
+    "rigid_limit",
     "simulate_forced",
     "slow_flow_responses",
     "steady_state",
