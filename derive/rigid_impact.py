@@ -8,6 +8,14 @@ coefficient of restitution e ∈ [0, 1].  The energy lost follows, through the r
 μ = mM/(m + M) of Step 6.  For the linear contact law of the paper (k1, c1) Step 6 gave
 $e = \exp(-c_1 T/(2\mu))$ with $T = \pi/\omega_d$; solving it for c1 tells a user which contact damping to put in
 the compliant model to get a wanted e.
+
+The stability of motions through impacts needs one more object: the **saltation matrix** S, which
+carries a small perturbation of the state (x, ẋ, z = y − x, ẏ) from just before an impact to just
+after it.  A perturbed motion reaches the wall a little earlier or later, and in that time it
+moves with the flight's vector field f⁻ before the impact and f⁺ after it; S is the jump map's
+Jacobian plus that correction, $S = DR + (f^+ - DR\,f^-)\,\nabla g^T/(\nabla g\cdot f^-)$ with the
+wall $g = s z - d/2$.  The board derives it from the impact law above and checks it against a
+perturbed impact worked out to first order by hand of SymPy.
 """
 
 from __future__ import annotations
@@ -107,6 +115,83 @@ def derive() -> Board:
         and sp.simplify(c1_value.subs(e, 1)) == 0,
     )
 
+    # --- the saltation matrix: perturbations through an impact ------------------------------
+    C = sp.Symbol("C", nonnegative=True)
+    x, v, z, u, am_ = sp.symbols("x xdot z ydot a_minus", real=True)
+    s_ = sp.Symbol("s", real=True)
+    q = sp.Matrix([x, v, z, u])
+
+    def jump(state):  # R: positions kept, velocities by the impact law
+        return sp.Matrix([
+            state[0],
+            x_after.subs({xm: state[1], ym: state[3]}),
+            state[2],
+            y_after.subs({xm: state[1], ym: state[3]}),
+        ])  # fmt: skip
+
+    DR = jump(q).jacobian(q)
+    w_rel = u - v  # ż, the relative velocity at the wall
+    v_plus, u_plus = x_after.subs({xm: v, ym: u}), y_after.subs({xm: v, ym: u})
+    # the primary's acceleration is linear in its velocity with slope −C/M (Eq. F1), so across
+    # the impact it changes by −C·Δẋ/M whatever the forcing
+    a_plus = am_ - C * (v_plus - v) / M
+    f_minus = sp.Matrix([v, am_, w_rel, 0])
+    f_plus = sp.Matrix([v_plus, a_plus, u_plus - v_plus, 0])
+    grad_g = sp.Matrix([[0, 0, s_, 0]])
+    S = w(
+        "saltation_matrix",
+        (DR + (f_plus - DR * f_minus) * grad_g / (grad_g * f_minus)[0]).applyfunc(sp.simplify),
+        r"$S = DR + (f^+ - DR\,f^-)\,\nabla g^T/(\nabla g\cdot f^-)$, state (x, ẋ, z, ẏ), "
+        r"wall $g = s z - d/2$, $a^-$ the primary's acceleration just before the impact.",
+        "F2",
+    )
+    board.check(
+        "the wall's side s cancels: S is the same on both walls",
+        "F2",
+        all(not S[i, j].has(s_) for i in range(4) for j in range(4)),
+    )
+    # first-order check: perturb the state by ε·δ, fly with f⁻ to the (shifted) wall, jump, and
+    # fly back with f⁺ to the unperturbed impact time; d/dε at 0 must be S·δ
+    eps, dt_ = sp.symbols("epsilon Delta_t", real=True)
+    delta = sp.Matrix(sp.symbols("d1:5", real=True))
+    start = q + eps * delta
+    shift = sp.solve(s_ * (start[2] + f_minus[2].subs(dict(zip(q, start, strict=True))) * dt_)
+                     - s_ * z, dt_)[0]  # fmt: skip
+    # (the wall is where the unperturbed state is: s·z = d/2 at ε = 0)
+    arrived = start + f_minus.subs(dict(zip(q, start, strict=True))) * shift
+    after = jump(arrived) - f_plus.subs(dict(zip(q, start, strict=True))) * shift
+    first_order = sp.Matrix([sp.diff(c, eps).subs(eps, 0) for c in after])
+    board.check(
+        "S·δ is the first-order change of the state after a perturbed impact (flight with f⁻ to "
+        "the wall, the jump, flight back with f⁺)",
+        "F2",
+        all(sp.simplify(c) == 0 for c in (first_order - S * delta)),
+    )
+    k_main = (1 + e) * m / (m + M)  # the velocity jumps' gains, (1 + e)·μ/M and (1 + e)·μ/m
+    k_imp = (1 + e) * M / (m + M)
+    board.check(
+        "S = [[1, 0, k_M, 0], [0, 1 − k_M, k_M(a⁻/ż − C/M), k_M], [0, 0, −e, 0], "
+        "[0, k_m, −k_m a⁻/ż, 1 − k_m]], k_M = (1 + e)μ/M, k_m = (1 + e)μ/m",
+        "F2",
+        all(
+            sp.simplify(S[i, j] - ref) == 0
+            for (i, j), ref in {
+                (0, 2): k_main,
+                (1, 1): 1 - k_main,
+                (1, 2): k_main * (am_ / w_rel - C / M),
+                (1, 3): k_main,
+                (2, 2): -e,
+                (3, 1): k_imp,
+                (3, 2): -k_imp * am_ / w_rel,
+                (3, 3): 1 - k_imp,
+                (0, 0): 1,
+                (2, 0): 0,
+                (0, 1): 0,
+                (3, 0): 0,
+            }.items()
+        ),
+    )
+
     am = Arg(m, "kg", "Impact mass m", 1e-3, 1.0, log=True)
     aM = Arg(M, "kg", "Main mass M", 0.05, 50.0, log=True)
     ae = Arg(e, "1", "Coefficient of restitution e", 0.0, 1.0)
@@ -155,5 +240,53 @@ def derive() -> Board:
         unit="N s/m",
         equation="F2",
         lhs="c_1",
+    )
+    zd = sp.Symbol("zdot_minus", real=True)  # ż⁻ = ẏ − ẋ, the kernels' argument
+
+    def on_zd(entry):
+        return sp.factor(sp.simplify(entry.subs(u, zd + v)))
+
+    aw = Arg(zd, "m/s", "Relative velocity ż = ẏ − ẋ just before the impact (≠ 0)", 0.01, 2.0,
+             log=True)  # fmt: skip
+    aa = Arg(am_, "m/s^2", "Main-mass acceleration just before the impact", -100.0, 100.0)
+    aC = Arg(C, "N s/m", "Main damping C", 0.0, 10.0)
+    board.kernel(
+        name="saltation_main_gain",
+        args=(am, aM, ae),
+        expr=k_main,
+        returns="Gain k_M = (1 + e)μ/M of the main mass's velocity jump (saltation entries)",
+        unit="1",
+        equation="F2",
+        lhs="k_M",
+    )
+    board.kernel(
+        name="saltation_impact_gain",
+        args=(am, aM, ae),
+        expr=k_imp,
+        returns="Gain k_m = (1 + e)μ/m of the impact mass's velocity jump (saltation entries)",
+        unit="1",
+        equation="F2",
+        lhs="k_m",
+    )
+    board.kernel(
+        name="saltation_main_velocity_z",
+        args=(am, aM, ae, aC, aw, aa),
+        expr=on_zd(S[1, 2]),
+        returns="Saltation entry ∂ẋ⁺/∂z⁻: the main mass's velocity after the impact per unit "
+        "of relative displacement before it",
+        unit="1/s",
+        equation="F2",
+        lhs=r"S_{\dot{x} z}",
+        magnitude=k_main * (sp.Abs(am_ / zd) + C / M),
+    )
+    board.kernel(
+        name="saltation_impact_velocity_z",
+        args=(am, aM, ae, aw, aa),
+        expr=on_zd(S[3, 2]),
+        returns="Saltation entry ∂ẏ⁺/∂z⁻: the impact mass's velocity after the impact per unit "
+        "of relative displacement before it",
+        unit="1/s",
+        equation="F2",
+        lhs=r"S_{\dot{y} z}",
     )
     return board

@@ -115,3 +115,40 @@ def test_forcing_refuses_hz_as_omega_and_two_frequencies():
     with pytest.raises(ParameterError, match="omega"):
         Forcing(F0=1, omega=3, freq=1)
     assert Forcing(F0=1, freq="5 Hz").omega == pytest.approx(2 * np.pi * 5)
+
+
+@pytest.mark.parametrize("omega", [34.0, 36.0, 38.0, 40.0])
+def test_closed_form_multipliers_are_those_of_the_simulated_stroboscopic_map(omega):
+    """The closed form's multipliers (the linearised impact-to-impact map, next impact time
+    included) against the eigenvalues of the stroboscopic map P — one forcing period of the
+    event-driven simulation from a section a quarter period after an impact — differentiated by
+    central differences (step 1e-6 of each component's scale: truncation ~1e-12, rounding
+    ~1e-16/1e-6 = 1e-10 of the map).  Measured: 1e-9 of the largest modulus; eigenvalues move by
+    the matrix's error times its norm, so the bound is 1e-6 of the largest modulus."""
+    from symimpact.forced.simulation import state_at
+
+    h = SYSTEM.gap / 2
+    orbits = [o for o in periodic_orbits(SYSTEM, Forcing(F0=2, omega=omega), E) if o.admissible]
+    assert orbits
+    for o in orbits:
+        T = 2 * np.pi / omega
+        f = Forcing(F0=2, omega=omega, phase=o.impact_phase)
+        on = simulate_forced(SYSTEM, f, e=E, periods=1, x0=o.X, xdot0=o.V, y0=o.X + h,
+                             ydot0=o.U)  # fmt: skip
+        s0 = state_at(on, np.array([T / 4]))[0]  # x, ẋ, z = y − x, ẏ
+        g = Forcing(F0=2, omega=omega, phase=o.impact_phase + np.pi / 2)
+
+        def P(s, g=g):
+            r = simulate_forced(SYSTEM, g, e=E, periods=1, x0=s[0], xdot0=s[1], y0=s[0] + s[2],
+                                ydot0=s[3])  # fmt: skip
+            x, v, y, u = r.final_state
+            return np.array([x, v, y - x, u])
+
+        np.testing.assert_allclose(P(s0), s0, atol=1e-13)  # a fixed point of P
+        scale = np.array([o.amplitude, o.amplitude * omega, h, o.amplitude * omega]) * 1e-6
+        J = np.column_stack(
+            [(P(s0 + d) - P(s0 - d)) / (2 * d[j]) for j, d in enumerate(np.diag(scale))]
+        )
+        moduli = np.sort(np.abs(np.linalg.eigvals(J)))[::-1]
+        assert np.all(np.abs(moduli - o.multipliers) <= 1e-6 * o.multipliers[0])
+        assert o.stable == (moduli[0] < 1.0)

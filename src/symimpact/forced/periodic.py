@@ -9,14 +9,12 @@ r = √(a² + b²).  Each solution is then checked:
   flight, sampled and refined where ẋ = 0;
 - *admissible*: the impact mass approaches the second wall (U − ẋ(τ⁻) < 0) and touches no wall in
   between (abs(z) < d/2 on (0, τ), z = y − x, refined where ż = 0);
-- *stable*: the eigenvalues of the linearised impact-to-impact map all have modulus < 1.  The map
-  G takes the state after an impact on the wall +d/2, (t0, X, V, U), through the flight to the
-  next impact (its time t1 implicit in z(t1) = −d/2) and the impact law, and negates the result
-  with the time shifted by τ = π/Ω (the symmetry).  Its Jacobian follows from the chain rule:
-  the flight is affine in (X, V) with the free-decay matrix Φ(t1 − t0), depends on t0 through the
-  forcing phase (∂x/∂t0 = ẋ_p(t1) − Φ₁₁ẋ_p(t0) − Φ₁₂ẍ_p(t0), x_p Step 8's steady solution), and
-  the impact time moves by dτ = −(∂g/∂s)·ds/(U − ẋ(t1)) with g = z + d/2.  The full period is G
-  applied twice, so its multipliers are the squares of G's eigenvalues.
+- *stable*: the Floquet multipliers all have modulus < 1.  A perturbation of the state
+  (x, ẋ, z, ẏ) just after the impact on the wall +d/2 is carried through the flight by its
+  transition matrix Φ(τ) (the free-decay solutions of Step 8: the flight is affine in the state)
+  and through the next impact by Step 9's saltation matrix S, which adds to the impact law's
+  Jacobian the effect of arriving earlier or later.  The second half period is the mirror of the
+  first, so the monodromy is (S·Φ)² and the multipliers are the squares of S·Φ's eigenvalues.
 """
 
 from __future__ import annotations
@@ -30,6 +28,7 @@ import numpy as np
 from ..errors import MethodNotApplicable, ParameterError
 from ..generated import forced_flight as ff
 from ..generated import periodic_orbit as po
+from ..generated import rigid_impact as ri
 from ..system import ImpactSystem
 from ..units import nonnegative_float
 from .forcing import Forcing
@@ -168,49 +167,32 @@ def _describe(system, forcing, e, phi, X, V, U) -> PeriodicOrbit:
     )
 
 
-def _steady(system, forcing, theta):
-    """(ẋ_p, ẍ_p) of Step 8's steady solution at forcing phase θ."""
-    s = (system.M, system.K, system.C, forcing.F0, forcing.X_b, forcing.omega)
-    A, B = float(ff.steady_cosine(*s)), float(ff.steady_sine(*s))
-    W = forcing.omega
-    v = W * (B * math.cos(theta) - A * math.sin(theta))
-    a = -W * W * (A * math.cos(theta) + B * math.sin(theta))
-    return v, a
-
-
-def _jacobian(system, forcing, e, phi, X, V, U, tau):
-    """Jacobian of the half-period map G at the orbit (module docstring), variables
-    (t0, X, V, U) after the impact on the wall +d/2."""
+def _multipliers(system, forcing, e, phi, X, V, U, tau):
+    """Moduli of the full-period Floquet multipliers, descending: eigenvalues of (S·Φ)² with
+    Φ the flight's transition matrix over τ in (x, ẋ, z, ẏ) and S Step 9's saltation matrix at
+    the impact on the wall −d/2."""
     M, K, C, m, W = system.M, system.K, system.C, system.m, forcing.omega
     unforced = Forcing(F0=0.0, omega=W)
-    # free-decay matrix over τ: flights from unit displacement and unit velocity, no forcing
+    # Φ: x and ẋ from unit displacement and unit velocity without forcing (Step 8); z = y − x
+    # moves by ẏτ − (x(τ) − x0); ẏ is constant in flight
     p11, p21 = (float(v) for v in _flight(system, unforced, 0.0, 1.0, 0.0, tau))
     p12, p22 = (float(v) for v in _flight(system, unforced, 0.0, 0.0, 1.0, tau))
+    Phi = np.array([[p11, p12, 0, 0], [p21, p22, 0, 0], [1 - p11, -p12, 1, tau], [0, 0, 0, 1]])
     x1, v1 = (float(v) for v in _flight(system, forcing, phi, X, V, tau))
     theta1 = phi + W * tau
     P = forcing.F0 + K * forcing.X_b
     Q = -C * W * forcing.X_b
-    a1 = (P * math.cos(theta1) + Q * math.sin(theta1) - C * v1 - K * x1) / M
-    vp0, ap0 = _steady(system, forcing, phi)
-    vp1, ap1 = _steady(system, forcing, theta1)
-    x_t0 = vp1 - p11 * vp0 - p12 * ap0
-    v_t0 = ap1 - p21 * vp0 - p22 * ap0
-    # d(flight time) from g = z(τ) + d/2 = 2h + Uτ − (x(τ) − X), ∂g/∂τ = U − ẋ(τ)
-    gt = U - v1
-    g_s = np.array([-x_t0, 1.0 - p11, -p12, tau])  # ∂g/∂(t0, X, V, U)
-    dtau = -g_s / gt
-    dt1 = np.array([1.0, 0.0, 0.0, 0.0]) + dtau
-    dx1 = np.array([x_t0, p11, p12, 0.0]) + v1 * dtau
-    dv1 = np.array([v_t0, p21, p22, 0.0]) + a1 * dtau
-    du = np.array([0.0, 0.0, 0.0, 1.0])
-    mu = M * m / (M + m)
-    dv_plus = dv1 + (1.0 + e) * mu / M * (du - dv1)
-    du_plus = du - (1.0 + e) * mu / m * (du - dv1)
-    return np.vstack([dt1, -dx1, -dv_plus, -du_plus])
-
-
-def _multipliers(system, forcing, e, phi, X, V, U, tau):
-    """Moduli of the full-period multipliers (squares of G's eigenvalues), descending."""
-    J = _jacobian(system, forcing, e, phi, X, V, U, tau)
-    lam = np.linalg.eigvals(J)
+    a1 = (P * math.cos(theta1) + Q * math.sin(theta1) - C * v1 - K * x1) / M  # Eq. F1
+    zd = U - v1
+    kM = float(ri.saltation_main_gain(m, M, e))
+    km = float(ri.saltation_impact_gain(m, M, e))
+    S = np.array(
+        [
+            [1, 0, kM, 0],
+            [0, 1 - kM, float(ri.saltation_main_velocity_z(m, M, e, C, zd, a1)), kM],
+            [0, 0, -e, 0],
+            [0, km, float(ri.saltation_impact_velocity_z(m, M, e, zd, a1)), 1 - km],
+        ]
+    )
+    lam = np.linalg.eigvals(S @ Phi)
     return np.sort(np.abs(lam) ** 2)[::-1]
