@@ -161,3 +161,36 @@ def test_simulate_bad_forcing_input_is_one_line(capsys, extra, parameter):
     assert _status(["simulate", *SYSTEM, *extra]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and parameter in err
+
+
+def test_periodic_by_shooting_has_the_closed_form_json_keys(capsys):
+    """--method shooting at 36 rad/s settles from rest onto the stable symmetric orbit: the same
+    keys as the closed form and, to 1e-8, the same amplitude, speed and multipliers."""
+    base = ["periodic", "--contact", "rigid", "--e", "0.6", *SYSTEM, "--force", "2", "--json"]
+    (shot,) = _json(capsys, [*base, "--omega", "36", "--method", "shooting"])
+    closed = [o for o in _json(capsys, [*base, "--omega", "36"]) if o["stable"]]
+    contract = {"impact_phase", "amplitude", "impact_speed", "admissible", "stable", "multipliers"}
+    assert len(closed) == 1 and contract <= set(closed[0]) and contract <= set(shot)
+    assert shot["stable"] and shot["period_multiple"] == 1 and shot["impacts_per_period"] == 2
+    for key in ("amplitude", "impact_speed"):
+        assert shot[key] == pytest.approx(closed[0][key], rel=1e-8)
+    assert shot["multipliers"] == pytest.approx(closed[0]["multipliers"], rel=1e-6)
+
+
+@pytest.mark.parametrize(
+    ("extra", "parameter"),
+    [
+        (["--warmup", "100"], "warmup:"),
+        (["--method", "shooting", "--multiple", "0"], "multiple:"),
+        (["--method", "shooting", "--multiple", "1.5"], "multiple:"),
+        (["--method", "shooting", "--warmup", "-3"], "warmup:"),
+        (["--method", "shooting", "--omega", "38"], "does not impact"),
+    ],
+)
+def test_periodic_shooting_bad_input_is_one_line(capsys, extra, parameter):
+    argv = ["periodic", "--contact", "rigid", "--e", "0.6", *SYSTEM, "--force", "2"]
+    if "--omega" not in extra:
+        argv += ["--omega", "36"]
+    assert _status([*argv, *extra]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and parameter in err

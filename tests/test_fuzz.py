@@ -88,6 +88,8 @@ GOOD = {  # a valid value per option of every subcommand (SI numbers or quantiti
     "chi": ["0.5 s/m", "1"],
     "periods": ["4", "6"],
     "discard": ["2", "3"],
+    "warmup": ["20", "50"],
+    "multiple": ["1", "2"],
 }
 #: A forced simulate lasts --periods (default 400); without it drawn, the fuzz asks for a few,
 #: so that a compliant forced run (each contact integrated) stays well under a second

@@ -1,6 +1,8 @@
 """``symimpact periodic``: the periodic motions of the forced impact damper at one frequency —
-the symmetric two-impact orbits in closed form (Eq. F3), each with its amplitude, impact speed,
-admissibility and stability."""
+the symmetric two-impact orbits in closed form (Eq. F3), or the orbit a brute-force run settles
+near, found by shooting (Newton on the stroboscopic map, monodromy through Step 8's flights and
+Step 9's saltation matrices) — each with its amplitude, impact speed, admissibility and
+stability."""
 
 from __future__ import annotations
 
@@ -9,14 +11,15 @@ from typing import Any
 from .common import add_forcing, add_output, add_system, emit, forcing_from, system_from
 
 #: The methods ``--method`` takes.
-METHODS = ("closed-form",)
+METHODS = ("closed-form", "shooting")
 
 
 def add_parser(sub: Any) -> None:
     """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
     p = sub.add_parser(
         "periodic",
-        help="periodic motions of the forced damper at one frequency (closed form, Eq. F3)",
+        help="periodic motions of the forced damper at one frequency (closed form, Eq. F3, or "
+        "shooting)",
     )
     add_system(p, extra_laws=("rigid",))
     add_forcing(p)
@@ -25,7 +28,22 @@ def add_parser(sub: Any) -> None:
         choices=METHODS,
         default="closed-form",
         help="closed-form: the symmetric two-impact orbits of the rigid law (Masri & Caughey), "
-        "Eq. F3; default closed-form",
+        "Eq. F3; shooting: the orbit a run from rest settles near, by Newton on the "
+        "stroboscopic map (any impacting orbit, subharmonics with --multiple); default "
+        "closed-form",
+    )
+    g = p.add_argument_group("shooting")
+    g.add_argument(
+        "--warmup",
+        default=None,
+        metavar="N",
+        help="forcing periods simulated from rest before Newton starts; default 300",
+    )
+    g.add_argument(
+        "--multiple",
+        default=None,
+        metavar="K",
+        help="look for an orbit of K forcing periods (K > 1: a subharmonic); default 1",
     )
     add_output(p)
 
@@ -45,6 +63,11 @@ def run(ns) -> None:
         raise ParameterError("e", "contact rigid needs Newton's coefficient of restitution --e")
     system = system_from(ns)
     forcing = forcing_from(ns)
+    if ns.method == "shooting":
+        return _shooting(ns, system, forcing)
+    for key in ("warmup", "multiple"):
+        if getattr(ns, key) is not None:
+            raise ParameterError(key, "applies to --method shooting")
     orbits = periodic_orbits(system, forcing, ns.e)
     out = [o.as_dict() for o in orbits]
     if not orbits:
@@ -67,6 +90,28 @@ def run(ns) -> None:
             )
         text = "\n".join(lines)
     emit(ns, out, text)
+
+
+def _shooting(ns, system, forcing) -> None:
+    """--method shooting: one orbit, the closed form's JSON keys and the shooting's own."""
+    from ..display import display_unit, shown
+    from ..errors import ParameterError
+    from ..forced import shoot_from_rest
+    from ..forced.simulation import MAX_MULTIPLE, period_count
+
+    warmup = period_count("warmup", "300" if ns.warmup is None else ns.warmup)
+    multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
+    if not 1 <= multiple <= MAX_MULTIPLE:
+        raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
+    o = shoot_from_rest(system, forcing, ns.e, warmup=warmup, periods=multiple)
+    unit = display_unit("x")
+    text = (
+        f"Ω {forcing.omega:.6g} rad/s: an orbit of {multiple} forcing period(s) by shooting "
+        f"({o.iterations} Newton steps, residual {o.residual:.1e}): amplitude "
+        f"{shown('x', o.amplitude):.6g} {unit}, {o.impacts_per_period:.4g} impacts per period, "
+        f"{'stable' if o.stable else 'unstable'} (largest |multiplier| {o.multipliers[0]:.6g})"
+    )
+    emit(ns, [o.as_dict()], text)
 
 
 #: The subcommands this module runs.

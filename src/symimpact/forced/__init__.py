@@ -8,6 +8,9 @@
   admissibility and stability.
 - :func:`rigid_limit`: compliant contacts stiffened with their damping set from e, against the
   rigid orbit they converge to.
+- :func:`shoot`, :func:`shoot_from_rest`, :func:`monodromy`: periodic orbits through rigid
+  impacts by Newton's method on the stroboscopic map, with the monodromy carried through flights
+  and impacts (saltation matrices), and their Floquet multipliers.
 - :func:`slow_flow_responses`, :func:`backbone`, :func:`best_clearance`: the 1:1 slow flow of a
   vibro-impact absorber (Eq. F5), for a light impact mass.
 """
@@ -15,6 +18,7 @@
 from .forcing import Forcing
 from .periodic import PeriodicOrbit, periodic_orbits
 from .rigid_limit import RigidLimitRow, rigid_limit
+from .shooting import ShootingOrbit, monodromy, shoot, shoot_from_rest
 from .simulation import ForcedResult, Steady, simulate_forced, steady_state
 from .slow_flow import (
     Backbone,
@@ -32,12 +36,16 @@ __all__ = [
     "Forcing",
     "PeriodicOrbit",
     "RigidLimitRow",
+    "ShootingOrbit",
     "SlowFlowResponse",
     "Steady",
     "backbone",
     "best_clearance",
+    "monodromy",
     "periodic_orbits",
     "rigid_limit",
+    "shoot",
+    "shoot_from_rest",
     "simulate_forced",
     "slow_flow_responses",
     "steady_state",

@@ -1,0 +1,225 @@
+"""Periodic orbits through rigid impacts by shooting: :func:`monodromy` and :func:`shoot`.
+
+The stroboscopic (Poincaré) map P takes the state s = (x, ẋ, z = y − x, ẏ) at t = 0 to the state
+k forcing periods later; a period-k orbit is a fixed point of P.  P is evaluated by the
+event-driven simulation (Eq. F1 in flight, Eq. F2 at impacts) and its Jacobian — the monodromy
+matrix — is carried along it, not differenced: each flight contributes its transition matrix Φ(τ)
+(the flight is affine in the state, Step 8's free-decay solutions) and each impact Step 9's
+saltation matrix S, which adds to the impact law's Jacobian the effect of arriving earlier or
+later.  Newton's method on P(s) − s = 0 with the Jacobian (monodromy − I) converges
+quadratically from a state near the orbit (a brute-force steady state, or a closed-form orbit);
+the eigenvalues of the monodromy are the Floquet multipliers.
+
+Orbits that chatter or stick (an accumulation of impacts, a phase in which the masses move
+together) have no saltation matrix of this form and are refused.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import MethodNotApplicable, ParameterError
+from ..generated import forced_flight as ff
+from ..generated import rigid_impact as ri
+from ..system import ImpactSystem
+from . import _rigid
+from .forcing import Forcing
+from .simulation import simulate_forced
+
+#: Newton stops when the change of the fixed-point residual is below this fraction of the
+#: state's scale (amplitude, amplitude·Ω, d/2): the simulation's own rounding is ~1e-14.
+TOL = 1e-11
+MAX_ITER = 30
+
+
+@dataclass(frozen=True)
+class ShootingOrbit:
+    """A period-k orbit found by :func:`shoot` (SI units).
+
+    ``state``: (x, ẋ, z, ẏ) at t = 0, the section (forcing phase φ of the :class:`Forcing`);
+    ``period_multiple``: k; ``amplitude`` [m]: max abs(x) over the orbit; ``impacts_per_period``;
+    ``impact_phase`` [rad]: the forcing phase Ωt + φ of the orbit's first impact on the wall
+    +d/2 (or −d/2 when it touches only that one), in (−π, π]; ``impact_speed`` [m/s]: its approach
+    speed; ``multipliers``: moduli of the Floquet multipliers (eigenvalues of the monodromy over
+    k periods), descending; ``stable``: all < 1; ``iterations``: Newton steps; ``residual``: the
+    last abs(P(s) − s), relative to the state's scale.
+    """
+
+    state: tuple[float, float, float, float]
+    period_multiple: int
+    amplitude: float
+    impacts_per_period: float
+    impact_phase: float | None
+    impact_speed: float | None
+    multipliers: tuple[float, ...]
+    stable: bool
+    iterations: int
+    residual: float
+
+    def as_dict(self) -> dict[str, Any]:
+        """The closed form's JSON keys (impact_phase, amplitude, impact_speed, admissible, stable,
+        multipliers) and the shooting's own."""
+        return {
+            "impact_phase": self.impact_phase,
+            "amplitude": self.amplitude,
+            "impact_speed": self.impact_speed,
+            "admissible": True,  # a simulated motion: it respects every wall by construction
+            "stable": self.stable,
+            "multipliers": list(self.multipliers),
+            "impacts_per_period": self.impacts_per_period,
+            "period_multiple": self.period_multiple,
+            "state": list(self.state),
+            "iterations": self.iterations,
+            "residual": self.residual,
+        }
+
+
+def _flight_matrix(system: ImpactSystem, omega: float, tau: float) -> np.ndarray:
+    """Φ(τ) of a flight in (x, ẋ, z, ẏ): x, ẋ from unit displacement and unit velocity without
+    forcing (Step 8, Eq. F1); z = y − x moves by ẏτ − (x(τ) − x0); ẏ is constant."""
+    a = (system.M, system.K, system.C, 0.0, 0.0, omega, 0.0)
+    p11 = float(ff.forced_displacement(tau, *a, 1.0, 0.0))
+    p21 = float(ff.forced_velocity(tau, *a, 1.0, 0.0))
+    p12 = float(ff.forced_displacement(tau, *a, 0.0, 1.0))
+    p22 = float(ff.forced_velocity(tau, *a, 0.0, 1.0))
+    return np.array([[p11, p12, 0, 0], [p21, p22, 0, 0], [1 - p11, -p12, 1, tau], [0, 0, 0, 1]])
+
+
+def _saltation(system: ImpactSystem, forcing: Forcing, e: float, row: np.ndarray) -> np.ndarray:
+    """Step 9's saltation matrix at the impact logged in ``row`` (state before it)."""
+    M, K, C, m, W = system.M, system.K, system.C, system.m, forcing.omega
+    t, x, v, u = row[_rigid.E_T], row[_rigid.E_X], row[_rigid.E_XD], row[_rigid.E_YD]
+    th = W * t + forcing.phase
+    xb, vb = forcing.X_b * math.cos(th), -forcing.X_b * W * math.sin(th)
+    a = (forcing.F0 * math.cos(th) - K * (x - xb) - C * (v - vb)) / M  # Eq. F1 before it
+    zd = u - v
+    kM = float(ri.saltation_main_gain(m, M, e))
+    km = float(ri.saltation_impact_gain(m, M, e))
+    return np.array(
+        [
+            [1, 0, kM, 0],
+            [0, 1 - kM, float(ri.saltation_main_velocity_z(m, M, e, C, zd, a)), kM],
+            [0, 0, -e, 0],
+            [0, km, float(ri.saltation_impact_velocity_z(m, M, e, zd, a)), 1 - km],
+        ]
+    )
+
+
+def monodromy(
+    system: ImpactSystem, forcing: Forcing, e: Any, state: Any, periods: int = 1
+) -> tuple[np.ndarray, np.ndarray, Any]:
+    """The stroboscopic map P over ``periods`` forcing periods from ``state`` = (x, ẋ, z, ẏ) at
+    t = 0, and its Jacobian: the product of the flights' Φ(τ) and the impacts' saltation matrices
+    (Step 8, Step 9) along the simulated motion.  Returns (P(state), Jacobian, the simulation)."""
+    x, v, z, u = (float(c) for c in state)
+    res = simulate_forced(system, forcing, contact="rigid", e=e, periods=periods, x0=x,
+                          xdot0=v, y0=x + z, ydot0=u, chatter=0.0)  # fmt: skip
+    ev = res.events
+    if (len(ev) and np.any(ev[:, _rigid.E_KIND] != _rigid.KIND_IMPACT)) or res.final_stuck:
+        raise MethodNotApplicable(
+            "shooting", "the motion chatters or sticks; shooting follows impacting orbits only"
+        )
+    J = np.eye(4)
+    t_prev = 0.0
+    for row in ev:
+        J = (
+            _saltation(system, forcing, res.e, row)
+            @ _flight_matrix(system, forcing.omega, row[_rigid.E_T] - t_prev)
+            @ J
+        )
+        t_prev = row[_rigid.E_T]
+    J = _flight_matrix(system, forcing.omega, res.t_end - t_prev) @ J
+    fx, fv, fy, fu = res.final_state
+    return np.array([fx, fv, fy - fx, fu]), J, res
+
+
+def shoot(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    start: Any,
+    periods: int = 1,
+    tol: float = TOL,
+    max_iter: int = MAX_ITER,
+) -> ShootingOrbit:
+    """The period-``periods`` orbit near ``start`` = (x, ẋ, z, ẏ) at t = 0: Newton's method on
+    P(s) − s = 0 with the monodromy of :func:`monodromy` (rigid impacts, Eq. F1, F2)."""
+    if not isinstance(periods, int) or periods < 1:
+        raise ParameterError("periods", f"must be a whole number ≥ 1, got {periods!r}")
+    s = np.array([float(c) for c in start])
+    if s.shape != (4,) or not np.all(np.isfinite(s)):
+        raise ParameterError("start", "must be four finite numbers (x, ẋ, z, ẏ)")
+    h = system.gap / 2.0
+    it = 0
+    for it in range(1, max_iter + 1):  # noqa: B007 (the count is reported)
+        ps, J, res = monodromy(system, forcing, e, s, periods)
+        amp = float(np.max(res.period_max)) if len(res.period_max) else abs(s[0])
+        scale = np.array([amp, amp * forcing.omega, h, amp * forcing.omega])
+        scale = np.where(scale > 0, scale, 1.0)
+        if len(res.events) == 0:
+            raise MethodNotApplicable(
+                "shooting",
+                "the motion does not impact: the impact mass floats between the walls (a "
+                "neutral drift, multipliers 1) and the primary follows its linear response",
+            )
+        r = ps - s
+        try:
+            step = np.linalg.solve(J - np.eye(4), -r)
+        except np.linalg.LinAlgError:
+            raise MethodNotApplicable(
+                "shooting", "the monodromy has a multiplier 1 (a fold): Newton cannot proceed"
+            ) from None
+        # a step that would put the impact mass through a wall is halved until it does not
+        while abs(s[2] + step[2]) > h and np.max(np.abs(step / scale)) > tol:
+            step = 0.5 * step
+        s = s + step
+        if float(np.max(np.abs(step / scale))) <= tol:
+            break
+    else:
+        raise MethodNotApplicable(
+            "shooting", f"Newton did not converge in {max_iter} steps from this start"
+        )
+    ps, J, res = monodromy(system, forcing, e, s, periods)
+    residual = float(np.max(np.abs((ps - s) / scale)))
+    moduli = np.sort(np.abs(np.linalg.eigvals(J)))[::-1]
+    ev = res.events
+    right = ev[ev[:, _rigid.E_SIDE] > 0] if len(ev) else ev
+    first = right[0] if len(right) else (ev[0] if len(ev) else None)
+    phase = speed = None
+    if first is not None:
+        phase = math.remainder(forcing.omega * first[_rigid.E_T] + forcing.phase, 2 * math.pi)
+        speed = float(first[_rigid.E_VREL])
+    return ShootingOrbit(
+        state=tuple(float(c) for c in s),
+        period_multiple=periods,
+        amplitude=float(np.max(res.period_max)),
+        impacts_per_period=len(ev) / periods,
+        impact_phase=phase,
+        impact_speed=speed,
+        multipliers=tuple(float(m) for m in moduli),
+        stable=bool(moduli[0] < 1.0),
+        iterations=it,
+        residual=residual,
+    )
+
+
+def shoot_from_rest(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    warmup: int = 300,
+    periods: int = 1,
+    start: Any = (0.0, 0.0, 0.0, 0.0),
+) -> ShootingOrbit:
+    """The orbit a brute-force run settles near: ``warmup`` forcing periods of the event-driven
+    simulation from ``start`` = (x, ẋ, z, ẏ) (chatter and sticking allowed there), then
+    :func:`shoot` from its final state (the same forcing phase: a whole number of periods)."""
+    x, v, z, u = (float(c) for c in start)
+    res = simulate_forced(system, forcing, contact="rigid", e=e, periods=warmup, x0=x, xdot0=v,
+                          y0=x + z, ydot0=u)  # fmt: skip
+    fx, fv, fy, fu = res.final_state
+    return shoot(system, forcing, res.e, (fx, fv, fy - fx, fu), periods)
