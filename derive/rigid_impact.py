@@ -15,7 +15,7 @@ after it.  A perturbed motion reaches the wall a little earlier or later, and in
 moves with the flight's vector field f⁻ before the impact and f⁺ after it; S is the jump map's
 Jacobian plus that correction, $S = DR + (f^+ - DR\,f^-)\,\nabla g^T/(\nabla g\cdot f^-)$ with the
 wall $g = s z - d/2$.  The board derives it from the impact law above and checks it against a
-perturbed impact worked out to first order by hand of SymPy.
+perturbed impact worked out to first order.
 """
 
 from __future__ import annotations
@@ -138,13 +138,8 @@ def derive() -> Board:
     f_minus = sp.Matrix([v, am_, w_rel, 0])
     f_plus = sp.Matrix([v_plus, a_plus, u_plus - v_plus, 0])
     grad_g = sp.Matrix([[0, 0, s_, 0]])
-    S = w(
-        "saltation_matrix",
-        (DR + (f_plus - DR * f_minus) * grad_g / (grad_g * f_minus)[0]).applyfunc(sp.simplify),
-        r"$S = DR + (f^+ - DR\,f^-)\,\nabla g^T/(\nabla g\cdot f^-)$, state (x, ẋ, z, ẏ), "
-        r"wall $g = s z - d/2$, $a^-$ the primary's acceleration just before the impact.",
-        "F2",
-    )
+    # S = DR + (f⁺ − DR f⁻) ∇gᵀ / (∇g · f⁻); its entries are written below, one by one
+    S = (DR + (f_plus - DR * f_minus) * grad_g / (grad_g * f_minus)[0]).applyfunc(sp.simplify)
     board.check(
         "the wall's side s cancels: S is the same on both walls",
         "F2",
@@ -190,6 +185,38 @@ def derive() -> Board:
                 (3, 0): 0,
             }.items()
         ),
+    )
+
+    zd = sp.Symbol("zdot_minus", real=True)  # ż⁻ = ẏ − ẋ, the kernels' argument
+
+    def on_zd(entry):
+        return sp.factor(sp.simplify(entry.subs(u, zd + v)))
+
+    w(
+        "saltation_main_gain",
+        sp.factor(S[0, 2]),
+        r"The gain $k_M = (1+e)\mu/M$ of the main mass's velocity jump: S's row x, column z and "
+        r"row ẋ, column ẏ.",
+        "F2",
+    )
+    w(
+        "saltation_impact_gain",
+        sp.factor(S[3, 1]),
+        r"The gain $k_m = (1+e)\mu/m$ of the impact mass's velocity jump: S's row ẏ, column ẋ.",
+        "F2",
+    )
+    w(
+        "saltation_main_velocity_z",
+        on_zd(S[1, 2]),
+        r"Row ẋ, column z of S: a perturbation of z moves the impact in time, and the main "
+        r"mass's velocity after it by this much per metre.",
+        "F2",
+    )
+    w(
+        "saltation_impact_velocity_z",
+        on_zd(S[3, 2]),
+        r"Row ẏ, column z of S, the same for the impact mass; row z, column z is $-e$.",
+        "F2",
     )
 
     am = Arg(m, "kg", "Impact mass m", 1e-3, 1.0, log=True)
@@ -241,11 +268,6 @@ def derive() -> Board:
         equation="F2",
         lhs="c_1",
     )
-    zd = sp.Symbol("zdot_minus", real=True)  # ż⁻ = ẏ − ẋ, the kernels' argument
-
-    def on_zd(entry):
-        return sp.factor(sp.simplify(entry.subs(u, zd + v)))
-
     aw = Arg(zd, "m/s", "Relative velocity ż = ẏ − ẋ just before the impact (≠ 0)", 0.01, 2.0,
              log=True)  # fmt: skip
     aa = Arg(am_, "m/s^2", "Main-mass acceleration just before the impact", -100.0, 100.0)

@@ -11,10 +11,13 @@
 - :func:`shoot`, :func:`shoot_from_rest`, :func:`monodromy`: periodic orbits through rigid
   impacts by Newton's method on the stroboscopic map, with the monodromy carried through flights
   and impacts (saltation matrices), and their Floquet multipliers.
+- :func:`continue_orbit`: pseudo-arclength continuation of those orbits in Ω, with folds,
+  branch points, period doublings, Neimark–Sacker points and grazings located.
 - :func:`slow_flow_responses`, :func:`backbone`, :func:`best_clearance`: the 1:1 slow flow of a
   vibro-impact absorber (Eq. F5), for a light impact mass.
 """
 
+from .continuation import Bifurcation, Branch, BranchPoint, continue_orbit
 from .forcing import Forcing
 from .periodic import PeriodicOrbit, periodic_orbits
 from .rigid_limit import RigidLimitRow, rigid_limit
@@ -32,6 +35,9 @@ from .slow_flow import (
 __all__ = [
     "Backbone",
     "BestClearance",
+    "Bifurcation",
+    "Branch",
+    "BranchPoint",
     "ForcedResult",
     "Forcing",
     "PeriodicOrbit",
@@ -41,6 +47,7 @@ __all__ = [
     "Steady",
     "backbone",
     "best_clearance",
+    "continue_orbit",
     "monodromy",
     "periodic_orbits",
     "rigid_limit",

@@ -1,0 +1,310 @@
+"""Pseudo-arclength continuation of periodic orbits through rigid impacts in the forcing
+frequency Ω: :func:`continue_orbit`.
+
+The unknowns are y = (s, Ω), s = (x, ẋ, z, ẏ) at the section t = 0, scaled by the starting
+orbit's amplitude, velocity amplitude, d/2 and Ω.  A point of the branch solves
+P(s; Ω) − s = 0 (P the stroboscopic map over k periods, :func:`symimpact.forced.monodromy`); its
+Jacobian is [monodromy − I | ∂P/∂Ω], the monodromy carried through flights and impacts and
+∂P/∂Ω by central differences (a parameter derivative: step 1e-6 of Ω, ~1e-10 of the map).  Each
+step predicts along the branch's unit tangent and corrects by Newton's method with the
+pseudo-arclength condition, so the branch is followed around folds.
+
+Along the branch the Floquet multipliers are watched: a real multiplier through +1 where the
+tangent's Ω component changes sign is a *fold*, through +1 without a turn a *branch point* (on
+the symmetric two-impact orbits: the symmetry-breaking pitchfork from which the asymmetric
+orbits grow), a real one through −1 a *period doubling*, a
+complex pair through the unit circle a *Neimark–Sacker* point; each is located on the arc by
+Brent's method on its test function (the tangent's Ω component, det(monodromy + I), the pair's
+modulus − 1).  Where the set of impacts changes (an impact appears or vanishes: a *grazing*) or
+the motion starts to chatter, stick or stop impacting, the branch ends there and says why.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..errors import MethodNotApplicable, ParameterError, SymimpactError
+from ..system import ImpactSystem
+from .forcing import Forcing
+from .shooting import monodromy
+
+#: Newton's corrector stops below this change of the scaled unknowns.
+TOL = 1e-10
+MAX_NEWTON = 8
+
+
+@dataclass(frozen=True)
+class BranchPoint:
+    """One orbit of a branch (SI): ``omega`` [rad/s], ``state`` (x, ẋ, z, ẏ) at t = 0,
+    ``amplitude`` [m] max abs(x), ``impacts_per_period``, ``multipliers`` (complex Floquet
+    multipliers over the orbit's k periods), ``stable`` (all moduli < 1)."""
+
+    omega: float
+    state: tuple[float, float, float, float]
+    amplitude: float
+    impacts_per_period: float
+    multipliers: tuple[complex, ...]
+    stable: bool
+
+
+@dataclass(frozen=True)
+class Bifurcation:
+    """A located point of a branch: ``kind`` ("fold", "branch-point", "period-doubling",
+    "neimark-sacker", "grazing"), ``omega`` [rad/s], ``amplitude`` [m]."""
+
+    kind: str
+    omega: float
+    amplitude: float
+
+
+@dataclass
+class Branch:
+    """A continued branch: its points in order, the located bifurcations, ``period_multiple``
+    k, and ``stopped``: why the continuation ended (the band's edge, a grazing, …)."""
+
+    points: list[BranchPoint] = field(default_factory=list)
+    bifurcations: list[Bifurcation] = field(default_factory=list)
+    period_multiple: int = 1
+    stopped: str = ""
+
+
+class _Problem:
+    """The scaled residual and Jacobian of the continuation at y = (s/scale, Ω/Ω0)."""
+
+    def __init__(self, system, forcing, e, periods, scale, omega0):
+        self.system, self.forcing, self.e, self.periods = system, forcing, e, periods
+        self.scale, self.omega0 = scale, omega0
+
+    def forcing_at(self, omega: float) -> Forcing:
+        f = self.forcing
+        return Forcing(F0=f.F0, X_b=f.X_b, omega=omega, phase=f.phase)
+
+    def evaluate(self, y: np.ndarray):
+        """(residual, Jacobian 4×5, monodromy, the simulation) at y, all scaled."""
+        s, omega = y[:4] * self.scale, y[4] * self.omega0
+        ps, mono, res = monodromy(self.system, self.forcing_at(omega), self.e, s, self.periods)
+        d = 1e-6 * omega
+        plus = monodromy(self.system, self.forcing_at(omega + d), self.e, s, self.periods)[0]
+        minus = monodromy(self.system, self.forcing_at(omega - d), self.e, s, self.periods)[0]
+        dp = (plus - minus) / (2 * d) * self.omega0
+        J = np.zeros((4, 5))
+        J[:, :4] = (mono - np.eye(4)) * self.scale[None, :] / self.scale[:, None]
+        J[:, 4] = dp / self.scale
+        return (ps - s) / self.scale, J, mono, res
+
+
+def _tangent(J: np.ndarray, previous: np.ndarray | None) -> np.ndarray:
+    """The unit null vector of the 4×5 Jacobian, oriented along ``previous``."""
+    t = np.linalg.svd(J)[2][-1]
+    if previous is not None and float(t @ previous) < 0:
+        t = -t
+    return t / np.linalg.norm(t)
+
+
+#: What :func:`_correct` returns when the impacts of the motion changed on the way.
+GRAZE = "graze"
+
+
+def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float | None = None):
+    """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from y_pred; None when it fails, GRAZE when an
+    iterate impacts other than ``count`` times per period."""
+    y = y_pred.copy()
+    for _ in range(MAX_NEWTON):
+        try:
+            r, J, mono, res = problem.evaluate(y)
+        except SymimpactError:  # chatter, sticking, no impacts, a state through a wall
+            return None
+        if count is not None and len(res.impacts) / problem.periods != count:
+            return GRAZE
+        A = np.vstack([J, t])
+        b = np.concatenate([-r, [-(t @ (y - y_pred))]])
+        try:
+            dy = np.linalg.solve(A, b)
+        except np.linalg.LinAlgError:
+            return None
+        y = y + dy
+        if np.max(np.abs(dy)) < TOL:
+            try:
+                r, J, mono, res = problem.evaluate(y)
+            except SymimpactError:
+                return None
+            if count is not None and len(res.impacts) / problem.periods != count:
+                return GRAZE
+            return y, J, mono, res
+    return None
+
+
+def _point(problem: _Problem, y, mono, res) -> BranchPoint:
+    lam = np.linalg.eigvals(mono)
+    order = np.argsort(-np.abs(lam))
+    return BranchPoint(
+        omega=float(y[4] * problem.omega0),
+        state=tuple(float(c) for c in y[:4] * problem.scale),
+        amplitude=float(np.max(res.period_max)),
+        impacts_per_period=len(res.impacts) / problem.periods,
+        multipliers=tuple(complex(c) for c in lam[order]),
+        stable=bool(np.max(np.abs(lam)) < 1.0),
+    )
+
+
+def _tests(t: np.ndarray, mono: np.ndarray) -> dict[str, float]:
+    """The test functions whose sign changes mark the bifurcations."""
+    lam = np.linalg.eigvals(mono)
+    pairs = [abs(c) for c in lam if c.imag > 1e-9 * max(1.0, abs(c))]
+    return {
+        "fold": float(t[4]),
+        "branch-point": float(np.real(np.linalg.det(mono - np.eye(4)))),
+        "period-doubling": float(np.real(np.linalg.det(mono + np.eye(4)))),
+        "neimark-sacker": (min(pairs, key=lambda a: abs(a - 1.0)) - 1.0) if pairs else math.nan,
+    }
+
+
+def continue_orbit(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    state: Any,
+    omega_range: tuple[float, float],
+    *,
+    periods: int = 1,
+    direction: int = 1,
+    step: float = 0.02,
+    max_points: int = 2000,
+) -> Branch:
+    """Continue the period-``periods`` orbit through ``state`` = (x, ẋ, z, ẏ) at t = 0 (an orbit
+    at ``forcing.omega``, e.g. from :func:`symimpact.forced.shoot`) in Ω over ``omega_range``
+    [rad/s], first towards increasing Ω (``direction`` 1) or decreasing (−1); ``step``: the
+    arclength step in scaled unknowns (adapted between step/64 and 4·step)."""
+    lo, hi = (float(w) for w in omega_range)
+    if not (0 < lo < hi):
+        raise ParameterError("omega_range", f"must be 0 < low < high, got {lo:g}, {hi:g}")
+    if not lo <= forcing.omega <= hi:
+        raise ParameterError("omega_range", f"must contain the start Ω = {forcing.omega:g}")
+    if direction not in (1, -1):
+        raise ParameterError("direction", "must be 1 or −1")
+    s0 = np.array([float(c) for c in state])
+    h = system.gap / 2.0
+    _, _, res0 = monodromy(system, forcing, e, s0, periods)
+    amp = max(float(np.max(res0.period_max)), 1e-3 * h)
+    W0 = forcing.omega
+    scale = np.array([amp, amp * W0, h, amp * W0])
+    problem = _Problem(system, forcing, e, periods, scale, W0)
+    branch = Branch(period_multiple=periods)
+    y = np.concatenate([s0 / scale, [1.0]])
+    corrected = _correct(problem, y, np.array([0, 0, 0, 0, 1.0]))
+    if corrected is None:
+        raise MethodNotApplicable("continuation", f"no orbit through the start at Ω = {W0:g}")
+    y, J, mono, res = corrected
+    t = _tangent(J, np.array([0, 0, 0, 0, float(direction)]))
+    point = _point(problem, y, mono, res)
+    branch.points.append(point)
+    tests = _tests(t, mono)
+    ds = step
+    while len(branch.points) < max_points:
+        attempt = _correct(problem, y + ds * t, t, point.impacts_per_period)
+        if attempt is GRAZE:
+            branch.bifurcations.append(_grazing(problem, y, t, ds, point))
+            branch.stopped = f"grazing at Ω ≈ {branch.bifurcations[-1].omega:.6g} rad/s"
+            return branch
+        if attempt is None:
+            ds *= 0.5
+            if ds < step / 64:
+                branch.stopped = (
+                    f"the corrector failed at Ω = {point.omega:.6g} rad/s (chatter, sticking, "
+                    "loss of impacts or a non-smooth turn)"
+                )
+                return branch
+            continue
+        y1, J1, mono1, res1 = attempt
+        t1 = _tangent(J1, t)
+        p1 = _point(problem, y1, mono1, res1)
+        if p1.impacts_per_period != point.impacts_per_period:  # (the corrector checks it)
+            branch.bifurcations.append(_grazing(problem, y, t, ds, point))
+            branch.stopped = f"grazing at Ω ≈ {branch.bifurcations[-1].omega:.6g} rad/s"
+            return branch
+        tests1 = _tests(t1, mono1)
+        for kind in ("fold", "branch-point", "period-doubling", "neimark-sacker"):
+            a, b = tests[kind], tests1[kind]
+            if kind == "branch-point" and (tests["fold"] > 0) != (tests1["fold"] > 0):
+                continue  # a multiplier through +1 at a fold is the fold itself
+            if math.isfinite(a) and math.isfinite(b) and (a > 0) != (b > 0):
+                found = _locate(problem, kind, y, t, ds, a, b)
+                if found is not None:
+                    branch.bifurcations.append(found)
+        y, t, mono, point, tests = y1, t1, mono1, p1, tests1
+        branch.points.append(point)
+        if not lo <= point.omega <= hi:
+            branch.stopped = f"the band's edge at Ω = {point.omega:.6g} rad/s"
+            return branch
+        ds = min(ds * 1.5, 4 * step)
+    branch.stopped = f"{max_points} points"
+    return branch
+
+
+def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
+    """The bifurcation of ``kind`` between y and the step ds along t: Brent's method on the
+    step length σ, each σ corrected onto the branch."""
+    cache = {}
+
+    def at(sigma):
+        if sigma not in cache:
+            got = _correct(problem, y + sigma * t, t)
+            if got is None:
+                raise MethodNotApplicable("continuation", "the corrector failed in the bracket")
+            y1, J1, mono1, res1 = got
+            cache[sigma] = (y1, mono1, res1, _tests(_tangent(J1, t), mono1)[kind])
+        return cache[sigma]
+
+    try:
+        sigma = brentq(lambda s: at(s)[3] if s > 0 else a, 0.0, ds, xtol=1e-12 * ds)
+        y1, _, res1, _ = at(sigma)
+        return Bifurcation(kind, float(y1[4] * problem.omega0), float(np.max(res1.period_max)))
+    except (MethodNotApplicable, ValueError):
+        pass
+    # at a branch point the extended Jacobian itself is singular and the corrector cannot land
+    # on it: the test function, Ω and the amplitude are interpolated by cubics through four
+    # corrected points across the bracket (error ~ds⁴)
+    grid = np.linspace(0.0, ds, 4)
+    try:
+        rows = [at(g) if g > 0 else None for g in grid]
+    except MethodNotApplicable:
+        return None
+    ys = [y, *(r[0] for r in rows[1:])]
+    values = [a, *(r[3] for r in rows[1:])]
+    roots = [
+        float(r.real)
+        for r in np.roots(np.polyfit(grid, values, 3))
+        if abs(r.imag) < 1e-12 * ds and 0.0 <= r.real <= ds
+    ]
+    if not roots:
+        return None
+    omegas = [float(v[4]) * problem.omega0 for v in ys]
+    amps = [float(np.max(r[2].period_max)) for r in rows[1:]]
+    amp0 = float(np.max(problem.evaluate(y)[3].period_max))
+    sigma = roots[0]
+    return Bifurcation(
+        kind,
+        float(np.polyval(np.polyfit(grid, omegas, 3), sigma)),
+        float(np.polyval(np.polyfit(grid, [amp0, *amps], 3), sigma)),
+    )
+
+
+def _grazing(problem, y, t, ds, before: BranchPoint) -> Bifurcation:
+    """Where the impact count changes between y and ds along t: bisection on the step length
+    (the count is a step function of it) to 1e-9 of ds; the last orbit with the old count."""
+    lo, hi = 0.0, ds
+    amp, omega = before.amplitude, before.omega
+    while hi - lo > 1e-9 * ds:
+        mid = 0.5 * (lo + hi)
+        got = _correct(problem, y + mid * t, t, before.impacts_per_period)
+        if got is None or got is GRAZE:
+            hi = mid
+            continue
+        p = _point(problem, got[0], got[2], got[3])
+        lo, amp, omega = mid, p.amplitude, p.omega
+    return Bifurcation("grazing", omega, amp)
