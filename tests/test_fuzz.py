@@ -90,6 +90,8 @@ GOOD = {  # a valid value per option of every subcommand (SI numbers or quantiti
     "discard": ["2", "3"],
     "warmup": ["20", "50"],
     "multiple": ["1", "2"],
+    "omega_range": ["34:36:1", "30:31:0.5"],
+    "freq_range": ["5:5.5:0.25"],
 }
 #: A forced simulate lasts --periods (default 400); without it drawn, the fuzz asks for a few,
 #: so that a compliant forced run (each contact integrated) stays well under a second

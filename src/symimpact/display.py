@@ -34,6 +34,10 @@ OUTPUT_SI_UNITS = {
     "xdot": "m/s",
     "ydot": "m/s",
     "duration": "s",
+    "amplitude": "m",
+    "impacts_per_period": "dimensionless",
+    "period_multiple": "dimensionless",
+    "branch": "dimensionless",
 }
 
 #: The unit each quantity is shown in (quantities not listed: their SI unit).
@@ -48,6 +52,7 @@ DISPLAY_UNITS: dict[str, str] = {
     "position": "mm",
     "damping_inclination": "µm",
     "duration": "ms",
+    "amplitude": "mm",
     "energy_initial": "mJ",
     "energy_dissipated": "mJ",
     "energy_dissipated_contact": "mJ",

@@ -100,6 +100,57 @@ def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.Pa
     plt.close(fig)
 
 
+def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
+    """The frequency-response curve (:func:`symimpact.forced.frf.frequency_response`): each
+    branch's amplitude against Ω, stable solid and unstable dashed, the located bifurcations
+    marked by kind, the primary without the damper, and the brute-force sweeps up (▲) and down
+    (▼)."""
+    import numpy as np
+
+    from .display import display_unit, shown
+
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    base = frf.baseline
+    ax.plot(base[:, 0], shown("x", base[:, 1]), color="0.6", lw=1.0, label="without the damper")
+    for i, b in enumerate(frf.branches):
+        w = np.array([p.omega for p in b.points])
+        a = shown("x", np.array([p.amplitude for p in b.points]))
+        stable = np.array([p.stable for p in b.points])
+        color = f"C{i % 10}"
+        for flag, style in ((True, "-"), (False, "--")):
+            y = np.where(stable == flag, a, np.nan)
+            # each run of equal verdicts joined to its neighbour, so the curve stays unbroken
+            joined = stable == flag
+            joined[1:] |= stable[:-1] == flag
+            y = np.where(joined, a, np.nan)
+            ax.plot(w, y, style, color=color, lw=1.4)
+    markers = {"fold": "o", "branch-point": "s", "period-doubling": "D", "neimark-sacker": "*",
+               "grazing": "x"}  # fmt: skip
+    seen = set()
+    for b in frf.branches:
+        for f in b.bifurcations:
+            ax.plot(f.omega, shown("x", f.amplitude), markers[f.kind], color="k", ms=6, mfc="none",
+                    label=None if f.kind in seen else f.kind)  # fmt: skip
+            seen.add(f.kind)
+    if len(frf.sweep_up):
+        ax.plot(frf.sweep_up[:, 0], shown("x", frf.sweep_up[:, 1]), "^", color="C3", ms=3,
+                alpha=0.6, label="sweep up")  # fmt: skip
+        ax.plot(frf.sweep_down[:, 0], shown("x", frf.sweep_down[:, 1]), "v", color="C0", ms=3,
+                alpha=0.6, label="sweep down")  # fmt: skip
+    ax.plot([], [], "-", color="k", label="stable")
+    ax.plot([], [], "--", color="k", label="unstable")
+    ax.set_xlabel("Ω [rad/s]")
+    ax.set_ylabel(f"amplitude max |x| [{display_unit('x')}]")
+    ax.set_xlim(frf.omegas[0], frf.omegas[-1])
+    ax.legend(fontsize=8, ncol=3)
+    if title:
+        ax.set_title(title, fontsize=10)
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
+
+
 def plot_sweep(rows: list[dict[str, Any]], over: str, path: str | os.PathLike) -> None:
     """DI, N_eff and effectiveness against the swept parameter (as Fig. 7)."""
     from .display import label, shown

@@ -16,11 +16,11 @@ import sys
 from collections.abc import Sequence
 
 from ..errors import SymimpactError
-from . import contact_duration, export, fit, periodic, reproduce, ritz, simulate, sweep
+from . import contact_duration, export, fit, frf, periodic, reproduce, ritz, simulate, sweep
 from .common import Parser
 
 #: The subcommands, in the order of ``symimpact --help``.
-SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, periodic, export, sweep]
+SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, periodic, frf, export, sweep]
 
 #: What runs each subcommand (by name, aliases included).
 COMMANDS = {name: run for module in SUBCOMMANDS for name, run in module.COMMANDS.items()}

@@ -2,7 +2,7 @@
 frequency Ω: :func:`continue_orbit`.
 
 The unknowns are y = (s, Ω), s = (x, ẋ, z, ẏ) at the section t = 0, scaled by the starting
-orbit's amplitude, velocity amplitude, d/2 and Ω.  A point of the branch solves
+orbit's amplitude, velocity amplitude, d/2 and a tenth of the band.  A point of the branch solves
 P(s; Ω) − s = 0 (P the stroboscopic map over k periods, :func:`symimpact.forced.monodromy`); its
 Jacobian is [monodromy − I | ∂P/∂Ω], the monodromy carried through flights and impacts and
 ∂P/∂Ω by central differences (a parameter derivative: step 1e-6 of Ω, ~1e-10 of the map).  Each
@@ -74,7 +74,7 @@ class Branch:
 
 
 class _Problem:
-    """The scaled residual and Jacobian of the continuation at y = (s/scale, Ω/Ω0)."""
+    """The scaled residual and Jacobian of the continuation at y = (s/scale, Ω/Ω_unit)."""
 
     def __init__(self, system, forcing, e, periods, scale, omega0):
         self.system, self.forcing, self.e, self.periods = system, forcing, e, periods
@@ -193,9 +193,10 @@ def continue_orbit(
     amp = max(float(np.max(res0.period_max)), 1e-3 * h)
     W0 = forcing.omega
     scale = np.array([amp, amp * W0, h, amp * W0])
-    problem = _Problem(system, forcing, e, periods, scale, W0)
+    # Ω in units of a tenth of the band: a step of 0.2 then moves Ω by at most 2 % of the band
+    problem = _Problem(system, forcing, e, periods, scale, (hi - lo) / 10.0)
     branch = Branch(period_multiple=periods)
-    y = np.concatenate([s0 / scale, [1.0]])
+    y = np.concatenate([s0 / scale, [W0 / problem.omega0]])
     corrected = _correct(problem, y, np.array([0, 0, 0, 0, 1.0]))
     if corrected is None:
         raise MethodNotApplicable("continuation", f"no orbit through the start at Ω = {W0:g}")

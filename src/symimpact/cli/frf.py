@@ -1,0 +1,107 @@
+"""``symimpact frf``: the frequency-response curve of the primary with a rigid-impact damper —
+branches of periodic orbits continued in Ω with their stability and bifurcations, the primary
+without the damper, and brute-force sweeps up and down the band."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .common import add_output, add_system, emit, system_from, write_csv
+
+
+def add_parser(sub: Any) -> None:
+    """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
+    p = sub.add_parser(
+        "frf",
+        help="frequency-response curve: continued branches, stability, bifurcations, sweeps",
+    )
+    add_system(p, extra_laws=("rigid",), contact_default=None)
+    g = p.add_argument_group("forcing F0·cos(Ωt) and/or base motion X_b·cos(Ωt) over a band")
+    g.add_argument("--force", dest="F0", default=None, metavar="Q",
+                   help="force amplitude F0 on the main mass [N]")  # fmt: skip
+    g.add_argument("--base", dest="X_b", default=None, metavar="Q",
+                   help="base-motion amplitude X_b under the primary [m]")  # fmt: skip
+    g.add_argument("--omega-range", default=None, metavar="START:STOP:STEP",
+                   help="the band in rad/s, e.g. 25:40:0.1 (or --freq-range)")  # fmt: skip
+    g.add_argument("--freq-range", default=None, metavar="START:STOP:STEP",
+                   help="the band in Hz (Ω = 2πf)")  # fmt: skip
+    g.add_argument("--e", default=None, metavar="E",
+                   help="Newton's coefficient of restitution of the rigid law, 0 ≤ e ≤ 1")  # fmt: skip
+    g.add_argument("--no-sweeps", action="store_true",
+                   help="skip the brute-force sweeps up and down the band")  # fmt: skip
+    add_output(p, plot=True)
+
+
+def run(ns) -> None:
+    import numpy as np
+
+    from ..display import display_unit, shown
+    from ..errors import MethodNotApplicable, ParameterError
+    from ..forced import Forcing
+    from ..forced.frf import frequency_response
+    from ..maps.points import parse_range
+
+    if ns.contact != "rigid":
+        raise MethodNotApplicable(
+            "frf",
+            f"contact {ns.contact!r}: the frequency-response curve follows rigid impacts "
+            "(--contact rigid --e E); compliant contacts come with their variational equations",
+        )
+    if ns.e is None:
+        raise ParameterError("e", "contact rigid needs Newton's coefficient of restitution --e")
+    if ns.F0 is None and ns.X_b is None:
+        raise ParameterError("force", "give the forcing amplitude: --force F0 or --base X_b")
+    if (ns.omega_range is None) == (ns.freq_range is None):
+        raise ParameterError("omega-range", "give the band once: --omega-range or --freq-range")
+    if ns.omega_range is not None:
+        omegas = parse_range("omega-range", ns.omega_range)
+    else:
+        omegas = 2 * np.pi * parse_range("freq-range", ns.freq_range)
+    name = "omega-range" if ns.omega_range is not None else "freq-range"
+    if len(omegas) < 2:
+        raise ParameterError(name, "the band needs at least two frequencies")
+    if omegas[0] <= 0:
+        raise ParameterError(name, "the band's frequencies must be positive")
+    if len(omegas) > 5000:
+        raise ParameterError(name, f"{len(omegas)} frequencies; at most 5000")
+    system = system_from(ns)
+    try:
+        forcing = Forcing(F0=0.0 if ns.F0 is None else ns.F0,
+                          X_b=0.0 if ns.X_b is None else ns.X_b, omega=float(omegas[0]))  # fmt: skip
+    except ParameterError as exc:
+        flag = {"F0": "force", "X_b": "base"}.get(exc.parameter, exc.parameter)
+        raise ParameterError(flag, exc.reason) from None
+    frf = frequency_response(system, forcing, ns.e, omegas, sweeps=not ns.no_sweeps)
+    out = frf.as_dict()
+    if ns.csv:
+        write_csv(ns.csv, "csv", out["points"])
+    if ns.plot:
+        from ..plots import plot_frf
+
+        plot_frf(frf, ns.plot, title=f"m/M = {system.m / system.M:.3g}, d = "
+                 f"{shown('gap', system.gap):.4g} {display_unit('gap')}, e = {float(ns.e):g}")  # fmt: skip
+    unit = display_unit("x")
+    lines = [
+        f"Ω {omegas[0]:.6g}–{omegas[-1]:.6g} rad/s: {len(frf.branches)} branch(es), "
+        f"{len(out['points'])} points, {len(out['bifurcations'])} located bifurcation(s)"
+    ]
+    for i, b in enumerate(frf.branches):
+        amps = [p.amplitude for p in b.points]
+        stable = sum(p.stable for p in b.points)
+        lines.append(
+            f"branch {i}: {b.period_multiple} period(s), Ω {min(p.omega for p in b.points):.4g}"
+            f"–{max(p.omega for p in b.points):.4g} rad/s, amplitude "
+            f"{shown('x', min(amps)):.4g}–{shown('x', max(amps)):.4g} {unit}, "
+            f"{stable} of {len(amps)} points stable"
+        )
+    for f in out["bifurcations"]:
+        lines.append(
+            f"  {f['kind']} at Ω {f['omega']:.6g} rad/s, amplitude "
+            f"{shown('x', f['amplitude']):.5g} {unit} (branch {f['branch']})"
+        )
+    lines += [f"note: {n}" for n in frf.notes]
+    emit(ns, out, "\n".join(lines))
+
+
+#: The subcommands this module runs.
+COMMANDS = {"frf": run}

@@ -1,0 +1,233 @@
+"""The frequency-response curve of the primary with a rigid-impact damper:
+:func:`frequency_response`.
+
+Branches of periodic orbits are continued in Ω (:func:`symimpact.forced.continue_orbit`) from
+several kinds of starting point, so that coexisting motions are found:
+
+- the closed-form symmetric two-impact orbits (Eq. F3) that are admissible, at frequencies spread
+  over the band;
+- the orbits brute-force runs from rest settle near (:func:`symimpact.forced.shoot_from_rest`),
+  of one and two forcing periods.
+
+A start that lies on a branch already traced is skipped.  Beside the branches: the primary
+without the damper (the linear response of M, K, C, Step 8's steady solution) and brute-force
+sweeps up and down the band, each run started from the previous one's end state, as a
+cross-check of the stable branches and of where the motion jumps.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import ParameterError, SymimpactError
+from ..generated import forced_flight as ff
+from ..system import ImpactSystem
+from .continuation import Branch, continue_orbit
+from .forcing import Forcing
+from .periodic import periodic_orbits
+from .shooting import monodromy, shoot, shoot_from_rest
+from .simulation import simulate_forced
+
+#: Periods kept for each brute-force sweep point's steady state; before them the run lasts until
+#: the free transient has decayed to SWEEP_SETTLED of its start, exp(−ζω_n·t) (at most
+#: SWEEP_MAX periods): near the resonance a neighbouring point's amplitude can be ten times
+#: larger, so 1e-6 leaves ~1e-5 of the amplitude.
+SWEEP_KEPT, SWEEP_SETTLED, SWEEP_MAX = 30, 1e-6, 5000
+
+
+@dataclass
+class FrequencyResponse:
+    """Outcome of :func:`frequency_response` (SI).
+
+    ``branches``: the continued branches; ``baseline``: (Ω, amplitude) of the primary without the
+    damper; ``sweep_up``/``sweep_down``: (Ω, steady amplitude) of the brute-force sweeps;
+    ``notes``: starts that failed and why.
+    """
+
+    omegas: np.ndarray
+    branches: list[Branch] = field(default_factory=list)
+    baseline: np.ndarray | None = None
+    sweep_up: np.ndarray | None = None
+    sweep_down: np.ndarray | None = None
+    notes: list[str] = field(default_factory=list)
+
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON contract: points and bifurcations, each with its branch number."""
+        points, bifurcations = [], []
+        for i, b in enumerate(self.branches):
+            for p in b.points:
+                points.append({
+                    "omega": p.omega, "amplitude": p.amplitude, "stable": p.stable,
+                    "impacts_per_period": p.impacts_per_period,
+                    "period_multiple": b.period_multiple, "branch": i,
+                })  # fmt: skip
+            for f in b.bifurcations:
+                bifurcations.append(
+                    {"kind": f.kind, "omega": f.omega, "amplitude": f.amplitude, "branch": i}
+                )
+        return {
+            "points": points,
+            "bifurcations": bifurcations,
+            "branches": [
+                {"branch": i, "period_multiple": b.period_multiple, "stopped": b.stopped}
+                for i, b in enumerate(self.branches)
+            ],
+            "baseline": [{"omega": w, "amplitude": a} for w, a in self.baseline],
+            "sweep_up": [{"omega": w, "amplitude": a} for w, a in self.sweep_up],
+            "sweep_down": [{"omega": w, "amplitude": a} for w, a in self.sweep_down],
+            "notes": self.notes,
+        }
+
+
+def _forcing(forcing: Forcing, omega: float) -> Forcing:
+    return Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=omega, phase=forcing.phase)
+
+
+def _on_branch(branches: list[Branch], omega: float, amplitude: float, k: int) -> bool:
+    """Whether (Ω, amplitude) lies on a traced branch of the same period: between two of its
+    consecutive points, within 2 % of the amplitude interpolated between them (the points are up
+    to ~0.5 rad/s apart on a curved branch; distinct coexisting orbits differ by far more)."""
+    for b in branches:
+        if b.period_multiple != k:
+            continue
+        pts = b.points
+        for p, q in itertools.pairwise(pts):
+            lo, hi = sorted((p.omega, q.omega))
+            if lo - 1e-9 <= omega <= hi + 1e-9:
+                f = 0.0 if hi == lo else (omega - p.omega) / (q.omega - p.omega)
+                a = p.amplitude + f * (q.amplitude - p.amplitude)
+                if abs(a - amplitude) <= 2e-2 * max(abs(a), 1e-12):
+                    return True
+    return False
+
+
+def _trace(system, forcing, e, state, band, k, step) -> Branch:
+    """Both directions from the start, joined into one branch (the down part reversed)."""
+    down = continue_orbit(system, forcing, e, state, band, periods=k, direction=-1, step=step)
+    up = continue_orbit(system, forcing, e, state, band, periods=k, direction=1, step=step)
+    joined = Branch(period_multiple=k)
+    joined.points = [*reversed(down.points[1:]), *up.points]
+    joined.bifurcations = [*down.bifurcations, *up.bifurcations]
+    joined.stopped = f"down: {down.stopped}; up: {up.stopped}"
+    return joined
+
+
+def _section_state(orbit, omega: float, h: float, system: ImpactSystem, forcing: Forcing):
+    """A closed-form orbit's state a quarter period after its impact on +d/2, with the forcing
+    whose t = 0 is that instant."""
+    f = _forcing(forcing, omega)
+    T = 2 * math.pi / omega
+    args = (system.M, system.K, system.C, f.F0, f.X_b, omega, orbit.impact_phase, orbit.X, orbit.V)
+    x = float(ff.forced_displacement(T / 4, *args))
+    v = float(ff.forced_velocity(T / 4, *args))
+    state = (x, v, h + orbit.U * T / 4 - (x - orbit.X), orbit.U)
+    return state, Forcing(F0=f.F0, X_b=f.X_b, omega=omega, phase=orbit.impact_phase + math.pi / 2)
+
+
+def frequency_response(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    omegas: Any,
+    *,
+    starts: int = 6,
+    sweeps: bool = True,
+) -> FrequencyResponse:
+    """The frequency-response curve over the band ``omegas`` [rad/s] (its first and last values
+    bound the branches; the sweeps and the baseline use every value): branches continued from
+    ``starts`` frequencies spread over the band (closed-form orbits and brute-force steady
+    states of one and two periods), the linear response without the damper, and the up and down
+    brute-force sweeps."""
+    w = np.asarray(omegas, dtype=float)
+    if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(w <= 0):
+        raise ParameterError("omega", "the band needs at least two positive frequencies")
+    if np.any(np.diff(w) <= 0):
+        raise ParameterError("omega", "the band's frequencies must increase")
+    band = (float(w[0]), float(w[-1]))
+    h = system.gap / 2.0
+    out = FrequencyResponse(omegas=w)
+    step = 0.05
+    for omega in np.linspace(band[0], band[1], starts + 2)[1:-1]:
+        f = _forcing(forcing, float(omega))
+        candidates = []
+        for o in periodic_orbits(system, f, e):
+            if o.admissible:
+                candidates.append(("closed form", 1, *_section_state(o, float(omega), h, system,
+                                                                     forcing)))  # fmt: skip
+        for k in (1, 2):
+            try:
+                shot = shoot_from_rest(system, f, e, warmup=_settling_periods(system, f, 20, 300),
+                                       periods=k)  # fmt: skip
+            except SymimpactError as exc:
+                out.notes.append(f"Ω {omega:.4g}, {k} period(s), from rest: {exc}")
+                continue
+            candidates.append(("from rest", k, shot.state, f))
+        for origin, k, state, fs in candidates:
+            try:
+                orbit = shoot(system, fs, e, state, periods=k)
+            except SymimpactError as exc:
+                out.notes.append(f"Ω {omega:.4g}, {origin}: {exc}")
+                continue
+            if k > 1 and _repeats_every_period(system, fs, e, orbit):
+                continue  # a period-1 orbit found as period 2
+            if _on_branch(out.branches, fs.omega, orbit.amplitude, k):
+                continue
+            try:
+                out.branches.append(_trace(system, fs, e, orbit.state, band, k, step))
+            except SymimpactError as exc:
+                out.notes.append(f"Ω {omega:.4g}, {origin}: {exc}")
+    out.baseline = np.column_stack([w, _linear_amplitude(system, forcing, w)])
+    if sweeps:
+        out.sweep_up = _sweep(system, forcing, e, w)
+        out.sweep_down = _sweep(system, forcing, e, w[::-1])[::-1]
+    else:
+        out.sweep_up = out.sweep_down = np.zeros((0, 2))
+    return out
+
+
+def _repeats_every_period(system, forcing, e, orbit) -> bool:
+    """Whether a period-k orbit's state comes back after one period already (a period-1 orbit
+    found again as period k): to 1e-8 of its scale."""
+    ps = monodromy(system, forcing, e, orbit.state, 1)[0]
+    scale = np.array([orbit.amplitude, orbit.amplitude * forcing.omega, system.gap / 2,
+                      orbit.amplitude * forcing.omega])  # fmt: skip
+    return bool(np.max(np.abs((ps - np.array(orbit.state)) / scale)) < 1e-8)
+
+
+def _linear_amplitude(system: ImpactSystem, forcing: Forcing, w: np.ndarray) -> np.ndarray:
+    """The primary without the damper: amplitude of Step 8's steady solution (Eq. F1)."""
+    A = ff.steady_cosine(system.M, system.K, system.C, forcing.F0, forcing.X_b, w)
+    B = ff.steady_sine(system.M, system.K, system.C, forcing.F0, forcing.X_b, w)
+    return np.hypot(A, B)
+
+
+def _settling_periods(system: ImpactSystem, forcing: Forcing, kept: int, most: int) -> int:
+    """Forcing periods for the primary's free transient to fall to SWEEP_SETTLED of its start,
+    exp(−ζω_n·t) (ζω_n = C/(2M)), plus ``kept``; at most ``most`` (no damping: ``most``)."""
+    decay = system.C / (2.0 * system.M)  # ζω_n [1/s]
+    if not decay > 0:
+        return most
+    return min(most, math.ceil(-math.log(SWEEP_SETTLED) / decay / forcing.period) + kept)
+
+
+def _sweep(system, forcing, e, omegas) -> np.ndarray:
+    """Brute-force sweep: at each Ω, a run from the previous end state until its transient has
+    settled (SWEEP_SETTLED); the steady amplitude over the last SWEEP_KEPT periods."""
+    state = (0.0, 0.0, 0.0, 0.0)
+    rows = []
+    for omega in omegas:
+        f = _forcing(forcing, float(omega))
+        periods = _settling_periods(system, f, SWEEP_KEPT, SWEEP_MAX)
+        res = simulate_forced(system, f, contact="rigid", e=e, periods=periods,
+                              discard=periods - SWEEP_KEPT, x0=state[0], xdot0=state[1],
+                              y0=state[2], ydot0=state[3])  # fmt: skip
+        rows.append((float(omega), res.steady.amplitude))
+        x, v, y, u = res.final_state
+        # the forcing phase restarts at t = 0: the end state after whole periods is at phase φ
+        state = (x, v, y, u)
+    return np.array(rows)
