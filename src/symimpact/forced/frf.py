@@ -151,6 +151,7 @@ def frequency_response(
     band = (float(w[0]), float(w[-1]))
     h = system.gap / 2.0
     out = FrequencyResponse(omegas=w)
+    failures: dict[str, list[float]] = {}  # reason → the frequencies where it happened
     step = 0.05
     for omega in np.linspace(band[0], band[1], starts + 2)[1:-1]:
         f = _forcing(forcing, float(omega))
@@ -164,14 +165,14 @@ def frequency_response(
                 shot = shoot_from_rest(system, f, e, warmup=_settling_periods(system, f, 20, 300),
                                        periods=k)  # fmt: skip
             except SymimpactError as exc:
-                out.notes.append(f"Ω {omega:.4g}, {k} period(s), from rest: {exc}")
+                failures.setdefault(f"{k} period(s) from rest: {exc}", []).append(omega)
                 continue
             candidates.append(("from rest", k, shot.state, f))
         for origin, k, state, fs in candidates:
             try:
                 orbit = shoot(system, fs, e, state, periods=k)
             except SymimpactError as exc:
-                out.notes.append(f"Ω {omega:.4g}, {origin}: {exc}")
+                failures.setdefault(f"{origin}: {exc}", []).append(omega)
                 continue
             if k > 1 and _repeats_every_period(system, fs, e, orbit):
                 continue  # a period-1 orbit found as period 2
@@ -180,7 +181,11 @@ def frequency_response(
             try:
                 out.branches.append(_trace(system, fs, e, orbit.state, band, k, step))
             except SymimpactError as exc:
-                out.notes.append(f"Ω {omega:.4g}, {origin}: {exc}")
+                failures.setdefault(f"{origin}: {exc}", []).append(omega)
+    out.notes = [
+        f"{reason} (at Ω {', '.join(f'{x:.4g}' for x in ws)} rad/s)"
+        for reason, ws in failures.items()
+    ]
     out.baseline = np.column_stack([w, _linear_amplitude(system, forcing, w)])
     if sweeps:
         out.sweep_up = _sweep(system, forcing, e, w)
