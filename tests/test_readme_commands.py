@@ -27,8 +27,8 @@ COMMANDS = _commands()
 
 def test_the_block_holds_every_subcommand():
     assert [c.split()[1] for c in COMMANDS] == [
-        "fit", "ritz", "contact-duration", "simulate", "simulate", "simulate", "periodic", "sweep",
-        "map",
+        "fit", "ritz", "contact-duration", "simulate", "simulate", "simulate", "periodic",
+        "periodic", "frf", "sweep", "map",
     ]  # fmt: skip
 
 
@@ -49,6 +49,11 @@ def test_readme_command_runs_and_shows_something(command, tmp_path):
         assert "2 impacts per period, periodic with 1 forcing period" in out
         (png,) = [a for a in args if a.endswith(".png")]
         assert (tmp_path / png).stat().st_size > 10_000
+    elif sub == "periodic" and "shooting" in args:  # Ω 34: the stable asymmetric orbit
+        assert "2 impacts per period, stable" in out
+    elif sub == "frf":  # the stable symmetric branch and its symmetry-breaking branch point
+        assert "branch-point at Ω 34.53" in out
+        assert (tmp_path / "frf.png").stat().st_size > 10_000
     elif sub == "periodic":  # Ω 38 rad/s: one stable admissible orbit and one unstable
         rows = [line.split() for line in out.splitlines()[2:]]
         assert [(r[3], r[4]) for r in rows] == [("yes", "yes"), ("yes", "no")]
