@@ -297,10 +297,11 @@ def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
 
 def _grazing(problem, y, t, ds, before: BranchPoint) -> Bifurcation:
     """Where the impact count changes between y and ds along t: bisection on the step length
-    (the count is a step function of it) to 1e-9 of ds; the last orbit with the old count."""
+    (the count is a step function of it) to 1e-6 of ds (ds moves Ω by at most 2 % of the band,
+    so 2e-8 of the band); the last orbit with the old count."""
     lo, hi = 0.0, ds
     amp, omega = before.amplitude, before.omega
-    while hi - lo > 1e-9 * ds:
+    while hi - lo > 1e-6 * ds:
         mid = 0.5 * (lo + hi)
         got = _correct(problem, y + mid * t, t, before.impacts_per_period)
         if got is None or got is GRAZE:

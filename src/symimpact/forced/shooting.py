@@ -82,10 +82,11 @@ def _flight_matrix(system: ImpactSystem, omega: float, tau: float) -> np.ndarray
     """Φ(τ) of a flight in (x, ẋ, z, ẏ): x, ẋ from unit displacement and unit velocity without
     forcing (Step 8, Eq. F1); z = y − x moves by ẏτ − (x(τ) − x0); ẏ is constant."""
     a = (system.M, system.K, system.C, 0.0, 0.0, omega, 0.0)
-    p11 = float(ff.forced_displacement(tau, *a, 1.0, 0.0))
-    p21 = float(ff.forced_velocity(tau, *a, 1.0, 0.0))
-    p12 = float(ff.forced_displacement(tau, *a, 0.0, 1.0))
-    p22 = float(ff.forced_velocity(tau, *a, 0.0, 1.0))
+    # the kernels' plain-float twins: this runs for every flight of every Newton step
+    p11 = ff.forced_displacement_scalar(tau, *a, 1.0, 0.0)
+    p21 = ff.forced_velocity_scalar(tau, *a, 1.0, 0.0)
+    p12 = ff.forced_displacement_scalar(tau, *a, 0.0, 1.0)
+    p22 = ff.forced_velocity_scalar(tau, *a, 0.0, 1.0)
     return np.array([[p11, p12, 0, 0], [p21, p22, 0, 0], [1 - p11, -p12, 1, tau], [0, 0, 0, 1]])
 
 
@@ -97,14 +98,14 @@ def _saltation(system: ImpactSystem, forcing: Forcing, e: float, row: np.ndarray
     xb, vb = forcing.X_b * math.cos(th), -forcing.X_b * W * math.sin(th)
     a = (forcing.F0 * math.cos(th) - K * (x - xb) - C * (v - vb)) / M  # Eq. F1 before it
     zd = u - v
-    kM = float(ri.saltation_main_gain(m, M, e))
-    km = float(ri.saltation_impact_gain(m, M, e))
+    kM = ri.saltation_main_gain_scalar(m, M, e)
+    km = ri.saltation_impact_gain_scalar(m, M, e)
     return np.array(
         [
             [1, 0, kM, 0],
-            [0, 1 - kM, float(ri.saltation_main_velocity_z(m, M, e, C, zd, a)), kM],
+            [0, 1 - kM, ri.saltation_main_velocity_z_scalar(m, M, e, C, zd, a), kM],
             [0, 0, -e, 0],
-            [0, km, float(ri.saltation_impact_velocity_z(m, M, e, zd, a)), 1 - km],
+            [0, km, ri.saltation_impact_velocity_z_scalar(m, M, e, zd, a), 1 - km],
         ]
     )
 
