@@ -119,7 +119,6 @@ def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
         stable = np.array([p.stable for p in b.points])
         color = f"C{i % 10}"
         for flag, style in ((True, "-"), (False, "--")):
-            y = np.where(stable == flag, a, np.nan)
             # each run of equal verdicts joined to its neighbour, so the curve stays unbroken
             joined = stable == flag
             joined[1:] |= stable[:-1] == flag

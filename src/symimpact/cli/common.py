@@ -155,7 +155,6 @@ def has_forcing(ns: argparse.Namespace) -> bool:
 def forcing_from(ns: argparse.Namespace):
     """The :class:`~symimpact.forced.Forcing` the forcing options describe."""
     from ..errors import ParameterError
-    from ..forced import Forcing
 
     if ns.F0 is None and ns.X_b is None:
         raise ParameterError("force", "give the forcing amplitude: --force F0 or --base X_b")
@@ -163,15 +162,20 @@ def forcing_from(ns: argparse.Namespace):
         raise ParameterError("omega", "give the forcing frequency: --omega Ω or --freq f")
     if ns.omega is not None and ns.freq is not None:
         raise ParameterError("omega", "give the forcing frequency once: --omega or --freq")
+    return forcing_of(ns, omega=ns.omega, freq=ns.freq, phase=0.0 if ns.phase is None else ns.phase)
+
+
+def forcing_of(ns: argparse.Namespace, **frequency: Any):
+    """The :class:`~symimpact.forced.Forcing` of --force/--base at ``frequency`` (omega or freq,
+    and phase), a refusal naming the option the user typed."""
+    from ..errors import ParameterError
+    from ..forced import Forcing
+
     try:
         return Forcing(
-            F0=0.0 if ns.F0 is None else ns.F0,
-            X_b=0.0 if ns.X_b is None else ns.X_b,
-            omega=ns.omega,
-            freq=ns.freq,
-            phase=0.0 if ns.phase is None else ns.phase,
+            F0=0.0 if ns.F0 is None else ns.F0, X_b=0.0 if ns.X_b is None else ns.X_b, **frequency
         )
-    except ParameterError as exc:  # name the option the user typed
+    except ParameterError as exc:
         flag = {"F0": "force", "X_b": "base"}.get(exc.parameter, exc.parameter)
         raise ParameterError(flag, exc.reason) from None
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .common import add_output, add_system, emit, system_from, write_csv
+from .common import add_output, add_system, emit, forcing_of, system_from, write_csv
 
 
 def add_parser(sub: Any) -> None:
@@ -37,7 +37,6 @@ def run(ns) -> None:
 
     from ..display import display_unit, shown
     from ..errors import MethodNotApplicable, ParameterError
-    from ..forced import Forcing
     from ..forced.frf import frequency_response
     from ..maps.points import parse_range
 
@@ -65,12 +64,7 @@ def run(ns) -> None:
     if len(omegas) > 5000:
         raise ParameterError(name, f"{len(omegas)} frequencies; at most 5000")
     system = system_from(ns)
-    try:
-        forcing = Forcing(F0=0.0 if ns.F0 is None else ns.F0,
-                          X_b=0.0 if ns.X_b is None else ns.X_b, omega=float(omegas[0]))  # fmt: skip
-    except ParameterError as exc:
-        flag = {"F0": "force", "X_b": "base"}.get(exc.parameter, exc.parameter)
-        raise ParameterError(flag, exc.reason) from None
+    forcing = forcing_of(ns, omega=float(omegas[0]))
     frf = frequency_response(system, forcing, ns.e, omegas, sweeps=not ns.no_sweeps)
     out = frf.as_dict()
     if ns.csv:

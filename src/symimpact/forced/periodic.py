@@ -28,10 +28,10 @@ import numpy as np
 from ..errors import MethodNotApplicable, ParameterError
 from ..generated import forced_flight as ff
 from ..generated import periodic_orbit as po
-from ..generated import rigid_impact as ri
 from ..system import ImpactSystem
 from ..units import nonnegative_float
 from .forcing import Forcing
+from .linearised import acceleration, flight_matrix, saltation_matrix
 
 #: Samples per half period for the extremes of x and z before refinement (the flight holds at
 #: most a few natural periods per half forcing period in the band of interest; 512 samples
@@ -171,28 +171,8 @@ def _multipliers(system, forcing, e, phi, X, V, U, tau):
     """Moduli of the full-period Floquet multipliers, descending: eigenvalues of (S·Φ)² with
     Φ the flight's transition matrix over τ in (x, ẋ, z, ẏ) and S Step 9's saltation matrix at
     the impact on the wall −d/2."""
-    M, K, C, m, W = system.M, system.K, system.C, system.m, forcing.omega
-    unforced = Forcing(F0=0.0, omega=W)
-    # Φ: x and ẋ from unit displacement and unit velocity without forcing (Step 8); z = y − x
-    # moves by ẏτ − (x(τ) − x0); ẏ is constant in flight
-    p11, p21 = (float(v) for v in _flight(system, unforced, 0.0, 1.0, 0.0, tau))
-    p12, p22 = (float(v) for v in _flight(system, unforced, 0.0, 0.0, 1.0, tau))
-    Phi = np.array([[p11, p12, 0, 0], [p21, p22, 0, 0], [1 - p11, -p12, 1, tau], [0, 0, 0, 1]])
     x1, v1 = (float(v) for v in _flight(system, forcing, phi, X, V, tau))
-    theta1 = phi + W * tau
-    P = forcing.F0 + K * forcing.X_b
-    Q = -C * W * forcing.X_b
-    a1 = (P * math.cos(theta1) + Q * math.sin(theta1) - C * v1 - K * x1) / M  # Eq. F1
-    zd = U - v1
-    kM = float(ri.saltation_main_gain(m, M, e))
-    km = float(ri.saltation_impact_gain(m, M, e))
-    S = np.array(
-        [
-            [1, 0, kM, 0],
-            [0, 1 - kM, float(ri.saltation_main_velocity_z(m, M, e, C, zd, a1)), kM],
-            [0, 0, -e, 0],
-            [0, km, float(ri.saltation_impact_velocity_z(m, M, e, zd, a1)), 1 - km],
-        ]
-    )
-    lam = np.linalg.eigvals(S @ Phi)
+    a1 = acceleration(system, forcing, phi + forcing.omega * tau, x1, v1)
+    S = saltation_matrix(system, e, U - v1, a1)
+    lam = np.linalg.eigvals(S @ flight_matrix(system, tau))
     return np.sort(np.abs(lam) ** 2)[::-1]

@@ -23,11 +23,10 @@ from typing import Any
 import numpy as np
 
 from ..errors import MethodNotApplicable, ParameterError
-from ..generated import forced_flight as ff
-from ..generated import rigid_impact as ri
 from ..system import ImpactSystem
 from . import _rigid
 from .forcing import Forcing
+from .linearised import acceleration, flight_matrix, saltation_matrix
 from .simulation import simulate_forced
 
 #: Newton stops when the change of the fixed-point residual is below this fraction of the
@@ -78,38 +77,6 @@ class ShootingOrbit:
         }
 
 
-def _flight_matrix(system: ImpactSystem, omega: float, tau: float) -> np.ndarray:
-    """Φ(τ) of a flight in (x, ẋ, z, ẏ): x, ẋ from unit displacement and unit velocity without
-    forcing (Step 8, Eq. F1); z = y − x moves by ẏτ − (x(τ) − x0); ẏ is constant."""
-    a = (system.M, system.K, system.C, 0.0, 0.0, omega, 0.0)
-    # the kernels' plain-float twins: this runs for every flight of every Newton step
-    p11 = ff.forced_displacement_scalar(tau, *a, 1.0, 0.0)
-    p21 = ff.forced_velocity_scalar(tau, *a, 1.0, 0.0)
-    p12 = ff.forced_displacement_scalar(tau, *a, 0.0, 1.0)
-    p22 = ff.forced_velocity_scalar(tau, *a, 0.0, 1.0)
-    return np.array([[p11, p12, 0, 0], [p21, p22, 0, 0], [1 - p11, -p12, 1, tau], [0, 0, 0, 1]])
-
-
-def _saltation(system: ImpactSystem, forcing: Forcing, e: float, row: np.ndarray) -> np.ndarray:
-    """Step 9's saltation matrix at the impact logged in ``row`` (state before it)."""
-    M, K, C, m, W = system.M, system.K, system.C, system.m, forcing.omega
-    t, x, v, u = row[_rigid.E_T], row[_rigid.E_X], row[_rigid.E_XD], row[_rigid.E_YD]
-    th = W * t + forcing.phase
-    xb, vb = forcing.X_b * math.cos(th), -forcing.X_b * W * math.sin(th)
-    a = (forcing.F0 * math.cos(th) - K * (x - xb) - C * (v - vb)) / M  # Eq. F1 before it
-    zd = u - v
-    kM = ri.saltation_main_gain_scalar(m, M, e)
-    km = ri.saltation_impact_gain_scalar(m, M, e)
-    return np.array(
-        [
-            [1, 0, kM, 0],
-            [0, 1 - kM, ri.saltation_main_velocity_z_scalar(m, M, e, C, zd, a), kM],
-            [0, 0, -e, 0],
-            [0, km, ri.saltation_impact_velocity_z_scalar(m, M, e, zd, a), 1 - km],
-        ]
-    )
-
-
 def monodromy(
     system: ImpactSystem, forcing: Forcing, e: Any, state: Any, periods: int = 1
 ) -> tuple[np.ndarray, np.ndarray, Any]:
@@ -127,13 +94,11 @@ def monodromy(
     J = np.eye(4)
     t_prev = 0.0
     for row in ev:
-        J = (
-            _saltation(system, forcing, res.e, row)
-            @ _flight_matrix(system, forcing.omega, row[_rigid.E_T] - t_prev)
-            @ J
-        )
-        t_prev = row[_rigid.E_T]
-    J = _flight_matrix(system, forcing.omega, res.t_end - t_prev) @ J
+        t, x, v, u = row[_rigid.E_T], row[_rigid.E_X], row[_rigid.E_XD], row[_rigid.E_YD]
+        a = acceleration(system, forcing, forcing.omega * t + forcing.phase, x, v)
+        J = saltation_matrix(system, res.e, u - v, a) @ flight_matrix(system, t - t_prev) @ J
+        t_prev = t
+    J = flight_matrix(system, res.t_end - t_prev) @ J
     fx, fv, fy, fu = res.final_state
     return np.array([fx, fv, fy - fx, fu]), J, res
 

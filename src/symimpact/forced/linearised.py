@@ -1,0 +1,52 @@
+"""The pieces of a linearised motion through rigid impacts, shared by the closed-form orbits'
+stability (:mod:`symimpact.forced.periodic`) and shooting (:mod:`symimpact.forced.shooting`):
+the flight's transition matrix Φ(τ) (Step 8), the primary's acceleration (Eq. F1) and Step 9's
+saltation matrix S, all in the state (x, ẋ, z = y − x, ẏ)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..generated import forced_flight as ff
+from ..generated import rigid_impact as ri
+from ..system import ImpactSystem
+from .forcing import Forcing
+
+
+def flight_matrix(system: ImpactSystem, tau: float) -> np.ndarray:
+    """Φ(τ) of a flight of τ [s]: x, ẋ from unit displacement and unit velocity without forcing
+    (Step 8, Eq. F1; the flight is affine in the state); z = y − x moves by ẏτ − (x(τ) − x0);
+    ẏ is constant."""
+    # the kernels' plain-float twins: this runs for every flight of every Newton step
+    a = (system.M, system.K, system.C, 0.0, 0.0, 1.0, 0.0)  # no forcing: Ω is not used
+    p11 = ff.forced_displacement_scalar(tau, *a, 1.0, 0.0)
+    p21 = ff.forced_velocity_scalar(tau, *a, 1.0, 0.0)
+    p12 = ff.forced_displacement_scalar(tau, *a, 0.0, 1.0)
+    p22 = ff.forced_velocity_scalar(tau, *a, 0.0, 1.0)
+    return np.array([[p11, p12, 0, 0], [p21, p22, 0, 0], [1 - p11, -p12, 1, tau], [0, 0, 0, 1]])
+
+
+def acceleration(system: ImpactSystem, forcing: Forcing, theta: float, x: float, v: float):
+    """ẍ [m/s²] of the primary in flight at forcing phase θ = Ωt + φ (Eq. F1: its spring and
+    damper on the moving base X_b·cos θ, the force F0·cos θ)."""
+    W = forcing.omega
+    xb, vb = forcing.X_b * math.cos(theta), -forcing.X_b * W * math.sin(theta)
+    return (forcing.F0 * math.cos(theta) - system.K * (x - xb) - system.C * (v - vb)) / system.M
+
+
+def saltation_matrix(system: ImpactSystem, e: float, zdot: float, a: float) -> np.ndarray:
+    """Step 9's saltation matrix at an impact with restitution ``e``, relative velocity ż = ẏ − ẋ
+    [m/s] and primary acceleration ``a`` [m/s²] just before it."""
+    M, C, m = system.M, system.C, system.m
+    kM = ri.saltation_main_gain_scalar(m, M, e)
+    km = ri.saltation_impact_gain_scalar(m, M, e)
+    return np.array(
+        [
+            [1, 0, kM, 0],
+            [0, 1 - kM, ri.saltation_main_velocity_z_scalar(m, M, e, C, zdot, a), kM],
+            [0, 0, -e, 0],
+            [0, km, ri.saltation_impact_velocity_z_scalar(m, M, e, zdot, a), 1 - km],
+        ]
+    )
