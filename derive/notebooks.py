@@ -229,8 +229,9 @@ def write_notebooks(folder: str | Path, steps: tuple[str, ...] = STEPS) -> list[
         path = out / f"{k:02d}_{step}.ipynb"
         nbformat.write(notebook(step), path)
         paths.append(path)
+    from .walkthrough import NOTEBOOK
     from .walkthrough import notebook as walkthrough_notebook
 
-    path = out / f"{len(steps) + 1:02d}_regenerating.ipynb"
+    path = out / NOTEBOOK
     nbformat.write(walkthrough_notebook(ROOT), path)
     return [*paths, path]

@@ -7,17 +7,18 @@ coordinate z = y − x needs y in terms of z; with y = B·cos ωt and x = A·cos
 y = B/(B − A)·z.  The paper's printed factor of Eq. 21 corresponds to the inverted relation
 y = (B − A)/B·z — the change made here.
 
-The same snippets make the docs page (executed when the docs are built, their printed output
-inserted) and the notebook ``08_regenerating.ipynb`` (``python -m derive --notebooks DIR``).
-Each snippet runs in one namespace where ``root`` is the checkout.
+The snippets make the notebook ``13_regenerating.ipynb`` (``python -m derive --notebooks DIR``);
+the docs build executes that notebook once (nbclient, a fresh kernel) and makes the page from its
+cells and their printed output, and offers the executed notebook for download.  Its first cell
+finds the checkout (``root``); every snippet runs in that one namespace.
 """
 
 from __future__ import annotations
 
-import contextlib
-import io
 from dataclasses import dataclass
 from pathlib import Path
+
+from . import STEPS
 
 OLD = "y_of_z = B / (B - A) * z"
 NEW = "y_of_z = (B - A) / B * z"
@@ -143,31 +144,48 @@ shutil.rmtree(work.parent)""",
 )
 
 TITLE = "Regenerating after a change"
+#: The walk-through's notebook, numbered after the steps' notebooks.
+NOTEBOOK = f"{len(STEPS) + 1:02d}_regenerating.ipynb"
 INTRO = (
     "What happens when a derivation changes: one assumption of a step is changed in a working "
     "copy, the formulas are regenerated, and `python -m derive --check`, the step's checks, the "
     "errata table and the tests respond. Every output below was produced when this page was "
-    "built; the notebook `08_regenerating.ipynb` runs the same cells."
+    "built, by executing the notebook `{name}` (offered on the notebooks page) on a fresh "
+    "kernel."
 )
 
 
-def run(root: Path) -> list[tuple[Snippet, str]]:
-    """Execute the snippets in one namespace with ``root`` the checkout; (snippet, its printed
-    output) in order."""
-    ns: dict = {"Path": Path, "root": Path(root)}
+def executed(root: Path):
+    """The walk-through notebook of :func:`notebook`, executed with nbclient on a fresh kernel
+    in ``root`` (the checkout) — what the docs page shows and offers for download."""
+    import nbclient
+
+    nb = notebook(root)
+    client = nbclient.NotebookClient(nb, timeout=900, kernel_name="python3",
+                                     resources={"metadata": {"path": str(root)}})  # fmt: skip
+    client.execute()
+    return nb
+
+
+def _printed(cell) -> str:
+    """What a code cell printed (its stream outputs), or the error it raised."""
     out = []
-    for s in SNIPPETS:
-        buf = io.StringIO()
-        with contextlib.redirect_stdout(buf):
-            exec(compile(s.code, "<walkthrough>", "exec"), ns)
-        out.append((s, buf.getvalue().rstrip()))
-    return out
+    for o in cell.get("outputs", []):
+        if o.get("output_type") == "stream":
+            out.append(o.get("text", ""))
+        elif o.get("output_type") == "error":
+            out.append(f"{o.get('ename')}: {o.get('evalue')}")
+    return "".join(out).rstrip()
 
 
-def page(root: Path) -> str:
-    """The docs page: text, code and real output of every snippet."""
-    out = [f"# {TITLE}", "", INTRO, ""]
-    for k, (s, printed) in enumerate(run(root), 1):
+def page(nb) -> str:
+    """The docs page from the executed notebook: text, code and real output of every snippet
+    (the notebook's first code cell, which finds the checkout, is left out)."""
+    out = [f"# {TITLE}", "", INTRO.format(name=NOTEBOOK), ""]
+    code = [c for c in nb.cells if c.cell_type == "code"][1:]
+    assert len(code) == len(SNIPPETS), "the notebook is not the walk-through's snippets"
+    for k, (s, cell) in enumerate(zip(SNIPPETS, code, strict=True), 1):
+        printed = _printed(cell)
         out += [f"## {k}.", "", s.text, "", "```python", s.code, "```", "", "```text",
                 printed or "(no output)", "```", ""]  # fmt: skip
     return "\n".join(out)
@@ -183,7 +201,7 @@ def notebook(root: Path):
         "display_name": "Python 3",
         "language": "python",
     }
-    nb.cells.append(nbformat.v4.new_markdown_cell(f"# {TITLE}\n\n{INTRO}"))
+    nb.cells.append(nbformat.v4.new_markdown_cell(f"# {TITLE}\n\n{INTRO.format(name=NOTEBOOK)}"))
     boot = f"""import os
 from pathlib import Path
 

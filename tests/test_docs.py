@@ -20,6 +20,7 @@ import sys
 import threading
 from pathlib import Path
 
+import nbformat
 import pytest
 
 from tests import browser
@@ -75,9 +76,17 @@ def test_docs_build_has_every_page_and_offline_mathjax(site):
     # the notebooks are offered for download, one per step and the walk-through
     downloads = sorted(p.name for p in (site / "_downloads").rglob("*.ipynb"))
     assert len(downloads) == len(derive.STEPS) + 1, downloads
+    # the walk-through notebook ran (once, in the build): the change, the step's check failing,
+    # the generated files and the errata differing, the tests failing, the copy coming back
+    walk = next((site / "_downloads").rglob("*_regenerating.ipynb"))
+    cells = [c for c in nbformat.read(walk, as_version=4).cells if c.cell_type == "code"]
+    assert all(c.get("outputs") for c in cells)
+    assert not [o for c in cells for o in c.outputs if o.get("output_type") == "error"]
     regenerating = (ROOT / "docs" / "_generated" / "regenerating.md").read_text(encoding="utf-8")
-    # the walk-through ran: the checks failed, the tests responded, the copy came back
-    assert "FAIL" in regenerating and "3 failed" in regenerating
+    assert "Eq. 21 factor (B − A)/B 21 FAIL" in regenerating
+    assert "files of generated/ differ" in regenerating and "erratum 5" in regenerating
+    assert "FAILED test_each_erratum_is_a_real_difference[eq21_factor]" in regenerating
+    assert "3 failed" in regenerating
     assert "generated files as in the checkout again: True" in regenerating
     html = (site / PAGE).read_text(encoding="utf-8")
     scripts = re.findall(r'<script[^>]+src="([^"]+)"', html)

@@ -264,9 +264,14 @@ def write_pages(app=None) -> None:
     (OUT / "derivations" / "index.md").write_text("\n".join(index), encoding="utf-8")
     (OUT / "errata.md").write_text(errata_page(), encoding="utf-8")
     (OUT / "notebooks.md").write_text(notebooks_page(OUT / "notebooks"), encoding="utf-8")
-    from derive.walkthrough import page as regenerating_page
+    import nbformat
 
-    (OUT / "regenerating.md").write_text(regenerating_page(HERE.parent), encoding="utf-8")
+    from derive import walkthrough
+
+    # executed once, here: the page shows its cells' output, the download carries it
+    walk = walkthrough.executed(HERE.parent)
+    nbformat.write(walk, OUT / "notebooks" / walkthrough.NOTEBOOK)
+    (OUT / "regenerating.md").write_text(walkthrough.page(walk), encoding="utf-8")
     (OUT / "cli.md").write_text(cli_page(), encoding="utf-8")
     (OUT / "tutorial.md").write_text(tutorial_page(OUT / "tutorial", _run_cli), encoding="utf-8")
     (OUT / "report.md").write_text(report_page(OUT / "report"), encoding="utf-8")
