@@ -18,6 +18,7 @@ import time
 
 from . import (
     contact_duration_kernel,
+    frc,
     map_throughput,
     million_map,
     startup,
@@ -31,6 +32,7 @@ SUITE = (
     ("3. map throughput: compiled chunks against the per-point path; Dask", map_throughput.main),
     ("4. a map of 10^6 runs", million_map.main),
     ("5. start-up: import symimpact, symimpact simulate, python -m derive --check", startup.main),
+    ("6. a 200-frequency response curve with stability against brute-force sweeps", frc.main),
 )
 
 

@@ -211,23 +211,25 @@ def _linear_amplitude(system: ImpactSystem, forcing: Forcing, w: np.ndarray) -> 
     return np.hypot(A, B)
 
 
-def _settling_periods(system: ImpactSystem, forcing: Forcing, kept: int, most: int) -> int:
-    """Forcing periods for the primary's free transient to fall to SWEEP_SETTLED of its start,
+def _settling_periods(
+    system: ImpactSystem, forcing: Forcing, kept: int, most: int, settled: float = SWEEP_SETTLED
+) -> int:
+    """Forcing periods for the primary's free transient to fall to ``settled`` of its start,
     exp(−ζω_n·t) (ζω_n = C/(2M)), plus ``kept``; at most ``most`` (no damping: ``most``)."""
     decay = system.C / (2.0 * system.M)  # ζω_n [1/s]
     if not decay > 0:
         return most
-    return min(most, math.ceil(-math.log(SWEEP_SETTLED) / decay / forcing.period) + kept)
+    return min(most, math.ceil(-math.log(settled) / decay / forcing.period) + kept)
 
 
-def _sweep(system, forcing, e, omegas) -> np.ndarray:
+def _sweep(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> np.ndarray:
     """Brute-force sweep: at each Ω, a run from the previous end state until its transient has
-    settled (SWEEP_SETTLED); the steady amplitude over the last SWEEP_KEPT periods."""
+    fallen to ``settled``; the steady amplitude over the last SWEEP_KEPT periods."""
     state = (0.0, 0.0, 0.0, 0.0)
     rows = []
     for omega in omegas:
         f = _forcing(forcing, float(omega))
-        periods = _settling_periods(system, f, SWEEP_KEPT, SWEEP_MAX)
+        periods = _settling_periods(system, f, SWEEP_KEPT, SWEEP_MAX, settled)
         res = simulate_forced(system, f, contact="rigid", e=e, periods=periods,
                               discard=periods - SWEEP_KEPT, x0=state[0], xdot0=state[1],
                               y0=state[2], ydot0=state[3])  # fmt: skip

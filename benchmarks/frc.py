@@ -1,0 +1,57 @@
+"""A 200-frequency frequency-response curve with stability (``symimpact.forced.frf``: shooting,
+pseudo-arclength continuation, Floquet multipliers and located bifurcations on every branch)
+against the brute-force way of getting a response curve: a frequency sweep of the event-driven
+simulation over the same 200 frequencies, each run started from the previous end state and run
+until its transient has fallen to 1e-6 (exp(−ζω_n·t), as ``symimpact frf`` does for its overlay).
+
+The baseline is run twice: settled to 1e-11, the accuracy of the continuation's points (Newton
+stops at 1e-11 of the state's scale), which makes the ratio; and settled to 1e-6, what the frf
+overlay uses.  A sweep finds only the stable motion it happens to follow (one per frequency, no
+stability, no unstable orbit, no bifurcation); the curve finds every branch its starts reach.  Issue 21's target is the curve in
+≤ 10 s on the 2-core machine.  Prints medians of five with their spread and the ratio; asserts
+nothing.  Run from the checkout: python -m benchmarks.frc
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from symimpact.forced.forcing import Forcing
+from symimpact.forced.frf import _sweep, frequency_response
+from symimpact.system import ImpactSystem
+
+from .timing import timed
+
+#: Issue 21's rigid system: M 1 kg, K 1000 N/m, C 0.5 N s/m, m 0.05 kg, d 20 mm, F0 2 N, e 0.6.
+SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+FORCING = Forcing(F0=2.0, omega=30.0)
+E = 0.6
+BAND = np.linspace(25.0, 45.0, 200)  # rad/s; ω_n = 31.6 rad/s inside
+
+
+def main() -> None:
+    # numba compiles on the first call: one small curve before timing
+    frequency_response(SYSTEM, FORCING, E, np.linspace(34.0, 36.0, 3), starts=1, sweeps=False)
+    frc = timed(lambda: frequency_response(SYSTEM, FORCING, E, BAND, sweeps=False))
+    r = frc.out
+    points = sum(len(b.points) for b in r.branches)
+    kinds: dict[str, int] = {}
+    for b in r.branches:
+        for bif in b.bifurcations:
+            kinds[bif.kind] = kinds.get(bif.kind, 0) + 1
+    fair = timed(lambda: _sweep(SYSTEM, FORCING, E, BAND, settled=1e-11))
+    loose = timed(lambda: _sweep(SYSTEM, FORCING, E, BAND, settled=1e-6))
+    print(f"band: {len(BAND)} frequencies, {BAND[0]:g}–{BAND[-1]:g} rad/s; system of issue 21, "
+          f"e {E}")  # fmt: skip
+    print(f"frequency-response curve with stability: {frc.s()}  (target <= 10 s)")
+    print(f"  {len(r.branches)} branches, {points} continuation points, located: "
+          + ", ".join(f"{n} {k}" for k, n in sorted(kinds.items())))  # fmt: skip
+    print(f"brute-force sweep up, transient 1e-11 (baseline): {fair.s()}")
+    print(f"brute-force sweep up, transient 1e-6:             {loose.s()}")
+    print("  a sweep: one amplitude per frequency, the stable motion it follows, no stability")
+    print(f"ratio sweep (1e-11) / curve: {fair.median / frc.median:.2f}; "
+          f"sweep (1e-6) / curve: {loose.median / frc.median:.2f}")  # fmt: skip
+
+
+if __name__ == "__main__":
+    main()
