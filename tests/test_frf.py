@@ -1,14 +1,21 @@
 """``symimpact frf`` (issue 21, item 3): the JSON contract, the curve without reachable walls
-(the textbook linear response, typed here), and bad bands refused in one line."""
+(the textbook linear response, typed here), bad bands refused in one line; and the curve against
+brute force: its stable points are the steady states of runs started near them, the sweeps jump
+where a stable branch ends, and a vanishing impact mass leaves the linear response."""
 
 from __future__ import annotations
 
 import json
 import math
 
+import numpy as np
 import pytest
 
 from symimpact.cli import main
+from symimpact.forced.forcing import Forcing
+from symimpact.forced.frf import _linear_amplitude, _sweep, frequency_response
+from symimpact.forced.simulation import simulate_forced
+from symimpact.system import ImpactSystem
 
 SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--force", "2 N"]
 RIGID = ["--contact", "rigid", "--e", "0.6"]
@@ -76,3 +83,84 @@ def test_a_compliant_frf_is_refused_in_one_line(capsys):
     argv = ["frf", *SYSTEM, "--gap", "20 mm", "--contact", "hertz", "--omega-range", "30:40:1"]
     assert main(argv) == 2
     assert "follows rigid impacts" in capsys.readouterr().err
+
+
+# --- the curve against brute force (issue 21's checks) ------------------------------------------
+
+ISSUE = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+
+
+@pytest.fixture(scope="module")
+def curve():
+    """The issue's rigid system over 25–40 rad/s at 0.1 rad/s (about 3 s)."""
+    w = np.linspace(25.0, 40.0, 151)
+    return frequency_response(ISSUE, Forcing(F0=2.0, omega=30.0), 0.6, w, sweeps=False)
+
+
+def test_stable_branch_points_are_brute_force_steady_states(curve):
+    """On every branch, its most strongly attracting stable point: a brute-force run started
+    1e-3 off the point's state settles, and its steady amplitude equals the point's to 1e-6.
+    The run lasts until the offset has shrunk by the largest multiplier μ to 1e-9 of the state
+    (n = ln(1e-6)/ln μ periods, then 20 kept): what is left is far below 1e-6."""
+    checked = 0
+    for b in curve.branches:
+        stable = [p for p in b.points if p.stable]
+        if not stable:
+            continue
+        p = min(stable, key=lambda q: max(abs(m) for m in q.multipliers))
+        mu = max(abs(m) for m in p.multipliers)
+        k = b.period_multiple
+        n = k * (math.ceil(math.log(1e-6) / math.log(mu)) + 20)
+        x, v, z, u = p.state
+        f = Forcing(F0=2.0, omega=p.omega, phase=b.phase)
+        res = simulate_forced(ISSUE, f, contact="rigid", e=0.6, periods=n, discard=n - 20 * k,
+                              x0=x * (1 + 1e-3), xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
+        assert res.steady.amplitude == pytest.approx(p.amplitude, rel=1e-6), (p.omega, k)
+        checked += 1
+    assert checked >= 3  # the symmetric, an asymmetric and a period-2 branch at least
+
+
+def test_sweep_jumps_sit_at_located_points_of_the_stable_branches(curve):
+    """Brute-force sweeps up and down 25–40 rad/s (0.1 rad/s): where the swept amplitude jumps
+    (changes by more than 15 % between neighbours while the primary alone changes by less
+    than 5 %), a stable branch ends within one sweep step — at a located fold, grazing, branch
+    point, period doubling or Neimark–Sacker point, or at the band's edge of the curve's
+    points.  The sweep leaves a stable motion only where it ceases to exist or loses stability."""
+    w = curve.omegas
+    base = _linear_amplitude(ISSUE, Forcing(F0=2.0, omega=30.0), w)
+    ends = []
+    for b in curve.branches:
+        for p, q in zip(b.points, b.points[1:], strict=False):
+            if p.stable != q.stable:
+                ends.append(0.5 * (p.omega + q.omega))
+        if b.points and b.points[0].stable:
+            ends.append(b.points[0].omega)
+        if b.points and b.points[-1].stable:
+            ends.append(b.points[-1].omega)
+        ends += [f.omega for f in b.bifurcations]
+    step = w[1] - w[0]
+    jumps = 0
+    for direction in (1, -1):
+        ws = w[::direction]
+        amp = _sweep(ISSUE, Forcing(F0=2.0, omega=30.0), 0.6, ws)[:, 1]
+        bs = base[::direction]
+        for i in range(1, len(ws)):
+            if abs(amp[i] / amp[i - 1] - 1) > 0.15 and abs(bs[i] / bs[i - 1] - 1) < 0.05:
+                lo, hi = sorted((ws[i - 1], ws[i]))
+                near = [e for e in ends if lo - step <= e <= hi + step]
+                assert near, (direction, ws[i - 1], ws[i], amp[i - 1], amp[i])
+                jumps += 1
+    assert jumps >= 2
+
+
+def test_a_vanishing_impact_mass_gives_the_linear_response():
+    """m → 0 (m = 1e-7 kg): every point of the curve is the primary's linear response at its
+    Ω, to the order of the mass ratio (1e-7, with ~10 impacts' worth of momentum: 1e-5)."""
+    light = ISSUE.with_(m=1e-7)
+    f = Forcing(F0=2.0, omega=30.0)
+    out = frequency_response(light, f, 0.6, np.linspace(34.0, 38.0, 21), starts=2, sweeps=False)
+    points = [p for b in out.branches for p in b.points]
+    assert points
+    for p in points:
+        assert p.amplitude == pytest.approx(2 / math.hypot(1000 - p.omega**2, 0.5 * p.omega),
+                                            rel=1e-5)  # fmt: skip

@@ -100,17 +100,12 @@ def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.Pa
     plt.close(fig)
 
 
-def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
-    """The frequency-response curve (:func:`symimpact.forced.frf.frequency_response`): each
-    branch's amplitude against Ω, stable solid and unstable dashed, the located bifurcations
-    marked by kind, the primary without the damper, and the brute-force sweeps up (▲) and down
-    (▼)."""
+def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
+    """Draw a frequency-response curve on ``ax`` (see :func:`plot_frf`), with its legend."""
     import numpy as np
 
     from .display import display_unit, shown
 
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(9, 5.5))
     base = frf.baseline
     ax.plot(base[:, 0], shown("x", base[:, 1]), color="0.6", lw=1.0, label="without the damper")
     for i, b in enumerate(frf.branches):
@@ -132,7 +127,7 @@ def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
             ax.plot(f.omega, shown("x", f.amplitude), markers[f.kind], color="k", ms=6, mfc="none",
                     label=None if f.kind in seen else f.kind)  # fmt: skip
             seen.add(f.kind)
-    if len(frf.sweep_up):
+    if sweeps and frf.sweep_up is not None and len(frf.sweep_up):
         ax.plot(frf.sweep_up[:, 0], shown("x", frf.sweep_up[:, 1]), "^", color="C3", ms=3,
                 alpha=0.6, label="sweep up")  # fmt: skip
         ax.plot(frf.sweep_down[:, 0], shown("x", frf.sweep_down[:, 1]), "v", color="C0", ms=3,
@@ -143,6 +138,49 @@ def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
     ax.set_ylabel(f"amplitude max |x| [{display_unit('x')}]")
     ax.set_xlim(frf.omegas[0], frf.omegas[-1])
     ax.legend(fontsize=8, ncol=3)
+
+
+def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
+    """The frequency-response curve (:func:`symimpact.forced.frf.frequency_response`): each
+    branch's amplitude against Ω, stable solid and unstable dashed, the located bifurcations
+    marked by kind, the primary without the damper, and the brute-force sweeps up (▲) and down
+    (▼)."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    draw_frf(ax, frf)
+    if title:
+        ax.set_title(title, fontsize=10)
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
+
+
+def plot_design(table: Any, path: str | os.PathLike, title: str = "") -> None:
+    """The clearance design map (:func:`symimpact.maps.design.design_map`): the peak amplitude
+    over the band against the clearance, one line per mass ratio, the best clearance of each
+    marked, and the primary without the damper's peak (dashed)."""
+    from .display import display_unit, shown
+    from .maps.design import best_clearances
+
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(8, 5))
+    by = "mass_ratio" if "mass_ratio" in table.columns else ("m" if "m" in table.columns else None)
+    groups = [(None, table)] if by is None else list(table.groupby(by, sort=True))
+    for i, (key, g) in enumerate(groups):
+        g = g.sort_values("gap")
+        text = "" if key is None else (f"m/M = {key:g}" if by == "mass_ratio" else
+                                       f"m = {key:g} kg")  # fmt: skip
+        ax.plot(shown("gap", g["gap"]), shown("x", g["peak_amplitude"]), "o-", color=f"C{i % 10}",
+                ms=3, lw=1.3, label=text or "with the damper")  # fmt: skip
+    for i, (_, row) in enumerate(best_clearances(table).iterrows()):
+        ax.plot(shown("gap", row["gap"]), shown("x", row["peak_amplitude"]), "*", ms=13,
+                color=f"C{i % 10}", mec="k", label="best clearance" if i == 0 else None)  # fmt: skip
+    ax.axhline(shown("x", float(table["baseline_peak"].max())), ls="--", color="0.5", lw=1.0,
+               label="without the damper")  # fmt: skip
+    ax.set_xlabel(f"clearance d [{display_unit('gap')}]")
+    ax.set_ylabel(f"peak amplitude over the band [{display_unit('x')}]")
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize=8)
     if title:
         ax.set_title(title, fontsize=10)
     fig.tight_layout()

@@ -16,11 +16,23 @@ import sys
 from collections.abc import Sequence
 
 from ..errors import SymimpactError
-from . import contact_duration, export, fit, frf, periodic, reproduce, ritz, simulate, sweep
+from . import (
+    contact_duration,
+    design,
+    export,
+    fit,
+    frf,
+    periodic,
+    reproduce,
+    ritz,
+    simulate,
+    sweep,
+)
 from .common import Parser
 
 #: The subcommands, in the order of ``symimpact --help``.
-SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, periodic, frf, export, sweep]
+SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, periodic, frf, design, export,
+               sweep]  # fmt: skip
 
 #: What runs each subcommand (by name, aliases included).
 COMMANDS = {name: run for module in SUBCOMMANDS for name, run in module.COMMANDS.items()}

@@ -17,6 +17,14 @@ def add_parser(sub: Any) -> None:
     )
     add_system(p, extra_laws=("rigid",), contact_default=None)
     g = p.add_argument_group("forcing F0·cos(Ωt) and/or base motion X_b·cos(Ωt) over a band")
+    add_band(g)
+    g.add_argument("--no-sweeps", action="store_true",
+                   help="skip the brute-force sweeps up and down the band")  # fmt: skip
+    add_output(p, plot=True)
+
+
+def add_band(g: Any) -> None:
+    """--force/--base, --omega-range/--freq-range and --e, into the argument group ``g``."""
     g.add_argument("--force", dest="F0", default=None, metavar="Q",
                    help="force amplitude F0 on the main mass [N]")  # fmt: skip
     g.add_argument("--base", dest="X_b", default=None, metavar="Q",
@@ -27,22 +35,19 @@ def add_parser(sub: Any) -> None:
                    help="the band in Hz (Ω = 2πf)")  # fmt: skip
     g.add_argument("--e", default=None, metavar="E",
                    help="Newton's coefficient of restitution of the rigid law, 0 ≤ e ≤ 1")  # fmt: skip
-    g.add_argument("--no-sweeps", action="store_true",
-                   help="skip the brute-force sweeps up and down the band")  # fmt: skip
-    add_output(p, plot=True)
 
 
-def run(ns) -> None:
+def band_from(ns) -> Any:
+    """The band [rad/s] of --omega-range or --freq-range, after the rigid law, --e and the
+    forcing are checked (each refusal one line naming the option)."""
     import numpy as np
 
-    from ..display import display_unit, shown
     from ..errors import MethodNotApplicable, ParameterError
-    from ..forced.frf import frequency_response
     from ..maps.points import parse_range
 
     if ns.contact != "rigid":
         raise MethodNotApplicable(
-            "frf",
+            ns.command,
             f"contact {ns.contact!r}: the frequency-response curve follows rigid impacts "
             "(--contact rigid --e E); compliant contacts come with their variational equations",
         )
@@ -63,6 +68,14 @@ def run(ns) -> None:
         raise ParameterError(name, "the band's frequencies must be positive")
     if len(omegas) > 5000:
         raise ParameterError(name, f"{len(omegas)} frequencies; at most 5000")
+    return omegas
+
+
+def run(ns) -> None:
+    from ..display import display_unit, shown
+    from ..forced.frf import frequency_response
+
+    omegas = band_from(ns)
     system = system_from(ns)
     forcing = forcing_of(ns, omega=float(omegas[0]))
     frf = frequency_response(system, forcing, ns.e, omegas, sweeps=not ns.no_sweeps)

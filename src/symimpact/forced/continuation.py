@@ -65,12 +65,14 @@ class Bifurcation:
 @dataclass
 class Branch:
     """A continued branch: its points in order, the located bifurcations, ``period_multiple``
-    k, and ``stopped``: why the continuation ended (the band's edge, a grazing, …)."""
+    k, ``stopped``: why the continuation ended (the band's edge, a grazing, …), and ``phase``
+    [rad]: the forcing phase φ at t = 0 of its points' states (the section, fixed along it)."""
 
     points: list[BranchPoint] = field(default_factory=list)
     bifurcations: list[Bifurcation] = field(default_factory=list)
     period_multiple: int = 1
     stopped: str = ""
+    phase: float = 0.0
 
 
 class _Problem:
@@ -195,7 +197,7 @@ def continue_orbit(
     scale = np.array([amp, amp * W0, h, amp * W0])
     # Ω in units of a tenth of the band: a step of 0.2 then moves Ω by at most 2 % of the band
     problem = _Problem(system, forcing, e, periods, scale, (hi - lo) / 10.0)
-    branch = Branch(period_multiple=periods)
+    branch = Branch(period_multiple=periods, phase=forcing.phase)
     y = np.concatenate([s0 / scale, [W0 / problem.omega0]])
     corrected = _correct(problem, y, np.array([0, 0, 0, 0, 1.0]))
     if corrected is None:

@@ -74,7 +74,12 @@ class FrequencyResponse:
             "points": points,
             "bifurcations": bifurcations,
             "branches": [
-                {"branch": i, "period_multiple": b.period_multiple, "stopped": b.stopped}
+                {
+                    "branch": i,
+                    "period_multiple": b.period_multiple,
+                    "phase": b.phase,
+                    "stopped": b.stopped,
+                }
                 for i, b in enumerate(self.branches)
             ],
             "baseline": [{"omega": w, "amplitude": a} for w, a in self.baseline],
@@ -110,7 +115,7 @@ def _trace(system, forcing, e, state, band, k, step) -> Branch:
     """Both directions from the start, joined into one branch (the down part reversed)."""
     down = continue_orbit(system, forcing, e, state, band, periods=k, direction=-1, step=step)
     up = continue_orbit(system, forcing, e, state, band, periods=k, direction=1, step=step)
-    joined = Branch(period_multiple=k)
+    joined = Branch(period_multiple=k, phase=forcing.phase)
     joined.points = [*reversed(down.points[1:]), *up.points]
     joined.bifurcations = [*down.bifurcations, *up.bifurcations]
     joined.stopped = f"down: {down.stopped}; up: {up.stopped}"

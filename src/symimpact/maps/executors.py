@@ -1,6 +1,7 @@
 """Where the runs of a map execute: in this process, on local worker processes, or on a Dask
 cluster (a scheduler address, a client, or a loopback LocalCluster).  Each takes chunks of
-points and yields the chunks' rows as they finish."""
+points and yields the chunks' rows as they finish; ``chunk`` is the module-level function that
+turns one chunk into rows (a map's runs by default, or the design map's frequency responses)."""
 
 from __future__ import annotations
 
@@ -15,9 +16,9 @@ from .runs import _run_chunk
 EXECUTORS = ("serial", "processes", "dask")
 
 
-def _serial(payloads: list) -> Iterator[list[dict[str, Any]]]:
+def _serial(payloads: list, chunk=_run_chunk) -> Iterator[list[dict[str, Any]]]:
     for p in payloads:
-        yield _run_chunk(p)
+        yield chunk(p)
 
 
 def _worker_init(parent: int) -> None:
@@ -37,7 +38,7 @@ def _worker_init(parent: int) -> None:
         os._exit(1)
 
 
-def _processes(payloads: list, workers: int) -> Iterator[list[dict[str, Any]]]:
+def _processes(payloads: list, workers: int, chunk=_run_chunk) -> Iterator[list[dict[str, Any]]]:
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
     pool = ProcessPoolExecutor(
@@ -45,7 +46,7 @@ def _processes(payloads: list, workers: int) -> Iterator[list[dict[str, Any]]]:
     )
     finished = False
     try:
-        futures = [pool.submit(_run_chunk, p) for p in payloads]
+        futures = [pool.submit(chunk, p) for p in payloads]
         for f in as_completed(futures):
             yield f.result()
         finished = True
@@ -109,7 +110,9 @@ class DaskLost(OSError):
     """The Dask scheduler or every worker was lost during a map (a fault, not bad input)."""
 
 
-def _dask(payloads: list, client: Any, scheduler: str | None) -> Iterator[list[dict[str, Any]]]:
+def _dask(
+    payloads: list, client: Any, scheduler: str | None, chunk=_run_chunk
+) -> Iterator[list[dict[str, Any]]]:
     import time
 
     try:
@@ -127,7 +130,7 @@ def _dask(payloads: list, client: Any, scheduler: str | None) -> Iterator[list[d
     elif own:
         client = _connect(scheduler)
     try:
-        futures = client.map(_run_chunk, payloads, pure=False)
+        futures = client.map(chunk, payloads, pure=False)
         pending = as_completed(futures)
         alone_since = None
         try:

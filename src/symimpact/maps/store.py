@@ -78,7 +78,9 @@ class MapStore:
     duplicated or altered is reported (a :class:`MapStoreWarning`, one line) and its runs are
     computed again, so a resumed table never silently differs.  A damaged ``spec.json`` is
     restored from the manifest's copy when that still matches the inputs.  A lock file beside the
-    output keeps a second map from writing the same ``out`` at the same time.
+    output keeps a second map from writing the same ``out`` at the same time.  ``outputs`` and
+    ``table`` are the row's output columns and the function that makes rows a table (a
+    parameter map's by default; the design map of :mod:`.design` passes its own).
     """
 
     def __init__(
@@ -89,7 +91,10 @@ class MapStore:
         points: Any,
         settings: dict[str, Any],
         force: bool = False,
+        outputs: tuple[str, ...] = OUTPUTS,
+        table: Any = tidy_table,
     ) -> None:
+        self.outputs, self.table = outputs, table
         self.out = Path(out)
         self.format = _format(self.out)
         folder = self.out.parent if str(self.out.parent) else Path(".")
@@ -215,7 +220,7 @@ class MapStore:
             rows = _read_rows(path, self.format)
         except Exception as exc:  # any parse failure of a damaged file
             return f"it cannot be read ({type(exc).__name__})"
-        expected = {"run", *self.spec["names"], *OUTPUTS}
+        expected = {"run", *self.spec["names"], *self.outputs}
         if not rows or set(rows[0]) != expected:
             return "its columns are not this map's"
         runs = [r["run"] for r in rows]
@@ -272,7 +277,7 @@ class MapStore:
         """Save one finished chunk (atomically, synced), then record it in the manifest."""
 
         names = self.spec["names"]
-        df = tidy_table(rows, names)
+        df = self.table(rows, names)
         first = int(df["run"].iloc[0])
         name = f"chunk-{first:09d}{self.suffix}"
         self._write(df, self.partial / name)

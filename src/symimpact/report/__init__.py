@@ -60,7 +60,7 @@ def reproduce(
         for desc, steps, build in _stages():
             bar = tqdm(total=steps, desc=desc, unit="step", file=sys.stderr, disable=not progress)
             try:
-                sections.append(build(tmp, quick, bar.update))
+                sections.append(build(tmp, quick, bar.update, earlier=sections))
             finally:
                 bar.close()
         elapsed = time.perf_counter() - started

@@ -41,8 +41,9 @@ HALO = _halo()
 STEPS = 1 + len(MAP_K)
 
 
-def section(folder: Path, quick: bool, tick: Any) -> Section:
-    """Build the stage: write its figures into ``folder`` and return its section."""
+def section(folder: Path, quick: bool, tick: Any, earlier: Any = ()) -> Section:
+    """Build the stage: write its figures into ``folder`` and return its section (``earlier``:
+    the sections built before it, unused here)."""
     s = Section("beyond", "Beyond the paper: accuracy map and Lindstedt order study")
     _accuracy_map(s, folder, 8 if quick else 32, tick)
     _lindstedt(s, folder, 12 if quick else 60)

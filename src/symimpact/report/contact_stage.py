@@ -32,8 +32,9 @@ def table1_system(m: float) -> ImpactSystem:
     return ImpactSystem(M=1.0, K=TABLE1_K, m=m, gap=0.009, C=0.0, k_hz=K_HZ, c1=0.0)
 
 
-def section(folder: Path, quick: bool, tick: Any) -> Section:
-    """Build the stage: write its figures into ``folder`` and return its section."""
+def section(folder: Path, quick: bool, tick: Any, earlier: Any = ()) -> Section:
+    """Build the stage: write its figures into ``folder`` and return its section (``earlier``:
+    the sections built before it, unused here)."""
     s = Section("contact", "Contact: force laws (Fig. 2), B/A (Fig. 3a), Eq. 31 (Fig. 3b), Table 1")
     _fig2(s, folder)
     tick()

@@ -63,6 +63,8 @@ class Section:
     key: str
     title: str
     blocks: list[str | Table | Figure] = field(default_factory=list)
+    #: What a later stage builds on (not shown), e.g. the reading of Table 2 that was chosen.
+    facts: dict[str, Any] = field(default_factory=dict)
 
     def tables(self) -> list[Table]:
         return [b for b in self.blocks if isinstance(b, Table)]

@@ -106,13 +106,17 @@ def _table3_runs(reading: Reading) -> list[tuple[float, SimulationResult]]:
     return [(float(d), reading.run(float(d))) for d in paper.TABLE3]
 
 
-def section(folder: Path, quick: bool, tick: Any, workers: int | None = None) -> Section:
-    """Build the stage: write its figures into ``folder`` and return its section."""
+def section(
+    folder: Path, quick: bool, tick: Any, earlier: Any = (), workers: int | None = None
+) -> Section:
+    """Build the stage: write its figures into ``folder`` and return its section; the reading
+    it chooses is left in the section's ``facts["reading"]`` for the forced-response stage."""
     s = Section("vibration", "Free vibration: Table 2, Fig. 4–7, Table 3")
     stated_runs = _table3_runs(STATED)
     s.blocks += _stated_blocks(stated_runs)
     tick()
     chosen, ranking = _choose_reading(stated_runs)
+    s.facts["reading"] = chosen
     s.blocks += _reading_blocks(chosen, ranking)
     tick()
     runs = _table3_runs(chosen)

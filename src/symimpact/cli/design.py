@@ -1,0 +1,100 @@
+"""``symimpact design``: the clearance design map — the worst steady amplitude of the primary
+over a frequency band against the clearance (and the mass ratio), the best clearance of each
+mass ratio, beside the primary without the damper (:mod:`symimpact.maps.design`)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .common import add_system, emit, forcing_of, system_from, write_csv
+from .frf import add_band, band_from
+
+
+def add_parser(sub: Any) -> None:
+    """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
+    p = sub.add_parser(
+        "design",
+        help="clearance design map: peak amplitude over a band against the clearance",
+    )
+    add_system(p, extra_laws=("rigid",), contact_default=None)
+    g = p.add_argument_group("forcing F0·cos(Ωt) and/or base motion X_b·cos(Ωt) over a band")
+    add_band(g)
+    g = p.add_argument_group("the designs")
+    g.add_argument("--gaps", required=True, metavar="RANGE",
+                   help='clearances, e.g. "10 mm:200 mm:10 mm" or "10 mm,20 mm"')  # fmt: skip
+    g.add_argument("--mass-ratios", default=None, metavar="RANGE",
+                   help='mass ratios m/M, e.g. "0.02,0.05,0.1" (default: --m as given)')  # fmt: skip
+    g = p.add_argument_group("execution and files")
+    g.add_argument("--executor", choices=("serial", "processes", "dask"), default=None,
+                   help="where the designs run (default: local processes)")  # fmt: skip
+    g.add_argument("--workers", type=int, default=None, help="processes; default all cores")
+    g.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="a running Dask scheduler, e.g. tcp://10.0.0.5:8786")  # fmt: skip
+    g.add_argument("--out", default=None, metavar="FILE",
+                   help="stream the rows to FILE (.csv or .parquet); run again to resume")  # fmt: skip
+    g.add_argument("--overwrite", action="store_true", help="replace an existing --out file")
+    g.add_argument("--quiet", action="store_true", help="no progress bar")
+    g = p.add_argument_group("output")
+    g.add_argument("--json", action="store_true", help="machine-readable rows on stdout (SI)")
+    g.add_argument("--plot", metavar="FILE.png", help="write the design map's figure")
+    g.add_argument("--csv", metavar="FILE", help="write the rows as CSV (SI, units in headers)")
+
+
+def run(ns) -> None:
+    from ..display import display_unit, shown
+    from ..errors import ParameterError
+    from ..maps.design import best_clearances, design_map
+    from ..maps.points import parse_range
+    from ..maps.table import table_rows
+
+    omegas = band_from(ns)
+    system = system_from(ns)
+    forcing = forcing_of(ns, omega=float(omegas[0]))
+    grid: dict[str, Any] = {"gap": parse_range("gaps", ns.gaps)}
+    if len(grid["gap"]) == 0:
+        raise ParameterError("gaps", "give at least one clearance")
+    if ns.mass_ratios is not None:
+        grid["mass_ratio"] = parse_range("mass-ratios", ns.mass_ratios)
+        if len(grid["mass_ratio"]) == 0:
+            raise ParameterError("mass-ratios", "give at least one mass ratio")
+    n = len(grid["gap"]) * len(grid.get("mass_ratio", [0]))
+    if n > 10_000:
+        raise ParameterError("gaps", f"{n} designs; at most 10000")
+    if ns.workers is not None and ns.workers < 1:
+        raise ParameterError("workers", "must be a positive integer")
+    table = design_map(system, forcing, float(ns.e), omegas, grid, executor=ns.executor,
+                       workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
+                       force=ns.overwrite, progress=not (ns.quiet or ns.json))  # fmt: skip
+    rows = table_rows(table)
+    best = table_rows(best_clearances(table))
+    if ns.csv:
+        write_csv(ns.csv, "csv", rows)
+    if ns.plot:
+        from ..plots import plot_design
+
+        plot_design(table, ns.plot, title=f"band {omegas[0]:.4g}–{omegas[-1]:.4g} rad/s, "
+                    f"e = {float(ns.e):g}")  # fmt: skip
+    unit, gunit = display_unit("x"), display_unit("gap")
+    lines = [f"{len(rows)} design(s) over Ω {omegas[0]:.6g}–{omegas[-1]:.6g} rad/s "
+             f"({len(omegas)} frequencies); without the damper the peak is "
+             f"{shown('x', rows[0]['baseline_peak']):.5g} {unit} at Ω "
+             f"{rows[0]['baseline_omega']:.5g} rad/s"]  # fmt: skip
+    for r in rows:
+        ratio = f", m/M {r['mass_ratio']:g}" if "mass_ratio" in r else ""
+        lines.append(
+            f"d {shown('gap', r['gap']):.4g} {gunit}{ratio}: peak "
+            f"{shown('x', r['peak_amplitude']):.5g} {unit} at Ω {r['peak_omega']:.5g} rad/s "
+            f"({r['peak_motion']}), {r['peak_ratio']:.3f} of the primary alone"
+        )
+    for r in best:
+        ratio = f" (m/M {r['mass_ratio']:g})" if "mass_ratio" in r else ""
+        lines.append(
+            f"best clearance{ratio}: d {shown('gap', r['gap']):.4g} {gunit}, peak "
+            f"{shown('x', r['peak_amplitude']):.5g} {unit} ({r['peak_ratio']:.3f} of the primary "
+            "alone)"
+        )
+    emit(ns, {"designs": rows, "best": best}, "\n".join(lines))
+
+
+#: The subcommands this module runs.
+COMMANDS = {"design": run}

@@ -1,0 +1,259 @@
+"""The clearance design map: the worst steady amplitude of the primary over a frequency band,
+against the clearance d (and the mass ratio m/M), beside the primary without the damper.
+
+For one design (a point of the map) the band is covered by three kinds of steady motion:
+
+- the **stable** periodic orbits of the frequency-response curve
+  (:func:`symimpact.forced.frequency_response`: shooting and continuation of impacting orbits,
+  Floquet multipliers) — wherever a stable branch spans a frequency of the band;
+- the **motion without impacts**: the impact mass at rest midway while the primary follows its
+  linear response X(Ω) (Step 8's steady solution), a steady motion wherever X(Ω) < d/2 (the
+  relative motion then stays inside the clearance);
+- **brute-force steady states** of the event-driven simulation (chatter and sticking included)
+  at the frequencies of the band neither of those covers: a sweep through each run of such
+  frequencies, every point run from the previous end state until its transient is 1e-6
+  (exp(−ζω_n·t), as ``symimpact frf`` does for its overlay), the first from rest.
+
+The design's **peak** is the largest amplitude among them: the worst motion the machine may
+settle on in the band.  Beside it: the peak of the primary without the damper, their ratio, and
+where the peak is and which kind of motion it belongs to.  Coexisting motions that neither the
+curve's starts nor the sweeps reach are not seen; a stable branch's largest amplitude is its
+largest continuation point (points are at most the continuation's step apart).
+
+:func:`design_map` runs the points on the executors of a parameter map (serial, local
+processes, Dask) and streams them to a resumable file (:class:`~symimpact.maps.store.MapStore`);
+:func:`best_clearances` picks, for each mass ratio, the clearance of the smallest peak.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..forced.forcing import Forcing
+from ..forced.frf import _linear_amplitude, _sweep, frequency_response
+from ..system import ImpactSystem
+from .executors import EXECUTORS, _dask, _processes, _serial
+from .points import MapPoints, as_points
+from .store import MapStore
+
+#: What a design map may sweep: the clearance, the impact mass or the mass ratio m/M.
+DESIGN_SWEEPABLE = ("gap", "m", "mass_ratio")
+#: Output columns of a design row, in table order (after ``run`` and the swept inputs).
+DESIGN_OUTPUTS = (
+    "peak_amplitude",
+    "peak_omega",
+    "peak_motion",
+    "baseline_peak",
+    "baseline_omega",
+    "peak_ratio",
+    "branches",
+    "stable_frequencies",
+    "linear_frequencies",
+    "brute_force_frequencies",
+)
+#: The kinds of motion a peak can belong to (``peak_motion``).
+MOTIONS = ("stable orbit", "no impact", "brute force")
+
+
+@dataclass(frozen=True)
+class _DesignBase:
+    system: ImpactSystem
+    forcing: Forcing
+    e: float
+    omegas: tuple[float, ...]
+
+
+def _design_system(base: _DesignBase, names: Sequence[str], values: Sequence[float]):
+    changes: dict[str, float] = {}
+    for n, v in zip(names, values, strict=True):
+        if n == "mass_ratio":
+            if not v > 0:
+                raise ParameterError("mass_ratio", f"must be positive, got {v:g}")
+            changes["m"] = float(v) * base.system.M
+        else:
+            changes[n] = float(v)
+    return base.system.with_(**changes) if changes else base.system
+
+
+def _stable_spans(branches) -> list[tuple[float, float]]:
+    """The Ω intervals spanned by two consecutive stable points of a branch."""
+    spans = []
+    for b in branches:
+        for p, q in zip(b.points, b.points[1:], strict=False):
+            if p.stable and q.stable:
+                spans.append(tuple(sorted((p.omega, q.omega))))
+    return spans
+
+
+def design_row(
+    system: ImpactSystem, forcing: Forcing, e: float, omegas: Any, curve: Any = None
+) -> dict[str, Any]:
+    """The design map's figures for one system over the band ``omegas`` [rad/s] (module text):
+    ``peak_amplitude`` [m] and ``peak_omega`` [rad/s] of the worst steady motion, ``peak_motion``
+    (one of :data:`MOTIONS`), ``baseline_peak`` [m] and ``baseline_omega`` [rad/s] of the primary
+    without the damper (Step 8, Eq. F1), ``peak_ratio`` = peak/baseline, the number of
+    ``branches`` of the curve and how many frequencies of the band each kind of motion covers.
+    ``curve``: the system's frequency response over ``omegas`` if already computed."""
+    w = np.asarray(omegas, dtype=float)
+    if curve is None:
+        curve = frequency_response(system, forcing, e, w, sweeps=False)
+    linear = _linear_amplitude(system, forcing, w)
+    candidates: list[tuple[float, float, str]] = []  # (amplitude, Ω, motion)
+    for b in curve.branches:
+        candidates += [(p.amplitude, p.omega, MOTIONS[0]) for p in b.points if p.stable]
+    spans = _stable_spans(curve.branches)
+    stable = np.array([any(lo <= x <= hi for lo, hi in spans) for x in w], dtype=bool)
+    free = linear < system.gap / 2.0
+    candidates += [(float(a), float(x), MOTIONS[1]) for a, x in zip(linear[free], w[free],
+                                                                      strict=True)]  # fmt: skip
+    rest = ~stable & ~free
+    # brute force through each run of consecutive uncovered frequencies, from rest
+    k = 0
+    while k < len(w):
+        if not rest[k]:
+            k += 1
+            continue
+        j = k
+        while j + 1 < len(w) and rest[j + 1]:
+            j += 1
+        for om, amp in _sweep(system, forcing, e, w[k : j + 1]):
+            candidates.append((float(amp), float(om), MOTIONS[2]))
+        k = j + 1
+    peak, peak_omega, motion = max(candidates)
+    i = int(np.argmax(linear))
+    return {
+        "peak_amplitude": peak,
+        "peak_omega": peak_omega,
+        "peak_motion": motion,
+        "baseline_peak": float(linear[i]),
+        "baseline_omega": float(w[i]),
+        "peak_ratio": peak / float(linear[i]),
+        "branches": len(curve.branches),
+        "stable_frequencies": int(stable.sum()),
+        "linear_frequencies": int(free.sum()),
+        "brute_force_frequencies": int(rest.sum()),
+    }
+
+
+def _design_chunk(payload: tuple[_DesignBase, tuple[str, ...], list[int], np.ndarray]):
+    """The rows of one chunk of a design map (what every executor runs)."""
+    base, names, runs, values = payload
+    rows = []
+    for run, v in zip(runs, values, strict=True):
+        system = _design_system(base, names, v)
+        row: dict[str, Any] = {"run": int(run)}
+        row.update(zip(names, (float(x) for x in v), strict=True))
+        row.update(design_row(system, base.forcing, base.e, np.array(base.omegas)))
+        rows.append(row)
+    return rows
+
+
+def design_table(rows: list[dict[str, Any]], names: Sequence[str]):
+    """Design rows as a DataFrame, in run order, with fixed columns and dtypes."""
+    import pandas as pd
+
+    df = pd.DataFrame.from_records(rows, columns=["run", *names, *DESIGN_OUTPUTS])
+    df["run"] = df["run"].astype("int64")
+    for c in (*names, "peak_amplitude", "peak_omega", "baseline_peak", "baseline_omega",
+              "peak_ratio"):  # fmt: skip
+        df[c] = df[c].astype("float64")
+    for c in DESIGN_OUTPUTS[-4:]:
+        df[c] = df[c].astype("int64")
+    df["peak_motion"] = df["peak_motion"].astype("string")
+    return df.sort_values("run", kind="stable").reset_index(drop=True)
+
+
+def design_map(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    omegas: Any,
+    grid: Mapping[str, Any],
+    *,
+    executor: str | None = None,
+    workers: int | None = None,
+    client: Any = None,
+    scheduler: str | None = None,
+    out: str | os.PathLike | None = None,
+    force: bool = False,
+    progress: bool | Callable[[int, int], None] = False,
+):
+    """The clearance design map (module text): one row per point of ``grid`` (``{name:
+    values}`` over :data:`DESIGN_SWEEPABLE`, values in SI or with units) for rigid impacts of
+    restitution ``e`` under ``forcing`` over the band ``omegas`` [rad/s].  ``executor``,
+    ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
+    :func:`symimpact.maps.parameter_map`: the same executors, and a resumable ``out`` file."""
+    from .engine import _progress
+
+    if not isinstance(system, ImpactSystem):
+        raise ParameterError("system", "must be an ImpactSystem")
+    if not isinstance(grid, Mapping) or not grid:
+        raise ParameterError("grid", "give the clearance (gap) and/or mass_ratio values")
+    bad = [n for n in grid if n not in DESIGN_SWEEPABLE]
+    if bad:
+        raise ParameterError(bad[0], f"a design map sweeps {', '.join(DESIGN_SWEEPABLE)}")
+    points: MapPoints = as_points(dict(grid))
+    w = np.asarray(omegas, dtype=float)
+    if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(np.diff(w) <= 0):
+        raise ParameterError("omega", "the band needs at least two increasing frequencies")
+    if not np.all(w > 0):
+        raise ParameterError("omega", "the band's frequencies must be positive")
+    base = _DesignBase(system, forcing, float(e), tuple(float(x) for x in w))
+    for row in points.values:  # a bad point fails here, in one line, before any run
+        _design_system(base, points.names, row)
+    executor = "dask" if (client is not None or scheduler is not None) else executor
+    executor = executor or "processes"
+    if executor not in EXECUTORS:
+        raise ParameterError("executor", f"must be one of {', '.join(EXECUTORS)}")
+    store = None
+    if out is not None:
+        settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, "e": float(e),
+                    "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip
+        store = MapStore(out, system=system, points=points, settings=settings, force=force,
+                         outputs=DESIGN_OUTPUTS, table=design_table)  # fmt: skip
+    try:
+        done: dict[int, dict[str, Any]] = {}
+        if store is not None:
+            done = {int(r["run"]): r for r in store.rows()}
+        todo = [i for i in range(len(points)) if i not in done]
+        payloads = [(base, points.names, [i], points.values[[i]]) for i in todo]
+        workers = workers or os.cpu_count() or 1
+        if executor == "serial" or (executor == "processes" and (workers == 1 or len(todo) < 2)):
+            results = _serial(payloads, _design_chunk)
+        elif executor == "processes":
+            results = _processes(payloads, min(workers, len(payloads)), _design_chunk)
+        else:
+            results = _dask(payloads, client, scheduler, _design_chunk)
+        bar = _progress(progress, len(points), len(done), "design map")
+        try:
+            for rows in results:
+                if store is not None:
+                    store.write_chunk(rows)
+                for r in rows:
+                    done[r["run"]] = r
+                bar(len(rows))
+        finally:
+            bar(None)
+        table = design_table([done[i] for i in range(len(points))], points.names)
+        if store is not None:
+            store.finish(table)
+    finally:
+        if store is not None:
+            store.close()
+    return table
+
+
+def best_clearances(table) -> Any:
+    """For each mass ratio (or impact mass) of a design map, the row of the smallest peak: the
+    best clearance in the band."""
+    by = [c for c in ("mass_ratio", "m") if c in table.columns]
+    if not by:
+        return table.loc[[table["peak_amplitude"].idxmin()]].reset_index(drop=True)
+    idx = table.groupby(by, sort=True)["peak_amplitude"].idxmin()
+    return table.loc[idx.to_numpy()].reset_index(drop=True)

@@ -1,0 +1,114 @@
+"""The clearance design map (issue 21, item 4): the worst steady amplitude over a band against
+the clearance, checked against the textbook linear response, against brute-force sweeps, and
+resumed from its file with the same rows on every executor."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from symimpact.errors import ParameterError
+from symimpact.forced.forcing import Forcing
+from symimpact.forced.frf import _sweep
+from symimpact.maps.design import best_clearances, design_map, design_row
+from symimpact.system import ImpactSystem
+
+SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+FORCING = Forcing(F0=2.0, omega=30.0)
+E = 0.6
+
+
+def _textbook(w):
+    """F0/√((K − MΩ²)² + (CΩ)²), typed here."""
+    return 2.0 / np.hypot(1000.0 - w * w, 0.5 * w)
+
+
+def test_an_unreachable_clearance_gives_the_primary_without_the_damper():
+    """d = 2 m: the relative motion never reaches a wall, so the peak is the linear response's,
+    at the band's frequency nearest resonance, found as the motion without impacts."""
+    w = np.linspace(28.0, 35.0, 36)
+    row = design_row(SYSTEM.with_(gap=2.0), FORCING, E, w)
+    top = float(np.max(_textbook(w)))
+    assert row["peak_motion"] == "no impact" and row["branches"] == 0
+    assert row["peak_amplitude"] == pytest.approx(top, rel=1e-12)
+    assert row["baseline_peak"] == pytest.approx(top, rel=1e-12)
+    assert row["peak_ratio"] == pytest.approx(1.0, rel=1e-12)
+    assert row["brute_force_frequencies"] == 0 and row["linear_frequencies"] == len(w)
+
+
+def test_the_peak_bounds_every_steady_state_the_sweeps_reach():
+    """d = 20 mm over 29–33 rad/s (the resonance, where chatter leaves no branch): the design's
+    peak is at least the largest amplitude of brute-force sweeps up and down the band (each point
+    settled to 1e-6 of its transient, so 1e-4 of the amplitude bounds what is left, as in
+    tests/test_frf.py), and the damper lowers the peak of the primary alone."""
+    w = np.linspace(29.0, 33.0, 21)
+    row = design_row(SYSTEM, FORCING, E, w)
+    up = _sweep(SYSTEM, FORCING, E, w)[:, 1]
+    down = _sweep(SYSTEM, FORCING, E, w[::-1])[:, 1]
+    assert row["peak_amplitude"] >= max(up.max(), down.max()) * (1 - 1e-4)
+    assert row["peak_ratio"] < 1.0
+    assert row["stable_frequencies"] + row["brute_force_frequencies"] >= 1
+
+
+def test_design_map_resumes_from_its_file_and_marks_the_best_clearance(tmp_path):
+    """Four clearances, serial and on two processes: the same table; run again on its
+    unfinished file (one point's chunk kept) it computes only the missing points; the best
+    clearance is the row of the smallest peak."""
+    w = np.linspace(28.0, 34.0, 13)
+    grid = {"gap": ["20 mm", "40 mm", "80 mm", "160 mm"]}
+    serial = design_map(SYSTEM, FORCING, E, w, grid, executor="serial")
+    procs = design_map(SYSTEM, FORCING, E, w, grid, executor="processes", workers=2)
+    assert serial.equals(procs)
+    assert list(serial["gap"]) == [0.02, 0.04, 0.08, 0.16]
+    best = best_clearances(serial)
+    assert len(best) == 1
+    assert best["peak_amplitude"].iloc[0] == serial["peak_amplitude"].min()
+    # a finished map, then an unfinished one: the second call runs only what is missing
+    out = tmp_path / "design.csv"
+    calls: list[tuple[int, int]] = []
+    first = design_map(SYSTEM, FORCING, E, w, {"gap": ["20 mm"]}, executor="serial",
+                       out=out)  # fmt: skip
+    assert out.is_file() and first.equals(serial.iloc[:1])
+    with pytest.raises(ParameterError, match="exists"):
+        design_map(SYSTEM, FORCING, E, w, {"gap": ["20 mm"]}, out=out)
+    out2 = tmp_path / "design2.csv"
+    from symimpact.maps.design import DESIGN_OUTPUTS, _design_chunk, _DesignBase, design_table
+    from symimpact.maps.points import as_points
+    from symimpact.maps.store import MapStore
+
+    points = as_points(grid)
+    settings = {"F0": 2.0, "X_b": 0.0, "phase": 0.0, "e": E,
+                "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip
+    store = MapStore(out2, system=SYSTEM, points=points, settings=settings,
+                     outputs=DESIGN_OUTPUTS, table=design_table)  # fmt: skip
+    base = _DesignBase(SYSTEM, FORCING, E, tuple(w))
+    store.write_chunk(_design_chunk((base, points.names, [2], points.values[[2]])))
+    store.close()
+    resumed = design_map(SYSTEM, FORCING, E, w, grid, executor="serial", out=out2,
+                         progress=lambda done, total: calls.append((done, total)))  # fmt: skip
+    assert resumed.equals(serial)
+    assert calls[-1] == (4, 4) and calls[0] == (2, 4)  # one kept, three computed
+
+
+@pytest.mark.parametrize(
+    ("grid", "parameter"),
+    [
+        ({"K": [1000.0]}, "K"),
+        ({"gap": ["-1 mm"]}, "gap"),
+        ({"mass_ratio": [0.0]}, "mass_ratio"),
+        ({}, "grid"),
+    ],
+)
+def test_bad_design_inputs_name_the_parameter(grid, parameter):
+    with pytest.raises(ParameterError) as exc:
+        design_map(SYSTEM, FORCING, E, np.linspace(30.0, 31.0, 3), grid, executor="serial")
+    assert exc.value.parameter == parameter
+    assert "\n" not in str(exc.value)
+
+
+def test_textbook_is_the_resonance_peak():
+    """The typed textbook amplitude peaks at √(K/M − C²/(2M²)) (sanity of the reference)."""
+    w = np.linspace(31.0, 32.5, 15001)
+    assert w[np.argmax(_textbook(w))] == pytest.approx(math.sqrt(1000.0 - 0.125), abs=1e-4)
