@@ -5,6 +5,7 @@ where a stable branch ends, and a vanishing impact mass leaves the linear respon
 
 from __future__ import annotations
 
+import itertools
 import json
 import math
 
@@ -120,42 +121,63 @@ def test_stable_branch_points_are_brute_force_steady_states(curve):
     assert checked >= 3  # the symmetric, an asymmetric and a period-2 branch at least
 
 
-def test_sweep_jumps_sit_at_located_points_of_the_stable_branches(curve):
-    """Brute-force sweeps up and down 25–40 rad/s (0.1 rad/s): where the swept amplitude jumps
-    (changes by more than 15 % between neighbours while the primary alone changes by less
-    than 5 %), a stable branch ends within one sweep step — at a located fold, grazing, branch
-    point, period doubling or Neimark–Sacker point, or at the band's edge of the curve's
-    points.  The sweep leaves a stable motion only where it ceases to exist or loses stability."""
+def _traced(curve, omega, amp, base):
+    """The motion of the curve a swept point lies on: ("branch", i) for a stable branch (within
+    1 % of the amplitude interpolated between two stable points), ("no impact", None) for the
+    motion without impacts (the primary alone, inside the clearance, to 1e-3), else None."""
+    for i, b in enumerate(curve.branches):
+        for p, q in itertools.pairwise(b.points):
+            if p.stable and q.stable and min(p.omega, q.omega) <= omega <= max(p.omega, q.omega):
+                f = (omega - p.omega) / (q.omega - p.omega)
+                a = p.amplitude + f * (q.amplitude - p.amplitude)
+                if abs(a - amp) <= 1e-2 * a:
+                    return ("branch", i)
+    if any(lo <= omega <= hi for lo, hi in curve.no_impact) and abs(amp / base - 1) < 1e-3:
+        return ("no impact", None)
+    return None
+
+
+def test_sweep_jumps_sit_where_the_motion_they_leave_ends(curve):
+    """Brute-force sweeps up and down 25–40 rad/s (0.1 rad/s).  Where the swept amplitude jumps
+    (its ratio between neighbours differs from the primary alone's by more than 10 %) from a
+    motion the curve traces, that motion ends within one sweep step: a located end of the
+    branch's stable run (a fold, grazing, branch point, period doubling or Neimark–Sacker point),
+    or the located grazing of the motion without impacts (X(Ω) = d/2).  Here both sweeps start
+    from rest on the motion without impacts and jump where it grazes (up near 28.2 rad/s, down
+    near 34.6); jumps between motions the curve does not trace (chatter near resonance) are not
+    claimed."""
     w = curve.omegas
-    base = _linear_amplitude(ISSUE, Forcing(F0=2.0, omega=30.0), w)
-    ends = []
-    for b in curve.branches:
-        for p, q in zip(b.points, b.points[1:], strict=False):
+    f0 = Forcing(F0=2.0, omega=30.0)
+    base = _linear_amplitude(ISSUE, f0, w)
+    ends: dict = {}
+    for i, b in enumerate(curve.branches):
+        located = [f.omega for f in b.bifurcations]
+        for p, q in itertools.pairwise(b.points):
             if p.stable != q.stable:
-                ends.append(0.5 * (p.omega + q.omega))
-        if b.points and b.points[0].stable:
-            ends.append(b.points[0].omega)
-        if b.points and b.points[-1].stable:
-            ends.append(b.points[-1].omega)
-        ends += [f.omega for f in b.bifurcations]
+                located.append(0.5 * (p.omega + q.omega))
+        ends[("branch", i)] = located
+    ends[("no impact", None)] = list(curve.no_impact_grazings)
     step = w[1] - w[0]
-    jumps = 0
+    checked = 0
     for direction in (1, -1):
-        ws = w[::direction]
-        amp = _sweep(ISSUE, Forcing(F0=2.0, omega=30.0), 0.6, ws)[:, 1]
-        bs = base[::direction]
+        ws, bs = w[::direction], base[::direction]
+        amp = _sweep(ISSUE, f0, 0.6, ws)[:, 1]
         for i in range(1, len(ws)):
-            if abs(amp[i] / amp[i - 1] - 1) > 0.15 and abs(bs[i] / bs[i - 1] - 1) < 0.05:
-                lo, hi = sorted((ws[i - 1], ws[i]))
-                near = [e for e in ends if lo - step <= e <= hi + step]
-                assert near, (direction, ws[i - 1], ws[i], amp[i - 1], amp[i])
-                jumps += 1
-    assert jumps >= 2
+            if abs(amp[i] / amp[i - 1] - bs[i] / bs[i - 1]) <= 0.1:
+                continue
+            left = _traced(curve, ws[i - 1], amp[i - 1], bs[i - 1])
+            if left is None:
+                continue
+            lo, hi = sorted((ws[i - 1], ws[i]))
+            assert any(lo - step <= x <= hi + step for x in ends[left]), (left, lo, hi)
+            checked += 1
+    assert checked >= 2
 
 
 def test_a_vanishing_impact_mass_gives_the_linear_response():
-    """m → 0 (m = 1e-7 kg): every point of the curve is the primary's linear response at its
-    Ω, to the order of the mass ratio (1e-7, with ~10 impacts' worth of momentum: 1e-5)."""
+    """m → 0 (m = 1e-7 kg): every point of the curve (one branch, 56 points) is the primary's
+    linear response at its Ω.  The impacts change the primary's momentum by order m/M = 1e-7
+    times the resonant amplification (1/(2ζ) ≈ 63 here): measured 1.0e-6, asserted 1e-5."""
     light = ISSUE.with_(m=1e-7)
     f = Forcing(F0=2.0, omega=30.0)
     out = frequency_response(light, f, 0.6, np.linspace(34.0, 38.0, 21), starts=2, sweeps=False)

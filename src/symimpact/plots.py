@@ -108,6 +108,12 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
 
     base = frf.baseline
     ax.plot(base[:, 0], shown("x", base[:, 1]), color="0.6", lw=1.0, label="without the damper")
+    for k, (lo, hi) in enumerate(getattr(frf, "no_impact", [])):
+        inside = (base[:, 0] >= lo) & (base[:, 0] <= hi)
+        ax.plot(base[inside, 0], shown("x", base[inside, 1]), color="0.6", lw=4, alpha=0.45,
+                solid_capstyle="butt", label=None if k else "no impact (mass at rest midway)")  # fmt: skip
+    for g in getattr(frf, "no_impact_grazings", []):
+        ax.axvline(g, color="0.6", lw=0.8, ls=":")
     for i, b in enumerate(frf.branches):
         w = np.array([p.omega for p in b.points])
         a = shown("x", np.array([p.amplitude for p in b.points]))

@@ -106,6 +106,11 @@ def run(ns) -> None:
             f"  {f['kind']} at Ω {f['omega']:.6g} rad/s, amplitude "
             f"{shown('x', f['amplitude']):.5g} {unit} (branch {f['branch']})"
         )
+    if frf.no_impact:
+        spans = ", ".join(f"{a:.5g}–{b:.5g}" for a, b in frf.no_impact)
+        grazes = ", ".join(f"{g:.6g}" for g in frf.no_impact_grazings) or "nowhere in the band"
+        lines.append(f"no impact (the impact mass at rest midway, the primary alone) for Ω {spans} "
+                     f"rad/s; it grazes a wall at Ω {grazes} rad/s")  # fmt: skip
     lines += [f"note: {n}" for n in frf.notes]
     emit(ns, out, "\n".join(lines))
 

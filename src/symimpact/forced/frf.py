@@ -46,7 +46,11 @@ class FrequencyResponse:
 
     ``branches``: the continued branches; ``baseline``: (Ω, amplitude) of the primary without the
     damper; ``sweep_up``/``sweep_down``: (Ω, steady amplitude) of the brute-force sweeps;
-    ``notes``: starts that failed and why.
+    ``notes``: starts that failed and why; ``no_impact``: the Ω intervals of the band where the
+    motion without impacts exists (the impact mass at rest midway, the primary's linear response
+    inside the clearance: X(Ω) < d/2), ``no_impact_grazings``: where it grazes a wall (X = d/2).
+    That motion is neutral, not asymptotically stable (the floating mass keeps any drift given to
+    it, multipliers 1); a sweep from rest follows it.
     """
 
     omegas: np.ndarray
@@ -55,6 +59,8 @@ class FrequencyResponse:
     sweep_up: np.ndarray | None = None
     sweep_down: np.ndarray | None = None
     notes: list[str] = field(default_factory=list)
+    no_impact: list[tuple[float, float]] = field(default_factory=list)
+    no_impact_grazings: list[float] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         """The JSON contract: points and bifurcations, each with its branch number."""
@@ -85,6 +91,8 @@ class FrequencyResponse:
             "baseline": [{"omega": w, "amplitude": a} for w, a in self.baseline],
             "sweep_up": [{"omega": w, "amplitude": a} for w, a in self.sweep_up],
             "sweep_down": [{"omega": w, "amplitude": a} for w, a in self.sweep_down],
+            "no_impact": [{"omega_from": a, "omega_to": b} for a, b in self.no_impact],
+            "no_impact_grazings": list(self.no_impact_grazings),
             "notes": self.notes,
         }
 
@@ -192,12 +200,40 @@ def frequency_response(
         for reason, ws in failures.items()
     ]
     out.baseline = np.column_stack([w, _linear_amplitude(system, forcing, w)])
+    out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
     if sweeps:
         out.sweep_up = _sweep(system, forcing, e, w)
         out.sweep_down = _sweep(system, forcing, e, w[::-1])[::-1]
     else:
         out.sweep_up = out.sweep_down = np.zeros((0, 2))
     return out
+
+
+def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):
+    """The motion without impacts: the impact mass at rest midway while the primary follows its
+    linear response X(Ω) (Step 8, Eq. F1) — a steady motion wherever X(Ω) < d/2.  Returns its
+    Ω intervals within the band and the frequencies where it grazes (X = d/2), each located by
+    Brent's method between two band frequencies that bracket it (to 1e-12 rad/s)."""
+    from scipy.optimize import brentq
+
+    h = system.gap / 2.0
+
+    def excess(omega: float) -> float:
+        return float(_linear_amplitude(system, forcing, np.array([omega]))[0]) - h
+
+    inside = _linear_amplitude(system, forcing, w) < h
+    ends: list[float] = []
+    for k in range(1, len(w)):
+        if inside[k] != inside[k - 1]:
+            ends.append(brentq(excess, float(w[k - 1]), float(w[k]), xtol=1e-12))
+    intervals: list[tuple[float, float]] = []
+    cuts = [float(w[0]), *ends, float(w[-1])]
+    state = bool(inside[0])
+    for lo, hi in itertools.pairwise(cuts):
+        if state:
+            intervals.append((lo, hi))
+        state = not state
+    return intervals, ends
 
 
 def _repeats_every_period(system, forcing, e, orbit) -> bool:

@@ -27,6 +27,7 @@ processes, Dask) and streams them to a resumable file (:class:`~symimpact.maps.s
 
 from __future__ import annotations
 
+import itertools
 import os
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -85,7 +86,7 @@ def _stable_spans(branches) -> list[tuple[float, float]]:
     """The Ω intervals spanned by two consecutive stable points of a branch."""
     spans = []
     for b in branches:
-        for p, q in zip(b.points, b.points[1:], strict=False):
+        for p, q in itertools.pairwise(b.points):
             if p.stable and q.stable:
                 spans.append(tuple(sorted((p.omega, q.omega))))
     return spans

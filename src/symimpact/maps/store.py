@@ -345,7 +345,11 @@ def read_map(path: str | os.PathLike):
     return tidy_table(rows, names)
 
 
-_INTEGERS = ("run", "n_impacts", "n_effective")
+#: Columns read back as whole numbers and as text (a parameter map's, then the design map's of
+#: :mod:`.design`); every other column is a float.
+_INTEGERS = ("run", "n_impacts", "n_effective", "branches", "stable_frequencies",
+             "linear_frequencies", "brute_force_frequencies")  # fmt: skip
+_STRINGS = ("class", "peak_motion")
 
 
 def _read_rows(path: Path, fmt: str) -> list[dict[str, Any]]:
@@ -360,7 +364,7 @@ def _read_rows(path: Path, fmt: str) -> list[dict[str, Any]]:
     def cell(name: str, text: str) -> Any:
         if text == "":
             return None
-        if name == "class":
+        if name in _STRINGS:
             return text
         return int(text) if name in _INTEGERS else float(text)
 
