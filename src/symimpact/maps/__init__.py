@@ -7,9 +7,12 @@ it):
 - :mod:`.table` — rows as a tidy table;
 - :mod:`.store` — the resumable map file (chunks, manifest, lock);
 - :mod:`.engine` — :func:`parameter_map`: points → executor → store → table;
-- :mod:`.sweep` — sweeps over one input and the gap classification of Sect. 4 (Fig. 5).
+- :mod:`.sweep` — sweeps over one input and the gap classification of Sect. 4 (Fig. 5);
+- :mod:`.design` — the clearance design map of the forced response: the worst steady amplitude
+  over a frequency band against the clearance and the mass ratio, on the same executors and store.
 """
 
+from .design import best_clearances, design_map, design_row
 from .engine import map_rows, parameter_map
 from .executors import EXECUTORS, DaskLost
 from .points import SWEEPABLE, MapPoints, as_points, grid_points, parse_range, read_sets
@@ -27,6 +30,9 @@ __all__ = [
     "MapStore",
     "MapStoreWarning",
     "as_points",
+    "best_clearances",
+    "design_map",
+    "design_row",
     "gap_class",
     "grid_points",
     "map_rows",
