@@ -1,6 +1,6 @@
 """The clearance design map (issue 21, item 4): the worst steady amplitude over a band against
-the clearance, checked against the textbook linear response, against brute-force sweeps, and
-resumed from its file with the same rows on every executor."""
+the clearance, checked against the textbook linear response (an unreachable clearance, a
+vanishing impact mass), and resumed from its file with the same rows on every executor."""
 
 from __future__ import annotations
 
@@ -11,7 +11,6 @@ import pytest
 
 from symimpact.errors import ParameterError
 from symimpact.forced.forcing import Forcing
-from symimpact.forced.frf import _sweep
 from symimpact.maps.design import best_clearances, design_map, design_row
 from symimpact.system import ImpactSystem
 
@@ -35,33 +34,40 @@ def test_an_unreachable_clearance_gives_the_primary_without_the_damper():
     assert row["peak_amplitude"] == pytest.approx(top, rel=1e-12)
     assert row["baseline_peak"] == pytest.approx(top, rel=1e-12)
     assert row["peak_ratio"] == pytest.approx(1.0, rel=1e-12)
-    assert row["brute_force_frequencies"] == 0 and row["linear_frequencies"] == len(w)
+    assert row["uncovered_frequencies"] == 0 and row["linear_frequencies"] == len(w)
 
 
-def test_the_peak_bounds_every_steady_state_the_sweeps_reach():
-    """d = 20 mm over 29–33 rad/s (the resonance, where chatter leaves no branch): the design's
-    peak is at least the largest amplitude of brute-force sweeps up and down the band (each point
-    settled to 1e-6 of its transient, so 1e-4 of the amplitude bounds what is left, as in
-    tests/test_frf.py), and the damper lowers the peak of the primary alone."""
+def test_a_vanishing_impact_mass_leaves_the_primary_alone():
+    """m = 1e-7 kg at d = 20 mm over 29–33 rad/s (the resonance): whatever the impact mass does
+    (it impacts, and near resonance it chatters), the peak is the textbook peak of the primary
+    alone, to the order of m/M times the resonant amplification (1e-7 · 63): measured 4.6e-7,
+    asserted 1e-4 (the sweeps' accuracy, SWEEP_ACCURACY), and the damper changes nothing."""
+    w = np.linspace(29.0, 33.0, 41)
+    row = design_row(SYSTEM.with_(m=1e-7), FORCING, E, w)
+    assert row["peak_amplitude"] == pytest.approx(float(np.max(_textbook(w))), rel=1e-4)
+    assert row["peak_ratio"] == pytest.approx(1.0, rel=1e-4)
+
+
+def test_the_damper_lowers_the_resonant_peak():
+    """d = 20 mm, m/M = 0.05 over 29–33 rad/s: the peak lies where only the sweeps see the
+    motion (chatter near resonance: no branch there), and it is below the primary alone's."""
     w = np.linspace(29.0, 33.0, 21)
     row = design_row(SYSTEM, FORCING, E, w)
-    up = _sweep(SYSTEM, FORCING, E, w)[:, 1]
-    down = _sweep(SYSTEM, FORCING, E, w[::-1])[:, 1]
-    assert row["peak_amplitude"] >= max(up.max(), down.max()) * (1 - 1e-4)
-    assert row["peak_ratio"] < 1.0
-    assert row["stable_frequencies"] + row["brute_force_frequencies"] >= 1
+    assert row["peak_motion"] in ("sweep up", "sweep down")
+    assert row["uncovered_frequencies"] >= 1
+    assert row["peak_ratio"] < 0.9
 
 
 def test_design_map_resumes_from_its_file_and_marks_the_best_clearance(tmp_path):
-    """Four clearances, serial and on two processes: the same table; run again on its
+    """Three clearances, serial and on two processes: the same table; run again on its
     unfinished file (one point's chunk kept) it computes only the missing points; the best
     clearance is the row of the smallest peak."""
-    w = np.linspace(28.0, 34.0, 13)
-    grid = {"gap": ["20 mm", "40 mm", "80 mm", "160 mm"]}
+    w = np.linspace(28.0, 34.0, 7)
+    grid = {"gap": ["20 mm", "80 mm", "160 mm"]}
     serial = design_map(SYSTEM, FORCING, E, w, grid, executor="serial")
     procs = design_map(SYSTEM, FORCING, E, w, grid, executor="processes", workers=2)
     assert serial.equals(procs)
-    assert list(serial["gap"]) == [0.02, 0.04, 0.08, 0.16]
+    assert list(serial["gap"]) == [0.02, 0.08, 0.16]
     best = best_clearances(serial)
     assert len(best) == 1
     assert best["peak_amplitude"].iloc[0] == serial["peak_amplitude"].min()
@@ -89,7 +95,7 @@ def test_design_map_resumes_from_its_file_and_marks_the_best_clearance(tmp_path)
     resumed = design_map(SYSTEM, FORCING, E, w, grid, executor="serial", out=out2,
                          progress=lambda done, total: calls.append((done, total)))  # fmt: skip
     assert resumed.equals(serial)
-    assert calls[-1] == (4, 4) and calls[0] == (2, 4)  # one kept, three computed
+    assert calls[-1] == (3, 3) and calls[0] == (2, 3)  # one kept, two computed
 
 
 @pytest.mark.parametrize(

@@ -348,7 +348,7 @@ def read_map(path: str | os.PathLike):
 #: Columns read back as whole numbers and as text (a parameter map's, then the design map's of
 #: :mod:`.design`); every other column is a float.
 _INTEGERS = ("run", "n_impacts", "n_effective", "branches", "stable_frequencies",
-             "linear_frequencies", "brute_force_frequencies")  # fmt: skip
+             "linear_frequencies", "uncovered_frequencies")  # fmt: skip
 _STRINGS = ("class", "peak_motion")
 
 
