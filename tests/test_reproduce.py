@@ -44,7 +44,7 @@ def test_every_figure_is_a_valid_nonempty_png(report):
     names = {f.name for f in figures}
     assert {"fig2_force_laws", "fig3a_amplitude_ratio", "fig3b_iterations", "fig4_response_9mm",
             "fig5_relative_motion", "fig6_six_gaps", "fig7_gap_sweep", "accuracy_map",
-            "lindstedt_orders", "gap_classes"} <= names  # fmt: skip
+            "lindstedt_orders", "gap_classes", "forced_frc", "forced_design_map"} <= names  # fmt: skip
     for f in figures:
         png = path / f"{f.name}.png"
         w, h = _png_size(png)
@@ -204,6 +204,39 @@ def test_table3_impacts_against_the_solve_ivp_reference(report):
 
 
 # --- beyond the paper ------------------------------------------------------------------------------
+def test_forced_section_restitution_peaks_and_best_clearance(report):
+    """The forced-response section: its e is the restitution of a linear contact (k1 of the
+    paper's fit, c1 of the chosen reading), written here from the damped oscillator,
+    exp(−ζπ/√(1 − ζ²)) with ζ = c1/(2√(k1·μ)); each gap's peak is at least the largest swept
+    amplitude less the sweeps' transient (1e-4); the best clearance of each mass ratio is the
+    smallest peak of the design map's CSV for that ratio."""
+    path, sections = report
+    forced = sections["forced"]
+    text = " ".join(b for b in forced.blocks if isinstance(b, str))
+    reading = sections["vibration"].facts["reading"]
+    system = reading.system(9.0)
+    mu = system.m * system.M / (system.m + system.M)
+    k1 = float(paper.FIT["k1"])
+    zeta = system.c1 / (2 * math.sqrt(k1 * mu))
+    e = math.exp(-zeta * math.pi / math.sqrt(1 - zeta * zeta))
+    assert f"e = {e:.4f}" in text
+    peaks = next(b for b in forced.blocks if isinstance(b, Table) and b.name == "forced_peaks")
+    for row in peaks.rows:
+        peak, swept = row[2], row[5]
+        assert peak >= swept * (1 - 1e-4)
+        assert row[-1] == pytest.approx(peak / row[6], rel=1e-12)
+    with open(path / "forced_design_map.csv", newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    best = next(b for b in forced.blocks
+                if isinstance(b, Table) and b.name == "forced_best_clearance")  # fmt: skip
+    assert best.rows
+    for ratio, gap_mm, peak_mm, *_ in best.rows:
+        mine = [r for r in rows if float(r["m/M"]) == ratio]
+        least = min(mine, key=lambda r: float(r["peak [mm]"]))
+        assert float(least["d [mm]"]) == pytest.approx(gap_mm, rel=1e-12)
+        assert float(least["peak [mm]"]) == pytest.approx(peak_mm, rel=1e-12)
+
+
 def test_lindstedt_truth_matches_the_elliptic_integral_and_orders_improve():
     for x in (1e-3, 0.1, 1.0, 3.0):
         num = beyond_stage.duffing_frequency_numerical(1.0, x, 1.0)

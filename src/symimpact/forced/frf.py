@@ -195,6 +195,7 @@ def frequency_response(
                 out.branches.append(_trace(system, fs, e, orbit.state, band, k, step))
             except SymimpactError as exc:
                 failures.setdefault(f"{origin}: {exc}", []).append(omega)
+    _drop_repeated_bifurcations(out.branches)
     out.notes = [
         f"{reason} (at Ω {', '.join(f'{x:.4g}' for x in ws)} rad/s)"
         for reason, ws in failures.items()
@@ -207,6 +208,22 @@ def frequency_response(
     else:
         out.sweep_up = out.sweep_down = np.zeros((0, 2))
     return out
+
+
+def _drop_repeated_bifurcations(branches: list[Branch]) -> None:
+    """A point located again on a later branch that overlaps an earlier one (two starts whose
+    branches share a stretch) is listed once, with the first: same kind and period, Ω within
+    1e-6 of it and amplitude within 1e-4 (both located to far better than that)."""
+    seen: list[tuple[str, int, float, float]] = []
+    for b in branches:
+        kept = []
+        for f in b.bifurcations:
+            if any(k == f.kind and n == b.period_multiple and abs(w - f.omega) <= 1e-6 * w
+                   and abs(a - f.amplitude) <= 1e-4 * a for k, n, w, a in seen):  # fmt: skip
+                continue
+            kept.append(f)
+            seen.append((f.kind, b.period_multiple, f.omega, f.amplitude))
+        b.bifurcations = kept
 
 
 def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):

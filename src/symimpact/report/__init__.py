@@ -2,7 +2,8 @@
 
 :func:`reproduce` runs the stages (:mod:`.contact_stage`: Fig. 2, 3a, 3b and Table 1;
 :mod:`.vibration_stage`: Table 2, Fig. 4–7 and Table 3; :mod:`.beyond_stage`: accuracy map and
-Lindstedt order study), each behind a progress bar, and writes ``index.html``, ``report.md``,
+Lindstedt order study; :mod:`.forced_stage`: the forced response, frequency-response curves and
+the clearance design map), each behind a progress bar, and writes ``index.html``, ``report.md``,
 one PNG per figure and one CSV per table into a temporary folder that is renamed to the target
 only when everything succeeded (:func:`symimpact.io.staged_folder`).
 """
@@ -28,12 +29,13 @@ TITLE = (
 
 
 def _stages() -> list[tuple[str, int, Callable[..., Section]]]:
-    from . import beyond_stage, contact_stage, vibration_stage
+    from . import beyond_stage, contact_stage, forced_stage, vibration_stage
 
     return [
         ("contact (Fig. 2, 3, Table 1)", contact_stage.STEPS, contact_stage.section),
         ("free vibration (Fig. 4–7, Table 3)", vibration_stage.STEPS, vibration_stage.section),
         ("beyond (accuracy map, Lindstedt)", beyond_stage.STEPS, beyond_stage.section),
+        ("forced (curves, design map)", forced_stage.STEPS, forced_stage.section),
     ]
 
 
