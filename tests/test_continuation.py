@@ -14,6 +14,7 @@ import pytest
 from scipy.optimize import brentq
 from symimpact.generated import periodic_orbit as po
 
+from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, periodic_orbits
 from symimpact.forced.continuation import continue_orbit
 
@@ -83,3 +84,50 @@ def test_neimark_sacker_and_fold_sit_where_the_closed_form_says():
     exact = brentq(existence, 45.0, 50.0, xtol=1e-14)
     assert fold.omega == pytest.approx(exact, rel=1e-8)
     assert np.isclose(fold.amplitude, _closed(exact)[0].amplitude, rtol=1e-4)
+
+
+@pytest.mark.parametrize(
+    ("parameter", "bounds", "direction"),
+    [("gap", (0.012, 0.02), -1), ("F0", (1.0, 2.5), 1), ("e", (0.3, 0.6), -1)],
+)
+def test_continuation_in_gap_force_and_restitution_is_the_closed_form(parameter, bounds,
+                                                                        direction):  # fmt: skip
+    """The stable symmetric orbit at Ω = 36 rad/s continued in the clearance, the force amplitude
+    and the restitution: at every point, the closed-form orbit of the system with that value has
+    the same amplitude (1e-8, as in Ω) and the same stability; each point knows its value.  In
+    the clearance the branch crosses a branch point, located where the closed form's largest
+    multiplier is 1 (1e-5, as in Ω)."""
+    (o,) = [o for o in _orbits(36.0) if o.stable]
+    state, f = _quarter(o, 36.0)
+    branch = continue_orbit(SYSTEM, f, E, state, bounds, parameter=parameter, direction=direction)
+    assert branch.parameter == parameter and len(branch.points) >= 5, branch.stopped
+    for p in branch.points:
+        assert p.omega == 36.0 and bounds[0] - 0.1 * (bounds[1] - bounds[0]) <= p.value
+        system, forcing, e = SYSTEM, Forcing(F0=2, omega=36.0), E
+        if parameter == "gap":
+            system = SYSTEM.with_(gap=p.value)
+        elif parameter == "F0":
+            forcing = Forcing(F0=p.value, omega=36.0)
+        else:
+            e = p.value
+        closed = [c for c in periodic_orbits(system, forcing, e) if c.admissible]
+        c = min(closed, key=lambda c: abs(c.amplitude - p.amplitude))
+        assert p.amplitude == pytest.approx(c.amplitude, rel=1e-8), (p.value, branch.stopped)
+        assert p.stable == c.stable
+    if parameter == "gap":  # the symmetry-breaking branch point at d = 14.64 mm, as in Ω
+        bp = _located(branch, "branch-point")
+        closed = periodic_orbits(SYSTEM.with_(gap=bp.value), Forcing(F0=2, omega=36.0), E)
+        c = min(closed, key=lambda c: abs(c.amplitude - bp.amplitude))
+        assert abs(max(c.multipliers) - 1.0) < 1e-5
+
+
+def test_continuation_refuses_bad_parameters():
+    (o,) = [o for o in _orbits(36.0) if o.stable]
+    state, f = _quarter(o, 36.0)
+    for kwargs, name in (({"parameter": "K"}, "parameter"), ({"bounds": (0.3, 0.2)}, "bounds"),
+                         ({"parameter": "e", "bounds": (0.5, 1.5)}, "bounds"),
+                         ({"parameter": "gap", "bounds": (0.03, 0.05)}, "bounds")):  # fmt: skip
+        args = {"bounds": (30.0, 40.0), **kwargs}
+        with pytest.raises(ParameterError) as exc:
+            continue_orbit(SYSTEM, f, E, state, args.pop("bounds"), **args)
+        assert exc.value.parameter == name

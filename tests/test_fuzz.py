@@ -91,6 +91,8 @@ GOOD = {  # a valid value per option of every subcommand (SI numbers or quantiti
     "warmup": ["20", "50"],
     "multiple": ["1", "2"],
     "omega_range": ["34:36:1", "30:31:0.5"],
+    "gaps": ["20 mm", "20 mm,2 m"],
+    "mass_ratios": ["0.05", "0.05,1e-6"],
     "freq_range": ["5:5.5:0.25"],
 }
 #: A forced simulate lasts --periods (default 400); without it drawn, the fuzz asks for a few,
@@ -181,7 +183,7 @@ def _argv(draw, tmp: Path) -> list[str]:
         else:
             value = draw(_token(dest))
         argv += [flag, value] if draw(st.booleans()) else [f"{flag}={value}"]
-    if name in ("sweep", "map"):
+    if name in ("sweep", "map", "design"):
         argv += ["--executor", "serial", "--quiet"]  # no process pools in a 1000-case loop
     flags = {a.split("=")[0] for a in argv}
     if name == "simulate" and flags & FORCING_FLAGS and "--periods" not in flags:

@@ -57,6 +57,11 @@ SI_UNITS: dict[str, str] = {
     "e": "dimensionless",
     "periods": "dimensionless",
     "discard": "dimensionless",
+    # range options of the command line, named as typed
+    "omega-range": "rad/s",
+    "freq-range": "Hz",
+    "gaps": "m",
+    "mass-ratios": "dimensionless",
 }
 
 

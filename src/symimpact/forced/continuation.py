@@ -1,20 +1,22 @@
-"""Pseudo-arclength continuation of periodic orbits through rigid impacts in the forcing
-frequency Ω: :func:`continue_orbit`.
+"""Pseudo-arclength continuation of periodic orbits through rigid impacts in a parameter — the
+forcing frequency Ω (the frequency-response curve), the clearance d, the force amplitude F0, the
+base-motion amplitude X_b or the restitution e: :func:`continue_orbit`.
 
-The unknowns are y = (s, Ω), s = (x, ẋ, z, ẏ) at the section t = 0, scaled by the starting
-orbit's amplitude, velocity amplitude, d/2 and a tenth of the band.  A point of the branch solves
-P(s; Ω) − s = 0 (P the stroboscopic map over k periods, :func:`symimpact.forced.monodromy`); its
-Jacobian is [monodromy − I | ∂P/∂Ω], the monodromy carried through flights and impacts and
-∂P/∂Ω by central differences (a parameter derivative: step 1e-6 of Ω, ~1e-10 of the map).  Each
+The unknowns are y = (s, p), s = (x, ẋ, z, ẏ) at the section t = 0, scaled by the starting
+orbit's amplitude, velocity amplitude, d/2, and p by a tenth of its range.  A point of the branch
+solves P(s; p) − s = 0 (P the stroboscopic map over k periods, :func:`symimpact.forced.monodromy`);
+its Jacobian is [monodromy − I | ∂P/∂p], the monodromy carried through flights and impacts and
+∂P/∂p by central differences (a parameter derivative: step 1e-6 of the parameter, or of a tenth
+of its range where that is larger; ~1e-10 of the map).  Each
 step predicts along the branch's unit tangent and corrects by Newton's method with the
 pseudo-arclength condition, so the branch is followed around folds.
 
 Along the branch the Floquet multipliers are watched: a real multiplier through +1 where the
-tangent's Ω component changes sign is a *fold*, through +1 without a turn a *branch point* (on
+tangent's parameter component changes sign is a *fold*, through +1 without a turn a *branch point* (on
 the symmetric two-impact orbits: the symmetry-breaking pitchfork from which the asymmetric
 orbits grow), a real one through −1 a *period doubling*, a
 complex pair through the unit circle a *Neimark–Sacker* point; each is located on the arc by
-Brent's method on its test function (the tangent's Ω component, det(monodromy + I), the pair's
+Brent's method on its test function (the tangent's parameter component, det(monodromy + I), the pair's
 modulus − 1).  Where the set of impacts changes (an impact appears or vanishes: a *grazing*) or
 the motion starts to chatter, stick or stop impacting, the branch ends there and says why.
 """
@@ -42,7 +44,8 @@ MAX_NEWTON = 8
 class BranchPoint:
     """One orbit of a branch (SI): ``omega`` [rad/s], ``state`` (x, ẋ, z, ẏ) at t = 0,
     ``amplitude`` [m] max abs(x), ``impacts_per_period``, ``multipliers`` (complex Floquet
-    multipliers over the orbit's k periods), ``stable`` (all moduli < 1)."""
+    multipliers over the orbit's k periods), ``stable`` (all moduli < 1), ``value``: the continued
+    parameter's value there (SI; equal to ``omega`` when Ω is continued)."""
 
     omega: float
     state: tuple[float, float, float, float]
@@ -50,54 +53,82 @@ class BranchPoint:
     impacts_per_period: float
     multipliers: tuple[complex, ...]
     stable: bool
+    value: float = math.nan
 
 
 @dataclass(frozen=True)
 class Bifurcation:
     """A located point of a branch: ``kind`` ("fold", "branch-point", "period-doubling",
-    "neimark-sacker", "grazing"), ``omega`` [rad/s], ``amplitude`` [m]."""
+    "neimark-sacker", "grazing"), ``omega`` [rad/s], ``amplitude`` [m], ``value``: the continued
+    parameter's value there (SI)."""
 
     kind: str
     omega: float
     amplitude: float
+    value: float = math.nan
 
 
 @dataclass
 class Branch:
     """A continued branch: its points in order, the located bifurcations, ``period_multiple``
     k, ``stopped``: why the continuation ended (the band's edge, a grazing, …), and ``phase``
-    [rad]: the forcing phase φ at t = 0 of its points' states (the section, fixed along it)."""
+    [rad]: the forcing phase φ at t = 0 of its points' states (the section, fixed along it),
+    ``parameter``: the continued parameter (see :data:`PARAMETERS`)."""
 
     points: list[BranchPoint] = field(default_factory=list)
     bifurcations: list[Bifurcation] = field(default_factory=list)
     period_multiple: int = 1
     stopped: str = ""
     phase: float = 0.0
+    parameter: str = "omega"
+
+
+#: The parameters :func:`continue_orbit` follows a branch in, with their SI units.
+PARAMETERS = {"omega": "rad/s", "gap": "m", "F0": "N", "X_b": "m", "e": ""}
 
 
 class _Problem:
-    """The scaled residual and Jacobian of the continuation at y = (s/scale, Ω/Ω_unit)."""
+    """The scaled residual and Jacobian of the continuation at y = (s/scale, p/unit)."""
 
-    def __init__(self, system, forcing, e, periods, scale, omega0):
+    def __init__(self, system, forcing, e, periods, scale, unit, parameter="omega"):
         self.system, self.forcing, self.e, self.periods = system, forcing, e, periods
-        self.scale, self.omega0 = scale, omega0
+        self.scale, self.unit, self.parameter = scale, unit, parameter
 
-    def forcing_at(self, omega: float) -> Forcing:
-        f = self.forcing
-        return Forcing(F0=f.F0, X_b=f.X_b, omega=omega, phase=f.phase)
+    def at(self, value: float):
+        """(system, forcing, e) with the continued parameter set to ``value``."""
+        f, system, e = self.forcing, self.system, self.e
+        if self.parameter == "gap":
+            return system.with_(gap=value), f, e
+        if self.parameter == "e":
+            return system, f, value
+        if self.parameter == "omega":
+            return system, Forcing(F0=f.F0, X_b=f.X_b, omega=value, phase=f.phase), e
+        F0 = value if self.parameter == "F0" else f.F0
+        X_b = value if self.parameter == "X_b" else f.X_b
+        return system, Forcing(F0=F0, X_b=X_b, omega=f.omega, phase=f.phase), e
+
+    def omega(self, y: np.ndarray) -> float:
+        """The forcing frequency at y."""
+        return float(y[4] * self.unit) if self.parameter == "omega" else self.forcing.omega
 
     def evaluate(self, y: np.ndarray):
         """(residual, Jacobian 4×5, monodromy, the simulation) at y, all scaled."""
-        s, omega = y[:4] * self.scale, y[4] * self.omega0
-        ps, mono, res = monodromy(self.system, self.forcing_at(omega), self.e, s, self.periods)
-        d = 1e-6 * omega
-        plus = monodromy(self.system, self.forcing_at(omega + d), self.e, s, self.periods)[0]
-        minus = monodromy(self.system, self.forcing_at(omega - d), self.e, s, self.periods)[0]
-        dp = (plus - minus) / (2 * d) * self.omega0
+        s, value = y[:4] * self.scale, y[4] * self.unit
+        ps, mono, res = monodromy(*self.at(value), s, self.periods)
+        d = 1e-6 * max(abs(value), self.unit)
+        plus = monodromy(*self.at(value + d), s, self.periods)[0]
+        minus = monodromy(*self.at(value - d), s, self.periods)[0]
+        dp = (plus - minus) / (2 * d) * self.unit
         J = np.zeros((4, 5))
         J[:, :4] = (mono - np.eye(4)) * self.scale[None, :] / self.scale[:, None]
         J[:, 4] = dp / self.scale
         return (ps - s) / self.scale, J, mono, res
+
+    def where(self, value: float) -> str:
+        """``Ω = 36.2 rad/s``, ``gap = 0.021 m``: the parameter's value in words."""
+        name = "Ω" if self.parameter == "omega" else self.parameter
+        unit = PARAMETERS[self.parameter]
+        return f"{name} = {value:.6g}{' ' + unit if unit else ''}"
 
 
 def _tangent(J: np.ndarray, previous: np.ndarray | None) -> np.ndarray:
@@ -145,12 +176,13 @@ def _point(problem: _Problem, y, mono, res) -> BranchPoint:
     lam = np.linalg.eigvals(mono)
     order = np.argsort(-np.abs(lam))
     return BranchPoint(
-        omega=float(y[4] * problem.omega0),
+        omega=problem.omega(y),
         state=tuple(float(c) for c in y[:4] * problem.scale),
         amplitude=float(np.max(res.period_max)),
         impacts_per_period=len(res.impacts) / problem.periods,
         multipliers=tuple(complex(c) for c in lam[order]),
         stable=bool(np.max(np.abs(lam)) < 1.0),
+        value=float(y[4] * problem.unit),
     )
 
 
@@ -171,22 +203,34 @@ def continue_orbit(
     forcing: Forcing,
     e: Any,
     state: Any,
-    omega_range: tuple[float, float],
+    bounds: tuple[float, float],
     *,
+    parameter: str = "omega",
     periods: int = 1,
     direction: int = 1,
     step: float = 0.02,
     max_points: int = 2000,
 ) -> Branch:
     """Continue the period-``periods`` orbit through ``state`` = (x, ẋ, z, ẏ) at t = 0 (an orbit
-    at ``forcing.omega``, e.g. from :func:`symimpact.forced.shoot`) in Ω over ``omega_range``
-    [rad/s], first towards increasing Ω (``direction`` 1) or decreasing (−1); ``step``: the
-    arclength step in scaled unknowns (adapted between step/64 and 4·step)."""
-    lo, hi = (float(w) for w in omega_range)
-    if not (0 < lo < hi):
-        raise ParameterError("omega_range", f"must be 0 < low < high, got {lo:g}, {hi:g}")
-    if not lo <= forcing.omega <= hi:
-        raise ParameterError("omega_range", f"must contain the start Ω = {forcing.omega:g}")
+    of ``system`` under ``forcing`` with restitution ``e``, e.g. from
+    :func:`symimpact.forced.shoot`) in ``parameter`` — ``"omega"`` (Ω [rad/s], the default),
+    ``"gap"`` (d [m]), ``"F0"`` [N], ``"X_b"`` [m] or ``"e"`` — over ``bounds`` = (low, high) in
+    SI, first towards increasing values (``direction`` 1) or decreasing (−1); ``step``: the
+    arclength step in scaled unknowns (adapted between step/64 and 4·step).  Eq. F1 and F2 along
+    the orbits (Step 8, Step 9)."""
+    if parameter not in PARAMETERS:
+        raise ParameterError("parameter", f"must be one of {', '.join(PARAMETERS)}")
+    lo, hi = (float(w) for w in bounds)
+    if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+        raise ParameterError("bounds", f"must be finite with low < high, got {lo:g}, {hi:g}")
+    if parameter in ("omega", "gap") and not lo > 0:
+        raise ParameterError("bounds", f"{parameter} must stay positive, got low {lo:g}")
+    if parameter == "e" and not (0 <= lo and hi <= 1):
+        raise ParameterError("bounds", f"e must stay within 0–1, got {lo:g}–{hi:g}")
+    start = {"omega": forcing.omega, "gap": system.gap, "F0": forcing.F0, "X_b": forcing.X_b,
+             "e": float(e)}[parameter]  # fmt: skip
+    if not lo <= start <= hi:
+        raise ParameterError("bounds", f"must contain the start, {parameter} = {start:g}")
     if direction not in (1, -1):
         raise ParameterError("direction", "must be 1 or −1")
     s0 = np.array([float(c) for c in state])
@@ -195,13 +239,15 @@ def continue_orbit(
     amp = max(float(np.max(res0.period_max)), 1e-3 * h)
     W0 = forcing.omega
     scale = np.array([amp, amp * W0, h, amp * W0])
-    # Ω in units of a tenth of the band: a step of 0.2 then moves Ω by at most 2 % of the band
-    problem = _Problem(system, forcing, e, periods, scale, (hi - lo) / 10.0)
-    branch = Branch(period_multiple=periods, phase=forcing.phase)
-    y = np.concatenate([s0 / scale, [W0 / problem.omega0]])
+    # the parameter in units of a tenth of its range: a step of 0.2 moves it by at most 2 % of it
+    problem = _Problem(system, forcing, e, periods, scale, (hi - lo) / 10.0, parameter)
+    branch = Branch(period_multiple=periods, phase=forcing.phase, parameter=parameter)
+    y = np.concatenate([s0 / scale, [start / problem.unit]])
     corrected = _correct(problem, y, np.array([0, 0, 0, 0, 1.0]))
     if corrected is None:
-        raise MethodNotApplicable("continuation", f"no orbit through the start at Ω = {W0:g}")
+        raise MethodNotApplicable(
+            "continuation", f"no orbit through the start at {problem.where(start)}"
+        )
     y, J, mono, res = corrected
     t = _tangent(J, np.array([0, 0, 0, 0, float(direction)]))
     point = _point(problem, y, mono, res)
@@ -212,13 +258,13 @@ def continue_orbit(
         attempt = _correct(problem, y + ds * t, t, point.impacts_per_period)
         if attempt is GRAZE:
             branch.bifurcations.append(_grazing(problem, y, t, ds, point))
-            branch.stopped = f"grazing at Ω ≈ {branch.bifurcations[-1].omega:.6g} rad/s"
+            branch.stopped = f"grazing at {problem.where(branch.bifurcations[-1].value)}"
             return branch
         if attempt is None:
             ds *= 0.5
             if ds < step / 64:
                 branch.stopped = (
-                    f"the corrector failed at Ω = {point.omega:.6g} rad/s (chatter, sticking, "
+                    f"the corrector failed at {problem.where(point.value)} (chatter, sticking, "
                     "loss of impacts or a non-smooth turn)"
                 )
                 return branch
@@ -228,7 +274,7 @@ def continue_orbit(
         p1 = _point(problem, y1, mono1, res1)
         if p1.impacts_per_period != point.impacts_per_period:  # (the corrector checks it)
             branch.bifurcations.append(_grazing(problem, y, t, ds, point))
-            branch.stopped = f"grazing at Ω ≈ {branch.bifurcations[-1].omega:.6g} rad/s"
+            branch.stopped = f"grazing at {problem.where(branch.bifurcations[-1].value)}"
             return branch
         tests1 = _tests(t1, mono1)
         for kind in ("fold", "branch-point", "period-doubling", "neimark-sacker"):
@@ -241,8 +287,8 @@ def continue_orbit(
                     branch.bifurcations.append(found)
         y, t, mono, point, tests = y1, t1, mono1, p1, tests1
         branch.points.append(point)
-        if not lo <= point.omega <= hi:
-            branch.stopped = f"the band's edge at Ω = {point.omega:.6g} rad/s"
+        if not lo <= point.value <= hi:
+            branch.stopped = f"the range's edge at {problem.where(point.value)}"
             return branch
         ds = min(ds * 1.5, 4 * step)
     branch.stopped = f"{max_points} points"
@@ -266,7 +312,8 @@ def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
     try:
         sigma = brentq(lambda s: at(s)[3] if s > 0 else a, 0.0, ds, xtol=1e-12 * ds)
         y1, _, res1, _ = at(sigma)
-        return Bifurcation(kind, float(y1[4] * problem.omega0), float(np.max(res1.period_max)))
+        return Bifurcation(kind, problem.omega(y1), float(np.max(res1.period_max)),
+                           float(y1[4] * problem.unit))  # fmt: skip
     except (MethodNotApplicable, ValueError):
         pass
     # at a branch point the extended Jacobian itself is singular and the corrector cannot land
@@ -286,14 +333,16 @@ def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
     ]
     if not roots:
         return None
-    omegas = [float(v[4]) * problem.omega0 for v in ys]
+    values = [float(v[4]) * problem.unit for v in ys]
     amps = [float(np.max(r[2].period_max)) for r in rows[1:]]
     amp0 = float(np.max(problem.evaluate(y)[3].period_max))
     sigma = roots[0]
+    value = float(np.polyval(np.polyfit(grid, values, 3), sigma))
     return Bifurcation(
         kind,
-        float(np.polyval(np.polyfit(grid, omegas, 3), sigma)),
+        value if problem.parameter == "omega" else problem.forcing.omega,
         float(np.polyval(np.polyfit(grid, [amp0, *amps], 3), sigma)),
+        value,
     )
 
 
@@ -302,13 +351,13 @@ def _grazing(problem, y, t, ds, before: BranchPoint) -> Bifurcation:
     (the count is a step function of it) to 1e-6 of ds (ds moves Ω by at most 2 % of the band,
     so 2e-8 of the band); the last orbit with the old count."""
     lo, hi = 0.0, ds
-    amp, omega = before.amplitude, before.omega
+    last = before
     while hi - lo > 1e-6 * ds:
         mid = 0.5 * (lo + hi)
         got = _correct(problem, y + mid * t, t, before.impacts_per_period)
         if got is None or got is GRAZE:
             hi = mid
             continue
-        p = _point(problem, got[0], got[2], got[3])
-        lo, amp, omega = mid, p.amplitude, p.omega
-    return Bifurcation("grazing", omega, amp)
+        last = _point(problem, got[0], got[2], got[3])
+        lo = mid
+    return Bifurcation("grazing", last.omega, last.amplitude, last.value)
