@@ -7,13 +7,15 @@ fails here until the README says the new number.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
 import pytest
+from symimpact.generated import closed_forms
 
 from symimpact.maps.sweep import fig5_limits, gap_range
-from symimpact.report import contact_stage, paper, vibration_stage
+from symimpact.report import contact_stage, forced_stage, paper, vibration_stage
 
 README = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
 TEXT = " ".join(README.split())  # line breaks as spaces
@@ -80,3 +82,24 @@ def test_gap_range_claims(chosen):
     out = [r["gap"] for r in rng["rows"] if r["class"] != "in range"]
     assert says(f"out-of-range gaps are scattered up to {max(out) * 1e3:.1f} mm")
     assert says("on a 0.1 mm grid")
+
+
+def test_forced_section_claims(chosen):
+    """The report's forced section: e of the paper's linear contact and how long that contact
+    lasts against the resonant forcing period, as the README states them."""
+    reading, _ = chosen
+    s = reading.system(9.0)
+    k1 = float(paper.FIT["k1"])
+    e = float(closed_forms.linear_restitution(s.m, s.M, k1, s.c1))
+    share = (
+        float(closed_forms.linear_contact_duration(s.m, s.M, k1, s.c1)) * s.omega_n / (2 * math.pi)
+    )
+    assert says(f"k₁ = {k1:g} N/m, c₁ = {s.c1:g} N s/m: e = {e:.4f}")
+    assert says(f"that contact lasts {share * 100:.1f} % of the resonant forcing period")
+    assert says(
+        f"under F0 = {forced_stage.F0:g} N over {forced_stage.BAND[0]:g}–{forced_stage.BAND[1]:g} ω_n"
+    )
+    gaps = ", ".join(f"{g:g}" for g in forced_stage.GAPS_MM[:-1])
+    assert says(f"at d = {gaps} and {forced_stage.GAPS_MM[-1]:g} mm")
+    ratios = ", ".join(f"{r:g}" for r in forced_stage.MASS_RATIOS[:-1])
+    assert says(f"m/M = {ratios} and {forced_stage.MASS_RATIOS[-1]:g}")
