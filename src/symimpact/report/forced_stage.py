@@ -1,0 +1,207 @@
+"""Report stage "forced": beyond the paper, the forced response of the report's system.
+
+The primary of the reading of Table 2 that the vibration stage chose (M, K, C) carries the impact
+mass m of Table 2 and is driven by F0·cos(Ωt) over a band around its natural frequency ω_n.  The
+paper's contact (the cubic fit with damping c1) is idealised as a rigid impact whose restitution
+is that of the paper's linear fit k1 with the same c1 (Eq. 35's contact, Step 9):
+e = ``closed_forms.linear_restitution(m, M, k1, c1)``; the stage states how long that contact
+lasts against the forcing period, which is what the idealisation neglects.
+
+- The frequency-response curve with and without the damper at three of Table 3's gaps
+  (:func:`symimpact.forced.frequency_response`: branches continued with their stability, located
+  bifurcations, brute-force sweeps up and down as a cross-check), and the located points;
+- the clearance design map (:func:`symimpact.maps.design.design_map`): the worst steady amplitude
+  over the band against the clearance for three mass ratios, the best clearance of each.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..forced.forcing import Forcing
+from ..forced.frf import frequency_response
+from ..generated import closed_forms
+from ..maps.design import best_clearances, design_map, design_row
+from ..plots import draw_frf, plot_design
+from ..system import ImpactSystem
+from ..units import si
+from . import paper
+from .document import Figure, Section, Table
+from .figures import pyplot, save
+
+#: Force amplitude [N]: the primary alone then peaks at F0/(C·ω_n).
+F0 = 0.2
+#: Three of Table 3's gaps [mm] for the response curves.
+GAPS_MM = (9.0, 15.0, 25.0)
+#: The band, in units of ω_n, and its number of frequencies for the curves and for the design
+#: map (quick: fewer).
+BAND = (0.5, 1.5)
+N_BAND, N_BAND_QUICK = 201, 51
+N_DESIGN_BAND, N_DESIGN_BAND_QUICK = 101, 51
+#: The design map: clearances [mm] (quick: coarser), up to twice the primary alone's peak, and
+#: mass ratios m/M.
+DESIGN_GAPS_MM = (2.0, 41.0, 3.0)
+DESIGN_GAPS_MM_QUICK = (2.0, 41.0, 6.0)
+MASS_RATIOS = (0.1, 0.25, 0.5)
+MASS_RATIOS_QUICK = (0.25,)
+STEPS = 1 + len(GAPS_MM) + 1
+
+
+def _system(earlier: Any) -> ImpactSystem:
+    reading = next(s.facts["reading"] for s in earlier if "reading" in s.facts)
+    return reading.system(GAPS_MM[0])
+
+
+def section(folder: Path, quick: bool, tick: Any, earlier: Any = ()) -> Section:
+    """Build the stage: write its figures into ``folder`` and return its section (``earlier``:
+    the sections built before it; the vibration stage's chosen reading is taken from them)."""
+    s = Section("forced", "Beyond the paper: forced response")
+    base = _system(earlier)
+    k1 = si("k1", paper.FIT["k1"] + " N/m")
+    e = float(closed_forms.linear_restitution(base.m, base.M, k1, base.c1))
+    duration = float(closed_forms.linear_contact_duration(base.m, base.M, k1, base.c1))
+    wn = base.omega_n
+    omegas = np.linspace(BAND[0] * wn, BAND[1] * wn, N_BAND_QUICK if quick else N_BAND)
+    forcing = Forcing(F0=F0, omega=float(omegas[0]))
+    s.blocks.append(
+        f"The paper analyses free vibration only. Here its system is driven: the primary of the "
+        f"chosen reading (M = {base.M:g} kg, K = {base.K:g} N/m, C = {base.C:g} N s/m, so "
+        f"ω_n = {wn:.4g} rad/s and ζ = {base.zeta:.3g}) with the impact mass of Table 2 "
+        f"(m = {base.m:g} kg), under F0·cos(Ωt), F0 = {F0:g} N, over Ω = {omegas[0]:.4g}–"
+        f"{omegas[-1]:.4g} rad/s ({len(omegas)} frequencies). The contact is idealised as a "
+        f"rigid impact with the restitution of the paper's linear contact law (k1 = "
+        f"{k1:g} N/m, c1 = {base.c1:g} N s/m; Eq. 35's contact): e = {e:.4f}. That contact "
+        f"lasts {duration * 1e3:.4g} ms, {duration / (2 * math.pi / wn) * 100:.3g} % of the "
+        "forcing period at resonance, which the rigid law neglects: the curves below are the "
+        "rigid idealisation of this system, not its compliant response."
+    )
+    tick()
+    _curves(s, folder, base, forcing, e, omegas, tick)
+    band = np.linspace(omegas[0], omegas[-1], N_DESIGN_BAND_QUICK if quick else N_DESIGN_BAND)
+    _design(s, folder, base, forcing, e, band, quick)
+    tick()
+    return s
+
+
+def _curves(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: float,
+            omegas: np.ndarray, tick: Any) -> None:  # fmt: skip
+    plt = pyplot()
+    fig, axes = plt.subplots(len(GAPS_MM), 1, figsize=(9, 4.2 * len(GAPS_MM)), sharex=True)
+    located: list[list[Any]] = []
+    peaks: list[list[Any]] = []
+    for ax, gap_mm in zip(axes, GAPS_MM, strict=True):
+        system = base.with_(gap=gap_mm * 1e-3)
+        frf = frequency_response(system, forcing, e, omegas)
+        draw_frf(ax, frf)
+        ax.set_title(f"d = {gap_mm:g} mm", fontsize=10)
+        for i, b in enumerate(frf.branches):
+            for f in b.bifurcations:
+                located.append([gap_mm, i, f.kind, f.omega, f.amplitude * 1e3])
+        row = design_row(system, forcing, e, omegas, curve=frf)
+        swept = max(float(np.max(frf.sweep_up[:, 1])), float(np.max(frf.sweep_down[:, 1])))
+        peaks.append([gap_mm, len(frf.branches), row["peak_amplitude"] * 1e3, row["peak_omega"],
+                      row["peak_motion"], swept * 1e3, row["baseline_peak"] * 1e3,
+                      row["peak_ratio"]])  # fmt: skip
+        tick()
+    save(fig, folder, "forced_frc")
+    s.blocks.append(
+        Figure(
+            "forced_frc",
+            "Frequency-response curves at three gaps",
+            "Largest primary displacement max |x| over a period against Ω: branches of periodic "
+            "orbits continued in Ω (stable solid, unstable dashed, one colour per branch), the "
+            "located bifurcations by kind, the primary without the damper (grey; thick where "
+            "it is also the motion without impacts, the impact mass at rest midway, which ends "
+            "where it grazes a wall: dotted lines) and brute-force sweeps up (▲) and down (▼), "
+            "each point run from the previous end state until its transient is 1e-6. Where no "
+            "branch is drawn the motion chatters or sticks, which the continuation does not "
+            "follow; the sweeps show it.",
+        )
+    )
+    s.blocks.append(
+        Table(
+            "forced_peaks",
+            "Peak amplitude over the band at three gaps",
+            ["d [mm]", "branches", "peak with the damper [mm]", "at Ω [rad/s]", "motion",
+             "largest swept [mm]", "without the damper [mm]", "ratio"],  # fmt: skip
+            peaks,
+            [".3g", None, ".4g", ".4g", None, ".4g", ".4g", ".3f"],
+            note="The peak is the largest amplitude of the stable branches, of the motion "
+            "without impacts (the impact mass at rest midway, where the primary alone stays "
+            "inside the clearance) and of the sweeps; a swept amplitude names the peak where it "
+            "exceeds the others by more than its transient, 1e-4 (symimpact.maps.design).",
+        )
+    )
+    s.blocks.append(
+        Table(
+            "forced_bifurcations",
+            "Located bifurcations",
+            ["d [mm]", "branch", "kind", "Ω [rad/s]", "amplitude [mm]"],
+            located,
+            [".3g", None, None, ".6g", ".5g"],
+            note="Folds from the tangent's Ω component, branch points (a multiplier through +1 "
+            "without a turn), period doublings (through −1), Neimark–Sacker points (a complex "
+            "pair through the unit circle) and grazings (an impact with zero relative speed, "
+            "where the impact count changes), each located on its branch.",
+        )
+    )
+
+
+def _design(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: float,
+            omegas: np.ndarray, quick: bool) -> None:  # fmt: skip
+    lo, hi, step = DESIGN_GAPS_MM_QUICK if quick else DESIGN_GAPS_MM
+    gaps = np.arange(lo, hi + step / 2, step) * 1e-3
+    ratios = MASS_RATIOS_QUICK if quick else MASS_RATIOS
+    table = design_map(base, forcing, e, omegas, {"gap": gaps, "mass_ratio": list(ratios)})
+    plot_design(table, folder / "forced_design_map.png",
+                title=f"F0 = {F0:g} N, e = {e:.3f}, Ω {omegas[0]:.3g}–{omegas[-1]:.3g} rad/s")  # fmt: skip
+    s.blocks.append(
+        Figure(
+            "forced_design_map",
+            "Clearance design map",
+            "The worst steady amplitude of the primary over the band against the clearance, one "
+            "line per mass ratio m/M, the best clearance of each marked (★), and the peak of the "
+            "primary without the damper (dashed).",
+        )
+    )
+    rows = []
+    for _, r in best_clearances(table).iterrows():
+        rows.append([r["mass_ratio"], r["gap"] * 1e3, r["peak_amplitude"] * 1e3, r["peak_omega"],
+                     r["peak_motion"], r["baseline_peak"] * 1e3, r["peak_ratio"]])  # fmt: skip
+    s.blocks.append(
+        Table(
+            "forced_best_clearance",
+            "Best clearance for each mass ratio",
+            ["m/M", "d [mm]", "peak [mm]", "at Ω [rad/s]", "motion", "without the damper [mm]",
+             "ratio"],  # fmt: skip
+            rows,
+            [".3g", ".3g", ".4g", ".4g", None, ".4g", ".3f"],
+            note=f"Over {len(gaps)} clearances {gaps[0] * 1e3:g}–{gaps[-1] * 1e3:g} mm, each "
+            f"design's band sampled at {len(omegas)} frequencies; the full map is "
+            "forced_design_map.csv.",
+        )
+    )
+    full = []
+    for _, r in table.iterrows():
+        full.append([r["mass_ratio"], r["gap"] * 1e3, r["peak_amplitude"] * 1e3, r["peak_omega"],
+                     r["peak_motion"], r["peak_ratio"], r["branches"],
+                     r["uncovered_frequencies"]])  # fmt: skip
+    s.blocks.append(
+        Table(
+            "forced_design_map",
+            "Design map",
+            ["m/M", "d [mm]", "peak [mm]", "at Ω [rad/s]", "motion", "ratio", "branches",
+             "frequencies only the sweeps cover"],  # fmt: skip
+            full,
+            [".3g", ".3g", ".4g", ".4g", None, ".3f", None, None],
+            note="Every design of the map, its peak and how it was found.",
+            link_only=True,
+        )
+    )
+
+
+__all__ = ["section"]
