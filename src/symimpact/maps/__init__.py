@@ -12,7 +12,6 @@ it):
   over a frequency band against the clearance and the mass ratio, on the same executors and store.
 """
 
-from .design import best_clearances, design_map, design_row
 from .engine import map_rows, parameter_map
 from .executors import EXECUTORS, DaskLost
 from .points import SWEEPABLE, MapPoints, as_points, grid_points, parse_range, read_sets
@@ -45,3 +44,13 @@ __all__ = [
     "table_rows",
     "tidy_table",
 ]
+
+
+def __getattr__(name: str):
+    """The design map's functions, imported on first use: :mod:`.design` needs the forced
+    response (SciPy's optimisers among it), which a parameter map or a simulation does not."""
+    if name in ("best_clearances", "design_map", "design_row"):
+        from . import design
+
+        return getattr(design, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
