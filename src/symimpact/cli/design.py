@@ -62,7 +62,7 @@ def run(ns) -> None:
         raise ParameterError("gaps", f"{n} designs; at most 10000")
     if ns.workers is not None and ns.workers < 1:
         raise ParameterError("workers", "must be a positive integer")
-    table = design_map(system, forcing, float(ns.e), omegas, grid, executor=ns.executor,
+    table = design_map(system, forcing, ns.e, omegas, grid, executor=ns.executor,
                        workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
                        force=ns.overwrite, progress=not (ns.quiet or ns.json))  # fmt: skip
     rows = table_rows(table)
@@ -73,7 +73,7 @@ def run(ns) -> None:
         from ..plots import plot_design
 
         plot_design(table, ns.plot, title=f"band {omegas[0]:.4g}–{omegas[-1]:.4g} rad/s, "
-                    f"e = {float(ns.e):g}")  # fmt: skip
+                    f"e = {ns.e}")  # fmt: skip
     unit, gunit = display_unit("x"), display_unit("gap")
     lines = [f"{len(rows)} design(s) over Ω {omegas[0]:.6g}–{omegas[-1]:.6g} rad/s "
              f"({len(omegas)} frequencies); without the damper the peak is "

@@ -42,6 +42,7 @@ from ..errors import ParameterError
 from ..forced.forcing import Forcing
 from ..forced.frf import _linear_amplitude, _sweep, frequency_response
 from ..system import ImpactSystem
+from ..units import nonnegative_float
 from .executors import EXECUTORS, _dask, _processes, _serial
 from .points import MapPoints, as_points
 from .store import MapStore
@@ -204,13 +205,16 @@ def design_map(
     bad = [n for n in grid if n not in DESIGN_SWEEPABLE]
     if bad:
         raise ParameterError(bad[0], f"a design map sweeps {', '.join(DESIGN_SWEEPABLE)}")
+    e = nonnegative_float("e", e)
+    if e > 1.0:
+        raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
     points: MapPoints = as_points(dict(grid))
     w = np.asarray(omegas, dtype=float)
     if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(np.diff(w) <= 0):
         raise ParameterError("omega", "the band needs at least two increasing frequencies")
     if not np.all(w > 0):
         raise ParameterError("omega", "the band's frequencies must be positive")
-    base = _DesignBase(system, forcing, float(e), tuple(float(x) for x in w))
+    base = _DesignBase(system, forcing, e, tuple(float(x) for x in w))
     for row in points.values:  # a bad point fails here, in one line, before any run
         _design_system(base, points.names, row)
     executor = "dask" if (client is not None or scheduler is not None) else executor
@@ -219,7 +223,7 @@ def design_map(
         raise ParameterError("executor", f"must be one of {', '.join(EXECUTORS)}")
     store = None
     if out is not None:
-        settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, "e": float(e),
+        settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, "e": e,
                     "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip
         store = MapStore(out, system=system, points=points, settings=settings, force=force,
                          outputs=DESIGN_OUTPUTS, table=design_table)  # fmt: skip

@@ -20,8 +20,8 @@ from pathlib import Path
 
 from tqdm import tqdm
 
-from .document import Section, html, markdown, write_csv
 from ..io import staged_folder
+from .document import Section, html, markdown, write_csv
 
 TITLE = (
     "symimpact — reproduction of “Free vibration analysis of nonlinear resilient impact dampers”"

@@ -126,8 +126,16 @@ def _curves(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: f
         Table(
             "forced_peaks",
             "Peak amplitude over the band at three gaps",
-            ["d [mm]", "branches", "peak with the damper [mm]", "at Ω [rad/s]", "motion",
-             "largest swept [mm]", "without the damper [mm]", "ratio"],  # fmt: skip
+            [
+                "d [mm]",
+                "branches",
+                "peak with the damper [mm]",
+                "at Ω [rad/s]",
+                "motion",
+                "largest swept [mm]",
+                "without the damper [mm]",
+                "ratio",
+            ],
             peaks,
             [".3g", None, ".4g", ".4g", None, ".4g", ".4g", ".3f"],
             note="The peak is the largest amplitude of the stable branches, of the motion "
@@ -176,8 +184,15 @@ def _design(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: f
         Table(
             "forced_best_clearance",
             "Best clearance for each mass ratio",
-            ["m/M", "d [mm]", "peak [mm]", "at Ω [rad/s]", "motion", "without the damper [mm]",
-             "ratio"],  # fmt: skip
+            [
+                "m/M",
+                "d [mm]",
+                "peak [mm]",
+                "at Ω [rad/s]",
+                "motion",
+                "without the damper [mm]",
+                "ratio",
+            ],
             rows,
             [".3g", ".3g", ".4g", ".4g", None, ".4g", ".3f"],
             note=f"Over {len(gaps)} clearances {gaps[0] * 1e3:g}–{gaps[-1] * 1e3:g} mm, each "
@@ -194,8 +209,16 @@ def _design(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: f
         Table(
             "forced_design_map",
             "Design map",
-            ["m/M", "d [mm]", "peak [mm]", "at Ω [rad/s]", "motion", "ratio", "branches",
-             "frequencies only the sweeps cover"],  # fmt: skip
+            [
+                "m/M",
+                "d [mm]",
+                "peak [mm]",
+                "at Ω [rad/s]",
+                "motion",
+                "ratio",
+                "branches",
+                "frequencies only the sweeps cover",
+            ],
             full,
             [".3g", ".3g", ".4g", ".4g", None, ".3f", None, None],
             note="Every design of the map, its peak and how it was found.",

@@ -14,9 +14,9 @@ import numpy as np
 
 from ..errors import SymimpactError
 from ..generated import free_flight
-from ..simulation import SimulationResult, simulate
 from ..maps import gap_class
 from ..maps.sweep import fig5_limits, gap_range, sweep
+from ..simulation import SimulationResult, simulate
 from ..system import ImpactSystem
 from ..units import si
 from . import paper
@@ -351,8 +351,10 @@ def gap_limit_rows(rng: dict[str, Any]) -> list[list[Any]]:
         note = ""
         if f5 is None:
             inside = key == "d_max" and rng["fig5"]["boundaries"]
-            note = f"Fig. 5 criterion: acceptable up to {GAP_SPAN_MM[1]:g} mm" if inside else (
-                "Fig. 5 criterion: no boundary in the span"
+            note = (
+                f"Fig. 5 criterion: acceptable up to {GAP_SPAN_MM[1]:g} mm"
+                if inside
+                else ("Fig. 5 criterion: no boundary in the span")
             )
         rows.append(
             [key, None if f5 is None else f5 * 1e3, None if env is None else env * 1e3, float(pv),
