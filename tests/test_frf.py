@@ -14,7 +14,7 @@ import pytest
 
 from symimpact.cli import main
 from symimpact.forced.forcing import Forcing
-from symimpact.forced.frf import _linear_amplitude, _sweep, frequency_response
+from symimpact.forced.frf import _linear_amplitude, frequency_response
 from symimpact.forced.simulation import simulate_forced
 from symimpact.system import ImpactSystem
 
@@ -93,13 +93,15 @@ ISSUE = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear",
 
 @pytest.fixture(scope="module")
 def curve():
-    """The issue's rigid system over 25–40 rad/s at 0.1 rad/s (about 3 s)."""
+    """The issue's rigid system over 25–40 rad/s at 0.1 rad/s, with the sweeps and the branches
+    started from their untraced periodic motions (about 13 s)."""
     w = np.linspace(25.0, 40.0, 151)
-    return frequency_response(ISSUE, Forcing(F0=2.0, omega=30.0), 0.6, w, sweeps=False)
+    return frequency_response(ISSUE, Forcing(F0=2.0, omega=30.0), 0.6, w)
 
 
 def test_stable_branch_points_are_brute_force_steady_states(curve):
-    """On every branch, its most strongly attracting stable point: a brute-force run started
+    """On every branch (those started from closed-form orbits, from rest and from the sweeps'
+    untraced motions), its most strongly attracting stable point: a brute-force run started
     1e-3 off the point's state settles, and its steady amplitude equals the point's to 1e-6.
     The run lasts until the offset has shrunk by the largest multiplier μ to 1e-9 of the state
     (n = ln(1e-6)/ln μ periods, then 20 kept): what is left is far below 1e-6."""
@@ -142,10 +144,12 @@ def test_sweep_jumps_sit_where_the_motion_they_leave_ends(curve):
     (its ratio between neighbours differs from the primary alone's by more than 10 %) from a
     motion the curve traces, that motion ends within one sweep step: a located end of the
     branch's stable run (a fold, grazing, branch point, period doubling or Neimark–Sacker point),
-    or the located grazing of the motion without impacts (X(Ω) = d/2).  Here both sweeps start
-    from rest on the motion without impacts and jump where it grazes (up near 28.2 rad/s, down
-    near 34.6); jumps between motions the curve does not trace (chatter near resonance) are not
-    claimed."""
+    or the located grazing of the motion without impacts (X(Ω) = d/2).  Here five jumps leave a
+    traced motion: both sweeps start from rest on the motion without impacts and jump where it
+    grazes (up near 28.3 rad/s, down near 34.6); the up sweep leaves a period-1 branch at its
+    Neimark–Sacker point near 33.67 rad/s; both leave a branch started from their own state near
+    31.1 rad/s where it ends.  Jumps between motions the curve does not trace (chatter near
+    resonance) are not claimed."""
     w = curve.omegas
     f0 = Forcing(F0=2.0, omega=30.0)
     base = _linear_amplitude(ISSUE, f0, w)
@@ -159,9 +163,9 @@ def test_sweep_jumps_sit_where_the_motion_they_leave_ends(curve):
     ends[("no impact", None)] = list(curve.no_impact_grazings)
     step = w[1] - w[0]
     checked = 0
-    for direction in (1, -1):
+    for direction, sweep in ((1, curve.sweep_up), (-1, curve.sweep_down)):
         ws, bs = w[::direction], base[::direction]
-        amp = _sweep(ISSUE, f0, 0.6, ws)[:, 1]
+        amp = sweep[::direction, 1]
         for i in range(1, len(ws)):
             if abs(amp[i] / amp[i - 1] - bs[i] / bs[i - 1]) <= 0.1:
                 continue
@@ -171,7 +175,7 @@ def test_sweep_jumps_sit_where_the_motion_they_leave_ends(curve):
             lo, hi = sorted((ws[i - 1], ws[i]))
             assert any(lo - step <= x <= hi + step for x in ends[left]), (left, lo, hi)
             checked += 1
-    assert checked >= 2
+    assert checked >= 4
 
 
 def test_a_vanishing_impact_mass_gives_the_linear_response():

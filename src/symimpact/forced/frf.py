@@ -38,6 +38,8 @@ from .simulation import simulate_forced
 #: SWEEP_MAX periods): near the resonance a neighbouring point's amplitude can be ten times
 #: larger, so 1e-6 leaves ~1e-5 of the amplitude.
 SWEEP_KEPT, SWEEP_SETTLED, SWEEP_MAX = 30, 1e-6, 5000
+#: At most this many extra starts from each sweep's periodic motions that no branch traces.
+SWEEP_STARTS = 4
 
 
 @dataclass
@@ -166,13 +168,28 @@ def frequency_response(
     out = FrequencyResponse(omegas=w)
     failures: dict[str, list[float]] = {}  # reason → the frequencies where it happened
     step = 0.05
+
+    def follow(origin: str, k: int, state, fs: Forcing) -> None:
+        """Shoot from ``state`` and, unless the orbit is on a traced branch, continue it."""
+        try:
+            orbit = shoot(system, fs, e, state, periods=k)
+        except SymimpactError as exc:
+            failures.setdefault(f"{origin}: {exc}", []).append(fs.omega)
+            return
+        if k > 1 and _repeats_every_period(system, fs, e, orbit):
+            return  # a period-1 orbit found as period 2
+        if _on_branch(out.branches, fs.omega, orbit.amplitude, k):
+            return
+        try:
+            out.branches.append(_trace(system, fs, e, orbit.state, band, k, step))
+        except SymimpactError as exc:
+            failures.setdefault(f"{origin}: {exc}", []).append(fs.omega)
+
     for omega in np.linspace(band[0], band[1], starts + 2)[1:-1]:
         f = _forcing(forcing, float(omega))
-        candidates = []
         for o in periodic_orbits(system, f, e):
             if o.admissible:
-                candidates.append(("closed form", 1, *_section_state(o, float(omega), h, system,
-                                                                     forcing)))  # fmt: skip
+                follow("closed form", 1, *_section_state(o, float(omega), h, system, forcing))
         for k in (1, 2):
             try:
                 shot = shoot_from_rest(system, f, e, warmup=_settling_periods(system, f, 20, 300),
@@ -180,33 +197,26 @@ def frequency_response(
             except SymimpactError as exc:
                 failures.setdefault(f"{k} period(s) from rest: {exc}", []).append(omega)
                 continue
-            candidates.append(("from rest", k, shot.state, f))
-        for origin, k, state, fs in candidates:
-            try:
-                orbit = shoot(system, fs, e, state, periods=k)
-            except SymimpactError as exc:
-                failures.setdefault(f"{origin}: {exc}", []).append(omega)
-                continue
-            if k > 1 and _repeats_every_period(system, fs, e, orbit):
-                continue  # a period-1 orbit found as period 2
-            if _on_branch(out.branches, fs.omega, orbit.amplitude, k):
-                continue
-            try:
-                out.branches.append(_trace(system, fs, e, orbit.state, band, k, step))
-            except SymimpactError as exc:
-                failures.setdefault(f"{origin}: {exc}", []).append(omega)
+            follow("from rest", k, shot.state, f)
+    out.baseline = np.column_stack([w, _linear_amplitude(system, forcing, w)])
+    out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
+    if sweeps:
+        up = _sweep_runs(system, forcing, e, w)
+        down = _sweep_runs(system, forcing, e, w[::-1])[::-1]
+        out.sweep_up = np.array([(r.omega, r.amplitude) for r in up])
+        out.sweep_down = np.array([(r.omega, r.amplitude) for r in down])
+        # a periodic motion a sweep settled on that no branch traces: one more start, in the
+        # middle of each run of such frequencies (at most SWEEP_STARTS per sweep)
+        for runs in (up, down):
+            for r in _untraced(runs, out, system.gap / 2.0)[:SWEEP_STARTS]:
+                follow("sweep state", r.period_multiple, r.state, _forcing(forcing, r.omega))
+    else:
+        out.sweep_up = out.sweep_down = np.zeros((0, 2))
     _drop_repeated_bifurcations(out.branches)
     out.notes = [
         f"{reason} (at Ω {', '.join(f'{x:.4g}' for x in ws)} rad/s)"
         for reason, ws in failures.items()
     ]
-    out.baseline = np.column_stack([w, _linear_amplitude(system, forcing, w)])
-    out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
-    if sweeps:
-        out.sweep_up = _sweep(system, forcing, e, w)
-        out.sweep_down = _sweep(system, forcing, e, w[::-1])[::-1]
-    else:
-        out.sweep_up = out.sweep_down = np.zeros((0, 2))
     return out
 
 
@@ -280,9 +290,20 @@ def _settling_periods(
     return min(most, math.ceil(-math.log(settled) / decay / forcing.period) + kept)
 
 
-def _sweep(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> np.ndarray:
+@dataclass(frozen=True)
+class _SweepPoint:
+    omega: float
+    amplitude: float
+    state: tuple[float, float, float, float]  # (x, ẋ, z, ẏ) at the end, forcing phase φ
+    periodic: bool
+    period_multiple: int
+    impacts_per_period: float
+
+
+def _sweep_runs(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> list[_SweepPoint]:
     """Brute-force sweep: at each Ω, a run from the previous end state until its transient has
-    fallen to ``settled``; the steady amplitude over the last SWEEP_KEPT periods."""
+    fallen to ``settled``; the steady amplitude over the last SWEEP_KEPT periods, the end state
+    and whether the motion repeats (:func:`symimpact.forced.steady_state`)."""
     state = (0.0, 0.0, 0.0, 0.0)
     rows = []
     for omega in omegas:
@@ -291,8 +312,35 @@ def _sweep(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> np.nda
         res = simulate_forced(system, f, contact="rigid", e=e, periods=periods,
                               discard=periods - SWEEP_KEPT, x0=state[0], xdot0=state[1],
                               y0=state[2], ydot0=state[3])  # fmt: skip
-        rows.append((float(omega), res.steady.amplitude))
         x, v, y, u = res.final_state
+        st = res.steady
+        rows.append(_SweepPoint(float(omega), st.amplitude, (x, v, y - x, u), bool(st.periodic),
+                                int(st.period_multiple or 0), float(st.impacts_per_period)))  # fmt: skip
         # the forcing phase restarts at t = 0: the end state after whole periods is at phase φ
         state = (x, v, y, u)
-    return np.array(rows)
+    return rows
+
+
+def _sweep(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> np.ndarray:
+    """(Ω, steady amplitude) of :func:`_sweep_runs`."""
+    return np.array([(r.omega, r.amplitude) for r in _sweep_runs(system, forcing, e, omegas,
+                                                                  settled)])  # fmt: skip
+
+
+def _untraced(runs: list[_SweepPoint], out: FrequencyResponse, h: float) -> list[_SweepPoint]:
+    """The middle point of each run of swept frequencies whose motion repeats every one or two
+    periods with impacts (no chatter or sticking: ``steady_state`` calls those not periodic) but
+    lies on no traced branch and is not the motion without impacts."""
+
+    def untraced(r: _SweepPoint) -> bool:
+        return (r.periodic and r.period_multiple in (1, 2) and r.impacts_per_period > 0
+                and not _on_branch(out.branches, r.omega, r.amplitude, r.period_multiple))  # fmt: skip
+
+    picked, run = [], []
+    for r in [*runs, None]:
+        if r is not None and untraced(r):
+            run.append(r)
+        elif run:
+            picked.append(run[len(run) // 2])
+            run = []
+    return picked
