@@ -40,12 +40,12 @@ GAPS_MM = (9.0, 15.0, 25.0)
 #: The band, in units of ω_n, and its number of frequencies for the curves and for the design
 #: map (quick: fewer).
 BAND = (0.5, 1.5)
-N_BAND, N_BAND_QUICK = 201, 51
-N_DESIGN_BAND, N_DESIGN_BAND_QUICK = 101, 51
+N_BAND, N_BAND_QUICK = 201, 41
+N_DESIGN_BAND, N_DESIGN_BAND_QUICK = 101, 31
 #: The design map: clearances [mm] (quick: coarser), up to twice the primary alone's peak, and
 #: mass ratios m/M.
 DESIGN_GAPS_MM = (2.0, 41.0, 3.0)
-DESIGN_GAPS_MM_QUICK = (2.0, 41.0, 6.0)
+DESIGN_GAPS_MM_QUICK = (5.0, 41.0, 9.0)
 MASS_RATIOS = (0.1, 0.25, 0.5)
 MASS_RATIOS_QUICK = (0.25,)
 STEPS = 1 + len(GAPS_MM) + 1
