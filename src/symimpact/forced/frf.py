@@ -7,7 +7,9 @@ several kinds of starting point, so that coexisting motions are found:
 - the closed-form symmetric two-impact orbits (Eq. F3) that are admissible, at frequencies spread
   over the band;
 - the orbits brute-force runs from rest settle near (:func:`symimpact.forced.shoot_from_rest`),
-  of one and two forcing periods.
+  of one and two forcing periods;
+- with the sweeps: the periodic impacting motions (one or two periods) a sweep settles on that no
+  branch traces, one start in the middle of each run of such frequencies.
 
 A start that lies on a branch already traced is skipped.  Beside the branches: the primary
 without the damper (the linear response of M, K, C, Step 8's steady solution) and brute-force
@@ -156,8 +158,9 @@ def frequency_response(
     """The frequency-response curve over the band ``omegas`` [rad/s] (its first and last values
     bound the branches; the sweeps and the baseline use every value): branches continued from
     ``starts`` frequencies spread over the band (closed-form orbits and brute-force steady
-    states of one and two periods), the linear response without the damper, and the up and down
-    brute-force sweeps."""
+    states of one and two periods) and, with ``sweeps``, from the sweeps' untraced periodic
+    motions; the linear response without the damper (Step 8, Eq. F1), the motion without
+    impacts, and the up and down brute-force sweeps."""
     w = np.asarray(omegas, dtype=float)
     if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(w <= 0):
         raise ParameterError("omega", "the band needs at least two positive frequencies")
