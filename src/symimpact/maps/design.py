@@ -217,8 +217,13 @@ def design_map(
     base = _DesignBase(system, forcing, e, tuple(float(x) for x in w))
     for row in points.values:  # a bad point fails here, in one line, before any run
         _design_system(base, points.names, row)
-    executor = "dask" if (client is not None or scheduler is not None) else executor
+    if client is not None or scheduler is not None:
+        if executor not in (None, "dask"):
+            raise ParameterError("executor", f"{executor!r} cannot use a Dask client or scheduler")
+        executor = "dask"
     executor = executor or "processes"
+    if workers is not None and (not isinstance(workers, int) or workers < 1):
+        raise ParameterError("workers", "must be a positive integer")
     if executor not in EXECUTORS:
         raise ParameterError("executor", f"must be one of {', '.join(EXECUTORS)}")
     store = None
