@@ -16,7 +16,8 @@ from .runs import _run_chunk
 EXECUTORS = ("serial", "processes", "dask")
 
 
-def _serial(payloads: list, chunk=_run_chunk) -> Iterator[list[dict[str, Any]]]:
+def _serial(payloads: list, chunk=None) -> Iterator[list[dict[str, Any]]]:
+    chunk = chunk or _run_chunk  # looked up at call time (tests replace it)
     for p in payloads:
         yield chunk(p)
 
@@ -38,7 +39,8 @@ def _worker_init(parent: int) -> None:
         os._exit(1)
 
 
-def _processes(payloads: list, workers: int, chunk=_run_chunk) -> Iterator[list[dict[str, Any]]]:
+def _processes(payloads: list, workers: int, chunk=None) -> Iterator[list[dict[str, Any]]]:
+    chunk = chunk or _run_chunk
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
     pool = ProcessPoolExecutor(
@@ -111,8 +113,9 @@ class DaskLost(OSError):
 
 
 def _dask(
-    payloads: list, client: Any, scheduler: str | None, chunk=_run_chunk
+    payloads: list, client: Any, scheduler: str | None, chunk=None
 ) -> Iterator[list[dict[str, Any]]]:
+    chunk = chunk or _run_chunk
     import time
 
     try:
