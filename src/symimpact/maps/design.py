@@ -108,7 +108,8 @@ def design_row(
     (one of :data:`MOTIONS`), ``baseline_peak`` [m] and ``baseline_omega`` [rad/s] of the primary
     without the damper (Step 8, Eq. F1), ``peak_ratio`` = peak/baseline, the number of
     ``branches`` of the curve and how many frequencies of the band each kind of motion covers.
-    ``curve``: the system's frequency response over ``omegas`` if already computed."""
+    ``curve``: the system's frequency response over ``omegas`` if already computed (its sweeps
+    are run and stored in it if it has none)."""
     w = np.asarray(omegas, dtype=float)
     if curve is None:
         curve = frequency_response(system, forcing, e, w)
@@ -117,8 +118,9 @@ def design_row(
         curve.sweep_down = _sweep(system, forcing, e, w[::-1])[::-1]
     linear = _linear_amplitude(system, forcing, w)
     candidates: list[tuple[float, float, str]] = []  # (amplitude, Ω, motion)
-    for b in curve.branches:
-        candidates += [(p.amplitude, p.omega, MOTIONS[0]) for p in b.points if p.stable]
+    for b in curve.branches:  # (a branch's last step may end just beyond the band)
+        candidates += [(p.amplitude, p.omega, MOTIONS[0]) for p in b.points
+                       if p.stable and w[0] <= p.omega <= w[-1]]  # fmt: skip
     spans = _stable_spans(curve.branches)
     stable = np.array([any(lo <= x <= hi for lo, hi in spans) for x in w], dtype=bool)
     free = linear < system.gap / 2.0
