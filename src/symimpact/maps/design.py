@@ -40,10 +40,10 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..forced.forcing import Forcing
-from ..forced.frf import _linear_amplitude, _sweep, frequency_response
+from ..forced.frf import _sweep, frequency_response
 from ..system import ImpactSystem
 from ..units import nonnegative_float
-from .executors import EXECUTORS, _dask, _processes, _serial
+from .engine import _executor, _gather, _launch, _progress
 from .points import MapPoints, as_points
 from .store import MapStore
 
@@ -116,7 +116,7 @@ def design_row(
     if curve.sweep_up is None or not len(curve.sweep_up):
         curve.sweep_up = _sweep(system, forcing, e, w)
         curve.sweep_down = _sweep(system, forcing, e, w[::-1])[::-1]
-    linear = _linear_amplitude(system, forcing, w)
+    linear = curve.baseline[:, 1]  # the primary alone (Step 8), computed with the curve
     candidates: list[tuple[float, float, str]] = []  # (amplitude, Ω, motion)
     for b in curve.branches:  # (a branch's last step may end just beyond the band)
         candidates += [(p.amplitude, p.omega, MOTIONS[0]) for p in b.points
@@ -198,8 +198,6 @@ def design_map(
     restitution ``e`` under ``forcing`` over the band ``omegas`` [rad/s].  ``executor``,
     ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
     :func:`symimpact.maps.parameter_map`: the same executors, and a resumable ``out`` file."""
-    from .engine import _progress
-
     if not isinstance(system, ImpactSystem):
         raise ParameterError("system", "must be an ImpactSystem")
     if not isinstance(grid, Mapping) or not grid:
@@ -219,15 +217,7 @@ def design_map(
     base = _DesignBase(system, forcing, e, tuple(float(x) for x in w))
     for row in points.values:  # a bad point fails here, in one line, before any run
         _design_system(base, points.names, row)
-    if client is not None or scheduler is not None:
-        if executor not in (None, "dask"):
-            raise ParameterError("executor", f"{executor!r} cannot use a Dask client or scheduler")
-        executor = "dask"
-    executor = executor or "processes"
-    if workers is not None and (not isinstance(workers, int) or workers < 1):
-        raise ParameterError("workers", "must be a positive integer")
-    if executor not in EXECUTORS:
-        raise ParameterError("executor", f"must be one of {', '.join(EXECUTORS)}")
+    executor = _executor(executor, workers, client, scheduler)
     store = None
     if out is not None:
         settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, "e": e,
@@ -241,22 +231,9 @@ def design_map(
         todo = [i for i in range(len(points)) if i not in done]
         payloads = [(base, points.names, [i], points.values[[i]]) for i in todo]
         workers = workers or os.cpu_count() or 1
-        if executor == "serial" or (executor == "processes" and (workers == 1 or len(todo) < 2)):
-            results = _serial(payloads, _design_chunk)
-        elif executor == "processes":
-            results = _processes(payloads, min(workers, len(payloads)), _design_chunk)
-        else:
-            results = _dask(payloads, client, scheduler, _design_chunk)
-        bar = _progress(progress, len(points), len(done), "design map")
-        try:
-            for rows in results:
-                if store is not None:
-                    store.write_chunk(rows)
-                for r in rows:
-                    done[r["run"]] = r
-                bar(len(rows))
-        finally:
-            bar(None)
+        results = _launch(payloads, executor, workers, client, scheduler,
+                          workers == 1 or len(todo) < 2, _design_chunk)  # fmt: skip
+        _gather(results, store, done, _progress(progress, len(points), len(done), "design map"))
         table = design_table([done[i] for i in range(len(points))], points.names)
         if store is not None:
             store.finish(table)

@@ -106,15 +106,7 @@ def map_rows(
         for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0), ("t_end", t_end))
     )
     base = _Base(system, initial, contact)
-    if client is not None or scheduler is not None:
-        if executor not in (None, "dask"):
-            raise ParameterError("executor", f"{executor!r} cannot use a Dask client or scheduler")
-        executor = "dask"
-    executor = executor or "processes"
-    if executor not in EXECUTORS:
-        raise ParameterError("executor", f"must be one of {', '.join(EXECUTORS)}")
-    if workers is not None and (not isinstance(workers, int) or workers < 1):
-        raise ParameterError("workers", "must be a positive integer")
+    executor = _executor(executor, workers, client, scheduler)
     if chunk_size is not None and (not isinstance(chunk_size, int) or chunk_size < 1):
         raise ParameterError("chunk_size", "must be a positive integer")
     _validate(base, points)
@@ -131,15 +123,40 @@ def map_rows(
         # compiles or loads its cache once in this process)
         run_point(base, points.names, points.values[todo[0]])
         _check_points(base, points.names, points.values[todo])
-    if executor == "serial" or (
-        executor == "processes" and (workers == 1 or len(payloads) < 2 or todo.size < 8)
-    ):
-        results = _serial(payloads)
-    elif executor == "processes":
-        results = _processes(payloads, min(workers, len(payloads)))
-    else:
-        results = _dask(payloads, client, scheduler)
-    bar = _progress(progress, n, len(done), desc)
+    here = workers == 1 or len(payloads) < 2 or todo.size < 8
+    results = _launch(payloads, executor, workers, client, scheduler, here)
+    _gather(results, store, done, _progress(progress, n, len(done), desc))
+    return [done[i] for i in range(n)]
+
+
+def _executor(executor: str | None, workers: Any, client: Any, scheduler: str | None) -> str:
+    """The executor a map runs on (a client or scheduler means Dask; default local processes),
+    after the checks every map shares, each refusal one line."""
+    if client is not None or scheduler is not None:
+        if executor not in (None, "dask"):
+            raise ParameterError("executor", f"{executor!r} cannot use a Dask client or scheduler")
+        executor = "dask"
+    executor = executor or "processes"
+    if executor not in EXECUTORS:
+        raise ParameterError("executor", f"must be one of {', '.join(EXECUTORS)}")
+    if workers is not None and (not isinstance(workers, int) or workers < 1):
+        raise ParameterError("workers", "must be a positive integer")
+    return executor
+
+
+def _launch(payloads: list, executor: str, workers: int, client: Any, scheduler: str | None,
+            here: bool, chunk: Callable | None = None):  # fmt: skip
+    """The chunks' rows as they finish, from ``executor`` (``here``: too little work for a
+    process pool, run in this process); ``chunk`` turns a payload into rows (default a map's)."""
+    if executor == "serial" or (executor == "processes" and here):
+        return _serial(payloads, chunk)
+    if executor == "processes":
+        return _processes(payloads, min(workers, len(payloads)), chunk)
+    return _dask(payloads, client, scheduler, chunk)
+
+
+def _gather(results, store: Any, done: dict[int, dict[str, Any]], bar) -> None:
+    """Each finished chunk's rows into ``done`` by run (and into ``store``), the bar advanced."""
     try:
         for rows in results:
             if store is not None:
@@ -149,7 +166,6 @@ def map_rows(
             bar(len(rows))
     finally:
         bar(None)
-    return [done[i] for i in range(n)]
 
 
 def _validate(base: _Base, points: MapPoints) -> None:
