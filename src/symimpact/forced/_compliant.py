@@ -1,15 +1,30 @@
-"""Forced simulation with a compliant contact (cubic, Hertz, linear, Hunt–Crossley).
+"""Compiled forced simulation with a compliant contact (cubic, Hertz, linear, Hunt–Crossley), with
+the variational equations carried through flight and contact (numba, cached on disk).
 
 Free flight is closed form and its contact onsets are found exactly as for rigid impacts
 (:mod:`symimpact.forced._rigid`: Step 8's flight, Eq. F1, and its gap-free onset search).  A
-contact phase, δ = s·z − d/2 > 0 on the wall s = ±1, is integrated by SciPy's DOP853 (rtol 1e-11)
-with the forcing in the primary's equation,
+contact phase, δ = s·z − d/2 > 0 on the wall s = ±1, is integrated by the Dormand–Prince 5(4)
+pair of the free-decay stepper (:mod:`symimpact._stepper`), with the forcing in the primary's
+equation,
 
     m ÿ = −s·F(δ, δ̇),  M ẍ = F0 cos θ − K(x − x_b) − C(ẋ − ẋ_b) + s·F(δ, δ̇),
 
-and ends where δ returns to 0 (a located event).  The work of the forcing and the dissipation of
-C and of the contact's damping are integrated with the motion, so the energy ledger closes.  The
-state is recorded at ``samples`` points per forcing period (the Poincaré sections and the CSV).
+and ends where δ returns to 0, located by re-stepping from the step's start (Illinois regula
+falsi) so the located state carries the integrator's full accuracy.  The work of the forcing and
+the dissipation of C and of the contact's damping are integrated with the motion, so the energy
+ledger closes.  The state is recorded at ``samples`` points per forcing period.
+
+*The monodromy.*  With ``variational`` the run also carries Ψ = ∂(x, ẋ, y, ẏ)(t)/∂(x, ẋ, y, ẏ)(0):
+through a flight the transition matrix of Eq. 7 (the flight is affine in the state), through a
+contact the variational equations Ψ' = A(t)Ψ, A the Jacobian of the contact's equations of motion
+(∂F/∂δ, ∂F/∂δ̇ of the law), integrated by the same Runge–Kutta steps (so Ψ is the derivative of
+the discrete step map itself), and at contact onset and exit the saltation matrix of a switching
+surface g = s·(y − x) − d/2 = 0,
+
+    S = I + (f⁺ − f⁻)·∇gᵀ / (∇g·f⁻),
+
+f⁻ and f⁺ the vector fields before and after.  They differ only in the accelerations, by the
+contact force at δ = 0: c₁δ̇ for the laws with a dashpot, zero for Hunt–Crossley (S = I there).
 
 This module is private: :mod:`symimpact.forced.simulation` validates the input.
 """
@@ -19,36 +34,42 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.integrate import solve_ivp
-from scipy.optimize import brentq
+from numba import njit
 
 from .. import _stepper
+from .._stepper import P_a, P_b, P_c1, P_k1, P_khz
 from . import _rigid
 
 HUNT_CROSSLEY = "hunt-crossley"
-#: DOP853's tolerances in contact: rtol 1e-11 (the closed-form flight carries ~1e-15; a tighter
-#: rtol than ~1e-12 only adds steps), atol 1e-14 of the clearance (state components in m, m/s
-#: scaled by the contact's own time scale would be finer than needed for a 1e-8 amplitude).
-RTOL = 1e-11
-#: The contacts' work budget in evaluations of the equations of motion (about 15 µs each, so a
-#: minute or two): a typical contact takes 500–1000, so this is thousands of contacts; a run
-#: that would need more (long, stiff contacts under an enormous force) stops and says so.
-RHS_BUDGET = 5_000_000
-TOO_MUCH_WORK = 2
+#: the contact laws' codes: the stepper's elastic laws, and Hertz with Hunt–Crossley damping
+CUBIC, HERTZ, LINEAR, HC = _stepper.CUBIC, _stepper.HERTZ, _stepper.LINEAR, 9
+CODES = {"cubic": CUBIC, "hertz": HERTZ, "linear": LINEAR, HUNT_CROSSLEY: HC}
+#: Runge–Kutta tolerance in contact: rtol 1e-13, atol 1e-14 of the clearance and of the speeds'
+#: scale.  A fifth-order pair's error per step accumulates over a contact's hundreds of steps:
+#: against a whole-system DOP853 integration at 1e-13 (two periods, four contacts) rtol 1e-11 gave
+#: 5.2e-10 of the state, 1e-12 gave 2.7e-11 and 1e-13 gives 2.0e-12, at 0.28 ms a contact.
+RTOL = 1e-13
+#: The contacts' work budget in evaluations of the equations of motion (about 0.1 µs each, so a
+#: minute or so): a typical contact takes 500–2000, so this is hundreds of thousands of contacts;
+#: a run that would need more (long, stiff contacts under an enormous force) stops and says so.
+RHS_BUDGET = 500_000_000
+TOO_MUCH_WORK, TOO_MANY_STEPS, STEP_UNDERFLOW = 2, 3, 4
+#: steps in one contact beyond which its time scale is out of proportion to the motion
+MAX_CONTACT_STEPS = _stepper.MAX_CONTACT_STEPS
+NW = 23  # x, ẋ, y, ẏ; forcing work, C's and the contact's dissipation; Ψ (4 × 4, by rows)
 
-
-class _OutOfWork(Exception):
-    """Raised inside the integration when the run has spent :data:`RHS_BUDGET`."""
-
-
-def _parts(law: str, q: np.ndarray, chi: float, delta: float, ddelta: float):
-    """(elastic, damping) parts of the contact force [N] at penetration δ [m] and rate δ̇ [m/s]:
-    the stepper's laws (Eq. 8, 9, 35) with c1·δ̇, or Hunt–Crossley k_hz·δ^1.5·(1 + χδ̇) (Eq. F4).
-    ``q``: the stepper's parameter vector (:func:`symimpact._stepper.pack`)."""
-    elastic = _stepper.contact_force(_stepper.LAWS[_base(law)], q, delta, 0.0)
-    if law == HUNT_CROSSLEY:
-        return elastic, elastic * chi * ddelta
-    return elastic, q[_stepper.P_c1] * ddelta
+# the Dormand–Prince 5(4) tableau of the free-decay stepper, as arrays
+_DP_A = np.zeros((6, 6))
+_DP_A[1, 0] = _stepper._A21
+_DP_A[2, :2] = (_stepper._A31, _stepper._A32)
+_DP_A[3, :3] = (_stepper._A41, _stepper._A42, _stepper._A43)
+_DP_A[4, :4] = (_stepper._A51, _stepper._A52, _stepper._A53, _stepper._A54)
+_DP_A[5, :5] = (_stepper._A61, _stepper._A62, _stepper._A63, _stepper._A64, _stepper._A65)
+_DP_B = np.array([_stepper._B1, 0.0, _stepper._B3, _stepper._B4, _stepper._B5, _stepper._B6])
+_DP_C = np.array([0.0, _stepper._C2, _stepper._C3, _stepper._C4, _stepper._C5, 1.0])
+_DP_E = np.array(
+    [_stepper._E1, 0.0, _stepper._E3, _stepper._E4, _stepper._E5, _stepper._E6, _stepper._E7]
+)
 
 
 def _base(law: str) -> str:
@@ -61,132 +82,388 @@ def contact_potential(law: str, q: np.ndarray, delta: float) -> float:
     return _stepper.contact_potential(_stepper.LAWS[_base(law)], q, delta)
 
 
-def run(law, q, chi, p, state0, t_end, max_events, samples):
-    """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end; returns the rigid run's outputs
-    (status, events, n_events, period_max, ledger = (forcing work, C's dissipation, contact's
-    dissipation), final = (t, x, ẋ, y, ẏ, 1.0 if it ended in contact)) and the sampled states
-    (n·samples + 1, 4): x, ẋ, z = y − x, ẏ at t = k·T/samples."""
+@njit(cache=True)
+def _force(code, q, chi, delta, dd):
+    """(F, ∂F/∂δ, ∂F/∂δ̇, the damping part) of the contact force [N] at penetration δ [m] and
+    rate δ̇ [m/s]: the elastic laws of Eq. 8 (cubic aδ³ + bδ), Eq. 9 (Hertz k_hz·δ^1.5) and
+    Eq. 35 (linear k₁δ) with c₁δ̇, or Hunt–Crossley k_hz·δ^1.5·(1 + χδ̇) (Eq. F4).  ``q``: the
+    stepper's parameter vector (:func:`symimpact._stepper.pack`)."""
+    if code == HERTZ or code == HC:
+        dp = max(delta, 0.0)
+        root = math.sqrt(dp)
+        fe = q[P_khz] * dp * root
+        fe_d = 1.5 * q[P_khz] * root
+    elif code == LINEAR:
+        fe = q[P_k1] * delta
+        fe_d = q[P_k1]
+    else:
+        fe = (q[P_a] * delta * delta + q[P_b]) * delta
+        fe_d = 3.0 * q[P_a] * delta * delta + q[P_b]
+    if code == HC:
+        damp = fe * chi * dd
+        return fe + damp, fe_d * (1.0 + chi * dd), fe * chi, damp
+    damp = q[P_c1] * dd
+    return fe + damp, fe_d, q[P_c1], damp
+
+
+@njit(cache=True)
+def _rhs(code, q, chi, p, side, t, w, out, n):
+    """The contact's equations of motion (module docstring) at time t for the first ``n``
+    components of w: the state, the ledger's rates and, with n = NW, Ψ' = AΨ."""
     M, m, h = p[_rigid.P_M], p[_rigid.P_m], p[_rigid.P_h]
-    K, C, W, F0, Xb, phi = (p[i] for i in (_rigid.P_K, _rigid.P_C, _rigid.P_W, _rigid.P_F0,
-                                           _rigid.P_XB, _rigid.P_PHI))  # fmt: skip
-    T_f = 2.0 * math.pi / W
-    n_periods = round(t_end / T_f)  # a whole number of periods (floor may give one less)
+    K, C, W, F0, Xb = p[_rigid.P_K], p[_rigid.P_C], p[_rigid.P_W], p[_rigid.P_F0], p[_rigid.P_XB]
+    x, v, y, u = w[0], w[1], w[2], w[3]
+    th = W * t + p[_rigid.P_PHI]
+    c, s = math.cos(th), math.sin(th)
+    xb, vb = Xb * c, -Xb * W * s
+    delta = side * (y - x) - h
+    dd = side * (u - v)
+    F, F_d, F_dd, damp = _force(code, q, chi, delta, dd)
+    rel = v - vb
+    out[0] = v
+    out[1] = (F0 * c - K * (x - xb) - C * rel + side * F) / M
+    out[2] = u
+    out[3] = -side * F / m
+    out[4] = F0 * c * v - (K * (x - xb) + C * rel) * vb
+    out[5] = C * rel * rel
+    out[6] = damp * dd
+    if n > 7:
+        # A's rows: (0, 1, 0, 0), (−K − F_δ, −C − F_δ̇, F_δ, F_δ̇)/M, (0, 0, 0, 1),
+        # (F_δ, F_δ̇, −F_δ, −F_δ̇)/m; Ψ' = AΨ column by column
+        for j in range(4):
+            p0, p1, p2, p3 = w[7 + j], w[11 + j], w[15 + j], w[19 + j]
+            coupling = F_d * (p2 - p0) + F_dd * (p3 - p1)
+            out[7 + j] = p1
+            out[11 + j] = (-K * p0 - C * p1 + coupling) / M
+            out[15 + j] = p3
+            out[19 + j] = -coupling / m
+
+
+@njit(cache=True)
+def _step(code, q, chi, p, side, t, w, k, h, n, tmp, out, kout, atol):
+    """One Dormand–Prince step of length h from w at t, with k[0] = f(t, w) (kept): the state
+    after it into ``out``, f there into ``kout``; returns the error norm of the motion (x, ẋ, y,
+    ẏ, against ``atol`` and :data:`RTOL`)."""
+    for st in range(1, 6):
+        for i in range(n):
+            acc = 0.0
+            for j in range(st):
+                acc += _DP_A[st, j] * k[j, i]
+            tmp[i] = w[i] + h * acc
+        _rhs(code, q, chi, p, side, t + _DP_C[st] * h, tmp, k[st], n)
+    for i in range(n):
+        acc = 0.0
+        for j in range(6):
+            acc += _DP_B[j] * k[j, i]
+        out[i] = w[i] + h * acc
+    _rhs(code, q, chi, p, side, t + h, out, kout, n)
+    err = 0.0
+    for i in range(4):
+        acc = _DP_E[6] * kout[i]
+        for j in range(6):
+            acc += _DP_E[j] * k[j, i]
+        sc = atol[i] + RTOL * max(abs(w[i]), abs(out[i]))
+        err += (h * acc / sc) ** 2
+    return math.sqrt(err / 4.0)
+
+
+@njit(cache=True)
+def _locate(code, q, chi, p, side, t, w, k, h_hi, g_lo, g_hi, which, n, tmp, out, kout, atol):
+    """The θ in (0, h_hi] at which event ``which`` vanishes on the step from w at t (re-stepped
+    with the shorter length, Illinois regula falsi): δ (which 0, the contact's end) or ẋ (which
+    1, an extreme of x); ``out`` and ``kout`` hold the state there.  Returns θ.
+
+    At the onset δ = 0 at θ = 0 with δ̇ > 0: until a point with δ > 0 is found the search
+    bisects (a secant through θ = 0 would return θ ≈ 0)."""
+    lo, hi = 0.0, h_hi
+    flo, fhi = g_lo, g_hi
+    inside_unknown = which == 0 and flo <= 0.0
+    if inside_unknown:
+        flo = 1.0
+    kept = 0
+    for _ in range(200):
+        theta = _stepper.secant_point(lo, hi, flo, fhi)
+        if inside_unknown:
+            theta = 0.5 * (lo + hi)
+        _step(code, q, chi, p, side, t, w, k, theta, n, tmp, out, kout, atol)
+        g = side * (out[2] - out[0]) - p[_rigid.P_h] if which == 0 else out[1]
+        if inside_unknown:
+            if g > 0.0:
+                inside_unknown = False
+                lo, flo = theta, g
+            else:
+                hi, fhi = theta, g
+            continue
+        if g == 0.0:
+            return theta
+        if (g > 0.0) == (flo > 0.0):
+            lo, flo = theta, g
+            if kept == -1:
+                fhi *= 0.5
+            kept = -1
+        else:
+            hi, fhi = theta, g
+            if kept == 1:
+                flo *= 0.5
+            kept = 1
+        if hi - lo <= 4e-16 * (t + hi):
+            break
+    _step(code, q, chi, p, side, t, w, k, hi, n, tmp, out, kout, atol)
+    return hi
+
+
+@njit(cache=True)
+def _note_extreme(period_max, n_periods, T_f, t, x):
+    """Raise the largest abs(x) of the forcing period holding t to abs(x)."""
+    kk = int(math.floor(t / T_f))  # noqa: RUF046 (int() spelled out for numba)
+    if 0 <= kk < n_periods:
+        period_max[kk] = max(period_max[kk], abs(x))
+
+
+@njit(cache=True)
+def _contact(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sampled, dt_s,
+             atol, work):  # fmt: skip
+    """One contact phase from t with w (state, zeroed ledger, Ψ), to its end δ = 0 or t_end.
+
+    w is updated in place; sampled states and extremes of x are recorded.  Returns
+    (status, t, ended, last step length); ``work`` [0] counts the evaluations of f."""
+    T_f = 2.0 * math.pi / p[_rigid.P_W]
+    k = np.zeros((6, NW))
+    kout = np.zeros(NW)
+    tmp = np.zeros(NW)
+    out = np.zeros(NW)
+    ev_out = np.zeros(NW)
+    ev_k = np.zeros(NW)
+    _rhs(code, q, chi, p, side, t, w, k[0], n)
+    n_samples = sampled.shape[0]
+    nsteps = 0
+    while True:
+        if t_end - t <= 0.0:
+            return _rigid.OK, t, False, h
+        nsteps += 1
+        if nsteps > MAX_CONTACT_STEPS:
+            return TOO_MANY_STEPS, t, False, h
+        if work[0] > work[1]:
+            return TOO_MUCH_WORK, t, False, h
+        h = min(h, t_end - t)
+        if h < 1e-15 * max(abs(t), 1e-3):
+            return STEP_UNDERFLOW, t, False, h
+        err = _step(code, q, chi, p, side, t, w, k, h, n, tmp, out, kout, atol)
+        work[0] += 6
+        if err > 1.0 or not math.isfinite(err):
+            h *= 0.2 if not math.isfinite(err) else max(0.2, 0.9 * err**-0.2)
+            continue
+        d_old = side * (w[2] - w[0]) - p[_rigid.P_h]
+        d_new = side * (out[2] - out[0]) - p[_rigid.P_h]
+        hstep = h
+        ended = d_new < 0.0
+        if not ended:
+            # both ends in contact: does δ dip below zero inside the step (the masses part and
+            # touch again)?  The cubic Hermite interpolant of δ says where to look
+            dip, s_dip = _stepper._hermite_min(
+                d_old, d_new, h * side * (w[3] - w[1]), h * side * (out[3] - out[1])
+            )
+            if dip < 0.0:
+                _step(code, q, chi, p, side, t, w, k, s_dip * h, n, tmp, ev_out, ev_k, atol)
+                d_dip = side * (ev_out[2] - ev_out[0]) - p[_rigid.P_h]
+                if d_dip < 0.0:
+                    ended = True
+                    hstep = _locate(code, q, chi, p, side, t, w, k, s_dip * h, d_old, d_dip, 0,
+                                    n, tmp, out, kout, atol)  # fmt: skip
+        else:
+            hstep = _locate(code, q, chi, p, side, t, w, k, h, d_old, d_new, 0, n, tmp, out,
+                            kout, atol)  # fmt: skip
+        if ended:
+            work[0] += 60
+        # extremes of x inside the step, then the samples it passes
+        if (w[1] > 0.0) != (out[1] > 0.0) and w[1] != 0.0:
+            th = _locate(code, q, chi, p, side, t, w, k, hstep, w[1], out[1], 1, 7, tmp,
+                         ev_out, ev_k, atol)  # fmt: skip
+            _note_extreme(period_max, n_periods, T_f, t + th, ev_out[0])
+            work[0] += 60
+        k0 = max(0, int(math.ceil(t / dt_s - 1e-9)))  # noqa: RUF046 (int() spelled out for numba)
+        k1 = min(n_samples - 1, int(math.floor((t + hstep) / dt_s + 1e-9)))  # noqa: RUF046
+        for ks in range(k0, k1 + 1):
+            if not math.isnan(sampled[ks, 0]):
+                continue
+            theta = min(max(ks * dt_s - t, 0.0), hstep)
+            _step(code, q, chi, p, side, t, w, k, theta, 7, tmp, ev_out, ev_k, atol)
+            sampled[ks, 0] = ev_out[0]
+            sampled[ks, 1] = ev_out[1]
+            sampled[ks, 2] = ev_out[2] - ev_out[0]
+            sampled[ks, 3] = ev_out[3]
+        t = t + hstep
+        for i in range(n):
+            w[i] = out[i]
+            k[0, i] = kout[i]
+        _note_extreme(period_max, n_periods, T_f, min(t, n_periods * T_f * (1 - 1e-16)), w[0])
+        if ended:
+            return _rigid.OK, t, True, hstep
+        h = hstep * min(5.0, max(0.2, 0.9 * max(err, 1e-10) ** -0.2))
+
+
+@njit(cache=True)
+def _switch(code, q, chi, p, side, w, onset):
+    """Ψ ← SΨ at contact onset (``onset``) or exit on the wall ``side`` (module docstring): the
+    fields differ by the force F(0, δ̇) in ẍ (s·F/M) and ÿ (−s·F/m); ∇g·f⁻ = δ̇."""
+    dd = side * (w[3] - w[1])
+    if dd == 0.0:
+        return
+    F, _, _, _ = _force(code, q, chi, 0.0, dd)
+    if F == 0.0:
+        return
+    sign = 1.0 if onset else -1.0
+    gx = sign * side * F / p[_rigid.P_M] / dd
+    gy = -sign * side * F / p[_rigid.P_m] / dd
+    for j in range(4):
+        grad = side * (w[15 + j] - w[7 + j])  # ∇g·Ψ's column
+        w[11 + j] += gx * grad
+        w[19 + j] += gy * grad
+
+
+@njit(cache=True)
+def _flight_variation(p, tau, w):
+    """Ψ ← Φ(τ)Ψ for a flight of τ: the primary's homogeneous motion (Eq. 7 with M, K, C; the
+    flight is affine in the state), y moves by ẏτ, ẏ is constant."""
+    M, K, C = p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C]
+    a11 = _stepper._x_ff(tau, M, K, C, 1.0, 0.0)
+    a12 = _stepper._x_ff(tau, M, K, C, 0.0, 1.0)
+    a21 = _stepper._xd_ff(tau, M, K, C, 1.0, 0.0)
+    a22 = _stepper._xd_ff(tau, M, K, C, 0.0, 1.0)
+    for j in range(4):
+        p0, p1, p2, p3 = w[7 + j], w[11 + j], w[15 + j], w[19 + j]
+        w[7 + j] = a11 * p0 + a12 * p1
+        w[11 + j] = a21 * p0 + a22 * p1
+        w[15 + j] = p2 + tau * p3
+
+
+@njit(cache=True)
+def _fill_flight(p, t0, x0, v0, z0, u0, t1, sampled, dt_s):
+    """The sampled states of the flight from (x0, v0, z0, u0) at t0 up to t1 (Eq. F1)."""
+    n_samples = sampled.shape[0]
+    k0 = max(0, int(math.ceil(t0 / dt_s - 1e-9)))  # noqa: RUF046 (int() spelled out for numba)
+    k1 = min(n_samples - 1, int(math.floor(t1 / dt_s + 1e-9)))  # noqa: RUF046
+    for ks in range(k0, k1 + 1):
+        if not math.isnan(sampled[ks, 0]):
+            continue
+        tau = ks * dt_s - t0
+        xs, vs = _rigid._state(p, p[_rigid.P_M], t0, x0, v0, tau)
+        sampled[ks, 0] = xs
+        sampled[ks, 1] = vs
+        sampled[ks, 2] = z0 + u0 * tau - (xs - x0)
+        sampled[ks, 3] = u0
+
+
+@njit(cache=True)
+def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budget):
+    """The compiled run (see :func:`run`)."""
+    M, m, h = p[_rigid.P_M], p[_rigid.P_m], p[_rigid.P_h]
+    T_f = 2.0 * math.pi / p[_rigid.P_W]
+    n_periods = int(math.floor(t_end / T_f + 0.5))  # noqa: RUF046 (int() spelled out for numba)
     period_max = np.zeros(n_periods + 1)
     ledger = np.zeros(3)
     dt_s = T_f / samples
-    n_samples = n_periods * samples + 1
-    sampled = np.full((n_samples, 4), np.nan)
-    events = []
-    t, x, v, y, u = 0.0, *state0
-    z = y - x
+    sampled = np.full((n_periods * samples + 1, 4), np.nan)
+    events = np.zeros((64, _rigid.N_EVENT_COLS))
+    n_ev = 0
+    n = NW if variational else 7
+    w = np.zeros(NW)
+    for i in range(4):
+        w[i] = state0[i]
+    for i in range(4):
+        w[7 + 5 * i] = 1.0
+    atol = np.array([1e-14 * h, 0.0, 1e-14 * h, 0.0])
+    work = np.array([0.0, budget])
+    t = 0.0
     side0 = 0
     in_contact = 0.0
-
-    def fill_flight(t0, x0, v0, z0, u0, t1):
-        k0 = max(0, math.ceil(t0 / dt_s - 1e-9))
-        k1 = min(n_samples - 1, math.floor(t1 / dt_s + 1e-9))
-        for k in range(k0, k1 + 1):
-            if not np.isnan(sampled[k, 0]):
-                continue
-            tau = k * dt_s - t0
-            xs, vs = _rigid._state(p, M, t0, x0, v0, tau)
-            sampled[k] = (xs, vs, z0 + u0 * tau - (xs - x0), u0)
-
-    spent = [0]
-
-    def rhs(tt, s_, side):
-        spent[0] += 1
-        if spent[0] > RHS_BUDGET:
-            raise _OutOfWork
-        xx, vv, yy, uu = s_[0], s_[1], s_[2], s_[3]
-        th = W * tt + phi
-        xb, vb = Xb * math.cos(th), -Xb * W * math.sin(th)
-        delta = side * (yy - xx) - h
-        dd = side * (uu - vv)
-        el, dm = _parts(law, q, chi, max(delta, 0.0), dd)
-        F = el + dm
-        rel = vv - vb
-        a_x = (F0 * math.cos(th) - K * (xx - xb) - C * rel + side * F) / M
-        a_y = -side * F / m
-        power_in = F0 * math.cos(th) * vv - (K * (xx - xb) + C * rel) * vb
-        return [vv, a_x, uu, a_y, power_in, C * rel * rel, dm * dd]
-
+    status = _rigid.OK
+    # a contact phase at t = 0 when the start is inside a wall
+    z = w[2] - w[0]
+    side = 0
+    if abs(z) > h:
+        side = 1 if z > 0 else -1
     while t < t_end:
-        if len(events) + 2 > max_events:
-            return _rigid.TOO_MANY_EVENTS, events, period_max, ledger, None, sampled
-        tau, side = _rigid._next_impact(p, t, x, v, z, u, side0, t_end - t)
-        _rigid._segment(p, M, t, x, v, tau, ledger, period_max, n_periods)
-        fill_flight(t, x, v, z, u, t + tau)
-        xn, vn = _rigid._state(p, M, t, x, v, tau)
-        z = z + u * tau - (xn - x)
-        t, x, v = t + tau, xn, vn
         if side == 0:
-            break
+            if n_ev + 2 > max_events:
+                status = _rigid.TOO_MANY_EVENTS
+                break
+            x, v, u = w[0], w[1], w[3]
+            z = w[2] - w[0]
+            tau, side = _rigid._next_impact(p, t, x, v, z, u, side0, t_end - t)
+            _rigid._segment(p, M, t, x, v, tau, ledger, period_max, n_periods)
+            _fill_flight(p, t, x, v, z, u, t + tau, sampled, dt_s)
+            xn, vn = _rigid._state(p, M, t, x, v, tau)
+            z = z + u * tau - (xn - x)
+            t = t + tau
+            w[0], w[1], w[2] = xn, vn, xn + z
+            if variational:
+                _flight_variation(p, tau, w)
+            if side == 0:
+                break
+            w[2] = w[0] + side * h  # exactly on the wall (the onset is located to 4e-16)
+            if variational:
+                _switch(code, q, chi, p, float(side), w, True)
         s = float(side)
-        z = s * h
-        y = x + z
-        vrel = s * (u - v)
-
-        def exit_(tt, s_, side=s):
-            return side * (s_[2] - s_[0]) - h
-
-        exit_.terminal, exit_.direction = True, -1
-        scale = max(abs(vrel), abs(v), abs(u), 1e-300)
-        energy = 0.5 * (M * v * v + m * u * u) + 0.5 * K * x * x + 1e-300
-        try:
-            sol = _contact_phase(rhs, t, t_end, [x, v, y, u], s, h, scale, energy, exit_)
-        except _OutOfWork:
-            return TOO_MUCH_WORK, events, period_max, ledger, None, sampled
-        t_exit = float(sol.t_events[0][0]) if len(sol.t_events[0]) else float(sol.t[-1])
-        end = sol.sol(t_exit) if len(sol.t_events[0]) else sol.y[:, -1]
-        # extremes of x in contact: the steps' ends and the zeros of ẋ between them
-        grid = np.append(sol.t[sol.t < t_exit], t_exit)
-        vals = sol.sol(grid)
-        for i, tt in enumerate(grid):
-            kk = math.floor(tt / T_f)
-            if kk < n_periods:
-                period_max[kk] = max(period_max[kk], abs(float(vals[0, i])))
-            if i and (vals[1, i - 1] > 0) != (vals[1, i] > 0):
-                dense = sol.sol
-                tm = brentq(
-                    lambda s2, f=dense: f(s2)[1], grid[i - 1], tt, xtol=1e-15 * max(1.0, tt)
-                )
-                kk = math.floor(tm / T_f)
-                if kk < n_periods:
-                    period_max[kk] = max(period_max[kk], abs(float(sol.sol(tm)[0])))
-        k0 = max(0, math.ceil(t / dt_s - 1e-9))
-        k1 = min(n_samples - 1, math.floor(t_exit / dt_s + 1e-9))
-        for k in range(k0, k1 + 1):
-            st = sol.sol(k * dt_s)
-            sampled[k] = (st[0], st[1], st[2] - st[0], st[3])
-        ledger[0] += end[4]
-        ledger[1] += end[5]
-        ledger[2] += end[6]
-        events.append((t, x, v, u, s, vrel, end[6], _rigid.KIND_IMPACT, end[1], end[3]))
-        t, x, v, y, u = t_exit, end[0], end[1], end[2], end[3]
-        if not len(sol.t_events[0]):
-            in_contact = 1.0
-            z = y - x
+        vrel = s * (w[3] - w[1])
+        t_on, x_on, v_on, u_on = t, w[0], w[1], w[3]
+        w[4] = w[5] = w[6] = 0.0
+        scale = max(abs(vrel), abs(w[1]), abs(w[3]), 1e-300)
+        atol[1] = atol[3] = 1e-14 * scale
+        h_contact = T_f / 64.0
+        if vrel > 0.0:  # the first step: about a tenth of the time to the largest penetration
+            depth = _stepper._penetration_scale(_stepper.HERTZ if code == HC else code, q, vrel)
+            h_contact = min(h_contact, 0.1 * depth / vrel)
+        status, t, ended, h_contact = _contact(code, q, chi, p, s, t, w, t_end, h_contact, n,
+                                               period_max, n_periods, sampled, dt_s, atol,
+                                               work)  # fmt: skip
+        ledger[0] += w[4]
+        ledger[1] += w[5]
+        ledger[2] += w[6]
+        events = _rigid._grow(events, n_ev)
+        ev = events[n_ev]
+        ev[_rigid.E_T], ev[_rigid.E_X], ev[_rigid.E_XD], ev[_rigid.E_YD] = t_on, x_on, v_on, u_on
+        ev[_rigid.E_SIDE], ev[_rigid.E_VREL], ev[_rigid.E_LOST] = s, vrel, w[6]
+        ev[_rigid.E_KIND], ev[_rigid.E_XD1], ev[_rigid.E_YD1] = _rigid.KIND_IMPACT, w[1], w[3]
+        n_ev += 1
+        if status != _rigid.OK:
             break
-        z = s * h
+        if not ended:
+            in_contact = 1.0
+            break
+        w[2] = w[0] + s * h  # exactly on the wall again
+        if variational:
+            _switch(code, q, chi, p, s, w, False)
         side0 = side
-    # the end of the run inside a flight: fill the last sample
-    final = np.array([t, x, v, x + z, u, in_contact])
-    ev = np.array(events, dtype=float).reshape(-1, _rigid.N_EVENT_COLS)
-    return _rigid.OK, ev, period_max, ledger, final, sampled
+        side = 0
+    final = np.array([t, w[0], w[1], w[2], w[3], in_contact])
+    psi = np.zeros((4, 4))
+    for i in range(4):
+        for j in range(4):
+            psi[i, j] = w[7 + 4 * i + j]
+    return status, events[:n_ev], period_max, ledger, final, sampled, psi, work[0]
 
 
-def _contact_phase(rhs, t, t_end, state, side, h, scale, energy, exit_):
-    """One contact phase from ``t`` (at most to ``t_end``) by DOP853, with the forcing's work and
-    the dissipations integrated alongside (three more components), ended by ``exit_``."""
-    return solve_ivp(
-        rhs,
-        (t, t_end),
-        [*state, 0.0, 0.0, 0.0],
-        method="DOP853",
-        rtol=RTOL,
-        atol=[1e-14 * h, 1e-14 * scale, 1e-14 * h, 1e-14 * scale, *(3 * [1e-14 * energy])],
-        events=exit_,
-        dense_output=True,
-        args=(side,),
-    )
+def run(law, q, chi, p, state0, t_end, max_events, samples, variational=False):
+    """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end (a start inside a wall begins with
+    its contact phase).  Returns (status, events, period_max, ledger = (forcing work, C's
+    dissipation, contact's dissipation), final = (t, x, ẋ, y, ẏ, 1.0 if it ended in contact),
+    sampled states (n·samples + 1, 4): x, ẋ, z = y − x, ẏ at t = k·T/samples, and Ψ, the
+    Jacobian of the final (x, ẋ, y, ẏ) with respect to the initial one (identity unless
+    ``variational``)).  ``law``: "cubic", "hertz", "linear" or "hunt-crossley"."""
+    status, events, period_max, ledger, final, sampled, psi, _ = _run(
+        CODES[law], q, 0.0 if chi is None else float(chi), p, np.asarray(state0, dtype=float),
+        float(t_end), int(max_events), int(samples), bool(variational), float(RHS_BUDGET),
+    )  # fmt: skip
+    return status, events, period_max, ledger, final, sampled, psi
+
+
+def _forget_stale_compilations() -> None:
+    """This module's cached code, dropped when it, the rigid run's or the stepper's changed."""
+    from pathlib import Path
+
+    sources = [Path(__file__), Path(_rigid.__file__), Path(_stepper.__file__)]
+    _stepper.forget_stale_compilations(_run, sources, ("_compliant.",))
+
+
+_forget_stale_compilations()

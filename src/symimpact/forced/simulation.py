@@ -30,9 +30,9 @@ CHATTER = 1e-7
 #: rounding, far below any physical difference between distinct orbits.
 SECTION_RTOL = 1e-6
 MAX_EVENTS = 10_000_000
-#: A compliant run integrates every contact (about 10 ms each): it stops, saying so, past this
-#: many (minutes of work) rather than running on for hours.
-MAX_CONTACTS = 20_000
+#: A compliant run integrates every contact (compiled, 0.1–1 ms each): it stops, saying so, past
+#: this many (minutes of work) rather than running on for hours.
+MAX_CONTACTS = 1_000_000
 #: The longest run, in natural periods of the primary 2π√(M/K): flight is evaluated 16 times per
 #: natural period, so 10⁶ of them are seconds of work; a slower forcing (Ω → 0) or more periods
 #: would run for hours and is refused at once.
@@ -216,7 +216,7 @@ def simulate_forced(
             p, np.array(state), t_end, MAX_EVENTS
         )
     else:
-        status, events, period_max, ledger, final, samples = _compliant.run(
+        status, events, period_max, ledger, final, samples, _ = _compliant.run(
             contact, law, chi, p, state, t_end, MAX_CONTACTS, samples_per_period
         )
         n_ev = len(events)
@@ -224,6 +224,12 @@ def simulate_forced(
             side = 1.0 if final[3] > final[1] else -1.0
             delta = side * (final[3] - final[1]) - h
             potential = _compliant.contact_potential(contact, law, delta)
+    if status in (_compliant.TOO_MANY_STEPS, _compliant.STEP_UNDERFLOW):
+        raise SymimpactError(
+            f"a contact needs more than {_compliant.MAX_CONTACT_STEPS:,} steps or steps below "
+            "1e-15 of the time: its time scale is out of proportion to the motion (check the "
+            "masses, the clearance and the contact stiffness)"
+        )
     if status == _compliant.TOO_MUCH_WORK:
         raise SymimpactError(
             f"the contacts of {n_periods} periods need more than {_compliant.RHS_BUDGET:,} "
