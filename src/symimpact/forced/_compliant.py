@@ -56,7 +56,7 @@ RHS_BUDGET = 500_000_000
 TOO_MUCH_WORK, TOO_MANY_STEPS, STEP_UNDERFLOW = 2, 3, 4
 #: steps in one contact beyond which its time scale is out of proportion to the motion
 MAX_CONTACT_STEPS = _stepper.MAX_CONTACT_STEPS
-NW = 23  # x, ẋ, y, ẏ; forcing work, C's and the contact's dissipation; Ψ (4 × 4, by rows)
+NW = 27  # x, ẋ, y, ẏ; forcing work, C's and the contact's dissipation; Ψ (4 × 4, by rows); ψ_t
 
 # the Dormand–Prince 5(4) tableau of the free-decay stepper, as arrays
 _DP_A = np.zeros((6, 6))
@@ -129,14 +129,19 @@ def _rhs(code, q, chi, p, side, t, w, out, n):
     out[6] = damp * dd
     if n > 7:
         # A's rows: (0, 1, 0, 0), (−K − F_δ, −C − F_δ̇, F_δ, F_δ̇)/M, (0, 0, 0, 1),
-        # (F_δ, F_δ̇, −F_δ, −F_δ̇)/m; Ψ' = AΨ column by column
-        for j in range(4):
-            p0, p1, p2, p3 = w[7 + j], w[11 + j], w[15 + j], w[19 + j]
+        # (F_δ, F_δ̇, −F_δ, −F_δ̇)/m; Ψ' = AΨ column by column, and ψ_t' = Aψ_t + ∂f/∂t
+        for j in range(5):
+            if j < 4:
+                p0, p1, p2, p3 = w[7 + j], w[11 + j], w[15 + j], w[19 + j]
+            else:
+                p0, p1, p2, p3 = w[23], w[24], w[25], w[26]
             coupling = F_d * (p2 - p0) + F_dd * (p3 - p1)
-            out[7 + j] = p1
-            out[11 + j] = (-K * p0 - C * p1 + coupling) / M
-            out[15 + j] = p3
-            out[19 + j] = -coupling / m
+            r0, r1, r2, r3 = p1, (-K * p0 - C * p1 + coupling) / M, p3, -coupling / m
+            if j < 4:
+                out[7 + j], out[11 + j], out[15 + j], out[19 + j] = r0, r1, r2, r3
+            else:
+                a_t = (-F0 * W * s + K * vb - C * Xb * W * W * c) / M
+                out[23], out[24], out[25], out[26] = r0, r1 + a_t, r2, r3
 
 
 @njit(cache=True)
@@ -222,11 +227,12 @@ def _note_extreme(period_max, n_periods, T_f, t, x):
 
 @njit(cache=True)
 def _contact(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sampled, dt_s,
-             atol, work):  # fmt: skip
+             atol, work, slope):  # fmt: skip
     """One contact phase from t with w (state, zeroed ledger, Ψ), to its end δ = 0 or t_end.
 
-    w is updated in place; sampled states and extremes of x are recorded.  Returns
-    (status, t, ended, last step length); ``work`` [0] counts the evaluations of f."""
+    w is updated in place; sampled states and extremes of x are recorded; at an end, ``slope``
+    holds the last step's rate of change with its length there.  Returns (status, t, ended,
+    last step length); ``work`` [0] counts the evaluations of f."""
     T_f = 2.0 * math.pi / p[_rigid.P_W]
     k = np.zeros((6, NW))
     kout = np.zeros(NW)
@@ -275,6 +281,15 @@ def _contact(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sa
                             kout, atol)  # fmt: skip
         if ended:
             work[0] += 60
+            # the located step's own rate d(out)/dθ at the exit, by a central difference: the
+            # exit's saltation uses it in place of f (module docstring)
+            eps = 1e-4 * hstep
+            _step(code, q, chi, p, side, t, w, k, hstep + eps, 7, tmp, ev_out, ev_k, atol)
+            for i in range(4):
+                slope[i] = ev_out[i]
+            _step(code, q, chi, p, side, t, w, k, hstep - eps, 7, tmp, ev_out, ev_k, atol)
+            for i in range(4):
+                slope[i] = (slope[i] - ev_out[i]) / (2.0 * eps)
         # extremes of x inside the step, then the samples it passes
         if (w[1] > 0.0) != (out[1] > 0.0) and w[1] != 0.0:
             th = _locate(code, q, chi, p, side, t, w, k, hstep, w[1], out[1], 1, 7, tmp,
@@ -303,38 +318,69 @@ def _contact(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sa
 
 
 @njit(cache=True)
-def _switch(code, q, chi, p, side, w, onset):
-    """Ψ ← SΨ at contact onset (``onset``) or exit on the wall ``side`` (module docstring): the
-    fields differ by the force F(0, δ̇) in ẍ (s·F/M) and ÿ (−s·F/m); ∇g·f⁻ = δ̇."""
-    dd = side * (w[3] - w[1])
-    if dd == 0.0:
-        return
-    F, _, _, _ = _force(code, q, chi, 0.0, dd)
-    if F == 0.0:
-        return
-    sign = 1.0 if onset else -1.0
-    gx = sign * side * F / p[_rigid.P_M] / dd
-    gy = -sign * side * F / p[_rigid.P_m] / dd
-    for j in range(4):
-        grad = side * (w[15 + j] - w[7 + j])  # ∇g·Ψ's column
-        w[11 + j] += gx * grad
-        w[19 + j] += gy * grad
+def _flight_field(p, t, x, v, u, out):
+    """The flight's vector field (ẋ, ẍ, ẏ, ÿ) at t (Eq. F1; ÿ = 0)."""
+    out[0] = v
+    out[1] = _rigid._accel(p, p[_rigid.P_M], t, x, v)
+    out[2] = u
+    out[3] = 0.0
 
 
 @njit(cache=True)
-def _flight_variation(p, tau, w):
-    """Ψ ← Φ(τ)Ψ for a flight of τ: the primary's homogeneous motion (Eq. 7 with M, K, C; the
-    flight is affine in the state), y moves by ẏτ, ẏ is constant."""
+def _through_flight(p, tau, G, gt, fa, fb, side):
+    """The derivatives (G = ∂state/∂s, gt = ∂t/∂s) carried through a flight of τ from event A
+    (field ``fa``) to event B (field ``fb``) on the wall ``side`` (0: B is the run's end, a fixed
+    time).  H = Φ(τ)(G − fa·gt) is the change at B's nominal time (the closed-form flight obeys
+    the flow's identity exactly); at a wall B's time moves by −∇g·H/(∇g·fb) and the state with
+    it."""
     M, K, C = p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C]
     a11 = _stepper._x_ff(tau, M, K, C, 1.0, 0.0)
     a12 = _stepper._x_ff(tau, M, K, C, 0.0, 1.0)
     a21 = _stepper._xd_ff(tau, M, K, C, 1.0, 0.0)
     a22 = _stepper._xd_ff(tau, M, K, C, 0.0, 1.0)
     for j in range(4):
-        p0, p1, p2, p3 = w[7 + j], w[11 + j], w[15 + j], w[19 + j]
-        w[7 + j] = a11 * p0 + a12 * p1
-        w[11 + j] = a21 * p0 + a22 * p1
-        w[15 + j] = p2 + tau * p3
+        d0, d1 = G[0, j] - fa[0] * gt[j], G[1, j] - fa[1] * gt[j]
+        d2, d3 = G[2, j] - fa[2] * gt[j], G[3, j] - fa[3] * gt[j]
+        G[0, j] = a11 * d0 + a12 * d1
+        G[1, j] = a21 * d0 + a22 * d1
+        G[2, j] = d2 + tau * d3
+        G[3, j] = d3
+    if side == 0:
+        gt[:] = 0.0
+        return
+    rate = side * (fb[2] - fb[0])
+    for j in range(4):
+        gt[j] = -side * (G[2, j] - G[0, j]) / rate
+        for i in range(4):
+            G[i, j] += fb[i] * gt[j]
+
+
+@njit(cache=True)
+def _through_contact(w, G, gt, side, slope, ended):
+    """The derivatives carried through a contact: Ψ and ψ_t (the located steps' exact
+    derivatives with respect to the onset's state and time) applied to (G, gt); at an exit the
+    last step's length θ moves by −∇g·(ΨG + ψ_t·gt)/(∇g·r), r = ``slope`` its rate with its
+    length, and the exit's time with it; a contact cut by the run's end has a fixed end time, so
+    its last step shortens by the onset's delay (r again)."""
+    M1 = np.zeros((4, 4))
+    for i in range(4):
+        for j in range(4):
+            acc = w[23 + i] * gt[j]
+            for k in range(4):
+                acc += w[7 + 4 * i + k] * G[k, j]
+            M1[i, j] = acc
+    if ended:
+        rate = side * (slope[2] - slope[0])
+        for j in range(4):
+            dtheta = -side * (M1[2, j] - M1[0, j]) / rate
+            for i in range(4):
+                G[i, j] = M1[i, j] + slope[i] * dtheta
+            gt[j] += dtheta
+    else:
+        for j in range(4):
+            for i in range(4):
+                G[i, j] = M1[i, j] - slope[i] * gt[j]
+            gt[j] = 0.0
 
 
 @njit(cache=True)
@@ -357,7 +403,7 @@ def _fill_flight(p, t0, x0, v0, z0, u0, t1, sampled, dt_s):
 @njit(cache=True)
 def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budget):
     """The compiled run (see :func:`run`)."""
-    M, m, h = p[_rigid.P_M], p[_rigid.P_m], p[_rigid.P_h]
+    M, h = p[_rigid.P_M], p[_rigid.P_h]
     T_f = 2.0 * math.pi / p[_rigid.P_W]
     n_periods = int(math.floor(t_end / T_f + 0.5))  # noqa: RUF046 (int() spelled out for numba)
     period_max = np.zeros(n_periods + 1)
@@ -370,10 +416,14 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
     w = np.zeros(NW)
     for i in range(4):
         w[i] = state0[i]
-    for i in range(4):
-        w[7 + 5 * i] = 1.0
+    G = np.eye(4)  # ∂(state at the current event)/∂(initial state), and its time's gt
+    gt = np.zeros(4)
+    fa = np.zeros(4)
+    fb = np.zeros(4)
+    field = np.zeros(NW)
     atol = np.array([1e-14 * h, 0.0, 1e-14 * h, 0.0])
     work = np.array([0.0, budget])
+    slope = np.zeros(4)
     t = 0.0
     side0 = 0
     in_contact = 0.0
@@ -383,6 +433,7 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
     side = 0
     if abs(z) > h:
         side = 1 if z > 0 else -1
+    begun = side != 0  # the first contact began before t = 0: not an onset of this run
     while t < t_end:
         if side == 0:
             if n_ev + 2 > max_events:
@@ -390,6 +441,8 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
                 break
             x, v, u = w[0], w[1], w[3]
             z = w[2] - w[0]
+            if variational:
+                _flight_field(p, t, x, v, u, fa)
             tau, side = _rigid._next_impact(p, t, x, v, z, u, side0, t_end - t)
             _rigid._segment(p, M, t, x, v, tau, ledger, period_max, n_periods)
             _fill_flight(p, t, x, v, z, u, t + tau, sampled, dt_s)
@@ -398,16 +451,18 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
             t = t + tau
             w[0], w[1], w[2] = xn, vn, xn + z
             if variational:
-                _flight_variation(p, tau, w)
+                _flight_field(p, t, xn, vn, u, fb)
+                _through_flight(p, tau, G, gt, fa, fb, side)
             if side == 0:
                 break
             w[2] = w[0] + side * h  # exactly on the wall (the onset is located to 4e-16)
-            if variational:
-                _switch(code, q, chi, p, float(side), w, True)
         s = float(side)
         vrel = s * (w[3] - w[1])
         t_on, x_on, v_on, u_on = t, w[0], w[1], w[3]
-        w[4] = w[5] = w[6] = 0.0
+        for i in range(4, NW):
+            w[i] = 0.0
+        for i in range(4):
+            w[7 + 5 * i] = 1.0
         scale = max(abs(vrel), abs(w[1]), abs(w[3]), 1e-300)
         atol[1] = atol[3] = 1e-14 * scale
         h_contact = T_f / 64.0
@@ -416,37 +471,40 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
             h_contact = min(h_contact, 0.1 * depth / vrel)
         status, t, ended, h_contact = _contact(code, q, chi, p, s, t, w, t_end, h_contact, n,
                                                period_max, n_periods, sampled, dt_s, atol,
-                                               work)  # fmt: skip
+                                               work, slope)  # fmt: skip
         ledger[0] += w[4]
         ledger[1] += w[5]
         ledger[2] += w[6]
-        events = _rigid._grow(events, n_ev)
-        ev = events[n_ev]
-        ev[_rigid.E_T], ev[_rigid.E_X], ev[_rigid.E_XD], ev[_rigid.E_YD] = t_on, x_on, v_on, u_on
-        ev[_rigid.E_SIDE], ev[_rigid.E_VREL], ev[_rigid.E_LOST] = s, vrel, w[6]
-        ev[_rigid.E_KIND], ev[_rigid.E_XD1], ev[_rigid.E_YD1] = _rigid.KIND_IMPACT, w[1], w[3]
-        n_ev += 1
+        if not begun:
+            events = _rigid._grow(events, n_ev)
+            ev = events[n_ev]
+            ev[_rigid.E_T], ev[_rigid.E_X], ev[_rigid.E_XD] = t_on, x_on, v_on
+            ev[_rigid.E_YD], ev[_rigid.E_SIDE], ev[_rigid.E_VREL] = u_on, s, vrel
+            ev[_rigid.E_LOST], ev[_rigid.E_KIND] = w[6], _rigid.KIND_IMPACT
+            ev[_rigid.E_XD1], ev[_rigid.E_YD1] = w[1], w[3]
+            n_ev += 1
+        begun = False
         if status != _rigid.OK:
             break
+        if variational:
+            if not ended:  # cut by the run's end: the contact's own field there
+                _rhs(code, q, chi, p, s, t, w, field, 7)
+                for i in range(4):
+                    slope[i] = field[i]
+            _through_contact(w, G, gt, s, slope, ended)
         if not ended:
             in_contact = 1.0
             break
         w[2] = w[0] + s * h  # exactly on the wall again
-        if variational:
-            _switch(code, q, chi, p, s, w, False)
         side0 = side
         side = 0
     final = np.array([t, w[0], w[1], w[2], w[3], in_contact])
-    psi = np.zeros((4, 4))
-    for i in range(4):
-        for j in range(4):
-            psi[i, j] = w[7 + 4 * i + j]
-    return status, events[:n_ev], period_max, ledger, final, sampled, psi, work[0]
+    return status, events[:n_ev], period_max, ledger, final, sampled, G, work[0]
 
 
 def run(law, q, chi, p, state0, t_end, max_events, samples, variational=False):
     """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end (a start inside a wall begins with
-    its contact phase).  Returns (status, events, period_max, ledger = (forcing work, C's
+    its contact phase, which is not logged as an onset).  Returns (status, events, period_max, ledger = (forcing work, C's
     dissipation, contact's dissipation), final = (t, x, ẋ, y, ẏ, 1.0 if it ended in contact),
     sampled states (n·samples + 1, 4): x, ẋ, z = y − x, ẏ at t = k·T/samples, and Ψ, the
     Jacobian of the final (x, ẋ, y, ẏ) with respect to the initial one (identity unless

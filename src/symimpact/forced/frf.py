@@ -29,6 +29,7 @@ import numpy as np
 from ..errors import ParameterError, SymimpactError
 from ..generated import forced_flight as ff
 from ..system import ImpactSystem
+from .contact_law import is_rigid, simulation_arguments
 from .continuation import Branch, continue_orbit
 from .forcing import Forcing
 from .periodic import periodic_orbits
@@ -190,7 +191,7 @@ def frequency_response(
 
     for omega in np.linspace(band[0], band[1], starts + 2)[1:-1]:
         f = _forcing(forcing, float(omega))
-        for o in periodic_orbits(system, f, e):
+        for o in periodic_orbits(system, f, e) if is_rigid(e) else ():
             if o.admissible:
                 follow("closed form", 1, *_section_state(o, float(omega), h, system, forcing))
         for k in (1, 2):
@@ -312,7 +313,7 @@ def _sweep_runs(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> l
     for omega in omegas:
         f = _forcing(forcing, float(omega))
         periods = _settling_periods(system, f, SWEEP_KEPT, SWEEP_MAX, settled)
-        res = simulate_forced(system, f, contact="rigid", e=e, periods=periods,
+        res = simulate_forced(system, f, **simulation_arguments(e), periods=periods,
                               discard=periods - SWEEP_KEPT, x0=state[0], xdot0=state[1],
                               y0=state[2], ydot0=state[3])  # fmt: skip
         x, v, y, u = res.final_state

@@ -25,9 +25,10 @@ import numpy as np
 from ..errors import MethodNotApplicable, ParameterError
 from ..system import ImpactSystem
 from . import _rigid
+from .contact_law import CompliantContact, is_rigid, simulation_arguments
 from .forcing import Forcing
 from .linearised import acceleration, flight_matrix, saltation_matrix
-from .simulation import simulate_forced
+from .simulation import _simulate, contact_arguments, period_count, simulate_forced
 
 #: Newton stops when the change of the fixed-point residual is below this fraction of the
 #: state's scale (amplitude, amplitude·Ω, d/2): the simulation's own rounding is ~1e-14.
@@ -81,9 +82,14 @@ def monodromy(
     system: ImpactSystem, forcing: Forcing, e: Any, state: Any, periods: int = 1
 ) -> tuple[np.ndarray, np.ndarray, Any]:
     """The stroboscopic map P over ``periods`` forcing periods from ``state`` = (x, ẋ, z, ẏ) at
-    t = 0, and its Jacobian: the product of the flights' Φ(τ) and the impacts' saltation matrices
-    (Step 8, Step 9) along the simulated motion.  Returns (P(state), Jacobian, the simulation)."""
+    t = 0, and its Jacobian.  Rigid impacts (``e`` Newton's restitution): the product of the
+    flights' Φ(τ) and the impacts' saltation matrices (Step 8, Step 9) along the simulated
+    motion.  A compliant contact (``e`` a :class:`CompliantContact`): the variational equations
+    integrated through each contact, with the saltation matrices of contact onset and exit
+    (:mod:`symimpact.forced._compliant`).  Returns (P(state), Jacobian, the simulation)."""
     x, v, z, u = (float(c) for c in state)
+    if not is_rigid(e):
+        return _compliant_monodromy(system, forcing, e, (x, v, z, u), periods)
     res = simulate_forced(system, forcing, contact="rigid", e=e, periods=periods, x0=x,
                           xdot0=v, y0=x + z, ydot0=u, chatter=0.0)  # fmt: skip
     ev = res.events
@@ -103,6 +109,23 @@ def monodromy(
     return np.array([fx, fv, fy - fx, fu]), J, res
 
 
+#: (x, ẋ, z, ẏ) from (x, ẋ, y, ẏ): z = y − x; and back
+_TO_Z = np.array([[1, 0, 0, 0], [0, 1, 0, 0], [-1, 0, 1, 0], [0, 0, 0, 1]], dtype=float)
+_FROM_Z = np.array([[1, 0, 0, 0], [0, 1, 0, 0], [1, 0, 1, 0], [0, 0, 0, 1]], dtype=float)
+
+
+def _compliant_monodromy(system, forcing, contact: CompliantContact, state, periods):
+    """:func:`monodromy` through compliant contacts: one compiled run carrying Ψ (a start
+    inside a wall begins in contact)."""
+    x, v, z, u = state
+    _, chi, law = contact_arguments(system, contact.law, None, contact.chi)
+    n = period_count("periods", periods)
+    res, psi = _simulate(system, forcing, contact.law, None, chi, law, [x, v, x + z, u], n,
+                         variational=True)  # fmt: skip
+    fx, fv, fy, fu = res.final_state
+    return np.array([fx, fv, fy - fx, fu]), _TO_Z @ psi @ _FROM_Z, res
+
+
 def shoot(
     system: ImpactSystem,
     forcing: Forcing,
@@ -120,6 +143,7 @@ def shoot(
     if s.shape != (4,) or not np.all(np.isfinite(s)):
         raise ParameterError("start", "must be four finite numbers (x, ẋ, z, ẏ)")
     h = system.gap / 2.0
+    rigid = is_rigid(e)
     it = 0
     for it in range(1, max_iter + 1):  # noqa: B007 (the count is reported)
         ps, J, res = monodromy(system, forcing, e, s, periods)
@@ -140,7 +164,7 @@ def shoot(
                 "shooting", "the monodromy has a multiplier 1 (a fold): Newton cannot proceed"
             ) from None
         # a step that would put the impact mass through a wall is halved until it does not
-        while abs(s[2] + step[2]) > h and np.max(np.abs(step / scale)) > tol:
+        while rigid and abs(s[2] + step[2]) > h and np.max(np.abs(step / scale)) > tol:
             step = 0.5 * step
         s = s + step
         if float(np.max(np.abs(step / scale))) <= tol:
@@ -185,7 +209,7 @@ def shoot_from_rest(
     simulation from ``start`` = (x, ẋ, z, ẏ) (chatter and sticking allowed there), then
     :func:`shoot` from its final state (the same forcing phase: a whole number of periods)."""
     x, v, z, u = (float(c) for c in start)
-    res = simulate_forced(system, forcing, contact="rigid", e=e, periods=warmup, x0=x, xdot0=v,
-                          y0=x + z, ydot0=u)  # fmt: skip
+    res = simulate_forced(system, forcing, **simulation_arguments(e), periods=warmup, x0=x,
+                          xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
     fx, fv, fy, fu = res.final_state
-    return shoot(system, forcing, res.e, (fx, fv, fy - fx, fu), periods)
+    return shoot(system, forcing, res.e if is_rigid(e) else e, (fx, fv, fy - fx, fu), periods)

@@ -20,6 +20,7 @@ from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from ..units import nonnegative_float, si_float
 from . import _compliant, _rigid
+from .contact_law import COMPLIANT
 from .forcing import Forcing
 
 #: Chatter is taken to its accumulation point when the remaining impacts would all fall within
@@ -129,10 +130,6 @@ EVENT_COLUMNS = (
 )
 
 
-#: The compliant laws the forced simulation integrates (besides "rigid").
-COMPLIANT = ("cubic", "hertz", "linear", "hunt-crossley")
-
-
 def simulate_forced(
     system: ImpactSystem,
     forcing: Forcing,
@@ -159,6 +156,41 @@ def simulate_forced(
     phase integrated with the forcing (:mod:`symimpact.forced._compliant`).  With ``discard`` (a
     number of periods) the result's ``steady`` describes the periods after it.
     """
+    e, chi, law = contact_arguments(system, contact, e, chi)
+    n_periods = period_count("periods", periods)
+    if n_periods < 1:
+        raise ParameterError("periods", "must be at least 1")
+    n_discard = 0 if discard is None else period_count("discard", discard)
+    if discard is not None and n_discard >= n_periods:
+        raise ParameterError("discard", f"{n_discard} leaves none of the {n_periods} periods")
+    state = [
+        si_float(n, v) for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0))
+    ]
+    h = system.gap / 2.0
+    if contact == "rigid" and abs(state[2] - state[0]) > h * (1.0 + 1e-12):
+        raise ParameterError("y0", f"abs(y0 − x0) must not exceed d/2 = {h:g} m")
+    if not (chatter >= 0.0):
+        raise ParameterError("chatter", "must be a fraction ≥ 0 of the forcing period")
+    if samples_per_period < 16 or samples_per_period % 16:
+        raise ParameterError("samples_per_period", "must be a multiple of 16")
+    result, _ = _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter,
+                          samples_per_period)  # fmt: skip
+    if discard is not None:
+        steady = steady_state(result, n_discard)
+        notes = []
+        if steady.settling:
+            notes.append(
+                "still settling: the state once per period changes less and less across the kept "
+                f"window; discard more than {n_discard} periods for a settled verdict"
+            )
+        result = replace(result, steady=steady, notes=notes)
+    return result
+
+
+def contact_arguments(system: ImpactSystem, contact: str, e: Any, chi: Any):
+    """(e, chi, the law's parameter vector) for ``contact``, checked: rigid impacts take Newton's
+    ``e`` in [0, 1] (Eq. F2), Hunt–Crossley its ``chi`` [s/m] and k_hz (Eq. F4), the other
+    compliant laws their own parameters (Eq. 8, 9, 35); anything else is refused in one line."""
     if contact != "rigid" and contact not in COMPLIANT:
         raise ParameterError(
             "contact", f"must be rigid or one of {', '.join(COMPLIANT)}, got {contact!r}"
@@ -179,23 +211,15 @@ def simulate_forced(
             raise ParameterError("k_hz", "the Hunt–Crossley law needs the Hertz stiffness k_hz")
     elif chi is not None:
         raise ParameterError("chi", "applies to the Hunt–Crossley contact only")
-    law = _law_parameters(system, contact)
-    n_periods = period_count("periods", periods)
-    if n_periods < 1:
-        raise ParameterError("periods", "must be at least 1")
-    n_discard = 0 if discard is None else period_count("discard", discard)
-    if discard is not None and n_discard >= n_periods:
-        raise ParameterError("discard", f"{n_discard} leaves none of the {n_periods} periods")
-    state = [
-        si_float(n, v) for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0))
-    ]
+    return e, chi, _law_parameters(system, contact)
+
+
+def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=CHATTER,
+              samples_per_period=16, variational=False):  # fmt: skip
+    """The checked run of :func:`simulate_forced` from ``state`` = (x, ẋ, y, ẏ) at t = 0 (a
+    compliant run may start inside a wall), and, compliant with ``variational``, the Jacobian Ψ of
+    the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced._compliant`)."""
     h = system.gap / 2.0
-    if abs(state[2] - state[0]) > h * (1.0 + 1e-12):
-        raise ParameterError("y0", f"abs(y0 − x0) must not exceed d/2 = {h:g} m")
-    if not (chatter >= 0.0):
-        raise ParameterError("chatter", "must be a fraction ≥ 0 of the forcing period")
-    if samples_per_period < 16 or samples_per_period % 16:
-        raise ParameterError("samples_per_period", "must be a multiple of 16")
     p = np.zeros(_rigid.N_PARAMS)
     p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
     p[_rigid.P_m], p[_rigid.P_h], p[_rigid.P_e] = system.m, h, 1.0 if e is None else e
@@ -210,14 +234,15 @@ def simulate_forced(
             f"{natural:.3g} natural periods of the primary; at most {MAX_NATURAL_PERIODS:.0e}",
         )
     samples = None
+    psi = np.eye(4)
     potential = 0.0
     if contact == "rigid":
         status, events, n_ev, period_max, ledger, final = _rigid.run(
             p, np.array(state), t_end, MAX_EVENTS
         )
     else:
-        status, events, period_max, ledger, final, samples, _ = _compliant.run(
-            contact, law, chi, p, state, t_end, MAX_CONTACTS, samples_per_period
+        status, events, period_max, ledger, final, samples, psi = _compliant.run(
+            contact, law, chi, p, state, t_end, MAX_CONTACTS, samples_per_period, variational
         )
         n_ev = len(events)
         if final is not None and final[5]:
@@ -262,16 +287,7 @@ def simulate_forced(
         chi=chi,
         samples=samples,
     )
-    if discard is not None:
-        steady = steady_state(result, n_discard)
-        notes = []
-        if steady.settling:
-            notes.append(
-                "still settling: the state once per period changes less and less across the kept "
-                f"window; discard more than {n_discard} periods for a settled verdict"
-            )
-        result = replace(result, steady=steady, notes=notes)
-    return result
+    return result, psi
 
 
 def _law_parameters(system: ImpactSystem, contact: str) -> np.ndarray:
