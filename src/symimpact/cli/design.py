@@ -7,7 +7,7 @@ from __future__ import annotations
 from typing import Any
 
 from .common import add_system, emit, forcing_of, system_from, write_csv
-from .frf import add_band, band_from
+from .frf import add_band, band_from, contact_of, contact_title
 
 
 def add_parser(sub: Any) -> None:
@@ -16,7 +16,7 @@ def add_parser(sub: Any) -> None:
         "design",
         help="clearance design map: peak amplitude over a band against the clearance",
     )
-    add_system(p, extra_laws=("rigid",), contact_default=None)
+    add_system(p, extra_laws=("rigid", "hunt-crossley"), contact_default=None)
     g = p.add_argument_group("forcing F0·cos(Ωt) and/or base motion X_b·cos(Ωt) over a band")
     add_band(g)
     g = p.add_argument_group("the designs")
@@ -62,7 +62,8 @@ def run(ns) -> None:
         raise ParameterError("gaps", f"{n} designs; at most 10000")
     if ns.workers is not None and ns.workers < 1:
         raise ParameterError("workers", "must be a positive integer")
-    table = design_map(system, forcing, ns.e, omegas, grid, executor=ns.executor,
+    e = contact_of(ns)
+    table = design_map(system, forcing, e, omegas, grid, executor=ns.executor,
                        workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
                        force=ns.overwrite, progress=not (ns.quiet or ns.json))  # fmt: skip
     rows = table_rows(table)
@@ -73,7 +74,7 @@ def run(ns) -> None:
         from ..plots import plot_design
 
         plot_design(table, ns.plot, title=f"band {omegas[0]:.4g}–{omegas[-1]:.4g} rad/s, "
-                    f"e = {ns.e}")  # fmt: skip
+                    f"{contact_title(ns, e)}")  # fmt: skip
     unit, gunit = display_unit("x"), display_unit("gap")
     lines = [f"{len(rows)} design(s) over Ω {omegas[0]:.6g}–{omegas[-1]:.6g} rad/s "
              f"({len(omegas)} frequencies); without the damper the peak is "

@@ -1,6 +1,7 @@
-"""``symimpact frf``: the frequency-response curve of the primary with a rigid-impact damper —
-branches of periodic orbits continued in Ω with their stability and bifurcations, the primary
-without the damper, and brute-force sweeps up and down the band."""
+"""``symimpact frf``: the frequency-response curve of the primary with an impact damper (rigid
+impacts, or a compliant contact integrated through each contact) — branches of periodic orbits
+continued in Ω with their stability and bifurcations, the primary without the damper, and
+brute-force sweeps up and down the band."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ def add_parser(sub: Any) -> None:
         "frf",
         help="frequency-response curve: continued branches, stability, bifurcations, sweeps",
     )
-    add_system(p, extra_laws=("rigid",), contact_default=None)
+    add_system(p, extra_laws=("rigid", "hunt-crossley"), contact_default=None)
     g = p.add_argument_group("forcing F0·cos(Ωt) and/or base motion X_b·cos(Ωt) over a band")
     add_band(g)
     g.add_argument("--no-sweeps", action="store_true",
@@ -35,24 +36,19 @@ def add_band(g: Any) -> None:
                    help="the band in Hz (Ω = 2πf)")  # fmt: skip
     g.add_argument("--e", default=None, metavar="E",
                    help="Newton's coefficient of restitution of the rigid law, 0 ≤ e ≤ 1")  # fmt: skip
+    g.add_argument("--chi", default=None, metavar="Q",
+                   help="Hunt–Crossley damping χ [s/m] of --contact hunt-crossley (Eq. F4)")  # fmt: skip
 
 
 def band_from(ns) -> Any:
-    """The band [rad/s] of --omega-range or --freq-range, after the rigid law, --e and the
-    forcing are checked (each refusal one line naming the option)."""
+    """The band [rad/s] of --omega-range or --freq-range, after the contact (--contact, --e,
+    --chi) and the forcing are checked (each refusal one line naming the option)."""
     import numpy as np
 
-    from ..errors import MethodNotApplicable, ParameterError
+    from ..errors import ParameterError
     from ..maps.points import parse_range
 
-    if ns.contact != "rigid":
-        raise MethodNotApplicable(
-            ns.command,
-            f"contact {ns.contact!r}: the frequency-response curve follows rigid impacts "
-            "(--contact rigid --e E); compliant contacts come with their variational equations",
-        )
-    if ns.e is None:
-        raise ParameterError("e", "contact rigid needs Newton's coefficient of restitution --e")
+    contact_of(ns)
     if ns.F0 is None and ns.X_b is None:
         raise ParameterError("force", "give the forcing amplitude: --force F0 or --base X_b")
     if (ns.omega_range is None) == (ns.freq_range is None):
@@ -71,6 +67,41 @@ def band_from(ns) -> Any:
     return omegas
 
 
+def contact_of(ns) -> Any:
+    """The contact of the options, checked (each refusal one line naming the option): --e for
+    rigid impacts, else a :class:`~symimpact.forced.CompliantContact` (with --chi for
+    Hunt–Crossley)."""
+    from ..errors import MethodNotApplicable, ParameterError
+    from ..forced.contact_law import CompliantContact
+
+    if ns.contact is None:
+        raise ParameterError("contact", "name the contact: rigid (with --e), cubic, hertz, "
+                             "linear or hunt-crossley (with --chi)")  # fmt: skip
+    if ns.contact == "perturbation":
+        raise MethodNotApplicable(
+            ns.command, "contact 'perturbation' is a free-vibration solution (Eq. 31–33); a "
+            "forced curve takes rigid, cubic, hertz, linear or hunt-crossley",
+        )  # fmt: skip
+    if ns.contact == "rigid" and ns.e is None:
+        raise ParameterError("e", "contact rigid needs Newton's coefficient of restitution --e")
+    if ns.contact != "rigid" and ns.e is not None:
+        raise ParameterError("e", f"applies to rigid impacts; contact {ns.contact} sets its own")
+    if ns.contact == "hunt-crossley" and ns.chi is None:
+        raise ParameterError("chi", "contact hunt-crossley needs its damping --chi χ [s/m]")
+    if ns.contact != "hunt-crossley" and ns.chi is not None:
+        raise ParameterError("chi", "applies to --contact hunt-crossley only")
+    if ns.contact == "rigid":
+        return ns.e
+    return CompliantContact(ns.contact, ns.chi)
+
+
+def contact_title(ns, e: Any) -> str:
+    """``e = 0.6`` or ``contact hunt-crossley, χ = 0.5 s/m``: the contact for a plot's title."""
+    from ..forced.contact_law import contact_text, is_rigid
+
+    return f"e = {float(e):g}" if is_rigid(e) else f"contact {contact_text(e)}"
+
+
 def run(ns) -> None:
     from ..display import display_unit, shown
     from ..forced.frf import frequency_response
@@ -78,7 +109,8 @@ def run(ns) -> None:
     omegas = band_from(ns)
     system = system_from(ns)
     forcing = forcing_of(ns, omega=float(omegas[0]))
-    frf = frequency_response(system, forcing, ns.e, omegas, sweeps=not ns.no_sweeps)
+    e = contact_of(ns)
+    frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps)
     out = frf.as_dict()
     if ns.csv:
         write_csv(ns.csv, "csv", out["points"])
@@ -86,7 +118,7 @@ def run(ns) -> None:
         from ..plots import plot_frf
 
         plot_frf(frf, ns.plot, title=f"m/M = {system.m / system.M:.3g}, d = "
-                 f"{shown('gap', system.gap):.4g} {display_unit('gap')}, e = {float(ns.e):g}")  # fmt: skip
+                 f"{shown('gap', system.gap):.4g} {display_unit('gap')}, {contact_title(ns, e)}")  # fmt: skip
     unit = display_unit("x")
     lines = [
         f"Ω {omegas[0]:.6g}–{omegas[-1]:.6g} rad/s: {len(frf.branches)} branch(es), "

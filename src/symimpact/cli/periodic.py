@@ -1,8 +1,8 @@
 """``symimpact periodic``: the periodic motions of the forced impact damper at one frequency —
 the symmetric two-impact orbits in closed form (Eq. F3), or the orbit a brute-force run settles
 near, found by shooting (Newton on the stroboscopic map, monodromy through Step 8's flights and
-Step 9's saltation matrices) — each with its amplitude, impact speed, admissibility and
-stability."""
+Step 9's saltation matrices, or through a compliant contact's variational equations) — each with
+its amplitude, impact speed, admissibility and stability."""
 
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ def add_parser(sub: Any) -> None:
         help="periodic motions of the forced damper at one frequency (closed form, Eq. F3, or "
         "shooting)",
     )
-    add_system(p, extra_laws=("rigid",))
+    add_system(p, extra_laws=("rigid", "hunt-crossley"))
     add_forcing(p)
     p.add_argument(
         "--method",
@@ -33,6 +33,12 @@ def add_parser(sub: Any) -> None:
         "closed-form",
     )
     g = p.add_argument_group("shooting")
+    g.add_argument(
+        "--chi",
+        default=None,
+        metavar="Q",
+        help="Hunt–Crossley damping χ [s/m] of --contact hunt-crossley (Eq. F4)",
+    )
     g.add_argument(
         "--warmup",
         default=None,
@@ -52,20 +58,22 @@ def run(ns) -> None:
     from ..display import display_unit, shown
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced import periodic_orbits
+    from .frf import contact_of
 
+    if ns.method == "shooting":
+        e = contact_of(ns)
+        return _shooting(ns, system_from(ns), forcing_from(ns), e)
     if ns.contact != "rigid":
         raise MethodNotApplicable(
             ns.method,
             f"contact {ns.contact!r}: the closed form holds for rigid impacts "
-            "(--contact rigid --e E)",
+            "(--contact rigid --e E); --method shooting takes the compliant laws",
         )
     if ns.e is None:
         raise ParameterError("e", "contact rigid needs Newton's coefficient of restitution --e")
     system = system_from(ns)
     forcing = forcing_from(ns)
-    if ns.method == "shooting":
-        return _shooting(ns, system, forcing)
-    for key in ("warmup", "multiple"):
+    for key in ("warmup", "multiple", "chi"):
         if getattr(ns, key) is not None:
             raise ParameterError(key, "applies to --method shooting")
     orbits = periodic_orbits(system, forcing, ns.e)
@@ -92,8 +100,9 @@ def run(ns) -> None:
     emit(ns, out, text)
 
 
-def _shooting(ns, system, forcing) -> None:
-    """--method shooting: one orbit, the closed form's JSON keys and the shooting's own."""
+def _shooting(ns, system, forcing, e) -> None:
+    """--method shooting: one orbit, the closed form's JSON keys and the shooting's own, for
+    rigid impacts or a compliant contact ``e``."""
     from ..display import display_unit, shown
     from ..errors import ParameterError
     from ..forced import shoot_from_rest
@@ -103,7 +112,7 @@ def _shooting(ns, system, forcing) -> None:
     multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
     if not 1 <= multiple <= MAX_MULTIPLE:
         raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
-    o = shoot_from_rest(system, forcing, ns.e, warmup=warmup, periods=multiple)
+    o = shoot_from_rest(system, forcing, e, warmup=warmup, periods=multiple)
     unit = display_unit("x")
     text = (
         f"Ω {forcing.omega:.6g} rad/s: an orbit of {multiple} forcing period(s) by shooting "

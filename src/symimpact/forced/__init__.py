@@ -8,15 +8,19 @@
   admissibility and stability.
 - :func:`rigid_limit`: compliant contacts stiffened with their damping set from e, against the
   rigid orbit they converge to.
-- :func:`shoot`, :func:`shoot_from_rest`, :func:`monodromy`: periodic orbits through rigid
-  impacts by Newton's method on the stroboscopic map, with the monodromy carried through flights
-  and impacts (saltation matrices), and their Floquet multipliers.
+- :func:`shoot`, :func:`shoot_from_rest`, :func:`monodromy`: periodic orbits by Newton's method
+  on the stroboscopic map, with the monodromy carried through flights and rigid impacts
+  (saltation matrices) or through compliant contacts (variational equations, the located onsets
+  and exits differentiated), and their Floquet multipliers.
+- :class:`CompliantContact`: a compliant law given in place of the restitution e to shooting,
+  continuation, the frequency-response curve and the design map.
 - :func:`continue_orbit`: pseudo-arclength continuation of those orbits in Ω, with folds,
   branch points, period doublings, Neimark–Sacker points and grazings located.
 - :func:`slow_flow_responses`, :func:`backbone`, :func:`best_clearance`: the 1:1 slow flow of a
   vibro-impact absorber (Eq. F5), for a light impact mass.
 """
 
+from .contact_law import CompliantContact
 from .continuation import Bifurcation, Branch, BranchPoint, continue_orbit
 from .forcing import Forcing
 from .periodic import PeriodicOrbit, periodic_orbits
@@ -38,6 +42,7 @@ __all__ = [
     "Bifurcation",
     "Branch",
     "BranchPoint",
+    "CompliantContact",
     "ForcedResult",
     "Forcing",
     "PeriodicOrbit",

@@ -466,9 +466,13 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
         scale = max(abs(vrel), abs(w[1]), abs(w[3]), 1e-300)
         atol[1] = atol[3] = 1e-14 * scale
         h_contact = T_f / 64.0
-        if vrel > 0.0:  # the first step: about a tenth of the time to the largest penetration
-            depth = _stepper._penetration_scale(_stepper.HERTZ if code == HC else code, q, vrel)
-            h_contact = min(h_contact, 0.1 * depth / vrel)
+        if vrel != 0.0:
+            # the first step: about a tenth of the time to the largest penetration at this speed
+            # (or, in a contact begun before t = 0 and parting, to cover the present one)
+            depth = _stepper._penetration_scale(_stepper.HERTZ if code == HC else code, q,
+                                                abs(vrel))  # fmt: skip
+            depth = max(depth, s * (w[2] - w[0]) - h)
+            h_contact = min(h_contact, 0.1 * depth / abs(vrel))
         status, t, ended, h_contact = _contact(code, q, chi, p, s, t, w, t_end, h_contact, n,
                                                period_max, n_periods, sampled, dt_s, atol,
                                                work, slope)  # fmt: skip

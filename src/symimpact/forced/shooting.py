@@ -28,12 +28,22 @@ from . import _rigid
 from .contact_law import CompliantContact, is_rigid, simulation_arguments
 from .forcing import Forcing
 from .linearised import acceleration, flight_matrix, saltation_matrix
-from .simulation import _simulate, contact_arguments, period_count, simulate_forced
+from .simulation import (
+    TooManyContacts,
+    _simulate,
+    contact_arguments,
+    period_count,
+    simulate_forced,
+)
 
 #: Newton stops when the change of the fixed-point residual is below this fraction of the
 #: state's scale (amplitude, amplitude·Ω, d/2): the simulation's own rounding is ~1e-14.
 TOL = 1e-11
 MAX_ITER = 30
+#: A compliant orbit with more contacts than this in a forcing period is not followed: a Newton
+#: iterate far from any orbit can set the masses bouncing thousands of times a period (seconds
+#: of integration each), and such a motion chatters rather than impacts.
+MAX_CONTACTS_PER_PERIOD = 64
 
 
 @dataclass(frozen=True)
@@ -120,8 +130,15 @@ def _compliant_monodromy(system, forcing, contact: CompliantContact, state, peri
     x, v, z, u = state
     _, chi, law = contact_arguments(system, contact.law, None, contact.chi)
     n = period_count("periods", periods)
-    res, psi = _simulate(system, forcing, contact.law, None, chi, law, [x, v, x + z, u], n,
-                         variational=True)  # fmt: skip
+    try:
+        res, psi = _simulate(system, forcing, contact.law, None, chi, law, [x, v, x + z, u], n,
+                             variational=True, max_contacts=MAX_CONTACTS_PER_PERIOD * n)  # fmt: skip
+    except TooManyContacts:
+        raise MethodNotApplicable(
+            "shooting",
+            f"more than {MAX_CONTACTS_PER_PERIOD} contacts a period: the motion chatters; "
+            "shooting follows impacting orbits only",
+        ) from None
     fx, fv, fy, fu = res.final_state
     return np.array([fx, fv, fy - fx, fu]), _TO_Z @ psi @ _FROM_Z, res
 
@@ -163,6 +180,11 @@ def shoot(
             raise MethodNotApplicable(
                 "shooting", "the monodromy has a multiplier 1 (a fold): Newton cannot proceed"
             ) from None
+        # a compliant contact: no step longer than the state's scale (a full Newton step from a
+        # poor start can throw the masses metres through the walls, a motion of thousands of
+        # contacts a period)
+        if not rigid:
+            step = step / max(1.0, float(np.max(np.abs(step / scale))))
         # a step that would put the impact mass through a wall is halved until it does not
         while rigid and abs(s[2] + step[2]) > h and np.max(np.abs(step / scale)) > tol:
             step = 0.5 * step

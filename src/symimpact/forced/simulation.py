@@ -32,8 +32,14 @@ CHATTER = 1e-7
 SECTION_RTOL = 1e-6
 MAX_EVENTS = 10_000_000
 #: A compliant run integrates every contact (compiled, 0.1–1 ms each): it stops, saying so, past
-#: this many (minutes of work) rather than running on for hours.
-MAX_CONTACTS = 1_000_000
+#: this many (a minute or two of work) rather than running on for hours.
+MAX_CONTACTS = 200_000
+
+
+class TooManyContacts(SymimpactError):
+    """A compliant run met more contacts than it was allowed."""
+
+
 #: The longest run, in natural periods of the primary 2π√(M/K): flight is evaluated 16 times per
 #: natural period, so 10⁶ of them are seconds of work; a slower forcing (Ω → 0) or more periods
 #: would run for hours and is refused at once.
@@ -215,10 +221,11 @@ def contact_arguments(system: ImpactSystem, contact: str, e: Any, chi: Any):
 
 
 def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=CHATTER,
-              samples_per_period=16, variational=False):  # fmt: skip
+              samples_per_period=16, variational=False, max_contacts=None):  # fmt: skip
     """The checked run of :func:`simulate_forced` from ``state`` = (x, ẋ, y, ẏ) at t = 0 (a
     compliant run may start inside a wall), and, compliant with ``variational``, the Jacobian Ψ of
-    the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced._compliant`)."""
+    the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced._compliant`);
+    ``max_contacts`` in place of :data:`MAX_CONTACTS`."""
     h = system.gap / 2.0
     p = np.zeros(_rigid.N_PARAMS)
     p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
@@ -242,7 +249,15 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
         )
     else:
         status, events, period_max, ledger, final, samples, psi = _compliant.run(
-            contact, law, chi, p, state, t_end, MAX_CONTACTS, samples_per_period, variational
+            contact,
+            law,
+            chi,
+            p,
+            state,
+            t_end,
+            max_contacts or MAX_CONTACTS,
+            samples_per_period,
+            variational,
         )
         n_ev = len(events)
         if final is not None and final[5]:
@@ -261,8 +276,9 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             "evaluations (long, stiff contacts): shorten the run or use contact rigid"
         )
     if status == _rigid.TOO_MANY_EVENTS and contact != "rigid":
-        raise SymimpactError(
-            f"more than {MAX_CONTACTS:,} contacts in {n_periods} periods, each integrated: "
+        raise TooManyContacts(
+            f"more than {max_contacts or MAX_CONTACTS:,} contacts in {n_periods} periods, each "
+            "integrated: "
             "shorten the run or use contact rigid"
         )
     if status == _rigid.TOO_MANY_EVENTS:

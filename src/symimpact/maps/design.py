@@ -39,6 +39,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
+from ..forced.contact_law import is_rigid
 from ..forced.forcing import Forcing
 from ..forced.frf import _sweep, frequency_response
 from ..system import ImpactSystem
@@ -194,8 +195,9 @@ def design_map(
     progress: bool | Callable[[int, int], None] = False,
 ):
     """The clearance design map (module text): one row per point of ``grid`` (``{name:
-    values}`` over :data:`DESIGN_SWEEPABLE`, values in SI or with units) for rigid impacts of
-    restitution ``e`` under ``forcing`` over the band ``omegas`` [rad/s].  ``executor``,
+    values}`` over :data:`DESIGN_SWEEPABLE`, values in SI or with units) for the contact ``e``
+    (Newton's restitution of rigid impacts, or a :class:`~symimpact.forced.CompliantContact`)
+    under ``forcing`` over the band ``omegas`` [rad/s].  ``executor``,
     ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
     :func:`symimpact.maps.parameter_map`: the same executors, and a resumable ``out`` file."""
     if not isinstance(system, ImpactSystem):
@@ -205,9 +207,10 @@ def design_map(
     bad = [n for n in grid if n not in DESIGN_SWEEPABLE]
     if bad:
         raise ParameterError(bad[0], f"a design map sweeps {', '.join(DESIGN_SWEEPABLE)}")
-    e = nonnegative_float("e", e)
-    if e > 1.0:
-        raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+    if is_rigid(e):
+        e = nonnegative_float("e", e)
+        if e > 1.0:
+            raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
     points: MapPoints = as_points(dict(grid))
     w = np.asarray(omegas, dtype=float)
     if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(np.diff(w) <= 0):
@@ -220,7 +223,8 @@ def design_map(
     executor = _executor(executor, workers, client, scheduler)
     store = None
     if out is not None:
-        settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, "e": e,
+        contact = {"e": e} if is_rigid(e) else e.as_dict()
+        settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, **contact,
                     "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip
         store = MapStore(out, system=system, points=points, settings=settings, force=force,
                          outputs=DESIGN_OUTPUTS, table=design_table)  # fmt: skip
