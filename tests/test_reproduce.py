@@ -44,7 +44,8 @@ def test_every_figure_is_a_valid_nonempty_png(report):
     names = {f.name for f in figures}
     assert {"fig2_force_laws", "fig3a_amplitude_ratio", "fig3b_iterations", "fig4_response_9mm",
             "fig5_relative_motion", "fig6_six_gaps", "fig7_gap_sweep", "accuracy_map",
-            "lindstedt_orders", "gap_classes", "forced_frc", "forced_design_map"} <= names  # fmt: skip
+            "lindstedt_orders", "gap_classes", "forced_frc", "forced_frc_compliant",
+            "forced_design_map"} <= names  # fmt: skip
     for f in figures:
         png = path / f"{f.name}.png"
         w, h = _png_size(png)
@@ -225,6 +226,12 @@ def test_forced_section_restitution_peaks_and_best_clearance(report):
         peak, swept = row[2], row[5]
         assert peak >= swept * (1 - 1e-4)
         assert row[-1] == pytest.approx(peak / row[6], rel=1e-12)
+    compliant = next(b for b in forced.blocks
+                     if isinstance(b, Table) and b.name == "forced_compliant_peaks")  # fmt: skip
+    rigid = {row[0]: row[2] for row in peaks.rows}
+    assert [row[0] for row in compliant.rows] == list(rigid)
+    for gap_mm, _, peak, _, _, rigid_peak, ratio in compliant.rows:
+        assert rigid_peak == rigid[gap_mm] and ratio == pytest.approx(peak / rigid_peak, rel=1e-12)
     with open(path / "forced_design_map.csv", newline="", encoding="utf-8") as f:
         rows = list(csv.DictReader(f))
     best = next(b for b in forced.blocks

@@ -1,11 +1,12 @@
-"""The frequency-response curve of the primary with a rigid-impact damper:
-:func:`frequency_response`.
+"""The frequency-response curve of the primary with an impact damper — rigid impacts of
+restitution e, or a compliant contact (a :class:`~symimpact.forced.CompliantContact` in place of
+e): :func:`frequency_response`.
 
 Branches of periodic orbits are continued in Ω (:func:`symimpact.forced.continue_orbit`) from
 several kinds of starting point, so that coexisting motions are found:
 
 - the closed-form symmetric two-impact orbits (Eq. F3) that are admissible, at frequencies spread
-  over the band;
+  over the band (rigid impacts only);
 - the orbits brute-force runs from rest settle near (:func:`symimpact.forced.shoot_from_rest`),
   of one and two forcing periods;
 - with the sweeps: the periodic impacting motions (one or two periods) a sweep settles on that no
