@@ -14,17 +14,20 @@ falsi) so the located state carries the integrator's full accuracy.  The work of
 the dissipation of C and of the contact's damping are integrated with the motion, so the energy
 ledger closes.  The state is recorded at ``samples`` points per forcing period.
 
-*The monodromy.*  With ``variational`` the run also carries Ψ = ∂(x, ẋ, y, ẏ)(t)/∂(x, ẋ, y, ẏ)(0):
-through a flight the transition matrix of Eq. 7 (the flight is affine in the state), through a
-contact the variational equations Ψ' = A(t)Ψ, A the Jacobian of the contact's equations of motion
-(∂F/∂δ, ∂F/∂δ̇ of the law), integrated by the same Runge–Kutta steps (so Ψ is the derivative of
-the discrete step map itself), and at contact onset and exit the saltation matrix of a switching
-surface g = s·(y − x) − d/2 = 0,
-
-    S = I + (f⁺ − f⁻)·∇gᵀ / (∇g·f⁻),
-
-f⁻ and f⁺ the vector fields before and after.  They differ only in the accelerations, by the
-contact force at δ = 0: c₁δ̇ for the laws with a dashpot, zero for Hunt–Crossley (S = I there).
+*The monodromy.*  With ``variational`` the run also carries the derivatives of the state and of
+the time at each event (contact onset or exit) with respect to the initial state, G and gt, and
+returns G at the run's end (a fixed time).  Through a flight from event A to event B the
+transition matrix Φ(τ) of Eq. 7 (the flight is affine in the state) acts on G − f_A·gt, the
+change at B's nominal time (the closed-form flight obeys the flow's identity exactly); at a wall
+B's time moves by −∇g·H/(∇g·f_B), g = s·(y − x) − d/2, and the state with it — the saltation
+of the switching surface.  Through a contact the variational equations Ψ' = AΨ (A the Jacobian
+of the contact's equations of motion: ∂F/∂δ, ∂F/∂δ̇ of the law) and ψ_t' = Aψ_t + ∂f/∂t (the
+effect of the onset's time) are integrated by the same Runge–Kutta steps, so they are the exact
+derivatives of the discrete steps, and the exit's time is differentiated through the located
+last step (its rate with its length, by a central difference).  A Runge–Kutta map does not obey
+the flow's identity ∂φ/∂t₀ = −Ψf at a Hertz onset, where δ^1.5 is not smooth: the saltation
+matrix S = I + (f⁺ − f⁻)∇gᵀ/(∇g·f⁻) applied to Ψ was off by 5e-5 of the monodromy there, the
+derivatives of the event times are not.
 
 This module is private: :mod:`symimpact.forced.simulation` validates the input.
 """

@@ -1,4 +1,5 @@
-"""Periodic orbits through rigid impacts by shooting: :func:`monodromy` and :func:`shoot`.
+"""Periodic orbits by shooting, through rigid impacts or a compliant contact: :func:`monodromy`
+and :func:`shoot`.
 
 The stroboscopic (Poincaré) map P takes the state s = (x, ẋ, z = y − x, ẏ) at t = 0 to the state
 k forcing periods later; a period-k orbit is a fixed point of P.  P is evaluated by the
@@ -6,12 +7,16 @@ event-driven simulation (Eq. F1 in flight, Eq. F2 at impacts) and its Jacobian �
 matrix — is carried along it, not differenced: each flight contributes its transition matrix Φ(τ)
 (the flight is affine in the state, Step 8's free-decay solutions) and each impact Step 9's
 saltation matrix S, which adds to the impact law's Jacobian the effect of arriving earlier or
-later.  Newton's method on P(s) − s = 0 with the Jacobian (monodromy − I) converges
-quadratically from a state near the orbit (a brute-force steady state, or a closed-form orbit);
-the eigenvalues of the monodromy are the Floquet multipliers.
+later.  With a compliant contact (``e`` a :class:`~symimpact.forced.CompliantContact`) each
+contact is integrated with its variational equations and the located onsets and exits are
+differentiated (:mod:`symimpact.forced._compliant`).  Newton's method on P(s) − s = 0 with the
+Jacobian (monodromy − I) converges quadratically from a state near the orbit (a brute-force
+steady state, or a closed-form orbit); the eigenvalues of the monodromy are the Floquet
+multipliers.
 
 Orbits that chatter or stick (an accumulation of impacts, a phase in which the masses move
-together) have no saltation matrix of this form and are refused.
+together; with a compliant contact, more than :data:`MAX_CONTACTS_PER_PERIOD` contacts a period)
+have no saltation matrix of this form and are refused.
 """
 
 from __future__ import annotations
@@ -95,7 +100,7 @@ def monodromy(
     t = 0, and its Jacobian.  Rigid impacts (``e`` Newton's restitution): the product of the
     flights' Φ(τ) and the impacts' saltation matrices (Step 8, Step 9) along the simulated
     motion.  A compliant contact (``e`` a :class:`CompliantContact`): the variational equations
-    integrated through each contact, with the saltation matrices of contact onset and exit
+    integrated through each contact, the located onsets and exits differentiated
     (:mod:`symimpact.forced._compliant`).  Returns (P(state), Jacobian, the simulation)."""
     x, v, z, u = (float(c) for c in state)
     if not is_rigid(e):
@@ -189,7 +194,11 @@ def shoot(
         while rigid and abs(s[2] + step[2]) > h and np.max(np.abs(step / scale)) > tol:
             step = 0.5 * step
         s = s + step
-        if float(np.max(np.abs(step / scale))) <= tol:
+        # a compliant map carries ~1e-12 of noise (continuation.NOISE), amplified by the
+        # conditioning of (monodromy − I)
+        scaled = (J - np.eye(4)) * scale[None, :] / scale[:, None]
+        floor = tol if rigid else max(tol, 1e-12 * float(np.linalg.cond(scaled)))
+        if float(np.max(np.abs(step / scale))) <= floor:
             break
     else:
         raise MethodNotApplicable(
