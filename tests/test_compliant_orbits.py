@@ -50,9 +50,9 @@ def test_the_monodromy_is_the_derivative_of_the_stroboscopic_map(law, chi, syste
     after 300 periods, in flight: the monodromy carried through flights, contacts (variational
     equations) and the onsets and exits (derivatives of the located times) against central
     differences of P with steps of 1e-5 of each component's scale.  The map's own noise (~1e-12,
-    the integrator's located steps) over the step leaves ~1e-7: measured ≤ 4e-7, asserted 1e-6
-    (the issue's figure).  Before the exits' and onsets' times were differentiated as the steps
-    take them, the Hertz laws were off by 5e-5 here."""
+    the integrator's located steps) over the step leaves ~1e-7: measured 1.7e-8 (cubic) to 2.4e-7
+    (Hertz), asserted 1e-6 (the issue's figure).  Before the exits' and onsets' times were
+    differentiated as the steps take them, the Hertz laws were off by 5e-5 here."""
     contact = CompliantContact(law, chi)
     f, s = _in_flight(system, law, chi)
     J, fd, scale = _monodromy_and_differences(system, f, contact, s, 1e-5)
@@ -105,7 +105,8 @@ def test_from_inside_a_contact_the_differences_converge_to_the_monodromy():
 def test_a_shot_compliant_orbit_is_the_brute_force_steady_state():
     """Hunt–Crossley (k_hz 1e9, χ 0.5 s/m) at 36 rad/s: the orbit by shooting (largest
     multiplier 0.95) against a run started 1e-3 off it for 1000 periods (0.95¹⁰⁰⁰ ≈ 5e-23):
-    the section states agree to 1e-9 of their scale (measured ~1e-12), and the amplitude."""
+    the section states agree to 1e-9 of their scale (measured 2.3e-11), and the amplitude
+    (5.8e-11)."""
     contact = CompliantContact("hunt-crossley", 0.5)
     f = Forcing(F0=2.0, omega=W)
     run = simulate_forced(LAWS, f, contact="hunt-crossley", chi=0.5, periods=300)
@@ -162,7 +163,7 @@ def test_compliant_frf_stable_points_are_brute_force_steady_states():
     """The frequency-response curve with Hertz contact (k_hz 1e9, c1 1 N s/m) over 33–37 rad/s
     without sweeps: on every branch with a stable point, its most strongly attracting one is the
     steady state of a run started 1e-3 off it (amplitude to 1e-6; the run lasts until μⁿ =
-    1e-9)."""
+    1e-9; measured 3.4e-11 on its one branch)."""
     out = frequency_response(LAWS, Forcing(F0=2.0, omega=W), CompliantContact("hertz"),
                              np.linspace(33.0, 37.0, 41), starts=3, sweeps=False)  # fmt: skip
     checked = 0
