@@ -218,3 +218,21 @@ def test_continuing_e_is_refused_for_a_compliant_law():
         CompliantContact("hunt-crossley")
     with pytest.raises(ParameterError, match=r"^contact: "):
         CompliantContact("rigid")
+
+
+def test_design_with_a_compliant_contact(capsys):
+    """``symimpact design --contact hunt-crossley``: one row per clearance, each peak at least the
+    primary's motion without the damper where the clearance is out of reach (d = 2 m: exactly
+    it), and the best clearance is the row of the smallest peak."""
+    argv = ["design", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--force", "2 N",
+            "--k-hz", "1e9", "--contact", "hunt-crossley", "--chi", "0.5", "--omega-range",
+            "35:37:0.5", "--gaps", "20 mm,2 m", "--json"]  # fmt: skip
+    assert main(argv) == 0
+    out = json.loads(capsys.readouterr().out)
+    rows = out["designs"]
+    assert [r["gap"] for r in rows] == [0.02, 2.0]
+    far = rows[1]
+    assert far["peak_motion"] == "no impact"
+    assert far["peak_amplitude"] == pytest.approx(far["baseline_peak"], rel=1e-12)
+    (best,) = out["best"]
+    assert best["peak_amplitude"] == min(r["peak_amplitude"] for r in rows)

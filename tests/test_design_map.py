@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from symimpact.errors import ParameterError
+from symimpact.forced.contact_law import CompliantContact
 from symimpact.forced.forcing import Forcing
 from symimpact.maps.design import best_clearances, design_map, design_row
 from symimpact.system import ImpactSystem
@@ -24,11 +25,13 @@ def _textbook(w):
     return 2.0 / np.hypot(1000.0 - w * w, 0.5 * w)
 
 
-def test_an_unreachable_clearance_gives_the_primary_without_the_damper():
+@pytest.mark.parametrize("contact", [E, CompliantContact("linear")], ids=["rigid", "linear"])
+def test_an_unreachable_clearance_gives_the_primary_without_the_damper(contact):
     """d = 2 m: the relative motion never reaches a wall, so the peak is the linear response's,
-    at the band's frequency nearest resonance, found as the motion without impacts."""
+    at the band's frequency nearest resonance, found as the motion without impacts (with rigid
+    impacts and with a compliant contact alike)."""
     w = np.linspace(28.0, 35.0, 36)
-    row = design_row(SYSTEM.with_(gap=2.0), FORCING, E, w)
+    row = design_row(SYSTEM.with_(gap=2.0), FORCING, contact, w)
     top = float(np.max(_textbook(w)))
     assert row["peak_motion"] == "no impact" and row["branches"] == 0
     assert row["peak_amplitude"] == pytest.approx(top, rel=1e-12)
