@@ -94,6 +94,7 @@ GOOD = {  # a valid value per option of every subcommand (SI numbers or quantiti
     "gaps": ["20 mm", "20 mm,2 m"],
     "mass_ratios": ["0.05", "0.05,1e-6"],
     "freq_range": ["5:5.5:0.25"],
+    "bounds": ["5 mm:40 mm", "1 N:3 N", "0.1:0.9", "40 mm:5 mm"],
 }
 #: A forced simulate lasts --periods (default 400); without it drawn, the fuzz asks for a few,
 #: so that a compliant forced run (each contact integrated) stays well under a second

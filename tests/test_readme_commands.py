@@ -28,7 +28,7 @@ COMMANDS = _commands()
 def test_the_block_holds_every_subcommand():
     assert [c.split()[1] for c in COMMANDS] == [
         "fit", "ritz", "contact-duration", "simulate", "simulate", "simulate", "periodic",
-        "periodic", "frf", "design", "sweep", "map",
+        "periodic", "periodic", "frf", "branch", "design", "sweep", "map",
     ]  # fmt: skip
 
 
@@ -54,6 +54,9 @@ def test_readme_command_runs_and_shows_something(command, tmp_path):
     elif sub == "frf":  # the stable symmetric branch and its symmetry-breaking branch point
         assert "branch-point at Ω 34.53" in out
         assert (tmp_path / "frf.png").stat().st_size > 10_000
+    elif sub == "branch":  # the symmetric orbit in d: its pitchfork (tests/test_branch_cli.py)
+        assert "branch-point at gap = 14.637 mm" in out
+        assert (tmp_path / "branch.png").stat().st_size > 10_000
     elif sub == "design":  # five clearances: the best one is inside the range, not at its ends
         best = re.search(r"best clearance: d (\d+) mm", out)
         assert best and best[1] in ("80", "120", "160"), out

@@ -161,6 +161,49 @@ def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
     plt.close(fig)
 
 
+def plot_branch(branch: Any, path: str | os.PathLike, title: str = "") -> None:
+    """A branch continued in a parameter (:func:`symimpact.forced.trace_branch`): the amplitude
+    against the parameter (d and X_b in mm), stable solid and unstable dashed, the located
+    bifurcations marked by kind."""
+    import numpy as np
+
+    from .display import display_unit, shown
+
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    name = branch.parameter
+    length = name in ("gap", "X_b")
+
+    def along(v):
+        return shown("gap", v) if length else v
+
+    x = along(np.array([p.value for p in branch.points]))
+    a = shown("x", np.array([p.amplitude for p in branch.points]))
+    stable = np.array([p.stable for p in branch.points])
+    for flag, style in ((True, "-"), (False, "--")):
+        joined = stable == flag
+        joined[1:] |= stable[:-1] == flag
+        ax.plot(x, np.where(joined, a, np.nan), style, color="C0", lw=1.4)
+    markers = {"fold": "o", "branch-point": "s", "period-doubling": "D", "neimark-sacker": "*",
+               "grazing": "x"}  # fmt: skip
+    seen = set()
+    for f in branch.bifurcations:
+        ax.plot(along(f.value), shown("x", f.amplitude), markers[f.kind], color="k", ms=6,
+                mfc="none", label=None if f.kind in seen else f.kind)  # fmt: skip
+        seen.add(f.kind)
+    ax.plot([], [], "-", color="C0", label="stable")
+    ax.plot([], [], "--", color="C0", label="unstable")
+    unit = display_unit("gap") if length else {"F0": "N", "e": ""}[name]
+    ax.set_xlabel(f"{name} [{unit}]" if unit else name)
+    ax.set_ylabel(f"amplitude max |x| [{display_unit('x')}]")
+    ax.legend(fontsize=8)
+    if title:
+        ax.set_title(title, fontsize=10)
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
+
+
 def plot_design(table: Any, path: str | os.PathLike, title: str = "") -> None:
     """The clearance design map (:func:`symimpact.maps.design.design_map`): the peak amplitude
     over the band against the clearance, one line per mass ratio, the best clearance of each

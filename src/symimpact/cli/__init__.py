@@ -17,6 +17,7 @@ from collections.abc import Sequence
 
 from ..errors import SymimpactError
 from . import (
+    branch,
     contact_duration,
     design,
     export,
@@ -31,8 +32,8 @@ from . import (
 from .common import Parser
 
 #: The subcommands, in the order of ``symimpact --help``.
-SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, periodic, frf, design, export,
-               sweep]  # fmt: skip
+SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, periodic, frf, branch, design,
+               export, sweep]  # fmt: skip
 
 #: What runs each subcommand (by name, aliases included).
 COMMANDS = {name: run for module in SUBCOMMANDS for name, run in module.COMMANDS.items()}

@@ -73,6 +73,7 @@ def contact_of(ns) -> Any:
     Hunt–Crossley)."""
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced.contact_law import CompliantContact
+    from ..units import nonnegative_float
 
     if ns.contact is None:
         raise ParameterError("contact", "name the contact: rigid (with --e), cubic, hertz, "
@@ -91,7 +92,10 @@ def contact_of(ns) -> Any:
     if ns.contact != "hunt-crossley" and ns.chi is not None:
         raise ParameterError("chi", "applies to --contact hunt-crossley only")
     if ns.contact == "rigid":
-        return ns.e
+        e = nonnegative_float("e", ns.e)
+        if e > 1.0:
+            raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+        return e
     return CompliantContact(ns.contact, ns.chi)
 
 

@@ -14,14 +14,15 @@
   and exits differentiated), and their Floquet multipliers.
 - :class:`CompliantContact`: a compliant law given in place of the restitution e to shooting,
   continuation, the frequency-response curve and the design map.
-- :func:`continue_orbit`: pseudo-arclength continuation of those orbits in Ω, with folds,
-  branch points, period doublings, Neimark–Sacker points and grazings located.
+- :func:`continue_orbit`, :func:`trace_branch`: pseudo-arclength continuation of those orbits in
+  Ω, d, F0, X_b or e (one direction, or both joined), with folds, branch points, period
+  doublings, Neimark–Sacker points and grazings located.
 - :func:`slow_flow_responses`, :func:`backbone`, :func:`best_clearance`: the 1:1 slow flow of a
   vibro-impact absorber (Eq. F5), for a light impact mass.
 """
 
 from .contact_law import CompliantContact
-from .continuation import Bifurcation, Branch, BranchPoint, continue_orbit
+from .continuation import Bifurcation, Branch, BranchPoint, continue_orbit, trace_branch
 from .forcing import Forcing
 from .periodic import PeriodicOrbit, periodic_orbits
 from .rigid_limit import RigidLimitRow, rigid_limit
@@ -61,4 +62,5 @@ __all__ = [
     "simulate_forced",
     "slow_flow_responses",
     "steady_state",
+    "trace_branch",
 ]

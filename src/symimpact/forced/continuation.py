@@ -309,6 +309,30 @@ def continue_orbit(
     return branch
 
 
+def trace_branch(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    state: Any,
+    bounds: tuple[float, float],
+    *,
+    parameter: str = "omega",
+    periods: int = 1,
+    step: float = 0.02,
+) -> Branch:
+    """The whole branch through ``state`` within ``bounds``: :func:`continue_orbit` towards
+    decreasing and towards increasing values of ``parameter``, joined into one branch in the
+    order of the arclength (the decreasing part reversed), with both parts' bifurcations."""
+    kw = {"parameter": parameter, "periods": periods, "step": step}
+    down = continue_orbit(system, forcing, e, state, bounds, direction=-1, **kw)
+    up = continue_orbit(system, forcing, e, state, bounds, direction=1, **kw)
+    joined = Branch(period_multiple=periods, phase=forcing.phase, parameter=parameter)
+    joined.points = [*reversed(down.points[1:]), *up.points]
+    joined.bifurcations = [*down.bifurcations, *up.bifurcations]
+    joined.stopped = f"down: {down.stopped}; up: {up.stopped}"
+    return joined
+
+
 def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
     """The bifurcation of ``kind`` between y and the step ds along t: Brent's method on the
     step length σ, each σ corrected onto the branch."""

@@ -31,7 +31,7 @@ from ..errors import ParameterError, SymimpactError
 from ..generated import forced_flight as ff
 from ..system import ImpactSystem
 from .contact_law import is_rigid, simulation_arguments
-from .continuation import Branch, continue_orbit
+from .continuation import Branch, trace_branch
 from .forcing import Forcing
 from .periodic import periodic_orbits
 from .shooting import monodromy, shoot, shoot_from_rest
@@ -126,14 +126,8 @@ def _on_branch(branches: list[Branch], omega: float, amplitude: float, k: int) -
 
 
 def _trace(system, forcing, e, state, band, k, step) -> Branch:
-    """Both directions from the start, joined into one branch (the down part reversed)."""
-    down = continue_orbit(system, forcing, e, state, band, periods=k, direction=-1, step=step)
-    up = continue_orbit(system, forcing, e, state, band, periods=k, direction=1, step=step)
-    joined = Branch(period_multiple=k, phase=forcing.phase)
-    joined.points = [*reversed(down.points[1:]), *up.points]
-    joined.bifurcations = [*down.bifurcations, *up.bifurcations]
-    joined.stopped = f"down: {down.stopped}; up: {up.stopped}"
-    return joined
+    """Both directions in Ω from the start, joined into one branch."""
+    return trace_branch(system, forcing, e, state, band, periods=k, step=step)
 
 
 def _section_state(orbit, omega: float, h: float, system: ImpactSystem, forcing: Forcing):
