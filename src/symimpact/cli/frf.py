@@ -81,7 +81,7 @@ def contact_of(ns) -> Any:
     if ns.contact == "perturbation":
         raise MethodNotApplicable(
             ns.command, "contact 'perturbation' is a free-vibration solution (Eq. 31–33); a "
-            "forced curve takes rigid, cubic, hertz, linear or hunt-crossley",
+            "forced motion takes rigid, cubic, hertz, linear or hunt-crossley",
         )  # fmt: skip
     if ns.contact == "rigid" and ns.e is None:
         raise ParameterError("e", "contact rigid needs Newton's coefficient of restitution --e")
