@@ -192,3 +192,21 @@ def test_a_vanishing_impact_mass_gives_the_linear_response():
     for p in points:
         assert p.amplitude == pytest.approx(2 / math.hypot(1000 - p.omega**2, 0.5 * p.omega),
                                             rel=1e-5)  # fmt: skip
+
+
+def test_a_point_located_twice_is_listed_once_within_the_contacts_accuracy():
+    """The fold located on two overlapping branches of the issue's system with the linear law
+    (29.6542732 and 29.6542364 rad/s, 1.2e-6 apart; amplitudes 27.6948 and 27.6951 mm) is one
+    point at a compliant contact's 1e-5, two at rigid impacts' 1e-6."""
+    from symimpact.forced.continuation import Bifurcation, Branch
+    from symimpact.forced.frf import _drop_repeated_bifurcations
+
+    def branches():
+        return [Branch(bifurcations=[Bifurcation("fold", 29.65427318685053, 0.027694780535253)]),
+                Branch(bifurcations=[Bifurcation("fold", 29.65423641210832, 0.027695123943350)])]  # fmt: skip
+
+    rigid, compliant = branches(), branches()
+    _drop_repeated_bifurcations(rigid, 1e-6)
+    _drop_repeated_bifurcations(compliant, 1e-5)
+    assert [len(b.bifurcations) for b in rigid] == [1, 1]
+    assert [len(b.bifurcations) for b in compliant] == [1, 0]
