@@ -9,11 +9,11 @@ import math
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, periodic_orbits, rigid_limit, simulate_forced
 from symimpact.system import ImpactSystem
+from tests.helpers import integrate_whole_system
 
 E, W = 0.6, 36.0  # the stable symmetric orbit of the system at 36 rad/s
 
@@ -34,33 +34,9 @@ def test_a_compliant_run_matches_an_integration_of_the_whole_system():
     s = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, k_hz=1e8, contact="hertz")
     f = Forcing(F0=2.0, omega=33.0, phase=0.3)
     res = simulate_forced(s, f, contact="hunt-crossley", chi=0.5, periods=2, ydot0=0.2)
-    h = 0.01
-
-    def rhs(t, u):
-        x, v, y, w = u
-        side = 1.0 if y - x > 0 else -1.0
-        delta = max(side * (y - x) - h, 0.0)
-        F = s.k_hz * delta**1.5 * (1.0 + 0.5 * side * (w - v))
-        fx = 2.0 * math.cos(33.0 * t + 0.3) - 1000 * x - 0.5 * v + side * F
-        return [v, fx, w, -side * F / 0.05]
-
-    def wall(side, direction):
-        def g(t, u):
-            return side * (u[2] - u[0]) - h
-
-        g.terminal, g.direction = True, direction
-        return g
-
-    t, u, side, contacts = 0.0, np.array([0.0, 0.0, 0.0, 0.2]), 0, 0
-    while t < res.t_end:
-        events = [wall(1, 1), wall(-1, 1)] if side == 0 else [wall(side, -1)]
-        sol = solve_ivp(rhs, (t, res.t_end), u, method="DOP853", rtol=1e-13, atol=1e-16,
-                        events=events)  # fmt: skip
-        t, u = sol.t[-1], sol.y[:, -1]
-        if sol.status == 1 and side == 0:
-            side, contacts = (1 if len(sol.t_events[0]) else -1), contacts + 1
-        elif sol.status == 1:
-            side = 0
+    u, contacts = integrate_whole_system(
+        lambda d, dd: s.k_hz * d**1.5 * (1.0 + 0.5 * dd), s, f, (0.0, 0.0, 0.0, 0.2), res.t_end
+    )
     assert contacts == len(res.impacts) == 4
     scale = np.array([0.01, 0.3, 0.01, 0.3])  # the clearance's half and the speeds
     assert np.max(np.abs(np.array(res.final_state) - u) / scale) < 1e-10

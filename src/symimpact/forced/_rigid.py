@@ -82,6 +82,16 @@ def _accel(p, mass, t, x, v):
 
 
 @njit(cache=True)
+def _jerk(p, mass, t, x, v):
+    """d³x/dt³, the derivative of :func:`_accel` along the flight."""
+    th = p[P_W] * t + p[P_PHI]
+    P = p[P_F0] + p[P_K] * p[P_XB]
+    Q = -p[P_C] * p[P_W] * p[P_XB]
+    a = _accel(p, mass, t, x, v)
+    return (p[P_W] * (Q * math.cos(th) - P * math.sin(th)) - p[P_C] * a - p[P_K] * v) / mass
+
+
+@njit(cache=True)
 def _accel_bound(p, mass, t0, x0, v0, span):
     """A ≥ |ẍ| over [t0, t0 + span] of the flight from (x0, v0) (module docstring)."""
     M, K, C, W = mass, p[P_K], p[P_C], p[P_W]
@@ -118,19 +128,47 @@ def _z(p, t0, x0, v0, z0, u0, tau):
 def _held_off(p, t0, x0, v0, side, fd0, T):
     """A τ up to which the wall ``side`` just left cannot be reached: while side·ẍ ≥ 0 the
     relative coordinate f = side·z − d/2 is concave, and with f(0) = 0, f'(0) = fd0 ≤ 0 it stays
-    negative.  Sampled at 1/64 of the shorter period over at most one period; the last sample
-    before side·ẍ turns negative is returned (0 when it is negative at once)."""
+    negative.
+
+    g = side·ẍ is certified non-negative with B ≥ |g''| = |d⁴x/dt⁴|, taken as 2·A·max(Ω, ω_n)²
+    (A the acceleration bound: each part of the flight, oscillating at Ω or decaying at
+    |−σ + iω_d| = ω_n, gains its frequency squared in two more derivatives; the 2 covers the
+    t-growing part at resonance).  First from the start, g ≥ g(0) + g'(0)τ − Bτ²/2 up to the
+    root of that bound (a release from sticking starts at g = 0 with g' > 0); then interval by
+    interval, g ≥ min(g(τa), g(τb)) − B(τb − τa)²/8 on [τa, τb], intervals of 1/64 of the
+    shorter period halved down to 1/4096 of it.  Returns the end of the certified stretch, at
+    most one period (0 when g < 0 at once, beyond the rounding of a located release).  Sampling g alone is not enough: a flight that
+    leaves a wall slowly while g is still negative, and turns positive within a sample, comes
+    back to the wall."""
     M, K, C, W = p[P_M], p[P_K], p[P_C], p[P_W]
+    wn = math.sqrt(K / M)
     wd = math.sqrt(K / M - C * C / (4 * M * M))
     period = 2.0 * math.pi / max(wd, W)
-    step = period / 64.0
-    tau = 0.0
-    while tau < min(T, period):
-        tb = min(tau + step, T)
+    span = min(T, period)
+    A = _accel_bound(p, M, t0, x0, v0, span)
+    B = 2.0 * A * max(W, wn) ** 2
+    ga = side * _accel(p, M, t0, x0, v0)
+    if ga < -1e-12 * A:
+        return 0.0
+    ga = max(ga, 0.0)  # a release from sticking, located where g = 0 to rounding
+    g1 = side * _jerk(p, M, t0, x0, v0)
+    tau = min((g1 + math.sqrt(g1 * g1 + 2.0 * B * ga)) / B, span)
+    if tau > 0.0:
+        x, v = _state(p, M, t0, x0, v0, tau)
+        ga = side * _accel(p, M, t0 + tau, x, v)
+    H = period / 64.0
+    while tau < span:
+        H = min(H, span - tau)
+        tb = tau + H
         x, v = _state(p, M, t0, x0, v0, tb)
-        if side * _accel(p, M, t0 + tb, x, v) < 0.0:
+        gb = side * _accel(p, M, t0 + tb, x, v)
+        if gb >= 0.0 and min(ga, gb) - B * H * H / 8.0 >= 0.0:
+            tau, ga = tb, gb
+            H = min(2.0 * H, period / 64.0)
+        elif H > period / 4096.0:
+            H *= 0.5
+        else:
             return tau
-        tau = tb
     return tau
 
 
