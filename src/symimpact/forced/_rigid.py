@@ -11,7 +11,9 @@ steady part contributes (its amplitude)·Ω², the decay of the deviation from i
 max z ≤ max(z_a, z_b) + A(τb − τa)²/8: an interval this bound clears is skipped, any other halved;
 crossings are bracketed and refined by Illinois regula falsi.  Right after an impact the wall just
 left cannot be reached before τ_safe = 2w/A (w the separation speed), which keeps the search off
-the root at τ = 0.
+the root at τ = 0, nor while the primary's acceleration is certified to point away from it
+(``_held_off``); a flight that leaves while the primary still accelerates back is searched from
+2w/A on, so a slow return to that wall is found.
 
 *Chatter.*  When the impact mass keeps returning to the same wall (relative acceleration a > 0
 towards it) with a separation speed w so small that the sequence would accumulate within
