@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 from symimpact.generated import forced_flight as ff
 
@@ -35,6 +35,8 @@ def _parameters(omega: float, phase: float) -> np.ndarray:
     return p
 
 
+# no deadline: the first example compiles the onset search (numba, about 1 s on a fresh clone)
+@settings(deadline=None)
 @given(
     omega=st.floats(25.0, 40.0),
     phase=st.floats(0.0, 2 * math.pi),
