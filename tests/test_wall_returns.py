@@ -18,6 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from symimpact.generated import forced_flight as ff
 
+from symimpact._interrupt import NO_WATCH
 from symimpact.forced import Forcing, simulate_forced
 from symimpact.forced import _rigid as R
 from symimpact.system import ImpactSystem
@@ -67,7 +68,7 @@ def test_a_flight_leaving_a_wall_slowly_returns_where_sampling_finds_it(
     x = ff.forced_displacement(tau, M, K, C, F0, 0.0, omega, phase, x0, v0)
     z = z0 + u0 * tau - (x - x0)
     ahead = np.nonzero(np.abs(z[1:]) >= H)[0]  # either wall
-    found, wall = R._next_impact(p, 0.0, x0, v0, z0, u0, side, span)
+    found, wall = R._next_impact(p, 0.0, x0, v0, z0, u0, side, span, NO_WATCH)
     at_found = wall * R._z(p, 0.0, x0, v0, z0, u0, found) - H
     touch = wall != 0 and abs(at_found) <= 1e-14 * H
     if len(ahead):

@@ -125,7 +125,7 @@ def zeta_eq_of(peaks, npk, omega_n):
 
 
 @njit(cache=True)
-def run_many(law, P, S, T, rtol, rest, max_impacts, out):
+def run_many(law, P, S, T, rtol, rest, max_impacts, out, watch):
     """Run the points of a chunk one after the other and write one summary row each to ``out``.
 
     P (n, N_PARAMS): each point's parameter vector (system part, as :func:`_stepper.pack`);
@@ -140,13 +140,15 @@ def run_many(law, P, S, T, rtol, rest, max_impacts, out):
     state = np.empty(4)
     p = np.empty(st.N_PARAMS)
     for i in range(P.shape[0]):
+        if watch[2] != 0:  # a signal stopped the run before: the chunk is not finished
+            break
         for j in range(st.N_PARAMS):
             p[j] = P[i, j]
         for j in range(4):
             state[j] = S[i, j]
         e_initial = prepare(p, state[0], state[1], state[2], state[3], rtol, rest)
         status, n_imp, npk, _, u, diss_C, diss_c1, side, _, impacts, peaks, trace = st.run(
-            law, p, state, T[i], impacts, peaks, trace, False, max_impacts
+            law, p, state, T[i], impacts, peaks, trace, False, max_impacts, watch
         )
         n_eff = 0
         for k in range(n_imp):

@@ -23,6 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
+from ._interrupt import EVERY, INTERRUPTED, stop_requested
 from .generated import free_flight as _ff
 from .generated import multiple_scales as _ms
 
@@ -751,8 +752,9 @@ def _free_peaks(p, x0, xd0, t0, tau_a, tau_b, peaks, npk):
 
 
 @njit(cache=True)
-def run(law, p, state0, t_end, impacts, peaks, trace, record, max_impacts):
-    """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end.
+def run(law, p, state0, t_end, impacts, peaks, trace, record, max_impacts, watch):
+    """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end (or until a signal is seen on
+    ``watch``: status INTERRUPTED, :mod:`symimpact._interrupt`).
 
     Fills ``impacts`` (one row per contact), ``peaks`` (t, x of positive maxima of x) and, when
     ``record``, ``trace``, each grown as it fills (status FULL_IMPACTS only past ``max_impacts``
@@ -774,7 +776,12 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record, max_impacts):
     side = 0.0
     tau_skip = 0.0
     h_contact = 1e-3 * 2.0 * math.pi / math.sqrt(K / M)
+    looks = 0
     while t < t_end:
+        looks += 1
+        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
+            status = INTERRUPTED
+            break
         x0, xd0, y0, yd0 = u[0], u[1], u[2], u[3]
         if record:
             trace = _room(trace, ntr)

@@ -230,7 +230,7 @@ def simulate(
     SimulationResult with the impact log, N_tot, N_eff, effectiveness (Eq. 38), DI (Eq. 36) and
     the energy balance: initial = final + dissipated by C + dissipated by c₁ + residual.
     """
-    from . import _batch, _stepper
+    from . import _batch, _interrupt, _stepper
 
     if not isinstance(system, ImpactSystem):
         raise ParameterError("system", "must be an ImpactSystem")
@@ -287,7 +287,8 @@ def simulate(
     state0 = np.array([x0, xdot0, y0, ydot0])
     # the buffers grow inside the stepper as they fill; these are only first sizes
     status, n_imp, n_pk, n_tr, u, diss_C, diss_c1, side, t_stop, impacts, peaks, trace = (
-        _stepper.run(
+        _interrupt.call(
+            _stepper.run,
             law,
             p,
             state0,

@@ -39,7 +39,8 @@ import math
 import numpy as np
 from numba import njit
 
-from .. import _stepper
+from .. import _interrupt, _stepper
+from .._interrupt import EVERY, INTERRUPTED, stop_requested
 from .._stepper import P_a, P_b, P_c1, P_k1, P_khz
 from . import _rigid
 
@@ -230,7 +231,7 @@ def _note_extreme(period_max, n_periods, T_f, t, x):
 
 @njit(cache=True)
 def _contact(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sampled, dt_s,
-             atol, work, slope):  # fmt: skip
+             atol, work, slope, watch):  # fmt: skip
     """One contact phase from t with w (state, zeroed ledger, Ψ), to its end δ = 0 or t_end.
 
     w is updated in place; sampled states and extremes of x are recorded; at an end, ``slope``
@@ -252,6 +253,8 @@ def _contact(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sa
         nsteps += 1
         if nsteps > MAX_CONTACT_STEPS:
             return TOO_MANY_STEPS, t, False, h
+        if (nsteps & (EVERY - 1)) == 0 and stop_requested(watch):
+            return INTERRUPTED, t, False, h
         if work[0] > work[1]:
             return TOO_MUCH_WORK, t, False, h
         h = min(h, t_end - t)
@@ -404,7 +407,7 @@ def _fill_flight(p, t0, x0, v0, z0, u0, t1, sampled, dt_s):
 
 
 @njit(cache=True)
-def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budget):
+def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budget, watch):
     """The compiled run (see :func:`run`)."""
     M, h = p[_rigid.P_M], p[_rigid.P_h]
     T_f = 2.0 * math.pi / p[_rigid.P_W]
@@ -437,7 +440,12 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
     if abs(z) > h:
         side = 1 if z > 0 else -1
     begun = side != 0  # the first contact began before t = 0: not an onset of this run
+    looks = 0
     while t < t_end:
+        looks += 1
+        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
+            status = INTERRUPTED
+            break
         if side == 0:
             if n_ev + 2 > max_events:
                 status = _rigid.TOO_MANY_EVENTS
@@ -446,7 +454,7 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
             z = w[2] - w[0]
             if variational:
                 _flight_field(p, t, x, v, u, fa)
-            tau, side = _rigid._next_impact(p, t, x, v, z, u, side0, t_end - t)
+            tau, side = _rigid._next_impact(p, t, x, v, z, u, side0, t_end - t, watch)
             _rigid._segment(p, M, t, x, v, tau, ledger, period_max, n_periods)
             _fill_flight(p, t, x, v, z, u, t + tau, sampled, dt_s)
             xn, vn = _rigid._state(p, M, t, x, v, tau)
@@ -478,7 +486,7 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
             h_contact = min(h_contact, 0.1 * depth / abs(vrel))
         status, t, ended, h_contact = _contact(code, q, chi, p, s, t, w, t_end, h_contact, n,
                                                period_max, n_periods, sampled, dt_s, atol,
-                                               work, slope)  # fmt: skip
+                                               work, slope, watch)  # fmt: skip
         ledger[0] += w[4]
         ledger[1] += w[5]
         ledger[2] += w[6]
@@ -516,9 +524,10 @@ def run(law, q, chi, p, state0, t_end, max_events, samples, variational=False):
     sampled states (n·samples + 1, 4): x, ẋ, z = y − x, ẏ at t = k·T/samples, and Ψ, the
     Jacobian of the final (x, ẋ, y, ẏ) with respect to the initial one (identity unless
     ``variational``)).  ``law``: "cubic", "hertz", "linear" or "hunt-crossley"."""
-    status, events, period_max, ledger, final, sampled, psi, _ = _run(
-        CODES[law], q, 0.0 if chi is None else float(chi), p, np.asarray(state0, dtype=float),
-        float(t_end), int(max_events), int(samples), bool(variational), float(RHS_BUDGET),
+    status, events, period_max, ledger, final, sampled, psi, _ = _interrupt.call(
+        _run, CODES[law], q, 0.0 if chi is None else float(chi), p,
+        np.asarray(state0, dtype=float), float(t_end), int(max_events), int(samples),
+        bool(variational), float(RHS_BUDGET),
     )  # fmt: skip
     return status, events, period_max, ledger, final, sampled, psi
 

@@ -38,6 +38,7 @@ import math
 import numpy as np
 from numba import njit
 
+from .._interrupt import EVERY, INTERRUPTED, stop_requested
 from .._stepper import secant_point
 from ..generated import forced_flight as _fl
 
@@ -175,10 +176,11 @@ def _held_off(p, t0, x0, v0, side, fd0, T):
 
 
 @njit(cache=True)
-def _next_impact(p, t0, x0, v0, z0, u0, side0, T):
+def _next_impact(p, t0, x0, v0, z0, u0, side0, T, watch):
     """(τ, side): the first τ in (0, T] with abs(z) = d/2 in the flight from the state at t0, and
     its wall (+1 or −1); (T, 0) when there is none.  ``side0`` is the wall the flight starts on
-    (0: none)."""
+    (0: none).  A signal seen on ``watch`` (:mod:`symimpact._interrupt`) ends the search at once
+    with (τ so far, 0)."""
     h = p[P_h]
     M, K, C, W = p[P_M], p[P_K], p[P_C], p[P_W]
     wd = math.sqrt(K / M - C * C / (4 * M * M))
@@ -192,7 +194,11 @@ def _next_impact(p, t0, x0, v0, z0, u0, side0, T):
     tau = 0.0
     za = z0
     H = hmax
+    looks = 0
     while tau < T:
+        looks += 1
+        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
+            return tau, 0
         H = min(H, T - tau)
         tb = tau + H
         zb = _z(p, t0, x0, v0, z0, u0, tb)
@@ -237,14 +243,19 @@ def _next_impact(p, t0, x0, v0, z0, u0, side0, T):
 
 
 @njit(cache=True)
-def _release(p, t0, x0, v0, side, T):
-    """τ in (0, T] where the stuck pair's s·ẍ first turns positive (the wall would pull), or T."""
+def _release(p, t0, x0, v0, side, T, watch):
+    """τ in (0, T] where the stuck pair's s·ẍ first turns positive (the wall would pull), or T
+    (or the τ reached when a signal is seen on ``watch``)."""
     mass = p[P_M] + p[P_m]
     K, C, W = p[P_K], p[P_C], p[P_W]
     wd = math.sqrt(K / mass - C * C / (4 * mass * mass))
     step = 2.0 * math.pi / max(wd, W) / 64.0
     tau, fa = 0.0, -1.0
+    looks = 0
     while tau < T:
+        looks += 1
+        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
+            return tau
         tb = min(tau + step, T)
         x, v = _state(p, mass, t0, x0, v0, tb)
         fb = side * _accel(p, mass, t0 + tb, x, v)
@@ -332,8 +343,9 @@ def _segment(p, mass, t0, x0, v0, tau, ledger, period_max, n_periods):
 
 
 @njit(cache=True)
-def run(p, state0, t_end, max_events):
-    """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end.
+def run(p, state0, t_end, max_events, watch):
+    """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end (or until a signal is seen on
+    ``watch``: status INTERRUPTED, see :mod:`symimpact._interrupt`).
 
     Returns (status, events, n_events, period_max, ledger, final state): the event log
     (columns E_*), the largest abs(x) in every forcing period, ledger = (work of the forcing,
@@ -356,17 +368,24 @@ def run(p, state0, t_end, max_events):
         z = side0 * h
     status = OK
     stuck = 0.0  # 1.0: the run ended inside a sticking phase
+    looks = 0
     while t < t_end:
         if n_ev + 2 > max_events:
             status = TOO_MANY_EVENTS
             break
+        looks += 1
+        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
+            status = INTERRUPTED
+            break
         # --- free flight to the next impact ---
-        tau, side = _next_impact(p, t, x, v, z, u, side0, t_end - t)
+        tau, side = _next_impact(p, t, x, v, z, u, side0, t_end - t, watch)
         _segment(p, M, t, x, v, tau, ledger, period_max, n_periods)
         xn, vn = _state(p, M, t, x, v, tau)
         t_new = t + tau
         if side == 0:
             t, x, v, z = t_new, xn, vn, z + u * tau - (xn - x)
+            if watch[2] != 0:
+                status = INTERRUPTED
             break
         s = float(side)
         t, x = t_new, xn
@@ -422,7 +441,7 @@ def run(p, state0, t_end, max_events):
             # --- sticking phase ---
             if t >= t_end:
                 break
-            tau = _release(p, t, x, v, s, t_end - t)
+            tau = _release(p, t, x, v, s, t_end - t, watch)
             _segment(p, M + m, t, x, v, tau, ledger, period_max, n_periods)
             x, v = _state(p, M + m, t, x, v, tau)
             t = t + tau

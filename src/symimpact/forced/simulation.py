@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from .. import _stepper
+from .. import _interrupt, _stepper
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from ..units import nonnegative_float, si_float
@@ -244,8 +244,8 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
     psi = np.eye(4)
     potential = 0.0
     if contact == "rigid":
-        status, events, n_ev, period_max, ledger, final = _rigid.run(
-            p, np.array(state), t_end, MAX_EVENTS
+        status, events, n_ev, period_max, ledger, final = _interrupt.call(
+            _rigid.run, p, np.array(state), t_end, MAX_EVENTS
         )
     else:
         status, events, period_max, ledger, final, samples, psi = _compliant.run(

@@ -200,7 +200,7 @@ def _check_points(base: _Base, names: tuple[str, ...], values: np.ndarray) -> No
 def _chunk_rows(base: _Base, names: tuple[str, ...], runs: list[int], values: np.ndarray):
     """The rows of a chunk of points, run in one compiled loop (:func:`_batch.run_many`); each
     row holds the bits :func:`run_point` gives for the same point."""
-    from .. import _batch
+    from .. import _batch, _interrupt
     from .. import _stepper as st
     from ..simulation import MAX_IMPACTS, REST, RTOL, effectiveness
 
@@ -208,7 +208,8 @@ def _chunk_rows(base: _Base, names: tuple[str, ...], runs: list[int], values: np
     P = _packed(base, names, values)
     init = _initial_columns(base, names, values)
     out = np.empty((len(runs), _batch.N_ROW))
-    _batch.run_many(
+    _interrupt.call(
+        _batch.run_many,
         _law(base),
         P,
         np.ascontiguousarray(init[:, :4]),

@@ -1,0 +1,135 @@
+"""Ctrl-C, SIGTERM and SIGHUP while compiled code runs: seen within milliseconds, delivered only
+where Python can take them.
+
+CPython runs a signal's Python handler only between bytecodes.  While a compiled (numba) loop
+runs, a Ctrl-C waits; when the loop returns, the handler runs inside numba's conversion of the
+results to Python objects, and the KeyboardInterrupt it raises there left a half-built result:
+a segmentation fault (compliant runs) or "SystemError: returned a result with an exception set"
+(rigid runs).  So, around every compiled call (:func:`call`):
+
+* Python's C-level handler also writes the signal's number to a pipe (``signal.set_wakeup_fd``);
+  the compiled loops read that pipe every few thousand steps (:func:`stop_requested`, one
+  ``read`` system call, well under 1 % of a step's cost) and return the status
+  :data:`INTERRUPTED` at once when it holds SIGINT, SIGTERM or SIGHUP;
+* SIGINT's Python handler is replaced by one that only records the signal while compiled code
+  runs; the previous handler (Python's, which raises KeyboardInterrupt, or the caller's own) is
+  called once the call has returned and its result is whole.  A SIGINT that is ignored (map
+  workers ignore it) stays ignored.
+
+Outside the main thread no signal reaches Python, and the loops are given no pipe.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import threading
+from typing import Any
+
+import numpy as np
+from numba import njit, types
+
+#: Status of a compiled run that stopped because a signal asked it to (every loop's own statuses
+#: are small numbers; this one is shared).
+INTERRUPTED = 99
+#: Signals that stop a compiled loop: the ones that end a command.
+_STOPPING = (int(signal.SIGINT), int(signal.SIGTERM), int(signal.SIGHUP))
+#: Steps of a compiled loop between two looks at the pipe (a power of two, for a mask).
+EVERY = 1024
+
+# ``read(2)`` called from compiled code by its symbol name, so the cached machine code stays valid
+# in every process (a ctypes address would not be).
+_read = types.ExternalFunction("read", types.intp(types.intc, types.intp, types.uintp))
+
+
+@njit(cache=True)
+def stop_requested(watch: np.ndarray) -> bool:
+    """True when the watch pipe holds SIGINT, SIGTERM or SIGHUP.  ``watch`` (int64, 3) holds the
+    pipe's read end (−1: none), a one-byte buffer and, once seen, the signal's number."""
+    if watch[2] != 0:  # seen before: every loop on the way out stops too
+        return True
+    fd = watch[0]
+    if fd < 0:
+        return False
+    while True:
+        watch[1] = 0
+        if _read(fd, watch.ctypes.data + 8, 1) <= 0:
+            return False
+        s = watch[1]
+        if s > 255:  # the byte landed at the other end of the word (big-endian)
+            s = s >> 56
+        if s == 2 or s == 15 or s == 1:  # SIGINT, SIGTERM, SIGHUP (POSIX numbers)
+            watch[2] = s
+            return True
+
+
+class _Pipe:
+    """The process's wakeup pipe, made on first use (again after a fork)."""
+
+    def __init__(self) -> None:
+        self.pid = -1
+        self.r = self.w = -1
+
+    def ends(self) -> tuple[int, int]:
+        if self.pid != os.getpid():
+            r, w = os.pipe()
+            os.set_blocking(r, False)
+            os.set_blocking(w, False)
+            self.r, self.w, self.pid = r, w, os.getpid()
+        return self.r, self.w
+
+    def drain(self) -> None:
+        try:
+            while os.read(self.r, 512):
+                pass
+        except OSError:  # empty (EAGAIN)
+            pass
+
+
+_PIPE = _Pipe()
+_recorded: list[int] = []
+_compiled_depth = 0
+#: A watch with no pipe: for compiled calls outside :func:`call` (tests, other threads).
+NO_WATCH = np.array([-1, 0, 0], dtype=np.int64)
+
+
+def _record(signum: int, frame: Any) -> None:
+    _recorded.append(signum)
+
+
+def call(fn: Any, *args: Any) -> Any:
+    """``fn(*args, watch)``: a compiled loop, given the pipe to watch, with SIGINT deferred to its
+    return (see the module text).  The previous SIGINT handler is called there if a SIGINT came,
+    so a KeyboardInterrupt is raised from here, in Python, with the result discarded."""
+    global _compiled_depth
+    if threading.current_thread() is not threading.main_thread() or _compiled_depth:
+        return fn(*args, NO_WATCH.copy())
+    r, w = _PIPE.ends()
+    watch = np.array([r, 0, 0], dtype=np.int64)
+    previous = signal.getsignal(signal.SIGINT)
+    defer = previous not in (signal.SIG_IGN, None)
+    try:
+        old_fd = signal.set_wakeup_fd(w, warn_on_full_buffer=False)
+    except ValueError:  # a signal-less interpreter (embedded): nothing to watch
+        return fn(*args, NO_WATCH.copy())
+    if defer:
+        signal.signal(signal.SIGINT, _record)
+    _recorded.clear()
+    _compiled_depth = 1
+    try:
+        out = fn(*args, watch)
+    finally:
+        _compiled_depth = 0
+        if defer:
+            signal.signal(signal.SIGINT, previous)
+        signal.set_wakeup_fd(old_fd)
+        _PIPE.drain()
+    if _recorded or watch[2] == int(signal.SIGINT):
+        _recorded.clear()
+        if callable(previous):  # Python's own raises KeyboardInterrupt
+            previous(signal.SIGINT, None)
+        elif previous == signal.SIG_DFL:
+            signal.raise_signal(signal.SIGINT)
+    if watch[2]:  # the run was cut short: its result is not one
+        raise KeyboardInterrupt(f"signal {int(watch[2])}")
+    return out
