@@ -22,6 +22,32 @@ def _fsync(path: str | os.PathLike) -> None:
         os.close(fd)
 
 
+def output_target(path: str | os.PathLike, what: str) -> Path:
+    """The file an output option ``what`` writes, checked before any work is done.
+
+    A symbolic link is written through (the link stays, its target gets the new content), so
+    the path returned is the resolved one: two runs given a link and its target see the same
+    file (and the same lock).  Refused in one line naming ``what``: a folder that does not
+    exist or cannot be written, a path that is a folder, and an existing path that is not a
+    regular file (a device such as /dev/null, a FIFO, a socket), which a write by rename would
+    replace."""
+    target = Path(os.path.realpath(path))
+    folder = target.parent
+    if not folder.is_dir():
+        raise ParameterError(what, f"folder {str(Path(path).parent)!r} does not exist")
+    if target.is_dir():
+        raise ParameterError(what, f"{str(path)!r} is a folder")
+    if target.exists() and not target.is_file():
+        raise ParameterError(
+            what,
+            f"{str(path)!r} is not a regular file (a device, FIFO or socket); outputs are "
+            "written to regular files or new paths",
+        )
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise ParameterError(what, f"cannot write in {str(folder)!r}")
+    return target
+
+
 @contextmanager
 def _temporary_beside(
     path: str | os.PathLike, what: str, suffix: str, sync: bool = False
@@ -33,16 +59,8 @@ def _temporary_beside(
     the file is flushed to disk before the rename, and the rename after it (a crash then leaves
     the old or the new file, never an empty one).
     """
-    target = Path(path)
-    if target.is_symlink():
-        # written through: the link stays and its target gets the new content (a link to
-        # something that is not a file in a writable folder is refused below)
-        target = Path(os.path.realpath(target))
-    folder = target.parent if str(target.parent) else Path(".")
-    if not folder.is_dir():
-        raise ParameterError(what, f"folder {str(folder)!r} does not exist")
-    if target.is_dir():
-        raise ParameterError(what, f"{str(target)!r} is a folder")
+    target = output_target(path, what)
+    folder = target.parent
     try:
         fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{target.name}.", suffix=suffix)
     except OSError as exc:

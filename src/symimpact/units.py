@@ -94,9 +94,14 @@ def _registry():
         if hide:
             del sys.modules["dask"]
     try:  # pint caches its parsed definitions on disk: 0.04 s instead of 0.2 s from the 2nd run
-        return pint.UnitRegistry(cache_folder=":auto:")
+        ureg = pint.UnitRegistry(cache_folder=":auto:")
     except Exception:  # no writable cache folder, or a damaged cache file: parse every time
-        return pint.UnitRegistry()
+        ureg = pint.UnitRegistry()
+    try:  # "rev/s", as on a tachometer (pint knows revolution, rpm and turn, not rev)
+        ureg.define("rev = revolution")
+    except Exception:  # a pint that defines it already
+        pass
+    return ureg
 
 
 #: Characters read as a minus sign: the ASCII hyphen-minus and every Unicode minus or dash that
@@ -162,6 +167,19 @@ def split_quantity(name: str, text: str) -> tuple[float, str]:
     return sign * value, unit
 
 
+def units_alike(name: str, text: str, parts: list[str]) -> None:
+    """Refuse a range whose values mix quantities with units and bare numbers: in "6 mm:12 mm:2"
+    or "5 mm:40" the bare number would be read as SI (2 m, 40 m)."""
+    units = [split_quantity(name, p.strip())[1] if p.strip() else "" for p in parts]
+    if any(units) and not all(units):
+        bare = [p.strip() for p, u in zip(parts, units, strict=True) if not u]
+        raise ParameterError(
+            name,
+            f"range {text!r} mixes values with and without units ({', '.join(bare)} has "
+            "none); give every value its unit, or none (SI)",
+        )
+
+
 def _pint_factor(unit_text: str, si_unit: str) -> tuple[str, str]:
     """What pint says of ``unit_text`` against ``si_unit``: ("ok", factor as shortest decimal
     text), ("unit", reason) or ("dimension", dimensionality)."""
@@ -172,11 +190,42 @@ def _pint_factor(unit_text: str, si_unit: str) -> tuple[str, str]:
         parsed = ureg.parse_units("1" + unit_text if unit_text.startswith("/") else unit_text)
     except Exception as exc:  # pint raises assorted error types on malformed or unknown units
         return "unit", str(exc)
+    if si_unit in ANGULAR:
+        return _frequency_factor(ureg, parsed, unit_text, si_unit)
     try:
         factor = ureg.Quantity(1.0, parsed).to(si_unit).magnitude
     except pint.errors.DimensionalityError:
         return "dimension", str(ureg.Quantity(1.0, parsed).dimensionality)
     return "ok", f"{float(factor):.15g}"  # pint computes 1/0.01³ as 999999.9999999999
+
+
+#: The two units of a frequency: an angle per time (Ω) and cycles per time (f = Ω/2π).
+ANGULAR = ("rad/s", "Hz")
+
+
+def _frequency_factor(ureg: Any, parsed: Any, unit_text: str, si_unit: str) -> tuple[str, str]:
+    """A frequency's factor to rad/s or Hz, by what the unit counts.
+
+    pint takes the radian as dimensionless, so to it Hz and rad/s are both 1/s and "324.7 rpm"
+    in Hz is 34.0 (rad/s), not 5.41.  Here a unit whose root holds an angle (rad/s, deg/s,
+    rpm = revolution/minute, turn/s, cycle/s) is an angular rate, converted through radians; a
+    unit of hertz (Hz, kHz, hertz) counts cycles, 2π rad each; a rate with neither (1/s, 1/min)
+    is ambiguous and refused."""
+    q = ureg.Quantity(1.0, parsed).to_root_units()
+    root = dict(q.units._units)
+    if root == {"radian": 1, "second": -1}:
+        rad_per_s = float(q.magnitude)
+    elif root == {"second": -1} and any("hertz" in str(u) for u in parsed._units):
+        rad_per_s = 2.0 * math.pi * float(q.magnitude)
+    elif root == {"second": -1}:
+        return "unit", (
+            f"{unit_text!r} is a rate that names no angle: write rad/s (or deg/s, rpm) for an "
+            "angular frequency, Hz for cycles per second"
+        )
+    else:
+        return "dimension", str(q.dimensionality)
+    factor = rad_per_s if si_unit == "rad/s" else rad_per_s / (2.0 * math.pi)
+    return "ok", repr(factor)  # all its digits: 2π is no short decimal
 
 
 class _FactorFile:
@@ -208,7 +257,8 @@ class _FactorFile:
                 return self.entries
             definitions = Path(spec.origin).with_name("default_en.txt")
             st = definitions.stat()
-            self.key = f"{definitions}|{st.st_size}|{st.st_mtime_ns}"
+            # the reading rules' version, then pint's definitions: a change of either starts anew
+            self.key = f"{_RULES}|{definitions}|{st.st_size}|{st.st_mtime_ns}"
             home = os.environ.get("XDG_CACHE_HOME") or os.path.join(Path.home(), ".cache")
             self.path = Path(home) / "symimpact" / "unit-factors.json"
             if self.path.is_file():
@@ -253,6 +303,9 @@ class _FactorFile:
 
 
 _FACTOR_KINDS = ("ok", "unit", "dimension")
+#: Version of the rules that turn pint's answers into factors (2: frequencies by what they count,
+#: :func:`_frequency_factor`); part of the stored table's key.
+_RULES = 3
 #: Unit texts kept on disk at most (a fuzzing session must not grow the file without bound).
 _MAX_STORED_FACTORS = 2000
 _FACTOR_FILE = _FactorFile()

@@ -60,7 +60,27 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, parser_class=Parser)
     for module in SUBCOMMANDS:
         module.add_parser(sub)
+    for command in sub.choices.values():
+        for action in command._actions:
+            if type(action) is argparse._StoreAction:
+                action.__class__ = _StoreOnce
     return parser
+
+
+class _StoreOnce(argparse._StoreAction):
+    """An option that holds one value: given twice (``--force 2 --force 3``) it is refused in one
+    line, not silently replaced by the second."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        given = namespace.__dict__.setdefault(GIVEN, set())
+        if self.dest in given:
+            parser.error(f"argument {option_string}: given twice")
+        given.add(self.dest)
+        super().__call__(parser, namespace, values, option_string)
+
+
+#: The namespace's record of the options given (removed once parsed).
+GIVEN = "_options_given"
 
 
 _NEGATIVE = re.compile(r"^-(\d|\.\d|inf|nan)", re.IGNORECASE)
@@ -159,6 +179,23 @@ def _dashes_as_empty(ns: argparse.Namespace) -> argparse.Namespace:
     return ns
 
 
+#: Options that name a file a command writes, checked before the command computes anything.
+OUTPUT_FILES = ("plot", "csv")
+#: Commands whose --out is a file (a map's table); the others' --out is a folder.
+FILE_OUT = ("sweep", "map", "design")
+
+
+def _check_outputs(ns: argparse.Namespace) -> None:
+    """Refuse an output path that cannot be written before the computation starts
+    (:func:`symimpact.io.output_target`), not after it."""
+    from ..io import output_target
+
+    for name in OUTPUT_FILES + (("out",) if ns.command in FILE_OUT else ()):
+        value = getattr(ns, name, None)
+        if value:
+            output_target(value, name)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of ``symimpact``; returns the exit status (see ``EXIT_*``: 2 on bad input, 3
     on a fault, 128 + N on signal N)."""
@@ -168,6 +205,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     argv = sys.argv[1:] if argv is None else list(argv)
     ns = _dashes_as_empty(parser.parse_args(_join_negative_values(parser, argv)))
+    ns.__dict__.pop(GIVEN, None)
     from .. import display
 
     units_before = dict(display.DISPLAY_UNITS)
@@ -181,6 +219,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             pass
     try:
         display.parse_show(getattr(ns, "show", []))
+        _check_outputs(ns)
         COMMANDS[ns.command](ns)
     except SymimpactError as exc:
         print(f"symimpact {ns.command}: error: {exc}", file=sys.stderr)

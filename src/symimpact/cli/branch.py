@@ -41,11 +41,12 @@ def add_parser(sub: Any) -> None:
 def bounds_from(ns) -> tuple[float, float]:
     """(low, high) of --range in SI, in the unit of --parameter (one line when malformed)."""
     from ..errors import ParameterError
-    from ..units import si
+    from ..units import si, units_alike
 
     parts = str(ns.bounds).split(":")
     if len(parts) != 2:
         raise ParameterError("range", f"must be LOW:HIGH, got {ns.bounds!r}")
+    units_alike("range", str(ns.bounds), parts)
     lo, hi = (si(ns.parameter, part.strip()) for part in parts)
     if not lo < hi:
         raise ParameterError("range", f"LOW must be below HIGH, got {ns.bounds!r}")

@@ -30,11 +30,8 @@ class Forcing:
         set_ = object.__setattr__
         if (self.omega is None) == (self.freq is None):
             raise ParameterError("omega", "give the forcing frequency once: omega or freq")
-        # pint reads Hz and rad/s alike as 1/s: refuse the one that would change the meaning
-        if isinstance(self.omega, str) and "hz" in self.omega.lower():
-            raise ParameterError("omega", "is an angular frequency [rad/s]; give Hz as freq")
-        if isinstance(self.freq, str) and "rad" in self.freq.lower():
-            raise ParameterError("freq", "is a frequency [Hz]; give rad/s as omega")
+        # a frequency with units is read by what it counts, angle or cycles (units.ANGULAR):
+        # omega "5.41 Hz" is 34.0 rad/s, freq "324.7 rpm" is 5.41 Hz
         if self.omega is not None:
             omega = positive_float("omega", self.omega)
         else:

@@ -242,7 +242,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
         )
     samples = None
     psi = np.eye(4)
-    potential = 0.0
+    potential = potential0 = 0.0
     if contact == "rigid":
         status, events, n_ev, period_max, ledger, final = _interrupt.call(
             _rigid.run, p, np.array(state), t_end, MAX_EVENTS
@@ -260,6 +260,9 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             variational,
         )
         n_ev = len(events)
+        z0 = state[2] - state[0]
+        if abs(z0) > h:  # begun inside a wall: the contact's elastic energy is the start's too
+            potential0 = _compliant.contact_potential(contact, law, abs(z0) - h)
         if final is not None and final[5]:
             side = 1.0 if final[3] > final[1] else -1.0
             delta = side * (final[3] - final[1]) - h
@@ -287,7 +290,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             "fraction or shorten the run"
         )
     events = events[:n_ev].copy()
-    energy = _ledger(system, forcing, state, final, ledger, potential)
+    energy = _ledger(system, forcing, state, final, ledger, potential, potential0)
     result = ForcedResult(
         system=system,
         forcing=forcing,
@@ -338,11 +341,11 @@ def _energy(system: ImpactSystem, forcing: Forcing, t: float, s) -> float:
     )
 
 
-def _ledger(system, forcing, state0, final, ledger, potential=0.0) -> dict[str, float]:
+def _ledger(system, forcing, state0, final, ledger, potential=0.0, potential0=0.0):
     """The energy balance: E(end) − E(0) = work of the forcing − dissipation by C − impact loss
-    (rigid) or the contact's damping (compliant); ``potential``: the contact's elastic energy
-    when the run ends in contact."""
-    e0 = _energy(system, forcing, 0.0, state0)
+    (rigid) or the contact's damping (compliant); ``potential`` and ``potential0``: the contact's
+    elastic energy when the run ends, and when it starts, in contact."""
+    e0 = _energy(system, forcing, 0.0, state0) + potential0
     e1 = _energy(system, forcing, float(final[0]), [final[1], final[2], final[3], final[4]])
     e1 += potential
     work, d_c, d_imp = (float(v) for v in ledger)

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
-from ..units import SI_UNITS, si_float, split_quantity
+from ..units import SI_UNITS, si_float, split_quantity, units_alike
 
 INITIAL = ("x0", "xdot0", "y0", "ydot0", "t_end")
 SYSTEM_PARAMETERS = ("M", "K", "C", "zeta", "m", "gap", "a", "b", "k_hz", "k1", "c1")
@@ -30,14 +30,15 @@ def parse_range(name: str, text: str) -> np.ndarray:
         parts = text.split(":")
         if len(parts) != 3:
             raise ParameterError(name, f"range {text!r} must be start:stop:step")
-        units = [split_quantity(name, p.strip())[1] if p.strip() else "" for p in parts]
-        if any(units) and not all(units):  # "6 mm:12 mm:2" would take the 2 as 2 m
-            bare = [p.strip() for p, u in zip(parts, units, strict=True) if not u]
-            raise ParameterError(
-                name,
-                f"range {text!r} mixes values with and without units ({', '.join(bare)} has "
-                "none); give every value its unit, or none (SI)",
-            )
+        units_alike(name, text, parts)
+        units = {split_quantity(name, p.strip())[1] for p in parts}
+        if len(units) == 1 and "" not in units:
+            # one unit for all three: the grid is made in the numbers typed and each value then
+            # converted, so "4 Hz:6 Hz:0.5 Hz" gives 2π·4.5 to the last bit, not 2π·4 + 2π·0.5
+            unit = units.pop()
+            typed = parse_range(name, ":".join(str(split_quantity(name, p.strip())[0])
+                                               for p in parts))  # fmt: skip
+            return np.array([si_float(name, f"{float(v)!r} {unit}") for v in typed])
         start, stop, step = (si_float(name, p.strip()) for p in parts)
         if step <= 0:
             raise ParameterError(name, f"range step must be positive, got {step:g}")

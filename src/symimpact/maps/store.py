@@ -94,16 +94,13 @@ class MapStore:
         outputs: tuple[str, ...] = OUTPUTS,
         table: Any = tidy_table,
     ) -> None:
+        from ..io import output_target
+
         self.outputs, self.table = outputs, table
-        self.out = Path(out)
-        self.format = _format(self.out)
-        folder = self.out.parent if str(self.out.parent) else Path(".")
-        if not folder.is_dir():
-            raise ParameterError("out", f"folder {str(folder)!r} does not exist")
-        if not os.access(folder, os.W_OK):
-            raise ParameterError("out", f"cannot write in {str(folder)!r}")
-        if self.out.is_dir():
-            raise ParameterError("out", f"{str(self.out)!r} is a folder")
+        self.format = _format(Path(out))
+        # the resolved path: a link and its target share one lock and one partial file
+        self.out = output_target(out, "out")
+        folder = self.out.parent
         self.partial = folder / f".{self.out.name}.partial"
         self.spec = fingerprint(system, points, settings)
         self._lock(folder)

@@ -1,0 +1,216 @@
+"""Ctrl-C (SIGINT), SIGTERM and SIGHUP at random moments end every forced command cleanly: exit
+130 for SIGINT and 128 + N otherwise, one line on stderr, within a bound — never a crash (a
+SIGINT inside a compiled run was a segmentation fault, or exit 70 with "SystemError ... returned
+a result with an exception set"), never an internal error.
+
+Slow (about six minutes): the README's test command leaves it out; CI runs it in its second step
+(``python -m pytest -m slow``).  The moments are drawn from a generator seeded by the command's
+name, so a failure names a reproducible moment; they start after the interpreter's own start-up
+(0.15 s to ``main`` on the reference machine, where a signal meets Python's default handler
+before any symimpact code runs) and end before the shortest of these runs ends.
+"""
+
+from __future__ import annotations
+
+import random
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+SYS = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm", "--force", "2 N"]
+RIGID = ["--contact", "rigid", "--e", "0.6"]
+#: (command line, a short run of the same code path that compiles it first).  Each full run lasts
+#: 5–60 s on the 2-core reference machine, longer than the latest moment drawn.
+COMMANDS = {
+    "simulate rigid": (
+        ["simulate", *SYS, "--omega", "36", *RIGID, "--periods", "60000"],
+        ["simulate", *SYS, "--omega", "36", *RIGID, "--periods", "3"],
+    ),
+    "simulate linear": (
+        [
+            "simulate",
+            *SYS,
+            "--omega",
+            "36",
+            "--contact",
+            "linear",
+            "--k1",
+            "1e6",
+            "--periods",
+            "50000",
+        ],
+        ["simulate", *SYS, "--omega", "36", "--contact", "linear", "--k1", "1e6", "--periods", "3"],
+    ),
+    "simulate hertz": (
+        [
+            "simulate",
+            *SYS,
+            "--omega",
+            "36",
+            "--contact",
+            "hertz",
+            "--k-hz",
+            "1e5",
+            "--periods",
+            "20000",
+        ],
+        [
+            "simulate",
+            *SYS,
+            "--omega",
+            "36",
+            "--contact",
+            "hertz",
+            "--k-hz",
+            "1e5",
+            "--periods",
+            "3",
+        ],
+    ),
+    "simulate hunt-crossley": (
+        [
+            "simulate",
+            *SYS,
+            "--omega",
+            "36",
+            "--contact",
+            "hunt-crossley",
+            "--chi",
+            "0.5",
+            "--periods",
+            "20000",
+        ],
+        [
+            "simulate",
+            *SYS,
+            "--omega",
+            "36",
+            "--contact",
+            "hunt-crossley",
+            "--chi",
+            "0.5",
+            "--periods",
+            "3",
+        ],
+    ),
+    "simulate free": (
+        [
+            "simulate",
+            "--gap",
+            "20 mm",
+            "--C",
+            "0",
+            "--c1",
+            "0",
+            "--contact",
+            "linear",
+            "--rest",
+            "0",
+            "--t-end",
+            "15000 s",
+        ],
+        [
+            "simulate",
+            "--gap",
+            "20 mm",
+            "--C",
+            "0",
+            "--c1",
+            "0",
+            "--contact",
+            "linear",
+            "--rest",
+            "0",
+            "--t-end",
+            "1 s",
+        ],
+    ),
+    "periodic": (
+        ["periodic", *SYS, "--omega", "36", *RIGID, "--method", "shooting", "--warmup", "200000"],
+        ["periodic", *SYS, "--omega", "36", *RIGID, "--method", "shooting", "--warmup", "3"],
+    ),
+    "frf": (
+        ["frf", *SYS, *RIGID, "--omega-range", "25:40:0.05"],
+        ["frf", *SYS, *RIGID, "--omega-range", "30:31:0.5", "--no-sweeps"],
+    ),
+    "branch": (
+        [
+            "branch",
+            *SYS,
+            "--omega",
+            "36",
+            "--contact",
+            "linear",
+            "--k1",
+            "1e6",
+            "--c1",
+            "70",
+            "--parameter",
+            "gap",
+            "--range",
+            "5 mm:40 mm",
+            "--warmup",
+            "20000",
+        ],
+        ["branch", *SYS, "--omega", "36", *RIGID, "--parameter", "gap", "--range", "19 mm:21 mm"],
+    ),
+    "design": (
+        ["design", *SYS, *RIGID, "--omega-range", "25:40:0.1", "--gaps", "5 mm:40 mm:1 mm"],
+        ["design", *SYS, *RIGID, "--omega-range", "30:31:0.5", "--gaps", "19 mm,21 mm"],
+    ),
+}
+#: Moments per command.
+MOMENTS = 20
+#: The window the moments are drawn from [s] after the process starts.
+EARLIEST, LATEST = 0.3, 3.5
+#: The bound on the time from the signal to the exit [s]: the compiled loops look every 1024
+#: steps (milliseconds) and the interpreter's exit takes 0.1–0.3 s on the reference machine; the
+#: rest is room for a machine busy with other work.
+BOUND = 3.0
+EXPECTED = {
+    signal.SIGINT: (130, "interrupted"),
+    signal.SIGTERM: (143, "ended by signal 15"),
+    signal.SIGHUP: (129, "ended by signal 1"),
+}
+
+
+def _cli(args):
+    return [sys.executable, "-c", "import sys; from symimpact.cli import main; sys.exit(main())",
+            *args]  # fmt: skip
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", list(COMMANDS))
+def test_a_signal_at_any_moment_ends_the_command_in_one_line(name):
+    full, warm = COMMANDS[name]
+    done = subprocess.run(_cli(warm), capture_output=True, text=True, timeout=600)
+    assert done.returncode in (0, 2), done.stderr  # compiles what the full run uses
+    rng = random.Random(name)
+    command = name.split()[0]
+    seen = []
+    for k in range(MOMENTS):
+        sig = (signal.SIGINT, signal.SIGTERM, signal.SIGINT, signal.SIGHUP)[k % 4]
+        moment = rng.uniform(EARLIEST, LATEST)
+        p = subprocess.Popen(_cli(full), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                             text=True)  # fmt: skip
+        time.sleep(moment)
+        if p.poll() is not None:
+            pytest.fail(f"{name}: ended by itself before {moment:.2f} s: {p.stderr.read()}")
+        sent = time.monotonic()
+        p.send_signal(sig)
+        try:
+            _, err = p.communicate(timeout=60)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            pytest.fail(f"{name}: {sig.name} at {moment:.2f} s did not end it within 60 s")
+        took = time.monotonic() - sent
+        code, words = EXPECTED[sig]
+        lines = err.strip().splitlines()
+        seen.append((sig.name, round(moment, 2), p.returncode, round(took, 2)))
+        assert p.returncode == code, f"{name}: {sig.name} at {moment:.2f} s: {p.returncode} {err}"
+        assert lines == [f"symimpact {command}: {words}"], (name, sig.name, moment, err)
+        assert took < BOUND, f"{name}: {sig.name} at {moment:.2f} s ended after {took:.2f} s"
+    print(name, seen)
