@@ -132,6 +132,9 @@ def _ending_on_signal(command: str):
 
         for child in multiprocessing.active_children():
             child.terminate()
+        tqdm = sys.modules.get("tqdm")
+        if tqdm is not None and getattr(tqdm.tqdm, "_instances", None):
+            sys.stderr.write("\n")  # a progress bar is open mid-line: the message gets its own
         print(f"symimpact {command}: ended by signal {signum}", file=sys.stderr, flush=True)
         os._exit(128 + signum)
 
