@@ -109,9 +109,9 @@ def test_bad_input_names_the_parameter(kw, parameter):
     assert info.value.parameter == parameter
 
 
-def test_forcing_refuses_hz_as_omega_and_two_frequencies():
-    with pytest.raises(ParameterError, match="omega"):
-        Forcing(F0=1, omega="5 Hz")
+def test_forcing_reads_hz_as_cycles_and_refuses_two_frequencies():
+    # Hz given for Ω counts cycles (tests/test_reliability.py has every unit)
+    assert Forcing(F0=1, omega="5 Hz").omega == pytest.approx(2 * np.pi * 5, rel=1e-15)
     with pytest.raises(ParameterError, match="omega"):
         Forcing(F0=1, omega=3, freq=1)
     assert Forcing(F0=1, freq="5 Hz").omega == pytest.approx(2 * np.pi * 5)
