@@ -217,6 +217,12 @@ def design_map(
         raise ParameterError("omega", "the band needs at least two increasing frequencies")
     if not np.all(w > 0):
         raise ParameterError("omega", "the band's frequencies must be positive")
+    if forcing.F0 == 0.0 and forcing.X_b == 0.0:
+        raise ParameterError(
+            "force",
+            "a design needs a driving amplitude (F0 or X_b not zero): undriven, the primary "
+            "stays at rest and every peak ratio is 0/0",
+        )
     base = _DesignBase(system, forcing, e, tuple(float(x) for x in w))
     for row in points.values:  # a bad point fails here, in one line, before any run
         _design_system(base, points.names, row)
