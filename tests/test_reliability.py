@@ -185,3 +185,27 @@ def test_a_design_with_no_forcing_is_refused_in_one_line(capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("symimpact design: error: force:"), err
+
+
+def test_a_stiff_linear_contact_with_the_default_c1_gives_a_curve(capsys):
+    # it was "internal error: LinAlgError" (a NaN test function handed to np.roots while locating
+    # a bifurcation); the curve's most attracting stable points are checked against brute force
+    # in test_compliant_orbits
+    argv = ["frf", *SYS, "--no-sweeps", "--contact", "linear", "--k1", "1e6", "--omega-range",
+            "30:40:1", "--json"]  # fmt: skip
+    out = _json(capsys, argv)
+    assert out["branches"] and all(np.isfinite(p["amplitude"]) for p in out["points"])
+
+
+@pytest.mark.parametrize("command", ["periodic", "branch"])
+def test_a_contact_too_stiff_to_differentiate_is_refused_naming_its_stiffness(capsys, command):
+    # K_Hz 1e20 N/m^1.5: contacts of nanoseconds, whose exit rate vanishes below the state's
+    # precision; it was "internal error: ZeroDivisionError" inside the compiled contact
+    extra = {"periodic": ["--method", "shooting"],
+             "branch": ["--parameter", "gap", "--range", "5 mm:40 mm"]}[command]  # fmt: skip
+    argv = [command, *SYS, "--omega", "36", "--contact", "hunt-crossley", "--k-hz", "1e20",
+            "--chi", "0.5", *extra]  # fmt: skip
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"symimpact {command}: error: k_hz:"), err
+    assert "contact rigid" in err[0]

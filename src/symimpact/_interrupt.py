@@ -26,6 +26,7 @@ import signal
 import threading
 from typing import Any
 
+import numba
 import numpy as np
 from numba import njit, types
 
@@ -102,7 +103,11 @@ def call(fn: Any, *args: Any) -> Any:
     return (see the module text).  The previous SIGINT handler is called there if a SIGINT came,
     so a KeyboardInterrupt is raised from here, in Python, with the result discarded."""
     global _compiled_depth
-    if threading.current_thread() is not threading.main_thread() or _compiled_depth:
+    if (
+        threading.current_thread() is not threading.main_thread()
+        or _compiled_depth
+        or numba.config.DISABLE_JIT  # run as Python (debugging): the pipe cannot be read
+    ):
         return fn(*args, NO_WATCH.copy())
     r, w = _PIPE.ends()
     watch = np.array([r, 0, 0], dtype=np.int64)

@@ -57,7 +57,7 @@ RTOL = 1e-13
 #: minute or so): a typical contact takes 500–2000, so this is hundreds of thousands of contacts;
 #: a run that would need more (long, stiff contacts under an enormous force) stops and says so.
 RHS_BUDGET = 500_000_000
-TOO_MUCH_WORK, TOO_MANY_STEPS, STEP_UNDERFLOW = 2, 3, 4
+TOO_MUCH_WORK, TOO_MANY_STEPS, STEP_UNDERFLOW, UNRESOLVED = 2, 3, 4, 5
 #: steps in one contact beyond which its time scale is out of proportion to the motion
 MAX_CONTACT_STEPS = _stepper.MAX_CONTACT_STEPS
 NW = 27  # x, ẋ, y, ẏ; forcing work, C's and the contact's dissipation; Ψ (4 × 4, by rows); ψ_t
@@ -290,12 +290,16 @@ def _contact(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sa
             # the located step's own rate d(out)/dθ at the exit, by a central difference: the
             # exit's saltation uses it in place of f (module docstring)
             eps = 1e-4 * hstep
-            _step(code, q, chi, p, side, t, w, k, hstep + eps, 7, tmp, ev_out, ev_k, atol)
-            for i in range(4):
-                slope[i] = ev_out[i]
-            _step(code, q, chi, p, side, t, w, k, hstep - eps, 7, tmp, ev_out, ev_k, atol)
-            for i in range(4):
-                slope[i] = (slope[i] - ev_out[i]) / (2.0 * eps)
+            if eps > 0.0:
+                _step(code, q, chi, p, side, t, w, k, hstep + eps, 7, tmp, ev_out, ev_k, atol)
+                for i in range(4):
+                    slope[i] = ev_out[i]
+                _step(code, q, chi, p, side, t, w, k, hstep - eps, 7, tmp, ev_out, ev_k, atol)
+                for i in range(4):
+                    slope[i] = (slope[i] - ev_out[i]) / (2.0 * eps)
+            else:  # a located step of zero length: no rate to take (see _through_contact)
+                for i in range(4):
+                    slope[i] = math.nan
         # extremes of x inside the step, then the samples it passes
         if (w[1] > 0.0) != (out[1] > 0.0) and w[1] != 0.0:
             th = _locate(code, q, chi, p, side, t, w, k, hstep, w[1], out[1], 1, 7, tmp,
@@ -367,7 +371,9 @@ def _through_contact(w, G, gt, side, slope, ended):
     derivatives with respect to the onset's state and time) applied to (G, gt); at an exit the
     last step's length θ moves by −∇g·(ΨG + ψ_t·gt)/(∇g·r), r = ``slope`` its rate with its
     length, and the exit's time with it; a contact cut by the run's end has a fixed end time, so
-    its last step shortens by the onset's delay (r again)."""
+    its last step shortens by the onset's delay (r again).  False, with nothing changed, where
+    the exit's rate is zero or not finite: the contact is too short for its exit to be
+    differentiated at the state's precision."""
     M1 = np.zeros((4, 4))
     for i in range(4):
         for j in range(4):
@@ -377,6 +383,8 @@ def _through_contact(w, G, gt, side, slope, ended):
             M1[i, j] = acc
     if ended:
         rate = side * (slope[2] - slope[0])
+        if rate == 0.0 or not math.isfinite(rate):
+            return False  # the exit's rate is below the state's precision: no derivative
         for j in range(4):
             dtheta = -side * (M1[2, j] - M1[0, j]) / rate
             for i in range(4):
@@ -387,6 +395,7 @@ def _through_contact(w, G, gt, side, slope, ended):
             for i in range(4):
                 G[i, j] = M1[i, j] - slope[i] * gt[j]
             gt[j] = 0.0
+    return True
 
 
 @njit(cache=True)
@@ -506,7 +515,9 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
                 _rhs(code, q, chi, p, s, t, w, field, 7)
                 for i in range(4):
                     slope[i] = field[i]
-            _through_contact(w, G, gt, s, slope, ended)
+            if not _through_contact(w, G, gt, s, slope, ended):
+                status = UNRESOLVED
+                break
         if not ended:
             in_contact = 1.0
             break

@@ -364,6 +364,8 @@ def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
         return None
     ys = [y, *(r[0] for r in rows[1:])]
     values = [a, *(r[3] for r in rows[1:])]
+    if not np.all(np.isfinite(values)):  # a monodromy that overflowed: nothing to interpolate
+        return None
     roots = [
         float(r.real)
         for r in np.roots(np.polyfit(grid, values, 3))

@@ -273,6 +273,14 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             "1e-15 of the time: its time scale is out of proportion to the motion (check the "
             "masses, the clearance and the contact stiffness)"
         )
+    if status == _compliant.UNRESOLVED:
+        stiffness = {"linear": "k1", "cubic": "a"}.get(contact, "k_hz")
+        raise ParameterError(
+            stiffness,
+            f"the {contact} contact is too stiff for its orbit's derivatives: a contact's exit "
+            "rate falls below the state's precision (its duration is a vanishing share of the "
+            "period); use contact rigid with this contact's restitution",
+        )
     if status == _compliant.TOO_MUCH_WORK:
         raise SymimpactError(
             f"the contacts of {n_periods} periods need more than {_compliant.RHS_BUDGET:,} "
