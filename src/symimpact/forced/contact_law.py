@@ -41,6 +41,23 @@ class CompliantContact:
         return {"contact": self.law, **({"chi": self.chi} if self.chi is not None else {})}
 
 
+def checked(system: Any, forcing: Any, e: Any) -> tuple[Any, Any, Any]:
+    """(system, forcing, e) of an orbit's computation, checked: an
+    :class:`~symimpact.system.ImpactSystem`, a :class:`~symimpact.forced.Forcing`, and a
+    :class:`CompliantContact` or Newton's restitution e in [0, 1] (Eq. F2) as a float."""
+    from ..checks import instance
+    from ..system import ImpactSystem
+    from .forcing import Forcing
+
+    instance("system", system, ImpactSystem, "an ImpactSystem")
+    instance("forcing", forcing, Forcing, "a Forcing")
+    if is_rigid(e):
+        e = nonnegative_float("e", e)
+        if e > 1.0:
+            raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+    return system, forcing, e
+
+
 def is_rigid(e: Any) -> bool:
     """Whether ``e`` stands for rigid impacts (a restitution) rather than a compliant law."""
     return not isinstance(e, CompliantContact)

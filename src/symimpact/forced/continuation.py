@@ -30,11 +30,12 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
+from .. import checks
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
-from .contact_law import is_rigid
+from .contact_law import checked, is_rigid
 from .forcing import Forcing
-from .shooting import monodromy
+from .shooting import MAX_PERIODS, monodromy
 
 #: Newton's corrector stops below this change of the scaled unknowns, or below the map's own
 #: noise amplified by the conditioning of the extended Jacobian, cond·NOISE, where that is larger
@@ -46,6 +47,9 @@ TOL = 1e-10
 #: condition number is 3e5, at 2e-10 where it is 1.4e3).
 NOISE = {"rigid": 1e-15, "compliant": 1e-12}
 MAX_NEWTON = 8
+#: The largest arclength step accepted [scaled unknowns]: one moves the parameter by a tenth of
+#: its range (see :func:`continue_orbit`); the default is 0.02.
+MAX_STEP = 1.0
 
 
 @dataclass(frozen=True)
@@ -227,11 +231,12 @@ def continue_orbit(
     SI, first towards increasing values (``direction`` 1) or decreasing (−1); ``step``: the
     arclength step in scaled unknowns (adapted between step/64 and 4·step).  Eq. F1 and F2 along
     the orbits (Step 8, Step 9)."""
-    if parameter not in PARAMETERS:
-        raise ParameterError("parameter", f"must be one of {', '.join(PARAMETERS)}")
-    lo, hi = (float(w) for w in bounds)
-    if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-        raise ParameterError("bounds", f"must be finite with low < high, got {lo:g}, {hi:g}")
+    system, forcing, e = checked(system, forcing, e)
+    checks.choice("parameter", parameter, tuple(PARAMETERS))
+    lo, hi = checks.bounds("bounds", bounds)
+    periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
+    step = checks.bounded("step", step, 0.0, MAX_STEP, open_low=True)
+    max_points = checks.whole_number("max_points", max_points, 2, 1_000_000)
     if parameter in ("omega", "gap") and not lo > 0:
         raise ParameterError("bounds", f"{parameter} must stay positive, got low {lo:g}")
     if parameter == "e" and not is_rigid(e):
@@ -245,9 +250,8 @@ def continue_orbit(
              "e": float(e) if is_rigid(e) else math.nan}[parameter]  # fmt: skip
     if not lo <= start <= hi:
         raise ParameterError("bounds", f"must contain the start, {parameter} = {start:g}")
-    if direction not in (1, -1):
-        raise ParameterError("direction", "must be 1 or −1")
-    s0 = np.array([float(c) for c in state])
+    checks.choice("direction", direction, (1, -1))
+    s0 = checks.state("state", state)
     h = system.gap / 2.0
     _, _, res0 = monodromy(system, forcing, e, s0, periods)
     amp = max(float(np.max(res0.period_max)), 1e-3 * h)

@@ -27,10 +27,11 @@ from typing import Any
 
 import numpy as np
 
+from .. import checks
 from ..errors import ParameterError, SymimpactError
 from ..generated import forced_flight as ff
 from ..system import ImpactSystem
-from .contact_law import is_rigid, simulation_arguments
+from .contact_law import checked, is_rigid, simulation_arguments
 from .continuation import Branch, trace_branch
 from .forcing import Forcing
 from .periodic import periodic_orbits
@@ -157,7 +158,10 @@ def frequency_response(
     states of one and two periods) and, with ``sweeps``, from the sweeps' untraced periodic
     motions; the linear response without the damper (Step 8, Eq. F1), the motion without
     impacts, and the up and down brute-force sweeps."""
-    w = np.asarray(omegas, dtype=float)
+    system, forcing, e = checked(system, forcing, e)
+    starts = checks.whole_number("starts", starts, 0, 1000)
+    sweeps = checks.flag("sweeps", sweeps)
+    w = checks.numbers("omegas", omegas)
     if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(w <= 0):
         raise ParameterError("omega", "the band needs at least two positive frequencies")
     if np.any(np.diff(w) <= 0):

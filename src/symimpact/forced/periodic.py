@@ -29,7 +29,6 @@ from ..errors import MethodNotApplicable, ParameterError
 from ..generated import forced_flight as ff
 from ..generated import periodic_orbit as po
 from ..system import ImpactSystem
-from ..units import nonnegative_float
 from .forcing import Forcing
 from .linearised import acceleration, flight_matrix, saltation_matrix
 
@@ -69,9 +68,11 @@ class PeriodicOrbit:
 def periodic_orbits(system: ImpactSystem, forcing: Forcing, e: Any) -> list[PeriodicOrbit]:
     """The symmetric two-impact periodic motions of the rigid-impact damper (Eq. F3): zero, one
     or two solutions, each with amplitude, impact speed, admissibility and stability."""
-    e = nonnegative_float("e", e)
-    if e > 1.0:
-        raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+    from .contact_law import CompliantContact, checked
+
+    if isinstance(e, CompliantContact):
+        raise ParameterError("e", "the closed form is for rigid impacts: give Newton's e")
+    system, forcing, e = checked(system, forcing, e)
     if system.C == 0.0 and math.isclose(forcing.omega, system.omega_n, rel_tol=1e-12):
         raise MethodNotApplicable(
             "closed-form", "the undamped resonance has no steady solution to build the orbit on"

@@ -18,7 +18,7 @@ from ..contact import hunt_crossley_chi
 from ..errors import MethodNotApplicable, ParameterError
 from ..generated import rigid_impact as ri
 from ..system import ImpactSystem
-from ..units import nonnegative_float, positive_float
+from ..units import positive_float
 from .forcing import Forcing
 from .periodic import PeriodicOrbit, periodic_orbits
 from .simulation import simulate_forced
@@ -61,9 +61,13 @@ def rigid_limit(
     ``periods`` forcing periods, the last ``periods − discard`` kept.  The default 200 and 170
     leave ~1e-8 of the transient in the section: at 60 periods it was ~2e-4 and the errors were
     7 % smaller than settled."""
-    if contact not in LAWS:
-        raise ParameterError("contact", f"must be one of {', '.join(LAWS)}, got {contact!r}")
-    e = nonnegative_float("e", e)
+    from .. import checks
+    from .contact_law import checked
+
+    checks.choice("contact", contact, tuple(LAWS))
+    system, forcing, e = checked(system, forcing, e)
+    periods = checks.whole_number("periods", periods, 1, 1_000_000)
+    discard = checks.whole_number("discard", discard, 0, periods - 1)
     stable = [o for o in periodic_orbits(system, forcing, e) if o.stable]
     if not stable:
         raise MethodNotApplicable(
@@ -80,6 +84,8 @@ def rigid_limit(
         "ydot0": orbit.U,
     }
     rows = []
+    if any(k <= 0 for k in checks.numbers("stiffnesses", stiffnesses)):
+        raise ParameterError("stiffnesses", "must be positive")
     for k in stiffnesses:
         k = positive_float("stiffness", k)
         base = {n: getattr(system, n) for n in ("M", "K", "C", "m", "gap")}

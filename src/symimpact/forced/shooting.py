@@ -27,10 +27,11 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import MethodNotApplicable, ParameterError
+from .. import checks
+from ..errors import MethodNotApplicable
 from ..system import ImpactSystem
 from . import _rigid
-from .contact_law import CompliantContact, is_rigid, simulation_arguments
+from .contact_law import CompliantContact, checked, is_rigid, simulation_arguments
 from .forcing import Forcing
 from .linearised import acceleration, flight_matrix, saltation_matrix
 from .simulation import (
@@ -45,6 +46,8 @@ from .simulation import (
 #: state's scale (amplitude, amplitude·Ω, d/2): the simulation's own rounding is ~1e-14.
 TOL = 1e-11
 MAX_ITER = 30
+#: The longest orbit followed, in forcing periods.
+MAX_PERIODS = 64
 #: A compliant orbit with more contacts than this in a forcing period is not followed: a Newton
 #: iterate far from any orbit can set the masses bouncing thousands of times a period (seconds
 #: of integration each), and such a motion chatters rather than impacts.
@@ -102,7 +105,9 @@ def monodromy(
     motion.  A compliant contact (``e`` a :class:`CompliantContact`): the variational equations
     integrated through each contact, the located onsets and exits differentiated
     (:mod:`symimpact.forced._compliant`).  Returns (P(state), Jacobian, the simulation)."""
-    x, v, z, u = (float(c) for c in state)
+    system, forcing, e = checked(system, forcing, e)
+    x, v, z, u = (float(c) for c in checks.state("state", state))
+    periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
     if not is_rigid(e):
         return _compliant_monodromy(system, forcing, e, (x, v, z, u), periods)
     res = simulate_forced(system, forcing, contact="rigid", e=e, periods=periods, x0=x,
@@ -159,11 +164,11 @@ def shoot(
 ) -> ShootingOrbit:
     """The period-``periods`` orbit near ``start`` = (x, ẋ, z, ẏ) at t = 0: Newton's method on
     P(s) − s = 0 with the monodromy of :func:`monodromy` (rigid impacts, Eq. F1, F2)."""
-    if not isinstance(periods, int) or periods < 1:
-        raise ParameterError("periods", f"must be a whole number ≥ 1, got {periods!r}")
-    s = np.array([float(c) for c in start])
-    if s.shape != (4,) or not np.all(np.isfinite(s)):
-        raise ParameterError("start", "must be four finite numbers (x, ẋ, z, ẏ)")
+    system, forcing, e = checked(system, forcing, e)
+    periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
+    s = checks.state("start", start)
+    tol = checks.bounded("tol", tol, 0.0, 1.0, open_low=True)
+    max_iter = checks.whole_number("max_iter", max_iter, 1, 1000)
     h = system.gap / 2.0
     rigid = is_rigid(e)
     it = 0
@@ -239,7 +244,9 @@ def shoot_from_rest(
     """The orbit a brute-force run settles near: ``warmup`` forcing periods of the event-driven
     simulation from ``start`` = (x, ẋ, z, ẏ) (chatter and sticking allowed there), then
     :func:`shoot` from its final state (the same forcing phase: a whole number of periods)."""
-    x, v, z, u = (float(c) for c in start)
+    system, forcing, e = checked(system, forcing, e)
+    x, v, z, u = (float(c) for c in checks.state("start", start))
+    periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
     res = simulate_forced(system, forcing, **simulation_arguments(e), periods=warmup, x0=x,
                           xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
     fx, fv, fy, fu = res.final_state

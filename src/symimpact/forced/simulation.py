@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from .. import _interrupt, _stepper
+from ..checks import bounded, instance, whole_number
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from ..units import nonnegative_float, si_float
@@ -162,6 +163,8 @@ def simulate_forced(
     phase integrated with the forcing (:mod:`symimpact.forced._compliant`).  With ``discard`` (a
     number of periods) the result's ``steady`` describes the periods after it.
     """
+    instance("system", system, ImpactSystem, "an ImpactSystem")
+    instance("forcing", forcing, Forcing, "a Forcing")
     e, chi, law = contact_arguments(system, contact, e, chi)
     n_periods = period_count("periods", periods)
     if n_periods < 1:
@@ -175,9 +178,9 @@ def simulate_forced(
     h = system.gap / 2.0
     if contact == "rigid" and abs(state[2] - state[0]) > h * (1.0 + 1e-12):
         raise ParameterError("y0", f"abs(y0 − x0) must not exceed d/2 = {h:g} m")
-    if not (chatter >= 0.0):
-        raise ParameterError("chatter", "must be a fraction ≥ 0 of the forcing period")
-    if samples_per_period < 16 or samples_per_period % 16:
+    chatter = bounded("chatter", chatter, 0.0)  # a fraction of the forcing period
+    samples_per_period = whole_number("samples_per_period", samples_per_period, 16, 4096)
+    if samples_per_period % 16:
         raise ParameterError("samples_per_period", "must be a multiple of 16")
     result, _ = _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter,
                           samples_per_period)  # fmt: skip
@@ -197,7 +200,7 @@ def contact_arguments(system: ImpactSystem, contact: str, e: Any, chi: Any):
     """(e, chi, the law's parameter vector) for ``contact``, checked: rigid impacts take Newton's
     ``e`` in [0, 1] (Eq. F2), Hunt–Crossley its ``chi`` [s/m] and k_hz (Eq. F4), the other
     compliant laws their own parameters (Eq. 8, 9, 35); anything else is refused in one line."""
-    if contact != "rigid" and contact not in COMPLIANT:
+    if not isinstance(contact, str) or (contact != "rigid" and contact not in COMPLIANT):
         raise ParameterError(
             "contact", f"must be rigid or one of {', '.join(COMPLIANT)}, got {contact!r}"
         )
@@ -431,7 +434,9 @@ def steady_state(result: ForcedResult, discard: int) -> Steady:
     The Poincaré section is taken once per forcing period at the fraction of the period farthest
     from every impact in the kept window (a section at an impact would see the state before it in
     one period and after it in the next)."""
+    instance("result", result, ForcedResult, "a ForcedResult (from simulate_forced)")
     n = len(result.period_max)
+    discard = whole_number("discard", discard, 0, n - 1)
     amplitude = float(np.max(result.period_max[discard:n]))
     T = result.forcing.period
     t0, t1 = discard * T, n * T

@@ -18,7 +18,7 @@ from scipy.optimize import minimize_scalar
 from ..errors import MethodNotApplicable, ParameterError
 from ..generated import slow_flow as sf
 from ..system import ImpactSystem
-from ..units import nonnegative_float
+from ..units import si
 from .forcing import Forcing
 
 #: Samples per half period when checking that the impact mass stays between the walls between
@@ -54,11 +54,13 @@ class SlowFlowResponse:
         return dict(self.__dict__)
 
 
-def _restitution(e: Any) -> float:
-    e = nonnegative_float("e", e)
-    if e > 1.0:
-        raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
-    return e
+def _restitution(system: Any, forcing: Any, e: Any) -> float:
+    """Newton's e of the slow flow's rigid impacts, with the system and forcing checked."""
+    from .contact_law import CompliantContact, checked
+
+    if isinstance(e, CompliantContact):
+        raise ParameterError("e", "the slow flow is for rigid impacts: give Newton's e")
+    return checked(system, forcing, e)[2]
 
 
 def _between_walls(xi: float, theta: float, delta: float) -> bool:
@@ -73,7 +75,7 @@ def slow_flow_responses(system: ImpactSystem, forcing: Forcing, e: Any) -> list[
     """Every response of the 1:1 slow flow at ``forcing.omega`` for the system's clearance
     (the real roots Θ of Eq. F5's quartic with ξ ≥ the activation threshold), largest amplitude
     first.  The forcing's phase plays no part (only the moduli balance)."""
-    e = _restitution(e)
+    e = _restitution(system, forcing, e)
     args = (
         system.M,
         system.K,
@@ -127,8 +129,8 @@ class Backbone:
 def backbone(system: ImpactSystem, forcing: Forcing, e: Any, xi: Any) -> Backbone:
     """Eq. F5's backbone at the ratios ``xi`` (each above the activation threshold); the
     forcing's amplitude sets the clearances, its frequency plays no part."""
-    e = _restitution(e)
-    xi = np.asarray(xi, dtype=float)
+    e = _restitution(system, forcing, e)
+    xi = np.asarray(si("xi", xi), dtype=float)
     threshold = float(sf.activation_amplitude_ratio(e))
     if not np.all(np.isfinite(xi)) or np.any(xi <= threshold):
         raise ParameterError("xi", f"must exceed the activation threshold {threshold:.6g}")
@@ -155,7 +157,7 @@ def best_clearance(system: ImpactSystem, forcing: Forcing, e: Any) -> BestCleara
     """The clearance that makes the primary's resonance peak smallest (Eq. F5): the largest
     backbone clearance d_b(ξ), by bounded Brent in log ξ.  A larger clearance leaves the
     absorber inactive at the resonance."""
-    e = _restitution(e)
+    e = _restitution(system, forcing, e)
     if system.C == 0.0:
         raise MethodNotApplicable(
             "slow-flow", "without primary damping the backbone clearance grows without bound"

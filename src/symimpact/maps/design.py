@@ -38,12 +38,12 @@ from typing import Any
 
 import numpy as np
 
+from .. import checks
 from ..errors import ParameterError
-from ..forced.contact_law import is_rigid
+from ..forced.contact_law import checked, is_rigid
 from ..forced.forcing import Forcing
 from ..forced.frf import _sweep, frequency_response
 from ..system import ImpactSystem
-from ..units import nonnegative_float
 from .engine import _executor, _gather, _launch, _progress
 from .points import MapPoints, as_points
 from .store import MapStore
@@ -200,19 +200,14 @@ def design_map(
     under ``forcing`` over the band ``omegas`` [rad/s].  ``executor``,
     ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
     :func:`symimpact.maps.parameter_map`: the same executors, and a resumable ``out`` file."""
-    if not isinstance(system, ImpactSystem):
-        raise ParameterError("system", "must be an ImpactSystem")
+    system, forcing, e = checked(system, forcing, e)
     if not isinstance(grid, Mapping) or not grid:
         raise ParameterError("grid", "give the clearance (gap) and/or mass_ratio values")
     bad = [n for n in grid if n not in DESIGN_SWEEPABLE]
     if bad:
         raise ParameterError(bad[0], f"a design map sweeps {', '.join(DESIGN_SWEEPABLE)}")
-    if is_rigid(e):
-        e = nonnegative_float("e", e)
-        if e > 1.0:
-            raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
     points: MapPoints = as_points(dict(grid))
-    w = np.asarray(omegas, dtype=float)
+    w = checks.numbers("omegas", omegas)
     if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(np.diff(w) <= 0):
         raise ParameterError("omega", "the band needs at least two increasing frequencies")
     if not np.all(w > 0):

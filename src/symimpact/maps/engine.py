@@ -132,6 +132,8 @@ def map_rows(
 def _executor(executor: str | None, workers: Any, client: Any, scheduler: str | None) -> str:
     """The executor a map runs on (a client or scheduler means Dask; default local processes),
     after the checks every map shares, each refusal one line."""
+    if executor is not None and not isinstance(executor, str):
+        raise ParameterError("executor", f"must be one of {', '.join(EXECUTORS)}")
     if client is not None or scheduler is not None:
         if executor not in (None, "dask"):
             raise ParameterError("executor", f"{executor!r} cannot use a Dask client or scheduler")
