@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from .. import checks
-from ..errors import MethodNotApplicable
+from ..errors import MethodNotApplicable, ParameterError
 from ..system import ImpactSystem
 from . import _rigid
 from .contact_law import CompliantContact, checked, is_rigid, simulation_arguments
@@ -52,6 +52,10 @@ MAX_PERIODS = 64
 #: iterate far from any orbit can set the masses bouncing thousands of times a period (seconds
 #: of integration each), and such a motion chatters rather than impacts.
 MAX_CONTACTS_PER_PERIOD = 64
+#: A rigid orbit with more impacts than this in a forcing period is not followed: with every
+#: impact resolved, a chattering motion (a clearance far below the amplitude) is a geometric
+#: series of impacts that only the run's event budget would end (minutes).
+MAX_IMPACTS_PER_PERIOD = 1000
 
 
 @dataclass(frozen=True)
@@ -110,8 +114,20 @@ def monodromy(
     periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
     if not is_rigid(e):
         return _compliant_monodromy(system, forcing, e, (x, v, z, u), periods)
-    res = simulate_forced(system, forcing, contact="rigid", e=e, periods=periods, x0=x,
-                          xdot0=v, y0=x + z, ydot0=u, chatter=0.0)  # fmt: skip
+    n = period_count("periods", periods)
+    e_, _, law = contact_arguments(system, "rigid", e, None)
+    h = system.gap / 2.0
+    if abs(z) > h * (1.0 + 1e-12):
+        raise ParameterError("state", f"abs(z) must not exceed d/2 = {h:g} m")
+    try:  # every impact resolved (no accumulation), at most MAX_IMPACTS_PER_PERIOD a period
+        res, _ = _simulate(system, forcing, "rigid", e_, None, law, [x, v, x + z, u], n, 0.0,
+                           max_contacts=MAX_IMPACTS_PER_PERIOD * n)  # fmt: skip
+    except TooManyContacts:
+        raise MethodNotApplicable(
+            "shooting",
+            f"more than {MAX_IMPACTS_PER_PERIOD} impacts a period: the motion chatters (a "
+            "clearance far below the motion); shooting follows impacting orbits only",
+        ) from None
     ev = res.events
     if (len(ev) and np.any(ev[:, _rigid.E_KIND] != _rigid.KIND_IMPACT)) or res.final_stuck:
         raise MethodNotApplicable(

@@ -248,7 +248,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
     potential = potential0 = 0.0
     if contact == "rigid":
         status, events, n_ev, period_max, ledger, final = _interrupt.call(
-            _rigid.run, p, np.array(state), t_end, MAX_EVENTS
+            _rigid.run, p, np.array(state), t_end, max_contacts or MAX_EVENTS
         )
     else:
         status, events, period_max, ledger, final, samples, psi = _compliant.run(
@@ -289,7 +289,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             f"the contacts of {n_periods} periods need more than {_compliant.RHS_BUDGET:,} "
             "evaluations (long, stiff contacts): shorten the run or use contact rigid"
         )
-    if status == _rigid.TOO_MANY_EVENTS and contact != "rigid":
+    if status == _rigid.TOO_MANY_EVENTS and (contact != "rigid" or max_contacts):
         raise TooManyContacts(
             f"more than {max_contacts or MAX_CONTACTS:,} contacts in {n_periods} periods, each "
             "integrated: "
