@@ -209,3 +209,47 @@ def test_a_contact_too_stiff_to_differentiate_is_refused_naming_its_stiffness(ca
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith(f"symimpact {command}: error: k_hz:"), err
     assert "contact rigid" in err[0]
+
+
+UNDAMPED = ["--M", "1", "--K", "1000", "--C", "0", "--m", "0.05", "--gap", "1 km", "--force",
+            "2 N", *RIGID, "--periods", "100"]  # fmt: skip
+
+
+def _undamped_from_rest(omega: float, t: float) -> tuple[float, float]:
+    """x(t), ẋ(t) of M ẍ + K x = F0 cos Ωt from rest, M = 1, K = 1000, F0 = 2: exact, in mpmath
+    at 50 digits (a detuning of 1e-16 costs 16 of them)."""
+    with mpmath.workdps(50):
+        W, w, t = mpmath.mpf(omega), mpmath.sqrt(1000), mpmath.mpf(t)
+        a = 2 / (w**2 - W**2)
+        x = a * (mpmath.cos(W * t) - mpmath.cos(w * t))
+        v = a * (-W * mpmath.sin(W * t) + w * mpmath.sin(w * t))
+        return float(x), float(v)
+
+
+@pytest.mark.parametrize("detuning", [1e-2, 1e-4, 1e-6])
+def test_an_undamped_flight_near_resonance_keeps_its_digits(detuning):
+    from symimpact.forced import simulate_forced
+    from symimpact.system import ImpactSystem
+
+    omega = math.sqrt(1000) * (1 + detuning)
+    system = ImpactSystem(M=1, K=1000, C=0, m=0.05, gap=1000, k_hz=1000)
+    res = simulate_forced(system, Forcing(F0=2, omega=omega), contact="rigid", e=0.6,
+                          periods=100)  # fmt: skip
+    x, v = _undamped_from_rest(omega, res.t_end)
+    amplitude = float(np.max(res.period_max))
+    # the flight keeps ~1e-16·K/|K − MΩ²| of the motion (simulation.CANCELLATION): 5e-11 at
+    # 1e-6; the bound 1e-9 is the one the refusal below guarantees
+    assert abs(res.final_state[0] - x) < 1e-9 * amplitude
+    assert abs(res.final_state[1] - v) < 1e-9 * amplitude * omega
+
+
+def test_undamped_resonance_exactly_is_computed_and_next_to_it_refused(capsys):
+    # the issue's Ω, 2e-16 off ωₙ: it gave 999.999 mm with an energy residual of 0.36
+    assert main(["simulate", *UNDAMPED, "--omega", "31.6227766016838"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "omega:" in err[0] and "resonance" in err[0], err
+    # at ωₙ itself the kernel's resonant branch (growth like t) holds: 626.7 mm after 100 periods
+    out = _json(capsys, ["simulate", *UNDAMPED, "--omega", repr(math.sqrt(1000)), "--json"])
+    x, _ = _undamped_from_rest(math.sqrt(1000), out["t_end"])
+    assert out["final_state"][0] == pytest.approx(x, rel=1e-12)
+    assert out["energy"]["relative_residual"] < 1e-12
