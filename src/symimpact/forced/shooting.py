@@ -141,6 +141,12 @@ def monodromy(
         J = saltation_matrix(system, res.e, u - v, a) @ flight_matrix(system, t - t_prev) @ J
         t_prev = t
     J = flight_matrix(system, res.t_end - t_prev) @ J
+    if not np.all(np.isfinite(J)):
+        raise MethodNotApplicable(
+            "shooting",
+            "an impact at zero relative speed (grazing, or a plastic impact, e = 0, that does "
+            "not stick) has no saltation: the monodromy is not defined there",
+        )
     fx, fv, fy, fu = res.final_state
     return np.array([fx, fv, fy - fx, fu]), J, res
 

@@ -199,6 +199,9 @@ def simulate_forced(
     return result
 
 
+#: The parameter that sets a compliant law's stiffness (named when a contact cannot be resolved).
+_STIFFNESS = {"linear": "k1", "cubic": "a", "hertz": "k_hz", "hunt-crossley": "k_hz"}
+
 #: The closed-form flight (Eq. F1) is the steady solution plus the free decay that corrects the
 #: initial state; near an undamped resonance both grow like K/√((K − MΩ²)² + (CΩ)²) and cancel,
 #: and the flight keeps about 1e-16 of that ratio as error, relative to the motion (measured
@@ -305,15 +308,16 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             delta = side * (final[3] - final[1]) - h
             potential = _compliant.contact_potential(contact, law, delta)
     if status in (_compliant.TOO_MANY_STEPS, _compliant.STEP_UNDERFLOW):
-        raise SymimpactError(
-            f"a contact needs more than {_compliant.MAX_CONTACT_STEPS:,} steps or steps below "
-            "1e-15 of the time: its time scale is out of proportion to the motion (check the "
-            "masses, the clearance and the contact stiffness)"
+        raise ParameterError(
+            _STIFFNESS.get(contact, "k_hz"),
+            f"the {contact} contact's time scale is out of proportion to the motion: a contact "
+            f"needs more than {_compliant.MAX_CONTACT_STEPS:,} steps or steps below 1e-15 of "
+            "the time (a contact this stiff is contact rigid with its restitution; else check "
+            "the masses and the clearance)",
         )
     if status == _compliant.UNRESOLVED:
-        stiffness = {"linear": "k1", "cubic": "a"}.get(contact, "k_hz")
         raise ParameterError(
-            stiffness,
+            _STIFFNESS.get(contact, "k_hz"),
             f"the {contact} contact is too stiff for its orbit's derivatives: a contact's exit "
             "rate falls below the state's precision (its duration is a vanishing share of the "
             "period); use contact rigid with this contact's restitution",
