@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from .. import budgets
 from .common import add_forcing, add_output, add_system, emit, forcing_from, system_from, write_csv
 
 #: The parameters ``--parameter`` takes (Ω is ``symimpact frf``'s).
@@ -19,6 +20,7 @@ def add_parser(sub: Any) -> None:
     p = sub.add_parser(
         "branch",
         help="a branch of periodic orbits continued in the clearance, F0, X_b or e",
+        epilog=budgets.text(),
     )
     add_system(p, extra_laws=("rigid", "hunt-crossley"), contact_default=None)
     add_forcing(p)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from .. import budgets
 from .common import add_system, emit, forcing_of, system_from, write_csv
 from .frf import add_band, band_from, contact_of, contact_title
 
@@ -15,6 +16,7 @@ def add_parser(sub: Any) -> None:
     p = sub.add_parser(
         "design",
         help="clearance design map: peak amplitude over a band against the clearance",
+        epilog=budgets.text(),
     )
     add_system(p, extra_laws=("rigid", "hunt-crossley"), contact_default=None)
     g = p.add_argument_group("forcing F0·cos(Ωt) and/or base motion X_b·cos(Ωt) over a band")

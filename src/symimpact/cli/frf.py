@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from .. import budgets
 from .common import add_output, add_system, emit, forcing_of, system_from, write_csv
 
 
@@ -15,6 +16,7 @@ def add_parser(sub: Any) -> None:
     p = sub.add_parser(
         "frf",
         help="frequency-response curve: continued branches, stability, bifurcations, sweeps",
+        epilog=budgets.text(),
     )
     add_system(p, extra_laws=("rigid", "hunt-crossley"), contact_default=None)
     g = p.add_argument_group("forcing F0·cos(Ωt) and/or base motion X_b·cos(Ωt) over a band")

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from .. import budgets
 from .common import add_forcing, add_output, add_system, emit, forcing_from, system_from
 
 #: The methods ``--method`` takes.
@@ -20,6 +21,7 @@ def add_parser(sub: Any) -> None:
         "periodic",
         help="periodic motions of the forced damper at one frequency (closed form, Eq. F3, or "
         "shooting)",
+        epilog=budgets.text(),
     )
     add_system(p, extra_laws=("rigid", "hunt-crossley"))
     add_forcing(p)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from .. import budgets
 from .common import (
     add_forcing,
     add_initial,
@@ -28,6 +29,7 @@ def add_parser(sub: Any) -> None:
         "simulate",
         help="free vibration with impacts (Eq. 7, 10, 36–38), or the forced response (Eq. F1) "
         "with rigid impacts (Eq. F2) or a compliant contact",
+        epilog=budgets.text(),
     )
     # no default law: free vibration takes cubic, a forced run asks for the law by name
     add_system(p, extra_laws=("rigid", "hunt-crossley"), contact_default=None)

@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
-from .. import checks
+from .. import budgets, checks
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from .contact_law import checked, is_rigid
@@ -222,7 +222,7 @@ def continue_orbit(
     periods: int = 1,
     direction: int = 1,
     step: float = 0.02,
-    max_points: int = 2000,
+    max_points: int = budgets.MAX_POINTS,
 ) -> Branch:
     """Continue the period-``periods`` orbit through ``state`` = (x, ẋ, z, ẏ) at t = 0 (an orbit
     of ``system`` under ``forcing`` with restitution ``e``, e.g. from

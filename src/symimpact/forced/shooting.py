@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from .. import checks
+from .. import budgets, checks
 from ..errors import MethodNotApplicable, ParameterError
 from ..system import ImpactSystem
 from . import _rigid
@@ -45,17 +45,14 @@ from .simulation import (
 #: Newton stops when the change of the fixed-point residual is below this fraction of the
 #: state's scale (amplitude, amplitude·Ω, d/2): the simulation's own rounding is ~1e-14.
 TOL = 1e-11
-MAX_ITER = 30
+MAX_ITER = budgets.MAX_ITER
 #: The longest orbit followed, in forcing periods.
 MAX_PERIODS = 64
-#: A compliant orbit with more contacts than this in a forcing period is not followed: a Newton
-#: iterate far from any orbit can set the masses bouncing thousands of times a period (seconds
-#: of integration each), and such a motion chatters rather than impacts.
-MAX_CONTACTS_PER_PERIOD = 64
-#: A rigid orbit with more impacts than this in a forcing period is not followed: with every
-#: impact resolved, a chattering motion (a clearance far below the amplitude) is a geometric
-#: series of impacts that only the run's event budget would end (minutes).
-MAX_IMPACTS_PER_PERIOD = 1000
+#: An orbit with more contacts (compliant) or impacts (rigid) than these in a forcing period is
+#: not followed: a Newton iterate far from any orbit can set the masses bouncing thousands of
+#: times a period, and such a motion chatters rather than impacts (symimpact.budgets).
+MAX_CONTACTS_PER_PERIOD = budgets.MAX_CONTACTS_PER_PERIOD
+MAX_IMPACTS_PER_PERIOD = budgets.MAX_IMPACTS_PER_PERIOD
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from .. import _interrupt, _stepper
+from .. import _interrupt, _stepper, budgets
 from ..checks import bounded, instance, whole_number
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
@@ -31,20 +31,15 @@ CHATTER = 1e-7
 #: scale (the motion's amplitude and velocity amplitude): far above the closed-form flight's
 #: rounding, far below any physical difference between distinct orbits.
 SECTION_RTOL = 1e-6
-MAX_EVENTS = 10_000_000
-#: A compliant run integrates every contact (compiled, 0.1–1 ms each): it stops, saying so, past
-#: this many (a minute or two of work) rather than running on for hours.
-MAX_CONTACTS = 200_000
+#: Work budgets (see :mod:`symimpact.budgets`).
+MAX_EVENTS, MAX_CONTACTS = budgets.MAX_EVENTS, budgets.MAX_CONTACTS
 
 
 class TooManyContacts(SymimpactError):
     """A compliant run met more contacts than it was allowed."""
 
 
-#: The longest run, in natural periods of the primary 2π√(M/K): flight is evaluated 16 times per
-#: natural period, so 10⁶ of them are seconds of work; a slower forcing (Ω → 0) or more periods
-#: would run for hours and is refused at once.
-MAX_NATURAL_PERIODS = 1_000_000
+MAX_NATURAL_PERIODS = budgets.MAX_NATURAL_PERIODS
 MAX_MULTIPLE = 8
 
 

@@ -1,0 +1,43 @@
+"""The work budgets of the forced computations: every run, Newton iteration and continuation stops
+at one of these and says which, so that every command ends (a clearance far below the motion, a
+chattering or near-grazing orbit, an enormous run) within a bound known before it starts.
+
+Plain numbers with no imports, so that ``symimpact --help`` states them without loading the
+simulation; the modules that enforce each one import it from here.
+"""
+
+from __future__ import annotations
+
+#: A rigid run stops, saying so, past this many impacts (about a microsecond each).
+MAX_EVENTS = 10_000_000
+#: A compliant run integrates every contact (compiled, 0.1–1 ms each): it stops, saying so, past
+#: this many (a minute or two of work) rather than running on for hours.
+MAX_CONTACTS = 200_000
+#: The contacts' work budget of one compliant run, in evaluations of the equations of motion
+#: (about 0.1 µs each).
+RHS_BUDGET = 500_000_000
+#: The longest run, in natural periods of the primary 2π√(M/K): flight is evaluated 16 times per
+#: natural period, so 10⁶ of them are seconds of work; a slower forcing (Ω → 0) or more periods
+#: would run for hours and is refused at once.
+MAX_NATURAL_PERIODS = 1_000_000
+#: Shooting follows no orbit with more impacts (rigid) or contacts (compliant) a forcing period:
+#: such a motion chatters, and every impact of a chatter sequence resolved is a geometric series
+#: only the run's budget would end.
+MAX_IMPACTS_PER_PERIOD = 1000
+MAX_CONTACTS_PER_PERIOD = 64
+#: Newton's iterations of one shooting.
+MAX_ITER = 30
+#: Continuation points of one branch in one direction.
+MAX_POINTS = 2000
+
+
+def text() -> str:
+    """The budgets in words, for the forced commands' ``--help``."""
+    return (
+        "Every run ends within its budget, and a run that meets one says which in one line: "
+        f"a simulation at most {MAX_NATURAL_PERIODS:.0e} natural periods of the primary and "
+        f"{MAX_EVENTS:.0e} rigid impacts or {MAX_CONTACTS:,} compliant contacts "
+        f"({RHS_BUDGET:.0e} evaluations of their equations); shooting at most {MAX_ITER} Newton "
+        f"steps and {MAX_IMPACTS_PER_PERIOD} impacts ({MAX_CONTACTS_PER_PERIOD} contacts) a "
+        f"period; a branch at most {MAX_POINTS} continuation points each way."
+    )
