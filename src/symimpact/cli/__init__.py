@@ -119,7 +119,8 @@ EXIT_BAD_INPUT, EXIT_FAULT = 2, 3
 
 
 def _ending_on_signal(command: str):
-    """A SIGTERM/SIGHUP handler: end the pool workers, say so in one line, exit 128 + N.
+    """A SIGTERM/SIGHUP (and, run as the program, SIGINT) handler: end the pool workers, say so
+    in one line, exit 128 + N (130 for Ctrl-C: "interrupted").
 
     It does not raise into the main thread: an exception raised by a signal handler while a
     finaliser runs is printed and dropped, and the command would go on to the end.  Nothing is
@@ -129,13 +130,15 @@ def _ending_on_signal(command: str):
     def end(signum, frame) -> None:
         import multiprocessing
         import os
+        import signal
 
         for child in multiprocessing.active_children():
             child.terminate()
         tqdm = sys.modules.get("tqdm")
         if tqdm is not None and getattr(tqdm.tqdm, "_instances", None):
             sys.stderr.write("\n")  # a progress bar is open mid-line: the message gets its own
-        print(f"symimpact {command}: ended by signal {signum}", file=sys.stderr, flush=True)
+        words = "interrupted" if signum == signal.SIGINT else f"ended by signal {signum}"
+        print(f"symimpact {command}: {words}", file=sys.stderr, flush=True)
         os._exit(128 + signum)
 
     return end
@@ -206,6 +209,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     import warnings
 
     parser = build_parser()
+    argv_given = argv
     argv = sys.argv[1:] if argv is None else list(argv)
     ns = _dashes_as_empty(parser.parse_args(_join_negative_values(parser, argv)))
     ns.__dict__.pop(GIVEN, None)
@@ -215,7 +219,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     shown_warning = warnings.showwarning
     warnings.showwarning = _one_line_warning(ns.command)  # every warning: one line
     previous = {}
-    for sig in (signal.SIGTERM, signal.SIGHUP):
+    # Run as the program (no argv given), Ctrl-C ends it like SIGTERM: at once, in one line.  A
+    # KeyboardInterrupt raised in Python's import machinery (a lazy import of the simulation) is
+    # printed as "Exception ignored" and dropped, and the command ran on to exit 0.  Called with
+    # an argv (tests, notebooks), Ctrl-C stays a KeyboardInterrupt, caught below.
+    ending = (signal.SIGTERM, signal.SIGHUP) + ((signal.SIGINT,) if argv_given is None else ())
+    for sig in ending:
         try:
             previous[sig] = signal.signal(sig, _ending_on_signal(ns.command))
         except ValueError:  # not the main thread (e.g. called from a worker thread)
