@@ -23,79 +23,22 @@ import pytest
 
 SYS = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm", "--force", "2 N"]
 RIGID = ["--contact", "rigid", "--e", "0.6"]
+
+
+def _simulate(*contact: str, periods: int) -> tuple[list[str], list[str]]:
+    """A forced simulation of ``periods`` periods, and its 3-period run that compiles it."""
+    line = ["simulate", *SYS, "--omega", "36", *contact, "--periods"]
+    return [*line, str(periods)], [*line, "3"]
+
+
 #: (command line, a short run of the same code path that compiles it first).  Each full run lasts
 #: 5–60 s on the 2-core reference machine (6 s and more), longer than the latest moment drawn.
 COMMANDS = {
-    "simulate rigid": (
-        ["simulate", *SYS, "--omega", "36", *RIGID, "--periods", "300000"],
-        ["simulate", *SYS, "--omega", "36", *RIGID, "--periods", "3"],
-    ),
-    "simulate linear": (
-        [
-            "simulate",
-            *SYS,
-            "--omega",
-            "36",
-            "--contact",
-            "linear",
-            "--k1",
-            "1e6",
-            "--periods",
-            "50000",
-        ],
-        ["simulate", *SYS, "--omega", "36", "--contact", "linear", "--k1", "1e6", "--periods", "3"],
-    ),
-    "simulate hertz": (
-        [
-            "simulate",
-            *SYS,
-            "--omega",
-            "36",
-            "--contact",
-            "hertz",
-            "--k-hz",
-            "1e5",
-            "--periods",
-            "40000",
-        ],
-        [
-            "simulate",
-            *SYS,
-            "--omega",
-            "36",
-            "--contact",
-            "hertz",
-            "--k-hz",
-            "1e5",
-            "--periods",
-            "3",
-        ],
-    ),
-    "simulate hunt-crossley": (
-        [
-            "simulate",
-            *SYS,
-            "--omega",
-            "36",
-            "--contact",
-            "hunt-crossley",
-            "--chi",
-            "0.5",
-            "--periods",
-            "40000",
-        ],
-        [
-            "simulate",
-            *SYS,
-            "--omega",
-            "36",
-            "--contact",
-            "hunt-crossley",
-            "--chi",
-            "0.5",
-            "--periods",
-            "3",
-        ],
+    "simulate rigid": _simulate(*RIGID, periods=300000),
+    "simulate linear": _simulate("--contact", "linear", "--k1", "1e6", periods=50000),
+    "simulate hertz": _simulate("--contact", "hertz", "--k-hz", "1e5", periods=40000),
+    "simulate hunt-crossley": _simulate(
+        "--contact", "hunt-crossley", "--chi", "0.5", periods=40000
     ),
     "periodic": (
         ["periodic", *SYS, "--omega", "36", *RIGID, "--method", "shooting", "--warmup", "200000"],
