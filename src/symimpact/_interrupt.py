@@ -33,8 +33,6 @@ from numba import njit, types
 #: Status of a compiled run that stopped because a signal asked it to (every loop's own statuses
 #: are small numbers; this one is shared).
 INTERRUPTED = 99
-#: Signals that stop a compiled loop: the ones that end a command.
-_STOPPING = (int(signal.SIGINT), int(signal.SIGTERM), int(signal.SIGHUP))
 #: Steps of a compiled loop between two looks at the pipe (a power of two, for a mask).
 EVERY = 1024
 

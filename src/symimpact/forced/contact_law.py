@@ -41,16 +41,19 @@ class CompliantContact:
         return {"contact": self.law, **({"chi": self.chi} if self.chi is not None else {})}
 
 
-def checked(system: Any, forcing: Any, e: Any) -> tuple[Any, Any, Any]:
+def checked(system: Any, forcing: Any, e: Any, rigid_only: str | None = None):
     """(system, forcing, e) of an orbit's computation, checked: an
     :class:`~symimpact.system.ImpactSystem`, a :class:`~symimpact.forced.Forcing`, and a
-    :class:`CompliantContact` or Newton's restitution e in [0, 1] (Eq. F2) as a float."""
+    :class:`CompliantContact` or Newton's restitution e in [0, 1] (Eq. F2) as a float.
+    ``rigid_only``: what refuses a compliant law (e.g. "the closed form")."""
     from ..checks import instance
     from ..system import ImpactSystem
     from .forcing import Forcing
 
     instance("system", system, ImpactSystem, "an ImpactSystem")
     instance("forcing", forcing, Forcing, "a Forcing")
+    if rigid_only and not is_rigid(e):
+        raise ParameterError("e", f"{rigid_only} is for rigid impacts: give Newton's e")
     if is_rigid(e):
         e = nonnegative_float("e", e)
         if e > 1.0:

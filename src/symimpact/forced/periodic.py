@@ -25,7 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import MethodNotApplicable, ParameterError
+from ..errors import MethodNotApplicable
 from ..generated import forced_flight as ff
 from ..generated import periodic_orbit as po
 from ..system import ImpactSystem
@@ -68,11 +68,9 @@ class PeriodicOrbit:
 def periodic_orbits(system: ImpactSystem, forcing: Forcing, e: Any) -> list[PeriodicOrbit]:
     """The symmetric two-impact periodic motions of the rigid-impact damper (Eq. F3): zero, one
     or two solutions, each with amplitude, impact speed, admissibility and stability."""
-    from .contact_law import CompliantContact, checked
+    from .contact_law import checked
 
-    if isinstance(e, CompliantContact):
-        raise ParameterError("e", "the closed form is for rigid impacts: give Newton's e")
-    system, forcing, e = checked(system, forcing, e)
+    system, forcing, e = checked(system, forcing, e, rigid_only="the closed form")
     if system.C == 0.0 and math.isclose(forcing.omega, system.omega_n, rel_tol=1e-12):
         raise MethodNotApplicable(
             "closed-form", "the undamped resonance has no steady solution to build the orbit on"

@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from .. import budgets, checks
-from ..errors import MethodNotApplicable, ParameterError
+from ..errors import MethodNotApplicable
 from ..system import ImpactSystem
 from . import _rigid
 from .contact_law import CompliantContact, checked, is_rigid, simulation_arguments
@@ -40,6 +40,7 @@ from .simulation import (
     contact_arguments,
     period_count,
     simulate_forced,
+    within_walls,
 )
 
 #: Newton stops when the change of the fixed-point residual is below this fraction of the
@@ -111,14 +112,11 @@ def monodromy(
     periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
     if not is_rigid(e):
         return _compliant_monodromy(system, forcing, e, (x, v, z, u), periods)
-    n = period_count("periods", periods)
-    e_, _, law = contact_arguments(system, "rigid", e, None)
-    h = system.gap / 2.0
-    if abs(z) > h * (1.0 + 1e-12):
-        raise ParameterError("state", f"abs(z) must not exceed d/2 = {h:g} m")
+    _, _, law = contact_arguments(system, "rigid", e, None)
+    within_walls("state", x, x + z, system.gap / 2.0)
     try:  # every impact resolved (no accumulation), at most MAX_IMPACTS_PER_PERIOD a period
-        res, _ = _simulate(system, forcing, "rigid", e_, None, law, [x, v, x + z, u], n, 0.0,
-                           max_contacts=MAX_IMPACTS_PER_PERIOD * n)  # fmt: skip
+        res, _ = _simulate(system, forcing, "rigid", e, None, law, [x, v, x + z, u], periods,
+                           0.0, max_contacts=MAX_IMPACTS_PER_PERIOD * periods)  # fmt: skip
     except TooManyContacts:
         raise MethodNotApplicable(
             "shooting",

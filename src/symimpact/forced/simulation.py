@@ -171,11 +171,8 @@ def simulate_forced(
         si_float(n, v) for n, v in (("x0", x0), ("xdot0", xdot0), ("y0", y0), ("ydot0", ydot0))
     ]
     h = system.gap / 2.0
-    # y − x carries the rounding of x and y (a few units in the last place of the larger), which
-    # a clearance far below the motion does not dwarf
-    slack = h * 1e-12 + 4.0 * np.finfo(float).eps * max(abs(state[0]), abs(state[2]))
-    if contact == "rigid" and abs(state[2] - state[0]) > h + slack:
-        raise ParameterError("y0", f"abs(y0 − x0) must not exceed d/2 = {h:g} m")
+    if contact == "rigid":
+        within_walls("y0", state[0], state[2], h)
     chatter = bounded("chatter", chatter, 0.0)  # a fraction of the forcing period
     samples_per_period = whole_number("samples_per_period", samples_per_period, 16, 4096)
     if samples_per_period % 16:
@@ -225,6 +222,15 @@ def _refuse_cancelling_flight(system: ImpactSystem, forcing: Forcing, contact: s
                 f"where the closed-form flight cancels to fewer than 9 digits; move Ω by more "
                 f"than {0.5 / CANCELLATION:.0e} of it",
             )
+
+
+def within_walls(name: str, x: float, y: float, h: float) -> None:
+    """Refuse a start of rigid impacts with the impact mass beyond a wall, abs(y − x) > d/2 = h,
+    allowing the rounding y − x carries (a few units in the last place of the larger), which a
+    clearance far below the motion does not dwarf."""
+    slack = h * 1e-12 + 4.0 * np.finfo(float).eps * max(abs(x), abs(y))
+    if abs(y - x) > h + slack:
+        raise ParameterError(name, f"abs(y0 − x0) must not exceed d/2 = {h:g} m")
 
 
 def contact_arguments(system: ImpactSystem, contact: str, e: Any, chi: Any):
