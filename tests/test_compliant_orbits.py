@@ -176,7 +176,7 @@ def test_compliant_frf_stable_points_are_brute_force_steady_states():
         k = b.period_multiple
         n = k * (math.ceil(math.log(1e-9) / math.log(mu)) + 20)
         x, v, z, u = p.state
-        f = Forcing(F0=2.0, omega=p.omega, phase=b.phase)
+        f = Forcing(F0=2.0, omega=p.omega, phase=p.phase)
         res = simulate_forced(LAWS, f, contact="hertz", periods=n, discard=n - 20 * k,
                               x0=x * (1 + 1e-3), xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
         assert res.steady.amplitude == pytest.approx(p.amplitude, rel=1e-6), (p.omega, k)

@@ -138,6 +138,8 @@ def run(ns) -> None:
             f"–{max(p.omega for p in b.points):.4g} rad/s, amplitude "
             f"{shown('x', min(amps)):.4g}–{shown('x', max(amps)):.4g} {unit}, "
             f"{stable} of {len(amps)} points stable"
+            + (", asymmetric orbits (each with its mirror image)" if b.mirrored else "")
+            + (f"; from the {b.origin}" if b.origin else "")
         )
     for f in out["bifurcations"]:
         lines.append(

@@ -19,12 +19,22 @@ complex pair through the unit circle a *Neimark–Sacker* point; each is located
 Brent's method on its test function (the tangent's parameter component, det(monodromy + I), the pair's
 modulus − 1).  Where the set of impacts changes (an impact appears or vanishes: a *grazing*) or
 the motion starts to chatter, stick or stop impacting, the branch ends there and says why.
+
+As the parameter changes the impacts drift in phase; where one comes near the section t = 0 the
+section is moved midway between impacts (the same orbit; each point carries its forcing phase).
+
+Branch switching (:func:`branch_starts`, :func:`leave`, :func:`switch_branch`): from a branch
+point or a period doubling the branches that cross the traced one are started along the critical
+eigenvector and followed away from the point; :func:`orbits_at` gives a branch's orbits at any
+value of the parameter exactly.  The walls and the forcing are symmetric, so an asymmetric orbit's
+mirror image is an orbit with the same amplitude: points say whether they are asymmetric.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -35,7 +45,7 @@ from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from .contact_law import checked, is_rigid
 from .forcing import Forcing
-from .shooting import MAX_PERIODS, monodromy
+from .shooting import MAX_PERIODS, ShootingOrbit, monodromy, shoot
 
 #: Newton's corrector stops below this change of the scaled unknowns, or below the map's own
 #: noise amplified by the conditioning of the extended Jacobian, cond·NOISE, where that is larger
@@ -66,6 +76,12 @@ class BranchPoint:
     multipliers: tuple[complex, ...]
     stable: bool
     value: float = math.nan
+    #: the forcing phase φ [rad] at t = 0 of ``state`` (the section; a branch moves its section
+    #: away from the impacts as they drift, see :func:`continue_orbit`)
+    phase: float = 0.0
+    #: the orbit differs from its mirror image x → −x half a period later, an orbit too with
+    #: the same amplitude (rigid impacts; False where not examined)
+    asymmetric: bool = False
 
 
 @dataclass(frozen=True)
@@ -78,13 +94,18 @@ class Bifurcation:
     omega: float
     amplitude: float
     value: float = math.nan
+    #: (x, ẋ, z, ẏ) at t = 0 of the orbit there (SI; interpolated across the bracket where the
+    #: corrector cannot land on the point): where :func:`branch_starts` switches branches
+    state: tuple[float, float, float, float] | None = field(default=None, compare=False)
+    #: the forcing phase φ [rad] at t = 0 of ``state``
+    phase: float = field(default=0.0, compare=False)
 
 
 @dataclass
 class Branch:
     """A continued branch: its points in order, the located bifurcations, ``period_multiple``
     k, ``stopped``: why the continuation ended (the band's edge, a grazing, …), and ``phase``
-    [rad]: the forcing phase φ at t = 0 of its points' states (the section, fixed along it),
+    [rad]: the forcing phase φ at t = 0 of its first point (each point carries its own section),
     ``parameter``: the continued parameter (see :data:`PARAMETERS`)."""
 
     points: list[BranchPoint] = field(default_factory=list)
@@ -93,6 +114,16 @@ class Branch:
     stopped: str = ""
     phase: float = 0.0
     parameter: str = "omega"
+    #: where the branch was found: "" for a start of its own, else e.g. "branch-point of branch 0
+    #: at Ω = 24.941 rad/s" (set by the caller that switched onto it)
+    origin: str = ""
+
+    @property
+    def mirrored(self) -> bool:
+        """Some of its orbits are asymmetric: their mirror images (x → −x half a period later,
+        the same amplitude) form a second branch, not traced, that the amplitude curve shares
+        (the orbits born at a symmetry-breaking branch point come in such pairs)."""
+        return any(p.asymmetric for p in self.points)
 
 
 #: The parameters :func:`continue_orbit` follows a branch in, with their SI units.
@@ -139,9 +170,87 @@ class _Problem:
 
     def where(self, value: float) -> str:
         """``Ω = 36.2 rad/s``, ``gap = 0.021 m``: the parameter's value in words."""
-        name = "Ω" if self.parameter == "omega" else self.parameter
-        unit = PARAMETERS[self.parameter]
+        return self.where_text(self.parameter, value)
+
+    @staticmethod
+    def where_text(parameter: str, value: float) -> str:
+        """``Ω = 36.2 rad/s`` for ``parameter`` "omega" at ``value``."""
+        name = "Ω" if parameter == "omega" else parameter
+        unit = PARAMETERS[parameter]
         return f"{name} = {value:.6g}{' ' + unit if unit else ''}"
+
+
+def _problem(system, forcing, e, s0, periods, bounds, parameter) -> _Problem:
+    """The continuation problem through the orbit ``s0``: the state scaled by its amplitude,
+    velocity amplitude and d/2, the parameter in units of a tenth of its range (a step of 0.2
+    moves it by at most 2 % of it)."""
+    h = system.gap / 2.0
+    _, _, res0 = monodromy(system, forcing, e, s0, periods)
+    amp = max(float(np.max(res0.period_max)), 1e-3 * h)
+    W0 = forcing.omega
+    scale = np.array([amp, amp * W0, h, amp * W0])
+    return _Problem(system, forcing, e, periods, scale, (bounds[1] - bounds[0]) / 10.0, parameter)
+
+
+#: A section closer than this share of the forcing period to an impact is moved (rigid impacts):
+#: as the parameter changes the impacts drift in phase, and where one crosses the section the
+#: state there jumps from before to after it and Newton's method cannot follow.
+NEAR_IMPACT = 0.05
+
+
+def _resection(problem: _Problem, y: np.ndarray, t: np.ndarray, res):
+    """The same orbit seen at a section midway between its impacts, where an impact lies within
+    NEAR_IMPACT of a period of the current section (t = 0 or the end of the k periods): the state
+    at that instant τ of the orbit's simulation ``res`` (:func:`symimpact.forced.simulation.state_at`,
+    Eq. F1), the forcing phase moved by Ωτ; with the problem, scaled unknowns, Jacobian,
+    monodromy, simulation and tangent there (the tangent oriented with the old one's parameter
+    component).  None where nothing needs to move (or a compliant contact, whose states within a
+    contact are continuous)."""
+    if not is_rigid(problem.e) or len(res.impacts) == 0:
+        return None
+    T = 2 * math.pi / res.forcing.omega
+    total = problem.periods * T
+    times = np.sort(np.asarray(res.impacts) % total)
+    if min(times[0], total - times[-1]) >= NEAR_IMPACT * T:
+        return None
+    gaps = np.diff(np.concatenate([times, [times[0] + total]]))
+    i = int(np.argmax(gaps))
+    tau = float((times[i] + 0.5 * gaps[i]) % total)
+    from .simulation import state_at
+
+    s_new = state_at(res, np.array([tau]))[0]
+    f = problem.forcing
+    phase = math.remainder(f.phase + res.forcing.omega * tau, 2 * math.pi)
+    moved = _Problem(problem.system, Forcing(F0=f.F0, X_b=f.X_b, omega=f.omega, phase=phase),
+                     problem.e, problem.periods, problem.scale, problem.unit,
+                     problem.parameter)  # fmt: skip
+    y_new = np.concatenate([s_new / problem.scale, [y[4]]])
+    try:
+        r, J, mono, res_new = moved.evaluate(y_new)
+    except SymimpactError:
+        return None
+    if np.max(np.abs(r)) > 1e-6:  # not the orbit again (it should agree to the map's rounding)
+        return None
+    t_new = _tangent(J, None)
+    if abs(t[4]) > 1e-9 and (t_new[4] > 0) != (t[4] > 0):
+        t_new = -t_new
+    return moved, y_new, J, mono, res_new, t_new
+
+
+def _asymmetric(problem: _Problem, y: np.ndarray, res) -> bool:
+    """Whether the orbit at y differs from its mirror image (rigid impacts): the walls at ±d/2
+    and the harmonic forcing are symmetric, so x̃(t) = −x(t + T/2) is an orbit too, with the same
+    amplitude; it is the orbit itself when −s(T/2) is one of the orbit's own section states
+    s(jT) (to 1e-7 of the scale).  From the orbit's simulation (state_at, Eq. F1)."""
+    if not is_rigid(problem.e):
+        return False
+    from .simulation import state_at
+
+    T = 2 * math.pi / res.forcing.omega
+    k = problem.periods
+    states = state_at(res, np.array([*(j * T for j in range(k)), T / 2]))
+    mirror = -states[-1]
+    return not any(np.max(np.abs((mirror - s) / problem.scale)) < 1e-7 for s in states[:-1])
 
 
 def _tangent(J: np.ndarray, previous: np.ndarray | None) -> np.ndarray:
@@ -196,6 +305,8 @@ def _point(problem: _Problem, y, mono, res) -> BranchPoint:
         multipliers=tuple(complex(c) for c in lam[order]),
         stable=bool(np.max(np.abs(lam)) < 1.0),
         value=float(y[4] * problem.unit),
+        phase=problem.forcing.phase,
+        asymmetric=_asymmetric(problem, y, res),
     )
 
 
@@ -252,15 +363,9 @@ def continue_orbit(
         raise ParameterError("bounds", f"must contain the start, {parameter} = {start:g}")
     checks.choice("direction", direction, (1, -1))
     s0 = checks.state("state", state)
-    h = system.gap / 2.0
-    _, _, res0 = monodromy(system, forcing, e, s0, periods)
-    amp = max(float(np.max(res0.period_max)), 1e-3 * h)
-    W0 = forcing.omega
-    scale = np.array([amp, amp * W0, h, amp * W0])
-    # the parameter in units of a tenth of its range: a step of 0.2 moves it by at most 2 % of it
-    problem = _Problem(system, forcing, e, periods, scale, (hi - lo) / 10.0, parameter)
+    problem = _problem(system, forcing, e, s0, periods, (lo, hi), parameter)
     branch = Branch(period_multiple=periods, phase=forcing.phase, parameter=parameter)
-    y = np.concatenate([s0 / scale, [start / problem.unit]])
+    y = np.concatenate([s0 / problem.scale, [start / problem.unit]])
     corrected = _correct(problem, y, np.array([0, 0, 0, 0, 1.0]))
     if corrected is None:
         raise MethodNotApplicable(
@@ -268,11 +373,18 @@ def continue_orbit(
         )
     y, J, mono, res = corrected
     t = _tangent(J, np.array([0, 0, 0, 0, float(direction)]))
+    moved = _resection(problem, y, t, res)
+    if moved is not None:
+        problem, y, J, mono, res, t = moved
     point = _point(problem, y, mono, res)
     branch.points.append(point)
     tests = _tests(t, mono)
     ds = step
     while len(branch.points) < max_points:
+        moved = _resection(problem, y, t, res)
+        if moved is not None:  # the same orbit, its section moved away from the impacts
+            problem, y, J, mono, res, t = moved
+            point = _point(problem, y, mono, res)
         attempt = _correct(problem, y + ds * t, t, point.impacts_per_period)
         if attempt is GRAZE:
             branch.bifurcations.append(_grazing(problem, y, t, ds, point))
@@ -288,11 +400,20 @@ def continue_orbit(
                 return branch
             continue
         y1, J1, mono1, res1 = attempt
+        res = res1
         t1 = _tangent(J1, t)
         p1 = _point(problem, y1, mono1, res1)
         if p1.impacts_per_period != point.impacts_per_period:  # (the corrector checks it)
             branch.bifurcations.append(_grazing(problem, y, t, ds, point))
             branch.stopped = f"grazing at {problem.where(branch.bifurcations[-1].value)}"
+            return branch
+        if (
+            periods > 1
+            and periods % 2 == 0
+            and _repeats(problem.at(p1.value), p1.state, periods // 2, problem.scale)
+        ):
+            branch.stopped = (f"rejoined the period-{periods // 2} orbits at "
+                              f"{problem.where(p1.value)}")  # fmt: skip
             return branch
         tests1 = _tests(t1, mono1)
         for kind in ("fold", "branch-point", "period-doubling", "neimark-sacker"):
@@ -337,6 +458,241 @@ def trace_branch(
     return joined
 
 
+#: The critical multiplier of the bifurcations a new branch leaves from, and the factor on the
+#: period of that branch: a branch point's new orbits have the same period, a period doubling's
+#: twice the period.
+SWITCHES = {"branch-point": (1.0, 1), "period-doubling": (-1.0, 2)}
+
+
+@dataclass(frozen=True)
+class BranchStart:
+    """An orbit on a branch that leaves a bifurcation (:func:`branch_starts`): the ``system``,
+    ``forcing`` and restitution ``e`` at its parameter value, its ``state`` (x, ẋ, z, ẏ) at t = 0
+    and ``periods``, its period in forcing periods."""
+
+    system: ImpactSystem
+    forcing: Forcing
+    e: Any
+    state: tuple[float, float, float, float]
+    periods: int
+
+
+def branch_starts(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    bifurcation: Bifurcation,
+    bounds: tuple[float, float],
+    *,
+    parameter: str = "omega",
+    periods: int = 1,
+    step: float = 0.02,
+) -> list[BranchStart]:
+    """The orbits a step away from a branch point or period doubling on the branches that leave
+    it (branch switching): ``bifurcation`` located on a period-``periods`` branch of ``system``
+    under ``forcing`` (its phase the branch's section; the continued parameter's value is taken
+    from the bifurcation) with restitution ``e``.
+
+    At the point the critical Floquet multiplier is +1 (branch point) or −1 (period doubling)
+    with eigenvector v of the monodromy.  Over the new branch's period (the same, or twice it
+    for a period doubling, where the multiplier of the doubled map is (−1)² = +1) the extended
+    Jacobian [M − I | ∂P/∂p] is singular and v, with the parameter held, spans the direction of
+    the branch that crosses the old one (for the symmetry-breaking pitchfork of the symmetric
+    orbits and for a period doubling the new branch is tangent to v there).  The predictor steps
+    ±``step`` along (v, 0) in the scaled unknowns and Newton corrects it in the hyperplane normal
+    to that direction, which the old branch does not cross nearby.  Each side gives at most one
+    start; a start of a period doubling that repeats after the old period is dropped (it is the
+    old orbit).  Eq. F1, F2 along the orbits (Step 8, Step 9)."""
+    system, forcing, e = checked(system, forcing, e)
+    checks.instance("bifurcation", bifurcation, Bifurcation, "a Bifurcation of a traced branch")
+    checks.choice("parameter", parameter, tuple(PARAMETERS))
+    lo, hi = checks.bounds("bounds", bounds)
+    periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
+    step = checks.bounded("step", step, 0.0, MAX_STEP, open_low=True)
+    if bifurcation.kind not in SWITCHES:
+        raise ParameterError("bifurcation", f"new branches leave a {' or '.join(SWITCHES)}, "
+                             f"not a {bifurcation.kind}")  # fmt: skip
+    if bifurcation.state is None:
+        raise ParameterError("bifurcation", "carries no orbit state to switch from")
+    target, factor = SWITCHES[bifurcation.kind]
+    k = periods * factor
+    if k > MAX_PERIODS:
+        return []
+    value = bifurcation.value if math.isfinite(bifurcation.value) else bifurcation.omega
+    base = _Problem(system, forcing, e, periods, np.ones(4), 1.0, parameter)
+    at = base.at(value)
+    s_b = np.array(bifurcation.state, dtype=float)
+    try:
+        problem = _problem(*at, s_b, k, (lo, hi), parameter)
+        _, mono, _ = monodromy(*at, s_b, periods)
+    except SymimpactError:
+        return []
+    lam, vecs = np.linalg.eig(mono)
+    v = np.real(vecs[:, int(np.argmin(np.abs(lam - target)))]) / problem.scale
+    direction = np.concatenate([v / np.linalg.norm(v), [0.0]])
+    y_b = np.concatenate([s_b / problem.scale, [value / problem.unit]])
+    if factor == 2:
+        # over the old period the point is regular (multiplier −1, not +1): the old branch's
+        # tangent there is the null vector of its Jacobian, and the doubled problem's second
+        # null direction is taken orthogonal to it, so the hyperplane misses the old branch
+        old = _Problem(*at, periods, problem.scale, problem.unit, parameter)
+        try:
+            t_old = _tangent(old.evaluate(y_b)[1], None)
+        except SymimpactError:
+            return []
+        direction = direction - float(direction @ t_old) * t_old
+        direction /= np.linalg.norm(direction)
+    starts: list[BranchStart] = []
+    for sign in (1.0, -1.0):
+        for ds in (step, 2 * step, 0.5 * step):
+            got = _correct(problem, y_b + sign * ds * direction, direction)
+            if got is None or got is GRAZE:
+                continue
+            y = got[0]
+            if abs(float(direction @ (y - y_b))) < 0.5 * ds:
+                continue  # landed back on the old branch
+            state = _si_state(problem, y)
+            new = problem.at(float(y[4] * problem.unit))
+            if factor == 2 and _repeats(new, state, periods, problem.scale):
+                continue
+            starts.append(BranchStart(*new, state, k))
+            break
+    return starts
+
+
+def _repeats(at, state, periods: int, scale: np.ndarray) -> bool:
+    """Whether ``state`` comes back after ``periods`` forcing periods (to 1e-8 of ``scale``)."""
+    try:
+        ps = monodromy(*at, np.array(state), periods)[0]
+    except SymimpactError:
+        return False
+    return bool(np.max(np.abs((ps - np.array(state)) / scale)) < 1e-8)
+
+
+def switch_branch(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    bifurcation: Bifurcation,
+    bounds: tuple[float, float],
+    *,
+    parameter: str = "omega",
+    periods: int = 1,
+    step: float = 0.02,
+) -> list[Branch]:
+    """The branches that leave ``bifurcation`` (a branch point or period doubling located on a
+    period-``periods`` branch; see :func:`branch_starts`), each traced both ways within
+    ``bounds`` (:func:`trace_branch`).  Of a symmetry-breaking pitchfork's two starts, mirror
+    images of each other with the same amplitude, one branch is traced (``mirrored``).
+    Eq. F1, F2 along the orbits (Step 8, Step 9)."""
+    starts = branch_starts(system, forcing, e, bifurcation, bounds, parameter=parameter,
+                           periods=periods, step=step)  # fmt: skip
+    out: list[Branch] = []
+    for s in starts:
+        amp = orbit_amplitude(s)
+        value = _value(parameter, s)
+        if any(abs(o.amplitude - amp) <= 1e-8 * amp
+               for b in out for o in orbits_at(b, s.system, s.forcing, s.e, value)):  # fmt: skip
+            continue  # the other side's orbit: the mirror image of a traced one
+        out.append(leave(s, bifurcation, bounds, parameter=parameter, step=step))
+    return out
+
+
+def leave(
+    start: BranchStart,
+    bifurcation: Bifurcation,
+    bounds: tuple[float, float],
+    *,
+    parameter: str = "omega",
+    step: float = 0.02,
+) -> Branch:
+    """The branch through ``start`` (from :func:`branch_starts`) continued away from the
+    ``bifurcation`` it left, within ``bounds``, beginning at the bifurcation itself.  Beyond the
+    point it left lies the same family again — a pitchfork's mirror images, or a period
+    doubling's orbit shifted by one period — so one way is traced.  Eq. F1, F2 (Step 8, 9)."""
+    checks.instance("start", start, BranchStart, "a BranchStart of branch_starts")
+    checks.instance("bifurcation", bifurcation, Bifurcation, "a Bifurcation of a traced branch")
+    at = bifurcation.value if math.isfinite(bifurcation.value) else bifurcation.omega
+    value = _value(parameter, start)
+    kw = {"parameter": parameter, "periods": start.periods, "step": step}
+    if abs(value - at) <= 1e-9 * max(abs(at), 1e-300):  # no side to tell: both ways
+        branch = trace_branch(start.system, start.forcing, start.e, start.state, bounds, **kw)
+    else:
+        branch = continue_orbit(start.system, start.forcing, start.e, start.state, bounds,
+                                direction=1 if value > at else -1, **kw)  # fmt: skip
+    system, forcing, e = _Problem(start.system, start.forcing, start.e, start.periods,
+                                  np.ones(4), 1.0, parameter).at(at)  # fmt: skip
+    forcing = Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=forcing.omega, phase=bifurcation.phase)
+    try:
+        mono = monodromy(system, forcing, e, np.array(bifurcation.state), start.periods)[1]
+    except SymimpactError:
+        mono = None
+    if mono is not None:
+        lam = np.linalg.eigvals(mono)
+        lam = lam[np.argsort(-np.abs(lam))]
+        branch.points.insert(0, replace(
+            branch.points[0], omega=bifurcation.omega, state=bifurcation.state,
+            amplitude=bifurcation.amplitude, value=at, phase=bifurcation.phase,
+            multipliers=tuple(complex(c) for c in lam), stable=False,  # a multiplier ±1 there
+        ))  # fmt: skip
+    branch.origin = f"{bifurcation.kind} at {_Problem.where_text(parameter, at)}"
+    return branch
+
+
+def _same_phase(a: float | None, b: float | None) -> bool:
+    if a is None or b is None:
+        return a is b
+    return abs(math.remainder(a - b, 2 * math.pi)) < 1e-8
+
+
+def _value(parameter: str, s: BranchStart) -> float:
+    """The continued parameter's value at a start."""
+    f = s.forcing
+    return {"omega": f.omega, "gap": s.system.gap, "F0": f.F0, "X_b": f.X_b,
+            "e": float(s.e) if is_rigid(s.e) else math.nan}[parameter]  # fmt: skip
+
+
+def orbit_amplitude(start: BranchStart) -> float:
+    """max abs(x) over the orbit of ``start`` [m]."""
+    res = monodromy(start.system, start.forcing, start.e, np.array(start.state), start.periods)[2]
+    return float(np.max(res.period_max))
+
+
+def orbits_at(
+    branch: Branch, system: ImpactSystem, forcing: Forcing, e: Any, value: float
+) -> list[ShootingOrbit]:
+    """The orbits of ``branch`` at the continued parameter's ``value`` exactly: wherever two
+    consecutive points bracket it, Newton's method (:func:`symimpact.forced.shoot`) from the
+    state interpolated between them, with ``system``, ``forcing`` (the branch's section phase)
+    and ``e`` set to ``value``; an orbit found twice (the same amplitude to 1e-10 and the same
+    forcing phase of its first impact, to 1e-8 rad) is listed once.
+    Eq. F1, F2 along the orbits (Step 8, Step 9)."""
+    checks.instance("branch", branch, Branch, "a traced Branch")
+    system, forcing, e = checked(system, forcing, e)
+    value = checks.bounded("value", value, -math.inf, math.inf)
+    at = _Problem(system, forcing, e, branch.period_multiple, np.ones(4), 1.0,
+                  branch.parameter).at(value)  # fmt: skip
+    found: list[ShootingOrbit] = []
+    for p, q in itertools.pairwise(branch.points):
+        lo, hi = sorted((p.value, q.value))
+        if not lo <= value <= hi:
+            continue
+        f = 0.5 if hi == lo else (value - p.value) / (q.value - p.value)
+        if p.phase != q.phase:  # the section moved between them: start from the nearer one
+            p = p if f <= 0.5 else q
+            f = 0.0
+        guess = np.array(p.state) + f * (np.array(q.state) - np.array(p.state))
+        fs = Forcing(F0=at[1].F0, X_b=at[1].X_b, omega=at[1].omega, phase=p.phase)
+        try:
+            orbit = shoot(at[0], fs, at[2], guess, periods=branch.period_multiple)
+        except SymimpactError:
+            continue
+        if not any(abs(o.amplitude - orbit.amplitude) <= 1e-10 * orbit.amplitude
+                   and _same_phase(o.impact_phase, orbit.impact_phase) for o in found):  # fmt: skip
+            found.append(orbit)
+    return found
+
+
 def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
     """The bifurcation of ``kind`` between y and the step ds along t: Brent's method on the
     step length σ, each σ corrected onto the branch."""
@@ -355,7 +711,8 @@ def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
         sigma = brentq(lambda s: at(s)[3] if s > 0 else a, 0.0, ds, xtol=1e-12 * ds)
         y1, _, res1, _ = at(sigma)
         return Bifurcation(kind, problem.omega(y1), float(np.max(res1.period_max)),
-                           float(y1[4] * problem.unit))  # fmt: skip
+                           float(y1[4] * problem.unit), _si_state(problem, y1),
+                           problem.forcing.phase)  # fmt: skip
     except (MethodNotApplicable, ValueError):
         pass
     # at a branch point the extended Jacobian itself is singular and the corrector cannot land
@@ -382,12 +739,20 @@ def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
     amp0 = float(np.max(problem.evaluate(y)[3].period_max))
     sigma = roots[0]
     value = float(np.polyval(np.polyfit(grid, values, 3), sigma))
+    state = [float(np.polyval(np.polyfit(grid, [float(v[i]) for v in ys], 3), sigma))
+             for i in range(4)]  # fmt: skip
     return Bifurcation(
         kind,
         value if problem.parameter == "omega" else problem.forcing.omega,
         float(np.polyval(np.polyfit(grid, [amp0, *amps], 3), sigma)),
         value,
+        _si_state(problem, np.array([*state, 0.0])),
+        problem.forcing.phase,
     )
+
+
+def _si_state(problem: _Problem, y: np.ndarray) -> tuple[float, float, float, float]:
+    return tuple(float(c) for c in y[:4] * problem.scale)
 
 
 def _grazing(problem, y, t, ds, before: BranchPoint) -> Bifurcation:
@@ -404,4 +769,4 @@ def _grazing(problem, y, t, ds, before: BranchPoint) -> Bifurcation:
             continue
         last = _point(problem, got[0], got[2], got[3])
         lo = mid
-    return Bifurcation("grazing", last.omega, last.amplitude, last.value)
+    return Bifurcation("grazing", last.omega, last.amplitude, last.value, last.state, last.phase)

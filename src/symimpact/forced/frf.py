@@ -32,7 +32,15 @@ from ..errors import ParameterError, SymimpactError
 from ..generated import forced_flight as ff
 from ..system import ImpactSystem
 from .contact_law import checked, is_rigid, simulation_arguments
-from .continuation import Branch, trace_branch
+from .continuation import (
+    SWITCHES,
+    Branch,
+    branch_starts,
+    leave,
+    orbit_amplitude,
+    orbits_at,
+    trace_branch,
+)
 from .forcing import Forcing
 from .periodic import periodic_orbits
 from .shooting import monodromy, shoot, shoot_from_rest
@@ -45,6 +53,9 @@ from .simulation import simulate_forced
 SWEEP_KEPT, SWEEP_SETTLED, SWEEP_MAX = 30, 1e-6, 5000
 #: At most this many extra starts from each sweep's periodic motions that no branch traces.
 SWEEP_STARTS = 4
+#: Branch switching: at most this many switches for one curve, onto orbits of at most this many
+#: forcing periods (period 1 → 2 → 4).
+MAX_SWITCHES, MAX_SWITCH_PERIODS = 24, 4
 
 
 @dataclass
@@ -77,6 +88,7 @@ class FrequencyResponse:
                 points.append({
                     "omega": p.omega, "amplitude": p.amplitude, "stable": p.stable,
                     "impacts_per_period": p.impacts_per_period,
+                    "asymmetric": p.asymmetric,
                     "period_multiple": b.period_multiple, "branch": i,
                 })  # fmt: skip
             for f in b.bifurcations:
@@ -92,6 +104,8 @@ class FrequencyResponse:
                     "period_multiple": b.period_multiple,
                     "phase": b.phase,
                     "stopped": b.stopped,
+                    "origin": b.origin,
+                    "mirrored": b.mirrored,
                 }
                 for i, b in enumerate(self.branches)
             ],
@@ -124,6 +138,18 @@ def _on_branch(branches: list[Branch], omega: float, amplitude: float, k: int) -
                 if abs(a - amplitude) <= 2e-2 * max(abs(a), 1e-12):
                     return True
     return False
+
+
+def _traced(branches, system, forcing, e, omega: float, amplitude: float, k: int) -> bool:
+    """Whether an orbit of period k and ``amplitude`` at Ω = ``omega`` (exact: shot) lies on a
+    traced branch: a branch near it (:func:`_on_branch`) holds an orbit at that Ω whose amplitude
+    agrees to 1e-7 (:func:`symimpact.forced.continuation.orbits_at`: Newton from the branch's
+    interpolated state).  The 2 % of :func:`_on_branch` alone would take the asymmetric orbits
+    beside a symmetric branch for it (1.2 % apart at 25.39 rad/s on the issue's system)."""
+    near = [b for b in branches if _on_branch([b], omega, amplitude, k)]
+    f = _forcing(forcing, omega)
+    return any(abs(o.amplitude - amplitude) <= 1e-7 * amplitude
+               for b in near for o in orbits_at(b, system, f, e, omega))  # fmt: skip
 
 
 def _trace(system, forcing, e, state, band, k, step) -> Branch:
@@ -181,7 +207,7 @@ def frequency_response(
             return
         if k > 1 and _repeats_every_period(system, fs, e, orbit):
             return  # a period-1 orbit found as period 2
-        if _on_branch(out.branches, fs.omega, orbit.amplitude, k):
+        if _traced(out.branches, system, fs, e, fs.omega, orbit.amplitude, k):
             return
         try:
             out.branches.append(_trace(system, fs, e, orbit.state, band, k, step))
@@ -215,12 +241,60 @@ def frequency_response(
                 follow("sweep state", r.period_multiple, r.state, _forcing(forcing, r.omega))
     else:
         out.sweep_up = out.sweep_down = np.zeros((0, 2))
+    _switch_branches(out, system, forcing, e, band, step, failures)
     _drop_repeated_bifurcations(out.branches, 1e-6 if is_rigid(e) else 1e-5)
     out.notes = [
         f"{reason} (at Ω {', '.join(f'{x:.4g}' for x in ws)} rad/s)"
         for reason, ws in failures.items()
     ]
     return out
+
+
+def _switch_branches(out, system, forcing, e, band, step, failures) -> None:
+    """Branch switching: from every branch point and period doubling located on a branch (new
+    branches included, so a period-2 branch's own doubling gives period 4), the branches that
+    leave it (:func:`symimpact.forced.continuation.branch_starts`) are traced unless their start
+    lies on a traced branch; the mirror image of an asymmetric orbit is recognised (the same
+    amplitude at the same Ω, to 1e-8) and marks its branch ``mirrored``.  At most MAX_SWITCHES
+    switches, and periods up to MAX_SWITCH_PERIODS."""
+    done, i = 0, 0
+    while i < len(out.branches):
+        b = out.branches[i]
+        for f in list(b.bifurcations):
+            if f.kind not in SWITCHES or f.state is None:
+                continue
+            if b.period_multiple * SWITCHES[f.kind][1] > MAX_SWITCH_PERIODS:
+                continue
+            if done == MAX_SWITCHES:
+                failures.setdefault(f"branch switching: stopped after {MAX_SWITCHES} switches",
+                                    []).append(f.omega)  # fmt: skip
+                return
+            done += 1
+            fs = Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=f.omega, phase=f.phase)
+            try:
+                starts = branch_starts(system, fs, e, f, band, periods=b.period_multiple, step=step)
+            except SymimpactError as exc:
+                failures.setdefault(f"branch switching: {exc}", []).append(f.omega)
+                continue
+            traced: list[Branch] = []
+            for start in starts:
+                amp = orbit_amplitude(start)
+                w = start.forcing.omega
+                mirror = [t for t in traced if any(abs(o.amplitude - amp) <= 1e-8 * amp
+                          for o in orbits_at(t, start.system, start.forcing, start.e, w))]  # fmt: skip
+                if mirror:  # the mirror image of an orbit just traced
+                    continue
+                if _traced(out.branches, system, forcing, e, w, amp, start.periods):
+                    continue
+                try:
+                    new = leave(start, f, band, step=step)
+                except SymimpactError as exc:
+                    failures.setdefault(f"branch switching: {exc}", []).append(f.omega)
+                    continue
+                new.origin = f"{f.kind} of branch {i} at Ω = {f.omega:.6g} rad/s"
+                traced.append(new)
+                out.branches.append(new)
+        i += 1
 
 
 def _drop_repeated_bifurcations(branches: list[Branch], rtol: float = 1e-6) -> None:
