@@ -14,7 +14,8 @@ import pytest
 
 from symimpact.cli import main
 from symimpact.forced.forcing import Forcing
-from symimpact.forced.frf import _linear_amplitude, frequency_response
+from symimpact.forced.frf import frequency_response
+from symimpact.forced.peak import linear_amplitude as _linear_amplitude
 from symimpact.forced.simulation import simulate_forced
 from symimpact.system import ImpactSystem
 

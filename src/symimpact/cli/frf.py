@@ -5,6 +5,7 @@ brute-force sweeps up and down the band."""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from .. import budgets
@@ -151,8 +152,32 @@ def run(ns) -> None:
         grazes = ", ".join(f"{g:.6g}" for g in frf.no_impact_grazings) or "nowhere in the band"
         lines.append(f"no impact (the impact mass at rest midway, the primary alone) for Ω {spans} "
                      f"rad/s; it grazes a wall at Ω {grazes} rad/s")  # fmt: skip
+    lines += peak_lines(frf)
     lines += [f"note: {n}" for n in frf.notes]
     emit(ns, out, "\n".join(lines))
+
+
+def peak_lines(frf) -> list[str]:
+    """The located peak with and without the damper, and the reduction, in words."""
+    from ..display import display_unit, shown
+
+    unit = display_unit("x")
+
+    def at(p) -> str:
+        return (f"{shown('x', p.amplitude):.5g} {unit} at Ω {p.omega:.6g} rad/s "
+                f"({p.omega / (2 * math.pi):.6g} Hz)")  # fmt: skip
+
+    if frf.peak is None:
+        lines = ["peak with the damper: no stable motion traced in the band"]
+    else:
+        p = frf.peak
+        kind = (f"periodic, {p.period_multiple} period(s), {p.impacts_per_period:g} impacts a "
+                f"period, branch {p.branch}" if p.motion == "periodic" else p.motion)  # fmt: skip
+        lines = [f"peak with the damper: {at(p)} ({kind}; located: {p.where})"]
+    lines.append(f"peak without the damper: {at(frf.baseline_peak)}")
+    if frf.peak is not None:
+        lines.append(f"reduction: {100 * frf.reduction:.4g} %")
+    return lines
 
 
 #: The subcommands this module runs.

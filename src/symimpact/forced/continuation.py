@@ -426,12 +426,35 @@ def continue_orbit(
                     branch.bifurcations.append(found)
         y, t, mono, point, tests = y1, t1, mono1, p1, tests1
         branch.points.append(point)
+        again = _revisited(branch.points, problem, ds)
+        if again is not None:
+            branch.stopped = (f"back at its own orbits (or their mirror images) of "
+                              f"{problem.where(again.value)}: a closed curve")  # fmt: skip
+            return branch
         if not lo <= point.value <= hi:
             branch.stopped = f"the range's edge at {problem.where(point.value)}"
             return branch
         ds = min(ds * 1.5, 4 * step)
     branch.stopped = f"{max_points} points"
     return branch
+
+
+def _revisited(points: list[BranchPoint], problem: _Problem, ds: float) -> BranchPoint | None:
+    """The earlier point (not one of the last four) that the newest one repeats: the same
+    parameter and amplitude to a quarter of the step (in the scaled unknowns), the same impacts a
+    period and Floquet multipliers within ten steps of each other — the orbit itself, or its
+    mirror image (same amplitude and multipliers).  A branch through a pitchfork comes back along
+    its mirror images, and one that closes on itself (an isola, or an asymmetric branch joining
+    two branch points of the symmetric one) comes back to its start: each ends there."""
+    new = points[-1]
+    for old in points[:-4]:
+        if (abs(old.value - new.value) / problem.unit < 0.25 * ds
+                and abs(old.amplitude - new.amplitude) / problem.scale[0] < 0.25 * ds
+                and old.impacts_per_period == new.impacts_per_period
+                and np.max(np.abs(np.array(old.multipliers) - np.array(new.multipliers)))
+                < 10 * ds):  # fmt: skip
+            return old
+    return None
 
 
 def trace_branch(
@@ -499,7 +522,7 @@ def branch_starts(
     Jacobian [M − I | ∂P/∂p] is singular and v, with the parameter held, spans the direction of
     the branch that crosses the old one (for the symmetry-breaking pitchfork of the symmetric
     orbits and for a period doubling the new branch is tangent to v there).  The predictor steps
-    ±``step`` along (v, 0) in the scaled unknowns and Newton corrects it in the hyperplane normal
+    ±``step``/8 (then /4, /2, 1 where it fails) along (v, 0) in the scaled unknowns and Newton corrects it in the hyperplane normal
     to that direction, which the old branch does not cross nearby.  Each side gives at most one
     start; a start of a period doubling that repeats after the old period is dropped (it is the
     old orbit).  Eq. F1, F2 along the orbits (Step 8, Step 9)."""
@@ -544,7 +567,7 @@ def branch_starts(
         direction /= np.linalg.norm(direction)
     starts: list[BranchStart] = []
     for sign in (1.0, -1.0):
-        for ds in (step, 2 * step, 0.5 * step):
+        for ds in (step / 8, step / 4, step / 2, step):
             got = _correct(problem, y_b + sign * ds * direction, direction)
             if got is None or got is GRAZE:
                 continue
@@ -639,6 +662,24 @@ def leave(
     return branch
 
 
+def orbit_between(
+    p: BranchPoint, q: BranchPoint, value: float, at: tuple, periods: int
+) -> ShootingOrbit | None:
+    """The orbit at the parameter ``value`` between two consecutive points of a branch: Newton's
+    method (:func:`symimpact.forced.shoot`) from the state interpolated between them (from the
+    nearer one where the section moved between them), with ``at`` = (system, forcing, e) at
+    that value; None where Newton's method fails."""
+    f = 0.5 if q.value == p.value else (value - p.value) / (q.value - p.value)
+    if p.phase != q.phase:
+        p, f = (p if f <= 0.5 else q), 0.0
+    guess = np.array(p.state) + f * (np.array(q.state) - np.array(p.state))
+    fs = Forcing(F0=at[1].F0, X_b=at[1].X_b, omega=at[1].omega, phase=p.phase)
+    try:
+        return shoot(at[0], fs, at[2], guess, periods=periods)
+    except SymimpactError:
+        return None
+
+
 def _same_phase(a: float | None, b: float | None) -> bool:
     if a is None or b is None:
         return a is b
@@ -677,15 +718,8 @@ def orbits_at(
         lo, hi = sorted((p.value, q.value))
         if not lo <= value <= hi:
             continue
-        f = 0.5 if hi == lo else (value - p.value) / (q.value - p.value)
-        if p.phase != q.phase:  # the section moved between them: start from the nearer one
-            p = p if f <= 0.5 else q
-            f = 0.0
-        guess = np.array(p.state) + f * (np.array(q.state) - np.array(p.state))
-        fs = Forcing(F0=at[1].F0, X_b=at[1].X_b, omega=at[1].omega, phase=p.phase)
-        try:
-            orbit = shoot(at[0], fs, at[2], guess, periods=branch.period_multiple)
-        except SymimpactError:
+        orbit = orbit_between(p, q, value, at, branch.period_multiple)
+        if orbit is None:
             continue
         if not any(abs(o.amplitude - orbit.amplitude) <= 1e-10 * orbit.amplitude
                    and _same_phase(o.impact_phase, orbit.impact_phase) for o in found):  # fmt: skip

@@ -42,6 +42,7 @@ from .continuation import (
     trace_branch,
 )
 from .forcing import Forcing
+from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
 from .shooting import monodromy, shoot, shoot_from_rest
 from .simulation import simulate_forced
@@ -51,6 +52,11 @@ from .simulation import simulate_forced
 #: SWEEP_MAX periods): near the resonance a neighbouring point's amplitude can be ten times
 #: larger, so 1e-6 leaves ~1e-5 of the amplitude.
 SWEEP_KEPT, SWEEP_SETTLED, SWEEP_MAX = 30, 1e-6, 5000
+#: A swept amplitude carries what is left of its transient, relative to its amplitude: its run
+#: lasts until the free transient is SWEEP_SETTLED of its start and a neighbouring point is at
+#: most ~12 times larger near resonance (tests/test_frf.py measures the sweeps against the
+#: textbook response to this).
+SWEEP_ACCURACY = 1e-4
 #: At most this many extra starts from each sweep's periodic motions that no branch traces.
 SWEEP_STARTS = 4
 #: Branch switching: at most this many switches for one curve, onto orbits of at most this many
@@ -79,6 +85,19 @@ class FrequencyResponse:
     notes: list[str] = field(default_factory=list)
     no_impact: list[tuple[float, float]] = field(default_factory=list)
     no_impact_grazings: list[float] = field(default_factory=list)
+    #: the largest amplitude of a stable orbit or of the motion without impacts over the band,
+    #: located (:mod:`symimpact.forced.peak`); None where the curve holds neither
+    peak: Peak | None = None
+    #: the largest amplitude of the primary without the damper over the band, located
+    baseline_peak: Peak | None = None
+
+    @property
+    def reduction(self) -> float:
+        """1 − peak/baseline peak: the share of the primary's resonant amplitude the damper
+        removes over the band (NaN without a located peak)."""
+        if self.peak is None or self.baseline_peak is None:
+            return math.nan
+        return 1.0 - self.peak.amplitude / self.baseline_peak.amplitude
 
     def as_dict(self) -> dict[str, Any]:
         """The JSON contract: points and bifurcations, each with its branch number."""
@@ -114,6 +133,9 @@ class FrequencyResponse:
             "sweep_down": [{"omega": w, "amplitude": a} for w, a in self.sweep_down],
             "no_impact": [{"omega_from": a, "omega_to": b} for a, b in self.no_impact],
             "no_impact_grazings": list(self.no_impact_grazings),
+            "peak": None if self.peak is None else self.peak.as_dict(),
+            "baseline_peak": None if self.baseline_peak is None else self.baseline_peak.as_dict(),
+            "reduction": None if math.isnan(self.reduction) else self.reduction,
             "notes": self.notes,
         }
 
@@ -227,7 +249,7 @@ def frequency_response(
                 failures.setdefault(f"{k} period(s) from rest: {exc}", []).append(omega)
                 continue
             follow("from rest", k, shot.state, f)
-    out.baseline = np.column_stack([w, _linear_amplitude(system, forcing, w)])
+    out.baseline = np.column_stack([w, linear_amplitude(system, forcing, w)])
     out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
     if sweeps:
         up = _sweep_runs(system, forcing, e, w)
@@ -243,6 +265,16 @@ def frequency_response(
         out.sweep_up = out.sweep_down = np.zeros((0, 2))
     _switch_branches(out, system, forcing, e, band, step, failures)
     _drop_repeated_bifurcations(out.branches, 1e-6 if is_rigid(e) else 1e-5)
+    out.baseline_peak = baseline_peak(system, forcing, band)
+    out.peak = curve_peak(out.branches, system, forcing, e, band, out.no_impact)
+    if sweeps and out.peak is not None:
+        top = max((*out.sweep_up, *out.sweep_down), key=lambda r: r[1])
+        if top[1] > out.peak.amplitude * (1.0 + SWEEP_ACCURACY):
+            failures.setdefault(
+                f"a swept motion reaches {top[1]:.6g} m, above the located peak "
+                f"{out.peak.amplitude:.6g} m (a chattering, sticking or untraced motion)",
+                [],
+            ).append(float(top[0]))
     out.notes = [
         f"{reason} (at Ω {', '.join(f'{x:.4g}' for x in ws)} rad/s)"
         for reason, ws in failures.items()
@@ -326,9 +358,9 @@ def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):
     h = system.gap / 2.0
 
     def excess(omega: float) -> float:
-        return float(_linear_amplitude(system, forcing, np.array([omega]))[0]) - h
+        return float(linear_amplitude(system, forcing, np.array([omega]))[0]) - h
 
-    inside = _linear_amplitude(system, forcing, w) < h
+    inside = linear_amplitude(system, forcing, w) < h
     ends: list[float] = []
     for k in range(1, len(w)):
         if inside[k] != inside[k - 1]:
@@ -350,13 +382,6 @@ def _repeats_every_period(system, forcing, e, orbit) -> bool:
     scale = np.array([orbit.amplitude, orbit.amplitude * forcing.omega, system.gap / 2,
                       orbit.amplitude * forcing.omega])  # fmt: skip
     return bool(np.max(np.abs((ps - np.array(orbit.state)) / scale)) < 1e-8)
-
-
-def _linear_amplitude(system: ImpactSystem, forcing: Forcing, w: np.ndarray) -> np.ndarray:
-    """The primary without the damper: amplitude of Step 8's steady solution (Eq. F1)."""
-    A = ff.steady_cosine(system.M, system.K, system.C, forcing.F0, forcing.X_b, w)
-    B = ff.steady_sine(system.M, system.K, system.C, forcing.F0, forcing.X_b, w)
-    return np.hypot(A, B)
 
 
 def _settling_periods(

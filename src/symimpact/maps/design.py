@@ -42,7 +42,7 @@ from .. import checks
 from ..errors import ParameterError
 from ..forced.contact_law import checked, is_rigid
 from ..forced.forcing import Forcing
-from ..forced.frf import _sweep, frequency_response
+from ..forced.frf import SWEEP_ACCURACY, _sweep, frequency_response
 from ..system import ImpactSystem
 from .engine import _executor, _gather, _launch, _progress
 from .points import MapPoints, as_points
@@ -63,10 +63,6 @@ DESIGN_OUTPUTS = (
     "linear_frequencies",
     "uncovered_frequencies",
 )
-#: What is left of a sweep point's transient, relative to its amplitude: it runs until the free
-#: transient is 1e-6 of its start, and a neighbouring point is at most ~12 times larger near
-#: resonance (tests/test_frf.py measures the sweeps against the textbook response to this).
-SWEEP_ACCURACY = 1e-4
 #: The kinds of motion a peak can belong to (``peak_motion``).
 MOTIONS = ("stable orbit", "no impact", "sweep up", "sweep down")
 
