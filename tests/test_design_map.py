@@ -25,14 +25,20 @@ def _textbook(w):
     return 2.0 / np.hypot(1000.0 - w * w, 0.5 * w)
 
 
+#: The resonance peak of the primary alone, F0 / (C √(K/M − C²/(4M²))) at Ω = √(K/M − C²/(2M²))
+#: (M = 1 kg), typed here: inside both bands below, so the located peak is this, not a sample.
+RESONANCE = 2.0 / (0.5 * math.sqrt(1000.0 - 0.5**2 / 4))
+
+
 @pytest.mark.parametrize("contact", [E, CompliantContact("linear")], ids=["rigid", "linear"])
 def test_an_unreachable_clearance_gives_the_primary_without_the_damper(contact):
-    """d = 2 m: the relative motion never reaches a wall, so the peak is the linear response's,
-    at the band's frequency nearest resonance, found as the motion without impacts (with rigid
-    impacts and with a compliant contact alike)."""
+    """d = 2 m: the relative motion never reaches a wall, so the peak is the linear response's
+    resonance, located, found as the motion without impacts (with rigid impacts and with a
+    compliant contact alike)."""
     w = np.linspace(28.0, 35.0, 36)
     row = design_row(SYSTEM.with_(gap=2.0), FORCING, contact, w)
-    top = float(np.max(_textbook(w)))
+    top = RESONANCE
+    assert top > float(np.max(_textbook(w)))  # above every sample of the band
     assert row["peak_motion"] == "no impact" and row["branches"] == 0
     assert row["peak_amplitude"] == pytest.approx(top, rel=1e-12)
     assert row["baseline_peak"] == pytest.approx(top, rel=1e-12)
@@ -43,12 +49,15 @@ def test_an_unreachable_clearance_gives_the_primary_without_the_damper(contact):
 def test_a_vanishing_impact_mass_leaves_the_primary_alone():
     """m = 1e-7 kg at d = 20 mm over 29–33 rad/s (the resonance): whatever the impact mass does
     (it impacts, and near resonance it chatters), the peak is the textbook peak of the primary
-    alone, to the order of m/M times the resonant amplification (1e-7 · 63): measured 4.6e-7,
-    asserted 1e-4 (the sweeps' accuracy, SWEEP_ACCURACY), and the damper changes nothing."""
+    alone, to the order of m/M times the resonant amplification (1e-7 · 63), asserted 1e-4
+    (the sweeps' accuracy, SWEEP_ACCURACY), and the damper changes nothing.  Near resonance the
+    impact mass chatters, a motion no branch holds: the peak there is the sweeps' sample, so it
+    lies between the band's largest textbook sample and the located resonance."""
     w = np.linspace(29.0, 33.0, 41)
     row = design_row(SYSTEM.with_(m=1e-7), FORCING, E, w)
-    assert row["peak_amplitude"] == pytest.approx(float(np.max(_textbook(w))), rel=1e-4)
-    assert row["peak_ratio"] == pytest.approx(1.0, rel=1e-4)
+    sampled = float(np.max(_textbook(w)))
+    assert sampled * (1 - 1e-4) <= row["peak_amplitude"] <= RESONANCE * (1 + 1e-4)
+    assert row["peak_ratio"] == pytest.approx(sampled / RESONANCE, rel=1e-4)
 
 
 def test_the_damper_lowers_the_resonant_peak():

@@ -26,6 +26,11 @@ def add_parser(sub: Any) -> None:
                    help='clearances, e.g. "10 mm:200 mm:10 mm" or "10 mm,20 mm"')  # fmt: skip
     g.add_argument("--mass-ratios", default=None, metavar="RANGE",
                    help='mass ratios m/M, e.g. "0.02,0.05,0.1" (default: --m as given)')  # fmt: skip
+    g.add_argument("--tolerance", default="0.01 mm", metavar="Q",
+                   help="the best clearance is refined by Brent's method between the grid's "
+                        "neighbours to this (default 0.01 mm)")  # fmt: skip
+    g.add_argument("--no-refine", action="store_true",
+                   help="report the grid's best clearance as it is")  # fmt: skip
     g = p.add_argument_group("execution and files")
     g.add_argument("--executor", choices=("serial", "processes", "dask"), default=None,
                    help="where the designs run (default: local processes)")  # fmt: skip
@@ -45,9 +50,10 @@ def add_parser(sub: Any) -> None:
 def run(ns) -> None:
     from ..display import display_unit, shown
     from ..errors import ParameterError
-    from ..maps.design import best_clearances, design_map
+    from ..maps.design import best_clearances, design_map, refine_best
     from ..maps.points import parse_range
     from ..maps.table import table_rows
+    from ..units import positive_float
 
     omegas = band_from(ns)
     system = system_from(ns)
@@ -65,11 +71,15 @@ def run(ns) -> None:
     if ns.workers is not None and ns.workers < 1:
         raise ParameterError("workers", "must be a positive integer")
     e = contact_of(ns)
+    tolerance = positive_float("tolerance", ns.tolerance, "m")
     table = design_map(system, forcing, e, omegas, grid, executor=ns.executor,
                        workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
                        force=ns.overwrite, progress=not (ns.quiet or ns.json))  # fmt: skip
     rows = table_rows(table)
-    best = table_rows(best_clearances(table))
+    if ns.no_refine or len(grid["gap"]) < 2:
+        best = table_rows(best_clearances(table))
+    else:
+        best = refine_best(table, system, forcing, e, omegas, tolerance=tolerance)
     if ns.csv:
         write_csv(ns.csv, "csv", rows)
     if ns.plot:
@@ -91,11 +101,19 @@ def run(ns) -> None:
         )
     for r in best:
         ratio = f" (m/M {r['mass_ratio']:g})" if "mass_ratio" in r else ""
-        lines.append(
-            f"best clearance{ratio}: d {shown('gap', r['gap']):.4g} {gunit}, peak "
-            f"{shown('x', r['peak_amplitude']):.5g} {unit} ({r['peak_ratio']:.3f} of the primary "
-            "alone)"
-        )
+        if "tolerance" in r:
+            where = (f"d {shown('gap', r['gap']):.6g} ± {shown('gap', r['tolerance']):.2g} {gunit} "
+                     f"(Brent's method from the grid's {shown('gap', r['grid_gap']):.4g} {gunit}, "
+                     f"{r['evaluations']} designs)")  # fmt: skip
+        else:
+            where = f"d {shown('gap', r['gap']):.4g} {gunit}"
+        line = (f"best clearance{ratio}: {where}, peak {shown('x', r['peak_amplitude']):.5g} "
+                f"{unit} at Ω {r['peak_omega']:.5g} rad/s ({r['peak_motion']}; "
+                f"{r['peak_ratio']:.3f} of the primary alone)")  # fmt: skip
+        if "peak_e_minus" in r:
+            line += (f"; the peak with e − 0.1: {shown('x', r['peak_e_minus']):.5g} {unit}, "
+                     f"with e + 0.1: {shown('x', r['peak_e_plus']):.5g} {unit}")  # fmt: skip
+        lines.append(line)
     emit(ns, {"designs": rows, "best": best}, "\n".join(lines))
 
 

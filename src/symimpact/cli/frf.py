@@ -171,12 +171,29 @@ def peak_lines(frf) -> list[str]:
         lines = ["peak with the damper: no stable motion traced in the band"]
     else:
         p = frf.peak
-        kind = (f"periodic, {p.period_multiple} period(s), {p.impacts_per_period:g} impacts a "
-                f"period, branch {p.branch}" if p.motion == "periodic" else p.motion)  # fmt: skip
-        lines = [f"peak with the damper: {at(p)} ({kind}; located: {p.where})"]
+        if p.motion == "periodic":
+            kind = (f"periodic, {p.period_multiple} period(s), {p.impacts_per_period:g} impacts a "
+                    f"period, branch {p.branch}")  # fmt: skip
+        elif p.where == "multi-start":
+            kind = f"{p.motion}, {p.impacts_per_period:g} impacts a period"
+        else:
+            kind = p.motion
+        how = ("sampled by the multi-start" if p.where == "multi-start"
+               else f"located: {p.where}")  # fmt: skip
+        lines = [f"peak with the damper: {at(p)} ({kind}; {how})"]
     lines.append(f"peak without the damper: {at(frf.baseline_peak)}")
     if frf.peak is not None:
         lines.append(f"reduction: {100 * frf.reduction:.4g} %")
+    cov = frf.coverage
+    if cov.attractors:
+        share = (
+            "no periodic one"
+            if not cov.traced
+            else (f"{sum(cov.traced)} of {len(cov.traced)} periodic ones on a traced branch")
+        )
+        kinds = sorted({a.kind for a in cov.missed})
+        lines.append(f"multi-start: {len(cov.attractors)} attractor(s), {share}"
+                     + (f"; not traced: {', '.join(kinds)}" if kinds else ""))  # fmt: skip
     return lines
 
 

@@ -9,13 +9,16 @@ several kinds of starting point, so that coexisting motions are found:
   over the band (rigid impacts only);
 - the orbits brute-force runs from rest settle near (:func:`symimpact.forced.shoot_from_rest`),
   of one and two forcing periods;
-- with the sweeps: the periodic impacting motions (one or two periods) a sweep settles on that no
-  branch traces, one start in the middle of each run of such frequencies.
+- the periodic attractors of a multi-start brute force at frequencies fixed by the band's ends
+  (:mod:`symimpact.forced.coverage`), which also measures the share of them the branches trace;
+- branch switching at every located branch point and period doubling.
 
-A start that lies on a branch already traced is skipped.  Beside the branches: the primary
-without the damper (the linear response of M, K, C, Step 8's steady solution) and brute-force
-sweeps up and down the band, each run started from the previous one's end state, as a
-cross-check of the stable branches and of where the motion jumps.
+A start that lies on a branch already traced is skipped.  Every start depends on the band's ends
+only, not on its step, so the branches and the located peak (:mod:`symimpact.forced.peak`) do
+not depend on how finely the band is sampled.  Beside the branches: the primary without the
+damper (the linear response of M, K, C, Step 8's steady solution) and brute-force sweeps up and
+down the band, each run started from the previous one's end state, as a cross-check of the
+stable branches and of where the motion jumps.
 """
 
 from __future__ import annotations
@@ -41,6 +44,7 @@ from .continuation import (
     orbits_at,
     trace_branch,
 )
+from .coverage import FREQUENCIES, Coverage, attractors
 from .forcing import Forcing
 from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
@@ -57,8 +61,6 @@ SWEEP_KEPT, SWEEP_SETTLED, SWEEP_MAX = 30, 1e-6, 5000
 #: most ~12 times larger near resonance (tests/test_frf.py measures the sweeps against the
 #: textbook response to this).
 SWEEP_ACCURACY = 1e-4
-#: At most this many extra starts from each sweep's periodic motions that no branch traces.
-SWEEP_STARTS = 4
 #: Branch switching: at most this many switches for one curve, onto orbits of at most this many
 #: forcing periods (period 1 → 2 → 4).
 MAX_SWITCHES, MAX_SWITCH_PERIODS = 24, 4
@@ -90,6 +92,8 @@ class FrequencyResponse:
     peak: Peak | None = None
     #: the largest amplitude of the primary without the damper over the band, located
     baseline_peak: Peak | None = None
+    #: the multi-start's attractors and the share of the periodic ones on a traced branch
+    coverage: Coverage = field(default_factory=Coverage)
 
     @property
     def reduction(self) -> float:
@@ -136,6 +140,7 @@ class FrequencyResponse:
             "peak": None if self.peak is None else self.peak.as_dict(),
             "baseline_peak": None if self.baseline_peak is None else self.baseline_peak.as_dict(),
             "reduction": None if math.isnan(self.reduction) else self.reduction,
+            "coverage": self.coverage.as_dict(),
             "notes": self.notes,
         }
 
@@ -199,16 +204,19 @@ def frequency_response(
     *,
     starts: int = 6,
     sweeps: bool = True,
+    multistart: int = FREQUENCIES,
 ) -> FrequencyResponse:
     """The frequency-response curve over the band ``omegas`` [rad/s] (its first and last values
     bound the branches; the sweeps and the baseline use every value): branches continued from
     ``starts`` frequencies spread over the band (closed-form orbits and brute-force steady
-    states of one and two periods) and, with ``sweeps``, from the sweeps' untraced periodic
-    motions; the linear response without the damper (Step 8, Eq. F1), the motion without
-    impacts, and the up and down brute-force sweeps."""
+    states of one and two periods), from the periodic attractors of a multi-start at
+    ``multistart`` frequencies (0: none) and by branch switching; the located peak; the linear
+    response without the damper (Step 8, Eq. F1), the motion without impacts, and, with
+    ``sweeps``, the up and down brute-force sweeps."""
     system, forcing, e = checked(system, forcing, e)
     starts = checks.whole_number("starts", starts, 0, 1000)
     sweeps = checks.flag("sweeps", sweeps)
+    multistart = checks.whole_number("multistart", multistart, 0, 1000)
     w = checks.numbers("omegas", omegas)
     if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(w <= 0):
         raise ParameterError("omega", "the band needs at least two positive frequencies")
@@ -251,22 +259,26 @@ def frequency_response(
             follow("from rest", k, shot.state, f)
     out.baseline = np.column_stack([w, linear_amplitude(system, forcing, w)])
     out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
+    # the multi-start: every periodic attractor that no branch traces starts one
+    found = attractors(system, forcing, e, band, multistart) if multistart else []
+    for a in found:
+        if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
+            follow("multi-start", a.period_multiple, a.state, _forcing(forcing, a.omega))
     if sweeps:
         up = _sweep_runs(system, forcing, e, w)
         down = _sweep_runs(system, forcing, e, w[::-1])[::-1]
         out.sweep_up = np.array([(r.omega, r.amplitude) for r in up])
         out.sweep_down = np.array([(r.omega, r.amplitude) for r in down])
-        # a periodic motion a sweep settled on that no branch traces: one more start, in the
-        # middle of each run of such frequencies (at most SWEEP_STARTS per sweep)
-        for runs in (up, down):
-            for r in _untraced(runs, out, system.gap / 2.0)[:SWEEP_STARTS]:
-                follow("sweep state", r.period_multiple, r.state, _forcing(forcing, r.omega))
     else:
         out.sweep_up = out.sweep_down = np.zeros((0, 2))
     _switch_branches(out, system, forcing, e, band, step, failures)
+    out.coverage = Coverage(found, [
+        _traced(out.branches, system, forcing, e, a.omega, a.amplitude, a.period_multiple)
+        for a in found if a.kind == "periodic"
+    ])  # fmt: skip
     _drop_repeated_bifurcations(out.branches, 1e-6 if is_rigid(e) else 1e-5)
     out.baseline_peak = baseline_peak(system, forcing, band)
-    out.peak = curve_peak(out.branches, system, forcing, e, band, out.no_impact)
+    out.peak = curve_peak(out.branches, system, forcing, e, band, out.no_impact, found)
     if sweeps and out.peak is not None:
         top = max((*out.sweep_up, *out.sweep_down), key=lambda r: r[1])
         if top[1] > out.peak.amplitude * (1.0 + SWEEP_ACCURACY):
@@ -430,22 +442,3 @@ def _sweep(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> np.nda
     """(Ω, steady amplitude) of :func:`_sweep_runs`."""
     return np.array([(r.omega, r.amplitude) for r in _sweep_runs(system, forcing, e, omegas,
                                                                   settled)])  # fmt: skip
-
-
-def _untraced(runs: list[_SweepPoint], out: FrequencyResponse, h: float) -> list[_SweepPoint]:
-    """The middle point of each run of swept frequencies whose motion repeats every one or two
-    periods with impacts (no chatter or sticking: ``steady_state`` calls those not periodic) but
-    lies on no traced branch and is not the motion without impacts."""
-
-    def untraced(r: _SweepPoint) -> bool:
-        return (r.periodic and r.period_multiple in (1, 2) and r.impacts_per_period > 0
-                and not _on_branch(out.branches, r.omega, r.amplitude, r.period_multiple))  # fmt: skip
-
-    picked, run = [], []
-    for r in [*runs, None]:
-        if r is not None and untraced(r):
-            run.append(r)
-        elif run:
-            picked.append(run[len(run) // 2])
-            run = []
-    return picked

@@ -40,7 +40,8 @@ XTOL = 1e-9
 @dataclass(frozen=True)
 class Peak:
     """A located peak (SI): ``amplitude`` [m] max abs(x), ``omega`` [rad/s], ``motion``
-    ("periodic", "no impact" or "linear": the primary alone), ``branch`` (the curve's branch
+    ("periodic", "no impact", "linear": the primary alone, or a multi-start's "chatter or
+    sticking" or "not periodic" motion, sampled at its frequency), ``branch`` (the curve's branch
     number, or None), ``period_multiple`` k and ``impacts_per_period`` of a periodic motion,
     ``where``: how it was located ("maximum", a bifurcation's kind, "band edge", "point",
     "resonance", "grazing")."""
@@ -171,10 +172,15 @@ def _interior_maximum(b: Branch, p0, p1, p2, system, forcing, e):
 
 def curve_peak(
     branches: list[Branch], system: ImpactSystem, forcing: Forcing, e: Any,
-    band: tuple[float, float], no_impact: list[tuple[float, float]],
+    band: tuple[float, float], no_impact: list[tuple[float, float]], others: Any = (),
 ) -> Peak | None:  # fmt: skip
-    """The largest of :func:`stable_peak` and :func:`no_impact_peak`: the worst steady motion
-    the curve holds over ``band``."""
+    """The largest of :func:`stable_peak`, :func:`no_impact_peak` and the steady motions that no
+    branch can hold (``others``: attractors of :mod:`symimpact.forced.coverage` of kind "chatter
+    or sticking" or "not periodic", their largest abs(x) over the kept periods, at the
+    multi-start's frequency): the worst steady motion found over ``band``."""
     found = [p for p in (stable_peak(branches, system, forcing, e, band),
                          no_impact_peak(system, forcing, no_impact)) if p is not None]  # fmt: skip
+    found += [Peak(a.amplitude, a.omega, a.kind, "multi-start", None,
+                   a.period_multiple or None, a.impacts_per_period)
+              for a in others if a.kind in ("chatter or sticking", "not periodic")]  # fmt: skip
     return max(found, key=lambda p: p.amplitude) if found else None

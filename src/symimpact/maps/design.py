@@ -16,11 +16,18 @@ find:
   with a traced branch that the curve's starts do not reach.
 
 The design's **peak** is the largest amplitude among them: the worst motion the machine may
-settle on in the band.  Beside it: the peak of the primary without the damper, their ratio,
+settle on in the band, located on the branches and on the motion without impacts
+(:mod:`symimpact.forced.peak`), and taken from a sweep only where a swept motion (chatter,
+sticking) exceeds it.  Beside it: the peak of the primary without the damper, their ratio,
 where the peak is and which motion gives it, and how many frequencies of the band only the
 sweeps cover (``uncovered_frequencies``: no stable branch, no motion without impacts).  A motion
 that neither the curve's starts nor the sweeps reach is not seen; a stable branch's largest
-amplitude is its largest continuation point (points are at most the continuation's step apart).
+amplitude is located between its points (Brent's method on shot orbits), and the primary
+alone's peak is located on its closed form.
+
+:func:`refine_best` refines the best clearance of the grid by a one-dimensional search (Brent's
+method, bounded by the grid's neighbours) on the peak, to a stated tolerance, with the peak's
+sensitivity to the restitution (e ± 0.1) beside it.
 
 :func:`design_map` runs the points on the executors of a parameter map (serial, local
 processes, Dask) and streams them to a resumable file (:class:`~symimpact.maps.store.MapStore`);
@@ -114,32 +121,31 @@ def design_row(
         curve.sweep_up = _sweep(system, forcing, e, w)
         curve.sweep_down = _sweep(system, forcing, e, w[::-1])[::-1]
     linear = curve.baseline[:, 1]  # the primary alone (Step 8), computed with the curve
-    candidates: list[tuple[float, float, str]] = []  # (amplitude, Ω, motion)
-    for b in curve.branches:  # (a branch's last step may end just beyond the band)
-        candidates += [(p.amplitude, p.omega, MOTIONS[0]) for p in b.points
-                       if p.stable and w[0] <= p.omega <= w[-1]]  # fmt: skip
     spans = _stable_spans(curve.branches)
     stable = np.array([any(lo <= x <= hi for lo, hi in spans) for x in w], dtype=bool)
     free = linear < system.gap / 2.0
-    candidates += [(float(a), float(x), MOTIONS[1]) for a, x in zip(linear[free], w[free],
-                                                                      strict=True)]  # fmt: skip
+    located = curve.peak
+    if located is None:
+        peak, peak_omega, motion = 0.0, math.nan, ""
+    else:
+        peak, peak_omega = located.amplitude, located.omega
+        motion = MOTIONS[0] if located.motion == "periodic" else MOTIONS[1]
     swept = [(float(a), float(x), motion)
              for motion, sweep in ((MOTIONS[2], curve.sweep_up), (MOTIONS[3], curve.sweep_down))
              for x, a in sweep]  # fmt: skip
-    peak, peak_omega, motion = max(candidates) if candidates else (0.0, math.nan, "")
     top = max(swept)
     # a swept amplitude carries its transient (≤ SWEEP_ACCURACY): it names the peak only where
-    # it exceeds every traced motion by more than that
+    # it exceeds every traced motion by more than that (a chattering or sticking motion)
     if top[0] > peak * (1.0 + SWEEP_ACCURACY):
         peak, peak_omega, motion = top
-    i = int(np.argmax(linear))
+    base = curve.baseline_peak
     return {
         "peak_amplitude": peak,
         "peak_omega": peak_omega,
         "peak_motion": motion,
-        "baseline_peak": float(linear[i]),
-        "baseline_omega": float(w[i]),
-        "peak_ratio": peak / float(linear[i]),
+        "baseline_peak": base.amplitude,
+        "baseline_omega": base.omega,
+        "peak_ratio": peak / base.amplitude,
         "branches": len(curve.branches),
         "stable_frequencies": int(stable.sum()),
         "linear_frequencies": int(free.sum()),
@@ -252,3 +258,66 @@ def best_clearances(table) -> Any:
         return table.loc[[table["peak_amplitude"].idxmin()]].reset_index(drop=True)
     idx = table.groupby(by, sort=True)["peak_amplitude"].idxmin()
     return table.loc[idx.to_numpy()].reset_index(drop=True)
+
+
+#: The best clearance is refined to this [m] by default: 0.01 mm.
+TOLERANCE = 1e-5
+
+
+def refine_best(
+    table: Any,
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    omegas: Any,
+    *,
+    tolerance: float = TOLERANCE,
+) -> list[dict[str, Any]]:
+    """For each mass ratio (or impact mass) of a design ``table`` (from :func:`design_map` over
+    the clearance), the best clearance refined: Brent's bounded method on the peak of
+    :func:`design_row` against d, between the grid's neighbours of the grid's best (the grid's
+    end where the best lies there), stopped at ``tolerance`` [m] on d.  Each row: the design
+    row at the refined d, with ``tolerance``, ``grid_gap`` (the grid's best), ``evaluations``
+    and, for rigid impacts, ``peak_e_minus`` / ``peak_e_plus``: the peak at e − 0.1 and e + 0.1
+    (within 0–1) for the refined d."""
+    from scipy.optimize import minimize_scalar
+
+    system, forcing, e = checked(system, forcing, e)
+    tolerance = checks.bounded("tolerance", tolerance, 0.0, math.inf, open_low=True)
+    w = np.asarray(omegas, dtype=float)
+    if "gap" not in table.columns:
+        raise ParameterError("grid", "refining needs a design map over the clearance (gap)")
+    by = [c for c in ("mass_ratio", "m") if c in table.columns]
+    groups = [table] if not by else [g for _, g in table.groupby(by, sort=True)]
+    out = []
+    for g in groups:
+        g = g.sort_values("gap")
+        gaps = g["gap"].to_numpy(dtype=float)
+        i = int(np.argmin(g["peak_amplitude"].to_numpy(dtype=float)))
+        first = g.iloc[0]
+        changes = {c: float(first[c]) for c in by}
+        if "mass_ratio" in changes:
+            changes = {"m": changes.pop("mass_ratio") * system.M}
+        base = system.with_(**changes) if changes else system
+        cache: dict[float, dict[str, Any]] = {}
+
+        def row(d: float, sys_=base, cache=cache) -> dict[str, Any]:
+            if d not in cache:
+                cache[d] = design_row(sys_.with_(gap=d), forcing, e, w)
+            return cache[d]
+
+        lo, hi = gaps[max(i - 1, 0)], gaps[min(i + 1, len(gaps) - 1)]
+        best_d = float(gaps[i])
+        if hi > lo:
+            r = minimize_scalar(lambda d: row(float(d))["peak_amplitude"], bounds=(lo, hi),
+                                method="bounded", options={"xatol": tolerance})  # fmt: skip
+            if row(float(r.x))["peak_amplitude"] <= float(g.iloc[i]["peak_amplitude"]):
+                best_d = float(r.x)
+        result = {**{c: float(first[c]) for c in by}, "gap": best_d, **row(best_d)}
+        result.update(tolerance=tolerance, grid_gap=float(gaps[i]), evaluations=len(cache))
+        if is_rigid(e):
+            for key, de in (("peak_e_minus", -0.1), ("peak_e_plus", 0.1)):
+                ee = min(max(float(e) + de, 0.0), 1.0)
+                result[key] = design_row(base.with_(gap=best_d), forcing, ee, w)["peak_amplitude"]
+        out.append(result)
+    return out

@@ -1,0 +1,178 @@
+"""Which steady motions a frequency-response curve holds: multi-start brute force over the band
+(:func:`attractors`) and the share of the periodic ones that lie on a traced stable branch
+(:func:`coverage`).
+
+At each of :data:`FREQUENCIES` frequencies spread over the band (fixed by the band's ends, not
+by its step, so that the curve does not depend on how finely it is sampled) the event-driven
+simulation (rigid impacts with chatter and sticking, or a compliant contact; Eq. F1, F2) runs
+from :data:`STARTS` initial states until the primary's free transient has decayed to 1e-6
+(exp(−ζω_n·t), at most :data:`WARMUP` periods), and its last periods are classified by
+:func:`symimpact.forced.steady_state`:
+
+- **periodic** (k ≤ 4 forcing periods, with impacts): shooting converges on it
+  (:func:`symimpact.forced.shoot`), which gives its exact amplitude;
+- **no impact**: the impact mass floats at rest (the primary's linear response);
+- **chatter or sticking**: periodic or not, the motion has accumulations of impacts or sticking
+  phases, where shooting does not apply;
+- **not periodic**: no period up to 8 (quasi-periodic or chaotic);
+- **not settled**: a transient still decaying over the kept periods, or an impact mass drifting
+  with fewer than one impact a period where the motion without impacts exists (the floating
+  mass is neutral: with e < 1 it creeps towards rest over many more periods).  Not an attractor:
+  counted, not listed as missed.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import SymimpactError
+from ..system import ImpactSystem
+from .contact_law import simulation_arguments
+from .forcing import Forcing
+from .peak import linear_amplitude
+from .shooting import MAX_PERIODS, shoot
+from .simulation import simulate_forced
+
+#: Frequencies of the multi-start, spread evenly inside the band (its ends excluded).
+FREQUENCIES = 15
+#: Initial states at each frequency (see :func:`_starts`).
+STARTS = 4
+#: At most this many forcing periods before the steady state is read; 20 more are kept.
+WARMUP, KEPT = 400, 20
+#: The periods a periodic attractor may have to be shot and traced.
+MAX_SHOT_PERIODS = 4
+
+
+@dataclass(frozen=True)
+class Attractor:
+    """A steady motion a brute-force run settled on (SI): ``omega`` [rad/s], ``amplitude`` [m]
+    (the shot orbit's where shooting converged, else the run's), ``kind`` ("periodic", "no
+    impact", "chatter or sticking", "not periodic"), ``period_multiple`` (0 if not periodic),
+    ``impacts_per_period``, ``state`` (x, ẋ, z, ẏ) at the forcing phase of the run's end, and
+    ``stable`` (the shot orbit's multipliers; None where not shot)."""
+
+    omega: float
+    amplitude: float
+    kind: str
+    period_multiple: int
+    impacts_per_period: float
+    state: tuple[float, float, float, float]
+    stable: bool | None = None
+
+    def as_dict(self) -> dict[str, Any]:
+        return {k: v for k, v in self.__dict__.items() if k != "state"}
+
+
+@dataclass
+class Coverage:
+    """:func:`coverage`'s outcome: ``attractors`` found by the multi-start, each periodic one
+    ``traced`` or not (same order as the periodic ones), ``share`` = traced / periodic (NaN with
+    none)."""
+
+    attractors: list[Attractor] = field(default_factory=list)
+    traced: list[bool] = field(default_factory=list)
+
+    @property
+    def periodic(self) -> list[Attractor]:
+        return [a for a in self.attractors if a.kind == "periodic"]
+
+    @property
+    def share(self) -> float:
+        return sum(self.traced) / len(self.traced) if self.traced else math.nan
+
+    @property
+    def missed(self) -> list[Attractor]:
+        """The attractors not on a traced branch: periodic ones missed, and every motion whose
+        kind shooting cannot follow (chatter or sticking, not periodic)."""
+        periodic = [a for a, t in zip(self.periodic, self.traced, strict=True) if not t]
+        return periodic + [a for a in self.attractors
+                           if a.kind in ("chatter or sticking", "not periodic")]  # fmt: skip
+
+    def as_dict(self) -> dict[str, Any]:
+        return {
+            "share": None if math.isnan(self.share) else self.share,
+            "attractors": len(self.attractors),
+            "periodic": len(self.periodic),
+            "missed": [a.as_dict() for a in self.missed],
+        }
+
+
+def frequencies(band: tuple[float, float], n: int = FREQUENCIES) -> np.ndarray:
+    """The multi-start's frequencies: ``n`` evenly inside ``band`` [rad/s], ends excluded."""
+    return np.linspace(band[0], band[1], n + 2)[1:-1]
+
+
+def _starts(system: ImpactSystem, forcing: Forcing) -> list[tuple[float, float, float, float]]:
+    """Initial states (x, ẋ, z, ẏ): rest; the primary displaced by A with the impact mass near
+    either wall; the primary moving through zero at ΩA with the impact mass moving against it.
+    A is the primary's linear amplitude at Ω (Eq. F1), at most two clearances."""
+    h = system.gap / 2.0
+    w = forcing.omega
+    A = min(float(linear_amplitude(system, forcing, w)), 4.0 * h)
+    return [(0.0, 0.0, 0.0, 0.0), (A, 0.0, 0.9 * h, 0.0), (-A, 0.0, -0.9 * h, 0.0),
+            (0.0, w * A, 0.0, -w * A)][:STARTS]  # fmt: skip
+
+
+def _warmup(system: ImpactSystem, forcing: Forcing) -> int:
+    decay = system.C / (2.0 * system.M)  # ζω_n [1/s]
+    if not decay > 0:
+        return WARMUP
+    return min(WARMUP, math.ceil(-math.log(1e-6) / decay / forcing.period))
+
+
+def attractor(system: ImpactSystem, forcing: Forcing, e: Any, start) -> Attractor:
+    """The steady motion a run from ``start`` (x, ẋ, z, ẏ) settles on (module text)."""
+    x, v, z, u = start
+    n = _warmup(system, forcing) + KEPT
+    res = simulate_forced(system, forcing, **simulation_arguments(e), periods=n, discard=n - KEPT,
+                          x0=x, xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
+    st = res.steady
+    fx, fv, fy, fu = res.final_state
+    end = (fx, fv, fy - fx, fu)
+    if st.impacts_per_period == 0 and not res.final_stuck:
+        return Attractor(forcing.omega, st.amplitude, "no impact", 0, 0.0, end)
+    if not st.periodic:
+        h = system.gap / 2.0
+        drifting = (
+            st.impacts_per_period < 1 and linear_amplitude(system, forcing, forcing.omega) < h
+        )
+        kind = "not settled" if st.settling or drifting else "not periodic"
+        return Attractor(forcing.omega, st.amplitude, kind, 0, st.impacts_per_period, end)
+    k = st.period_multiple
+    chatter = Attractor(forcing.omega, st.amplitude, "chatter or sticking", k,
+                        st.impacts_per_period, end)  # fmt: skip
+    if k > min(MAX_SHOT_PERIODS, MAX_PERIODS):
+        return Attractor(forcing.omega, st.amplitude, "periodic", k, st.impacts_per_period, end)
+    try:
+        orbit = shoot(system, forcing, e, end, periods=k)
+    except SymimpactError:
+        return chatter
+    return Attractor(forcing.omega, orbit.amplitude, "periodic", k, orbit.impacts_per_period,
+                     orbit.state, orbit.stable)  # fmt: skip
+
+
+def attractors(
+    system: ImpactSystem, forcing: Forcing, e: Any, band: tuple[float, float],
+    n: int = FREQUENCIES,
+) -> list[Attractor]:  # fmt: skip
+    """The attractors of the multi-start over ``band`` (module text), each distinct one at a
+    frequency once (periodic: the same period and amplitude to 1e-9)."""
+    found: list[Attractor] = []
+    for w in frequencies(band, n):
+        f = Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=float(w), phase=forcing.phase)
+        here: list[Attractor] = []
+        for s in _starts(system, f):
+            try:
+                a = attractor(system, f, e, s)
+            except SymimpactError:
+                continue
+            if not any(b.kind == a.kind and b.period_multiple == a.period_multiple
+                       and abs(b.amplitude - a.amplitude) <= 1e-9 * max(a.amplitude, 1e-300)
+                       for b in here):  # fmt: skip
+                here.append(a)
+        found += here
+    return found
