@@ -76,8 +76,10 @@ def test_design_map_resumes_from_its_file_and_marks_the_best_clearance(tmp_path)
     clearance is the row of the smallest peak."""
     w = np.linspace(28.0, 34.0, 7)
     grid = {"gap": ["20 mm", "80 mm", "160 mm"]}
-    serial = design_map(SYSTEM, FORCING, E, w, grid, executor="serial")
-    procs = design_map(SYSTEM, FORCING, E, w, grid, executor="processes", workers=2)
+    # no multi-start (multistart=0): what is checked here is the map's bookkeeping
+    serial = design_map(SYSTEM, FORCING, E, w, grid, executor="serial", multistart=0)
+    procs = design_map(SYSTEM, FORCING, E, w, grid, executor="processes", workers=2,
+                       multistart=0)  # fmt: skip
     assert serial.equals(procs)
     assert list(serial["gap"]) == [0.02, 0.08, 0.16]
     best = best_clearances(serial)
@@ -87,10 +89,10 @@ def test_design_map_resumes_from_its_file_and_marks_the_best_clearance(tmp_path)
     out = tmp_path / "design.csv"
     calls: list[tuple[int, int]] = []
     first = design_map(SYSTEM, FORCING, E, w, {"gap": ["20 mm"]}, executor="serial",
-                       out=out)  # fmt: skip
+                       out=out, multistart=0)  # fmt: skip
     assert out.is_file() and first.equals(serial.iloc[:1])
     with pytest.raises(ParameterError, match="exists"):
-        design_map(SYSTEM, FORCING, E, w, {"gap": ["20 mm"]}, out=out)
+        design_map(SYSTEM, FORCING, E, w, {"gap": ["20 mm"]}, out=out, multistart=0)
     out2 = tmp_path / "design2.csv"
     from symimpact.maps.design import DESIGN_OUTPUTS, _design_chunk, _DesignBase, design_table
     from symimpact.maps.points import as_points
@@ -98,13 +100,13 @@ def test_design_map_resumes_from_its_file_and_marks_the_best_clearance(tmp_path)
 
     points = as_points(grid)
     settings = {"F0": 2.0, "X_b": 0.0, "phase": 0.0, "e": E,
-                "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip
+                "omegas": ",".join(f"{x:.17g}" for x in w), "multistart": 0}  # fmt: skip
     store = MapStore(out2, system=SYSTEM, points=points, settings=settings,
                      outputs=DESIGN_OUTPUTS, table=design_table)  # fmt: skip
-    base = _DesignBase(SYSTEM, FORCING, E, tuple(w))
+    base = _DesignBase(SYSTEM, FORCING, E, tuple(w), 0)
     store.write_chunk(_design_chunk((base, points.names, [2], points.values[[2]])))
     store.close()
-    resumed = design_map(SYSTEM, FORCING, E, w, grid, executor="serial", out=out2,
+    resumed = design_map(SYSTEM, FORCING, E, w, grid, executor="serial", out=out2, multistart=0,
                          progress=lambda done, total: calls.append((done, total)))  # fmt: skip
     assert resumed.equals(serial)
     assert calls[-1] == (3, 3) and calls[0] == (2, 3)  # one kept, two computed

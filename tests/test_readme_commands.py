@@ -32,7 +32,15 @@ def test_the_block_holds_every_subcommand():
     ]  # fmt: skip
 
 
-@pytest.mark.parametrize("command", COMMANDS, ids=lambda c: c.split()[1])
+def _marked(command: str):
+    """The design command (five clearances, each a whole curve, then Brent's method on the best
+    one: about a minute) runs in the slow set, which CI runs as its second step."""
+    slow = command.split()[1] == "design"
+    return pytest.param(command, marks=pytest.mark.slow) if slow else command
+
+
+@pytest.mark.parametrize("command", [_marked(c) for c in COMMANDS],
+                         ids=lambda c: c.split()[1])  # fmt: skip
 def test_readme_command_runs_and_shows_something(command, tmp_path):
     args = shlex.split(command)
     run = subprocess.run(

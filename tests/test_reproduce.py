@@ -225,7 +225,9 @@ def test_forced_section_restitution_peaks_and_best_clearance(report):
     for row in peaks.rows:
         peak, swept = row[2], row[5]
         assert peak >= swept * (1 - 1e-4)
-        assert row[-1] == pytest.approx(peak / row[6], rel=1e-12)
+        assert row[7] == pytest.approx(peak / row[6], rel=1e-12)
+        traced, periodic = (int(x) for x in row[8].split(" of "))  # the coverage, "k of n"
+        assert 0 <= traced <= periodic and row[9] >= 0
     compliant = next(b for b in forced.blocks
                      if isinstance(b, Table) and b.name == "forced_compliant_peaks")  # fmt: skip
     rigid = {row[0]: row[2] for row in peaks.rows}

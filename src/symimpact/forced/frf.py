@@ -115,9 +115,11 @@ class FrequencyResponse:
                     "period_multiple": b.period_multiple, "branch": i,
                 })  # fmt: skip
             for f in b.bifurcations:
-                bifurcations.append(
-                    {"kind": f.kind, "omega": f.omega, "amplitude": f.amplitude, "branch": i}
-                )
+                row = {"kind": f.kind, "omega": f.omega, "amplitude": f.amplitude, "branch": i}
+                if f.kind == "grazing":  # the impacts a period on both sides (null: it ends)
+                    row["impacts_before"] = f.impacts_before
+                    row["impacts_after"] = None if math.isnan(f.impacts_after) else f.impacts_after
+                bifurcations.append(row)
         return {
             "points": points,
             "bifurcations": bifurcations,

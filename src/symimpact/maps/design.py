@@ -48,6 +48,7 @@ import numpy as np
 from .. import checks
 from ..errors import ParameterError
 from ..forced.contact_law import checked, is_rigid
+from ..forced.coverage import FREQUENCIES
 from ..forced.forcing import Forcing
 from ..forced.frf import SWEEP_ACCURACY, _sweep, frequency_response
 from ..system import ImpactSystem
@@ -80,6 +81,7 @@ class _DesignBase:
     forcing: Forcing
     e: float
     omegas: tuple[float, ...]
+    multistart: int = FREQUENCIES
 
 
 def _design_system(base: _DesignBase, names: Sequence[str], values: Sequence[float]):
@@ -105,18 +107,20 @@ def _stable_spans(branches) -> list[tuple[float, float]]:
 
 
 def design_row(
-    system: ImpactSystem, forcing: Forcing, e: float, omegas: Any, curve: Any = None
-) -> dict[str, Any]:
+    system: ImpactSystem, forcing: Forcing, e: float, omegas: Any, curve: Any = None,
+    multistart: int = FREQUENCIES,
+) -> dict[str, Any]:  # fmt: skip
     """The design map's figures for one system over the band ``omegas`` [rad/s] (module text):
     ``peak_amplitude`` [m] and ``peak_omega`` [rad/s] of the worst steady motion, ``peak_motion``
     (one of :data:`MOTIONS`), ``baseline_peak`` [m] and ``baseline_omega`` [rad/s] of the primary
     without the damper (Step 8, Eq. F1), ``peak_ratio`` = peak/baseline, the number of
     ``branches`` of the curve and how many frequencies of the band each kind of motion covers.
     ``curve``: the system's frequency response over ``omegas`` if already computed (its sweeps
-    are run and stored in it if it has none)."""
+    are run and stored in it if it has none); ``multistart``: frequencies of the curve's
+    multi-start (:mod:`symimpact.forced.coverage`; 0: none)."""
     w = np.asarray(omegas, dtype=float)
     if curve is None:
-        curve = frequency_response(system, forcing, e, w)
+        curve = frequency_response(system, forcing, e, w, multistart=multistart)
     if curve.sweep_up is None or not len(curve.sweep_up):
         curve.sweep_up = _sweep(system, forcing, e, w)
         curve.sweep_down = _sweep(system, forcing, e, w[::-1])[::-1]
@@ -161,7 +165,8 @@ def _design_chunk(payload: tuple[_DesignBase, tuple[str, ...], list[int], np.nda
         system = _design_system(base, names, v)
         row: dict[str, Any] = {"run": int(run)}
         row.update(zip(names, (float(x) for x in v), strict=True))
-        row.update(design_row(system, base.forcing, base.e, np.array(base.omegas)))
+        row.update(design_row(system, base.forcing, base.e, np.array(base.omegas),
+                              multistart=base.multistart))  # fmt: skip
         rows.append(row)
     return rows
 
@@ -195,13 +200,15 @@ def design_map(
     out: str | os.PathLike | None = None,
     force: bool = False,
     progress: bool | Callable[[int, int], None] = False,
+    multistart: int = FREQUENCIES,
 ):
     """The clearance design map (module text): one row per point of ``grid`` (``{name:
     values}`` over :data:`DESIGN_SWEEPABLE`, values in SI or with units) for the contact ``e``
     (Newton's restitution of rigid impacts, or a :class:`~symimpact.forced.CompliantContact`)
     under ``forcing`` over the band ``omegas`` [rad/s].  ``executor``,
     ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
-    :func:`symimpact.maps.parameter_map`: the same executors, and a resumable ``out`` file."""
+    :func:`symimpact.maps.parameter_map`: the same executors, and a resumable ``out`` file;
+    ``multistart``: frequencies of each curve's multi-start (0: none)."""
     system, forcing, e = checked(system, forcing, e)
     if not isinstance(grid, Mapping) or not grid:
         raise ParameterError("grid", "give the clearance (gap) and/or mass_ratio values")
@@ -220,7 +227,8 @@ def design_map(
             "a design needs a driving amplitude (F0 or X_b not zero): undriven, the primary "
             "stays at rest and every peak ratio is 0/0",
         )
-    base = _DesignBase(system, forcing, e, tuple(float(x) for x in w))
+    multistart = checks.whole_number("multistart", multistart, 0, 1000)
+    base = _DesignBase(system, forcing, e, tuple(float(x) for x in w), multistart)
     for row in points.values:  # a bad point fails here, in one line, before any run
         _design_system(base, points.names, row)
     executor = _executor(executor, workers, client, scheduler)
@@ -229,6 +237,8 @@ def design_map(
         contact = {"e": e} if is_rigid(e) else e.as_dict()
         settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, **contact,
                     "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip
+        if multistart != FREQUENCIES:  # (files written with the default carry no entry)
+            settings["multistart"] = multistart
         store = MapStore(out, system=system, points=points, settings=settings, force=force,
                          outputs=DESIGN_OUTPUTS, table=design_table)  # fmt: skip
     try:
@@ -272,6 +282,7 @@ def refine_best(
     omegas: Any,
     *,
     tolerance: float = TOLERANCE,
+    multistart: int = FREQUENCIES,
 ) -> list[dict[str, Any]]:
     """For each mass ratio (or impact mass) of a design ``table`` (from :func:`design_map` over
     the clearance), the best clearance refined: Brent's bounded method on the peak of
@@ -279,7 +290,7 @@ def refine_best(
     end where the best lies there), stopped at ``tolerance`` [m] on d.  Each row: the design
     row at the refined d, with ``tolerance``, ``grid_gap`` (the grid's best), ``evaluations``
     and, for rigid impacts, ``peak_e_minus`` / ``peak_e_plus``: the peak at e − 0.1 and e + 0.1
-    (within 0–1) for the refined d."""
+    (within 0–1) for the refined d; ``multistart`` as for :func:`design_row`."""
     from scipy.optimize import minimize_scalar
 
     system, forcing, e = checked(system, forcing, e)
@@ -303,7 +314,7 @@ def refine_best(
 
         def row(d: float, sys_=base, cache=cache) -> dict[str, Any]:
             if d not in cache:
-                cache[d] = design_row(sys_.with_(gap=d), forcing, e, w)
+                cache[d] = design_row(sys_.with_(gap=d), forcing, e, w, multistart=multistart)
             return cache[d]
 
         lo, hi = gaps[max(i - 1, 0)], gaps[min(i + 1, len(gaps) - 1)]
@@ -318,6 +329,7 @@ def refine_best(
         if is_rigid(e):
             for key, de in (("peak_e_minus", -0.1), ("peak_e_plus", 0.1)):
                 ee = min(max(float(e) + de, 0.0), 1.0)
-                result[key] = design_row(base.with_(gap=best_d), forcing, ee, w)["peak_amplitude"]
+                result[key] = design_row(base.with_(gap=best_d), forcing, ee, w,
+                                         multistart=multistart)["peak_amplitude"]  # fmt: skip
         out.append(result)
     return out

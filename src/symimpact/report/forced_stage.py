@@ -110,9 +110,11 @@ def _curves(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: f
                 located.append([gap_mm, i, f.kind, f.omega, f.amplitude * 1e3])
         row = design_row(system, forcing, e, omegas, curve=frf)
         swept = max(float(np.max(frf.sweep_up[:, 1])), float(np.max(frf.sweep_down[:, 1])))
+        cov = frf.coverage
         peaks.append([gap_mm, len(frf.branches), row["peak_amplitude"] * 1e3, row["peak_omega"],
                       row["peak_motion"], swept * 1e3, row["baseline_peak"] * 1e3,
-                      row["peak_ratio"]])  # fmt: skip
+                      row["peak_ratio"], f"{sum(cov.traced)} of {len(cov.traced)}",
+                      len(cov.missed)])  # fmt: skip
         tick()
     save(fig, folder, "forced_frc")
     s.blocks.append(
@@ -142,13 +144,20 @@ def _curves(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: f
                 "largest swept [mm]",
                 "without the damper [mm]",
                 "ratio",
+                "periodic attractors traced",
+                "not traced",
             ],
             peaks,
-            [".3g", None, ".4g", ".4g", None, ".4g", ".4g", ".3f"],
-            note="The peak is the largest amplitude of the stable branches, of the motion "
-            "without impacts (the impact mass at rest midway, where the primary alone stays "
-            "inside the clearance) and of the sweeps; a swept amplitude names the peak where it "
-            "exceeds the others by more than its transient, 1e-4 (symimpact.maps.design).",
+            [".3g", None, ".4g", ".4g", None, ".4g", ".4g", ".3f", None, None],
+            note="The peak is located on the stable branches (their maxima, and the bifurcations "
+            "and grazings that end their stable stretches) and on the motion without impacts "
+            "(the impact mass at rest midway, where the primary alone stays inside the "
+            "clearance), beside the primary alone's located resonance (symimpact.forced.peak); "
+            "a chattering or non-periodic motion found by the multi-start (15 frequencies, 4 "
+            "starts each) or a swept amplitude names the peak where it exceeds them "
+            "(symimpact.maps.design). The last two columns: how many of the multi-start's "
+            "periodic attractors lie on a traced branch, and how many attractors no branch can "
+            "hold (chatter, sticking, not periodic) or misses (symimpact.forced.coverage).",
         )
     )
     s.blocks.append(
