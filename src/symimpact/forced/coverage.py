@@ -14,7 +14,11 @@ from :data:`STARTS` initial states until the primary's free transient has decaye
 - **no impact**: the impact mass floats at rest (the primary's linear response);
 - **chatter or sticking**: periodic or not, the motion has accumulations of impacts or sticking
   phases, where shooting does not apply;
-- **not periodic**: no period up to 8 (quasi-periodic or chaotic);
+- **chaotic** or **quasi-periodic** (rigid impacts): no period up to 8, and the largest
+  Lyapunov exponent (:func:`lyapunov`, carried through the impacts by the saltation matrices)
+  positive, or zero within LYAPUNOV_ZERO a period;
+- **not periodic**: no period up to 8 where no exponent can be computed (a compliant contact, or
+  chatter on the way);
 - **not settled**: a transient still decaying over the kept periods, or an impact mass drifting
   with fewer than one impact a period where the motion without impacts exists (the floating
   mass is neutral: with e < 1 it creeps towards rest over many more periods).  Not an attractor:
@@ -31,10 +35,10 @@ import numpy as np
 
 from ..errors import SymimpactError
 from ..system import ImpactSystem
-from .contact_law import simulation_arguments
+from .contact_law import is_rigid, simulation_arguments
 from .forcing import Forcing
-from .peak import linear_amplitude
-from .shooting import MAX_PERIODS, shoot
+from .peak import UNTRACEABLE, linear_amplitude
+from .shooting import MAX_PERIODS, monodromy, shoot
 from .simulation import simulate_forced
 
 #: Frequencies of the multi-start, spread evenly inside the band (its ends excluded).
@@ -45,6 +49,13 @@ STARTS = 4
 WARMUP, KEPT = 400, 20
 #: The periods a periodic attractor may have to be shot and traced.
 MAX_SHOT_PERIODS = 4
+#: Forcing periods over which the largest Lyapunov exponent is averaged, in this many stretches
+#: whose spread says how well it is known.
+LYAPUNOV_PERIODS, LYAPUNOV_BLOCKS = 400, 4
+#: A Lyapunov exponent whose size over a forcing period, abs(λ)·T, is below this is zero: the
+#: motion is quasi-periodic (measured on the README system just past its Neimark–Sacker point:
+#: λT = 0.003, against 1.05 for its chaotic motion at 28.75 rad/s).
+LYAPUNOV_ZERO = 0.01
 
 
 @dataclass(frozen=True)
@@ -62,6 +73,10 @@ class Attractor:
     impacts_per_period: float
     state: tuple[float, float, float, float]
     stable: bool | None = None
+    #: the largest Lyapunov exponent [1/s] of a motion that does not repeat, and half the range
+    #: of its estimates over LYAPUNOV_BLOCKS consecutive stretches (None where not computed)
+    lyapunov: float | None = None
+    lyapunov_spread: float | None = None
 
     def as_dict(self) -> dict[str, Any]:
         return {k: v for k, v in self.__dict__.items() if k != "state"}
@@ -87,10 +102,9 @@ class Coverage:
     @property
     def missed(self) -> list[Attractor]:
         """The attractors not on a traced branch: periodic ones missed, and every motion whose
-        kind shooting cannot follow (chatter or sticking, not periodic)."""
+        kind shooting cannot follow (UNTRACEABLE)."""
         periodic = [a for a, t in zip(self.periodic, self.traced, strict=True) if not t]
-        return periodic + [a for a in self.attractors
-                           if a.kind in ("chatter or sticking", "not periodic")]  # fmt: skip
+        return periodic + [a for a in self.attractors if a.kind in UNTRACEABLE]
 
     def as_dict(self) -> dict[str, Any]:
         return {
@@ -140,8 +154,22 @@ def attractor(system: ImpactSystem, forcing: Forcing, e: Any, start) -> Attracto
         drifting = (
             st.impacts_per_period < 1 and linear_amplitude(system, forcing, forcing.omega) < h
         )
-        kind = "not settled" if st.settling or drifting else "not periodic"
-        return Attractor(forcing.omega, st.amplitude, kind, 0, st.impacts_per_period, end)
+        if drifting:
+            return Attractor(forcing.omega, st.amplitude, "not settled", 0,
+                             st.impacts_per_period, end)  # fmt: skip
+        lam = spread = None
+        kind = "not settled" if st.settling else "not periodic"
+        if is_rigid(e):
+            try:
+                lam, spread = lyapunov(system, forcing, e, end)
+            except SymimpactError:  # chatter or sticking on the way: no monodromy there
+                pass
+        if lam is not None:
+            kind = _kind(lam, spread, forcing.period)
+            if kind == "quasi-periodic" and st.settling:
+                kind = "not settled"  # a zero exponent while the section still draws in
+        return Attractor(forcing.omega, st.amplitude, kind, 0, st.impacts_per_period, end,
+                         lyapunov=lam, lyapunov_spread=spread)  # fmt: skip
     k = st.period_multiple
     chatter = Attractor(forcing.omega, st.amplitude, "chatter or sticking", k,
                         st.impacts_per_period, end)  # fmt: skip
@@ -155,12 +183,48 @@ def attractor(system: ImpactSystem, forcing: Forcing, e: Any, start) -> Attracto
                      orbit.state, orbit.stable)  # fmt: skip
 
 
+def lyapunov(
+    system: ImpactSystem, forcing: Forcing, e: Any, state: Any,
+    periods: int = LYAPUNOV_PERIODS,
+) -> tuple[float, float]:  # fmt: skip
+    """The largest Lyapunov exponent λ [1/s] of the motion from ``state`` (x, ẋ, z, ẏ) at the
+    forcing phase of ``forcing``, rigid impacts of restitution ``e``: a tangent vector carried
+    period by period by the stroboscopic map's Jacobian (Step 8's flight transition matrices and
+    Step 9's saltation matrices at the impacts, :func:`symimpact.forced.monodromy`) and
+    renormalised, λ = Σ ln‖v‖ / (``periods``·T); with half the range of the estimates over
+    LYAPUNOV_BLOCKS equal stretches.  Raises where the motion chatters or sticks."""
+    s = np.array(state, dtype=float)
+    v = np.ones(4) / 2.0
+    logs = np.empty(periods)
+    for i in range(periods):
+        s_next, J, _ = monodromy(system, forcing, e, s, 1)
+        v = J @ v
+        norm = float(np.linalg.norm(v))
+        logs[i] = math.log(norm)
+        v /= norm
+        s = s_next
+    rates = logs / forcing.period
+    blocks = [float(b.mean()) for b in np.array_split(rates, LYAPUNOV_BLOCKS)]
+    return float(rates.mean()), 0.5 * (max(blocks) - min(blocks))
+
+
+def _kind(lam: float, spread: float, period: float) -> str:
+    """ "chaotic" for an exponent above zero by more than LYAPUNOV_ZERO a period and three
+    spreads, "quasi-periodic" for one within LYAPUNOV_ZERO a period of zero, "not settled" for a
+    negative one (the motion still converges onto something periodic)."""
+    if lam * period > LYAPUNOV_ZERO and lam > 3 * spread:
+        return "chaotic"
+    if abs(lam) * period <= LYAPUNOV_ZERO:
+        return "quasi-periodic"
+    return "not settled" if lam < 0 else "not periodic"
+
+
 def attractors(
     system: ImpactSystem, forcing: Forcing, e: Any, band: tuple[float, float],
     n: int = FREQUENCIES,
 ) -> list[Attractor]:  # fmt: skip
     """The attractors of the multi-start over ``band`` (module text), each distinct one at a
-    frequency once (periodic: the same period and amplitude to 1e-9)."""
+    frequency once."""
     found: list[Attractor] = []
     for w in frequencies(band, n):
         f = Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=float(w), phase=forcing.phase)
@@ -170,9 +234,16 @@ def attractors(
                 a = attractor(system, f, e, s)
             except SymimpactError:
                 continue
-            if not any(b.kind == a.kind and b.period_multiple == a.period_multiple
-                       and abs(b.amplitude - a.amplitude) <= 1e-9 * max(a.amplitude, 1e-300)
-                       for b in here):  # fmt: skip
+            # a periodic motion found again: the same period and amplitude to 1e-9; a chaotic,
+            # quasi-periodic or not periodic one: its amplitude is a sample of its envelope, so
+            # the same kind within 5 % is the same attractor (the largest sample kept)
+            tol = 5e-2 if a.kind in UNTRACEABLE else 1e-9
+            same = [i for i, b in enumerate(here)
+                    if b.kind == a.kind and b.period_multiple == a.period_multiple
+                    and abs(b.amplitude - a.amplitude) <= tol * max(a.amplitude, 1e-300)]  # fmt: skip
+            if not same:
                 here.append(a)
+            elif a.amplitude > here[same[0]].amplitude:
+                here[same[0]] = a
         found += here
     return found

@@ -32,6 +32,9 @@ from ..system import ImpactSystem
 from .continuation import Branch, orbit_between
 from .forcing import Forcing
 
+#: The kinds of steady motion (:mod:`symimpact.forced.coverage`) no branch of periodic orbits can
+#: hold.
+UNTRACEABLE = ("chatter or sticking", "not periodic", "chaotic", "quasi-periodic")
 #: Brent's method stops when the bracket on Ω is below this share of Ω: the amplitude is flat to
 #: second order at a maximum, so the located amplitude is good to ~(1e-9)² relative.
 XTOL = 1e-9
@@ -175,12 +178,13 @@ def curve_peak(
     band: tuple[float, float], no_impact: list[tuple[float, float]], others: Any = (),
 ) -> Peak | None:  # fmt: skip
     """The largest of :func:`stable_peak`, :func:`no_impact_peak` and the steady motions that no
-    branch can hold (``others``: attractors of :mod:`symimpact.forced.coverage` of kind "chatter
-    or sticking" or "not periodic", their largest abs(x) over the kept periods, at the
+    branch can hold (``others``: attractors of :mod:`symimpact.forced.coverage` of the kinds
+    UNTRACEABLE — chatter or sticking, chaotic, quasi-periodic, not periodic — their largest
+    abs(x) over the kept periods, at the
     multi-start's frequency): the worst steady motion found over ``band``."""
     found = [p for p in (stable_peak(branches, system, forcing, e, band),
                          no_impact_peak(system, forcing, no_impact)) if p is not None]  # fmt: skip
     found += [Peak(a.amplitude, a.omega, a.kind, "multi-start", None,
                    a.period_multiple or None, a.impacts_per_period)
-              for a in others if a.kind in ("chatter or sticking", "not periodic")]  # fmt: skip
+              for a in others if a.kind in UNTRACEABLE]  # fmt: skip
     return max(found, key=lambda p: p.amplitude) if found else None

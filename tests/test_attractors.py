@@ -1,0 +1,88 @@
+"""Attractors that are not periodic (issue 33, item 4): the multi-start classifies them by the
+largest Lyapunov exponent, carried through the impacts by the saltation matrices.  Checked by
+what the exponent does not use: a chaotic motion's exponent is the growth of the distance between
+two simulations started 1e-9 apart; a quasi-periodic motion's section points fill a closed curve
+and never repeat.  The README's system (M 1 kg, K 1000 N/m, C 0.5 N s/m, m 0.05 kg, d 20 mm,
+F0 2 N, e 0.6)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from symimpact.forced import Forcing, simulate_forced
+from symimpact.forced.coverage import LYAPUNOV_ZERO, attractor, lyapunov
+from symimpact.forced.frf import frequency_response
+from symimpact.system import ImpactSystem
+
+SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+E = 0.6
+
+
+def _end(f, state=(0.0, 0.0, 0.0, 0.0), periods=420):
+    x, v, z, u = state
+    res = simulate_forced(SYSTEM, f, e=E, periods=periods, discard=periods - 20, x0=x, xdot0=v,
+                          y0=x + z, ydot0=u)  # fmt: skip
+    x, v, y, u = res.final_state
+    return (x, v, y - x, u), res
+
+
+def test_the_chaotic_motion_at_28_75_rad_s():
+    f = Forcing(F0=2.0, omega=28.75)
+    a = attractor(SYSTEM, f, E, (0.0, 0.0, 0.0, 0.0))
+    assert a.kind == "chaotic" and a.lyapunov * f.period > 100 * LYAPUNOV_ZERO
+    # over twice the periods the exponent agrees within the spreads of both estimates
+    lam2, spread2 = lyapunov(SYSTEM, f, E, a.state, periods=800)
+    assert abs(lam2 - a.lyapunov) <= 3 * (spread2 + a.lyapunov_spread)
+    # independent of the tangent map: two runs 1e-9 apart separate at about exp(λt) until
+    # the distance saturates; the fitted rate over the first 15 periods is within a factor
+    # two of λ (a finite-time estimate of one pair against a 400-period average)
+    s, _ = _end(f)
+    T = f.period
+    x, v, z, u = s
+    one = simulate_forced(SYSTEM, f, e=E, periods=15, x0=x, xdot0=v, y0=x + z, ydot0=u)
+    two = simulate_forced(SYSTEM, f, e=E, periods=15, x0=x + 1e-9 * abs(x or 1e-3), xdot0=v,
+                          y0=x + z, ydot0=u)  # fmt: skip
+    from symimpact.forced.simulation import state_at
+
+    times = np.arange(1, 16) * T
+    d = np.linalg.norm(state_at(one, times)[:, :2] - state_at(two, times)[:, :2], axis=1)
+    growing = d < 1e-4  # before saturation at the attractor's size
+    rate = np.polyfit(times[growing], np.log(d[growing]), 1)[0]
+    assert 0.5 * a.lyapunov < rate < 2.0 * a.lyapunov
+
+
+def test_a_quasi_periodic_motion_past_the_neimark_sacker_point():
+    # the stable symmetric orbit loses stability at 41.42 rad/s through a complex pair: just
+    # past it a run from the orbit's state settles on an invariant curve of the section
+    c = frequency_response(SYSTEM, Forcing(F0=2.0, omega=36.0), E, np.linspace(36, 43, 36),
+                           sweeps=False, multistart=0)  # fmt: skip
+    ns = next(f for b in c.branches for f in b.bifurcations if f.kind == "neimark-sacker")
+    assert ns.omega == pytest.approx(41.4206, abs=1e-3)
+    b, p = next((b, p) for b in c.branches for p in b.points
+                if ns.omega < p.omega < ns.omega + 0.1 and not p.stable)  # fmt: skip
+    f = Forcing(F0=2.0, omega=p.omega, phase=p.phase)
+    x, v, z, u = p.state
+    s, _ = _end(f, (x * (1 + 1e-3), v, z, u), periods=1500)
+    a = attractor(SYSTEM, f, E, s)
+    assert a.kind == "quasi-periodic", a
+    assert abs(a.lyapunov) * f.period <= LYAPUNOV_ZERO
+    # the section: 400 points that never repeat and lie on closed curves: their nearest
+    # neighbours are as close as points spread along a curve (a few thousandths of its size),
+    # not as points filling an area (1/20 of it) or repeating (zero)
+    _, res = _end(f, s, periods=400)
+    from symimpact.forced.simulation import state_at
+
+    sec = state_at(res, np.arange(1, 400) * f.period)[:, :2] / np.array(
+        [p.amplitude, p.amplitude * p.omega]
+    )
+    size = float(np.ptp(sec[:, 0]) + np.ptp(sec[:, 1]))
+    assert size > 1e-4  # not a fixed point
+    gaps = np.linalg.norm(sec[:, None, :] - sec[None, :, :], axis=2)
+    np.fill_diagonal(gaps, np.inf)
+    nearest = gaps.min(axis=1)
+    assert np.min(nearest) > 1e-9 * size  # it never comes back
+    assert np.median(nearest) < 2e-2 * size
+    assert math.isfinite(a.amplitude)
