@@ -61,8 +61,8 @@ def test_a_quasi_periodic_motion_past_the_neimark_sacker_point():
                            sweeps=False, multistart=0)  # fmt: skip
     ns = next(f for b in c.branches for f in b.bifurcations if f.kind == "neimark-sacker")
     assert ns.omega == pytest.approx(41.4206, abs=1e-3)
-    b, p = next((b, p) for b in c.branches for p in b.points
-                if ns.omega < p.omega < ns.omega + 0.1 and not p.stable)  # fmt: skip
+    p = next(p for b in c.branches for p in b.points
+             if ns.omega < p.omega < ns.omega + 0.1 and not p.stable)  # fmt: skip
     f = Forcing(F0=2.0, omega=p.omega, phase=p.phase)
     x, v, z, u = p.state
     s, _ = _end(f, (x * (1 + 1e-3), v, z, u), periods=1500)
