@@ -77,7 +77,7 @@ CASES = {
     slow_flow_responses: ({"system": SYSTEM, "forcing": FORCING, "e": E}, None),
     best_clearance: ({"system": SYSTEM, "forcing": FORCING, "e": E}, None),
     design_map: ({"system": SYSTEM, "forcing": FORCING, "e": E, "omegas": BAND,
-                  "grid": {"gap": [0.02]}, "executor": "serial", "multistart": 0}, None),
+                  "grid": {"gap": [2.0]}, "executor": "serial", "multistart": 0}, None),
 }  # fmt: skip
 
 

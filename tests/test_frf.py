@@ -147,12 +147,12 @@ def test_sweep_jumps_sit_where_the_motion_they_leave_ends(curve):
     (its ratio between neighbours differs from the primary alone's by more than 10 %) from a
     motion the curve traces, that motion ends within one sweep step: a located end of the
     branch's stable run (a fold, grazing, branch point, period doubling or Neimark–Sacker point),
-    or the located grazing of the motion without impacts (X(Ω) = d/2).  Here five jumps leave a
-    traced motion: both sweeps start from rest on the motion without impacts and jump where it
-    grazes (up near 28.3 rad/s, down near 34.6); the up sweep leaves a period-1 branch at its
-    Neimark–Sacker point near 33.67 rad/s; both leave a branch started from their own state near
-    31.1 rad/s where it ends.  Jumps between motions the curve does not trace (chatter near
-    resonance) are not claimed."""
+    or the located grazing of the motion without impacts (X(Ω) = d/2).  Here at least three
+    jumps leave a traced motion: both sweeps start from rest on the motion without impacts and
+    jump where it grazes (up near 28.3 rad/s, down near 34.6); the up sweep leaves a period-1
+    branch at its Neimark–Sacker point near 33.67 rad/s.  Jumps between motions the curve does
+    not trace (the chattering and chaotic motions near resonance, which the sweeps follow from
+    31 to 32 rad/s) are not claimed."""
     w = curve.omegas
     f0 = Forcing(F0=2.0, omega=30.0)
     base = _linear_amplitude(ISSUE, f0, w)
@@ -178,7 +178,7 @@ def test_sweep_jumps_sit_where_the_motion_they_leave_ends(curve):
             lo, hi = sorted((ws[i - 1], ws[i]))
             assert any(lo - step <= x <= hi + step for x in ends[left]), (left, lo, hi)
             checked += 1
-    assert checked >= 4
+    assert checked >= 3
 
 
 def test_a_vanishing_impact_mass_gives_the_linear_response():
