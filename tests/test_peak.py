@@ -122,3 +122,12 @@ def test_the_peak_does_not_depend_on_the_frequency_step_or_the_units(curve):
     assert scaled.peak.omega == pytest.approx(curve.peak.omega, rel=1e-6)
     assert scaled.baseline_peak.amplitude == pytest.approx(
         1000 * curve.baseline_peak.amplitude, rel=1e-12)  # fmt: skip
+
+
+def test_undriven_there_is_nothing_to_reduce():
+    # F0 = 0: the primary alone rests (baseline 0 m) and the reduction is not a number (JSON
+    # null), not a division by zero (tests/test_limits.py's "no forcing" frf found it)
+    c = frequency_response(SYSTEM, Forcing(F0=0.0, omega=34.0), E, np.linspace(34, 38, 5),
+                           sweeps=False, multistart=0)  # fmt: skip
+    assert c.baseline_peak.amplitude == 0.0
+    assert math.isnan(c.reduction) and c.as_dict()["reduction"] is None

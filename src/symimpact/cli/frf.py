@@ -182,7 +182,7 @@ def peak_lines(frf) -> list[str]:
                else f"located: {p.where}")  # fmt: skip
         lines = [f"peak with the damper: {at(p)} ({kind}; {how})"]
     lines.append(f"peak without the damper: {at(frf.baseline_peak)}")
-    if frf.peak is not None:
+    if not math.isnan(frf.reduction):
         lines.append(f"reduction: {100 * frf.reduction:.4g} %")
     cov = frf.coverage
     if cov.attractors:

@@ -98,8 +98,8 @@ class FrequencyResponse:
     @property
     def reduction(self) -> float:
         """1 − peak/baseline peak: the share of the primary's resonant amplitude the damper
-        removes over the band (NaN without a located peak)."""
-        if self.peak is None or self.baseline_peak is None:
+        removes over the band (NaN without a located peak, or undriven: no baseline to reduce)."""
+        if self.peak is None or self.baseline_peak is None or not self.baseline_peak.amplitude > 0:
             return math.nan
         return 1.0 - self.peak.amplitude / self.baseline_peak.amplitude
 
