@@ -363,8 +363,7 @@ def continue_orbit(
         )
     if parameter == "e" and not (0 <= lo and hi <= 1):
         raise ParameterError("bounds", f"e must stay within 0–1, got {lo:g}–{hi:g}")
-    start = {"omega": forcing.omega, "gap": system.gap, "F0": forcing.F0, "X_b": forcing.X_b,
-             "e": float(e) if is_rigid(e) else math.nan}[parameter]  # fmt: skip
+    start = _value_of(parameter, system, forcing, e)
     if not lo <= start <= hi:
         raise ParameterError("bounds", f"must contain the start, {parameter} = {start:g}")
     checks.choice("direction", direction, (1, -1))
@@ -620,9 +619,9 @@ def switch_branch(
     step: float = 0.02,
 ) -> list[Branch]:
     """The branches that leave ``bifurcation`` (a branch point or period doubling located on a
-    period-``periods`` branch; see :func:`branch_starts`), each traced both ways within
-    ``bounds`` (:func:`trace_branch`).  Of a symmetry-breaking pitchfork's two starts, mirror
-    images of each other with the same amplitude, one branch is traced (``mirrored``).
+    period-``periods`` branch; see :func:`branch_starts`), each followed away from it within
+    ``bounds`` (:func:`leave`).  Of a symmetry-breaking pitchfork's two starts, mirror images of
+    each other with the same amplitude, one branch is traced (``mirrored``).
     Eq. F1, F2 along the orbits (Step 8, Step 9)."""
     starts = branch_starts(system, forcing, e, bifurcation, bounds, parameter=parameter,
                            periods=periods, step=step)  # fmt: skip
@@ -704,9 +703,14 @@ def _same_phase(a: float | None, b: float | None) -> bool:
 
 def _value(parameter: str, s: BranchStart) -> float:
     """The continued parameter's value at a start."""
-    f = s.forcing
-    return {"omega": f.omega, "gap": s.system.gap, "F0": f.F0, "X_b": f.X_b,
-            "e": float(s.e) if is_rigid(s.e) else math.nan}[parameter]  # fmt: skip
+    return _value_of(parameter, s.system, s.forcing, s.e)
+
+
+def _value_of(parameter: str, system: ImpactSystem, forcing: Forcing, e: Any) -> float:
+    """The value of ``parameter`` (one of :data:`PARAMETERS`) in ``system``, ``forcing``, ``e``
+    (NaN for e with a compliant contact)."""
+    return {"omega": forcing.omega, "gap": system.gap, "F0": forcing.F0, "X_b": forcing.X_b,
+            "e": float(e) if is_rigid(e) else math.nan}[parameter]  # fmt: skip
 
 
 def orbit_amplitude(start: BranchStart) -> float:

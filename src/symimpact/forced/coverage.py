@@ -39,7 +39,7 @@ from .contact_law import is_rigid, simulation_arguments
 from .forcing import Forcing
 from .peak import UNTRACEABLE, linear_amplitude
 from .shooting import MAX_PERIODS, monodromy, shoot
-from .simulation import simulate_forced
+from .simulation import settling_periods, simulate_forced
 
 #: Frequencies of the multi-start, spread evenly inside the band (its ends excluded).
 FREQUENCIES = 15
@@ -131,17 +131,10 @@ def _starts(system: ImpactSystem, forcing: Forcing) -> list[tuple[float, float, 
             (0.0, w * A, 0.0, -w * A)][:STARTS]  # fmt: skip
 
 
-def _warmup(system: ImpactSystem, forcing: Forcing) -> int:
-    decay = system.C / (2.0 * system.M)  # ζω_n [1/s]
-    if not decay > 0:
-        return WARMUP
-    return min(WARMUP, math.ceil(-math.log(1e-6) / decay / forcing.period))
-
-
 def attractor(system: ImpactSystem, forcing: Forcing, e: Any, start) -> Attractor:
     """The steady motion a run from ``start`` (x, ẋ, z, ẏ) settles on (module text)."""
     x, v, z, u = start
-    n = _warmup(system, forcing) + KEPT
+    n = settling_periods(system, forcing, KEPT, WARMUP + KEPT)
     res = simulate_forced(system, forcing, **simulation_arguments(e), periods=n, discard=n - KEPT,
                           x0=x, xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
     st = res.steady

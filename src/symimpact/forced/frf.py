@@ -38,6 +38,7 @@ from .contact_law import checked, is_rigid, simulation_arguments
 from .continuation import (
     SWITCHES,
     Branch,
+    _repeats,
     branch_starts,
     leave,
     orbit_amplitude,
@@ -48,8 +49,8 @@ from .coverage import FREQUENCIES, Coverage, attractors
 from .forcing import Forcing
 from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
-from .shooting import monodromy, shoot, shoot_from_rest
-from .simulation import simulate_forced
+from .shooting import shoot, shoot_from_rest
+from .simulation import settling_periods, simulate_forced
 
 #: Periods kept for each brute-force sweep point's steady state; before them the run lasts until
 #: the free transient has decayed to SWEEP_SETTLED of its start, exp(−ζω_n·t) (at most
@@ -253,7 +254,7 @@ def frequency_response(
                 follow("closed form", 1, *_section_state(o, float(omega), h, system, forcing))
         for k in (1, 2):
             try:
-                shot = shoot_from_rest(system, f, e, warmup=_settling_periods(system, f, 20, 300),
+                shot = shoot_from_rest(system, f, e, warmup=settling_periods(system, f, 20, 300),
                                        periods=k)  # fmt: skip
             except SymimpactError as exc:
                 failures.setdefault(f"{k} period(s) from rest: {exc}", []).append(omega)
@@ -392,21 +393,9 @@ def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):
 def _repeats_every_period(system, forcing, e, orbit) -> bool:
     """Whether a period-k orbit's state comes back after one period already (a period-1 orbit
     found again as period k): to 1e-8 of its scale."""
-    ps = monodromy(system, forcing, e, orbit.state, 1)[0]
     scale = np.array([orbit.amplitude, orbit.amplitude * forcing.omega, system.gap / 2,
                       orbit.amplitude * forcing.omega])  # fmt: skip
-    return bool(np.max(np.abs((ps - np.array(orbit.state)) / scale)) < 1e-8)
-
-
-def _settling_periods(
-    system: ImpactSystem, forcing: Forcing, kept: int, most: int, settled: float = SWEEP_SETTLED
-) -> int:
-    """Forcing periods for the primary's free transient to fall to ``settled`` of its start,
-    exp(−ζω_n·t) (ζω_n = C/(2M)), plus ``kept``; at most ``most`` (no damping: ``most``)."""
-    decay = system.C / (2.0 * system.M)  # ζω_n [1/s]
-    if not decay > 0:
-        return most
-    return min(most, math.ceil(-math.log(settled) / decay / forcing.period) + kept)
+    return _repeats((system, forcing, e), orbit.state, 1, scale)
 
 
 @dataclass(frozen=True)
@@ -427,7 +416,7 @@ def _sweep_runs(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> l
     rows = []
     for omega in omegas:
         f = _forcing(forcing, float(omega))
-        periods = _settling_periods(system, f, SWEEP_KEPT, SWEEP_MAX, settled)
+        periods = settling_periods(system, f, SWEEP_KEPT, SWEEP_MAX, settled)
         res = simulate_forced(system, f, **simulation_arguments(e), periods=periods,
                               discard=periods - SWEEP_KEPT, x0=state[0], xdot0=state[1],
                               y0=state[2], ydot0=state[3])  # fmt: skip

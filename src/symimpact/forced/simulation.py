@@ -224,6 +224,18 @@ def _refuse_cancelling_flight(system: ImpactSystem, forcing: Forcing, contact: s
             )
 
 
+def settling_periods(
+    system: ImpactSystem, forcing: Forcing, kept: int, most: int, settled: float = 1e-6
+) -> int:
+    """Forcing periods for the primary's free transient to fall to ``settled`` of its start,
+    exp(−ζω_n·t) (ζω_n = C/(2M), Step 8's free decay), plus ``kept``; at most ``most`` (no
+    damping: ``most``)."""
+    decay = system.C / (2.0 * system.M)  # ζω_n [1/s]
+    if not decay > 0:
+        return most
+    return min(most, math.ceil(-math.log(settled) / decay / forcing.period) + kept)
+
+
 def within_walls(name: str, x: float, y: float, h: float) -> None:
     """Refuse a start of rigid impacts with the impact mass beyond a wall, abs(y − x) > d/2 = h,
     allowing the rounding y − x carries (a few units in the last place of the larger), which a

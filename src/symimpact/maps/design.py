@@ -306,10 +306,8 @@ def refine_best(
         gaps = g["gap"].to_numpy(dtype=float)
         i = int(np.argmin(g["peak_amplitude"].to_numpy(dtype=float)))
         first = g.iloc[0]
-        changes = {c: float(first[c]) for c in by}
-        if "mass_ratio" in changes:
-            changes = {"m": changes.pop("mass_ratio") * system.M}
-        base = system.with_(**changes) if changes else system
+        base = _design_system(_DesignBase(system, forcing, e, tuple(w)), by,
+                              [float(first[c]) for c in by])  # fmt: skip
         cache: dict[float, dict[str, Any]] = {}
 
         def row(d: float, sys_=base, cache=cache) -> dict[str, Any]:
