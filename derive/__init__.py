@@ -27,6 +27,7 @@ STEPS = (
     "periodic_orbit",
     "hunt_crossley",
     "slow_flow",
+    "hertz_contact",
 )
 
 

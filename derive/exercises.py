@@ -291,4 +291,35 @@ print(f"best clearance about {1e3 * f(best):.3f} mm at xi = {best:.3f}: "
       f"primary peak {1e3 * best * f(best) / 2:.3f} mm")""",
         ),
     ),
+    "hertz_contact": (
+        Exercise(
+            "A steel ball against a steel flat",
+            "The paper's K_Hz = 1000 N/m^1.5 beside a 20 mm steel sphere on a steel flat "
+            "(E = 210 GPa, ν = 0.3): the same law, ten million times stiffer.",
+            """steel = {E1: 210e9, E2: 210e9, nu1: sp.Rational(3, 10), nu2: sp.Rational(3, 10)}
+Es_v = E_star.subs(steel)
+R_v = radius.subs({R1: sp.Rational(1, 100), kappa2: 0})
+K_v = k_hz.subs({Es: Es_v, R: R_v})
+print(f"E* = {sp.N(Es_v / 1e9, 5)} GPa, R = {sp.N(R_v * 1e3, 4)} mm, "
+      f"K_Hz = {sp.N(K_v, 4)} N/m^1.5 = {sp.N(K_v / 1000, 3)} x the paper's")""",
+        ),
+        Exercise(
+            "Where yield starts, for other Poisson ratios",
+            "The depth of the largest σ_r − σ_z on the axis and the peak pressure p₀/Y at which it "
+            "reaches the yield strength.",
+            """for nv in ("0.2", "0.3", "0.4", "0.5"):
+    f = sp.lambdify(zeta, difference.subs(nu, sp.Rational(nv)), "mpmath")
+    zs = mp.findroot(lambda t: mp.diff(f, t), mp.mpf("0.5"))
+    print(f"nu = {nv}: depth {mp.nstr(zs, 4)} a, p0 = {mp.nstr(1 / f(zs), 4)} Y")""",
+        ),
+        Exercise(
+            "Restitution against impact speed",
+            "Thornton's e against v₀/v_y, beside the power law v₀^(−1/4) it tends to at high "
+            "speed.",
+            """f = sp.lambdify(ratio_v, printed, "mpmath")
+for k in (1, 2, 5, 10, 100, 1000):
+    ev = f(mp.mpf(1) / k)
+    print(f"v0/vy = {k:5d}: e = {mp.nstr(ev, 5)}, e * (v0/vy)^(1/4) = {mp.nstr(ev * k**0.25, 5)}")""",
+        ),
+    ),
 }

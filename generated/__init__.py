@@ -20,6 +20,7 @@ from . import (
     periodic_orbit,
     hunt_crossley,
     slow_flow,
+    hertz_contact,
 )
 
 __all__ = [
@@ -35,4 +36,5 @@ __all__ = [
     "periodic_orbit",
     "hunt_crossley",
     "slow_flow",
+    "hertz_contact",
 ]

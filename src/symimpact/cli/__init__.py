@@ -18,6 +18,7 @@ from collections.abc import Sequence
 from ..errors import SymimpactError
 from . import (
     branch,
+    contact,
     contact_duration,
     design,
     export,
@@ -32,7 +33,7 @@ from . import (
 from .common import Parser
 
 #: The subcommands, in the order of ``symimpact --help``.
-SUBCOMMANDS = [reproduce, ritz, fit, contact_duration, simulate, periodic, frf, branch, design,
+SUBCOMMANDS = [reproduce, ritz, fit, contact, contact_duration, simulate, periodic, frf, branch, design,
                export, sweep]  # fmt: skip
 
 #: What runs each subcommand (by name, aliases included).

@@ -1,0 +1,91 @@
+"""``symimpact contact``: the contact derived from the ball and the cavity (Step 13, Eq. F5)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .common import add_output, emit
+
+#: How each derived value is shown to a person: (label, unit, factor from SI).
+SHOWN = {
+    "m": ("impactor mass m", "g", 1e3),
+    "E_star": ("effective modulus E*", "GPa", 1e-9),
+    "R": ("effective radius R", "mm", 1e3),
+    "k_hz": ("Hertz stiffness K_Hz", "N/m^1.5", 1.0),
+    "max_penetration": ("largest penetration", "µm", 1e6),
+    "duration": ("contact duration", "µs", 1e6),
+    "peak_force": ("peak force", "kN", 1e-3),
+    "peak_pressure": ("peak pressure p0", "MPa", 1e-6),
+    "yield_speed": ("yield speed v_y", "m/s", 1.0),
+    "e": ("restitution e", "", 1.0),
+    "chi": ("Hunt–Crossley χ", "s/m", 1.0),
+    "k1": ("linear stiffness k1", "N/m", 1.0),
+    "c1": ("linear damping c1", "N s/m", 1.0),
+}
+
+#: Beyond this ratio of a forcing period to the contact duration the compliant simulation spends
+#: most of its steps inside contacts: the rigid law (Eq. F2) with the derived e is the model.
+STIFF_RATIO = 1e3
+
+
+def add_parser(sub: Any) -> None:
+    """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
+    p = sub.add_parser(
+        "contact",
+        help="the contact from materials and geometry: K_Hz, e, χ, c1, penetration, duration, "
+        "yield (Step 13)",
+    )
+    p.add_argument(
+        "--impactor",
+        required=True,
+        metavar="TEXT",
+        help="'<material> sphere <diameter>', e.g. 'steel sphere 20 mm'",
+    )
+    p.add_argument(
+        "--cavity",
+        required=True,
+        metavar="TEXT",
+        help="'<material> flat', '<material> sphere <diameter>' or '<material> spherical cavity "
+        "<diameter>'; a material is a name (steel, bearing steel, stainless steel, aluminium "
+        "alloy, brass, bronze, lead, tungsten alloy, cast iron, ptfe, polyurethane, natural "
+        "rubber) or 'E 200 GPa, nu 0.3, rho 7800 kg/m^3, Y 350 MPa'",
+    )
+    p.add_argument("--v0", required=True, metavar="Q", help="impact (approach) speed [m/s]")
+    p.add_argument(
+        "--M", default=None, metavar="Q", help="mass of the cavity's body [kg]; default massive"
+    )
+    p.add_argument(
+        "--freq",
+        default=None,
+        metavar="Q",
+        help="forcing frequency [Hz] (or rad/s with units), to say whether a compliant "
+        "simulation can resolve the contact",
+    )
+    add_output(p)
+
+
+def run(ns) -> None:
+    from ..derived_contact import derived_contact
+    from ..units import positive_float
+
+    c = derived_contact(ns.impactor, ns.cavity, ns.v0, ns.M)
+    out = c.as_dict()
+    lines = [f"{ns.impactor} in {ns.cavity}, impact speed {c.v0:g} m/s"]
+    for name, (label, unit, factor) in SHOWN.items():
+        value = out[name]
+        text = "—" if value is None else f"{value * factor:.5g}"
+        lines.append(f"  {label:<24} {text:>12} {unit:<8} {c.sources[name]}")
+    if ns.freq is not None:
+        f = positive_float("freq", ns.freq, "Hz")
+        ratio = 1.0 / (f * c.duration)
+        if ratio > STIFF_RATIO:
+            lines.append(
+                f"a forcing period is {ratio:.3g} contact durations: a compliant simulation "
+                f"would spend its steps in the contacts; use --contact rigid --e {c.e:.3g}"
+            )
+        out["period_over_duration"] = ratio
+    emit(ns, out, "\n".join(lines))
+
+
+#: The subcommands this module runs.
+COMMANDS = {"contact": run}

@@ -1,0 +1,222 @@
+"""The contact from materials and geometry (Step 13, Eq. F5), against independent references:
+a direct integration of the impact, textbook values (Johnson, *Contact Mechanics*, 1985), a
+catalogue mass, and a brute-force integration of Thornton's elastic–plastic force law."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from symimpact.cli import main
+from symimpact.derived_contact import (
+    cavity_body,
+    derived_contact,
+    impactor_body,
+    sphere_mass,
+    yield_pressure,
+)
+from symimpact.errors import ParameterError
+from symimpact.generated import closed_forms
+from symimpact.generated import hertz_contact as hz
+from symimpact.materials import MATERIALS, material
+
+STEEL_ON_STEEL = ("steel sphere 20 mm", "steel flat")
+
+
+def _impact(force_in, force_out, mu, v0, rtol=1e-12):
+    """Integrate μδ̈ = −F(δ) from δ = 0, δ̇ = v₀ until δ returns to 0 (loading law while δ̇ > 0,
+    unloading law after): (largest δ, duration, peak force, rebound speed)."""
+
+    def rhs(t, y):
+        f = force_in(y[0]) if y[1] > 0 else force_out(y[0])
+        return [y[1], -f / mu]
+
+    def deepest(t, y):
+        return y[1]
+
+    deepest.terminal, deepest.direction = True, -1
+
+    def out(t, y):
+        return y[0] - out.floor
+
+    out.terminal, out.direction = True, -1
+    a = solve_ivp(rhs, (0, 1e3), [0.0, v0], method="DOP853", events=deepest, rtol=rtol,
+                  atol=1e-30, dense_output=True)  # fmt: skip
+    t1, (dm, _) = a.t_events[0][0], a.y_events[0][0]
+    out.floor = 0.0
+    b = solve_ivp(lambda t, y: [y[1], -max(force_out(max(y[0], 0.0)), 0.0) / mu], (t1, t1 + 1e3),
+                  [dm, 0.0], method="DOP853", events=out, rtol=rtol, atol=1e-30)  # fmt: skip
+    return dm, b.t_events[0][0], force_in(dm), -b.y_events[0][0][1]
+
+
+def test_sphere_mass_matches_a_bearing_ball_catalogue():
+    # a 20 mm ball of AISI 52100 weighs 32.7 g in bearing-ball catalogues (ρ = 7810 kg/m³)
+    m = sphere_mass(impactor_body("bearing steel sphere 20 mm"))
+    assert m == pytest.approx(0.0327, abs=5e-5)
+
+
+def test_hertz_stiffness_of_steel_on_steel_is_seven_orders_above_the_papers():
+    c = derived_contact(*STEEL_ON_STEEL, 0.5)
+    s = MATERIALS["steel"]
+    e_star = s.E / (2 * (1 - s.nu**2))  # two equal bodies: Johnson Eq. 4.22 with E₁ = E₂
+    assert c.E_star == pytest.approx(e_star, rel=1e-14)
+    assert c.k_hz == pytest.approx(4 / 3 * e_star * math.sqrt(0.01), rel=1e-14)
+    assert 1e7 < c.k_hz / 1000.0 < 1e8  # the paper's 1000 N/m^1.5 is a resilient contact
+
+
+@pytest.mark.parametrize("cavity", ["steel flat", "steel spherical cavity 60 mm",
+                                    "brass sphere 30 mm", "polyurethane flat"])  # fmt: skip
+def test_elastic_impact_against_a_direct_integration(cavity):
+    # 1e-10: DOP853 at rtol 1e-12 on an impact of O(1) steps per event; the event root is found
+    # to machine precision, so the integration error dominates
+    M = 3.0
+    c = derived_contact("steel sphere 20 mm", cavity, 0.3, M=M)
+    mu = c.m * M / (c.m + M)
+
+    def hertz(d):
+        return c.k_hz * max(d, 0.0) ** 1.5
+
+    dm, duration, peak, rebound = _impact(hertz, hertz, mu, 0.3)
+    assert c.max_penetration == pytest.approx(dm, rel=1e-10)
+    assert c.duration == pytest.approx(duration, rel=1e-10)
+    assert c.peak_force == pytest.approx(peak, rel=1e-10)
+    assert rebound == pytest.approx(0.3, rel=1e-10)  # elastic: no loss in Hertz's law
+    a = hz.contact_radius_scalar(c.R, dm)
+    # the peak pressure is 3/2 of the mean pressure F/(πa²) (Hertz's ellipsoidal distribution)
+    assert c.peak_pressure == pytest.approx(1.5 * peak / (math.pi * a**2), rel=1e-10)
+
+
+def test_duration_matches_johnsons_formula_to_its_digits():
+    # Johnson Eq. 11.24: t_c = 2.87 (μ²/(R E*² v))^{1/5}, printed to three digits
+    c = derived_contact(*STEEL_ON_STEEL, 0.7)
+    johnson = 2.87 * (c.m**2 / (c.R * c.E_star**2 * 0.7)) ** 0.2
+    assert c.duration == pytest.approx(johnson, rel=0.005 / 2.87)
+
+
+def test_yield_onset_matches_johnson():
+    # Johnson §4.2: under a Hertz pressure the largest shear τ₁ = 0.31 p₀ (ν = 0.3) at 0.48a, so
+    # yield starts at p₀ = Y/0.62 (printed to two digits)
+    steel = material("E 200 GPa, nu 0.3, rho 7800 kg/m^3, Y 400 MPa")
+    p_y = yield_pressure(steel)
+    assert 1 / (2 * p_y / steel.yield_strength) == pytest.approx(0.31, abs=0.005)
+    # Johnson Eq. 11.26: a sphere on a massive flat of the same material yields at
+    # ρV_Y²/Y = 26 (Y/E*)⁴, with p₀ = 1.6 Y (printed to two digits)
+    R, rho, Y = 0.01, steel.rho, steel.yield_strength
+    e_star = steel.E / (2 * (1 - steel.nu**2))
+    m = rho * 4 / 3 * math.pi * R**3
+    v_y = hz.yield_speed_scalar(m, m * 1e17, e_star, R, 1.6 * Y)
+    assert rho * v_y**2 / Y / (Y / e_star) ** 4 == pytest.approx(26, abs=0.5)
+
+
+def test_thornton_restitution_against_its_force_law_integrated():
+    # Thornton (1997): Hertz up to δ_y, then F = F_y + πRp_y(δ − δ_y); unloading Hertzian about
+    # R_p = 4E*a_m³/(3F_m) from the deepest point.  Integrated here, compared with the kernel
+    # (1e-9: two integrations at rtol 1e-12 and the event location).
+    E_star, R, mu, p_y = 100e9, 0.01, 0.05, 2e9
+    k = hz.hertz_stiffness_scalar(E_star, R)
+    d_y = R * (math.pi * p_y / (2 * E_star)) ** 2
+    f_y = k * d_y**1.5
+    v_y = hz.yield_speed_scalar(mu, mu * 1e17, E_star, R, p_y)
+    for v0 in (1.5 * v_y, 4 * v_y, 30 * v_y):
+        state = {}
+
+        def load(d):
+            d = max(d, 0.0)
+            return k * d**1.5 if d <= d_y else f_y + math.pi * R * p_y * (d - d_y)
+
+        def unload(d):
+            if "rp" not in state:
+                dm = state["dm"]
+                fm, am = load(dm), math.sqrt(R * dm)
+                rp = 4 * E_star * am**3 / (3 * fm)
+                state.update(rp=rp, dr=dm - am**2 / rp)
+            return 4 / 3 * E_star * math.sqrt(state["rp"]) * max(d - state["dr"], 0.0) ** 1.5
+
+        # the deepest point first (loading only), then the unloading from it
+        dm, *_ = _impact(load, load, mu, v0)
+        state["dm"] = dm
+        unload(dm)
+
+        def rhs(t, y):
+            return [y[1], -unload(y[0]) / mu]
+
+        def sep(t, y):
+            return y[0] - state["dr"]
+
+        sep.terminal, sep.direction = True, -1
+        sol = solve_ivp(rhs, (0, 1e3), [dm, 0.0], method="DOP853", events=sep, rtol=1e-12,
+                        atol=1e-30)  # fmt: skip
+        e = -sol.y_events[0][0][1] / v0
+        assert hz.thornton_restitution_scalar(v_y / v0) == pytest.approx(e, rel=1e-9)
+
+
+def test_restitution_of_the_derived_contact():
+    # below the yield speed the impact is elastic; above it Thornton's e; chi and c1 reproduce it
+    from symimpact.contact import hunt_crossley_restitution
+
+    c = derived_contact(*STEEL_ON_STEEL, 0.5)
+    assert c.yield_speed < 0.5 and c.e == pytest.approx(
+        hz.thornton_restitution_scalar(c.yield_speed / 0.5), rel=1e-15
+    )
+    assert float(hunt_crossley_restitution(c.chi, 0.5)) == pytest.approx(c.e, rel=1e-12)
+    M = c.m * 1e17
+    assert closed_forms.linear_restitution_scalar(c.m, M, c.k1, c.c1) == pytest.approx(c.e, 1e-12)
+    slow = derived_contact(*STEEL_ON_STEEL, 0.5 * c.yield_speed)
+    assert slow.e == 1.0 and slow.chi == 0.0 and slow.c1 == 0.0
+    pu = derived_contact("steel sphere 20 mm", "polyurethane flat", 0.5)
+    assert pu.e == pytest.approx(math.sqrt(MATERIALS["polyurethane"].resilience), rel=1e-15)
+
+
+def test_restitution_falls_with_speed_and_tends_to_the_quarter_power():
+    r = np.geomspace(1e-6, 1, 50)
+    e = hz.thornton_restitution(r)
+    assert np.all(np.diff(e) > 0) and e[-1] == pytest.approx(1.0, rel=1e-15)
+    # e·(v₀/v_y)^{1/4} → (6√3/5)^{1/2}·2^{-1/4}(6/5)^{-1/8} as v_y/v₀ → 0
+    limit = math.sqrt(6 * math.sqrt(3) / 5) * (2 * math.sqrt(6 / 5)) ** -0.25
+    assert e[0] * r[0] ** -0.25 == pytest.approx(limit, rel=1e-5)
+
+
+@pytest.mark.parametrize(
+    ("impactor", "cavity", "parameter"),
+    [
+        ("unobtainium sphere 20 mm", "steel flat", "material"),
+        ("steel cube 20 mm", "steel flat", "impactor"),
+        ("steel sphere -20 mm", "steel flat", "impactor diameter"),
+        ("steel sphere 20 mm", "steel spherical cavity 10 mm", "cavity"),
+        ("steel sphere 20 mm", "E 1 GPa, nu 0.7, rho 1000 kg/m^3 flat", "material: nu"),
+        ("steel sphere 20 mm", "E 1 GPa, rho 1000 kg/m^3 flat", "material"),
+        ("steel sphere 20 mm", "steel cone", "cavity"),
+    ],
+)
+def test_bad_input_names_the_parameter(impactor, cavity, parameter):
+    with pytest.raises(ParameterError) as info:
+        derived_contact(impactor, cavity, 0.5)
+    assert info.value.parameter == parameter
+
+
+def test_cli_contact_json_and_errors(capsys):
+    argv = ["contact", "--impactor", "steel sphere 20 mm", "--cavity", "steel flat", "--v0",
+            "0.5 m/s", "--json"]  # fmt: skip
+    assert main(argv) == 0
+    out = json.loads(capsys.readouterr().out)
+    expected = {"m", "k_hz", "e", "chi", "c1", "max_penetration", "duration", "peak_force",
+                "yield_speed", "sources"}  # fmt: skip
+    assert expected <= set(out) and set(out["sources"]) >= expected - {"sources"}
+    assert out["k_hz"] == pytest.approx(derived_contact(*STEEL_ON_STEEL, 0.5).k_hz, rel=1e-15)
+    assert main(["contact", "--impactor", "steel sphere 2 cm", "--cavity", "steel flat",
+                 "--v0", "-1 m/s"]) == 2  # fmt: skip
+    assert "v0" in capsys.readouterr().err
+
+
+def test_cavity_shapes():
+    assert cavity_body("steel flat").radius is None
+    assert cavity_body("steel spherical cavity 30 mm").radius == pytest.approx(-0.015)
+    assert cavity_body("brass sphere 30 mm").radius == pytest.approx(0.015)
+    # a ball in a seat of nearly its own size: the conforming contact has a large R
+    # (1/R = 1/R₁ − 1/R₂) and so a stiffer K_Hz ∝ √R
+    tight = derived_contact("steel sphere 20 mm", "steel spherical cavity 21 mm", 0.5)
+    assert tight.R == pytest.approx(1 / (1 / 0.01 - 1 / 0.0105), rel=1e-14)
