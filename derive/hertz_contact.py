@@ -44,11 +44,13 @@ def _boussinesq_displacement(nu, p0, a, r):
         c = r * mp.cos(theta)
         rho_max = -c + mp.sqrt(c**2 - (r**2 - a**2))
         return mp.quad(
-            lambda rho: p0
-            * mp.sqrt(
-                max(
-                    mp.mpf(0),
-                    1 - (r**2 + rho**2 + 2 * r * rho * mp.cos(theta)) / a**2,
+            lambda rho: (
+                p0
+                * mp.sqrt(
+                    max(
+                        mp.mpf(0),
+                        1 - (r**2 + rho**2 + 2 * r * rho * mp.cos(theta)) / a**2,
+                    )
                 )
             ),
             [0, rho_max],
@@ -81,7 +83,7 @@ def _axis_stresses_by_quadrature(nu, zeta):
 def derive() -> Board:
     board = Board("hertz_contact", "The contact from materials and geometry", "F5")
     w = board.write
-    E1, E2, Es, R, R1, a, p0, delta, F = sp.symbols("E_1 E_2 E_star R R_1 a p_0 delta F", positive=True)
+    E1, E2, Es, R, R1, a, p0, delta = sp.symbols("E_1 E_2 E_star R R_1 a p_0 delta", positive=True)
     nu1, nu2, nu = sp.symbols("nu_1 nu_2 nu", real=True)
     kappa2 = sp.Symbol("kappa_2", real=True)
     r, s, x = sp.symbols("r s x", nonnegative=True)
@@ -169,8 +171,11 @@ def derive() -> Board:
     )
     # duration: 2 ∫₀^δmax dδ / v(δ), v² = v₀² (1 − (δ/δmax)^{5/2}); the integral of
     # (1 − x^{5/2})^{−1/2} over (0, 1) is (2/5) B(2/5, 1/2) (x = u^{2/5})
-    beta_form = sp.Rational(2, 5) * sp.gamma(sp.Rational(2, 5)) * sp.sqrt(sp.pi) / sp.gamma(
-        sp.Rational(9, 10)
+    beta_form = (
+        sp.Rational(2, 5)
+        * sp.gamma(sp.Rational(2, 5))
+        * sp.sqrt(sp.pi)
+        / sp.gamma(sp.Rational(9, 10))
     )
     duration_factor = w(
         "duration_factor",
@@ -199,7 +204,10 @@ def derive() -> Board:
             float(
                 sp.N(
                     sp.simplify(
-                        duration_factor * dm.subs(K, k_of) / v0 / (mu**2 / (R * Es**2 * v0)) ** sp.Rational(1, 5)
+                        duration_factor
+                        * dm.subs(K, k_of)
+                        / v0
+                        / (mu**2 / (R * Es**2 * v0)) ** sp.Rational(1, 5)
                     )
                 )
             ),
@@ -280,9 +288,15 @@ def derive() -> Board:
     board.check(
         "the plastic slope πRp_y equals Hertz's slope at δ_y",
         "F5",
-        sp.simplify(sp.diff(plastic_force, xp) - sp.diff(k_hz * delta ** sp.Rational(3, 2), delta).subs(delta, dy)) == 0,
+        sp.simplify(
+            sp.diff(plastic_force, xp)
+            - sp.diff(k_hz * delta ** sp.Rational(3, 2), delta).subs(delta, dy)
+        )
+        == 0,
     )
-    W_in = sp.Rational(2, 5) * k_hz * dy ** sp.Rational(5, 2) + sp.integrate(plastic_force, (xp, 0, xp))
+    W_in = sp.Rational(2, 5) * k_hz * dy ** sp.Rational(5, 2) + sp.integrate(
+        plastic_force, (xp, 0, xp)
+    )
     Fm = plastic_force
     am = sp.sqrt(R * (dy + xp))
     # unloading: Hertz about a radius R_p with the same contact radius a_m and force F_m;
@@ -306,7 +320,11 @@ def derive() -> Board:
         e2.free_symbols == {q} and v2.free_symbols == {q},
     )
     # v_y/v = r_v: solve v2(q) = 1/r_v² for q (a quadratic in q)
-    q_sols = [qs for qs in sp.solve(sp.Eq(v2, 1 / ratio_v**2), q) if qs.subs(ratio_v, sp.Rational(1, 2)).is_positive]
+    q_sols = [
+        qs
+        for qs in sp.solve(sp.Eq(v2, 1 / ratio_v**2), q)
+        if qs.subs(ratio_v, sp.Rational(1, 2)).is_positive
+    ]
     (q_of_r,) = q_sols
     e_thornton = w(
         "thornton_restitution_derived",
@@ -318,7 +336,8 @@ def derive() -> Board:
     printed = (
         sp.sqrt(6 * sp.sqrt(3) / 5)
         * sp.sqrt(1 - ratio_v**2 / 6)
-        * (ratio_v / (ratio_v + 2 * sp.sqrt(sp.Rational(6, 5) - ratio_v**2 / 5))) ** sp.Rational(1, 4)
+        * (ratio_v / (ratio_v + 2 * sp.sqrt(sp.Rational(6, 5) - ratio_v**2 / 5)))
+        ** sp.Rational(1, 4)
     )
     w(
         "thornton_restitution_printed",
@@ -360,7 +379,14 @@ def derive() -> Board:
     kernels = (
         ("effective_modulus", (aE1, anu1, aE2, anu2), E_star, "Effective modulus E*", "Pa", "E^*"),
         ("effective_radius", (aR1, akappa), radius, "Effective radius of curvature R", "m", "R"),
-        ("hertz_stiffness", (aEs, aR), k_hz, "Hertz stiffness K_Hz = 4/3 E*√R", "N/m^1.5", "K_{Hz}"),
+        (
+            "hertz_stiffness",
+            (aEs, aR),
+            k_hz,
+            "Hertz stiffness K_Hz = 4/3 E*√R",
+            "N/m^1.5",
+            "K_{Hz}",
+        ),
         ("contact_radius", (aR, adelta), a_delta, "Contact radius a = √(Rδ)", "m", "a"),
         ("peak_pressure", (aEs, aR, adelta), p0_delta, "Peak (central) pressure p₀", "Pa", "p_0"),
         (

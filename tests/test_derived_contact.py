@@ -10,6 +10,8 @@ import math
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
+from symimpact.generated import closed_forms
+from symimpact.generated import hertz_contact as hz
 
 from symimpact.cli import main
 from symimpact.derived_contact import (
@@ -20,8 +22,6 @@ from symimpact.derived_contact import (
     yield_pressure,
 )
 from symimpact.errors import ParameterError
-from symimpact.generated import closed_forms
-from symimpact.generated import hertz_contact as hz
 from symimpact.materials import MATERIALS, material
 
 STEEL_ON_STEEL = ("steel sphere 20 mm", "steel flat")
@@ -112,45 +112,42 @@ def test_yield_onset_matches_johnson():
     assert rho * v_y**2 / Y / (Y / e_star) ** 4 == pytest.approx(26, abs=0.5)
 
 
-def test_thornton_restitution_against_its_force_law_integrated():
-    # Thornton (1997): Hertz up to δ_y, then F = F_y + πRp_y(δ − δ_y); unloading Hertzian about
-    # R_p = 4E*a_m³/(3F_m) from the deepest point.  Integrated here, compared with the kernel
-    # (1e-9: two integrations at rtol 1e-12 and the event location).
-    E_star, R, mu, p_y = 100e9, 0.01, 0.05, 2e9
+def _thornton_rebound(E_star, R, mu, p_y, v0):
+    """Rebound speed of Thornton's (1997) elastic–perfectly-plastic impact, integrated: Hertz up
+    to δ_y, then F = F_y + πRp_y(δ − δ_y); unloading Hertzian about R_p = 4E*a_m³/(3F_m) from the
+    deepest point."""
     k = hz.hertz_stiffness_scalar(E_star, R)
     d_y = R * (math.pi * p_y / (2 * E_star)) ** 2
     f_y = k * d_y**1.5
+
+    def load(d):
+        d = max(d, 0.0)
+        return k * d**1.5 if d <= d_y else f_y + math.pi * R * p_y * (d - d_y)
+
+    dm, *_ = _impact(load, load, mu, v0)  # the deepest point (loading only)
+    fm, am = load(dm), math.sqrt(R * dm)
+    rp = 4 * E_star * am**3 / (3 * fm)
+    d_r = dm - am**2 / rp  # where the unloading Hertz law reaches zero force
+
+    def rhs(t, y):
+        return [y[1], -4 / 3 * E_star * math.sqrt(rp) * max(y[0] - d_r, 0.0) ** 1.5 / mu]
+
+    def separation(t, y):
+        return y[0] - d_r
+
+    separation.terminal, separation.direction = True, -1
+    sol = solve_ivp(rhs, (0, 1e3), [dm, 0.0], method="DOP853", events=separation, rtol=1e-12,
+                    atol=1e-30)  # fmt: skip
+    return -sol.y_events[0][0][1]
+
+
+def test_thornton_restitution_against_its_force_law_integrated():
+    # the kernel against the integrated force law (1e-9: two integrations at rtol 1e-12 and the
+    # event location)
+    E_star, R, mu, p_y = 100e9, 0.01, 0.05, 2e9
     v_y = hz.yield_speed_scalar(mu, mu * 1e17, E_star, R, p_y)
     for v0 in (1.5 * v_y, 4 * v_y, 30 * v_y):
-        state = {}
-
-        def load(d):
-            d = max(d, 0.0)
-            return k * d**1.5 if d <= d_y else f_y + math.pi * R * p_y * (d - d_y)
-
-        def unload(d):
-            if "rp" not in state:
-                dm = state["dm"]
-                fm, am = load(dm), math.sqrt(R * dm)
-                rp = 4 * E_star * am**3 / (3 * fm)
-                state.update(rp=rp, dr=dm - am**2 / rp)
-            return 4 / 3 * E_star * math.sqrt(state["rp"]) * max(d - state["dr"], 0.0) ** 1.5
-
-        # the deepest point first (loading only), then the unloading from it
-        dm, *_ = _impact(load, load, mu, v0)
-        state["dm"] = dm
-        unload(dm)
-
-        def rhs(t, y):
-            return [y[1], -unload(y[0]) / mu]
-
-        def sep(t, y):
-            return y[0] - state["dr"]
-
-        sep.terminal, sep.direction = True, -1
-        sol = solve_ivp(rhs, (0, 1e3), [dm, 0.0], method="DOP853", events=sep, rtol=1e-12,
-                        atol=1e-30)  # fmt: skip
-        e = -sol.y_events[0][0][1] / v0
+        e = _thornton_rebound(E_star, R, mu, p_y, v0) / v0
         assert hz.thornton_restitution_scalar(v_y / v0) == pytest.approx(e, rel=1e-9)
 
 

@@ -78,7 +78,9 @@ def cavity_body(text: str) -> Body:
         return Body(mat, "flat", None, text)
     d = positive_float("cavity diameter", found["size"], "m")
     concave = "cavity" in found["shape"].lower() or "seat" in found["shape"].lower()
-    return Body(mat, "spherical cavity" if concave else "sphere", (-d if concave else d) / 2.0, text)
+    return Body(
+        mat, "spherical cavity" if concave else "sphere", (-d if concave else d) / 2.0, text
+    )
 
 
 def sphere_mass(body: Body) -> float:

@@ -44,9 +44,13 @@ class Material:
         if not (-1.0 < self.nu <= 0.5):
             raise ParameterError(f"{self.name}: nu", f"must lie in (−1, 0.5], got {self.nu:g}")
         if not (self.rho > 0.0 and math.isfinite(self.rho)):
-            raise ParameterError(f"{self.name}: rho", f"must be a positive density, got {self.rho:g}")
+            raise ParameterError(
+                f"{self.name}: rho", f"must be a positive density, got {self.rho:g}"
+            )
         if self.yield_strength is not None and not self.yield_strength > 0.0:
-            raise ParameterError(f"{self.name}: Y", f"must be positive, got {self.yield_strength:g}")
+            raise ParameterError(
+                f"{self.name}: Y", f"must be positive, got {self.yield_strength:g}"
+            )
         if self.resilience is not None and not 0.0 < self.resilience <= 1.0:
             raise ParameterError(f"{self.name}: resilience", "must lie in (0, 1]")
 
@@ -62,6 +66,7 @@ def gent_modulus(shore_a: float) -> float:
 _HANDBOOK = "typical handbook value for this grade (ASM Handbook Vol. 1–2; MatWeb data sheets)"
 
 #: The table: name → Material.  Typical values of a common grade of each; see the module docstring.
+# fmt: off
 MATERIALS: dict[str, Material] = {
     m.name: m
     for m in (
@@ -92,8 +97,9 @@ MATERIALS: dict[str, Material] = {
                  "filled natural rubber, Shore 60A (E from the hardness by Gent's relation)",
                  "E: gent_modulus(60); ρ, ν, resilience: typical for filled NR (resilience "
                  "0.6–0.8)", resilience=0.70),
-    )  # fmt: skip
+    )
 }
+# fmt: on
 
 _ALIASES = {
     "aluminum alloy": "aluminium alloy",
