@@ -217,3 +217,48 @@ def test_cavity_shapes():
     # (1/R = 1/R₁ − 1/R₂) and so a stiffer K_Hz ∝ √R
     tight = derived_contact("steel sphere 20 mm", "steel spherical cavity 21 mm", 0.5)
     assert tight.R == pytest.approx(1 / (1 / 0.01 - 1 / 0.0105), rel=1e-14)
+
+
+def _json_of(argv, capsys):
+    assert main([*argv, "--json"]) == 0
+    captured = capsys.readouterr()
+    return json.loads(captured.out), captured.err
+
+
+def test_commands_take_the_contact_from_the_materials(capsys):
+    # the same run with the numbers the materials give, typed in: the same JSON
+    c = derived_contact("steel sphere 30 mm", "brass flat", 0.4, M=1.0)
+    system = ["--M", "1", "--K", "1000", "--C", "0.5", "--gap", "20 mm"]
+    forcing = ["--force", "2", "--omega", "25.39", "--contact", "rigid"]
+    derived, said = _json_of(["periodic", *system, "--impactor", "steel sphere 30 mm", "--cavity",
+                              "brass flat", "--impact-speed", "0.4 m/s", *forcing], capsys)  # fmt: skip
+    typed, _ = _json_of(["periodic", *system, "--m", repr(c.m), "--e", repr(c.e), *forcing], capsys)
+    assert derived == typed
+    assert f"e {c.e:.4g} at 0.4 m/s (Thornton)" in said
+    # a compliant law: K_Hz from the materials, c1 giving the material's e at the impact speed
+    from symimpact.contact import restitution
+    from symimpact.system import ImpactSystem
+
+    argv = ["simulate", *system, "--impactor", "steel sphere 30 mm", "--cavity",
+            "polyurethane flat", "--impact-speed", "0.4 m/s", "--contact", "hertz",
+            "--t-end", "0.5"]  # fmt: skip
+    _, said = _json_of(argv, capsys)
+    pu = derived_contact("steel sphere 30 mm", "polyurethane flat", 0.4, M=1.0)
+    c1 = float(said.split("c1 ")[1].split(" N s/m")[0])
+    sys_ = ImpactSystem(M=1, K=1000, C=0.5, m=pu.m, gap=0.02, contact="hertz", k_hz=pu.k_hz, c1=c1)
+    assert float(restitution(sys_, 0.4)) == pytest.approx(pu.e, rel=1e-4)  # c1 printed to 5 digits
+
+
+@pytest.mark.parametrize(
+    ("extra", "parameter"),
+    [
+        (["--cavity", "steel flat"], "cavity"),
+        (["--impactor", "steel sphere 2 cm", "--m", "1"], "m"),
+        (["--impactor", "steel sphere 2 cm", "--cavity", "steel flat", "--k-hz", "1e9"], "k-hz"),
+        (["--impactor", "steel sphere 2 cm", "--cavity", "steel flat"], "impact-speed"),
+        (["--impactor", "steel sphere 2 cm", "--impact-speed", "1"], "impact-speed"),
+    ],
+)
+def test_material_options_refuse_contradictions(extra, parameter, capsys):
+    assert main(["simulate", "--t-end", "0.1", *extra]) == 2
+    assert f"error: {parameter}:" in capsys.readouterr().err

@@ -144,12 +144,12 @@ def restitution_at(
     resilient = [b.material for b in (impactor, cavity) if b.material.resilience is not None]
     if resilient:
         mat = min(resilient, key=lambda m: m.resilience)
-        return math.sqrt(mat.resilience), f"√(rebound resilience {mat.resilience:g} of {mat.name})"
+        return math.sqrt(mat.resilience), f"resilience: √R of {mat.name}, R = {mat.resilience:g}"
     if yield_speed is None or v0 <= yield_speed:
         return 1.0, "elastic: the impact speed is below the yield speed (Step 13)"
     ratio = yield_speed / v0
     return float(hz.thornton_restitution_scalar(ratio)), (
-        f"Thornton's elastic–plastic impact at v_y/v0 = {ratio:.4g} (Step 13)"
+        f"Thornton: the elastic–plastic impact at v_y/v0 = {ratio:.4g} (Step 13)"
     )
 
 
@@ -183,7 +183,7 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
     c1 = _c1_for(m, M, k1, e)
     where = f"{imp.text} in {cav.text}"
     sources = {
-        "m": f"ρπD³/6 of the {imp.material.name} sphere ({imp.material.source})",
+        "m": f"ρπD³/6 of the {imp.material.name} sphere",
         "E_star": f"Step 13 from E, ν of {a.name} and {b.name}",
         "R": f"Step 13: 1/R = 1/R₁ + 1/R₂ ({where})",
         "k_hz": "Step 13: K_Hz = 4/3·E*·√R",
@@ -198,6 +198,8 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
         "chi": "Step 11: the Hunt–Crossley χ giving e at v0 (exact)",
         "k1": "Eq. 9's least-squares line over [0, δ_max] (Step 2)",
         "c1": "Eq. 35: the linear law's c1 giving e at v0 with k1",
+        "impactor_material": f"{a.name}: {a.grade}; {a.source}",
+        "cavity_material": f"{b.name}: {b.grade}; {b.source}",
     }
     return DerivedContact(
         v0=v0,

@@ -82,21 +82,21 @@ MATERIALS: dict[str, Material] = {
         Material("bronze", 100e9, 0.34, 8930.0, 125e6, "C93200 bearing bronze, cast",
                  _HANDBOOK),
         Material("lead", 16e9, 0.44, 11340.0, 5.5e6,
-                 "pure lead, annealed (Y varies with purity and grain size)", _HANDBOOK),
+                 "pure lead, annealed", _HANDBOOK + "; Y varies with purity and grain size"),
         Material("tungsten alloy", 310e9, 0.28, 17000.0, 620e6,
                  "90W–7Ni–3Fe heavy alloy (ASTM B777 class 1)", _HANDBOOK),
         Material("cast iron", 100e9, 0.26, 7200.0, 200e6,
-                 "grey iron ASTM A48 class 30 (no distinct yield: 0.1 % proof stress)",
-                 _HANDBOOK),
+                 "grey iron ASTM A48 class 30",
+                 _HANDBOOK + "; no distinct yield: Y is the 0.1 % proof stress"),
         Material("ptfe", 0.5e9, 0.46, 2200.0, 10e6, "PTFE, unfilled", _HANDBOOK),
         Material("polyurethane", gent_modulus(90.0), 0.49, 1200.0, None,
-                 "cast polyurethane, Shore 90A (E from the hardness by Gent's relation)",
-                 "E: gent_modulus(90); ρ, ν, resilience: typical for cast PU (resilience "
-                 "ranges 0.3–0.7 with the compound)", resilience=0.45),
+                 "cast polyurethane, Shore 90A",
+                 "E from the hardness by Gent's relation; ρ, ν, resilience typical of cast PU "
+                 "(resilience 0.3–0.7 with the compound)", resilience=0.45),
         Material("natural rubber", gent_modulus(60.0), 0.499, 1100.0, None,
-                 "filled natural rubber, Shore 60A (E from the hardness by Gent's relation)",
-                 "E: gent_modulus(60); ρ, ν, resilience: typical for filled NR (resilience "
-                 "0.6–0.8)", resilience=0.70),
+                 "filled natural rubber, Shore 60A",
+                 "E from the hardness by Gent's relation; ρ, ν, resilience typical of filled NR "
+                 "(resilience 0.6–0.8)", resilience=0.70),
     )
 }
 # fmt: on

@@ -30,7 +30,7 @@ from . import (
     simulate,
     sweep,
 )
-from .common import Parser
+from .common import Parser, apply_materials
 
 #: The subcommands, in the order of ``symimpact --help``.
 SUBCOMMANDS = [reproduce, ritz, fit, contact, contact_duration, simulate, periodic, frf, branch, design,
@@ -213,7 +213,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     argv_given = argv
     argv = sys.argv[1:] if argv is None else list(argv)
     ns = _dashes_as_empty(parser.parse_args(_join_negative_values(parser, argv)))
-    ns.__dict__.pop(GIVEN, None)
+    given = ns.__dict__.pop(GIVEN, set())
     from .. import display
 
     units_before = dict(display.DISPLAY_UNITS)
@@ -233,6 +233,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         display.parse_show(getattr(ns, "show", []))
         _check_outputs(ns)
+        apply_materials(ns, given)
         COMMANDS[ns.command](ns)
     except SymimpactError as exc:
         print(f"symimpact {ns.command}: error: {exc}", file=sys.stderr)

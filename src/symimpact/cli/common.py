@@ -23,7 +23,12 @@ SYSTEM_OPTIONS = [
     ("--gap", "clearance d [m]", "9 mm"),
     ("--a", "cubic coefficient a [N/m^3] (Eq. 9)", "0.1553 N/cm^3"),
     ("--b", "cubic coefficient b [N/m] (Eq. 9)", "0.8360 N/cm"),
-    ("--k-hz", "Hertz stiffness K_Hz [N/m^1.5] (Eq. 8)", "1000 N/m^1.5"),
+    (
+        "--k-hz",
+        "Hertz stiffness K_Hz [N/m^1.5] (Eq. 8; the default is the paper's resilient, "
+        "rubber-like contact — steel on steel is ~1e10: see --cavity)",
+        "1000 N/m^1.5",
+    ),
     ("--k1", "linear contact stiffness k1 [N/m] (Eq. 35); default fitted to K_Hz", None),
     ("--c1", "contact damping c1 [N s/m] (Eq. 10)", "5 N s/m"),
 ]
@@ -55,6 +60,16 @@ def add_system(
             metavar="Q",
             help=f"{helptext}; default {default!r}" if default else helptext,
         )
+    g.add_argument("--impactor", default=None, metavar="TEXT",
+                   help="the ball, '<material> sphere <diameter>' (e.g. 'steel sphere 20 mm'): "
+                   "gives m instead of --m (Step 13)")  # fmt: skip
+    g.add_argument("--cavity", default=None, metavar="TEXT",
+                   help="with --impactor: the surface it strikes ('steel flat', 'polyurethane "
+                   "flat', 'steel spherical cavity 30 mm'): gives K_Hz instead of --k-hz, and at "
+                   "--impact-speed the material's e, χ and c1 (see 'symimpact contact')")  # fmt: skip
+    g.add_argument("--impact-speed", default=None, metavar="Q",
+                   help="the impact speed [m/s] at which --cavity's material law gives e (rigid), "
+                   "χ (hunt-crossley) or c1 (compliant laws)")  # fmt: skip
     if contact:
         g.add_argument(
             "--contact",
@@ -88,7 +103,81 @@ def system_from(ns: argparse.Namespace):
     # the rigid law takes M, K, C, m and d from the system; its compliant law is not used.
     # Hunt–Crossley's elastic part is Hertz's (k_hz)
     law = {"perturbation": "cubic", "rigid": "cubic", "hunt-crossley": "hertz"}.get(law, law)
+    if getattr(ns, "delta_max", None) is not None:  # set by --cavity: the fits cover the impact
+        kw["delta_max"] = ns.delta_max
     return ImpactSystem(contact=law, a=ns.a, b=ns.b, **kw)
+
+
+def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
+    """--impactor, --cavity and --impact-speed (Step 13, :mod:`symimpact.derived_contact`):
+    replace m, K_Hz and, at the impact speed, the law's e, χ or c1 in ``ns`` (``given``: the
+    options the user typed, which these may not contradict)."""
+    from ..errors import ParameterError
+
+    if ns.command == "contact":  # its own --impactor/--cavity: the derived contact is its output
+        return
+    imp = getattr(ns, "impactor", None)
+    cav = getattr(ns, "cavity", None)
+    speed = getattr(ns, "impact_speed", None)
+    if imp is None and cav is None and speed is None:
+        return
+    if imp is None:
+        raise ParameterError("cavity" if cav is not None else "impact-speed", "needs --impactor")
+    from ..derived_contact import derived_contact, impactor_body, sphere_mass
+
+    for option, flag in (("m", "--m"), ("mass_ratios", "--mass-ratios")):
+        if option in given:
+            raise ParameterError(
+                flag[2:], f"the impactor fixes m: give {flag} or --impactor, not both"
+            )
+    body = impactor_body(imp)
+    ns.m = sphere_mass(body)
+    said = [f"m {ns.m * 1e3:.5g} g ({imp})"]
+    if cav is None:
+        if speed is not None:
+            raise ParameterError("impact-speed", "needs --cavity (the surface struck)")
+        _say(ns, said)
+        return
+    for option, flag in (("k_hz", "--k-hz"), ("a", "--a"), ("b", "--b"), ("k1", "--k1")):
+        if option in given:
+            raise ParameterError(flag[2:], f"--cavity gives the contact: give {flag} or --cavity")
+    law = getattr(ns, "contact", None) or "cubic"
+    needs = []
+    if law == "rigid" and getattr(ns, "e", None) is None:
+        needs.append("e")
+    elif law == "hunt-crossley" and getattr(ns, "chi", None) is None:
+        needs.append("chi")
+    elif law not in ("rigid", "hunt-crossley") and "c1" not in given:
+        needs.append("c1")
+    if needs and speed is None:
+        raise ParameterError(
+            "impact-speed", f"the materials give {needs[0]} at an impact speed: give "
+            f"--impact-speed (e.g. '0.5 m/s') or --{needs[0]}"
+        )  # fmt: skip
+    contact = derived_contact(body, cav, 1.0 if speed is None else speed, M=ns.M)
+    ns.k_hz, ns.a, ns.b, ns.k1 = contact.k_hz, None, None, None
+    ns.delta_max = contact.max_penetration
+    said.append(f"K_Hz {contact.k_hz:.5g} N/m^1.5 ({imp} on {cav})")
+    at = f"e {contact.e:.4g} at {contact.v0:g} m/s ({contact.sources['e'].split(':')[0]})"
+    if "e" in needs:
+        ns.e = contact.e
+        said.append(at)
+    if "chi" in needs:
+        ns.chi = contact.chi
+        said.append(f"χ {contact.chi:.5g} s/m for {at}")
+    if "c1" in needs:
+        from ..contact import c1_for_restitution
+
+        ns.c1 = 0.0
+        system = system_from(ns)
+        ns.c1 = 0.0 if contact.e >= 1.0 else c1_for_restitution(system, contact.e, speed)
+        said.append(f"c1 {ns.c1:.5g} N s/m for {at}")
+    _say(ns, said)
+
+
+def _say(ns: argparse.Namespace, said: list[str]) -> None:
+    """One line on stderr: what --impactor/--cavity put in place of the numbers."""
+    print(f"symimpact {ns.command}: from the materials: {'; '.join(said)}", file=sys.stderr)
 
 
 def add_initial(p: argparse.ArgumentParser, forced: bool = False) -> None:

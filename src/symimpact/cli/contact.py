@@ -6,21 +6,22 @@ from typing import Any
 
 from .common import add_output, emit
 
-#: How each derived value is shown to a person: (label, unit, factor from SI).
+#: How each derived value is shown to a person: (label, unit, factor from SI, where it comes
+#: from in short; --json gives the full sentence).
 SHOWN = {
-    "m": ("impactor mass m", "g", 1e3),
-    "E_star": ("effective modulus E*", "GPa", 1e-9),
-    "R": ("effective radius R", "mm", 1e3),
-    "k_hz": ("Hertz stiffness K_Hz", "N/m^1.5", 1.0),
-    "max_penetration": ("largest penetration", "µm", 1e6),
-    "duration": ("contact duration", "µs", 1e6),
-    "peak_force": ("peak force", "kN", 1e-3),
-    "peak_pressure": ("peak pressure p0", "MPa", 1e-6),
-    "yield_speed": ("yield speed v_y", "m/s", 1.0),
-    "e": ("restitution e", "", 1.0),
-    "chi": ("Hunt–Crossley χ", "s/m", 1.0),
-    "k1": ("linear stiffness k1", "N/m", 1.0),
-    "c1": ("linear damping c1", "N s/m", 1.0),
+    "m": ("impactor mass m", "g", 1e3, "ρπD³/6"),
+    "E_star": ("effective modulus E*", "GPa", 1e-9, "Step 13"),
+    "R": ("effective radius R", "mm", 1e3, "Step 13"),
+    "k_hz": ("Hertz stiffness K_Hz", "N/m^1.5", 1.0, "Step 13"),
+    "max_penetration": ("largest penetration", "µm", 1e6, "Eq. 34"),
+    "duration": ("contact duration", "µs", 1e6, "Eq. 34"),
+    "peak_force": ("peak force", "N", 1.0, "Step 13"),
+    "peak_pressure": ("peak pressure p0", "MPa", 1e-6, "Step 13"),
+    "yield_speed": ("first yield at v0 =", "m/s", 1.0, "Step 13"),
+    "e": ("restitution e", "", 1.0, None),
+    "chi": ("Hunt–Crossley χ", "s/m", 1.0, "Step 11"),
+    "k1": ("linear stiffness k1", "N/m", 1.0, "Eq. 9 fit"),
+    "c1": ("linear damping c1", "N s/m", 1.0, "Eq. 35"),
 }
 
 #: Beyond this ratio of a forcing period to the contact duration the compliant simulation spends
@@ -71,10 +72,15 @@ def run(ns) -> None:
     c = derived_contact(ns.impactor, ns.cavity, ns.v0, ns.M)
     out = c.as_dict()
     lines = [f"{ns.impactor} in {ns.cavity}, impact speed {c.v0:g} m/s"]
-    for name, (label, unit, factor) in SHOWN.items():
+    for name, (label, unit, factor, tag) in SHOWN.items():
         value = out[name]
         text = "—" if value is None else f"{value * factor:.5g}"
-        lines.append(f"  {label:<24} {text:>12} {unit:<8} {c.sources[name]}")
+        if tag is None:  # the restitution's origin in a word
+            tag = c.sources[name].split(":")[0].split(" at ")[0].split(" (")[0]
+        lines.append(f"  {label:<21} {text:>10} {unit:<8} [{tag}]")
+    for body in dict.fromkeys((c.sources["impactor_material"], c.sources["cavity_material"])):
+        lines.append(f"  {body.split(';')[0]}")
+    lines.append("  (typical values of these grades; --json: every source)")
     if ns.freq is not None:
         f = positive_float("freq", ns.freq, "Hz")
         ratio = 1.0 / (f * c.duration)
