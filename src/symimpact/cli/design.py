@@ -7,6 +7,7 @@ from __future__ import annotations
 from typing import Any
 
 from .. import budgets
+from ..forced.coverage import FREQUENCIES
 from .common import add_system, emit, forcing_of, system_from, write_csv
 from .frf import add_band, band_from, contact_of, contact_title
 
@@ -29,6 +30,12 @@ def add_parser(sub: Any) -> None:
     g.add_argument("--tolerance", default="0.01 mm", metavar="Q",
                    help="the best clearance is refined by Brent's method between the grid's "
                         "neighbours to this (default 0.01 mm)")  # fmt: skip
+    g.add_argument("--multistart", type=int, default=None, metavar="N",
+                   help="frequencies of each curve's multi-start brute force (default "
+                   f"{FREQUENCIES}; 0: none — faster, may miss motions no branch reaches)")  # fmt: skip
+    g.add_argument("--e-samples", type=int, default=5, metavar="N",
+                   help="with --e LOW:HIGH: restitutions sampled over the range (odd; default 5: "
+                   "the ends, the middle and the quarters)")  # fmt: skip
     g.add_argument("--no-refine", action="store_true",
                    help="report the grid's best clearance as it is")  # fmt: skip
     g = p.add_argument_group("execution and files")
@@ -55,6 +62,7 @@ def run(ns) -> None:
     from ..maps.table import table_rows
     from ..units import positive_float
 
+    e_range = _e_range(ns)  # before the band's checks read --e as one number
     omegas = band_from(ns)
     system = system_from(ns)
     forcing = forcing_of(ns, omega=float(omegas[0]))
@@ -72,14 +80,24 @@ def run(ns) -> None:
         raise ParameterError("workers", "must be a positive integer")
     e = contact_of(ns)
     tolerance = positive_float("tolerance", ns.tolerance, "m")
+    if e_range is not None:
+        if ns.mass_ratios is not None or ns.out is not None:
+            raise ParameterError(
+                "e", "a restitution range takes one mass ratio and no --out (it runs one map "
+                "per restitution)"
+            )  # fmt: skip
+        return _robust(ns, system, forcing, e_range, omegas, grid["gap"])
+    multistart = FREQUENCIES if ns.multistart is None else ns.multistart
     table = design_map(system, forcing, e, omegas, grid, executor=ns.executor,
                        workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
-                       force=ns.overwrite, progress=not (ns.quiet or ns.json))  # fmt: skip
+                       force=ns.overwrite, progress=not (ns.quiet or ns.json),
+                       multistart=multistart)  # fmt: skip
     rows = table_rows(table)
     if ns.no_refine or len(grid["gap"]) < 2:
         best = table_rows(best_clearances(table))
     else:
-        best = refine_best(table, system, forcing, e, omegas, tolerance=tolerance)
+        best = refine_best(table, system, forcing, e, omegas, tolerance=tolerance,
+                           multistart=multistart)  # fmt: skip
     if ns.csv:
         write_csv(ns.csv, "csv", rows)
     if ns.plot:
@@ -115,6 +133,63 @@ def run(ns) -> None:
                      f"with e + 0.1: {shown('x', r['peak_e_plus']):.5g} {unit}")  # fmt: skip
         lines.append(line)
     emit(ns, {"designs": rows, "best": best}, "\n".join(lines))
+
+
+def _e_range(ns) -> tuple[float, float] | None:
+    """--e LOW:HIGH (rigid impacts): the range, with ns.e set to its middle (the nominal e)."""
+    from ..errors import ParameterError
+    from ..units import nonnegative_float
+
+    if ns.e is None or ":" not in str(ns.e):
+        return None
+    parts = str(ns.e).split(":")
+    if len(parts) != 2 or ns.contact != "rigid":
+        raise ParameterError("e", "a range is LOW:HIGH (e.g. 0.4:0.8), for --contact rigid")
+    lo, hi = (nonnegative_float("e", p) for p in parts)
+    if not lo < hi <= 1.0:
+        raise ParameterError("e", f"a range needs low < high ≤ 1, got {lo:g}:{hi:g}")
+    ns.e = repr(0.5 * (lo + hi))
+    return lo, hi
+
+
+def _robust(ns, system, forcing, e_range, omegas, gaps) -> None:
+    """The robust design over a restitution range (:func:`symimpact.maps.design.robust_design`)."""
+    from ..display import display_unit, shown
+    from ..maps.design import robust_design
+
+    multistart = FREQUENCIES if ns.multistart is None else ns.multistart
+    res = robust_design(system, forcing, e_range, omegas, gaps, samples=ns.e_samples,
+                        multistart=multistart,
+                        executor=ns.executor, workers=ns.workers, scheduler=ns.scheduler,
+                        progress=not (ns.quiet or ns.json))  # fmt: skip
+    unit, gunit = display_unit("x"), display_unit("gap")
+    es = res["e"]
+    lines = [f"{len(res['rows'])} clearance(s) at e = " + ", ".join(f"{e:.3g}" for e in es)
+             + f" over Ω {omegas[0]:.6g}–{omegas[-1]:.6g} rad/s; without the damper the peak "
+             f"is {shown('x', res['rows'][0]['baseline_peak']):.5g} {unit}"]  # fmt: skip
+    for r in res["rows"]:
+        lines.append(
+            f"d {shown('gap', r['gap']):.4g} {gunit}: peak {shown('x', min(r['peaks'])):.5g}–"
+            f"{shown('x', r['worst_peak']):.5g} {unit} over e {es[0]:.3g}–{es[-1]:.3g} (worst "
+            f"at e {r['worst_e']:.3g}; nominal {shown('x', r['nominal_peak']):.5g} {unit})"
+        )
+    nb, rb = res["nominal_best"], res["robust_best"]
+    lines.append(f"best clearance at the nominal e {es[len(es) // 2]:.3g}: d "
+                 f"{shown('gap', nb['gap']):.4g} {gunit} (peak {shown('x', nb['nominal_peak']):.5g} "
+                 f"{unit}; worst case {shown('x', nb['worst_peak']):.5g} {unit})")  # fmt: skip
+    lines.append(f"robust clearance (smallest worst case over e): d {shown('gap', rb['gap']):.4g} "
+                 f"{gunit} (worst case {shown('x', rb['worst_peak']):.5g} {unit} at e "
+                 f"{rb['worst_e']:.3g})")  # fmt: skip
+    if ns.plot:
+        from ..plots import plot_robust_design
+
+        plot_robust_design(res, ns.plot, title=f"band {omegas[0]:.4g}–{omegas[-1]:.4g} rad/s, "
+                           f"rigid, e {es[0]:.3g}–{es[-1]:.3g}")  # fmt: skip
+    if ns.csv:
+        rows = [{"gap": r["gap"], "e": e, "peak_amplitude": p}
+                for r in res["rows"] for e, p in zip(es, r["peaks"], strict=True)]  # fmt: skip
+        write_csv(ns.csv, "csv", rows)
+    emit(ns, res, "\n".join(lines))
 
 
 #: The subcommands this module runs.
