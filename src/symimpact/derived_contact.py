@@ -26,6 +26,7 @@ from typing import Any
 from .errors import ParameterError
 from .generated import closed_forms, contact_fits
 from .generated import hertz_contact as hz
+from .generated import rigid_impact as ri
 from .materials import Material, material
 from .units import positive_float
 
@@ -180,7 +181,7 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
 
     chi = hunt_crossley_chi(e, v0) if e < 1.0 else 0.0
     k1 = float(contact_fits.linear_fit_k1_scalar(k_hz, delta))
-    c1 = _c1_for(m, M, k1, e)
+    c1 = 0.0 if e >= 1.0 else float(ri.linear_c1_for_restitution_scalar(m, M, k1, e))
     where = f"{imp.text} in {cav.text}"
     sources = {
         "m": f"ρπD³/6 of the {imp.material.name} sphere",
@@ -197,7 +198,7 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
         "e": e_source,
         "chi": "Step 11: the Hunt–Crossley χ giving e at v0 (exact)",
         "k1": "Eq. 9's least-squares line over [0, δ_max] (Step 2)",
-        "c1": "Eq. 35: the linear law's c1 giving e at v0 with k1",
+        "c1": "Step 9: the linear law's c1 giving e with k1 (Eq. 35 inverted)",
         "impactor_material": f"{a.name}: {a.grade}; {a.source}",
         "cavity_material": f"{b.name}: {b.grade}; {b.source}",
     }
@@ -218,19 +219,3 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
         c1=c1,
         sources=sources,
     )
-
-
-def _c1_for(m: float, M: float, k1: float, e: float) -> float:
-    """c₁ [N s/m] for which the linear law's restitution (Eq. 35's kernel) is e (Brent's method;
-    e falls monotonically from 1 at c₁ = 0 towards 0 at critical damping)."""
-    if e >= 1.0:
-        return 0.0
-    from scipy.optimize import brentq
-
-    mu = m * M / (m + M)
-    critical = 2.0 * math.sqrt(k1 * mu)
-
-    def f(c1: float) -> float:
-        return float(closed_forms.linear_restitution_scalar(m, M, k1, c1)) - e
-
-    return brentq(f, 0.0, critical * (1.0 - 1e-12), xtol=1e-14 * critical, rtol=1e-14)

@@ -21,7 +21,7 @@ SHOWN = {
     "e": ("restitution e", "", 1.0, None),
     "chi": ("Hunt–Crossley χ", "s/m", 1.0, "Step 11"),
     "k1": ("linear stiffness k1", "N/m", 1.0, "Eq. 9 fit"),
-    "c1": ("linear damping c1", "N s/m", 1.0, "Eq. 35"),
+    "c1": ("linear damping c1", "N s/m", 1.0, "Step 9"),
 }
 
 #: Beyond this ratio of a forcing period to the contact duration the compliant simulation spends
