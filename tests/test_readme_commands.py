@@ -27,14 +27,15 @@ COMMANDS = _commands()
 
 def test_the_block_holds_every_subcommand():
     assert [c.split()[1] for c in COMMANDS] == [
-        "fit", "ritz", "contact-duration", "simulate", "simulate", "simulate", "periodic",
-        "periodic", "periodic", "frf", "branch", "design", "sweep", "map",
+        "fit", "ritz", "contact", "contact-duration", "simulate", "simulate", "simulate",
+        "periodic", "periodic", "periodic", "frf", "branch", "design", "design", "sweep", "map",
     ]  # fmt: skip
 
 
 def _marked(command: str):
-    """The design command (five clearances, each a whole curve, then Brent's method on the best
-    one: about a minute) runs in the slow set, which CI runs as its second step."""
+    """The design commands (five clearances, each a whole curve, then Brent's method on the best
+    one: about a minute; the robust one, two clearances at three restitutions with Brent's
+    method on each: about 40 s) run in the slow set, which CI runs as its second step."""
     slow = command.split()[1] == "design"
     return pytest.param(command, marks=pytest.mark.slow) if slow else command
 
@@ -65,6 +66,12 @@ def test_readme_command_runs_and_shows_something(command, tmp_path):
     elif sub == "branch":  # the symmetric orbit in d: its pitchfork (tests/test_branch_cli.py)
         assert "branch-point at gap = 14.637 mm" in out
         assert (tmp_path / "branch.png").stat().st_size > 10_000
+    elif sub == "contact":  # steel on steel: ~1.5e10 N/m^1.5, plastic at 0.5 m/s
+        k_hz = float(re.search(r"Hertz stiffness K_Hz\s+([\d.e+]+)", out)[1])
+        assert 1e10 < k_hz < 2e10 and "[Thornton]" in out
+    elif sub == "design" and "--e-samples" in args:  # robust: both best clearances stated
+        assert "robust clearance (smallest worst case over e): d" in out
+        assert "best clearance at the nominal e 0.5" in out
     elif sub == "design":  # five clearances: the best one is inside the range, refined
         best = re.search(r"best clearance: d ([\d.]+) ± 1 mm \(Brent's method", out)
         assert best and 80 < float(best[1]) < 160, out

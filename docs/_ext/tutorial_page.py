@@ -106,8 +106,9 @@ print(f"K = {{K:.3f}} N/m, M = {{M:.4f}} kg")"""
     out += ["```console", _command(argv), run_cli(argv), "```", ""]
     code2 = f"""from symimpact.contact import c1_for_restitution
 from symimpact.derived_contact import derived_contact
-lined = derived_contact("{ball}", "polyurethane flat",
-                        "1 m/s", M=M)
+lined = derived_contact(
+    "{ball}", "polyurethane flat", "1 m/s", M=M
+)
 system = ImpactSystem.from_beam(
     E="70 GPa", I=I, rho="2700 kg/m^3", A=A, L="0.5 m",
     m=lined.m, gap="10 mm", zeta=0.01, contact="hertz",
@@ -116,8 +117,9 @@ system = ImpactSystem.from_beam(
 # the dashpot c1 (Eq. 10) that gives the liner's e at 1 m/s
 c1 = c1_for_restitution(system, lined.e, "1 m/s", law="hertz")
 system = system.with_(c1=c1)
-print(f"m = {{system.m * 1e3:.2f}} g, K_Hz = {{system.k_hz:.4g}} N/m^1.5, "
-      f"c1 = {{c1:.4g}} N s/m (e = {{lined.e:.3f}})")
+print(f"m = {{system.m * 1e3:.2f}} g, "
+      f"K_Hz = {{system.k_hz:.4g}} N/m^1.5")
+print(f"c1 = {{c1:.4g}} N s/m (e = {{lined.e:.3f}})")
 print(f"M = {{system.M:.4f}} kg, K = {{system.K:.2f}} N/m, "
       f"f_n = {{system.omega_n / 6.2832:.2f}} Hz")"""
     env.update({"I": I_AREA, "A": AREA})
