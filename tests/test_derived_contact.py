@@ -286,3 +286,67 @@ def test_the_derived_contact_stiffened_gives_the_rigid_orbit():
     assert abs(derived.relative_error) < 1e-3  # measured 3.6e-4: 30 µs contacts at 5.7 Hz
     # the ratio carries ~1e-6 of transient over errors of 1e-3–1e-4 (as the convergence table)
     assert soft.relative_error / derived.relative_error == pytest.approx(100**0.4, rel=0.05)
+
+
+def _boussinesq(p0, a, b, x, y):
+    """E*·u at (x, y) under p₀√(1 − x'²/a² − y'²/b²): (1/π)∬p/ρ dA, in polar coordinates about
+    the field point (the 1/ρ singularity cancels against ρ dρ), by nested adaptive quadrature."""
+    from scipy.integrate import quad
+
+    def along(theta):
+        c, s = math.cos(theta), math.sin(theta)
+        qa = (c / a) ** 2 + (s / b) ** 2
+        qb = 2 * (x * c / a**2 + y * s / b**2)
+        qc = (x / a) ** 2 + (y / b) ** 2 - 1
+        rho_max = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
+
+        def p(rho):
+            inside = 1 - ((x + rho * c) / a) ** 2 - ((y + rho * s) / b) ** 2
+            return p0 * math.sqrt(max(inside, 0.0))
+
+        return quad(p, 0, rho_max, epsabs=0, epsrel=1e-12, limit=200)[0]
+
+    return quad(along, 0, 2 * math.pi, epsabs=0, epsrel=1e-11, limit=200)[0] / math.pi
+
+
+@pytest.mark.parametrize("cavity", ["steel cylindrical bore 24 mm", "steel cylinder 24 mm",
+                                    "steel cylindrical bore 200 mm"])  # fmt: skip
+def test_elliptical_contact_against_boussinesq(cavity):
+    # the elliptical pressure's displacement, integrated: it closes the gap δ − Ax² − By² inside
+    # the ellipse, and the pressure's integral is K_Hz·δ^{3/2} (1e-9: nested quadrature at 1e-11
+    # to 1e-12 of a square-root edge)
+    from symimpact.derived_contact import curvatures, elliptical_hertz
+
+    imp, cav = impactor_body("steel sphere 20 mm"), cavity_body(cavity)
+    A, B = curvatures(imp, cav)
+    ell = elliptical_hertz(A, B)
+    delta, E_star = 1e-5, 1.0  # per unit E*
+    a = ell.a_per_root * math.sqrt(delta)
+    b, p0 = ell.k * a, ell.p0_per_root * E_star * math.sqrt(delta)
+    u0 = _boussinesq(p0, a, b, 0.0, 0.0)
+    assert u0 == pytest.approx(delta, rel=1e-9)
+    for frac in (0.3, 0.7):
+        assert u0 - _boussinesq(p0, a, b, frac * a, 0.0) == pytest.approx(A * (frac * a) ** 2,
+                                                                           rel=1e-8)  # fmt: skip
+        assert u0 - _boussinesq(p0, a, b, 0.0, frac * b) == pytest.approx(B * (frac * b) ** 2,
+                                                                          rel=1e-8)  # fmt: skip
+    from scipy.integrate import dblquad
+
+    force = dblquad(lambda yy, xx: p0 * math.sqrt(max(1 - (xx / a) ** 2 - (yy / b) ** 2, 0.0)),
+                    -a, a, lambda xx: -b * math.sqrt(1 - (xx / a) ** 2),
+                    lambda xx: b * math.sqrt(1 - (xx / a) ** 2), epsabs=0, epsrel=1e-11)[0]  # fmt: skip
+    assert force == pytest.approx(ell.k_hz_per_modulus * E_star * delta**1.5, rel=1e-9)
+
+
+def test_elliptical_contact_tends_to_the_circle():
+    # B/A → 1: Hertz's elliptical contact becomes Step 13's circular one (R = 1/(2A)); the
+    # difference falls with B/A − 1 (first order)
+    from symimpact.derived_contact import elliptical_hertz
+
+    A = 50.0
+    circle = hz.hertz_stiffness_scalar(1.0, 1 / (2 * A))
+    for excess in (1e-2, 1e-4, 1e-6, 1e-10):
+        ell = elliptical_hertz(A, A * (1 + excess))
+        # K_Hz ∝ √R_e·F(e) with R_e = 1/(2√(AB)): the relative change is O(excess)
+        assert ell.k_hz_per_modulus == pytest.approx(circle, rel=excess)
+    assert elliptical_hertz(A, A).k_hz_per_modulus == pytest.approx(circle, rel=1e-15)

@@ -38,9 +38,15 @@ def test_worst_case_against_separate_designs(robust):
         # the same computation: equal to rounding of the restitution's middle (0.5·(0.2 + 0.9))
         assert row["peaks"] == pytest.approx(separate, rel=1e-12)
         assert row["worst_peak"] >= max(separate)
-        if separate[0] <= separate[1] <= separate[2] or separate[0] >= separate[1] >= separate[2]:
-            # monotone in e: the worst case is the larger end, exactly
-            assert row["worst_peak"] == max(separate[0], separate[2])
+        if row["worst_peak"] > max(separate):
+            # Brent's method found more between the samples (measured at d = 40 mm: 88.4 mm at
+            # e = 0.893 against 86.7 mm at 0.9 — the peak is not monotone between samples that
+            # are): a real motion, the same design run at that e gives it again
+            again = design_row(SYSTEM.with_(gap=row["gap"]), FORCING, row["worst_e"], BAND,
+                               multistart=0)["peak_amplitude"]  # fmt: skip
+            assert again == pytest.approx(row["worst_peak"], rel=1e-12)
+        else:  # nothing above the samples: the worst case is the largest sample
+            assert row["worst_e"] in (0.2, 0.55, 0.9)
         assert row["nominal_peak"] == row["peaks"][1]
     assert robust["robust_best"]["worst_peak"] == min(r["worst_peak"] for r in robust["rows"])
     assert robust["nominal_best"]["nominal_peak"] == min(r["nominal_peak"] for r in robust["rows"])

@@ -7,7 +7,9 @@ Shapes (text as a designer writes it; diameters with units):
 
 - impactor: ``"steel sphere 20 mm"`` (a sphere of that material and diameter; its mass follows);
 - cavity: ``"steel flat"``, ``"steel sphere 40 mm"`` (a convex surface: ball on ball),
-  ``"steel spherical cavity 30 mm"`` (concave: the ball inside a spherical seat of that diameter).
+  ``"steel spherical cavity 30 mm"`` (concave: the ball inside a spherical seat of that diameter),
+  ``"steel cylindrical bore 30 mm"`` (the ball in a tube) or ``"steel cylinder 30 mm"`` (on a
+  rod): these two touch on an ellipse (Hertz's elliptical contact, :func:`elliptical_hertz`).
 
 Restitution, from the same data: an impact below the yield speed v_y is elastic in Hertz's theory
 (e = 1: wave and vibration losses, a few per cent in steel, are not modelled); above it Thornton's
@@ -48,9 +50,21 @@ class Body:
 _IMPACTOR = re.compile(r"^(?P<mat>.+?)\s+(?P<shape>sphere|ball)\s+(?P<size>\S.*)$", re.I)
 _CAVITY = re.compile(
     r"^(?P<mat>.+?)\s+(?:(?P<flat>flat|plate|wall)|(?P<shape>spherical cavity|spherical seat|"
-    r"sphere|ball)\s+(?P<size>\S.*))$",
+    r"sphere|ball|cylindrical bore|cylindrical cavity|bore|cylinder|rod)\s+(?P<size>\S.*))$",
     re.I,
 )
+#: Cavity shapes: text → (shape, concave).
+_SHAPES = {
+    "spherical cavity": ("spherical cavity", True),
+    "spherical seat": ("spherical cavity", True),
+    "sphere": ("sphere", False),
+    "ball": ("sphere", False),
+    "cylindrical bore": ("cylindrical bore", True),
+    "cylindrical cavity": ("cylindrical bore", True),
+    "bore": ("cylindrical bore", True),
+    "cylinder": ("cylinder", False),
+    "rod": ("cylinder", False),
+}
 
 
 def impactor_body(text: str) -> Body:
@@ -66,27 +80,108 @@ def impactor_body(text: str) -> Body:
 
 
 def cavity_body(text: str) -> Body:
-    """The cavity of ``text``: ``"<material> flat"``, ``"<material> sphere <diameter>"`` or
-    ``"<material> spherical cavity <diameter>"``."""
+    """The cavity of ``text``: ``"<material> flat"``, ``"<material> sphere <diameter>"``,
+    ``"<material> spherical cavity <diameter>"``, ``"<material> cylindrical bore <diameter>"``
+    (the ball rolling in a tube) or ``"<material> cylinder <diameter>"`` (on a rod)."""
     found = _CAVITY.match(" ".join(str(text).split()))
     if not found:
         raise ParameterError(
             "cavity", f"cannot read {text!r}: write '<material> flat', '<material> sphere "
-            "<diameter>' or '<material> spherical cavity <diameter>'"
+            "<diameter>', '<material> spherical cavity <diameter>' or '<material> cylindrical "
+            "bore <diameter>'"
         )  # fmt: skip
     mat = material(found["mat"])
     if found["flat"]:
         return Body(mat, "flat", None, text)
     d = positive_float("cavity diameter", found["size"], "m")
-    concave = "cavity" in found["shape"].lower() or "seat" in found["shape"].lower()
-    return Body(
-        mat, "spherical cavity" if concave else "sphere", (-d if concave else d) / 2.0, text
-    )
+    shape, concave = _SHAPES[found["shape"].lower()]
+    return Body(mat, shape, (-d if concave else d) / 2.0, text)
 
 
 def sphere_mass(body: Body) -> float:
     """Mass of a solid sphere [kg]: ρπD³/6."""
     return body.material.rho * math.pi * (2.0 * body.radius) ** 3 / 6.0
+
+
+@dataclass(frozen=True)
+class EllipticalHertz:
+    """Hertz's elliptical contact of two bodies whose gap near the touch point is A·x² + B·y²
+    (A ≤ B: the relative principal curvatures halved), per unit E* and in powers of the approach
+    δ: the force K_Hz·δ^{3/2} with ``k_hz_per_modulus`` = K_Hz/E* [m^0.5], the semi-axes
+    a = ``a_per_root``·√δ (along x) and b = k·a, the central pressure
+    p₀ = ``p0_per_root``·E*·√δ [1/√m], and the eccentricity² ``m`` = 1 − k²."""
+
+    k_hz_per_modulus: float
+    a_per_root: float
+    k: float
+    p0_per_root: float
+    m: float
+
+
+def elliptical_hertz(A: float, B: float) -> EllipticalHertz:
+    """Hertz's elliptical contact (Johnson, *Contact Mechanics*, 1985, §4.2): under
+    p = p₀√(1 − x²/a² − y²/b²) a pair of half-spaces of modulus E* displaces by
+    (L − Mx² − Ny²)/E* with L = p₀bK(e), M = p₀b(K − E)/(e²a²), N = p₀b(E/k² − K)/(e²a²)
+    (K, E: complete elliptic integrals of the parameter e² = 1 − k², k = b/a).  Closing the gap
+    δ − Ax² − By² gives B/A = N/M (which fixes e, by Brent's method), δ = L/E*, A = M/E*, and the
+    force (2/3)πabp₀ ∝ δ^{3/2}.  Checked against a quadrature of Boussinesq's displacement in
+    the tests; as B/A → 1 it tends to Step 13's circular contact with R = 1/(2A)."""
+    from scipy.optimize import brentq
+    from scipy.special import ellipk
+
+    if not 0.0 < A <= B:
+        raise ParameterError("cavity", "the relative curvatures must satisfy 0 < A ≤ B")
+    ratio = B / A
+
+    def excess(m: float) -> float:  # N/M − B/A = (K − D)/((1 − m)D) − B/A, from 0 at m = 0
+        K = float(ellipk(m))
+        D = _k_minus_e_over_m(m)
+        return (K - D) / ((1.0 - m) * D) - ratio
+
+    m = brentq(excess, 0.0, 1.0 - 1e-16, xtol=1e-300, rtol=1e-15) if ratio > 1.0 else 0.0
+    K = float(ellipk(m))
+    c = _k_minus_e_over_m(m)
+    k = math.sqrt(1.0 - m)
+    a = math.sqrt(c / (A * K))  # a² per unit δ: from A = M/E* = δ(K − E)/(K e² a²)
+    return EllipticalHertz(
+        k_hz_per_modulus=2.0 * math.pi * a / (3.0 * K),  # (2/3)πab·p₀ with p₀b = E*δ/K
+        a_per_root=a,
+        k=k,
+        p0_per_root=1.0 / (k * a * K),
+        m=m,
+    )
+
+
+#: Below this parameter m, (K − E)/m is summed from its series (the difference of the integrals
+#: would lose eps/m of its digits).
+SERIES_BELOW = 0.1
+
+
+def _k_minus_e_over_m(m: float) -> float:
+    """(K(m) − E(m))/m without cancellation: K − E = (π/2)·Σ_{n≥1} c_n²·2n/(2n − 1)·mⁿ with
+    c_n = Π_{j≤n} (2j − 1)/(2j) (the binomial series of both integrals), summed to 1e-17 below
+    :data:`SERIES_BELOW`; above it the integrals' difference."""
+    from scipy.special import ellipe, ellipk
+
+    if m >= SERIES_BELOW:
+        return float((ellipk(m) - ellipe(m)) / m)
+    total, c, n, term = 0.0, 1.0, 1, 1.0
+    while abs(term) > 1e-17 * abs(total) or n == 1:
+        c *= (2 * n - 1) / (2 * n)
+        term = c * c * 2 * n / (2 * n - 1) * m ** (n - 1)
+        total += term
+        n += 1
+    return 0.5 * math.pi * total
+
+
+def curvatures(impactor: Body, cavity: Body) -> tuple[float, float]:
+    """(A, B), A ≤ B: half the relative principal curvatures [1/m] of the sphere against the
+    cavity (Johnson §4.1: the gap is Ax² + By²); a cylinder curves across its axis only."""
+    k1 = 1.0 / impactor.radius
+    kc = 0.0 if cavity.radius is None else 1.0 / cavity.radius
+    across = k1 + kc
+    along = k1 + (kc if cavity.shape in ("sphere", "spherical cavity") else 0.0)
+    return 0.5 * min(across, along), 0.5 * max(across, along)
 
 
 def yield_pressure(mat: Material) -> float | None:
@@ -162,20 +257,34 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
     v0 = positive_float("v0", v0, "m/s")
     m = sphere_mass(imp)
     M = m * MASSIVE if M is None else positive_float("M", M, "kg")
-    kappa = 0.0 if cav.radius is None else 1.0 / cav.radius
     if cav.radius is not None and cav.radius < 0.0 and -cav.radius <= imp.radius:
         raise ParameterError(
-            "cavity", f"a spherical cavity of diameter {-2e3 * cav.radius:g} mm cannot hold a "
+            "cavity", f"a {cav.shape} of diameter {-2e3 * cav.radius:g} mm cannot hold a "
             f"sphere of diameter {2e3 * imp.radius:g} mm (the cavity must be larger)"
         )  # fmt: skip
     a, b = imp.material, cav.material
     E_star = float(hz.effective_modulus_scalar(a.E, a.nu, b.E, b.nu))
-    R = float(hz.effective_radius_scalar(imp.radius, kappa))
-    k_hz = float(hz.hertz_stiffness_scalar(E_star, R))
+    A, B = curvatures(imp, cav)
+    if A == B:  # a circle: Step 13's kernels
+        R = float(hz.effective_radius_scalar(imp.radius, 1.0 / cav.radius if cav.radius else 0.0))
+        k_hz = float(hz.hertz_stiffness_scalar(E_star, R))
+        p0_per_root = 2.0 / (math.pi * math.sqrt(R))  # p₀ = (2E*/π)√(δ/R)
+        geometry = "Step 13: 1/R = 1/R₁ + 1/R₂"
+    else:  # an ellipse: R is the equivalent radius 1/(2√(AB)) that is reported
+        ell = elliptical_hertz(A, B)
+        R = 0.5 / math.sqrt(A * B)
+        k_hz = ell.k_hz_per_modulus * E_star
+        p0_per_root = ell.p0_per_root
+        geometry = f"Hertz's elliptical contact, b/a = {ell.k:.4g} (R: 1/(2√(AB)))"
     delta = float(closed_forms.hertz_max_penetration_scalar(m, M, k_hz, v0))
     pressures = [p for p in (yield_pressure(a), yield_pressure(b)) if p is not None]
     p_y = min(pressures) if pressures else None
-    v_y = None if p_y is None else float(hz.yield_speed_scalar(m, M, E_star, R, p_y))
+    if p_y is None:
+        v_y = None
+    else:  # p₀ = p0_per_root·E*·√δ reaches p_y at δ_y; ½μv_y² = (2/5)K_Hz·δ_y^{5/2}
+        delta_y = (p_y / (p0_per_root * E_star)) ** 2
+        mu = m * M / (m + M)
+        v_y = math.sqrt(0.8 * k_hz * delta_y**2.5 / mu)
     e, e_source = restitution_at(imp, cav, v0, v_y)
     from .contact import hunt_crossley_chi
 
@@ -186,13 +295,14 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
     sources = {
         "m": f"ρπD³/6 of the {imp.material.name} sphere",
         "E_star": f"Step 13 from E, ν of {a.name} and {b.name}",
-        "R": f"Step 13: 1/R = 1/R₁ + 1/R₂ ({where})",
+        "R": f"{geometry} ({where})",
         "k_hz": "Step 13: K_Hz = 4/3·E*·√R",
         "max_penetration": "Eq. 34 (Step 6) at v0",
         "duration": "Eq. 34 (Step 6) at v0",
         "peak_force": "Step 13: K_Hz·δ_max^1.5",
         "peak_pressure": "Step 13: p₀ = (2E*/π)·√(δ_max/R)",
-        "yield_speed": "Step 13: p₀ reaches the softer body's yield pressure (von Mises on the axis)"
+        "yield_speed": "Step 13: p₀ reaches the softer body's yield pressure (von Mises on the "
+        "axis of a circular contact; an ellipse's differs by a few per cent)"
         if v_y is not None
         else "no yield strength (elastomer): not defined",
         "e": e_source,
@@ -211,7 +321,7 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
         max_penetration=delta,
         duration=float(closed_forms.hertz_contact_duration_scalar(m, M, k_hz, v0)),
         peak_force=float(hz.impact_peak_force_scalar(m, M, k_hz, v0)),
-        peak_pressure=float(hz.peak_pressure_scalar(E_star, R, delta)),
+        peak_pressure=p0_per_root * E_star * math.sqrt(delta),
         yield_speed=v_y,
         e=e,
         chi=float(chi),

@@ -46,7 +46,8 @@ def add_parser(sub: Any) -> None:
         "--cavity",
         required=True,
         metavar="TEXT",
-        help="'<material> flat', '<material> sphere <diameter>' or '<material> spherical cavity "
+        help="'<material> flat', '<material> sphere <diameter>', '<material> spherical cavity "
+        "<diameter>', '<material> cylindrical bore <diameter>' or '<material> cylinder "
         "<diameter>'; a material is a name (steel, bearing steel, stainless steel, aluminium "
         "alloy, brass, bronze, lead, tungsten alloy, cast iron, ptfe, polyurethane, natural "
         "rubber) or 'E 200 GPa, nu 0.3, rho 7800 kg/m^3, Y 350 MPa'",
