@@ -10,7 +10,9 @@ from .common import add_output, emit
 def add_parser(sub: Any) -> None:
     """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
     p = sub.add_parser("fit", help="cubic and linear fits of the Hertz law (Eq. 8–9, 35)")
-    p.add_argument("--k-hz", default="1000 N/m^1.5", metavar="Q", help="K_Hz [N/m^1.5]")
+    p.add_argument("--k-hz", default="1000 N/m^1.5", metavar="Q",
+                   help="K_Hz [N/m^1.5]; default the paper's 1000 N/m^1.5, a resilient "
+                   "(rubber-like) contact — 'symimpact contact' derives it from materials")  # fmt: skip
     p.add_argument("--delta-max", default="2 cm", metavar="Q", help="fit range [m]; default 2 cm")
     p.add_argument(
         "--continuous", action="store_true", help="continuous least squares, not 21 samples"

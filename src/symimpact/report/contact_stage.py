@@ -91,7 +91,10 @@ def _fig2(s: Section, folder: Path) -> None:
             [None, None, ".6g", None, None],
             note="Ours: discrete least squares on 21 uniform samples of [0, 2 cm] (derive/"
             "contact_fits.py). RMS residual at the samples: cubic "
-            f"{np.sqrt(np.mean(res_c**2)):.3g} N, linear {np.sqrt(np.mean(res_l**2)):.3g} N.",
+            f"{np.sqrt(np.mean(res_c**2)):.3g} N, linear {np.sqrt(np.mean(res_l**2)):.3g} N. "
+            "The paper's K_Hz = 1000 N/m^1.5 is a resilient, rubber-like contact: Hertz's theory "
+            f"(Step 13) gives {_steel_k_hz():.2g} N/m^1.5 for a 20 mm steel ball on a steel flat "
+            "(symimpact contact), whose penetrations are micrometres, not centimetres.",
         ),
         Figure(
             "fig2_force_laws",
@@ -185,6 +188,13 @@ def _fig3b(s: Section, folder: Path) -> None:
             "the 'iterations to 0.1 %' column gives the count for each case.",
         ),
     ]  # fmt: skip
+
+
+def _steel_k_hz() -> float:
+    """K_Hz [N/m^1.5] of a 20 mm steel sphere on a steel flat (Step 13), for the report's note."""
+    from ..derived_contact import derived_contact
+
+    return derived_contact("steel sphere 20 mm", "steel flat", 0.5).k_hz
 
 
 def table1_rows() -> list[list[Any]]:
