@@ -30,7 +30,7 @@ from . import (
     simulate,
     sweep,
 )
-from .common import Parser, apply_materials
+from .common import Parser, apply_engineer_inputs, apply_materials
 
 #: The subcommands, in the order of ``symimpact --help``.
 SUBCOMMANDS = [reproduce, ritz, fit, contact, contact_duration, simulate, periodic, frf, branch, design,
@@ -233,6 +233,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         display.parse_show(getattr(ns, "show", []))
         _check_outputs(ns)
+        apply_engineer_inputs(ns, given)
         apply_materials(ns, given)
         COMMANDS[ns.command](ns)
     except SymimpactError as exc:

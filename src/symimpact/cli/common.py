@@ -20,7 +20,13 @@ SYSTEM_OPTIONS = [
     ("--C", "main damping C [N s/m] (or --zeta)", "1 N s/m"),
     ("--zeta", "damping ratio ζ = C/(2√(KM)) [1], instead of --C", None),
     ("--m", "impact mass m [kg]", "0.25 kg"),
-    ("--gap", "clearance d [m]", "9 mm"),
+    (
+        "--fn",
+        "natural frequency of the primary f_n [Hz] (or rad/s, rpm): with --M, K = M(2πf_n)²; "
+        "with --K, M = K/(2πf_n)²",
+        None,
+    ),
+    ("--gap", "total clearance d [m]: the free play, contact at |y − x| = d/2", "9 mm"),
     ("--a", "cubic coefficient a [N/m^3] (Eq. 9)", "0.1553 N/cm^3"),
     ("--b", "cubic coefficient b [N/m] (Eq. 9)", "0.8360 N/cm"),
     (
@@ -106,6 +112,35 @@ def system_from(ns: argparse.Namespace):
     if getattr(ns, "delta_max", None) is not None:  # set by --cavity: the fits cover the impact
         kw["delta_max"] = ns.delta_max
     return ImpactSystem(contact=law, a=ns.a, b=ns.b, **kw)
+
+
+#: Options a command takes with the system group but does not use: (command, option) → why.
+UNUSED = {("design", "gap"): "design sweeps the clearance: give --gaps, not --gap"}
+
+
+def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
+    """--fn (with --M or --K) in place of K or M, and refusals of options the command does not
+    use (``given``: the options the user typed)."""
+    import math
+
+    from ..errors import ParameterError
+    from ..units import positive_float
+
+    for (command, option), why in UNUSED.items():
+        if ns.command == command and option in given:
+            raise ParameterError(option.replace("_", "-"), why)
+    if getattr(ns, "fn", None) is None:
+        return
+    f = positive_float("fn", ns.fn, "Hz")
+    w2 = (2.0 * math.pi * f) ** 2
+    if "K" in given and "M" in given:
+        raise ParameterError("fn", "give --fn with --M (modal mass) or with --K, not both")
+    if "K" in given:
+        ns.M = positive_float("K", ns.K, "N/m") / w2
+    elif "M" in given:
+        ns.K = positive_float("M", ns.M, "kg") * w2
+    else:
+        raise ParameterError("fn", "give the modal mass --M (or the stiffness --K) with --fn")
 
 
 def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:

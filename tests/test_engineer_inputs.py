@@ -1,0 +1,70 @@
+"""The primary as an engineer gives it (issue 35, items 1 and 4): --fn with the modal mass or
+the stiffness, and no trap in the clearance's wording or in options a command ignores."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from symimpact.cli import build_parser, main
+from symimpact.cli.common import apply_engineer_inputs
+
+
+def _ns(argv):
+    ns = build_parser().parse_args(argv)
+    return ns, ns.__dict__.pop("_options_given", set())
+
+
+def test_fn_with_the_modal_mass_gives_k():
+    # K = M(2πf)²: 1 kg at 1 Hz is 4π² N/m; the issue's 40 kg at 12 Hz is 227 396 N/m, given
+    # to the unit (so to half a unit)
+    for argv, K, rel in ((["--M", "1 kg", "--fn", "1 Hz"], 4 * math.pi**2, 1e-15),
+                         (["--M", "40", "--fn", "12"], 227396, 0.5 / 227396)):  # fmt: skip
+        ns, given = _ns(["simulate", *argv])
+        apply_engineer_inputs(ns, given)
+        assert float(ns.K) == pytest.approx(K, rel=rel)
+
+
+def test_fn_with_the_stiffness_gives_m_and_other_frequency_units():
+    ns, given = _ns(["simulate", "--K", "1000", "--fn", f"{math.sqrt(1000):.17g} rad/s"])
+    apply_engineer_inputs(ns, given)
+    assert float(ns.M) == pytest.approx(1.0, rel=1e-14)
+    ns, given = _ns(["simulate", "--M", "2", "--fn", "720 rpm"])  # 12 Hz
+    apply_engineer_inputs(ns, given)
+    assert float(ns.K) == pytest.approx(2 * (2 * math.pi * 12) ** 2, rel=1e-14)
+
+
+def test_fn_runs_the_same_as_k(capsys):
+    common = ["periodic", "--M", "40", "--zeta", "0.01", "--m", "2", "--gap", "10 mm", "--force",
+              "50", "--freq", "12", "--contact", "rigid", "--e", "0.6", "--json"]  # fmt: skip
+    assert main([*common, "--fn", "12"]) == 0
+    by_fn = json.loads(capsys.readouterr().out)
+    K = 40 * (2 * math.pi * 12) ** 2
+    assert main([*common, "--K", repr(K)]) == 0
+    assert json.loads(capsys.readouterr().out) == by_fn
+
+
+DESIGN_WITH_GAP = ["design", "--gap", "5 mm", "--gaps", "1 mm,2 mm", "--force", "1", "--contact",
+                   "rigid", "--e", "0.5", "--omega-range", "1:2:1"]  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("argv", "parameter"),
+    [
+        (["simulate", "--fn", "12"], "fn"),
+        (["simulate", "--fn", "12", "--M", "1", "--K", "10"], "fn"),
+        (["simulate", "--fn", "-12", "--M", "1"], "fn"),
+        (["simulate", "--fn", "12 m", "--M", "1"], "fn"),
+        (DESIGN_WITH_GAP, "gap"),
+    ],
+)
+def test_refusals_name_the_option(argv, parameter, capsys):
+    assert main(argv) == 2
+    assert f"error: {parameter}:" in capsys.readouterr().err
+
+
+def test_the_clearance_is_the_total_free_play_in_help():
+    text = build_parser()._subparsers._group_actions[0].choices["simulate"].format_help()
+    assert "total clearance d" in " ".join(text.split()) and "d/2" in text
