@@ -68,3 +68,33 @@ def test_refusals_name_the_option(argv, parameter, capsys):
 def test_the_clearance_is_the_total_free_play_in_help():
     text = build_parser()._subparsers._group_actions[0].choices["simulate"].format_help()
     assert "total clearance d" in " ".join(text.split()) and "d/2" in text
+
+
+PERIODIC = ["periodic", "--M", "40", "--fn", "12", "--zeta", "0.01", "--m", "2", "--gap", "10 mm",
+            "--force", "50", "--contact", "rigid", "--e", "0.6"]  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("frequency", "shown"),
+    [
+        (["--freq", "12"], "Ω 12 Hz:"),  # given in Hz: shown in Hz
+        (["--omega", "75.39822368615503"], "Ω 75.3982 rad/s:"),
+        (["--omega", "75.39822368615503", "--show", "omega=Hz"], "Ω 12 Hz:"),
+        (["--freq", "12", "--show", "omega=rpm"], "Ω 720 rpm:"),
+    ],
+)
+def test_frequencies_come_back_in_the_users_unit(frequency, shown, capsys):
+    assert main([*PERIODIC, *frequency]) == 0
+    assert capsys.readouterr().out.startswith(shown)
+
+
+def test_frf_text_in_hz_and_json_in_si(capsys):
+    argv = [a if a != "periodic" else "frf" for a in PERIODIC] + [
+        "--freq-range", "11.5:12.5:0.25", "--no-sweeps"]  # fmt: skip
+    assert main(argv) == 0
+    text = capsys.readouterr().out
+    assert text.startswith("Ω 11.5–12.5 Hz:") and "rad/s" not in text.split("note:")[0]
+    assert main([*argv, "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    omegas = [p["omega"] for p in data["points"]]
+    assert min(omegas) == pytest.approx(2 * math.pi * 11.5, rel=0.01)  # SI: rad/s

@@ -99,6 +99,12 @@ def shown(name: str, value: Any) -> Any:
     return value / float(factor) if kind == "ok" else value
 
 
+def omega_text(omega: Any, spec: str = ".6g") -> str:
+    """``"75.398 rad/s"`` or ``"12 Hz"``: a frequency Ω [rad/s] in its display unit (Hz when the
+    user gave the band or the frequency in Hz, or chose it with ``--show omega=UNIT``)."""
+    return f"{shown('omega', omega):{spec}} {_PRETTY.get(display_unit('omega'), display_unit('omega'))}"
+
+
 def set_display_unit(name: str, unit: str) -> None:
     """Show quantity ``name`` in ``unit`` from now on (checked against its SI unit)."""
     kind, info = _factor(unit, si_unit(name))

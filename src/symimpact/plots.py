@@ -62,7 +62,7 @@ def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.Pa
     """Forced response (Eq. F1; rigid impacts, Eq. F2, or a compliant contact): x(t) with the
     impacts (contact onsets) marked, the kept (steady) window after ``discard`` periods shaded
     with ±amplitude dotted, and the relative displacement z = y − x between the walls ±d/2."""
-    from .display import display_unit, label, shown
+    from .display import display_unit, label, omega_text, shown
 
     plt = _pyplot()
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
@@ -86,7 +86,7 @@ def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.Pa
     ax2.legend(fontsize=8)
     f = result.forcing
     fig.suptitle(
-        f"Ω = {f.omega:.4g} rad/s, "
+        f"Ω = {omega_text(f.omega, '.4g')}, "
         + (f"rigid, e = {result.e:g}" if result.contact == "rigid" else f"{result.contact} contact")
         + f": {len(imp)} impacts"
         + (
@@ -106,16 +106,19 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
 
     from .display import display_unit, shown
 
+    def W(v):  # Ω in its display unit (rad/s, or Hz when the band was given in Hz)
+        return shown("omega", v)
+
     base = frf.baseline
-    ax.plot(base[:, 0], shown("x", base[:, 1]), color="0.6", lw=1.0, label="without the damper")
+    ax.plot(W(base[:, 0]), shown("x", base[:, 1]), color="0.6", lw=1.0, label="without the damper")
     for k, (lo, hi) in enumerate(getattr(frf, "no_impact", [])):
         inside = (base[:, 0] >= lo) & (base[:, 0] <= hi)
-        ax.plot(base[inside, 0], shown("x", base[inside, 1]), color="0.6", lw=4, alpha=0.45,
+        ax.plot(W(base[inside, 0]), shown("x", base[inside, 1]), color="0.6", lw=4, alpha=0.45,
                 solid_capstyle="butt", label=None if k else "no impact (mass at rest midway)")  # fmt: skip
     for g in getattr(frf, "no_impact_grazings", []):
-        ax.axvline(g, color="0.6", lw=0.8, ls=":")
+        ax.axvline(W(g), color="0.6", lw=0.8, ls=":")
     for i, b in enumerate(frf.branches):
-        w = np.array([p.omega for p in b.points])
+        w = W(np.array([p.omega for p in b.points]))
         a = shown("x", np.array([p.amplitude for p in b.points]))
         stable = np.array([p.stable for p in b.points])
         color = f"C{i % 10}"
@@ -130,19 +133,19 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     seen = set()
     for b in frf.branches:
         for f in b.bifurcations:
-            ax.plot(f.omega, shown("x", f.amplitude), markers[f.kind], color="k", ms=6, mfc="none",
+            ax.plot(W(f.omega), shown("x", f.amplitude), markers[f.kind], color="k", ms=6, mfc="none",
                     label=None if f.kind in seen else f.kind)  # fmt: skip
             seen.add(f.kind)
     if sweeps and frf.sweep_up is not None and len(frf.sweep_up):
-        ax.plot(frf.sweep_up[:, 0], shown("x", frf.sweep_up[:, 1]), "^", color="C3", ms=3,
+        ax.plot(W(frf.sweep_up[:, 0]), shown("x", frf.sweep_up[:, 1]), "^", color="C3", ms=3,
                 alpha=0.6, label="sweep up")  # fmt: skip
-        ax.plot(frf.sweep_down[:, 0], shown("x", frf.sweep_down[:, 1]), "v", color="C0", ms=3,
+        ax.plot(W(frf.sweep_down[:, 0]), shown("x", frf.sweep_down[:, 1]), "v", color="C0", ms=3,
                 alpha=0.6, label="sweep down")  # fmt: skip
     ax.plot([], [], "-", color="k", label="stable")
     ax.plot([], [], "--", color="k", label="unstable")
-    ax.set_xlabel("Ω [rad/s]")
+    ax.set_xlabel(f"Ω [{display_unit('omega')}]")
     ax.set_ylabel(f"amplitude max |x| [{display_unit('x')}]")
-    ax.set_xlim(frf.omegas[0], frf.omegas[-1])
+    ax.set_xlim(W(frf.omegas[0]), W(frf.omegas[-1]))
     ax.legend(fontsize=8, ncol=3)
 
 

@@ -232,6 +232,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             pass
     try:
         display.parse_show(getattr(ns, "show", []))
+        hz = getattr(ns, "freq_range", None) is not None or getattr(ns, "freq", None) is not None
+        if hz and not any(spec.partition("=")[0].strip() == "omega" for spec in ns.show or []):
+            display.set_display_unit("omega", "Hz")  # the user's unit back
         _check_outputs(ns)
         apply_engineer_inputs(ns, given)
         apply_materials(ns, given)

@@ -56,7 +56,7 @@ def bounds_from(ns) -> tuple[float, float]:
 
 
 def run(ns) -> None:
-    from ..display import display_unit, shown
+    from ..display import display_unit, omega_text, shown
     from ..errors import ParameterError
     from ..forced import shoot_from_rest, trace_branch
     from ..forced.continuation import PARAMETERS as UNITS
@@ -122,7 +122,7 @@ def run(ns) -> None:
     values = [p.value for p in branch.points]
     stable = sum(p.stable for p in branch.points)
     lines = [
-        f"Ω {forcing.omega:.6g} rad/s: a branch of {multiple} forcing period(s) in {name}, "
+        f"Ω {omega_text(forcing.omega)}: a branch of {multiple} forcing period(s) in {name}, "
         f"{len(values)} points over {shown_value(min(values))} – {shown_value(max(values))}, "
         f"{stable} stable; {len(branch.bifurcations)} located bifurcation(s)"
     ]

@@ -55,7 +55,7 @@ def add_parser(sub: Any) -> None:
 
 
 def run(ns) -> None:
-    from ..display import display_unit, shown
+    from ..display import display_unit, omega_text, shown
     from ..errors import ParameterError
     from ..maps.design import best_clearances, design_map, refine_best
     from ..maps.points import parse_range
@@ -103,18 +103,19 @@ def run(ns) -> None:
     if ns.plot:
         from ..plots import plot_design
 
-        plot_design(table, ns.plot, title=f"band {omegas[0]:.4g}–{omegas[-1]:.4g} rad/s, "
+        plot_design(table, ns.plot, title=f"band {shown('omega', omegas[0]):.4g}–"
+                    f"{omega_text(omegas[-1], '.4g')}, "
                     f"{contact_title(ns, e)}")  # fmt: skip
     unit, gunit = display_unit("x"), display_unit("gap")
-    lines = [f"{len(rows)} design(s) over Ω {omegas[0]:.6g}–{omegas[-1]:.6g} rad/s "
-             f"({len(omegas)} frequencies); without the damper the peak is "
-             f"{shown('x', rows[0]['baseline_peak']):.5g} {unit} at Ω "
-             f"{rows[0]['baseline_omega']:.5g} rad/s"]  # fmt: skip
+    lines = [f"{len(rows)} design(s) over Ω {shown('omega', omegas[0]):.6g}–"
+             f"{omega_text(omegas[-1])} ({len(omegas)} frequencies); without the damper the peak "
+             f"is {shown('x', rows[0]['baseline_peak']):.5g} {unit} at Ω "
+             f"{omega_text(rows[0]['baseline_omega'], '.5g')}"]  # fmt: skip
     for r in rows:
         ratio = f", m/M {r['mass_ratio']:g}" if "mass_ratio" in r else ""
         lines.append(
             f"d {shown('gap', r['gap']):.4g} {gunit}{ratio}: peak "
-            f"{shown('x', r['peak_amplitude']):.5g} {unit} at Ω {r['peak_omega']:.5g} rad/s "
+            f"{shown('x', r['peak_amplitude']):.5g} {unit} at Ω {omega_text(r['peak_omega'], '.5g')} "
             f"({r['peak_motion']}), {r['peak_ratio']:.3f} of the primary alone"
         )
     for r in best:
@@ -126,7 +127,7 @@ def run(ns) -> None:
         else:
             where = f"d {shown('gap', r['gap']):.4g} {gunit}"
         line = (f"best clearance{ratio}: {where}, peak {shown('x', r['peak_amplitude']):.5g} "
-                f"{unit} at Ω {r['peak_omega']:.5g} rad/s ({r['peak_motion']}; "
+                f"{unit} at Ω {omega_text(r['peak_omega'], '.5g')} ({r['peak_motion']}; "
                 f"{r['peak_ratio']:.3f} of the primary alone)")  # fmt: skip
         if "peak_e_minus" in r:
             line += (f"; the peak with e − 0.1: {shown('x', r['peak_e_minus']):.5g} {unit}, "
@@ -154,7 +155,7 @@ def _e_range(ns) -> tuple[float, float] | None:
 
 def _robust(ns, system, forcing, e_range, omegas, gaps) -> None:
     """The robust design over a restitution range (:func:`symimpact.maps.design.robust_design`)."""
-    from ..display import display_unit, shown
+    from ..display import display_unit, omega_text, shown
     from ..maps.design import robust_design
 
     multistart = FREQUENCIES if ns.multistart is None else ns.multistart
@@ -165,7 +166,8 @@ def _robust(ns, system, forcing, e_range, omegas, gaps) -> None:
     unit, gunit = display_unit("x"), display_unit("gap")
     es = res["e"]
     lines = [f"{len(res['rows'])} clearance(s) at e = " + ", ".join(f"{e:.3g}" for e in es)
-             + f" over Ω {omegas[0]:.6g}–{omegas[-1]:.6g} rad/s; without the damper the peak "
+             + f" over Ω {shown('omega', omegas[0]):.6g}–{omega_text(omegas[-1])}; without the "
+             "damper the peak "
              f"is {shown('x', res['rows'][0]['baseline_peak']):.5g} {unit}"]  # fmt: skip
     for r in res["rows"]:
         lines.append(
@@ -183,7 +185,8 @@ def _robust(ns, system, forcing, e_range, omegas, gaps) -> None:
     if ns.plot:
         from ..plots import plot_robust_design
 
-        plot_robust_design(res, ns.plot, title=f"band {omegas[0]:.4g}–{omegas[-1]:.4g} rad/s, "
+        plot_robust_design(res, ns.plot, title=f"band {shown('omega', omegas[0]):.4g}–"
+                           f"{omega_text(omegas[-1], '.4g')}, "
                            f"rigid, e {es[0]:.3g}–{es[-1]:.3g}")  # fmt: skip
     if ns.csv:
         rows = [{"gap": r["gap"], "e": e, "peak_amplitude": p}

@@ -111,7 +111,7 @@ def contact_title(ns, e: Any) -> str:
 
 
 def run(ns) -> None:
-    from ..display import display_unit, shown
+    from ..display import display_unit, omega_text, shown
     from ..forced.frf import frequency_response
 
     omegas = band_from(ns)
@@ -129,44 +129,61 @@ def run(ns) -> None:
                  f"{shown('gap', system.gap):.4g} {display_unit('gap')}, {contact_title(ns, e)}")  # fmt: skip
     unit = display_unit("x")
     lines = [
-        f"Ω {omegas[0]:.6g}–{omegas[-1]:.6g} rad/s: {len(frf.branches)} branch(es), "
+        f"Ω {shown('omega', omegas[0]):.6g}–{omega_text(omegas[-1])}: {len(frf.branches)} "
+        f"branch(es), "
         f"{len(out['points'])} points, {len(out['bifurcations'])} located bifurcation(s)"
     ]
     for i, b in enumerate(frf.branches):
         amps = [p.amplitude for p in b.points]
         stable = sum(p.stable for p in b.points)
         lines.append(
-            f"branch {i}: {b.period_multiple} period(s), Ω {min(p.omega for p in b.points):.4g}"
-            f"–{max(p.omega for p in b.points):.4g} rad/s, amplitude "
+            f"branch {i}: {b.period_multiple} period(s), Ω "
+            f"{shown('omega', min(p.omega for p in b.points)):.4g}"
+            f"–{omega_text(max(p.omega for p in b.points), '.4g')}, amplitude "
             f"{shown('x', min(amps)):.4g}–{shown('x', max(amps)):.4g} {unit}, "
             f"{stable} of {len(amps)} points stable"
             + (", asymmetric orbits (each with its mirror image)" if b.mirrored else "")
-            + (f"; from the {b.origin}" if b.origin else "")
+            + (f"; from the {_origin_text(b)}" if b.origin else "")
         )
     for f in out["bifurcations"]:
         lines.append(
-            f"  {f['kind']} at Ω {f['omega']:.6g} rad/s, amplitude "
+            f"  {f['kind']} at Ω {omega_text(f['omega'])}, amplitude "
             f"{shown('x', f['amplitude']):.5g} {unit} (branch {f['branch']})"
         )
     if frf.no_impact:
-        spans = ", ".join(f"{a:.5g}–{b:.5g}" for a, b in frf.no_impact)
-        grazes = ", ".join(f"{g:.6g}" for g in frf.no_impact_grazings) or "nowhere in the band"
+        spans = ", ".join(f"{shown('omega', a):.5g}–{shown('omega', b):.5g}"
+                          for a, b in frf.no_impact)  # fmt: skip
+        grazes = ", ".join(f"{shown('omega', g):.6g}" for g in frf.no_impact_grazings)
+        ou = display_unit("omega")
         lines.append(f"no impact (the impact mass at rest midway, the primary alone) for Ω {spans} "
-                     f"rad/s; it grazes a wall at Ω {grazes} rad/s")  # fmt: skip
+                     f"{ou}; it grazes a wall at Ω "
+                     + (f"{grazes} {ou}" if grazes else "nowhere in the band"))  # fmt: skip
     lines += peak_lines(frf)
-    lines += [f"note: {n}" for n in frf.notes]
+    ou = display_unit("omega")
+    for reason, ws in frf.note_omegas:
+        at = ", ".join(f"{shown('omega', w):.4g}" for w in ws)
+        lines.append(f"note: {reason} (at Ω {at} {ou})" if ws else f"note: {reason}")
     emit(ns, out, "\n".join(lines))
+
+
+def _origin_text(branch) -> str:
+    """Where a switched branch starts, its Ω in the display unit."""
+    from ..display import omega_text
+
+    if math.isnan(branch.origin_omega):
+        return branch.origin
+    return branch.origin.split(" at Ω = ")[0] + f" at Ω = {omega_text(branch.origin_omega)}"
 
 
 def peak_lines(frf) -> list[str]:
     """The located peak with and without the damper, and the reduction, in words."""
-    from ..display import display_unit, shown
+    from ..display import display_unit, omega_text, shown
 
     unit = display_unit("x")
 
     def at(p) -> str:
-        return (f"{shown('x', p.amplitude):.5g} {unit} at Ω {p.omega:.6g} rad/s "
-                f"({p.omega / (2 * math.pi):.6g} Hz)")  # fmt: skip
+        other = "" if display_unit("omega") == "Hz" else f" ({p.omega / (2 * math.pi):.6g} Hz)"
+        return f"{shown('x', p.amplitude):.5g} {unit} at Ω {omega_text(p.omega)}{other}"
 
     if frf.peak is None:
         lines = ["peak with the damper: no stable motion traced in the band"]

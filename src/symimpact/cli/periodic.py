@@ -57,7 +57,7 @@ def add_parser(sub: Any) -> None:
 
 
 def run(ns) -> None:
-    from ..display import display_unit, shown
+    from ..display import display_unit, omega_text, shown
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced import periodic_orbits
     from .frf import contact_of
@@ -82,11 +82,11 @@ def run(ns) -> None:
     out = [o.as_dict() for o in orbits]
     if not orbits:
         text = (
-            f"Ω {forcing.omega:.6g} rad/s: no symmetric two-impact orbit (the phase condition "
+            f"Ω {omega_text(forcing.omega)}: no symmetric two-impact orbit (the phase condition "
             "a·cos φ + b·sin φ = c has no solution)"
         )
     else:
-        lines = [f"Ω {forcing.omega:.6g} rad/s: {len(orbits)} symmetric two-impact orbit(s)"]
+        lines = [f"Ω {omega_text(forcing.omega)}: {len(orbits)} symmetric two-impact orbit(s)"]
         unit = display_unit("x")  # the amplitude is a displacement of the main mass
         lines.append(
             f"impact phase [rad]  amplitude [{unit}]  impact speed [m/s]  admissible  stable  "
@@ -105,7 +105,7 @@ def run(ns) -> None:
 def _shooting(ns, system, forcing, e) -> None:
     """--method shooting: one orbit, the closed form's JSON keys and the shooting's own, for
     rigid impacts or a compliant contact ``e``."""
-    from ..display import display_unit, shown
+    from ..display import display_unit, omega_text, shown
     from ..errors import ParameterError
     from ..forced import shoot_from_rest
     from ..forced.simulation import MAX_MULTIPLE, period_count
@@ -117,7 +117,7 @@ def _shooting(ns, system, forcing, e) -> None:
     o = shoot_from_rest(system, forcing, e, warmup=warmup, periods=multiple)
     unit = display_unit("x")
     text = (
-        f"Ω {forcing.omega:.6g} rad/s: an orbit of {multiple} forcing period(s) by shooting "
+        f"Ω {omega_text(forcing.omega)}: an orbit of {multiple} forcing period(s) by shooting "
         f"({o.iterations} Newton steps, residual {o.residual:.1e}): amplitude "
         f"{shown('x', o.amplitude):.6g} {unit}, {o.impacts_per_period:.4g} impacts per period, "
         f"{'stable' if o.stable else 'unstable'} (largest |multiplier| {o.multipliers[0]:.6g})"

@@ -120,6 +120,7 @@ def run(ns) -> None:
 def run_forced(ns) -> None:
     """The forced response (Eq. F1) with rigid impacts (Eq. F2) or a compliant contact, and its
     steady state."""
+    from ..display import display_unit, omega_text
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced import simulate_forced
     from ..forced.simulation import MAX_MULTIPLE, period_count
@@ -178,7 +179,9 @@ def run_forced(ns) -> None:
         _forced_outputs(ns, res, discard)
     st = res.steady
     text = (
-        f"contact {ns.contact}, Ω {forcing.omega:.6g} rad/s ({forcing.freq:.6g} Hz), {len(res.impacts)} impacts in "
+        f"contact {ns.contact}, Ω {omega_text(forcing.omega)}"
+        + ("" if display_unit("omega") == "Hz" else f" ({forcing.freq:.6g} Hz)")
+        + f", {len(res.impacts)} impacts in "
         f"{len(res.period_max)} periods; steady over the last {len(res.period_max) - discard}"
         f": amplitude {quantity_text('x', st.amplitude)}, {st.impacts_per_period:.4g} impacts "
         "per period, "

@@ -121,8 +121,9 @@ class Branch:
     phase: float = 0.0
     parameter: str = "omega"
     #: where the branch was found: "" for a start of its own, else e.g. "branch-point of branch 0
-    #: at Ω = 24.941 rad/s" (set by the caller that switched onto it)
+    #: at Ω = 24.941 rad/s" (set by the caller that switched onto it), and that Ω [rad/s]
     origin: str = ""
+    origin_omega: float = math.nan
 
     @property
     def mirrored(self) -> bool:

@@ -86,6 +86,8 @@ class FrequencyResponse:
     sweep_up: np.ndarray | None = None
     sweep_down: np.ndarray | None = None
     notes: list[str] = field(default_factory=list)
+    #: the notes' reasons with their frequencies [rad/s] (for text in another unit)
+    note_omegas: list[tuple[str, list[float]]] = field(default_factory=list)
     no_impact: list[tuple[float, float]] = field(default_factory=list)
     no_impact_grazings: list[float] = field(default_factory=list)
     #: the largest amplitude of a stable orbit or of the motion without impacts over the band,
@@ -290,6 +292,7 @@ def frequency_response(
                 f"{out.peak.amplitude:.6g} m (a chattering, sticking or untraced motion)",
                 [],
             ).append(float(top[0]))
+    out.note_omegas = [(reason, list(ws)) for reason, ws in failures.items()]
     out.notes = [
         f"{reason} (at Ω {', '.join(f'{x:.4g}' for x in ws)} rad/s)"
         for reason, ws in failures.items()
@@ -339,6 +342,7 @@ def _switch_branches(out, system, forcing, e, band, step, failures) -> None:
                     failures.setdefault(f"branch switching: {exc}", []).append(f.omega)
                     continue
                 new.origin = f"{f.kind} of branch {i} at Ω = {f.omega:.6g} rad/s"
+                new.origin_omega = f.omega
                 traced.append(new)
                 out.branches.append(new)
         i += 1
