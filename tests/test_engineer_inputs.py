@@ -98,3 +98,22 @@ def test_frf_text_in_hz_and_json_in_si(capsys):
     data = json.loads(capsys.readouterr().out)
     omegas = [p["omega"] for p in data["points"]]
     assert min(omegas) == pytest.approx(2 * math.pi * 11.5, rel=0.01)  # SI: rad/s
+
+
+def test_design_csv_headers_carry_units():
+    from symimpact.display import csv_header
+
+    for name, unit in (("peak_amplitude", "m"), ("peak_omega", "rad/s"), ("baseline_peak", "m"),
+                       ("baseline_omega", "rad/s"), ("gap", "m")):  # fmt: skip
+        assert csv_header(name) == f"{name} [{unit}]"
+
+
+def test_map_value_takes_the_tables_names(tmp_path, capsys):
+    argv = ["map", "--vary", "gap=6 mm:9 mm:3 mm", "--vary", "m=0.2,0.25", "--t-end", "10",
+            "--workers", "1", "--quiet", "--plot", str(tmp_path / "heat.png")]  # fmt: skip
+    assert main([*argv, "--value", "DI"]) == 0
+    by_table_name = capsys.readouterr().out
+    assert main([*argv, "--value", "damping_inclination"]) == 0
+    by_output_name = capsys.readouterr().out
+    best = [line for line in by_output_name.splitlines() if line.startswith("wrote")]
+    assert best and best[0].replace("damping_inclination", "DI") in by_table_name

@@ -38,6 +38,15 @@ OUTPUT_SI_UNITS = {
     "impacts_per_period": "dimensionless",
     "period_multiple": "dimensionless",
     "branch": "dimensionless",
+    "omega": "rad/s",
+    "peak_amplitude": "m",
+    "peak_omega": "rad/s",
+    "baseline_peak": "m",
+    "baseline_omega": "rad/s",
+    "worst_peak": "m",
+    "nominal_peak": "m",
+    "worst_e": "dimensionless",
+    "e": "dimensionless",
 }
 
 #: The unit each quantity is shown in (quantities not listed: their SI unit).
@@ -53,6 +62,10 @@ DISPLAY_UNITS: dict[str, str] = {
     "damping_inclination": "µm",
     "duration": "ms",
     "amplitude": "mm",
+    "peak_amplitude": "mm",
+    "baseline_peak": "mm",
+    "worst_peak": "mm",
+    "nominal_peak": "mm",
     "energy_initial": "mJ",
     "energy_dissipated": "mJ",
     "energy_dissipated_contact": "mJ",

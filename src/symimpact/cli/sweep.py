@@ -205,6 +205,11 @@ def run(ns) -> None:
     emit(ns, rows, "\n".join(lines + notes))
 
 
+#: The column names the text table shows, for the outputs they stand for (``--value DI``).
+TABLE_NAMES = {"DI": "damping_inclination", "N_tot": "n_impacts", "N_eff": "n_effective",
+               "effect.": "effectiveness", "ζ_eq": "zeta_eq"}  # fmt: skip
+
+
 def _plot_sweep(ns, table, names) -> str:
     from ..errors import ParameterError
     from ..maps import table_rows
@@ -219,9 +224,10 @@ def _plot_sweep(ns, table, names) -> str:
             raise ParameterError("axes", f"{ns.axes!r} must be two swept inputs X,Y")
     else:
         axes = list(names[:2])
-    opt = plot_map(table, axes[0], axes[1], ns.value, ns.plot, best=ns.best)
+    value = TABLE_NAMES.get(ns.value, ns.value)  # the names the text table shows
+    opt = plot_map(table, axes[0], axes[1], value, ns.plot, best=ns.best)
     return (
-        f"wrote {ns.plot}: {ns.best} {ns.value} {quantity_text(ns.value, opt[ns.value])} at "
+        f"wrote {ns.plot}: {ns.best} {ns.value} {quantity_text(value, opt[value])} at "
         f"{axes[0]} = {quantity_text(axes[0], opt[axes[0]])}, "
         f"{axes[1]} = {quantity_text(axes[1], opt[axes[1]])}"
     )
