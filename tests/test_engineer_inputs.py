@@ -58,6 +58,7 @@ DESIGN_WITH_GAP = ["design", "--gap", "5 mm", "--gaps", "1 mm,2 mm", "--force", 
         (["simulate", "--fn", "-12", "--M", "1"], "fn"),
         (["simulate", "--fn", "12 m", "--M", "1"], "fn"),
         (DESIGN_WITH_GAP, "gap"),
+        (["contact-duration", "--gap", "5 mm"], "gap"),
     ],
 )
 def test_refusals_name_the_option(argv, parameter, capsys):

@@ -115,7 +115,10 @@ def system_from(ns: argparse.Namespace):
 
 
 #: Options a command takes with the system group but does not use: (command, option) → why.
-UNUSED = {("design", "gap"): "design sweeps the clearance: give --gaps, not --gap"}
+UNUSED = {
+    ("design", "gap"): "design sweeps the clearance: give --gaps, not --gap",
+    ("contact-duration", "gap"): "one contact's duration does not depend on the clearance",
+}
 
 
 def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
