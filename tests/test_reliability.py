@@ -180,8 +180,17 @@ def test_a_maps_lock_holds_for_a_link_and_its_target(tmp_path):
 
 def test_a_design_with_no_forcing_is_refused_in_one_line(capsys):
     # it was "internal error: ZeroDivisionError" (a peak ratio of 0/0)
-    argv = ["design", *SYS[:-2], "--force", "0", *RIGID, "--omega-range", "30:36:1", "--gaps",
-            "40 mm:80 mm:40 mm"]  # fmt: skip
+    argv = [
+        "design",
+        *SYS[:8],
+        "--force",
+        "0",
+        *RIGID,
+        "--omega-range",
+        "30:36:1",
+        "--gaps",
+        "40 mm:80 mm:40 mm",
+    ]  # fmt: skip  (SYS without --gap, which design refuses)
     assert main(argv) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("symimpact design: error: force:"), err
