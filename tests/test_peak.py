@@ -110,6 +110,7 @@ def test_a_stable_peak_orbit_is_a_long_run_steady_state(curve):
     pytest.fail(f"no stable orbit beside the peak {p}")
 
 
+@pytest.mark.slow  # three more curves (~18 s): in the slow set
 def test_the_peak_does_not_depend_on_the_frequency_step_or_the_units(curve):
     finer = frequency_response(SYSTEM, Forcing(F0=2.0, omega=30.0), E,
                                np.linspace(23.7, 42.7, 381), sweeps=False)  # fmt: skip

@@ -196,6 +196,7 @@ def test_a_design_with_no_forcing_is_refused_in_one_line(capsys):
     assert len(err) == 1 and err[0].startswith("symimpact design: error: force:"), err
 
 
+@pytest.mark.slow  # a compliant curve of 11 frequencies (~20 s): in the slow set
 def test_a_stiff_linear_contact_with_the_default_c1_gives_a_curve(capsys):
     # it was "internal error: LinAlgError" (a NaN test function handed to np.roots while locating
     # a bifurcation); the curve's most attracting stable points are checked against brute force

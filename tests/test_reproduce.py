@@ -289,6 +289,7 @@ def test_compare_knows_rounding_from_truncation(ours, printed, rounds, truncates
 
 
 # --- folder behaviour ------------------------------------------------------------------------------
+@pytest.mark.slow  # two quick reports (~50 s): in the slow set
 def test_refuses_a_nonempty_folder_and_force_replaces_only_its_own(tmp_path, capsys):
     """Issue 16, item 5: --force removed any non-empty folder (a thesis.tex went with it); now it
     replaces only a folder symimpact wrote (it holds the .symimpact-output marker)."""

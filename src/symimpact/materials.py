@@ -65,8 +65,8 @@ def gent_modulus(shore_a: float) -> float:
 
 _HANDBOOK = "typical handbook value for this grade (ASM Handbook Vol. 1–2; MatWeb data sheets)"
 
-#: The table: name → Material.  Typical values of a common grade of each; see the module docstring.
 # fmt: off
+#: The table: name → Material.  Typical values of a common grade of each; see the module docstring.
 MATERIALS: dict[str, Material] = {
     m.name: m
     for m in (
