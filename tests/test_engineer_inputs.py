@@ -118,3 +118,17 @@ def test_map_value_takes_the_tables_names(tmp_path, capsys):
     by_output_name = capsys.readouterr().out
     best = [line for line in by_output_name.splitlines() if line.startswith("wrote")]
     assert best and best[0].replace("damping_inclination", "DI") in by_table_name
+
+
+def test_the_command_line_starts_without_the_forced_package():
+    # a signal in the first ~0.3 s meets Python's default handler (tests/test_signals.py): the
+    # parser must not import the forced package and SciPy's optimisers (0.4 s) to build itself;
+    # each command imports what it runs
+    import subprocess
+    import sys
+
+    code = ("import sys; from symimpact.cli import build_parser; build_parser(); "
+            "heavy = [m for m in ('symimpact.forced', 'scipy.optimize', 'symimpact.maps.design') "
+            "if m in sys.modules]; print(heavy); sys.exit(1 if heavy else 0)")  # fmt: skip
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout + run.stderr

@@ -233,7 +233,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         display.parse_show(getattr(ns, "show", []))
         hz = getattr(ns, "freq_range", None) is not None or getattr(ns, "freq", None) is not None
-        if hz and not any(spec.partition("=")[0].strip() == "omega" for spec in ns.show or []):
+        if hz and not any(
+            spec.partition("=")[0].strip() == "omega" for spec in getattr(ns, "show", None) or []
+        ):
             display.set_display_unit("omega", "Hz")  # the user's unit back
         _check_outputs(ns)
         apply_engineer_inputs(ns, given)

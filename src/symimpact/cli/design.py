@@ -7,7 +7,6 @@ from __future__ import annotations
 from typing import Any
 
 from .. import budgets
-from ..forced.coverage import FREQUENCIES
 from .common import add_system, emit, forcing_of, system_from, write_csv
 from .frf import add_band, band_from, contact_of, contact_title
 
@@ -31,8 +30,9 @@ def add_parser(sub: Any) -> None:
                    help="the best clearance is refined by Brent's method between the grid's "
                         "neighbours to this (default 0.01 mm)")  # fmt: skip
     g.add_argument("--multistart", type=int, default=None, metavar="N",
-                   help="frequencies of each curve's multi-start brute force (default "
-                   f"{FREQUENCIES}; 0: none — faster, may miss motions no branch reaches)")  # fmt: skip
+                   help="frequencies of each curve's multi-start brute force (default that of "
+                   "frf, symimpact.forced.coverage.FREQUENCIES; 0: none — faster, may miss "
+                   "motions no branch reaches)")  # fmt: skip
     g.add_argument("--e-samples", type=int, default=5, metavar="N",
                    help="with --e LOW:HIGH: restitutions sampled over the range (odd; default 5: "
                    "the ends, the middle and the quarters)")  # fmt: skip
@@ -87,6 +87,8 @@ def run(ns) -> None:
                 "per restitution)"
             )  # fmt: skip
         return _robust(ns, system, forcing, e_range, omegas, grid["gap"])
+    from ..forced.coverage import FREQUENCIES  # here: the CLI starts without the forced package
+
     multistart = FREQUENCIES if ns.multistart is None else ns.multistart
     table = design_map(system, forcing, e, omegas, grid, executor=ns.executor,
                        workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
@@ -156,6 +158,7 @@ def _e_range(ns) -> tuple[float, float] | None:
 def _robust(ns, system, forcing, e_range, omegas, gaps) -> None:
     """The robust design over a restitution range (:func:`symimpact.maps.design.robust_design`)."""
     from ..display import display_unit, omega_text, shown
+    from ..forced.coverage import FREQUENCIES
     from ..maps.design import robust_design
 
     multistart = FREQUENCIES if ns.multistart is None else ns.multistart
