@@ -211,7 +211,7 @@ def plot_design(table: Any, path: str | os.PathLike, title: str = "") -> None:
     """The clearance design map (:func:`symimpact.maps.design.design_map`): the peak amplitude
     over the band against the clearance, one line per mass ratio, the best clearance of each
     marked, and the primary without the damper's peak (dashed)."""
-    from .display import display_unit, shown
+    from .display import shown
     from .maps.design import best_clearances
 
     plt = _pyplot()
@@ -227,24 +227,14 @@ def plot_design(table: Any, path: str | os.PathLike, title: str = "") -> None:
     for i, (_, row) in enumerate(best_clearances(table).iterrows()):
         ax.plot(shown("gap", row["gap"]), shown("x", row["peak_amplitude"]), "*", ms=13,
                 color=f"C{i % 10}", mec="k", label="best clearance" if i == 0 else None)  # fmt: skip
-    ax.axhline(shown("x", float(table["baseline_peak"].max())), ls="--", color="0.5", lw=1.0,
-               label="without the damper")  # fmt: skip
-    ax.set_xlabel(f"clearance d [{display_unit('gap')}]")
-    ax.set_ylabel(f"peak amplitude over the band [{display_unit('x')}]")
-    ax.set_ylim(bottom=0)
-    ax.legend(fontsize=8)
-    if title:
-        ax.set_title(title, fontsize=10)
-    fig.tight_layout()
-    atomic_savefig(fig, path)
-    plt.close(fig)
+    _finish_design(plt, fig, ax, float(table["baseline_peak"].max()), path, title)
 
 
 def plot_robust_design(result: dict[str, Any], path: str | os.PathLike, title: str = "") -> None:
     """A design robust to the restitution (:func:`symimpact.maps.design.robust_design`): the
     band of the peak over the range of e against the clearance, the nominal e's curve, the worst
     case, both best clearances marked, and the primary without the damper (dashed)."""
-    from .display import display_unit, shown
+    from .display import shown
 
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 5))
@@ -263,8 +253,15 @@ def plot_robust_design(result: dict[str, Any], path: str | os.PathLike, title: s
             mec="k", label="best at the nominal e")  # fmt: skip
     ax.plot(shown("gap", rb["gap"]), shown("x", rb["worst_peak"]), "*", ms=13, color="C3",
             mec="k", label="robust (smallest worst case)")  # fmt: skip
-    ax.axhline(shown("x", rows[0]["baseline_peak"]), ls="--", color="0.5", lw=1.0,
-               label="without the damper")  # fmt: skip
+    _finish_design(plt, fig, ax, rows[0]["baseline_peak"], path, title)
+
+
+def _finish_design(plt: Any, fig: Any, ax: Any, baseline: float, path: Any, title: str) -> None:
+    """A design figure's common end: the primary alone's peak (dashed), the axes, the legend,
+    the title, and the file written."""
+    from .display import display_unit, shown
+
+    ax.axhline(shown("x", baseline), ls="--", color="0.5", lw=1.0, label="without the damper")
     ax.set_xlabel(f"clearance d [{display_unit('gap')}]")
     ax.set_ylabel(f"peak amplitude over the band [{display_unit('x')}]")
     ax.set_ylim(bottom=0)
