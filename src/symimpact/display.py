@@ -36,6 +36,7 @@ OUTPUT_SI_UNITS = {
     "duration": "s",
     "amplitude": "m",
     "impacts_per_period": "dimensionless",
+    "impact_events_per_period": "dimensionless",
     "period_multiple": "dimensionless",
     "branch": "dimensionless",
     "omega": "rad/s",
@@ -116,6 +117,16 @@ def omega_text(omega: Any, spec: str = ".6g") -> str:
     """``"75.398 rad/s"`` or ``"12 Hz"``: a frequency Ω [rad/s] in its display unit (Hz when the
     user gave the band or the frequency in Hz, or chose it with ``--show omega=UNIT``)."""
     return f"{shown('omega', omega):{spec}} {_PRETTY.get(display_unit('omega'), display_unit('omega'))}"
+
+
+def impacts_text(impacts: float, events: float) -> str:
+    """``"12 impacts per period"``, or with chatter ``"418 impacts per period (2 impact events:
+    a chatter sequence counts once)"`` — the second number does not depend on how many impacts
+    of a sequence the run resolved before jumping to their limit."""
+    text = f"{impacts:.4g} impacts per period"
+    if events != impacts:
+        text += f" ({events:.4g} impact events: a chatter sequence counts once)"
+    return text
 
 
 def set_display_unit(name: str, unit: str) -> None:

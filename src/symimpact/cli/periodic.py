@@ -105,7 +105,7 @@ def run(ns) -> None:
 def _shooting(ns, system, forcing, e) -> None:
     """--method shooting: one orbit, the closed form's JSON keys and the shooting's own, for
     rigid impacts or a compliant contact ``e``."""
-    from ..display import display_unit, omega_text, shown
+    from ..display import display_unit, impacts_text, omega_text, shown
     from ..errors import ParameterError
     from ..forced import shoot_from_rest
     from ..forced.simulation import MAX_MULTIPLE, period_count
@@ -119,7 +119,8 @@ def _shooting(ns, system, forcing, e) -> None:
     text = (
         f"Ω {omega_text(forcing.omega)}: an orbit of {multiple} forcing period(s) by shooting "
         f"({o.iterations} Newton steps, residual {o.residual:.1e}): amplitude "
-        f"{shown('x', o.amplitude):.6g} {unit}, {o.impacts_per_period:.4g} impacts per period, "
+        f"{shown('x', o.amplitude):.6g} {unit}, "
+        f"{impacts_text(o.impacts_per_period, o.impact_events_per_period)}, "
         f"{'stable' if o.stable else 'unstable'} (largest |multiplier| {o.multipliers[0]:.6g})"
     )
     emit(ns, [o.as_dict()], text)

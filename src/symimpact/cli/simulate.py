@@ -120,7 +120,7 @@ def run(ns) -> None:
 def run_forced(ns) -> None:
     """The forced response (Eq. F1) with rigid impacts (Eq. F2) or a compliant contact, and its
     steady state."""
-    from ..display import display_unit, omega_text
+    from ..display import display_unit, impacts_text, omega_text
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced import simulate_forced
     from ..forced.simulation import MAX_MULTIPLE, period_count
@@ -183,8 +183,8 @@ def run_forced(ns) -> None:
         + ("" if display_unit("omega") == "Hz" else f" ({forcing.freq:.6g} Hz)")
         + f", {len(res.impacts)} impacts in "
         f"{len(res.period_max)} periods; steady over the last {len(res.period_max) - discard}"
-        f": amplitude {quantity_text('x', st.amplitude)}, {st.impacts_per_period:.4g} impacts "
-        "per period, "
+        f": amplitude {quantity_text('x', st.amplitude)}, "
+        f"{impacts_text(st.impacts_per_period, st.impact_events_per_period)}, "
         + (
             f"periodic with {st.period_multiple} forcing period(s)"
             if st.periodic

@@ -38,6 +38,7 @@ from .simulation import (
     TooManyContacts,
     _simulate,
     contact_arguments,
+    impact_counts,
     period_count,
     simulate_forced,
     within_walls,
@@ -79,6 +80,8 @@ class ShootingOrbit:
     stable: bool
     iterations: int
     residual: float
+    #: impact events a period, a chatter sequence counting once (:func:`.simulation.impact_counts`)
+    impact_events_per_period: float = 0.0
 
     def as_dict(self) -> dict[str, Any]:
         """The closed form's JSON keys (impact_phase, amplitude, impact_speed, admissible, stable,
@@ -91,6 +94,7 @@ class ShootingOrbit:
             "stable": self.stable,
             "multipliers": list(self.multipliers),
             "impacts_per_period": self.impacts_per_period,
+            "impact_events_per_period": self.impact_events_per_period,
             "period_multiple": self.period_multiple,
             "state": list(self.state),
             "iterations": self.iterations,
@@ -227,6 +231,7 @@ def shoot(
             "shooting", f"Newton did not converge in {max_iter} steps from this start"
         )
     ps, J, res = monodromy(system, forcing, e, s, periods)
+    impacts, events = impact_counts(res.events, -math.inf, math.inf)
     residual = float(np.max(np.abs((ps - s) / scale)))
     moduli = np.sort(np.abs(np.linalg.eigvals(J)))[::-1]
     ev = res.events
@@ -240,13 +245,14 @@ def shoot(
         state=tuple(float(c) for c in s),
         period_multiple=periods,
         amplitude=float(np.max(res.period_max)),
-        impacts_per_period=len(ev) / periods,
+        impacts_per_period=impacts / periods,
         impact_phase=phase,
         impact_speed=speed,
         multipliers=tuple(float(m) for m in moduli),
         stable=bool(moduli[0] < 1.0),
         iterations=it,
         residual=residual,
+        impact_events_per_period=events / periods,
     )
 
 

@@ -61,6 +61,9 @@ class Steady:
     period_multiple: int
     section_spread: float
     settling: bool = False
+    #: impact events a period: a chatter sequence (the impacts on one wall that accumulate)
+    #: counts once, however many of its impacts the run resolved before jumping to their limit
+    impact_events_per_period: float = 0.0
 
     def as_dict(self) -> dict[str, Any]:
         return dict(self.__dict__)
@@ -520,14 +523,52 @@ def steady_state(result: ForcedResult, discard: int) -> Steady:
         # a transient spiralling in (complex multipliers) can come back within SECTION_RTOL
         # after k periods while the period-to-period step still shrinks: not a period-k motion
         multiple = 0
+    # impacts are counted over whole periods between sections (the phase farthest from every
+    # impact), never at a period's start where an impact at a boundary would fall on either side
+    # by rounding (a run started on an orbit impacts exactly there)
+    if n - discard >= 2:
+        lo, hi, counted = (discard + offset) * T, (n - 1 + offset) * T, n - discard - 1
+    else:
+        lo, hi, counted = t0, t1, n - discard
+    impacts, events = impact_counts(result.events, lo, hi)
     return Steady(
         amplitude=amplitude,
-        impacts_per_period=len(kept) / (n - discard),
+        impacts_per_period=impacts / counted,
+        impact_events_per_period=events / counted,
         periodic=multiple > 0,
         period_multiple=multiple,
         section_spread=spread,
         settling=settling,
     )
+
+
+def impact_counts(events: np.ndarray, lo: float, hi: float) -> tuple[int, int]:
+    """(impacts, impact events) with times in [lo, hi) of an event table (:data:`EVENT_COLUMNS`).
+
+    Impacts: every impact the run resolved, an accumulation of chatter counting as one.  Impact
+    events: the same with each chatter sequence counted once — the impacts on one wall since the
+    last release or impact on the other wall, when an accumulation ends them.  The second does
+    not depend on how many impacts of a sequence are resolved before the jump to its limit
+    (:data:`CHATTER`); the first does."""
+    if not len(events):
+        return 0, 0
+    kind = events[:, _rigid.E_KIND]
+    side = events[:, _rigid.E_SIDE]
+    inside = (events[:, _rigid.E_T] >= lo) & (events[:, _rigid.E_T] < hi)
+    absorbed = np.zeros(len(events), dtype=bool)
+    run: list[int] = []
+    for i in range(len(events)):
+        if kind[i] == _rigid.KIND_RELEASE:
+            run = []
+        elif kind[i] == _rigid.KIND_ACCUMULATION:
+            absorbed[[j for j in run if side[j] == side[i]]] = True
+            run = []
+        else:
+            if run and side[run[-1]] != side[i]:
+                run = []
+            run.append(i)
+    impacts = inside & (kind != _rigid.KIND_RELEASE)
+    return int(np.count_nonzero(impacts)), int(np.count_nonzero(impacts & ~absorbed))
 
 
 def _settling(rel: np.ndarray) -> bool:
