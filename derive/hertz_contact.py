@@ -260,6 +260,19 @@ def derive() -> Board:
     delta_y = w("yield_approach", delta_y, r"The approach at which $p_0$ reaches $p_y$.", "F5")
     (v_y,) = sp.solve(sp.Eq(energy.subs(d_max, delta_y).subs(K, k_hz), mu * v0**2 / 2), v0)
     v_y = w("yield_speed", v_y, r"The impact speed that reaches it: $v_y$.", "F5")
+    (v_reach,) = sp.solve(sp.Eq(energy.subs(d_max, delta), mu * v0**2 / 2), v0)
+    v_reach = w(
+        "speed_for_approach",
+        v_reach,
+        r"For any contact with the force $K_{Hz}\delta^{3/2}$ (an elliptical one too), the impact "
+        r"speed whose deepest approach is δ: the energy balance read backwards.",
+        "F5",
+    )
+    board.check(
+        "the speed for the yield approach is the yield speed",
+        "F5",
+        sp.simplify(v_reach.subs(delta, delta_y).subs(K, k_hz) - v_y) == 0,
+    )
     rho, Y = sp.symbols("rho Y", positive=True)
     johnson = sp.simplify(
         (rho * v_y**2 / Y)
@@ -412,6 +425,22 @@ def derive() -> Board:
             "Impact speed at which the peak pressure reaches p_y (first yield)",
             "m/s",
             "v_y",
+        ),
+        (
+            "yield_approach",
+            (aEs, aR, apy),
+            delta_y,
+            "Approach at which the peak pressure of a circular contact reaches p_y",
+            "m",
+            r"\delta_y",
+        ),
+        (
+            "speed_for_approach",
+            (am_, aM, akhz, adelta),
+            v_reach.subs(mu, mu_mM),
+            "Impact speed whose deepest approach is δ (any K_Hz·δ^1.5 contact)",
+            "m/s",
+            "v",
         ),
         (
             "thornton_restitution",

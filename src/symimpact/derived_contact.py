@@ -268,23 +268,33 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
     if A == B:  # a circle: Step 13's kernels
         R = float(hz.effective_radius_scalar(imp.radius, 1.0 / cav.radius if cav.radius else 0.0))
         k_hz = float(hz.hertz_stiffness_scalar(E_star, R))
-        p0_per_root = 2.0 / (math.pi * math.sqrt(R))  # p₀ = (2E*/π)√(δ/R)
         geometry = "Step 13: 1/R = 1/R₁ + 1/R₂"
+
+        def pressure_at(approach: float) -> float:
+            return float(hz.peak_pressure_scalar(E_star, R, approach))
+
+        def approach_at(pressure: float) -> float:
+            return float(hz.yield_approach_scalar(E_star, R, pressure))
+
     else:  # an ellipse: R is the equivalent radius 1/(2√(AB)) that is reported
         ell = elliptical_hertz(A, B)
         R = 0.5 / math.sqrt(A * B)
         k_hz = ell.k_hz_per_modulus * E_star
-        p0_per_root = ell.p0_per_root
         geometry = f"Hertz's elliptical contact, b/a = {ell.k:.4g} (R: 1/(2√(AB)))"
+
+        def pressure_at(approach: float) -> float:  # p₀ ∝ √δ for an ellipse too
+            return ell.p0_per_root * E_star * math.sqrt(approach)
+
+        def approach_at(pressure: float) -> float:
+            return (pressure / (ell.p0_per_root * E_star)) ** 2
+
     delta = float(closed_forms.hertz_max_penetration_scalar(m, M, k_hz, v0))
     pressures = [p for p in (yield_pressure(a), yield_pressure(b)) if p is not None]
     p_y = min(pressures) if pressures else None
     if p_y is None:
         v_y = None
-    else:  # p₀ = p0_per_root·E*·√δ reaches p_y at δ_y; ½μv_y² = (2/5)K_Hz·δ_y^{5/2}
-        delta_y = (p_y / (p0_per_root * E_star)) ** 2
-        mu = m * M / (m + M)
-        v_y = math.sqrt(0.8 * k_hz * delta_y**2.5 / mu)
+    else:  # p₀ reaches p_y at the approach δ_y; Step 13: the impact speed that reaches δ_y
+        v_y = float(hz.speed_for_approach_scalar(m, M, k_hz, approach_at(p_y)))
     e, e_source = restitution_at(imp, cav, v0, v_y)
     from .contact import hunt_crossley_chi
 
@@ -321,7 +331,7 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
         max_penetration=delta,
         duration=float(closed_forms.hertz_contact_duration_scalar(m, M, k_hz, v0)),
         peak_force=float(hz.impact_peak_force_scalar(m, M, k_hz, v0)),
-        peak_pressure=p0_per_root * E_star * math.sqrt(delta),
+        peak_pressure=pressure_at(delta),
         yield_speed=v_y,
         e=e,
         chi=float(chi),

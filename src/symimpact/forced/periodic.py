@@ -25,7 +25,6 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import MethodNotApplicable
 from ..generated import forced_flight as ff
 from ..generated import periodic_orbit as po
 from ..system import ImpactSystem
@@ -67,14 +66,13 @@ class PeriodicOrbit:
 
 def periodic_orbits(system: ImpactSystem, forcing: Forcing, e: Any) -> list[PeriodicOrbit]:
     """The symmetric two-impact periodic motions of the rigid-impact damper (Eq. F3): zero, one
-    or two solutions, each with amplitude, impact speed, admissibility and stability."""
+    or two solutions, each with amplitude, impact speed, admissibility and stability, the
+    smaller amplitude first.  Solved from all four conditions of Eq. F3 together, so that no
+    determinant of three of them divides (one vanishes at the undamped resonance, others next
+    to the damped one)."""
     from .contact_law import checked
 
     system, forcing, e = checked(system, forcing, e, rigid_only="the closed form")
-    if system.C == 0.0 and math.isclose(forcing.omega, system.omega_n, rel_tol=1e-12):
-        raise MethodNotApplicable(
-            "closed-form", "the undamped resonance has no steady solution to build the orbit on"
-        )
     args = (
         system.M,
         system.K,
@@ -101,7 +99,7 @@ def periodic_orbits(system: ImpactSystem, forcing: Forcing, e: Any) -> list[Peri
         V = float(po.main_velocity_after(*args, phi))
         U = float(po.impact_mass_velocity_after(*args, phi))
         orbits.append(_describe(system, forcing, e, phi, X, V, U))
-    return orbits
+    return sorted(orbits, key=lambda o: o.amplitude)
 
 
 def _flight(system, forcing, phi, X, V, tau):
