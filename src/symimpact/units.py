@@ -51,6 +51,8 @@ SI_UNITS: dict[str, str] = {
     "mass_ratio": "dimensionless",
     "F0": "N",
     "X_b": "m",
+    "V_b": "m/s",
+    "A_b": "m/s^2",
     "omega": "rad/s",
     "freq": "Hz",
     "phase": "rad",
@@ -371,6 +373,8 @@ def si(name: str, value: Any, unit: str | None = None) -> Any:
     unit = unit or SI_UNITS.get(name, "dimensionless")
     if isinstance(value, str):
         number, unit_text = split_quantity(name, value)
+        if unit_text in ("g", "gn", "g0") and unit == "m/s^2":  # an acceleration: not grams
+            unit_text = "standard_gravity"
         # a bare number written as text means SI; a unit is read by pint, without the number
         value = _unit_to_si(name, value, number, unit_text, unit) if unit_text else number
     elif hasattr(value, "dimensionality"):

@@ -253,6 +253,13 @@ class _Once(argparse.Action):
         setattr(namespace, self.dest, values)
 
 
+#: The refusal of a forcing without an amplitude.
+AMPLITUDE_NEEDED = (
+    "give the forcing amplitude: --force F0, or base motion --base X_b, --base-vel V_b or "
+    "--base-acc A_b"
+)
+
+
 def add_forcing(p: argparse.ArgumentParser) -> None:
     """The harmonic forcing options (Eq. F1): --force F0 and/or --base X_b, at --omega Ω or
     --freq f, with --phase φ; each may be given once."""
@@ -263,6 +270,16 @@ def add_forcing(p: argparse.ArgumentParser) -> None:
     g.add_argument("--force", dest="F0", help="force amplitude F0 on the main mass [N]", **once)
     g.add_argument(
         "--base", dest="X_b", help="base-motion amplitude X_b under the primary [m]", **once
+    )
+    g.add_argument(
+        "--base-vel", dest="V_b", help="base velocity amplitude V_b [m/s] (X_b = V_b/Ω)", **once
+    )
+    g.add_argument(
+        "--base-acc",
+        dest="A_b",
+        help='base acceleration amplitude A_b [m/s²] (X_b = A_b/Ω²); "0.5 g" is 0.5 standard '
+        "gravity",
+        **once,
     )
     g.add_argument("--omega", help="forcing frequency Ω [rad/s] (or --freq)", **once)
     g.add_argument("--freq", help="forcing frequency f [Hz], Ω = 2πf (or --omega)", **once)
@@ -276,15 +293,16 @@ def add_forcing(p: argparse.ArgumentParser) -> None:
 
 def has_forcing(ns: argparse.Namespace) -> bool:
     """Whether any forcing option was given."""
-    return any(getattr(ns, k) is not None for k in ("F0", "X_b", "omega", "freq", "phase"))
+    keys = ("F0", "X_b", "V_b", "A_b", "omega", "freq", "phase")
+    return any(getattr(ns, k, None) is not None for k in keys)
 
 
 def forcing_from(ns: argparse.Namespace):
     """The :class:`~symimpact.forced.Forcing` the forcing options describe."""
     from ..errors import ParameterError
 
-    if ns.F0 is None and ns.X_b is None:
-        raise ParameterError("force", "give the forcing amplitude: --force F0 or --base X_b")
+    if all(getattr(ns, k, None) is None for k in ("F0", "X_b", "V_b", "A_b")):
+        raise ParameterError("force", AMPLITUDE_NEEDED)
     if ns.omega is None and ns.freq is None:
         raise ParameterError("omega", "give the forcing frequency: --omega Ω or --freq f")
     if ns.omega is not None and ns.freq is not None:
@@ -299,11 +317,17 @@ def forcing_of(ns: argparse.Namespace, **frequency: Any):
     from ..forced import Forcing
 
     try:
+        base = {k: getattr(ns, k) for k in ("V_b", "A_b") if getattr(ns, k, None) is not None}
         return Forcing(
-            F0=0.0 if ns.F0 is None else ns.F0, X_b=0.0 if ns.X_b is None else ns.X_b, **frequency
+            F0=0.0 if ns.F0 is None else ns.F0,
+            X_b=0.0 if ns.X_b is None else ns.X_b,
+            **base,
+            **frequency,
         )
     except ParameterError as exc:
-        flag = {"F0": "force", "X_b": "base"}.get(exc.parameter, exc.parameter)
+        flag = {"F0": "force", "X_b": "base", "V_b": "base-vel", "A_b": "base-acc"}.get(
+            exc.parameter, exc.parameter
+        )
         raise ParameterError(flag, exc.reason) from None
 
 

@@ -9,7 +9,15 @@ import math
 from typing import Any
 
 from .. import budgets
-from .common import add_output, add_system, emit, forcing_of, system_from, write_csv
+from .common import (
+    AMPLITUDE_NEEDED,
+    add_output,
+    add_system,
+    emit,
+    forcing_of,
+    system_from,
+    write_csv,
+)
 
 
 def add_parser(sub: Any) -> None:
@@ -33,6 +41,12 @@ def add_band(g: Any) -> None:
                    help="force amplitude F0 on the main mass [N]")  # fmt: skip
     g.add_argument("--base", dest="X_b", default=None, metavar="Q",
                    help="base-motion amplitude X_b under the primary [m]")  # fmt: skip
+    g.add_argument("--base-vel", dest="V_b", default=None, metavar="Q",
+                   help="base velocity amplitude V_b [m/s], constant over the band "
+                   "(X_b = V_b/Ω)")  # fmt: skip
+    g.add_argument("--base-acc", dest="A_b", default=None, metavar="Q",
+                   help='base acceleration amplitude A_b [m/s²], constant over the band as on '
+                   'a shaker (X_b = A_b/Ω²); "0.5 g" is 0.5 standard gravity')  # fmt: skip
     g.add_argument("--omega-range", default=None, metavar="START:STOP:STEP",
                    help="the band in rad/s, e.g. 25:40:0.1 (or --freq-range)")  # fmt: skip
     g.add_argument("--freq-range", default=None, metavar="START:STOP:STEP",
@@ -53,8 +67,8 @@ def band_from(ns) -> Any:
     from ..maps.points import parse_range
 
     contact_of(ns)
-    if ns.F0 is None and ns.X_b is None:
-        raise ParameterError("force", "give the forcing amplitude: --force F0 or --base X_b")
+    if all(getattr(ns, k) is None for k in ("F0", "X_b", "V_b", "A_b")):
+        raise ParameterError("force", AMPLITUDE_NEEDED)
     if (ns.omega_range is None) == (ns.freq_range is None):
         raise ParameterError("omega-range", "give the band once: --omega-range or --freq-range")
     if ns.omega_range is not None:

@@ -153,7 +153,7 @@ class _Problem:
         if self.parameter == "e":
             return system, f, value
         if self.parameter == "omega":
-            return system, Forcing(F0=f.F0, X_b=f.X_b, omega=value, phase=f.phase), e
+            return system, f.at(value), e
         F0 = value if self.parameter == "F0" else f.F0
         X_b = value if self.parameter == "X_b" else f.X_b
         return system, Forcing(F0=F0, X_b=X_b, omega=f.omega, phase=f.phase), e
@@ -228,7 +228,7 @@ def _resection(problem: _Problem, y: np.ndarray, t: np.ndarray, res):
     s_new = state_at(res, np.array([tau]))[0]
     f = problem.forcing
     phase = math.remainder(f.phase + res.forcing.omega * tau, 2 * math.pi)
-    moved = _Problem(problem.system, Forcing(F0=f.F0, X_b=f.X_b, omega=f.omega, phase=phase),
+    moved = _Problem(problem.system, f.at(f.omega, phase),
                      problem.e, problem.periods, problem.scale, problem.unit,
                      problem.parameter)  # fmt: skip
     y_new = np.concatenate([s_new / problem.scale, [y[4]]])
@@ -661,7 +661,7 @@ def leave(
                                 direction=1 if value > at else -1, **kw)  # fmt: skip
     system, forcing, e = _Problem(start.system, start.forcing, start.e, start.periods,
                                   np.ones(4), 1.0, parameter).at(at)  # fmt: skip
-    forcing = Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=forcing.omega, phase=bifurcation.phase)
+    forcing = forcing.at(forcing.omega, bifurcation.phase)
     try:
         mono = monodromy(system, forcing, e, np.array(bifurcation.state), start.periods)[1]
     except SymimpactError:
@@ -689,7 +689,7 @@ def orbit_between(
     if p.phase != q.phase:
         p, f = (p if f <= 0.5 else q), 0.0
     guess = np.array(p.state) + f * (np.array(q.state) - np.array(p.state))
-    fs = Forcing(F0=at[1].F0, X_b=at[1].X_b, omega=at[1].omega, phase=p.phase)
+    fs = at[1].at(at[1].omega, p.phase)
     try:
         return shoot(at[0], fs, at[2], guess, periods=periods)
     except SymimpactError:

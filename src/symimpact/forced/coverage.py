@@ -220,7 +220,7 @@ def attractors(
     frequency once."""
     found: list[Attractor] = []
     for w in frequencies(band, n):
-        f = Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=float(w), phase=forcing.phase)
+        f = forcing.at(float(w))
         here: list[Attractor] = []
         for s in _starts(system, f):
             try:

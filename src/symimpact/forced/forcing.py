@@ -1,5 +1,9 @@
 """Harmonic forcing of the primary: a force F0·cos(Ωt + φ) on the main mass, base motion
-X_b·cos(Ωt + φ) under its spring and damper, or both (Step 8, Eq. F1)."""
+X_b·cos(Ωt + φ) under its spring and damper, or both (Step 8, Eq. F1).
+
+Base motion is given as a shaker is specified: a displacement amplitude X_b, or a velocity
+amplitude V_b or an acceleration amplitude A_b that stays constant over a band, so that
+X_b = V_b/Ω or A_b/Ω² at each frequency (the derivatives of X_b·cos(Ωt + φ))."""
 
 from __future__ import annotations
 
@@ -16,8 +20,11 @@ class Forcing:
     """Harmonic forcing (SI floats once built; quantities with units accepted).
 
     ``F0`` [N]: force amplitude on the main mass.  ``X_b`` [m]: base-motion amplitude (the primary's
-    spring and damper attach to the base).  ``omega`` [rad/s]: forcing frequency Ω, or ``freq``
-    [Hz] instead (Ω = 2πf).  ``phase`` [rad]: φ, the forcing phase at t = 0.
+    spring and damper attach to the base); or instead ``V_b`` [m/s], the base velocity amplitude
+    (X_b = V_b/Ω), or ``A_b`` [m/s²], the base acceleration amplitude (X_b = A_b/Ω²; "0.5 g"
+    reads g as the standard gravity 9.80665 m/s²), which :meth:`at` keeps over a band.
+    ``omega`` [rad/s]: forcing frequency Ω, or ``freq`` [Hz] instead (Ω = 2πf).  ``phase``
+    [rad]: φ, the forcing phase at t = 0.
     """
 
     F0: Any = 0.0
@@ -25,6 +32,8 @@ class Forcing:
     omega: Any = None
     freq: Any = None
     phase: Any = 0.0
+    V_b: Any = None
+    A_b: Any = None
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
@@ -41,6 +50,36 @@ class Forcing:
         set_(self, "F0", si_float("F0", self.F0))
         set_(self, "X_b", si_float("X_b", self.X_b))
         set_(self, "phase", si_float("phase", self.phase))
+        given = [k for k in ("V_b", "A_b") if getattr(self, k) is not None]
+        if given:
+            if len(given) > 1 or self.X_b != 0.0:
+                raise ParameterError(given[-1], "give the base motion once: X_b, V_b or A_b")
+            name = given[0]
+            value = si_float(name, getattr(self, name))
+            set_(self, name, value)
+            set_(self, "X_b", value / (omega if name == "V_b" else omega * omega))
+
+    def base_amplitude(self, omega: Any) -> Any:
+        """X_b [m] at the frequencies ``omega`` [rad/s] (a number or an array): X_b, V_b/Ω or
+        A_b/Ω², whichever was given stays constant."""
+        if self.V_b is not None:
+            return self.V_b / omega
+        if self.A_b is not None:
+            return self.A_b / (omega * omega)
+        return self.X_b + 0.0 * omega
+
+    def at(self, omega: float, phase: float | None = None) -> Forcing:
+        """The same forcing at the frequency ``omega`` [rad/s] (and ``phase``, default this
+        one's): F0 and whichever of X_b, V_b, A_b was given stay constant (Eq. F1)."""
+        kept = {"V_b": self.V_b} if self.V_b is not None else {}
+        kept |= {"A_b": self.A_b} if self.A_b is not None else {}
+        return Forcing(
+            F0=self.F0,
+            X_b=0.0 if kept else self.X_b,
+            omega=omega,
+            phase=self.phase if phase is None else phase,
+            **kept,
+        )
 
     @property
     def period(self) -> float:
@@ -48,4 +87,6 @@ class Forcing:
         return 2.0 * math.pi / self.omega
 
     def as_dict(self) -> dict[str, float]:
-        return {"F0": self.F0, "X_b": self.X_b, "omega": self.omega, "phase": self.phase}
+        out = {"F0": self.F0, "X_b": self.X_b, "omega": self.omega, "phase": self.phase}
+        out |= {k: getattr(self, k) for k in ("V_b", "A_b") if getattr(self, k) is not None}
+        return out

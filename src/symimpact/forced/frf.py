@@ -151,7 +151,7 @@ class FrequencyResponse:
 
 
 def _forcing(forcing: Forcing, omega: float) -> Forcing:
-    return Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=omega, phase=forcing.phase)
+    return forcing.at(omega)
 
 
 def _on_branch(branches: list[Branch], omega: float, amplitude: float, k: int) -> bool:
@@ -198,7 +198,7 @@ def _section_state(orbit, omega: float, h: float, system: ImpactSystem, forcing:
     x = float(ff.forced_displacement(T / 4, *args))
     v = float(ff.forced_velocity(T / 4, *args))
     state = (x, v, h + orbit.U * T / 4 - (x - orbit.X), orbit.U)
-    return state, Forcing(F0=f.F0, X_b=f.X_b, omega=omega, phase=orbit.impact_phase + math.pi / 2)
+    return state, f.at(omega, orbit.impact_phase + math.pi / 2)
 
 
 def frequency_response(
@@ -320,7 +320,7 @@ def _switch_branches(out, system, forcing, e, band, step, failures) -> None:
                                     []).append(f.omega)  # fmt: skip
                 return
             done += 1
-            fs = Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=f.omega, phase=f.phase)
+            fs = forcing.at(f.omega, f.phase)
             try:
                 starts = branch_starts(system, fs, e, f, band, periods=b.period_multiple, step=step)
             except SymimpactError as exc:

@@ -64,8 +64,9 @@ class Peak:
 def linear_amplitude(system: ImpactSystem, forcing: Forcing, w: Any) -> np.ndarray:
     """The primary without the damper: amplitude of Step 8's steady solution (Eq. F1) [m]."""
     w = np.asarray(w, dtype=float)
-    A = ff.steady_cosine(system.M, system.K, system.C, forcing.F0, forcing.X_b, w)
-    B = ff.steady_sine(system.M, system.K, system.C, forcing.F0, forcing.X_b, w)
+    X_b = forcing.base_amplitude(w)  # constant, or V_b/Ω, A_b/Ω² over the band
+    A = ff.steady_cosine(system.M, system.K, system.C, forcing.F0, X_b, w)
+    B = ff.steady_sine(system.M, system.K, system.C, forcing.F0, X_b, w)
     return np.hypot(A, B)
 
 
@@ -156,7 +157,7 @@ def stable_peak(
 
 
 def _at(system, forcing, e, omega):
-    return system, Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=omega, phase=forcing.phase), e
+    return system, forcing.at(omega), e
 
 
 def _interior_maximum(b: Branch, p0, p1, p2, system, forcing, e):

@@ -76,7 +76,7 @@ def rigid_limit(
         )
     orbit = stable[0]
     # t = 0 at the orbit's impact on the wall +d/2
-    f = Forcing(F0=forcing.F0, X_b=forcing.X_b, omega=forcing.omega, phase=orbit.impact_phase)
+    f = forcing.at(forcing.omega, orbit.impact_phase)
     start = {
         "x0": orbit.X,
         "xdot0": orbit.V,

@@ -61,6 +61,15 @@ def _restitution(system: Any, forcing: Any, e: Any) -> float:
     return checked(system, forcing, e, rigid_only="the slow flow")[2]
 
 
+def _constant_base(forcing: Forcing) -> None:
+    """The backbone and the best clearance move along frequencies with one X_b (Eq. F5)."""
+    for name in ("V_b", "A_b"):
+        if getattr(forcing, name) is not None:
+            raise ParameterError(
+                name, "the slow flow's backbone takes a constant base displacement X_b; give X_b"
+            )
+
+
 def _between_walls(xi: float, theta: float, delta: float) -> bool:
     """The relative motion Θ·tri(τ − Δ) − ξ·cos τ (in half clearances) stays within ±1 over the
     half period from the impact on the wall +d/2 (Eq. F5's ansatz)."""
@@ -128,6 +137,7 @@ def backbone(system: ImpactSystem, forcing: Forcing, e: Any, xi: Any) -> Backbon
     """Eq. F5's backbone at the ratios ``xi`` (each above the activation threshold); the
     forcing's amplitude sets the clearances, its frequency plays no part."""
     e = _restitution(system, forcing, e)
+    _constant_base(forcing)
     xi = np.asarray(si("xi", xi), dtype=float)
     threshold = float(sf.activation_amplitude_ratio(e))
     if not np.all(np.isfinite(xi)) or np.any(xi <= threshold):
@@ -156,6 +166,7 @@ def best_clearance(system: ImpactSystem, forcing: Forcing, e: Any) -> BestCleara
     backbone clearance d_b(ξ), by bounded Brent in log ξ.  A larger clearance leaves the
     absorber inactive at the resonance."""
     e = _restitution(system, forcing, e)
+    _constant_base(forcing)
     if system.C == 0.0:
         raise MethodNotApplicable(
             "slow-flow", "without primary damping the backbone clearance grows without bound"

@@ -235,7 +235,8 @@ def design_map(
     store = None
     if out is not None:
         contact = {"e": e} if is_rigid(e) else e.as_dict()
-        settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, **contact,
+        base = {k: v for k, v in forcing.as_dict().items() if k in ("V_b", "A_b")}
+        settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, **base, **contact,
                     "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip
         if multistart != FREQUENCIES:  # (files written with the default carry no entry)
             settings["multistart"] = multistart
