@@ -356,3 +356,14 @@ def test_long_tables_are_links_and_the_paper_is_cited_by_title(report):
     assert "| d [mm] | N_tot | N_eff | effectiveness | DI [µm] | class |" not in md
     assert "shared/paper" not in md and "Free vibration analysis of nonlinear resilient" in md
     assert "shared/paper" not in (path / "index.html").read_text(encoding="utf-8")
+
+
+def test_without_a_folder_it_says_what_it_would_write_and_stops(tmp_path, capsys, monkeypatch):
+    """`symimpact reproduce` alone starts no run (issue 35 item 6): it prints the stages and
+    exits 2 naming `out`; nothing is written in the working folder."""
+    monkeypatch.chdir(tmp_path)
+    assert main(["reproduce"]) == 2
+    out, err = capsys.readouterr()
+    assert "1. contact" in out and "4. forced" in out
+    assert err.startswith("symimpact reproduce: error: out:") and "--quick" in err
+    assert list(tmp_path.iterdir()) == []

@@ -17,17 +17,32 @@ def add_parser(sub: Any) -> None:
     p.add_argument(
         "out",
         nargs="?",
-        default="symimpact-report",
-        help="report folder (created; must be new or empty unless --force); "
-        "default symimpact-report",
+        default=None,
+        help="report folder (created; must be new or empty unless --force); without it the "
+        "command prints what it would write and stops, unless --quick (then symimpact-report)",
     )
-    p.add_argument("--quick", action="store_true", help="coarser grids: seconds, not a minute")
+    p.add_argument(
+        "--quick",
+        action="store_true",
+        help="coarser grids, for a look at the report's shape (its numbers are not the full run's)",
+    )
     add_force(p)
     p.add_argument("--quiet", action="store_true", help="no progress bars")
 
 
 def run(ns) -> None:
-    from ..report import reproduce
+    from ..errors import ParameterError
+    from ..report import plan, reproduce
+
+    if ns.out is None and not ns.quick:
+        print(plan())
+        raise ParameterError(
+            "out",
+            "give the report folder, e.g. `symimpact reproduce report` (full grids), or add "
+            "--quick for coarse grids into symimpact-report",
+        )
+    if ns.out is None:
+        ns.out = "symimpact-report"
 
     out, sections = reproduce(ns.out, quick=ns.quick, force=ns.force, progress=not ns.quiet)
     n_fig = sum(len(s.figures()) for s in sections)

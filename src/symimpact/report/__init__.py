@@ -39,6 +39,14 @@ def _stages() -> list[tuple[str, int, Callable[..., Section]]]:
     ]
 
 
+def plan() -> str:
+    """What :func:`reproduce` writes, stage by stage (the text ``symimpact reproduce`` prints
+    when it is given no folder)."""
+    lines = ["symimpact reproduce writes a report folder (index.html, report.md, PNG, CSV):"]
+    lines += [f"  {i}. {desc}: {steps} steps" for i, (desc, steps, _) in enumerate(_stages(), 1)]
+    return "\n".join(lines)
+
+
 def reproduce(
     out: str | os.PathLike,
     *,
@@ -49,7 +57,7 @@ def reproduce(
 ) -> tuple[Path, list[Section]]:
     """Write the reproduction report into the folder ``out`` and return it with its sections.
 
-    ``quick`` uses coarser grids (seconds instead of about a minute); ``force`` replaces a
+    ``quick`` uses coarser grids (a look at the report's shape); ``force`` replaces a
     non-empty ``out``.  ``command`` is recorded in the report (default: this process's argv).
     Tables 1 and 3 and Fig. 2–7 compare every printed number with ours (see :mod:`.paper`).
     """
