@@ -216,15 +216,22 @@ def shoot(
         # contacts a period)
         if not rigid:
             step = step / max(1.0, float(np.max(np.abs(step / scale))))
+        size = float(np.max(np.abs(step / scale)))  # converged on the step Newton asked for
         # a step that would put the impact mass through a wall is halved until it does not
         while rigid and abs(s[2] + step[2]) > h and np.max(np.abs(step / scale)) > tol:
             step = 0.5 * step
+        if rigid and abs(s[2] + step[2]) > h:  # halved to nothing: Newton presses on the wall
+            raise MethodNotApplicable(
+                "shooting",
+                "Newton's steps press the impact mass into a wall (an orbit that sticks or "
+                "chatters there, which shooting does not follow)",
+            )
         s = s + step
         # a compliant map carries ~1e-12 of noise (continuation.NOISE), amplified by the
         # conditioning of (monodromy − I)
         scaled = (J - np.eye(4)) * scale[None, :] / scale[:, None]
         floor = tol if rigid else max(tol, 1e-12 * float(np.linalg.cond(scaled)))
-        if float(np.max(np.abs(step / scale))) <= floor:
+        if size <= floor:
             break
     else:
         raise MethodNotApplicable(
