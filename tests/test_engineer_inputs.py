@@ -132,3 +132,35 @@ def test_the_command_line_starts_without_the_forced_package():
             "if m in sys.modules]; print(heavy); sys.exit(1 if heavy else 0)")  # fmt: skip
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert run.returncode == 0, run.stdout + run.stderr
+
+
+def test_a_sweep_shows_the_primary_alone_beside_its_rows(capsys):
+    """Issue 35 item 5: the sweep's table ends with DI and ζ_eq of the primary alone from the same
+    start.  Against the closed-form decay x = (v₀/ω_d)·e^(−ζωₙt)·sin(ω_d t) of the default system
+    (M 1 kg, K 100 N/m, C 1 N s/m, ẋ₀ 0.5 m/s): its positive maxima lie where
+    tan(ω_d t) = ω_d/(ζωₙ), one damped period apart; DI is the least-squares slope through the
+    first four against ωₙt (1e-9: the peak finder's located maxima), and ζ_eq is ζ (1e-12)."""
+    import numpy as np
+
+    assert main(["sweep", "--gap", "6 mm:8 mm:2 mm", "--quiet"]) == 0
+    text = capsys.readouterr().out
+    line = next(s for s in text.splitlines() if s.startswith("without the damper"))
+    di_um = float(line.split("DI ")[1].split(" µm")[0])
+    zeta_eq = float(line.split("ζ_eq ")[1].split(" ")[0])
+    M, K, C, v0 = 1.0, 100.0, 1.0, 0.5
+    wn = math.sqrt(K / M)
+    zeta = C / (2 * math.sqrt(K * M))
+    wd = wn * math.sqrt(1 - zeta**2)
+    t = (np.arctan2(wd, zeta * wn) + 2 * np.pi * np.arange(4)) / wd
+    X = v0 / wd * np.exp(-zeta * wn * t) * np.sin(wd * t)
+    di = abs(np.polyfit(wn * t, X, 1)[0])
+    assert di_um == pytest.approx(di * 1e6, rel=1e-5)  # printed to 6 digits
+    assert zeta_eq == pytest.approx(zeta, abs=5e-6)  # printed to 5 decimals
+    from symimpact.simulation import simulate
+    from symimpact.system import ImpactSystem
+
+    alone = simulate(ImpactSystem(M=M, K=K, C=C, m=0.25, gap=1e3, contact="linear", k1=1e6),
+                     xdot0=v0, ydot0=v0, t_end=20.0)  # fmt: skip
+    assert alone.n_impacts == 0
+    assert alone.damping_inclination == pytest.approx(di, rel=1e-9)
+    assert alone.zeta_eq == pytest.approx(zeta, rel=1e-12)
