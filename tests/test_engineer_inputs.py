@@ -144,7 +144,8 @@ def test_a_sweep_shows_the_primary_alone_beside_its_rows(capsys):
 
     assert main(["sweep", "--gap", "6 mm:8 mm:2 mm", "--quiet"]) == 0
     text = capsys.readouterr().out
-    line = next(s for s in text.splitlines() if s.startswith("without the damper"))
+    lines = text.splitlines()
+    line = lines[next(i for i, s in enumerate(lines) if s.startswith("without the damper")) + 1]
     di_um = float(line.split("DI ")[1].split(" µm")[0])
     zeta_eq = float(line.split("ζ_eq ")[1].split(" ")[0])
     M, K, C, v0 = 1.0, 100.0, 1.0, 0.5
