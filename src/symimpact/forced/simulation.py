@@ -14,6 +14,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
+from numba import njit
 
 from .. import _interrupt, _stepper, budgets
 from ..checks import bounded, instance, whole_number
@@ -552,23 +553,33 @@ def impact_counts(events: np.ndarray, lo: float, hi: float) -> tuple[int, int]:
     (:data:`CHATTER`); the first does."""
     if not len(events):
         return 0, 0
-    kind = events[:, _rigid.E_KIND]
-    side = events[:, _rigid.E_SIDE]
+    kind = np.ascontiguousarray(events[:, _rigid.E_KIND])
+    side = np.ascontiguousarray(events[:, _rigid.E_SIDE])
     inside = (events[:, _rigid.E_T] >= lo) & (events[:, _rigid.E_T] < hi)
-    absorbed = np.zeros(len(events), dtype=bool)
-    run: list[int] = []
-    for i in range(len(events)):
-        if kind[i] == _rigid.KIND_RELEASE:
-            run = []
-        elif kind[i] == _rigid.KIND_ACCUMULATION:
-            absorbed[[j for j in run if side[j] == side[i]]] = True
-            run = []
-        else:
-            if run and side[run[-1]] != side[i]:
-                run = []
-            run.append(i)
+    absorbed = _absorbed(kind, side, float(_rigid.KIND_RELEASE), float(_rigid.KIND_ACCUMULATION))
     impacts = inside & (kind != _rigid.KIND_RELEASE)
     return int(np.count_nonzero(impacts)), int(np.count_nonzero(impacts & ~absorbed))
+
+
+@njit(cache=True)
+def _absorbed(kind, side, release, accumulation):
+    """The impacts a later accumulation on their wall ends (a run on one wall since the last
+    release or impact on the other wall), one pass (runs have ~1e5 events)."""
+    out = np.zeros(kind.shape[0], dtype=np.bool_)
+    start = -1  # first index of the current run of impacts on one wall, -1: none
+    for i in range(kind.shape[0]):
+        if kind[i] == release:
+            start = -1
+        elif kind[i] == accumulation:
+            if start >= 0 and side[start] == side[i]:
+                out[start:i] = True
+            start = -1
+        else:
+            if start >= 0 and side[start] != side[i]:
+                start = -1
+            if start < 0:
+                start = i
+    return out
 
 
 def _settling(rel: np.ndarray) -> bool:
