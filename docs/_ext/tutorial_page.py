@@ -180,7 +180,8 @@ print(f"DI = {{best['damping_inclination'] * 1e6:.1f}} µm, "
             "--c1", f"{sysd.c1:.6g}", "--gap", "2 mm:20 mm:1 mm", "--xdot0", "1 m/s",
             "--t-end", "3", "--workers", "1", "--quiet", "--csv", str(folder / "sweep.csv")]  # fmt: skip
     shown = _command(argv).replace(str(folder) + "/", "")
-    lines = textwrap.dedent(run_cli(argv)).splitlines()
+    # the first lines (the table), with their common indent removed
+    lines = textwrap.dedent("\n".join(run_cli(argv).splitlines()[:8])).splitlines()
     out += ["The same from the command line (`--plot` writes the figure, `--csv` the table; the "
             "first lines of its output):", "", "```console", shown,
             *lines[:8], "```", "",
