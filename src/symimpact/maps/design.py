@@ -235,8 +235,9 @@ def design_map(
     store = None
     if out is not None:
         contact = {"e": e} if is_rigid(e) else e.as_dict()
-        base = {k: v for k, v in forcing.as_dict().items() if k in ("V_b", "A_b")}
-        settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, **base, **contact,
+        motion = {k: v for k, v in forcing.as_dict().items() if k in ("V_b", "A_b")}
+        settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, **motion,
+                    **contact,
                     "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip
         if multistart != FREQUENCIES:  # (files written with the default carry no entry)
             settings["multistart"] = multistart
