@@ -219,11 +219,9 @@ def _without_damper(ns, system, names) -> list[str]:
     varied = [n for n in names if n in PRIMARY_INPUTS]
     if varied:
         return [f"without the damper: differs from row to row ({varied[0]} varies)"]
-    x0 = 0.0 if ns.x0 is None else ns.x0
-    xdot0 = 0.0 if ns.xdot0 is None else ns.xdot0
     try:  # the impact mass rides with the primary in a clearance it never reaches
-        alone = simulate(system.with_(gap=1e3), x0=x0, xdot0=xdot0, y0=x0, ydot0=xdot0,
-                         t_end=ns.t_end if ns.t_end is not None else 20.0)  # fmt: skip
+        alone = simulate(system.with_(gap=1e3), x0=ns.x0, xdot0=ns.xdot0, y0=ns.x0,
+                         ydot0=ns.xdot0, t_end=ns.t_end)  # fmt: skip
     except SymimpactError as exc:
         return [f"without the damper: not computed ({exc})"]
     if alone.n_impacts:
