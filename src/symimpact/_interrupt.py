@@ -77,12 +77,15 @@ class _Pipe:
             self.r, self.w, self.pid = r, w, os.getpid()
         return self.r, self.w
 
-    def drain(self) -> None:
+    def drain(self) -> bytes:
+        """Empty the pipe; return what it held (one byte per signal number)."""
+        held = b""
         try:
-            while os.read(self.r, 512):
-                pass
+            while chunk := os.read(self.r, 512):
+                held += chunk
         except OSError:  # empty (EAGAIN)
             pass
+        return held
 
 
 _PIPE = _Pipe()
@@ -115,9 +118,11 @@ def call(fn: Any, *args: Any) -> Any:
         old_fd = signal.set_wakeup_fd(w, warn_on_full_buffer=False)
     except ValueError:  # a signal-less interpreter (embedded): nothing to watch
         return fn(*args, NO_WATCH.copy())
+    # cleared before _record is installed: a SIGINT recorded between the two would be lost (the
+    # run then went on to the end, exit 0)
+    _recorded.clear()
     if defer:
         signal.signal(signal.SIGINT, _record)
-    _recorded.clear()
     _compiled_depth = 1
     try:
         out = fn(*args, watch)
@@ -126,8 +131,9 @@ def call(fn: Any, *args: Any) -> Any:
         if defer:
             signal.signal(signal.SIGINT, previous)
         signal.set_wakeup_fd(old_fd)
-        _PIPE.drain()
-    if _recorded or watch[2] == int(signal.SIGINT):
+        held = _PIPE.drain()
+    # a SIGINT the loop did not look for (short runs look once per EVERY steps) is in the pipe
+    if _recorded or watch[2] == int(signal.SIGINT) or (defer and bytes([signal.SIGINT]) in held):
         _recorded.clear()
         if callable(previous):  # Python's own raises KeyboardInterrupt
             previous(signal.SIGINT, None)
