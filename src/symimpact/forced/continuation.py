@@ -47,7 +47,16 @@ from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from .contact_law import checked, is_rigid
 from .forcing import Forcing
-from .shooting import MAX_PERIODS, ShootingOrbit, monodromy, shoot
+from .shooting import (
+    MAX_PERIODS,
+    WALL,
+    ShootingOrbit,
+    _off_the_walls,
+    mid_free_flight,
+    monodromy,
+    shoot,
+)
+from .simulation import impact_counts
 
 #: Newton's corrector stops below this change of the scaled unknowns, or below the map's own
 #: noise amplified by the conditioning of the extended Jacobian, cond·NOISE, where that is larger
@@ -84,6 +93,9 @@ class BranchPoint:
     #: the orbit differs from its mirror image x → −x half a period later, an orbit too with
     #: the same amplitude (rigid impacts; False where not examined)
     asymmetric: bool = False
+    #: impact events a period, a chatter sequence counting once (:func:`.simulation.impact_counts`):
+    #: the orbit's impact sequence, which a branch keeps between grazings
+    impact_events_per_period: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -218,11 +230,11 @@ def _resection(problem: _Problem, y: np.ndarray, t: np.ndarray, res):
     T = 2 * math.pi / res.forcing.omega
     total = problem.periods * T
     times = np.sort(np.asarray(res.impacts) % total)
-    if min(times[0], total - times[-1]) >= NEAR_IMPACT * T:
+    if min(times[0], total - times[-1]) >= NEAR_IMPACT * T and not res.final_stuck:
+        return None  # (a section inside a sticking phase is on the wall: moved too)
+    tau = mid_free_flight(res)
+    if tau is None:
         return None
-    gaps = np.diff(np.concatenate([times, [times[0] + total]]))
-    i = int(np.argmax(gaps))
-    tau = float((times[i] + 0.5 * gaps[i]) % total)
     from .simulation import state_at
 
     s_new = state_at(res, np.array([tau]))[0]
@@ -281,7 +293,7 @@ def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float 
             r, J, mono, res = problem.evaluate(y)
         except SymimpactError:  # chatter, sticking, no impacts, a state through a wall
             return None
-        if count is not None and len(res.impacts) / problem.periods != count:
+        if count is not None and _events(res, problem.periods) != count:
             return GRAZE
         A = np.vstack([J, t])
         b = np.concatenate([-r, [-(t @ (y - y_pred))]])
@@ -295,10 +307,16 @@ def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float 
                 r, J, mono, res = problem.evaluate(y)
             except SymimpactError:
                 return None
-            if count is not None and len(res.impacts) / problem.periods != count:
+            if count is not None and _events(res, problem.periods) != count:
                 return GRAZE
             return y, J, mono, res
     return None
+
+
+def _events(res, periods: int) -> float:
+    """Impact events a period of the simulation ``res``: an accumulating chatter sequence counts
+    once, however many of its impacts were resolved before the jump to its accumulation point."""
+    return impact_counts(res.events, -math.inf, math.inf)[1] / periods
 
 
 def _point(problem: _Problem, y, mono, res) -> BranchPoint:
@@ -314,6 +332,7 @@ def _point(problem: _Problem, y, mono, res) -> BranchPoint:
         value=float(y[4] * problem.unit),
         phase=problem.forcing.phase,
         asymmetric=_asymmetric(problem, y, res),
+        impact_events_per_period=_events(res, problem.periods),
     )
 
 
@@ -369,6 +388,9 @@ def continue_orbit(
         raise ParameterError("bounds", f"must contain the start, {parameter} = {start:g}")
     checks.choice("direction", direction, (1, -1))
     s0 = checks.state("state", state)
+    if is_rigid(e) and abs(s0[2]) >= system.gap / 2.0 * (1.0 - WALL):
+        # a start on a wall (a sticking phase): the same orbit from a section in free flight
+        forcing, s0, _ = _off_the_walls(system, forcing, e, s0, periods)
     problem = _problem(system, forcing, e, s0, periods, (lo, hi), parameter)
     branch = Branch(period_multiple=periods, phase=forcing.phase, parameter=parameter)
     y = np.concatenate([s0 / problem.scale, [start / problem.unit]])
@@ -392,7 +414,7 @@ def continue_orbit(
         if moved is not None:  # the same orbit, its section moved away from the impacts
             problem, y, J, mono, res, t = moved
             point = _point(problem, y, mono, res)
-        attempt = _correct(problem, y + ds * t, t, point.impacts_per_period)
+        attempt = _correct(problem, y + ds * t, t, point.impact_events_per_period)
         if attempt is GRAZE:
             crossings += 1
             crossed = _cross(problem, y, t, ds, point, branch, crossings <= MAX_CROSSINGS)
@@ -419,7 +441,7 @@ def continue_orbit(
         res = res1
         t1 = _tangent(J1, t)
         p1 = _point(problem, y1, mono1, res1)
-        if p1.impacts_per_period != point.impacts_per_period:  # (the corrector checks it)
+        if p1.impact_events_per_period != point.impact_events_per_period:  # (the corrector checks)
             branch.bifurcations.append(_grazing(problem, y, t, ds, point)[0])
             branch.stopped = f"grazing at {problem.where(branch.bifurcations[-1].value)}"
             return branch
@@ -466,7 +488,7 @@ def _revisited(points: list[BranchPoint], problem: _Problem, ds: float) -> Branc
     for old in points[:-4]:
         if (abs(old.value - new.value) / problem.unit < 0.25 * ds
                 and abs(old.amplitude - new.amplitude) / problem.scale[0] < 0.25 * ds
-                and old.impacts_per_period == new.impacts_per_period
+                and old.impact_events_per_period == new.impact_events_per_period
                 and np.max(np.abs(np.array(old.multipliers) - np.array(new.multipliers)))
                 < 10 * ds):  # fmt: skip
             return old
@@ -819,14 +841,14 @@ def _grazing(problem, y, t, ds, before: BranchPoint) -> tuple[Bifurcation, float
     last = before
     while hi - lo > 1e-6 * ds:
         mid = 0.5 * (lo + hi)
-        got = _correct(problem, y + mid * t, t, before.impacts_per_period)
+        got = _correct(problem, y + mid * t, t, before.impact_events_per_period)
         if got is None or got is GRAZE:
             hi = mid
             continue
         last = _point(problem, got[0], got[2], got[3])
         lo = mid
     found = Bifurcation("grazing", last.omega, last.amplitude, last.value, last.state,
-                        last.phase, impacts_before=before.impacts_per_period)  # fmt: skip
+                        last.phase, impacts_before=before.impact_events_per_period)  # fmt: skip
     return found, hi
 
 
@@ -852,8 +874,8 @@ def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, go_on: bool =
             continue
         y1, J1, mono1, res1 = got
         p1 = _point(problem, y1, mono1, res1)
-        if p1.impacts_per_period == before.impacts_per_period:
+        if p1.impact_events_per_period == before.impact_events_per_period:
             continue
-        branch.bifurcations[-1] = replace(found, impacts_after=p1.impacts_per_period)
+        branch.bifurcations[-1] = replace(found, impacts_after=p1.impact_events_per_period)
         return y1, _tangent(J1, t), mono1, res1, p1
     return None

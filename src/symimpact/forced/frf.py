@@ -274,6 +274,12 @@ def frequency_response(
         down = _sweep_runs(system, forcing, e, w[::-1])[::-1]
         out.sweep_up = np.array([(r.omega, r.amplitude) for r in up])
         out.sweep_down = np.array([(r.omega, r.amplitude) for r in down])
+        # a periodic swept motion that no branch holds starts one (chatter and sticking
+        # included: shooting follows them)
+        for r in (*up, *down):
+            if (r.periodic and 0 < r.period_multiple <= MAX_SWITCH_PERIODS and r.impacts_per_period > 0
+                    and not _on_branch(out.branches, r.omega, r.amplitude, r.period_multiple)):  # fmt: skip
+                follow("sweep", r.period_multiple, r.state, _forcing(forcing, r.omega))
     else:
         out.sweep_up = out.sweep_down = np.zeros((0, 2))
     _switch_branches(out, system, forcing, e, band, step, failures)

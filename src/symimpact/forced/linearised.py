@@ -15,12 +15,13 @@ from ..system import ImpactSystem
 from .forcing import Forcing
 
 
-def flight_matrix(system: ImpactSystem, tau: float) -> np.ndarray:
+def flight_matrix(system: ImpactSystem, tau: float, mass: float | None = None) -> np.ndarray:
     """Φ(τ) of a flight of τ [s]: x, ẋ from unit displacement and unit velocity without forcing
     (Step 8, Eq. F1; the flight is affine in the state); z = y − x moves by ẏτ − (x(τ) − x0);
-    ẏ is constant."""
+    ẏ is constant.  ``mass`` [kg]: the moving mass (M, or M + m in a sticking phase)."""
     # the kernels' plain-float twins: this runs for every flight of every Newton step
-    a = (system.M, system.K, system.C, 0.0, 0.0, 1.0, 0.0)  # no forcing: Ω is not used
+    mass = system.M if mass is None else mass
+    a = (mass, system.K, system.C, 0.0, 0.0, 1.0, 0.0)  # no forcing: Ω is not used
     p11 = ff.forced_displacement_scalar(tau, *a, 1.0, 0.0)
     p21 = ff.forced_velocity_scalar(tau, *a, 1.0, 0.0)
     p12 = ff.forced_displacement_scalar(tau, *a, 0.0, 1.0)
@@ -28,12 +29,22 @@ def flight_matrix(system: ImpactSystem, tau: float) -> np.ndarray:
     return np.array([[p11, p12, 0, 0], [p21, p22, 0, 0], [1 - p11, -p12, 1, tau], [0, 0, 0, 1]])
 
 
-def acceleration(system: ImpactSystem, forcing: Forcing, theta: float, x: float, v: float):
+def acceleration(
+    system: ImpactSystem,
+    forcing: Forcing,
+    theta: float,
+    x: float,
+    v: float,
+    mass: float | None = None,
+) -> float:
     """ẍ [m/s²] of the primary in flight at forcing phase θ = Ωt + φ (Eq. F1: its spring and
-    damper on the moving base X_b·cos θ, the force F0·cos θ)."""
+    damper on the moving base X_b·cos θ, the force F0·cos θ); ``mass`` [kg]: the moving mass (M,
+    or M + m in a sticking phase).  Its partial derivative in time is Ω times its value at θ + π/2
+    with x = ẋ = 0 (every forcing term is a combination of cos θ and sin θ)."""
     W = forcing.omega
+    mass = system.M if mass is None else mass
     xb, vb = forcing.X_b * math.cos(theta), -forcing.X_b * W * math.sin(theta)
-    return (forcing.F0 * math.cos(theta) - system.K * (x - xb) - system.C * (v - vb)) / system.M
+    return (forcing.F0 * math.cos(theta) - system.K * (x - xb) - system.C * (v - vb)) / mass
 
 
 def saltation_matrix(system: ImpactSystem, e: float, zdot: float, a: float) -> np.ndarray:

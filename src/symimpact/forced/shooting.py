@@ -41,6 +41,7 @@ from .simulation import (
     impact_counts,
     period_count,
     simulate_forced,
+    state_at,
     within_walls,
 )
 
@@ -118,28 +119,16 @@ def monodromy(
         return _compliant_monodromy(system, forcing, e, (x, v, z, u), periods)
     _, _, law = contact_arguments(system, "rigid", e, None)
     within_walls("state", x, x + z, system.gap / 2.0)
-    try:  # every impact resolved (no accumulation), at most MAX_IMPACTS_PER_PERIOD a period
+    try:  # at most MAX_IMPACTS_PER_PERIOD impacts a period; chatter taken to its accumulation
         res, _ = _simulate(system, forcing, "rigid", e, None, law, [x, v, x + z, u], periods,
-                           0.0, max_contacts=MAX_IMPACTS_PER_PERIOD * periods)  # fmt: skip
+                           max_contacts=MAX_IMPACTS_PER_PERIOD * periods)  # fmt: skip
     except TooManyContacts:
         raise MethodNotApplicable(
             "shooting",
-            f"more than {MAX_IMPACTS_PER_PERIOD} impacts a period: the motion chatters (a "
-            "clearance far below the motion); shooting follows impacting orbits only",
+            f"more than {MAX_IMPACTS_PER_PERIOD} impacts a period that do not accumulate: a "
+            "clearance far below the motion; shooting follows orbits with fewer",
         ) from None
-    ev = res.events
-    if (len(ev) and np.any(ev[:, _rigid.E_KIND] != _rigid.KIND_IMPACT)) or res.final_stuck:
-        raise MethodNotApplicable(
-            "shooting", "the motion chatters or sticks; shooting follows impacting orbits only"
-        )
-    J = np.eye(4)
-    t_prev = 0.0
-    for row in ev:
-        t, x, v, u = row[_rigid.E_T], row[_rigid.E_X], row[_rigid.E_XD], row[_rigid.E_YD]
-        a = acceleration(system, forcing, forcing.omega * t + forcing.phase, x, v)
-        J = saltation_matrix(system, res.e, u - v, a) @ flight_matrix(system, t - t_prev) @ J
-        t_prev = t
-    J = flight_matrix(system, res.t_end - t_prev) @ J
+    J = rigid_monodromy(system, forcing, res.e, res.events, res.t_end, res.final_stuck)
     if not np.all(np.isfinite(J)):
         raise MethodNotApplicable(
             "shooting",
@@ -148,6 +137,103 @@ def monodromy(
         )
     fx, fv, fy, fu = res.final_state
     return np.array([fx, fv, fy - fx, fu]), J, res
+
+
+def rigid_monodromy(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: float,
+    events: np.ndarray,
+    t_end: float,
+    final_stuck: bool,
+) -> np.ndarray:
+    """The Jacobian of the rigid stroboscopic map along a simulated motion (``events``: the
+    simulation's event log, to ``t_end`` [s]), in the state (x, ẋ, z, ẏ).
+
+    * A flight: Step 8's Φ(τ) (mass M); an impact: Step 9's saltation matrix (Eq. F2).
+    * Chatter taken to its accumulation point (the simulation's model, :mod:`._rigid`): after the
+      impact at t₀ that starts it, with separation speed w = −s(ẏ − ẋ) and relative acceleration
+      a = −s·ẍ towards the wall s, the primary flies Δ = 2w/(a(1 − e)) alone and the pair then
+      moves at the common speed v_c = (M ẋ + m ẏ)/(M + m).  Its Jacobian is the chain rule of
+      these closed forms in (t₀, the state after the impact), with t₀'s own dependence on the
+      state before it (δt₀ = −δz/ż): the timing is carried, not differenced.
+    * A sticking phase: the pair, mass M + m, flies with Φ(τ) of that mass; z stays ±d/2 and
+      ẏ = ẋ, so the phase keeps two of the four directions (the monodromy loses rank 2).  The
+      perturbation is carried at fixed times: at the accumulation point t∞ the state's change
+      less the sticking vector field times δt∞.
+    * A release (s·ẍ turns positive): the vector fields on both sides agree there (ẍ = 0 and
+      ẏ = ẋ), so its saltation is the identity.
+    """
+    M, m = system.M, system.m
+    W, phi = forcing.omega, forcing.phase
+    mass = M + m
+
+    def acc(t: float, x: float, v: float, mu: float = M) -> float:
+        return acceleration(system, forcing, W * t + phi, x, v, mu)
+
+    def acc_t(t: float, mu: float = M) -> float:  # ∂ẍ/∂t at fixed x, ẋ
+        return W * acceleration(system, forcing, W * t + phi + 0.5 * math.pi, 0.0, 0.0, mu)
+
+    stick = np.zeros((4, 2))  # (x, ẋ) → (x, ẋ, z, ẏ) inside a sticking phase: δz = 0, δẏ = δẋ
+    stick[0, 0] = stick[1, 1] = stick[3, 1] = 1.0
+    J = np.eye(4)
+    t_prev, stuck = 0.0, False
+    kind = events[:, _rigid.E_KIND] if len(events) else np.zeros(0)
+    i = 0
+    while i < len(events):
+        row = events[i]
+        t, x, v, u = row[_rigid.E_T], row[_rigid.E_X], row[_rigid.E_XD], row[_rigid.E_YD]
+        if kind[i] == _rigid.KIND_RELEASE:
+            J = stick @ flight_matrix(system, t - t_prev, mass)[:2, :2] @ J[:2]
+            t_prev, stuck, i = t, False, i + 1
+            continue
+        J = flight_matrix(system, t - t_prev) @ J  # to just before the impact
+        if i + 1 < len(events) and kind[i + 1] == _rigid.KIND_ACCUMULATION:
+            J = _accumulation(system, e, row, events[i + 1], J, acc, acc_t, stick)
+            t_prev, stuck, i = events[i + 1][_rigid.E_T], True, i + 2
+            continue
+        J = saltation_matrix(system, e, u - v, acc(t, x, v)) @ J
+        t_prev, i = t, i + 1
+    if stuck or final_stuck:
+        return stick @ flight_matrix(system, t_end - t_prev, mass)[:2, :2] @ J[:2]
+    return flight_matrix(system, t_end - t_prev) @ J
+
+
+def _accumulation(system, e, impact, point, J, acc, acc_t, stick) -> np.ndarray:
+    """:func:`rigid_monodromy` through an impact and the accumulation of its chatter: ``J`` the
+    Jacobian to just before the impact; returned, the Jacobian at the accumulation point t∞ in
+    the sticking phase's directions (see there)."""
+    M, m, K, C = system.M, system.m, system.K, system.C
+    t0, x0, v, u = (impact[c] for c in (_rigid.E_T, _rigid.E_X, _rigid.E_XD, _rigid.E_YD))
+    s = impact[_rigid.E_SIDE]
+    v0, u0 = impact[_rigid.E_XD1], impact[_rigid.E_YD1]  # after the impact
+    # the impact's time and the state at it (not at fixed time): δt₀ = −δz/ż
+    f_pre = np.array([v, acc(t0, x0, v), u - v, 0.0])
+    dt0 = -J[2] / (u - v)
+    at_impact = J + np.outer(f_pre, dt0)
+    k = (1.0 + e) * M * m / (M + m)
+    law = np.array([[1, 0, 0, 0], [0, 1 - k / M, 0, k / M], [0, 0, 1, 0], [0, k / m, 0, 1 - k / m]])
+    d_after = law @ at_impact  # rows: δx₀, δẋ₀ (after), δz (0), δẏ₀ (after)
+    # Δ = 2w/(a(1 − e)), w = −s(ẏ₀ − ẋ₀), a = −s·ẍ(t₀, x₀, ẋ₀)
+    w = -s * (u0 - v0)
+    a = -s * acc(t0, x0, v0)
+    delta = 2.0 * w / (a * (1.0 - e))
+    dw = -s * (d_after[3] - d_after[1])
+    da = -s * (acc_t(t0) * dt0 - K / M * d_after[0] - C / M * d_after[1])
+    d_delta = 2.0 / (a * (1.0 - e)) * dw - delta / a * da
+    # the primary alone over Δ from (t₀, x₀, ẋ₀)
+    phi2 = flight_matrix(system, delta)[:2, :2]
+    xj, vj = point[_rigid.E_X], point[_rigid.E_XD]
+    t_inf = t0 + delta
+    f_end = np.array([vj, acc(t_inf, xj, vj)])
+    f_start = np.array([v0, acc(t0, x0, v0)])
+    d_j = phi2 @ d_after[:2] + np.outer(f_end, d_delta) + np.outer(f_end - phi2 @ f_start, dt0)
+    d_vc = (M * d_j[1] + m * d_after[3]) / (M + m)
+    vc = point[_rigid.E_XD1]
+    d_tinf = dt0 + d_delta
+    f_stick = np.array([vc, acc(t_inf, xj, vc, M + m)])
+    sync = np.vstack([d_j[0], d_vc]) - np.outer(f_stick, d_tinf)
+    return stick @ sync
 
 
 #: (x, ẋ, z, ẏ) from (x, ẋ, y, ẏ): z = y − x; and back
@@ -192,6 +278,9 @@ def shoot(
     max_iter = checks.whole_number("max_iter", max_iter, 1, 1000)
     h = system.gap / 2.0
     rigid = is_rigid(e)
+    shift = 0.0
+    if rigid and abs(s[2]) >= h * (1.0 - WALL):
+        forcing, s, shift = _off_the_walls(system, forcing, e, s, periods)
     it = 0
     for it in range(1, max_iter + 1):  # noqa: B007 (the count is reported)
         ps, J, res = monodromy(system, forcing, e, s, periods)
@@ -240,6 +329,9 @@ def shoot(
     ps, J, res = monodromy(system, forcing, e, s, periods)
     impacts, events = impact_counts(res.events, -math.inf, math.inf)
     residual = float(np.max(np.abs((ps - s) / scale)))
+    section = s
+    if shift:  # the state at the given section: the orbit's own motion, Eq. F1
+        section = state_at(res, np.array([res.t_end - shift]))[0]
     moduli = np.sort(np.abs(np.linalg.eigvals(J)))[::-1]
     ev = res.events
     right = ev[ev[:, _rigid.E_SIDE] > 0] if len(ev) else ev
@@ -249,7 +341,7 @@ def shoot(
         phase = math.remainder(forcing.omega * first[_rigid.E_T] + forcing.phase, 2 * math.pi)
         speed = float(first[_rigid.E_VREL])
     return ShootingOrbit(
-        state=tuple(float(c) for c in s),
+        state=tuple(float(c) for c in section),
         period_multiple=periods,
         amplitude=float(np.max(res.period_max)),
         impacts_per_period=impacts / periods,
@@ -261,6 +353,43 @@ def shoot(
         residual=residual,
         impact_events_per_period=events / periods,
     )
+
+
+#: A start this close to a wall (a share of d/2) is at the wall: stuck there, or at an impact.
+WALL = 1e-9
+
+
+def mid_free_flight(res) -> float | None:
+    """The instant [s] in the middle of the longest free flight of a rigid run ``res`` taken as
+    one period of an orbit (the flights between its events, the last wrapping to the first; a
+    flight that a release ends is a sticking phase, not free); None where every flight sticks."""
+    ev, total = res.events, res.t_end
+    times = np.concatenate([ev[:, _rigid.E_T], [ev[0, _rigid.E_T] + total]])
+    kinds = ev[:, _rigid.E_KIND]
+    stuck = np.append(kinds[1:] == _rigid.KIND_RELEASE, res.final_stuck)
+    gaps = np.where(stuck, -1.0, np.diff(times))
+    i = int(np.argmax(gaps))
+    if gaps[i] <= 0.0:
+        return None
+    return float((times[i] + 0.5 * gaps[i]) % total)
+
+
+def _off_the_walls(system, forcing, e, s, periods) -> tuple[Forcing, np.ndarray, float]:
+    """A start at a wall (a sticking phase, or an impact), seen from a section in the middle of
+    the longest free flight of the motion from it instead: the forcing with its phase moved by
+    Ωτ, the state at τ (Eq. F1), and τ [s].  At the wall the map from the section begins with
+    an impact at zero relative speed (no saltation), and Newton's steps there press into it."""
+    _, _, res = monodromy(system, forcing, e, s, periods)
+    if len(res.events) == 0:
+        return forcing, s, 0.0
+    tau = mid_free_flight(res)
+    if tau is None:
+        raise MethodNotApplicable(
+            "shooting", "the masses never separate: the motion sticks for the whole period"
+        )
+    moved = forcing.at(forcing.omega, math.remainder(forcing.phase + forcing.omega * tau,
+                                                      2 * math.pi))  # fmt: skip
+    return moved, state_at(res, np.array([tau]))[0], tau
 
 
 def shoot_from_rest(
