@@ -76,6 +76,24 @@ def _state(p, mass, t0, x0, v0, tau):
 
 
 @njit(cache=True)
+def flight_matrices(taus, masses, K, C):
+    """Φ(τ) of unforced flights (Step 8, Eq. F1: x, ẋ from unit displacement and from unit
+    velocity; z = y − x moves by τ·ẏ − (x(τ) − x0), ẏ constant), one 4×4 per flight of
+    ``taus`` [s] with its moving mass ``masses`` [kg]: the Jacobians of the shooting chain."""
+    out = np.zeros((taus.shape[0], 4, 4))
+    for i in range(taus.shape[0]):
+        tau, mass = taus[i], masses[i]
+        p11 = _xf(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0)
+        p12 = _xf(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0)
+        out[i, 0, 0], out[i, 0, 1] = p11, p12
+        out[i, 1, 0] = _vf(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0)
+        out[i, 1, 1] = _vf(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0)
+        out[i, 2, 0], out[i, 2, 1], out[i, 2, 2], out[i, 2, 3] = 1.0 - p11, -p12, 1.0, tau
+        out[i, 3, 3] = 1.0
+    return out
+
+
+@njit(cache=True)
 def _accel(p, mass, t, x, v):
     """ẍ from the equation of motion: (P cos θ + Q sin θ − Cẋ − Kx)/mass (Eq. F1's left side)."""
     th = p[P_W] * t + p[P_PHI]

@@ -179,8 +179,8 @@ class _Problem:
         s, value = y[:4] * self.scale, y[4] * self.unit
         ps, mono, res = monodromy(*self.at(value), s, self.periods)
         d = 1e-6 * max(abs(value), self.unit)
-        plus = monodromy(*self.at(value + d), s, self.periods)[0]
-        minus = monodromy(*self.at(value - d), s, self.periods)[0]
+        plus = monodromy(*self.at(value + d), s, self.periods, jacobian=False)[0]
+        minus = monodromy(*self.at(value - d), s, self.periods, jacobian=False)[0]
         dp = (plus - minus) / (2 * d) * self.unit
         J = np.zeros((4, 5))
         J[:, :4] = (mono - np.eye(4)) * self.scale[None, :] / self.scale[:, None]
@@ -204,7 +204,7 @@ def _problem(system, forcing, e, s0, periods, bounds, parameter) -> _Problem:
     velocity amplitude and d/2, the parameter in units of a tenth of its range (a step of 0.2
     moves it by at most 2 % of it)."""
     h = system.gap / 2.0
-    _, _, res0 = monodromy(system, forcing, e, s0, periods)
+    _, _, res0 = monodromy(system, forcing, e, s0, periods, jacobian=False)
     amp = max(float(np.max(res0.period_max)), 1e-3 * h)
     W0 = forcing.omega
     scale = np.array([amp, amp * W0, h, amp * W0])
@@ -624,7 +624,7 @@ def branch_starts(
 def _repeats(at, state, periods: int, scale: np.ndarray) -> bool:
     """Whether ``state`` comes back after ``periods`` forcing periods (to 1e-8 of ``scale``)."""
     try:
-        ps = monodromy(*at, np.array(state), periods)[0]
+        ps = monodromy(*at, np.array(state), periods, jacobian=False)[0]
     except SymimpactError:
         return False
     return bool(np.max(np.abs((ps - np.array(state)) / scale)) < 1e-8)
@@ -738,7 +738,9 @@ def _value_of(parameter: str, system: ImpactSystem, forcing: Forcing, e: Any) ->
 
 def orbit_amplitude(start: BranchStart) -> float:
     """max abs(x) over the orbit of ``start`` [m]."""
-    res = monodromy(start.system, start.forcing, start.e, np.array(start.state), start.periods)[2]
+    res = monodromy(
+        start.system, start.forcing, start.e, np.array(start.state), start.periods, jacobian=False
+    )[2]
     return float(np.max(res.period_max))
 
 

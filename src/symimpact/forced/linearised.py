@@ -12,6 +12,7 @@ import numpy as np
 from ..generated import forced_flight as ff
 from ..generated import rigid_impact as ri
 from ..system import ImpactSystem
+from . import _rigid
 from .forcing import Forcing
 
 
@@ -27,6 +28,15 @@ def flight_matrix(system: ImpactSystem, tau: float, mass: float | None = None) -
     p12 = ff.forced_displacement_scalar(tau, *a, 0.0, 1.0)
     p22 = ff.forced_velocity_scalar(tau, *a, 0.0, 1.0)
     return np.array([[p11, p12, 0, 0], [p21, p22, 0, 0], [1 - p11, -p12, 1, tau], [0, 0, 0, 1]])
+
+
+def flight_matrices(system: ImpactSystem, taus: np.ndarray, masses: np.ndarray) -> np.ndarray:
+    """Φ(τ) of :func:`flight_matrix` for many flights at once (Step 8, Eq. F1; the compiled
+    twin of the scalar kernels): ``taus`` [s] and ``masses`` [kg] of equal length; returned,
+    shape (n, 4, 4)."""
+    taus = np.ascontiguousarray(taus, dtype=float)
+    masses = np.ascontiguousarray(masses, dtype=float)
+    return _rigid.flight_matrices(taus, masses, float(system.K), float(system.C))
 
 
 def acceleration(

@@ -33,7 +33,7 @@ from ..system import ImpactSystem
 from . import _rigid
 from .contact_law import CompliantContact, checked, is_rigid, simulation_arguments
 from .forcing import Forcing
-from .linearised import acceleration, flight_matrix, saltation_matrix
+from .linearised import acceleration, flight_matrices, saltation_matrix
 from .simulation import (
     TooManyContacts,
     _simulate,
@@ -104,19 +104,26 @@ class ShootingOrbit:
 
 
 def monodromy(
-    system: ImpactSystem, forcing: Forcing, e: Any, state: Any, periods: int = 1
-) -> tuple[np.ndarray, np.ndarray, Any]:
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    state: Any,
+    periods: int = 1,
+    jacobian: bool = True,
+) -> tuple[np.ndarray, np.ndarray | None, Any]:
     """The stroboscopic map P over ``periods`` forcing periods from ``state`` = (x, ẋ, z, ẏ) at
     t = 0, and its Jacobian.  Rigid impacts (``e`` Newton's restitution): the product of the
     flights' Φ(τ) and the impacts' saltation matrices (Step 8, Step 9) along the simulated
     motion.  A compliant contact (``e`` a :class:`CompliantContact`): the variational equations
     integrated through each contact, the located onsets and exits differentiated
-    (:mod:`symimpact.forced._compliant`).  Returns (P(state), Jacobian, the simulation)."""
+    (:mod:`symimpact.forced._compliant`).  Returns (P(state), Jacobian, the simulation); with
+    ``jacobian`` False the Jacobian is not formed (None): the map alone, for differences in a
+    parameter."""
     system, forcing, e = checked(system, forcing, e)
     x, v, z, u = (float(c) for c in checks.state("state", state))
     periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
     if not is_rigid(e):
-        return _compliant_monodromy(system, forcing, e, (x, v, z, u), periods)
+        return _compliant_monodromy(system, forcing, e, (x, v, z, u), periods, jacobian)
     _, _, law = contact_arguments(system, "rigid", e, None)
     within_walls("state", x, x + z, system.gap / 2.0)
     try:  # at most MAX_IMPACTS_PER_PERIOD impacts a period; chatter taken to its accumulation
@@ -128,6 +135,9 @@ def monodromy(
             f"more than {MAX_IMPACTS_PER_PERIOD} impacts a period that do not accumulate: a "
             "clearance far below the motion; shooting follows orbits with fewer",
         ) from None
+    fx, fv, fy, fu = res.final_state
+    if not jacobian:
+        return np.array([fx, fv, fy - fx, fu]), None, res
     J = rigid_monodromy(system, forcing, res.e, res.events, res.t_end, res.final_stuck)
     if not np.all(np.isfinite(J)):
         raise MethodNotApplicable(
@@ -135,7 +145,6 @@ def monodromy(
             "an impact at zero relative speed (grazing, or a plastic impact, e = 0, that does "
             "not stick) has no saltation: the monodromy is not defined there",
         )
-    fx, fv, fy, fu = res.final_state
     return np.array([fx, fv, fy - fx, fu]), J, res
 
 
@@ -166,7 +175,6 @@ def rigid_monodromy(
     """
     M, m = system.M, system.m
     W, phi = forcing.omega, forcing.phase
-    mass = M + m
 
     def acc(t: float, x: float, v: float, mu: float = M) -> float:
         return acceleration(system, forcing, W * t + phi, x, v, mu)
@@ -176,32 +184,39 @@ def rigid_monodromy(
 
     stick = np.zeros((4, 2))  # (x, ẋ) → (x, ẋ, z, ẏ) inside a sticking phase: δz = 0, δẏ = δẋ
     stick[0, 0] = stick[1, 1] = stick[3, 1] = 1.0
+    n = len(events)
+    kind = events[:, _rigid.E_KIND] if n else np.zeros(0)
+    # every flight's Φ at once: the one ending at each event, then the last one to t_end (a
+    # release ends a sticking phase, mass M + m; so does t_end after an accumulation)
+    times = np.concatenate([[0.0], events[:, _rigid.E_T] if n else [], [t_end]])
+    ends_stuck = final_stuck or (n > 0 and kind[-1] == _rigid.KIND_ACCUMULATION)
+    masses = np.where(np.append(kind == _rigid.KIND_RELEASE, ends_stuck), M + m, M)
+    phis = flight_matrices(system, np.diff(times), masses)
     J = np.eye(4)
-    t_prev, stuck = 0.0, False
-    kind = events[:, _rigid.E_KIND] if len(events) else np.zeros(0)
     i = 0
-    while i < len(events):
+    while i < n:
         row = events[i]
         t, x, v, u = row[_rigid.E_T], row[_rigid.E_X], row[_rigid.E_XD], row[_rigid.E_YD]
         if kind[i] == _rigid.KIND_RELEASE:
-            J = stick @ flight_matrix(system, t - t_prev, mass)[:2, :2] @ J[:2]
-            t_prev, stuck, i = t, False, i + 1
+            J = stick @ phis[i, :2, :2] @ J[:2]
+            i += 1
             continue
-        J = flight_matrix(system, t - t_prev) @ J  # to just before the impact
-        if i + 1 < len(events) and kind[i + 1] == _rigid.KIND_ACCUMULATION:
-            J = _accumulation(system, e, row, events[i + 1], J, acc, acc_t, stick)
-            t_prev, stuck, i = events[i + 1][_rigid.E_T], True, i + 2
+        J = phis[i] @ J  # to just before the impact
+        if i + 1 < n and kind[i + 1] == _rigid.KIND_ACCUMULATION:
+            J = _accumulation(system, e, row, events[i + 1], phis[i + 1], J, acc, acc_t, stick)
+            i += 2
             continue
         J = saltation_matrix(system, e, u - v, acc(t, x, v)) @ J
-        t_prev, i = t, i + 1
-    if stuck or final_stuck:
-        return stick @ flight_matrix(system, t_end - t_prev, mass)[:2, :2] @ J[:2]
-    return flight_matrix(system, t_end - t_prev) @ J
+        i += 1
+    if ends_stuck:
+        return stick @ phis[n, :2, :2] @ J[:2]
+    return phis[n] @ J
 
 
-def _accumulation(system, e, impact, point, J, acc, acc_t, stick) -> np.ndarray:
+def _accumulation(system, e, impact, point, phi, J, acc, acc_t, stick) -> np.ndarray:
     """:func:`rigid_monodromy` through an impact and the accumulation of its chatter: ``J`` the
-    Jacobian to just before the impact; returned, the Jacobian at the accumulation point t∞ in
+    Jacobian to just before the impact, ``phi`` the primary's Φ over the chatter, from the
+    impact to the accumulation point; returned, the Jacobian at the accumulation point t∞ in
     the sticking phase's directions (see there)."""
     M, m, K, C = system.M, system.m, system.K, system.C
     t0, x0, v, u = (impact[c] for c in (_rigid.E_T, _rigid.E_X, _rigid.E_XD, _rigid.E_YD))
@@ -222,7 +237,7 @@ def _accumulation(system, e, impact, point, J, acc, acc_t, stick) -> np.ndarray:
     da = -s * (acc_t(t0) * dt0 - K / M * d_after[0] - C / M * d_after[1])
     d_delta = 2.0 / (a * (1.0 - e)) * dw - delta / a * da
     # the primary alone over Δ from (t₀, x₀, ẋ₀)
-    phi2 = flight_matrix(system, delta)[:2, :2]
+    phi2 = phi[:2, :2]
     xj, vj = point[_rigid.E_X], point[_rigid.E_XD]
     t_inf = t0 + delta
     f_end = np.array([vj, acc(t_inf, xj, vj)])
@@ -241,7 +256,7 @@ _TO_Z = np.array([[1, 0, 0, 0], [0, 1, 0, 0], [-1, 0, 1, 0], [0, 0, 0, 1]], dtyp
 _FROM_Z = np.array([[1, 0, 0, 0], [0, 1, 0, 0], [1, 0, 1, 0], [0, 0, 0, 1]], dtype=float)
 
 
-def _compliant_monodromy(system, forcing, contact: CompliantContact, state, periods):
+def _compliant_monodromy(system, forcing, contact: CompliantContact, state, periods, jacobian):
     """:func:`monodromy` through compliant contacts: one compiled run carrying Ψ (a start
     inside a wall begins in contact)."""
     x, v, z, u = state
@@ -249,7 +264,7 @@ def _compliant_monodromy(system, forcing, contact: CompliantContact, state, peri
     n = period_count("periods", periods)
     try:
         res, psi = _simulate(system, forcing, contact.law, None, chi, law, [x, v, x + z, u], n,
-                             variational=True, max_contacts=MAX_CONTACTS_PER_PERIOD * n)  # fmt: skip
+                             variational=jacobian, max_contacts=MAX_CONTACTS_PER_PERIOD * n)  # fmt: skip
     except TooManyContacts:
         raise MethodNotApplicable(
             "shooting",
@@ -257,7 +272,8 @@ def _compliant_monodromy(system, forcing, contact: CompliantContact, state, peri
             "shooting follows impacting orbits only",
         ) from None
     fx, fv, fy, fu = res.final_state
-    return np.array([fx, fv, fy - fx, fu]), _TO_Z @ psi @ _FROM_Z, res
+    J = _TO_Z @ psi @ _FROM_Z if jacobian else None
+    return np.array([fx, fv, fy - fx, fu]), J, res
 
 
 def shoot(
@@ -379,7 +395,7 @@ def _off_the_walls(system, forcing, e, s, periods) -> tuple[Forcing, np.ndarray,
     the longest free flight of the motion from it instead: the forcing with its phase moved by
     Ωτ, the state at τ (Eq. F1), and τ [s].  At the wall the map from the section begins with
     an impact at zero relative speed (no saltation), and Newton's steps there press into it."""
-    _, _, res = monodromy(system, forcing, e, s, periods)
+    _, _, res = monodromy(system, forcing, e, s, periods, jacobian=False)
     if len(res.events) == 0:
         return forcing, s, 0.0
     tau = mid_free_flight(res)
