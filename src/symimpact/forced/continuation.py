@@ -19,8 +19,9 @@ complex pair through the unit circle a *Neimark–Sacker* point; each is located
 Brent's method on its test function (the tangent's parameter component, det(monodromy + I), the pair's
 modulus − 1).  Where the set of impacts changes (an impact appears or vanishes: a *grazing*)
 the grazing is located and the branch goes on with the new impacts where an impacting orbit
-continues it; where the motion starts to chatter, stick or stop impacting, the branch ends
-there and says why.
+continues it; a chatter sequence that accumulates counts as one impact event, so a branch is
+followed into and through chatter and sticking (rigid impacts, :func:`.shooting.rigid_monodromy`);
+where the motion stops impacting or the corrector fails, the branch ends there and says why.
 
 As the parameter changes the impacts drift in phase; where one comes near the section t = 0 the
 section is moved midway between impacts (the same orbit; each point carries its forcing phase).
@@ -291,7 +292,7 @@ def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float 
     for _ in range(MAX_NEWTON):
         try:
             r, J, mono, res = problem.evaluate(y)
-        except SymimpactError:  # chatter, sticking, no impacts, a state through a wall
+        except SymimpactError:  # no impacts, a zero-speed impact, a state through a wall
             return None
         if count is not None and _events(res, problem.periods) != count:
             return GRAZE
@@ -432,8 +433,8 @@ def continue_orbit(
             ds *= 0.5
             if ds < step / 64:
                 branch.stopped = (
-                    f"the corrector failed at {problem.where(point.value)} (chatter, sticking, "
-                    "loss of impacts or a non-smooth turn)"
+                    f"the corrector failed at {problem.where(point.value)} (chatter that does not "
+                    "accumulate, loss of impacts or a non-smooth turn)"
                 )
                 return branch
             continue
@@ -865,7 +866,7 @@ def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, go_on: bool =
     just beyond it with its new impacts (Newton from a little past the located step, the count
     free), whose tangent is oriented along t.  Returns (y, t, monodromy, simulation, point) on
     the other side, or None where no impacting orbit continues it (the impact mass stops
-    impacting, or the motion chatters or sticks)."""
+    impacting, or Newton's steps fail there)."""
     found, hi = _grazing(problem, y, t, ds, before)
     branch.bifurcations.append(found)
     if not go_on:

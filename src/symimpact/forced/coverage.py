@@ -9,16 +9,18 @@ from :data:`STARTS` initial states until the primary's free transient has decaye
 (exp(−ζω_n·t), at most :data:`WARMUP` periods), and its last periods are classified by
 :func:`symimpact.forced.steady_state`:
 
-- **periodic** (k ≤ 4 forcing periods, with impacts): shooting converges on it
-  (:func:`symimpact.forced.shoot`), which gives its exact amplitude;
+- **periodic** (k ≤ 4 forcing periods, with impacts; with rigid impacts chatter and sticking
+  included): shooting converges on it (:func:`symimpact.forced.shoot`), which gives its exact
+  amplitude;
 - **no impact**: the impact mass floats at rest (the primary's linear response);
-- **chatter or sticking**: periodic or not, the motion has accumulations of impacts or sticking
-  phases, where shooting does not apply;
+- **chatter or sticking**: periodic, but shooting does not converge on it (a compliant
+  contact's chatter, more than its contacts' cap a period; Newton's steps pressing the impact
+  mass into a wall);
 - **chaotic** or **quasi-periodic** (rigid impacts): no period up to 8, and the largest
   Lyapunov exponent (:func:`lyapunov`, carried through the impacts by the saltation matrices)
   positive, or zero within LYAPUNOV_ZERO a period;
 - **not periodic**: no period up to 8 where no exponent can be computed (a compliant contact, or
-  chatter on the way);
+  an impact at zero relative speed on the way);
 - **not settled**: a transient still decaying over the kept periods, or an impact mass drifting
   with fewer than one impact a period where the motion without impacts exists (the floating
   mass is neutral: with e < 1 it creeps towards rest over many more periods).  Not an attractor:
@@ -155,7 +157,7 @@ def attractor(system: ImpactSystem, forcing: Forcing, e: Any, start) -> Attracto
         if is_rigid(e):
             try:
                 lam, spread = lyapunov(system, forcing, e, end)
-            except SymimpactError:  # chatter or sticking on the way: no monodromy there
+            except SymimpactError:  # a zero-speed impact on the way: no monodromy there
                 pass
         if lam is not None:
             kind = _kind(lam, spread, forcing.period)
@@ -185,7 +187,9 @@ def lyapunov(
     period by period by the stroboscopic map's Jacobian (Step 8's flight transition matrices and
     Step 9's saltation matrices at the impacts, :func:`symimpact.forced.monodromy`) and
     renormalised, λ = Σ ln‖v‖ / (``periods``·T); with half the range of the estimates over
-    LYAPUNOV_BLOCKS equal stretches.  Raises where the motion chatters or sticks."""
+    LYAPUNOV_BLOCKS equal stretches; chatter and sticking are carried through
+    (:func:`symimpact.forced.shooting.rigid_monodromy`).  Raises at an impact at zero relative
+    speed, which has no saltation matrix."""
     s = np.array(state, dtype=float)
     v = np.ones(4) / 2.0
     logs = np.empty(periods)

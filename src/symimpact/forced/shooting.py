@@ -14,9 +14,14 @@ Jacobian (monodromy − I) converges quadratically from a state near the orbit (
 steady state, or a closed-form orbit); the eigenvalues of the monodromy are the Floquet
 multipliers.
 
-Orbits that chatter or stick (an accumulation of impacts, a phase in which the masses move
-together; with a compliant contact, more than :data:`MAX_CONTACTS_PER_PERIOD` contacts a period)
-have no saltation matrix of this form and are refused.
+Rigid orbits that chatter and stick are followed too (:func:`rigid_monodromy`): the simulation
+takes a chatter sequence to its accumulation point in closed form and the masses then move
+together, so the Jacobian is the chain rule of those closed forms (the accumulation time
+Δ = 2w/(a(1 − e)), the common speed after it) and of the sticking pair's Φ(τ) of mass M + m; a
+sticking phase keeps two of the four directions, so two multipliers vanish.  A section that
+falls on a wall (inside a sticking phase) is moved to the middle of the longest free flight and
+the state is mapped back.  With a compliant contact, orbits with more than
+:data:`MAX_CONTACTS_PER_PERIOD` contacts a period are refused.
 """
 
 from __future__ import annotations
@@ -138,7 +143,8 @@ def monodromy(
     fx, fv, fy, fu = res.final_state
     if not jacobian:
         return np.array([fx, fv, fy - fx, fu]), None, res
-    J = rigid_monodromy(system, forcing, res.e, res.events, res.t_end, res.final_stuck)
+    with np.errstate(divide="ignore", invalid="ignore"):  # a zero-speed impact: refused below
+        J = rigid_monodromy(system, forcing, res.e, res.events, res.t_end, res.final_stuck)
     if not np.all(np.isfinite(J)):
         raise MethodNotApplicable(
             "shooting",

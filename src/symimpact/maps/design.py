@@ -12,13 +12,14 @@ find:
   relative motion then stays inside the clearance);
 - the **brute-force sweeps** up and down the band (chatter and sticking included), each point
   run from the previous end state until its transient is 1e-6 (exp(−ζω_n·t)): they show the
-  motion where the continuation does not converge (chatter, sticking), and motions coexisting
-  with a traced branch that the curve's starts do not reach.
+  motions no branch holds (not periodic, or where shooting does not converge), and motions
+  coexisting with a traced branch that the curve's starts do not reach; a periodic swept motion
+  with impacts, chatter and sticking included, starts a branch of its own.
 
 The design's **peak** is the largest amplitude among them: the worst motion the machine may
 settle on in the band, located on the branches and on the motion without impacts
-(:mod:`symimpact.forced.peak`), and taken from a sweep only where a swept motion (chatter,
-sticking) exceeds it.  Beside it: the peak of the primary without the damper, their ratio,
+(:mod:`symimpact.forced.peak`), and taken from a sweep only where a swept motion no branch
+holds exceeds it.  Beside it: the peak of the primary without the damper, their ratio,
 where the peak is and which motion gives it, and how many frequencies of the band only the
 sweeps cover (``uncovered_frequencies``: no stable branch, no motion without impacts).  A motion
 that neither the curve's starts nor the sweeps reach is not seen; a stable branch's largest
@@ -139,7 +140,7 @@ def design_row(
              for x, a in sweep]  # fmt: skip
     top = max(swept)
     # a swept amplitude carries its transient (≤ SWEEP_ACCURACY): it names the peak only where
-    # it exceeds every traced motion by more than that (a chattering or sticking motion)
+    # it exceeds every traced motion by more than that (a motion no branch holds)
     if top[0] > peak * (1.0 + SWEEP_ACCURACY):
         peak, peak_omega, motion = top
     base = curve.baseline_peak

@@ -126,9 +126,10 @@ def _curves(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: f
             "located bifurcations by kind, the primary without the damper (grey; thick where "
             "it is also the motion without impacts, the impact mass at rest midway, which ends "
             "where it grazes a wall: dotted lines) and brute-force sweeps up (▲) and down (▼), "
-            "each point run from the previous end state until its transient is 1e-6. Where no "
-            "branch is drawn the motion chatters or sticks, which the continuation does not "
-            "follow; the sweeps show it.",
+            "each point run from the previous end state until its transient is 1e-6. The "
+            "branches are continued through chatter and sticking too (an accumulation of "
+            "impacts, then the masses moving together); where no branch is drawn the motion is "
+            "not periodic, and the sweeps show it.",
         )
     )
     s.blocks.append(
@@ -157,7 +158,8 @@ def _curves(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: f
             "starts each) or a swept amplitude names the peak where it exceeds them "
             "(symimpact.maps.design). The last two columns: how many of the multi-start's "
             "periodic attractors lie on a traced branch, and how many attractors no branch can "
-            "hold (chatter, sticking, not periodic) or misses (symimpact.forced.coverage).",
+            "hold (not periodic, or periodic where shooting does not converge) or misses "
+            "(symimpact.forced.coverage).",
         )
     )
     s.blocks.append(
