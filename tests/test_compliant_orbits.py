@@ -23,6 +23,7 @@ from symimpact.forced import (
     monodromy,
     periodic_orbits,
     shoot,
+    shoot_from_rest,
     simulate_forced,
 )
 from symimpact.forced.frf import frequency_response
@@ -236,3 +237,40 @@ def test_design_with_a_compliant_contact(capsys):
     assert far["peak_amplitude"] == pytest.approx(far["baseline_peak"], rel=1e-12)
     (best,) = out["best"]
     assert best["peak_amplitude"] == min(r["peak_amplitude"] for r in rows)
+
+
+def test_a_chattering_compliant_orbit_of_66_contacts_a_period_is_shot():
+    """Hunt–Crossley, K_Hz 1e10 N/m^1.5, χ 2 s/m, at 30.8 rad/s (the resonance): from rest the
+    motion settles on a period-1 orbit of 66 contacts a period (chatter on both walls), which
+    shooting follows through every contact's variational equations (issue 33 item 3: there is
+    no cap on contacts a period; before, more than 64 were refused).  Against independent
+    checks: a 600-period simulation from the shot state comes back to it (measured 8e-12 of the
+    scales; bound 1e-8), and central differences of the map with steps 1e-5 of the scales match
+    the carried Jacobian (measured 1.8e-6, falling from 4e-5 at steps 1e-4: truncation, the
+    integrator's 1e-13 noise over the step is 1e-8; bound 1e-4) and its multipliers (1e-5)."""
+    system = LAWS.with_(k_hz=1e10)
+    hc = CompliantContact("hunt-crossley", chi=2.0)
+    w = 30.8
+    f = Forcing(F0=2, omega=w)
+    orbit = shoot_from_rest(system, f, hc, warmup=400)
+    assert orbit.impacts_per_period == 66 and orbit.period_multiple == 1 and orbit.stable
+    state = np.array(orbit.state)
+    a = orbit.amplitude
+    scale = np.array([a, a * w, 0.01, a * w])
+    x, v, z, u = orbit.state
+    long = simulate_forced(system, f, contact="hunt-crossley", chi=2.0, periods=600, x0=x,
+                           xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
+    fx, fv, fy, fu = long.final_state
+    assert np.max(np.abs((np.array([fx, fv, fy - fx, fu]) - state) / scale)) < 1e-8
+    _, J, _ = monodromy(system, f, hc, state)
+    cols = []
+    for j in range(4):
+        d = np.zeros(4)
+        d[j] = 1e-5 * scale[j]
+        plus = monodromy(system, f, hc, state + d, jacobian=False)[0]
+        minus = monodromy(system, f, hc, state - d, jacobian=False)[0]
+        cols.append((plus - minus) / (2 * d[j]))
+    fd = np.column_stack(cols)
+    assert np.max(np.abs((J - fd) * scale[None, :] / scale[:, None])) < 1e-4
+    moduli = np.sort(np.abs(np.linalg.eigvals(fd)))[::-1]
+    assert np.max(np.abs(moduli - np.array(orbit.multipliers))) < 1e-5

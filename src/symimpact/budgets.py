@@ -20,11 +20,9 @@ RHS_BUDGET = 500_000_000
 #: natural period, so 10⁶ of them are seconds of work; a slower forcing (Ω → 0) or more periods
 #: would run for hours and is refused at once.
 MAX_NATURAL_PERIODS = 1_000_000
-#: Shooting follows no orbit with more impacts (rigid) or contacts (compliant) a forcing period:
-#: such a motion chatters, and every impact of a chatter sequence resolved is a geometric series
-#: only the run's budget would end.
+#: Shooting follows no rigid orbit with more impacts a forcing period that do not accumulate
+#: (a chatter sequence that does is taken to its accumulation point in closed form).
 MAX_IMPACTS_PER_PERIOD = 1000
-MAX_CONTACTS_PER_PERIOD = 64
 #: Newton's iterations of one shooting.
 MAX_ITER = 30
 #: Continuation points of one branch in one direction.
@@ -38,6 +36,5 @@ def text() -> str:
         f"a simulation at most {MAX_NATURAL_PERIODS:.0e} natural periods of the primary and "
         f"{MAX_EVENTS:.0e} rigid impacts or {MAX_CONTACTS:,} compliant contacts "
         f"({RHS_BUDGET:.0e} evaluations of their equations); shooting at most {MAX_ITER} Newton "
-        f"steps and {MAX_IMPACTS_PER_PERIOD} impacts ({MAX_CONTACTS_PER_PERIOD} contacts) a "
-        f"period; a branch at most {MAX_POINTS} continuation points each way."
+        f"steps and {MAX_IMPACTS_PER_PERIOD} rigid impacts a period; a branch at most {MAX_POINTS} continuation points each way."
     )

@@ -20,8 +20,9 @@ together, so the Jacobian is the chain rule of those closed forms (the accumulat
 Δ = 2w/(a(1 − e)), the common speed after it) and of the sticking pair's Φ(τ) of mass M + m; a
 sticking phase keeps two of the four directions, so two multipliers vanish.  A section that
 falls on a wall (inside a sticking phase) is moved to the middle of the longest free flight and
-the state is mapped back.  With a compliant contact, orbits with more than
-:data:`MAX_CONTACTS_PER_PERIOD` contacts a period are refused.
+the state is mapped back.  With a compliant contact every contact of the period is integrated
+with its variational equations, however many the motion has (the cost is linear in them; the
+simulation's budget of contacts bounds a run).
 """
 
 from __future__ import annotations
@@ -59,7 +60,6 @@ MAX_PERIODS = 64
 #: An orbit with more contacts (compliant) or impacts (rigid) than these in a forcing period is
 #: not followed: a Newton iterate far from any orbit can set the masses bouncing thousands of
 #: times a period, and such a motion chatters rather than impacts (symimpact.budgets).
-MAX_CONTACTS_PER_PERIOD = budgets.MAX_CONTACTS_PER_PERIOD
 MAX_IMPACTS_PER_PERIOD = budgets.MAX_IMPACTS_PER_PERIOD
 
 
@@ -270,12 +270,12 @@ def _compliant_monodromy(system, forcing, contact: CompliantContact, state, peri
     n = period_count("periods", periods)
     try:
         res, psi = _simulate(system, forcing, contact.law, None, chi, law, [x, v, x + z, u], n,
-                             variational=jacobian, max_contacts=MAX_CONTACTS_PER_PERIOD * n)  # fmt: skip
+                             variational=jacobian)  # fmt: skip
     except TooManyContacts:
         raise MethodNotApplicable(
             "shooting",
-            f"more than {MAX_CONTACTS_PER_PERIOD} contacts a period: the motion chatters; "
-            "shooting follows impacting orbits only",
+            f"more than {budgets.MAX_CONTACTS:,} contacts in {n} period(s), each integrated with "
+            "its variational equations: use contact rigid with this contact's restitution",
         ) from None
     fx, fv, fy, fu = res.final_state
     J = _TO_Z @ psi @ _FROM_Z if jacobian else None
