@@ -211,3 +211,31 @@ def test_progress_bar_ends_on_the_last_run(capsys):
     parameter_map(BASE, {"gap": "6 mm:30 mm:2 mm"}, executor="serial", xdot0=0.5, t_end=2.0)
     drawn = [s for s in capsys.readouterr().err.replace("\r", "\n").splitlines() if "%" in s]
     assert drawn and "100%" in drawn[-1] and "13/13" in drawn[-1]
+
+
+def _field(outlier: float | None) -> pd.DataFrame:
+    """DI [m] on a 6 × 4 grid, smooth (1.5–1.9 mm, largest at the grid's middle), with one cell
+    replaced by ``outlier`` (the issue's map: 2290 µm among neighbours near 1700 µm)."""
+    rows = []
+    for j, ratio in enumerate((0.1, 0.2, 0.3, 0.4)):
+        for i, gap in enumerate(np.arange(6, 18, 2) * 1e-3):
+            di = 1.9e-3 - 2e-5 * (i - 3) ** 2 - 3e-5 * (j - 2) ** 2
+            if outlier is not None and (i, j) == (1, 1):
+                di = outlier
+            rows.append({"gap": gap, "mass_ratio": ratio, "damping_inclination": di})
+    return pd.DataFrame(rows)
+
+
+def test_an_isolated_best_cell_is_marked(tmp_path):
+    """The star of the heat map stands for a design its neighbourhood confirms: a lone outlier
+    (2290 µm where its best neighbour gives 1880 µm, a jump of 59 % of the map's range) is
+    marked isolated with that neighbour's value; the smooth field's peak (its neighbours within
+    2e-5 m, 7 % of the range) is not."""
+    png = tmp_path / "heat.png"
+    opt = plot_map(_field(2.29e-3), "gap", "mass_ratio", "damping_inclination", png)
+    assert (opt["gap"], opt["mass_ratio"], opt["damping_inclination"]) == (8e-3, 0.2, 2.29e-3)
+    assert opt["isolated"] and opt["neighbour_best"] == pytest.approx(1.88e-3)
+    opt = plot_map(_field(None), "gap", "mass_ratio", "damping_inclination", png)
+    assert (opt["gap"], opt["mass_ratio"]) == (pytest.approx(12e-3), 0.3)
+    assert not opt["isolated"]
+    assert opt["neighbour_best"] == pytest.approx(1.9e-3 - 2e-5)

@@ -306,6 +306,27 @@ def _edges(centres):
     return np.concatenate([[c[0] - (mid[0] - c[0])], mid, [c[-1] + (c[-1] - mid[-1])]])
 
 
+#: The best cell of a heat map is *isolated* where its best neighbour falls short of it by more
+#: than this share of the map's range of values: a lone outlier among its neighbours (a
+#: motion that settled differently), not a design the neighbourhood confirms.
+ISOLATED = 0.25
+
+
+def best_cell_neighbourhood(z: Any, i0: int, j0: int, best: str) -> tuple[float | None, bool]:
+    """The best value among the (up to eight) neighbours of cell (i0, j0) of the grid ``z``
+    (None where none is defined), and whether the cell is isolated: it beats that neighbour by
+    more than :data:`ISOLATED` of the range of the grid's defined values."""
+    import numpy as np
+
+    block = z[max(i0 - 1, 0) : i0 + 2, max(j0 - 1, 0) : j0 + 2].astype(float).copy()
+    block[min(i0, 1), min(j0, 1)] = np.nan  # the cell itself
+    if not np.any(np.isfinite(block)):
+        return None, False
+    near = float(np.nanmax(block) if best == "max" else np.nanmin(block))
+    span = float(np.nanmax(z) - np.nanmin(z))
+    return near, abs(float(z[i0, j0]) - near) > ISOLATED * span
+
+
 def plot_map(
     table: Any,
     x: str,
@@ -316,11 +337,13 @@ def plot_map(
 ) -> dict[str, Any]:
     """Heat map of the map output ``value`` over the swept inputs ``x`` and ``y``, with the
     optimum marked: for each ``y`` the ``x`` that gives the best ``value`` (white dots) and the
-    best cell of the map (star).  ``best`` is ``"max"`` or ``"min"``.
+    best cell of the map (star; hollow where it is isolated, see :func:`best_cell_neighbourhood`).
+    ``best`` is ``"max"`` or ``"min"``.
 
     With more than two swept inputs, each cell shows the best ``value`` over the others (said in
     the title).  Cells where ``value`` is undefined are left blank.  Returns the optimum:
-    ``{x, y, value}`` and the per-``y`` optima ``{"rows": [(y, x, value), ...]}``.
+    ``{x, y, value}``, the per-``y`` optima ``{"rows": [(y, x, value), ...]}``, its best
+    neighbour's value ``"neighbour_best"`` and whether it is ``"isolated"``.
     """
     import numpy as np
 
@@ -354,7 +377,9 @@ def plot_map(
             rows.append((float(yv), float(xs[j]), float(z[i, j])))
     flat = int(pick(z))
     i0, j0 = divmod(flat, z.shape[1])
-    optimum = {x: float(xs[j0]), y: float(ys[i0]), value: float(z[i0, j0]), "rows": rows}
+    near, isolated = best_cell_neighbourhood(z, i0, j0, best)
+    optimum = {x: float(xs[j0]), y: float(ys[i0]), value: float(z[i0, j0]), "rows": rows,
+               "neighbour_best": near, "isolated": isolated}  # fmt: skip
 
     from .display import label, shown
 
@@ -373,7 +398,10 @@ def plot_map(
         ms=4,
         label=f"{best} of {value} for each {y}",
     )
-    ax.plot(sx[j0], sy[i0], "*", ms=16, mfc="red", mec="white", label=f"{best} of the map")
+    star = f"{best} of the map" + (" (isolated: its neighbours do not confirm it)" if isolated
+                                    else "")  # fmt: skip
+    ax.plot(sx[j0], sy[i0], "*", ms=16, mfc="none" if isolated else "red",
+            mec="red" if isolated else "white", label=star)  # fmt: skip
     ax.set_xlabel(label(x))
     ax.set_ylabel(label(y))
     title = (

@@ -256,11 +256,17 @@ def _plot_sweep(ns, table, names) -> str:
         axes = list(names[:2])
     value = TABLE_NAMES.get(ns.value, ns.value)  # the names the text table shows
     opt = plot_map(table, axes[0], axes[1], value, ns.plot, best=ns.best)
-    return (
+    text = (
         f"wrote {ns.plot}: {ns.best} {ns.value} {quantity_text(value, opt[value])} at "
         f"{axes[0]} = {quantity_text(axes[0], opt[axes[0]])}, "
         f"{axes[1]} = {quantity_text(axes[1], opt[axes[1]])}"
     )
+    if opt["isolated"]:
+        text += (
+            f" — isolated: its best neighbour gives {quantity_text(value, opt['neighbour_best'])}"
+            " (a lone cell the neighbourhood does not confirm; refine the grid there)"
+        )
+    return text
 
 
 #: The subcommands this module runs.
