@@ -204,6 +204,29 @@ def test_table3_impacts_against_the_solve_ivp_reference(report):
         assert row[4] == int(paper.TABLE3[f"{d:g}"][1])  # the paper's value sits beside ours
 
 
+def test_zeta_eq_below_the_primarys_own_is_explained_by_energy_given_back(report):
+    """The ζ_eq table: the primary alone's ζ_eq is its own ζ (every maximum of a linear
+    oscillator lies on e^(−ζω_n t): exact to rounding), every gap where ζ_eq < ζ has a rise of
+    the maxima, and a rise is energy a contact gave back: the independent solve_ivp reference
+    (scipy's DOP853 with its own contact events) has a contact between the two maxima."""
+    _, sections = report
+    table = sections["vibration"].table("zeta_eq_gap")
+    ranking = sections["vibration"].table("table2_readings")
+    chosen = vibration_stage.Reading(*ranking.rows[0][:3])
+    zeta = chosen.system(9.0).zeta
+    assert chosen.alone().zeta_eq == pytest.approx(zeta, rel=1e-9)
+    below = [r for r in table.rows if r[1] < zeta]
+    assert below and all(r[2] > 0 for r in below)
+    d = below[0][0]
+    run = chosen.run(d)
+    pk = run.peaks
+    k = int(np.flatnonzero(pk[1:, 1] > pk[:-1, 1])[0])
+    s = chosen.system(d)
+    ref = reference_impacts(s, 0.0, float(run.initial_state[1]), 0.0, 0.0,
+                            vibration_stage.T_PRIME_END / s.omega_n)  # fmt: skip
+    assert any(r["t"] < pk[k + 1, 0] and r.get("t_off", math.inf) > pk[k, 0] for r in ref)
+
+
 # --- beyond the paper ------------------------------------------------------------------------------
 def test_forced_section_restitution_peaks_and_best_clearance(report):
     """The forced-response section: its e is the restitution of a linear contact (k1 of the
