@@ -37,13 +37,15 @@ def test_frf_json_contract_and_the_stable_symmetric_branch(capsys, tmp_path):
     assert set(out) >= {"points", "bifurcations"}
     for p in out["points"]:
         assert set(p) >= {"omega", "amplitude", "stable", "impacts_per_period",
-                          "period_multiple", "branch"}  # fmt: skip
+                          "impact_events_per_period", "period_multiple", "branch", "kind"}  # fmt: skip
+        assert p["kind"] == "periodic"
         assert isinstance(p["stable"], bool) and isinstance(p["branch"], int)
     for b in out["bifurcations"]:
         assert b["kind"] in ("fold", "branch-point", "period-doubling", "neimark-sacker",
                              "grazing")  # fmt: skip
     stable = [p for p in out["points"] if p["stable"] and 35.5 < p["omega"] < 37.5]
     assert stable and all(p["impacts_per_period"] == 2 for p in stable)
+    assert all(p["impact_events_per_period"] == 2 for p in stable)  # no chatter here
     assert csv.read_text().splitlines()[0].startswith("omega [rad/s],amplitude [m]")
     assert png.stat().st_size > 10_000
 

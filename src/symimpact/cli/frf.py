@@ -191,7 +191,7 @@ def _origin_text(branch) -> str:
 
 def peak_lines(frf) -> list[str]:
     """The located peak with and without the damper, and the reduction, in words."""
-    from ..display import display_unit, omega_text, shown
+    from ..display import display_unit, impacts_text, omega_text, shown
 
     unit = display_unit("x")
 
@@ -204,8 +204,10 @@ def peak_lines(frf) -> list[str]:
     else:
         p = frf.peak
         if p.motion == "periodic":
-            kind = (f"periodic, {p.period_multiple} period(s), {p.impacts_per_period:g} impacts a "
-                    f"period, branch {p.branch}")  # fmt: skip
+            events = p.impact_events_per_period
+            kind = (f"periodic, {p.period_multiple} period(s), "
+                    f"{impacts_text(p.impacts_per_period, events or p.impacts_per_period)}, "
+                    f"branch {p.branch}")  # fmt: skip
         elif p.where == "multi-start":
             kind = f"{p.motion}, {p.impacts_per_period:g} impacts a period"
         else:

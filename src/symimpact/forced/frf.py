@@ -107,14 +107,19 @@ class FrequencyResponse:
         return 1.0 - self.peak.amplitude / self.baseline_peak.amplitude
 
     def as_dict(self) -> dict[str, Any]:
-        """The JSON contract: points and bifurcations, each with its branch number."""
+        """The JSON contract: points and bifurcations, each with its branch number; a point's
+        ``impacts_per_period`` counts every impact the simulation resolved, its
+        ``impact_events_per_period`` a chatter sequence once (its accumulation), and its
+        ``kind`` is "periodic" (every traced point is an orbit; the multi-start's other
+        attractors are in ``coverage``)."""
         points, bifurcations = [], []
         for i, b in enumerate(self.branches):
             for p in b.points:
                 points.append({
                     "omega": p.omega, "amplitude": p.amplitude, "stable": p.stable,
                     "impacts_per_period": p.impacts_per_period,
-                    "asymmetric": p.asymmetric,
+                    "impact_events_per_period": p.impact_events_per_period,
+                    "asymmetric": p.asymmetric, "kind": "periodic",
                     "period_multiple": b.period_multiple, "branch": i,
                 })  # fmt: skip
             for f in b.bifurcations:

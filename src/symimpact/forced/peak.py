@@ -45,7 +45,8 @@ class Peak:
     """A located peak (SI): ``amplitude`` [m] max abs(x), ``omega`` [rad/s], ``motion``
     ("periodic", "no impact", "linear": the primary alone, or a multi-start's "chatter or
     sticking" or "not periodic" motion, sampled at its frequency), ``branch`` (the curve's branch
-    number, or None), ``period_multiple`` k and ``impacts_per_period`` of a periodic motion,
+    number, or None), ``period_multiple`` k, ``impacts_per_period`` of a periodic motion and its
+    ``impact_events_per_period`` (a chatter sequence counting once),
     ``where``: how it was located ("maximum", a bifurcation's kind, "band edge", "point",
     "resonance", "grazing")."""
 
@@ -56,6 +57,7 @@ class Peak:
     branch: int | None = None
     period_multiple: int | None = None
     impacts_per_period: float | None = None
+    impact_events_per_period: float | None = None
 
     def as_dict(self) -> dict[str, Any]:
         return dict(self.__dict__)
@@ -124,7 +126,7 @@ def stable_peak(
         nonlocal best
         if lo <= omega <= hi and (best is None or amp > best.amplitude):
             best = Peak(float(amp), float(omega), "periodic", where, i, b.period_multiple,
-                        p.impacts_per_period)  # fmt: skip
+                        p.impacts_per_period, p.impact_events_per_period)  # fmt: skip
 
     for i, b in enumerate(branches):
         pts = b.points
