@@ -128,8 +128,10 @@ def _curves(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: f
             "where it grazes a wall: dotted lines) and brute-force sweeps up (▲) and down (▼), "
             "each point run from the previous end state until its transient is 1e-6. The "
             "branches are continued through chatter and sticking too (an accumulation of "
-            "impacts, then the masses moving together); where no branch is drawn the motion is "
-            "not periodic, and the sweeps show it.",
+            "impacts, then the masses moving together), and a periodic swept motion no branch "
+            "holds starts one; a motion shown by sweep markers alone is one no branch holds "
+            "(the table below counts the multi-start's attractors the branches hold and those "
+            "they do not).",
         )
     )
     s.blocks.append(
