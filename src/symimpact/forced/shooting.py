@@ -21,8 +21,8 @@ together, so the Jacobian is the chain rule of those closed forms (the accumulat
 sticking phase keeps two of the four directions, so two multipliers vanish.  A section that
 falls on a wall (inside a sticking phase) is moved to the middle of the longest free flight and
 the state is mapped back.  With a compliant contact every contact of the period is integrated
-with its variational equations, however many the motion has (the cost is linear in them; the
-simulation's budget of contacts bounds a run).
+with its variational equations (the cost is linear in them), up to
+:data:`~symimpact.budgets.MAX_CONTACTS_PER_PERIOD` contacts a period.
 """
 
 from __future__ import annotations
@@ -270,11 +270,12 @@ def _compliant_monodromy(system, forcing, contact: CompliantContact, state, peri
     n = period_count("periods", periods)
     try:
         res, psi = _simulate(system, forcing, contact.law, None, chi, law, [x, v, x + z, u], n,
-                             variational=jacobian)  # fmt: skip
+                             variational=jacobian,
+                             max_contacts=budgets.MAX_CONTACTS_PER_PERIOD * n)  # fmt: skip
     except TooManyContacts:
         raise MethodNotApplicable(
             "shooting",
-            f"more than {budgets.MAX_CONTACTS:,} contacts in {n} period(s), each integrated with "
+            f"more than {budgets.MAX_CONTACTS_PER_PERIOD} contacts a period, each integrated with "
             "its variational equations: use contact rigid with this contact's restitution",
         ) from None
     fx, fv, fy, fu = res.final_state
