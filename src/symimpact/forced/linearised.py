@@ -9,31 +9,23 @@ import math
 
 import numpy as np
 
-from ..generated import forced_flight as ff
 from ..generated import rigid_impact as ri
 from ..system import ImpactSystem
 from . import _rigid
 from .forcing import Forcing
 
 
-def flight_matrix(system: ImpactSystem, tau: float, mass: float | None = None) -> np.ndarray:
-    """Φ(τ) of a flight of τ [s]: x, ẋ from unit displacement and unit velocity without forcing
-    (Step 8, Eq. F1; the flight is affine in the state); z = y − x moves by ẏτ − (x(τ) − x0);
-    ẏ is constant.  ``mass`` [kg]: the moving mass (M, or M + m in a sticking phase)."""
-    # the kernels' plain-float twins: this runs for every flight of every Newton step
-    mass = system.M if mass is None else mass
-    a = (mass, system.K, system.C, 0.0, 0.0, 1.0, 0.0)  # no forcing: Ω is not used
-    p11 = ff.forced_displacement_scalar(tau, *a, 1.0, 0.0)
-    p21 = ff.forced_velocity_scalar(tau, *a, 1.0, 0.0)
-    p12 = ff.forced_displacement_scalar(tau, *a, 0.0, 1.0)
-    p22 = ff.forced_velocity_scalar(tau, *a, 0.0, 1.0)
-    return np.array([[p11, p12, 0, 0], [p21, p22, 0, 0], [1 - p11, -p12, 1, tau], [0, 0, 0, 1]])
+def flight_matrix(system: ImpactSystem, tau: float) -> np.ndarray:
+    """Φ(τ) of a flight of τ [s] of the primary (mass M): one flight of
+    :func:`flight_matrices`."""
+    return flight_matrices(system, np.array([tau]), np.array([system.M]))[0]
 
 
 def flight_matrices(system: ImpactSystem, taus: np.ndarray, masses: np.ndarray) -> np.ndarray:
-    """Φ(τ) of :func:`flight_matrix` for many flights at once (Step 8, Eq. F1; the compiled
-    twin of the scalar kernels): ``taus`` [s] and ``masses`` [kg] of equal length; returned,
-    shape (n, 4, 4)."""
+    """Φ(τ) of many flights at once: x, ẋ from unit displacement and unit velocity without
+    forcing (Step 8, Eq. F1, the kernels compiled; the flight is affine in the state); z = y − x
+    moves by ẏτ − (x(τ) − x0); ẏ is constant.  ``taus`` [s] and the moving ``masses`` [kg] (M,
+    or M + m in a sticking phase) of equal length; returned, shape (n, 4, 4)."""
     taus = np.ascontiguousarray(taus, dtype=float)
     masses = np.ascontiguousarray(masses, dtype=float)
     return _rigid.flight_matrices(taus, masses, float(system.K), float(system.C))
