@@ -124,8 +124,8 @@ def run(ns) -> None:
         ratio = f" (m/M {r['mass_ratio']:g})" if "mass_ratio" in r else ""
         if "tolerance" in r:
             where = (f"d {shown('gap', r['gap']):.6g} ± {shown('gap', r['tolerance']):.2g} {gunit} "
-                     f"(Brent's method from the grid's {shown('gap', r['grid_gap']):.4g} {gunit}, "
-                     f"{r['evaluations']} designs)")  # fmt: skip
+                     f"(Brent's method from the grid's {shown('gap', r['grid_gap']):.4g} {gunit} and a "
+                     f"walk of {r['walk_moves']} step(s), {r['evaluations']} designs)")  # fmt: skip
         else:
             where = f"d {shown('gap', r['gap']):.4g} {gunit}"
         line = (f"best clearance{ratio}: {where}, peak {shown('x', r['peak_amplitude']):.5g} "

@@ -27,8 +27,11 @@ amplitude is located between its points (Brent's method on shot orbits), and the
 alone's peak is located on its closed form.
 
 :func:`refine_best` refines the best clearance of the grid by a one-dimensional search (Brent's
-method, bounded by the grid's neighbours) on the peak, to a stated tolerance, with the peak's
-sensitivity to the restitution (e ± 0.1) beside it.
+method, bounded by the grid's neighbours) on the peak, to a stated tolerance, then walks at that
+tolerance until no clearance one to three steps away has a smaller peak: the peak against d is not
+unimodal where the worst motion changes (a period-2 or non-periodic motion the sweeps carry beside
+a located orbit), and Brent's method alone can stop on a shoulder.  The peak's sensitivity to the
+restitution (e ± 0.1) is given beside it.
 
 :func:`design_map` runs the points on the executors of a parameter map (serial, local
 processes, Dask) and streams them to a resumable file (:class:`~symimpact.maps.store.MapStore`);
@@ -275,6 +278,10 @@ def best_clearances(table) -> Any:
 
 #: The best clearance is refined to this [m] by default: 0.01 mm.
 TOLERANCE = 1e-5
+#: The walk after Brent's method looks these many tolerance steps either side of the clearance.
+WALK_STEPS = (1, 2, 3)
+#: At most this many moves of the walk (each a step of at most two tolerances).
+MAX_WALK = 50
 
 
 def refine_best(
@@ -291,8 +298,8 @@ def refine_best(
     the clearance), the best clearance refined: Brent's bounded method on the peak of
     :func:`design_row` against d, between the grid's neighbours of the grid's best (the grid's
     end where the best lies there), stopped at ``tolerance`` [m] on d.  Each row: the design
-    row at the refined d, with ``tolerance``, ``grid_gap`` (the grid's best), ``evaluations``
-    and, for rigid impacts, ``peak_e_minus`` / ``peak_e_plus``: the peak at e − 0.1 and e + 0.1
+    row at the refined d, with ``tolerance``, ``grid_gap`` (the grid's best), ``evaluations``,
+    ``walk_moves`` (the moves of the walk after Brent's method, module text) and, for rigid impacts, ``peak_e_minus`` / ``peak_e_plus``: the peak at e − 0.1 and e + 0.1
     (within 0–1) for the refined d; ``multistart`` as for :func:`design_row`."""
     from scipy.optimize import minimize_scalar
 
@@ -325,8 +332,10 @@ def refine_best(
                                 method="bounded", options={"xatol": tolerance})  # fmt: skip
             if row(float(r.x))["peak_amplitude"] <= float(g.iloc[i]["peak_amplitude"]):
                 best_d = float(r.x)
+        best_d, walked = _walk_down(best_d, tolerance, lambda d: row(d)["peak_amplitude"])
         result = {**{c: float(first[c]) for c in by}, "gap": best_d, **row(best_d)}
-        result.update(tolerance=tolerance, grid_gap=float(gaps[i]), evaluations=len(cache))
+        result.update(tolerance=tolerance, grid_gap=float(gaps[i]), evaluations=len(cache),
+                      walk_moves=walked)  # fmt: skip
         if is_rigid(e):
             for key, de in (("peak_e_minus", -0.1), ("peak_e_plus", 0.1)):
                 ee = min(max(float(e) + de, 0.0), 1.0)
@@ -334,6 +343,21 @@ def refine_best(
                                          multistart=multistart)["peak_amplitude"]  # fmt: skip
         out.append(result)
     return out
+
+
+def _walk_down(d: float, step: float, peak: Callable[[float], float]) -> tuple[float, int]:
+    """(d, moves): from the clearance ``d`` [m], move to the clearance of smallest ``peak``
+    among those :data:`WALK_STEPS` steps of ``step`` [m] either side (positive ones only) while
+    it is smaller than the peak at ``d``; at most :data:`MAX_WALK` moves.  The clearances lie on
+    the lattice d + n·step (n whole), so a clearance met again is the same number."""
+    n, here = 0, peak(d)
+    for moves in range(MAX_WALK):
+        near = [n + s * k for k in WALK_STEPS for s in (-1, 1) if d + (n + s * k) * step > 0]
+        best = min(near, key=lambda j: peak(d + j * step))
+        if peak(d + best * step) >= here:
+            return d + n * step, moves
+        n, here = best, peak(d + best * step)
+    return d + n * step, MAX_WALK
 
 
 #: Restitution samples of a robust design (ends, middle and the quarters of the range).
