@@ -9,6 +9,10 @@ The backend is a printer, a naming rule and two templates:
 - ``derive/templates/c/symimpact.h.j2`` and ``symimpact.c.j2`` lay out the declarations and
   the definitions.  Nothing is allocated; a batch function loops over ``n`` elements of
   caller-owned arrays.
+- ``CMakeLists.txt.j2``, ``symimpact.pc.in.j2`` and ``symimpactConfig.cmake.in.j2`` make it a
+  library (static and shared, installed with a pkg-config file and a CMake package), and
+  ``check_kernels.c.j2`` its test program: every kernel at the recorded points of
+  :mod:`derive.checkpoints`.
 """
 
 from __future__ import annotations
@@ -121,11 +125,28 @@ def items(boards: list[Board]) -> dict:
     return {"modules": modules, "fixed": fixed, "steps": [b.module for b in boards]}
 
 
+def _project() -> dict[str, str]:
+    """The package's version and one-line description (pyproject.toml): the library's too."""
+    import tomllib
+    from pathlib import Path
+
+    with open(Path(__file__).resolve().parent.parent / "pyproject.toml", "rb") as f:
+        project = tomllib.load(f)["project"]
+    return {"version": project["version"], "description": project["description"]}
+
+
 def render(boards: list[Board]) -> dict[str, str]:
-    """``{path under generated/: text}`` of the C target."""
-    context = items(boards)
+    """``{path under generated/: text}`` of the C target: the header and the source, the library's
+    build (CMake project, pkg-config and CMake package templates) and its check program at the
+    recorded points of :mod:`derive.checkpoints`."""
+    from . import checkpoints
+
+    context = {**items(boards), **_project(), **checkpoints.recorded(boards), "c_name": c_name,
+               "points": checkpoints.POINTS, "digits": checkpoints.DIGITS,
+               "rtol": checkpoints.RTOL}  # fmt: skip
     out = {}
-    for name in ("symimpact.h", "symimpact.c", "README.md"):
+    for name in ("symimpact.h", "symimpact.c", "README.md", "CMakeLists.txt", "symimpact.pc.in",
+                 "symimpactConfig.cmake.in", "check_kernels.c"):  # fmt: skip
         template = f"c/{name}.j2"
         out[f"{FOLDER}/{name}"] = _env.get_template(template).render(
             template=f"derive/templates/{template}", **context

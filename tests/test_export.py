@@ -29,7 +29,7 @@ def test_export_copies_the_generated_files(tmp_path, target, sub, capsys):
     wanted = {
         p.name
         for p in source.iterdir()
-        if p.is_file() and p.suffix in {"numpy": (".py", ".md"), "c": (".c", ".h", ".md"),
+        if p.is_file() and p.suffix in {"numpy": (".py", ".md"), "c": (".c", ".h", ".md", ".txt", ".in"),
                                         "octave": (".m", ".md")}[target]
     }  # fmt: skip
     assert {p.name for p in out.iterdir()} == wanted | {".symimpact-output"}  # --force's marker

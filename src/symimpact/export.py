@@ -18,7 +18,8 @@ from .io import staged_folder
 #: Target → (subfolder of the generated package, file suffixes to copy).
 TARGETS: dict[str, tuple[str, tuple[str, ...]]] = {
     "numpy": ("", (".py", ".md")),
-    "c": ("c", (".c", ".h", ".md")),
+    # the C library's CMake project (CMakeLists.txt) and its package templates (*.in)
+    "c": ("c", (".c", ".h", ".md", ".txt", ".in")),
     "octave": ("octave", (".m", ".md")),
 }
 

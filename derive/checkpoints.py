@@ -1,0 +1,143 @@
+"""Recorded check points: for every kernel and every fixed-point iteration, a few points of the
+physical ranges its derivation declares and its value there computed by mpmath at 50 digits.
+
+A target's own test program (the C library's ``check_kernels.c``, run by ``ctest``) checks its
+kernels at these points without Python.  The points are written as six-digit decimals, so the
+numbers a compiler reads are the numbers mpmath was given, on any machine.
+
+- **Where.**  Argument i of candidate j sits at the fraction u = (1/2 + (j + 1)·α_i) mod 1 of its
+  range (log-uniform where the range is declared so), α_i the fractional part of the square
+  root of the i-th prime: a Weyl sequence, which fills the box of the ranges evenly and moves no
+  two arguments together.  A candidate that breaks one of the kernel's constraints, or where
+  its value is not real and finite, is passed over for the next.
+- **What.**  The expression itself (``Kernel.expr``), evaluated by mpmath at 50 digits and
+  rounded once to the nearest double; for an iteration, mpmath runs the same loop (start, step,
+  the stopping rule of :func:`derive.codegen.fixed_point_ast`) at 50 digits and records the
+  last iterate and the number of steps.
+- **How close.**  ``RTOL`` = 1e-12 of the error scale (the value's size, plus the amplitude of
+  an oscillating result, as in ``tests/test_kernels_vs_mpmath.py``): what double arithmetic
+  reaches on these formulas where cancellation amplifies rounding (the Python tests' fallback
+  bound), far below any error in a formula.  An iteration's step count may differ by one: its
+  last step is a comparison of rounded numbers at the tolerance.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import mpmath as mp
+import sympy as sp
+
+from .board import Board, FixedPoint, Kernel
+
+#: Points recorded per kernel or iteration.
+POINTS = 3
+#: mpmath's working precision [decimal digits].
+DIGITS = 50
+#: Agreement asked of a target at a recorded point, relative to its error scale (module text).
+RTOL = 1e-12
+#: Candidate points tried before a kernel is declared to have too few valid ones.
+CANDIDATES = 2000
+_PRIMES = (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71)
+
+
+@dataclass(frozen=True)
+class CheckPoint:
+    """One recorded point: ``args`` as the decimal strings a program compiles, ``value`` and
+    ``scale`` as ``repr`` of doubles, ``steps`` the iteration's step count (None for a kernel)."""
+
+    args: tuple[str, ...]
+    value: str
+    scale: str
+    steps: int | None = None
+
+
+def _decimal(arg, u: float) -> str:
+    """The point at fraction ``u`` of ``arg``'s range, as a six-digit decimal."""
+    if arg.log:
+        v = math.exp(math.log(arg.low) + u * (math.log(arg.high) - math.log(arg.low)))
+    else:
+        v = arg.low + u * (arg.high - arg.low)
+    return f"{v:.6g}"
+
+
+def _candidates(args):
+    """Candidate points (tuples of decimal strings) in the order they are tried."""
+    alpha = [math.sqrt(p) % 1.0 for p in _PRIMES[: len(args)]]
+    for j in range(CANDIDATES):
+        yield tuple(_decimal(a, (0.5 + (j + 1) * alpha[i]) % 1.0) for i, a in enumerate(args))
+
+
+def _real(value) -> mp.mpf | None:
+    """``value`` as a real mpf, None where it is complex beyond rounding, infinite or NaN."""
+    z = mp.mpc(value)
+    if abs(z.imag) > mp.mpf(10) ** (10 - DIGITS) * max(abs(z.real), 1):
+        return None
+    if not mp.isfinite(z.real):
+        return None
+    return z.real
+
+
+def kernel_points(kernel: Kernel) -> list[CheckPoint]:
+    """:data:`POINTS` recorded points of ``kernel`` (module text)."""
+    symbols = [a.symbol for a in kernel.args]
+    exact = sp.lambdify(symbols, kernel.expr, "mpmath")
+    magnitude = sp.lambdify(symbols, kernel.magnitude or 0, "mpmath")
+    checks = [sp.lambdify(symbols, c, "mpmath") for c in kernel.constraints]
+    out: list[CheckPoint] = []
+    with mp.workdps(DIGITS):
+        for args in _candidates(kernel.args):
+            x = [mp.mpf(float(s)) for s in args]
+            if not all(c(*x) for c in checks):
+                continue
+            try:
+                value = _real(exact(*x))
+            except (ZeroDivisionError, ValueError):
+                continue
+            if value is None:
+                continue
+            scale = abs(value) + abs(_real(magnitude(*x)) or 0)
+            if scale == 0:
+                continue
+            out.append(CheckPoint(args, repr(float(value)), repr(float(scale))))
+            if len(out) == POINTS:
+                return out
+    raise ValueError(f"{kernel.name}: fewer than {POINTS} valid points in {CANDIDATES} tried")
+
+
+def iteration_points(fp: FixedPoint) -> list[CheckPoint]:
+    """:data:`POINTS` recorded points of the iteration ``fp`` where mpmath's loop (module text)
+    stops within ``fp.max_iter`` steps on a finite iterate."""
+    symbols = [a.symbol for a in fp.args]
+    start = sp.lambdify(symbols, fp.start, "mpmath")
+    step = sp.lambdify([fp.iterate, *symbols], fp.step, "mpmath")
+    out: list[CheckPoint] = []
+    with mp.workdps(DIGITS):
+        tol = mp.mpf(fp.tol)
+        for args in _candidates(fp.args):
+            x = [mp.mpf(float(s)) for s in args]
+            try:
+                value, previous, steps = _real(start(*x)), mp.inf, 0
+                while value is not None and abs(value - previous) > tol * abs(value):
+                    if steps == fp.max_iter:
+                        break
+                    previous, value, steps = value, _real(step(value, *x)), steps + 1
+            except (ZeroDivisionError, ValueError):
+                continue
+            if value is None or steps >= fp.max_iter or value == 0:
+                continue
+            out.append(CheckPoint(args, repr(float(value)), repr(float(abs(value))), steps))
+            if len(out) == POINTS:
+                return out
+    raise ValueError(f"{fp.name}: fewer than {POINTS} converging points in {CANDIDATES} tried")
+
+
+def recorded(boards: list[Board]) -> dict:
+    """``{"kernels": [(module, kernel, points)], "iterations": [(module, fp, points)]}``."""
+    return {
+        "kernels": [(b.module, k, kernel_points(k)) for b in boards for k in b.kernels],
+        "iterations": [
+            (b.module, fp, iteration_points(fp)) for b in boards for fp in b.fixed_points
+        ],
+    }
