@@ -25,6 +25,10 @@ import pytest
 
 from tests import browser
 
+#: The whole module is in the slow set (CI's second step): the build alone takes about six
+#: minutes on a 2-core machine, half the README test command's budget (issue 35, item 7).
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parent.parent
 BUILD = ROOT / "docs" / "_build" / "html"
 PAGE = "_generated/derivations/multiple_scales.html"

@@ -44,6 +44,9 @@ def _outputs_text(cell) -> str:
     return "\n".join(out)
 
 
+# Writing the notebooks (a derivation run) and executing them take about three minutes on a
+# 2-core machine: in the slow set, which CI runs as its second step (issue 35, item 7).
+@pytest.mark.slow
 @pytest.mark.parametrize("step", derive.STEPS)
 def test_notebook_runs_and_rederives_its_step(notebooks, step, tmp_path):
     path = next(p for p in notebooks if p.stem.endswith(step))
@@ -74,6 +77,7 @@ def test_notebook_runs_and_rederives_its_step(notebooks, step, tmp_path):
     print(f"{path.name}: {len(code)} code cells executed in {seconds:.1f} s")
 
 
+@pytest.mark.slow
 def test_regenerating_notebook_is_the_walkthrough(notebooks):
     """The walk-through notebook holds a cell that finds the checkout, then the snippets in order.
     It is executed once, by the docs build, whose page is made from its outputs; tests/test_docs.py
