@@ -27,6 +27,7 @@ from .codegen import (
     fixed_point_latex,
     kernel_body,
     latex_of,
+    project,
 )
 
 FOLDER = "c"
@@ -125,23 +126,13 @@ def items(boards: list[Board]) -> dict:
     return {"modules": modules, "fixed": fixed, "steps": [b.module for b in boards]}
 
 
-def _project() -> dict[str, str]:
-    """The package's version and one-line description (pyproject.toml): the library's too."""
-    import tomllib
-    from pathlib import Path
-
-    with open(Path(__file__).resolve().parent.parent / "pyproject.toml", "rb") as f:
-        project = tomllib.load(f)["project"]
-    return {"version": project["version"], "description": project["description"]}
-
-
 def render(boards: list[Board]) -> dict[str, str]:
     """``{path under generated/: text}`` of the C target: the header and the source, the library's
     build (CMake project, pkg-config and CMake package templates) and its check program at the
     recorded points of :mod:`derive.checkpoints`."""
     from . import checkpoints
 
-    context = {**items(boards), **_project(), **checkpoints.recorded(boards), "c_name": c_name,
+    context = {**items(boards), **project(), **checkpoints.recorded(boards), "c_name": c_name,
                "points": checkpoints.POINTS, "digits": checkpoints.DIGITS,
                "rtol": checkpoints.RTOL}  # fmt: skip
     out = {}

@@ -180,6 +180,16 @@ def render_errata(boards: list[Board]) -> str:
     return _env.get_template("errata.md.j2").render(rows=rows)
 
 
+def project() -> dict[str, str]:
+    """The package's version and one-line description (pyproject.toml): the compiled targets' too."""
+    import tomllib
+    from pathlib import Path
+
+    with open(Path(__file__).resolve().parent.parent / "pyproject.toml", "rb") as f:
+        project = tomllib.load(f)["project"]
+    return {"version": project["version"], "description": project["description"]}
+
+
 def render_template(name: str, **context) -> str:
     """Render a template that needs no derivation (e.g. the shared broadcasting helpers)."""
     return _env.get_template(name).render(**context)

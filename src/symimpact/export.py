@@ -15,23 +15,33 @@ from pathlib import Path
 from .errors import ParameterError
 from .io import staged_folder
 
-#: Target → (subfolder of the generated package, file suffixes to copy).
-TARGETS: dict[str, tuple[str, tuple[str, ...]]] = {
-    "numpy": ("", (".py", ".md")),
+#: Target → (subfolder of the generated package, file suffixes to copy, whether its subfolders
+#: are part of it).
+TARGETS: dict[str, tuple[str, tuple[str, ...], bool]] = {
+    "numpy": ("", (".py", ".md"), False),
     # the C library's CMake project (CMakeLists.txt) and its package templates (*.in)
-    "c": ("c", (".c", ".h", ".md", ".txt", ".in")),
-    "octave": ("octave", (".m", ".md")),
+    "c": ("c", (".c", ".h", ".md", ".txt", ".in"), False),
+    "octave": ("octave", (".m", ".md"), False),
+    # a crate: Cargo.toml, src/lib.rs, tests/check_kernels.rs
+    "rust": ("rust", (".toml", ".rs", ".md"), True),
 }
 
 
+def _folder(target: str) -> Path:
+    sub = TARGETS[target][0]
+    folder = Path(str(resources.files("symimpact.generated")))
+    return folder / sub if sub else folder
+
+
 def target_files(target: str) -> list[Path]:
-    """The generated files of ``target`` (``numpy``, ``c`` or ``octave``), sorted by name."""
+    """The generated files of ``target`` (one of :data:`TARGETS`), sorted by path."""
     if target not in TARGETS:
         raise ParameterError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
-    sub, suffixes = TARGETS[target]
-    folder = Path(str(resources.files("symimpact.generated")))
-    folder = folder / sub if sub else folder
-    files = sorted(p for p in folder.iterdir() if p.is_file() and p.suffix in suffixes)
+    _, suffixes, deep = TARGETS[target]
+    folder = _folder(target)
+    found = folder.rglob("*") if deep else folder.iterdir()
+    files = sorted(p for p in found if p.is_file() and p.suffix in suffixes
+                   and not {"target", "__pycache__"} & set(p.relative_to(folder).parts))  # fmt: skip
     if not any(p.name == "README.md" for p in files):
         raise ParameterError("target", f"{target}: the installed package lacks its generated files")
     return files
@@ -45,7 +55,10 @@ def export_kernels(target: str, out: str | os.PathLike, force: bool = False) -> 
     ``out``.  Implements no equation itself: the files document theirs (Eq. 1–35).
     """
     files = target_files(target)
+    folder = _folder(target)
+    names = [p.relative_to(folder) for p in files]
     with staged_folder(out, force=force) as tmp:
-        for path in files:
-            shutil.copyfile(path, tmp / path.name)
-    return [Path(out) / p.name for p in files]
+        for path, name in zip(files, names, strict=True):
+            (tmp / name).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(path, tmp / name)
+    return [Path(out) / name for name in names]
