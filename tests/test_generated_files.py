@@ -45,10 +45,11 @@ def test_check_reports_drift_with_a_diff(tmp_path):
 
 
 def test_other_targets_name_their_source_and_carry_no_dates_or_versions():
-    """C (and its CMake files), Octave, Rust and README files: provenance in the first lines (an
+    """C (and its CMake files), Octave, Rust, Fortran and README files: provenance in the first lines (an
     Octave function file starts with its signature, so its header follows the help text)."""
     folder = ROOT / "generated"
     paths = [*folder.glob("*.md"), *folder.glob("c/*"), *folder.glob("octave/*"),
+             *folder.glob("fortran/*"),
              *(p for p in folder.glob("rust/**/*") if p.is_file() and "target" not in p.parts
                and p.name != "Cargo.lock")]  # fmt: skip
     assert len([p for p in paths if p.suffix == ".m"]) > 40
@@ -142,7 +143,7 @@ def test_wheel_ships_the_generated_kernels(tmp_path):
     (wheel,) = tmp_path.glob("symimpact-*.whl")
     names = set(zipfile.ZipFile(wheel).namelist())
     for path in (ROOT / "generated").rglob("*"):
-        suffixes = {".py", ".md", ".c", ".h", ".m", ".in", ".txt", ".rs", ".toml"}
+        suffixes = {".py", ".md", ".c", ".h", ".m", ".in", ".txt", ".rs", ".toml", ".f90"}
         if path.suffix in suffixes and not {"__pycache__", "target"} & set(path.parts):
             relative = path.relative_to(ROOT / "generated").as_posix()
             assert f"symimpact/generated/{relative}" in names, relative

@@ -24,6 +24,7 @@ TARGETS: dict[str, tuple[str, tuple[str, ...], bool]] = {
     "octave": ("octave", (".m", ".md"), False),
     # a crate: Cargo.toml, src/lib.rs, tests/check_kernels.rs
     "rust": ("rust", (".toml", ".rs", ".md"), True),
+    "fortran": ("fortran", (".f90", ".md"), False),
 }
 
 

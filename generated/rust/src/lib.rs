@@ -194,7 +194,7 @@ pub mod harmonic_balance {
         a*(-K + M*_x0 + _x0*m).powi(3)/(M*(m).powi(3)*(omega).powi(6))
     }
 
-    /// Ω² of the linear (a = 0) coupled mode with the masses in phase (B/A > 0) [rad^2/s^2], paper Eq. 12–13.
+    /// ω² of the linear (a = 0) coupled mode with the masses in phase (B/A > 0) [rad^2/s^2], paper Eq. 12–13.
     ///
     /// * `K`: Main stiffness K [N/m]
     /// * `M`: Main mass M [kg]
@@ -228,7 +228,7 @@ pub mod harmonic_balance {
         _x5*(-K*_x1/_x5 + K)/(K*b*m)
     }
 
-    /// Ω² of the linear (a = 0) coupled mode with the masses in opposition (B/A < 0), the impact mode [rad^2/s^2], paper Eq. 12–13.
+    /// ω² of the linear (a = 0) coupled mode with the masses in opposition (B/A < 0), the impact mode [rad^2/s^2], paper Eq. 12–13.
     ///
     /// * `K`: Main stiffness K [N/m]
     /// * `M`: Main mass M [kg]
@@ -1581,7 +1581,7 @@ pub mod hunt_crossley {
 }).powf(3_f64/5.0)/(M + m).powf(3_f64/5.0)
     }
 
-    /// Μv₀/F(s) times the 3/5 power of (1 − s)(s + e): the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e)) to the power −3/5 [s], Eq. F4 (derived here, beyond the paper).
+    /// μv₀/F(s) times the 3/5 power of (1 − s)(s + e): the contact duration is its integral over s ∈ [−e, 1] against the weight ((1 − s)(s + e)) to the power −3/5 [s], Eq. F4 (derived here, beyond the paper).
     ///
     /// * `s`: Rate of penetration as a fraction s of v₀ (−e ≤ s ≤ 1) [1]
     /// * `e`: Coefficient of restitution e (from hunt_crossley_restitution) [1]

@@ -11,11 +11,14 @@ def add_parser(sub: Any) -> None:
     """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
     p = sub.add_parser(
         "export",
-        help="copy the generated kernels of one target (NumPy, C99, MATLAB/Octave, Rust) into a "
+        help="copy the generated kernels of one target (NumPy, C99, MATLAB/Octave, Rust, Fortran) into a "
         "folder, with a README on how to compile, call or import them",
     )
     p.add_argument(
-        "--target", required=True, choices=("c", "octave", "numpy", "rust"), help="which kernels"
+        "--target",
+        required=True,
+        choices=("c", "octave", "numpy", "rust", "fortran"),
+        help="which kernels",
     )
     p.add_argument(
         "--out", required=True, metavar="DIR", help="folder to create (new or empty unless --force)"
