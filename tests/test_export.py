@@ -100,7 +100,7 @@ def test_export_refuses_a_full_folder_and_leaves_nothing_when_interrupted(tmp_pa
     export_kernels("octave", out, force=True)  # replaced as a whole
     assert not (out / "symimpact.c").exists() and (out / "README.md").exists()
     with pytest.raises(ParameterError, match="target: must be one of"):
-        export_kernels("fortran", tmp_path / "f")
+        export_kernels("julia", tmp_path / "f")
 
     import symimpact.export as export
 
