@@ -13,7 +13,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import STEPS, backend_c, backend_fortran, backend_octave, backend_rust, board
+from . import STEPS, backend_c, backend_fortran, backend_jax, backend_octave, backend_rust, board
 from .codegen import (
     render_errata,
     render_fixed_points,
@@ -63,6 +63,7 @@ def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True):
     files.update(backend_octave.render(boards))
     files.update(backend_rust.render(boards))
     files.update(backend_fortran.render(boards))
+    files.update(backend_jax.render(boards))
     return files, boards, ok
 
 

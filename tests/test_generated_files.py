@@ -45,11 +45,11 @@ def test_check_reports_drift_with_a_diff(tmp_path):
 
 
 def test_other_targets_name_their_source_and_carry_no_dates_or_versions():
-    """C (and its CMake files), Octave, Rust, Fortran and README files: provenance in the first lines (an
+    """C (and its CMake files), Octave, Rust, Fortran, JAX and README files: provenance in the first lines (an
     Octave function file starts with its signature, so its header follows the help text)."""
     folder = ROOT / "generated"
     paths = [*folder.glob("*.md"), *folder.glob("c/*"), *folder.glob("octave/*"),
-             *folder.glob("fortran/*"),
+             *folder.glob("fortran/*"), *folder.glob("jax/*"),
              *(p for p in folder.glob("rust/**/*") if p.is_file() and "target" not in p.parts
                and p.name != "Cargo.lock")]  # fmt: skip
     assert len([p for p in paths if p.suffix == ".m"]) > 40

@@ -25,6 +25,7 @@ TARGETS: dict[str, tuple[str, tuple[str, ...], bool]] = {
     # a crate: Cargo.toml, src/lib.rs, tests/check_kernels.rs
     "rust": ("rust", (".toml", ".rs", ".md"), True),
     "fortran": ("fortran", (".f90", ".md"), False),
+    "jax": ("jax", (".py", ".md"), False),
 }
 
 

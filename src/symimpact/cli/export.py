@@ -11,13 +11,13 @@ def add_parser(sub: Any) -> None:
     """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
     p = sub.add_parser(
         "export",
-        help="copy the generated kernels of one target (NumPy, C99, MATLAB/Octave, Rust, Fortran) into a "
+        help="copy the generated kernels of one target (NumPy, C99, MATLAB/Octave, Rust, Fortran, JAX) into a "
         "folder, with a README on how to compile, call or import them",
     )
     p.add_argument(
         "--target",
         required=True,
-        choices=("c", "octave", "numpy", "rust", "fortran"),
+        choices=("c", "octave", "numpy", "rust", "fortran", "jax"),
         help="which kernels",
     )
     p.add_argument(
