@@ -52,7 +52,7 @@ def render(boards: list[Board]) -> dict[str, str]:
     for b in boards:
         kernels = []
         for k in b.kernels:
-            lines, result, ops = kernel_body(k, JaxKernelPrinter, {})
+            lines, result, _ = kernel_body(k, JaxKernelPrinter, {})
             kernels.append({"k": k, "lines": lines, "result": result, "latex": latex_of(k),
                             "argnames": ", ".join(a.name for a in k.args)})  # fmt: skip
         fixed = [{"fp": fp, "x": fp.iterate.name, **_iteration(fp, printer),
