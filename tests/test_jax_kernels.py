@@ -11,13 +11,19 @@ expressions as every other target, checked against mpmath and JAX's own transfor
   50 digits, to 1e-9 of the derivative's scale |∂f/∂xᵢ| + scale/|xᵢ|: differentiation through
   the generated code multiplies rounding by the formula's conditioning, which 1e-9 leaves a
   factor 10⁶ above double rounding for.
-On a CI machine (``CI`` set) a missing JAX fails the test; elsewhere it skips.
+
+JAX runs in a child process: JAX starts threads, and a later test that forks a process pool
+(the map executors) could deadlock in a process that has imported it.  On a CI machine (``CI``
+set) a missing JAX fails the test; elsewhere it skips.
 """
 
 from __future__ import annotations
 
-import importlib
+import importlib.util
+import json
 import os
+import subprocess
+import sys
 
 import mpmath as mp
 import numpy as np
@@ -26,17 +32,54 @@ import sympy as sp
 
 from derive import checkpoints
 
-try:
-    import jax
-    import jax.numpy as jnp
-except ImportError:  # pragma: no cover - the test extra installs it
+if importlib.util.find_spec("jax") is None:  # pragma: no cover - the test extra installs it
     if os.environ.get("CI"):
-        raise
+        raise ImportError("jax is not installed (the test extra installs it)")
     pytest.skip("jax is not installed", allow_module_level=True)
 
 RTOL = checkpoints.RTOL
 VMAP_RTOL = 1e-13
 GRAD_RTOL = 1e-9
+
+#: What the child process runs: the JAX kernels on the points it is given.
+CHILD = r"""
+import importlib, json, sys
+import jax, numpy as np
+payload = json.load(open(sys.argv[1]))
+out = {"x64": None, "kernels": [], "iterations": [], "jacobians": []}
+for module, name, columns in payload["kernels"]:
+    f = getattr(importlib.import_module("symimpact.generated.jax." + module), name)
+    cols = [np.array(c) for c in columns]
+    values = np.asarray(f(*cols), dtype=float) + 0.0 * cols[0] if cols else f()
+    mapped = np.asarray(jax.vmap(f)(*cols), dtype=float) if cols else values
+    single = [float(f(*(float(c[i]) for c in cols))) for i in range(len(cols[0]))] if cols else []
+    out["kernels"].append([np.broadcast_to(values, (len(cols[0]),)).tolist(), mapped.tolist(),
+                           single])
+out["x64"] = bool(jax.config.jax_enable_x64)
+for module, name, columns, tol, max_iter in payload["iterations"]:
+    f = getattr(importlib.import_module("symimpact.generated.jax." + module), name)
+    axes = (0,) * len(columns) + (None, None)
+    value, steps = jax.vmap(f, in_axes=axes)(*(np.array(c) for c in columns), tol, max_iter)
+    out["iterations"].append([np.asarray(value).tolist(), np.asarray(steps).tolist()])
+for module, name, point in payload["jacobians"]:
+    f = getattr(importlib.import_module("symimpact.generated.jax." + module), name)
+    jac = jax.jacfwd(f, argnums=tuple(range(len(point))))(*point)
+    out["jacobians"].append([float(j) for j in jac])
+json.dump(out, open(sys.argv[2], "w"))
+"""
+
+
+def _columns(points) -> list[list[float]]:
+    return [[float(p.args[i]) for p in points] for i in range(len(points[0].args))]
+
+
+def _in_jax(payload: dict, tmp_path) -> dict:
+    src, dst = tmp_path / "payload.json", tmp_path / "result.json"
+    src.write_text(json.dumps(payload), encoding="utf-8")
+    run = subprocess.run([sys.executable, "-c", CHILD, str(src), str(dst)], capture_output=True,
+                         text=True, timeout=1200)  # fmt: skip
+    assert run.returncode == 0, run.stderr[-3000:]
+    return json.loads(dst.read_text(encoding="utf-8"))
 
 
 @pytest.fixture(scope="module")
@@ -44,53 +87,58 @@ def recorded(boards):
     return checkpoints.recorded(list(boards.values()))
 
 
-def _module(name: str):
-    return importlib.import_module(f"symimpact.generated.jax.{name}")
+@pytest.fixture(scope="module")
+def evaluated(recorded, tmp_path_factory):
+    """What the child process computed on every kernel's and iteration's recorded points."""
+    payload = {
+        "kernels": [(m, k.name, _columns(pts)) for m, k, pts in recorded["kernels"]],
+        "iterations": [
+            (m, fp.name, _columns(pts), fp.tol, fp.max_iter)
+            for m, fp, pts in recorded["iterations"]
+        ],
+        "jacobians": [],
+    }
+    return _in_jax(payload, tmp_path_factory.mktemp("jax"))
 
 
-def _columns(points) -> list[np.ndarray]:
-    return [np.array([float(p.args[i]) for p in points]) for i in range(len(points[0].args))]
-
-
-def test_every_kernel_and_iteration_agrees_with_mpmath_at_the_recorded_points(recorded):
-    for module, k, points in recorded["kernels"]:
-        got = np.asarray(getattr(_module(module), k.name)(*_columns(points)), dtype=float)
+def test_every_kernel_and_iteration_agrees_with_mpmath_at_the_recorded_points(recorded, evaluated):
+    assert evaluated["x64"]  # importing the package turned on float64
+    for (module, k, points), (values, _, _) in zip(
+        recorded["kernels"], evaluated["kernels"], strict=True
+    ):
         expected = np.array([float(p.value) for p in points])
         scale = np.array([float(p.scale) for p in points])
+        got = np.array(values)
         assert np.all(np.abs(got - expected) <= RTOL * scale), (module, k.name, got, expected)
-    assert jax.config.jax_enable_x64  # importing the package turned on float64
-    for module, fp, points in recorded["iterations"]:
-        f = getattr(_module(module), fp.name)
-        axes = (0,) * len(fp.args) + (None, None)
-        value, steps = jax.vmap(f, in_axes=axes)(*_columns(points), fp.tol, fp.max_iter)
+    for (_, fp, points), (value, steps) in zip(
+        recorded["iterations"], evaluated["iterations"], strict=True
+    ):
         expected = np.array([float(p.value) for p in points])
-        assert np.all(np.abs(np.asarray(value) - expected) <= RTOL * np.abs(expected)), fp.name
-        assert np.all(np.abs(np.asarray(steps) - [p.steps for p in points]) <= 1), fp.name
+        assert np.all(np.abs(np.array(value) - expected) <= RTOL * np.abs(expected)), fp.name
+        assert np.all(np.abs(np.array(steps) - [p.steps for p in points]) <= 1), fp.name
 
 
-def test_vmap_equals_single_calls(recorded):
-    for module, k, points in recorded["kernels"]:
-        f = getattr(_module(module), k.name)
-        mapped = np.asarray(jax.vmap(f)(*(jnp.asarray(c) for c in _columns(points))))
-        single = np.array([float(f(*(float(a) for a in p.args))) for p in points])
+def test_vmap_equals_single_calls(recorded, evaluated):
+    for (module, k, points), (_, mapped, single) in zip(
+        recorded["kernels"], evaluated["kernels"], strict=True
+    ):
         scale = np.array([float(p.scale) for p in points])
-        assert np.all(np.abs(mapped - single) <= VMAP_RTOL * scale), (module, k.name)
+        diff = np.abs(np.array(mapped) - np.array(single))
+        assert np.all(diff <= VMAP_RTOL * scale), (module, k.name)
 
 
 @pytest.mark.slow  # about a minute and a half: sympy.diff and mpmath of every kernel
-def test_jacfwd_agrees_with_the_derivative_of_the_expression(recorded):
-    for module, k, points in recorded["kernels"]:
-        if not k.args:
-            continue
-        f = getattr(_module(module), k.name)
-        p = points[0]
-        x = [float(a) for a in p.args]
-        jac = jax.jacfwd(f, argnums=tuple(range(len(x))))(*x)
+def test_jacfwd_agrees_with_the_derivative_of_the_expression(recorded, tmp_path):
+    cases = [(m, k, pts[0]) for m, k, pts in recorded["kernels"] if k.args]
+    jacobians = [(m, k.name, [float(a) for a in p.args]) for m, k, p in cases]
+    payload = {"kernels": [], "iterations": [], "jacobians": jacobians}
+    jacobians = _in_jax(payload, tmp_path)["jacobians"]
+    for (module, k, p), jac in zip(cases, jacobians, strict=True):
         symbols = [a.symbol for a in k.args]
         with mp.workdps(checkpoints.DIGITS):
-            args = [mp.mpf(v) for v in x]
+            args = [mp.mpf(float(v)) for v in p.args]
             for i, s in enumerate(symbols):
                 exact = mp.re(sp.lambdify(symbols, sp.diff(k.expr, s), "mpmath")(*args))
                 bound = GRAD_RTOL * (abs(exact) + mp.mpf(p.scale) / abs(args[i]))
-                assert abs(mp.mpf(float(jac[i])) - exact) <= bound, (
-                    module, k.name, s, float(jac[i]), float(exact))  # fmt: skip
+                assert abs(mp.mpf(jac[i]) - exact) <= bound, (
+                    module, k.name, s, jac[i], float(exact))  # fmt: skip
