@@ -23,6 +23,7 @@ from . import (
     million_map,
     startup,
     stepper_peers,
+    targets,
 )
 from .timing import machine
 
@@ -33,6 +34,7 @@ SUITE = (
     ("4. a map of 10^6 runs", million_map.main),
     ("5. start-up: import symimpact, symimpact simulate, python -m derive --check", startup.main),
     ("6. a 200-frequency response curve with stability against brute-force sweeps", frc.main),
+    ("7. the generated targets (C, JAX, Rust, Fortran) against NumPy at 10^6 points", targets.main),
 )
 
 

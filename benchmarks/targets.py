@@ -1,0 +1,270 @@
+"""The generated targets side by side (issue 38): evaluations per second of three representative
+kernels at N = 10⁶ points, in each target, against the NumPy kernel in the same run; and the JAX
+kernels' compile time.  One core.  Prints figures and ratios; asserts nothing.
+
+Kernels: a contact duration (``closed_forms.hertz_contact_duration``, Eq. 34), the forced flight
+(``forced_flight.forced_displacement``, Eq. F1) and a saltation entry
+(``rigid_impact.saltation_main_velocity_z``, Step 9).  Points: random over the physical ranges
+the derivation declares (its constraints kept), the same points for every target.
+
+- NumPy: the kernel on the arrays.
+- C: ``generated/c/symimpact.c`` compiled with ``cc -O2`` as a shared library, the ``_batch``
+  function called once through ctypes.
+- JAX: the jit-compiled kernel on device arrays, ``block_until_ready``; its first call (trace and
+  compile) timed apart.
+- Rust: the exported crate as a path dependency of a small timing program (``cargo build
+  --release --offline``), a loop over the points; Fortran: the module compiled with ``gfortran
+  -O2``, the elemental function called on the arrays.  Both read the points from a binary file
+  and time themselves (median of the same repeats); their sum of the results is compared with
+  NumPy's.
+
+Run from the checkout: python -m benchmarks.targets
+"""
+
+from __future__ import annotations
+
+import ctypes
+import os
+import shutil
+import statistics
+import subprocess
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+import sympy as sp
+
+from derive import board
+from symimpact.export import export_kernels
+
+from .timing import REPEATS, timed
+
+ROOT = Path(__file__).resolve().parent.parent
+N = 10**6
+KERNELS = (
+    ("closed_forms", "hertz_contact_duration", "contact duration, Eq. 34"),
+    ("forced_flight", "forced_displacement", "forced flight, Eq. F1"),
+    ("rigid_impact", "saltation_main_velocity_z", "saltation entry, Step 9"),
+)
+
+
+def declared():
+    """{(module, kernel): the derivation's Kernel} of the three kernels."""
+    out = {}
+    for module, name, _ in KERNELS:
+        out[module, name] = next(k for k in board(module).kernels if k.name == name)
+    return out
+
+
+def points(kernel, n, rng) -> list[np.ndarray]:
+    """``n`` points (one array per argument) over the declared ranges, constraints kept."""
+    cols = []
+    m = 2 * n + 100
+    for a in kernel.args:
+        u = rng.random(m)
+        lo, hi = a.low, a.high
+        cols.append(np.exp(np.log(lo) + u * np.log(hi / lo)) if a.log else lo + u * (hi - lo))
+    keep = np.ones(m, dtype=bool)
+    symbols = [a.symbol for a in kernel.args]
+    for c in kernel.constraints:
+        keep &= np.asarray(sp.lambdify(symbols, c, "numpy")(*cols), dtype=bool)
+    index = np.flatnonzero(keep)[:n]
+    if index.size < n:
+        raise SystemExit(f"{kernel.name}: not enough points within its constraints")
+    return [np.ascontiguousarray(c[index]) for c in cols]
+
+
+def _c_library(folder: Path):
+    cc = shutil.which(os.environ.get("CC", "cc"))
+    if cc is None:
+        return None
+    lib = folder / "libsymimpact.so"
+    subprocess.run([cc, "-std=c99", "-O2", "-shared", "-fPIC", str(ROOT / "generated" / "c" /
+                    "symimpact.c"), "-o", str(lib), "-lm"], check=True)  # fmt: skip
+    return ctypes.CDLL(str(lib))
+
+
+def _c_call(lib, module, name, cols):
+    f = getattr(lib, f"symimpact_{module}_{name}_batch")
+    out = np.empty(cols[0].size)
+    ptr = ctypes.POINTER(ctypes.c_double)
+    args = [c.ctypes.data_as(ptr) for c in cols]
+
+    def run():
+        f(ctypes.c_size_t(out.size), *args, out.ctypes.data_as(ptr))
+        return out
+
+    return run
+
+
+RUST_MAIN = """use std::io::Read;
+use std::time::Instant;
+
+fn read(path: &str, n: usize, k: usize) -> Vec<Vec<f64>> {{
+    let mut bytes = Vec::new();
+    std::fs::File::open(path).unwrap().read_to_end(&mut bytes).unwrap();
+    let all: Vec<f64> = bytes.chunks_exact(8)
+        .map(|b| f64::from_le_bytes(b.try_into().unwrap())).collect();
+    (0..k).map(|j| all[j * n..(j + 1) * n].to_vec()).collect()
+}}
+
+fn main() {{
+    let n: usize = {n};
+{body}
+}}
+"""
+RUST_CASE = """    {{
+        let a = read("{path}", n, {k});
+        let mut out = vec![0.0_f64; n];
+        let mut times = Vec::new();
+        for _ in 0..{repeats} {{
+            let t0 = Instant::now();
+            for i in 0..n {{
+                out[i] = symimpact::{module}::{name}({args});
+            }}
+            times.push(t0.elapsed().as_secs_f64());
+        }}
+        let sum: f64 = out.iter().sum();
+        println!("{module}.{name} {{}} {{:e}}", times.iter().map(|t| format!("{{:e}}", t))
+            .collect::<Vec<_>>().join(","), sum);
+    }}"""
+
+
+def _rust(folder: Path, cases) -> dict[str, tuple[list[float], float]] | None:
+    cargo = shutil.which("cargo")
+    if cargo is None:
+        return None
+    export_kernels("rust", folder / "crate")
+    bench = folder / "bench"
+    (bench / "src").mkdir(parents=True)
+    (bench / "Cargo.toml").write_text(
+        '[package]\nname = "bench"\nversion = "0.0.0"\nedition = "2021"\n\n[dependencies]\n'
+        'symimpact = { path = "../crate" }\n\n[profile.release]\nopt-level = 3\n'
+    )
+    body = "\n".join(RUST_CASE.format(path=path, k=len(cols), repeats=REPEATS, module=module,
+                                      name=name, args=", ".join(f"a[{j}][i]" for j in
+                                                                range(len(cols))))
+                     for module, name, cols, path in cases)  # fmt: skip
+    (bench / "src" / "main.rs").write_text(RUST_MAIN.format(n=N, body=body))
+    env = {**os.environ, "CARGO_TARGET_DIR": str(folder / "target")}
+    subprocess.run([cargo, "build", "--release", "--offline", "-q"], cwd=bench, env=env,
+                   check=True)  # fmt: skip
+    run = subprocess.run([str(folder / "target" / "release" / "bench")], capture_output=True,
+                         text=True, check=True)  # fmt: skip
+    return _parse(run.stdout)
+
+
+FORTRAN_CASE = """    allocate(a({n}, {k}))
+    open(newunit=u, file="{path}", access="stream", form="unformatted", status="old")
+    read(u) a
+    close(u)
+    do r = 1, {repeats}
+        call system_clock(c0, rate)
+        out = {module}_{name}({args})
+        call system_clock(c1)
+        times(r) = real(c1 - c0, dp) / real(rate, dp)
+    end do
+    write(*, '(a, 1x, *(es24.16, :, ","))', advance="no") "{module}.{name}", times
+    write(*, '(1x, es24.16)') sum(out)
+    deallocate(a)
+"""
+
+
+def _fortran(folder: Path, cases) -> dict[str, tuple[list[float], float]] | None:
+    fc = shutil.which("gfortran")
+    if fc is None:
+        return None
+    export_kernels("fortran", folder / "f90")
+    body = "".join(FORTRAN_CASE.format(n=N, k=len(cols), path=path, repeats=REPEATS,
+                                       module=module, name=name,
+                                       args=", ".join(f"a(:, {j + 1})" for j in
+                                                      range(len(cols))))
+                   for module, name, cols, path in cases)  # fmt: skip
+    program = (f"program bench\n    use symimpact\n    implicit none\n"
+               f"    real(dp), allocatable :: a(:, :)\n    real(dp) :: out({N}), times({REPEATS})\n"
+               f"    integer :: u, r\n    integer(8) :: c0, c1, rate\n{body}end program bench\n")  # fmt: skip
+    (folder / "f90" / "bench.f90").write_text(program)
+    for args in (["-c", "symimpact.f90"], ["bench.f90", "symimpact.o", "-o", "bench"]):
+        subprocess.run([fc, "-O2", "-ffree-line-length-none", *args], cwd=folder / "f90",
+                       check=True)  # fmt: skip
+    run = subprocess.run([str(folder / "f90" / "bench")], capture_output=True, text=True,
+                         check=True)  # fmt: skip
+    return _parse(run.stdout)
+
+
+def _parse(text: str) -> dict[str, tuple[list[float], float]]:
+    out = {}
+    for line in text.splitlines():
+        key, *times, total = line.replace(",", " ").split()
+        out[key] = ([float(t) for t in times], float(total))
+    return out
+
+
+def _rate(times: list[float]) -> str:
+    med = statistics.median(times)
+    return f"{N / med:.4g} ev/s ({N / max(times):.4g}–{N / min(times):.4g})"
+
+
+def main() -> None:
+    rng = np.random.default_rng(20261125)
+    kernels = declared()
+    print(f"generated targets: evaluations per second at N = {N:.0e}, one core, median of "
+          f"{REPEATS} runs (slowest–fastest); ratio = NumPy's time / the target's")  # fmt: skip
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        lib = _c_library(folder)
+        cases, data = [], {}
+        for module, name, _ in KERNELS:
+            cols = points(kernels[module, name], N, rng)
+            path = folder / f"{module}.{name}.bin"
+            np.concatenate(cols).astype("<f8").tofile(path)
+            cases.append((module, name, cols, str(path)))
+            data[module, name] = cols
+        rust = _rust(folder, cases)
+        fortran = _fortran(folder, cases)
+        try:
+            import jax
+            import jax.numpy as jnp
+            from symimpact.generated import jax as jax_kernels
+        except ImportError:
+            jax_kernels = None
+        for module, name, label in KERNELS:
+            cols = data[module, name]
+            numpy_kernel = getattr(__import__(f"symimpact.generated.{module}",
+                                              fromlist=[name]), name)  # fmt: skip
+            tn = timed(lambda f=numpy_kernel, c=cols: f(*c))
+            ref = np.asarray(tn.out)
+            print(f"\n{module}.{name} ({label}, {len(cols)} arguments)")
+            print(f"  NumPy    {tn.rate(N, 'ev/s')}")
+            if lib is not None:
+                tc = timed(_c_call(lib, module, name, cols))
+                diff = np.max(np.abs(tc.out - ref)) / np.max(np.abs(ref))
+                print(f"  C        {tc.rate(N, 'ev/s')}; ratio {tn.median / tc.median:.1f}x; "
+                      f"max |diff| from NumPy {diff:.1e} of max |value|")  # fmt: skip
+            if jax_kernels is not None:
+                f = getattr(getattr(jax_kernels, module), name)
+                dev = [jnp.asarray(c) for c in cols]
+                t0 = time.perf_counter()
+                f(*dev).block_until_ready()  # traced and compiled here
+                first = time.perf_counter() - t0
+                tj = timed(lambda f=f, dev=dev: f(*dev).block_until_ready())
+                compile_s = first - tj.median
+                diff = np.max(np.abs(np.asarray(tj.out) - ref)) / np.max(np.abs(ref))
+                print(f"  JAX      {tj.rate(N, 'ev/s')}; ratio {tn.median / tj.median:.1f}x; "
+                      f"max |diff| from NumPy {diff:.1e} of max |value|; first call (trace and compile) "
+                      f"{compile_s:.2f} s more; jax {jax.__version__}")  # fmt: skip
+            for target, found in (("Rust", rust), ("Fortran", fortran)):
+                if found is None:
+                    print(f"  {target:<8} not built (its compiler is not installed)")
+                    continue
+                times, total = found[f"{module}.{name}"]
+                rel = abs(total - float(np.sum(ref))) / abs(float(np.sum(ref)))
+                print(f"  {target:<8} {_rate(times)}; ratio "
+                      f"{tn.median / statistics.median(times):.1f}x; sum of the results "
+                      f"{rel:.1e} from NumPy's")  # fmt: skip
+    print("\ntarget: none (figures); C, Rust and Fortran at -O2/opt-level 3 without -march")
+
+
+if __name__ == "__main__":
+    main()
