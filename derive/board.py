@@ -16,6 +16,9 @@ from typing import Any
 
 import sympy as sp
 
+#: Derivative kernels' names for arguments whose names differ only in case.
+SPELLED = {"m": "impact_mass", "M": "main_mass"}
+
 
 @dataclass(frozen=True)
 class Line:
@@ -115,6 +118,9 @@ class Kernel:
     #: For oscillating results: the amplitude against which rounding near a zero crossing is
     #: judged (the test's error bound is rtol·(|value| + |magnitude|)).
     magnitude: sp.Expr | None = None
+    #: For a derivative kernel (:meth:`Board.derivatives`): the value kernel's name and the
+    #: argument it is differentiated in.
+    derivative_of: tuple[str, str] | None = None
 
 
 @dataclass(frozen=True)
@@ -197,6 +203,49 @@ class Board:
         self.kernels.append(k)
         return k
 
+    def derivatives(self, kernel: Kernel, wrt: tuple[str, ...]) -> list[Kernel]:
+        """Declare the partial derivatives of ``kernel`` with respect to the arguments named in
+        ``wrt``: one kernel ``<name>_d_<arg>`` each, its expression ``sympy.diff`` of the value's,
+        its unit the value's over the argument's, its error scale :func:`rounding_scale` of the
+        derivative (the sum of its terms' sizes: what rounding cannot beat).
+
+        An argument in the condition of a case distinction (a ``Piecewise``, e.g. the resonant
+        flight M·Ω² = K) is refused: differentiating case by case is wrong on the case's own set.
+        An argument the value does not depend on gets no kernel (its derivative is zero)."""
+        cases = set().union(*(c.free_symbols for pw in kernel.expr.atoms(sp.Piecewise)
+                               for _, c in pw.args))  # fmt: skip
+        by_name = {a.name: a for a in kernel.args}
+        lower = [a.name.lower() for a in kernel.args]
+        out = []
+        for name in wrt:
+            a = by_name[name]
+            if a.symbol not in kernel.expr.free_symbols:
+                continue  # identically zero: nothing to emit
+            if a.symbol in cases:
+                raise ValueError(f"{kernel.name}: {name} appears in a case condition")
+            # names that differ only in case (m, M) are one name in Fortran and in a file system
+            # that ignores case (the Octave files): spelled out
+            suffix = SPELLED[name] if lower.count(name.lower()) > 1 else name
+            d = sp.diff(kernel.expr, a.symbol)
+            out.append(
+                self.kernel(
+                    name=f"{kernel.name}_d_{suffix}",
+                    args=kernel.args,
+                    expr=d,
+                    returns=f"∂/∂{name} of: {kernel.returns[0].lower()}{kernel.returns[1:]} "
+                    f"(its partial derivative in {a.doc[0].lower()}{a.doc[1:]})",
+                    unit=unit_quotient(kernel.unit, a.unit),
+                    equation=kernel.equation,
+                    lhs=rf"\partial {kernel.lhs} / \partial {sp.latex(a.symbol)}",
+                    note=f"sympy.diff of {kernel.name} in {name}",
+                    printed=kernel.printed,
+                    constraints=kernel.constraints,
+                    magnitude=rounding_scale(d),
+                    derivative_of=(kernel.name, name),
+                )
+            )
+        return out
+
     def fixed_point(self, **kwargs: Any) -> FixedPoint:
         f = FixedPoint(**kwargs)
         self.fixed_points.append(f)
@@ -206,3 +255,31 @@ class Board:
         c = Constant(**kwargs)
         self.constants.append(c)
         return c
+
+
+def unit_quotient(top: str, bottom: str) -> str:
+    """The unit of a quantity in ``top`` per unit of ``bottom`` (``"m"``, ``"m/s"`` → ``"s"``),
+    simplified by pint and written as the kernels' units are (``N/m^1.5``, ``1`` for none)."""
+    import pint
+
+    ureg = pint.UnitRegistry()
+    units = (ureg(top) / ureg(bottom)).units
+    text = f"{units:~C}".replace("**", "^").replace("*", " ")
+    return text or "1"
+
+
+def rounding_scale(expr: sp.Expr) -> sp.Expr:
+    """An error scale of ``expr``: its sums replaced by the sums of their terms' sizes (products
+    and integer powers of those), cos and sin by 1, any other function by its size — what the
+    terms of an expression amount to before they cancel, which is what rounding is relative to."""
+    if isinstance(expr, sp.Piecewise):
+        return sp.Piecewise(*[(rounding_scale(x), c) for x, c in expr.args])
+    if expr.is_Add:
+        return sp.Add(*[rounding_scale(a) for a in expr.args])
+    if expr.is_Mul:
+        return sp.Mul(*[rounding_scale(a) for a in expr.args])
+    if expr.is_Pow and expr.exp.is_Integer:
+        return rounding_scale(expr.base) ** expr.exp
+    if isinstance(expr, (sp.cos, sp.sin)):
+        return sp.Integer(1)
+    return sp.Abs(expr)

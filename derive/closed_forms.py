@@ -172,7 +172,7 @@ def derive() -> Board:
     ak1 = Arg(k1, "N/m", "Linear contact stiffness k₁", 10.0, 1e7, log=True)
     ac1 = Arg(c1, "N s/m", "Contact damping c₁ (below critical)", 0.0, 0.5)
     underdamped = 4 * m * M * k1 - c1**2 * (m + M) > 0
-    board.kernel(
+    hertz = board.kernel(
         name="hertz_contact_duration",
         args=(am, aM, ahz, av),
         expr=T_hertz,
@@ -200,7 +200,7 @@ def derive() -> Board:
         equation="34",
         lhs="z_m",
     )
-    board.kernel(
+    linear = board.kernel(
         name="linear_contact_duration",
         args=(am, aM, ak1, ac1),
         expr=T_lin,
@@ -220,4 +220,7 @@ def derive() -> Board:
         lhs="e",
         constraints=(underdamped,),
     )
+    # The durations' sensitivities to every argument (sympy.diff).
+    board.derivatives(hertz, ("m", "M", "k_hz", hertz.args[3].name))
+    board.derivatives(linear, ("m", "M", "k1", "c1"))
     return board

@@ -165,7 +165,7 @@ def derive() -> Board:
     # Rounding scale: the steady amplitude and the free decay's, which cancel near resonance.
     amp_s = amplitude.subs({P: P_value, Q: Q_value})
     amp_d = sp.sqrt((x0 - xs0) ** 2 + ((xd0 - vs0 + sigma * (x0 - xs0)) / wd) ** 2)
-    board.kernel(
+    x_kernel = board.kernel(
         name="forced_displacement",
         args=args,
         expr=x_t,
@@ -175,7 +175,7 @@ def derive() -> Board:
         lhs="x(t)",
         magnitude=amp_s + amp_d * sp.exp(-sigma * t),
     )
-    board.kernel(
+    v_kernel = board.kernel(
         name="forced_velocity",
         args=args,
         expr=xd_t,
@@ -185,6 +185,11 @@ def derive() -> Board:
         lhs=r"\dot{x}(t)",
         magnitude=(amp_s * W + amp_d * sp.sqrt(K / M) * sp.exp(-sigma * t)),
     )
+    # The flight's transition matrix ∂(x, ẋ)/∂(x0, ẋ0), its vector field ∂/∂t and its
+    # derivatives in the forcing (F0, X_b, φ): sympy.diff of the two kernels.  Not in M, K, Ω:
+    # they decide the resonant case, where differentiating case by case would be wrong.
+    for k in (x_kernel, v_kernel):
+        board.derivatives(k, ("t", "x0", "xdot0", "F0", "X_b", "phi"))
     for name, coefficient, which in (
         ("steady_cosine", A_value, "cos"),
         ("steady_sine", B_value, "sin"),

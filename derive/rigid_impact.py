@@ -225,26 +225,33 @@ def derive() -> Board:
     axm = Arg(xm, "m/s", "Main-mass velocity before the impact", -1.0, 1.0)
     aym = Arg(ym, "m/s", "Impact-mass velocity before the impact", -1.0, 1.0)
     args = (am, aM, ae, axm, aym)
-    board.kernel(
-        name="main_velocity_after",
-        args=args,
-        expr=x_after,
-        returns="Main-mass velocity after a rigid impact",
-        unit="m/s",
-        equation="F2",
-        lhs=r"\dot{x}^+",
-        magnitude=abs(xm) + abs(ym),
+    after = [
+        board.kernel(
+            name="main_velocity_after",
+            args=args,
+            expr=x_after,
+            returns="Main-mass velocity after a rigid impact",
+            unit="m/s",
+            equation="F2",
+            lhs=r"\dot{x}^+",
+            magnitude=abs(xm) + abs(ym),
+        )
+    ]
+    after.append(
+        board.kernel(
+            name="impact_velocity_after",
+            args=args,
+            expr=y_after,
+            returns="Impact-mass velocity after a rigid impact",
+            unit="m/s",
+            equation="F2",
+            lhs=r"\dot{y}^+",
+            magnitude=abs(xm) + abs(ym),
+        )
     )
-    board.kernel(
-        name="impact_velocity_after",
-        args=args,
-        expr=y_after,
-        returns="Impact-mass velocity after a rigid impact",
-        unit="m/s",
-        equation="F2",
-        lhs=r"\dot{y}^+",
-        magnitude=abs(xm) + abs(ym),
-    )
+    # The impact map's Jacobian in the velocities before it and in e (sympy.diff).
+    for k in after:
+        board.derivatives(k, ("e", "xdot_minus", "ydot_minus"))
     board.kernel(
         name="energy_lost",
         args=args,

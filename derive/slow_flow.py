@@ -313,7 +313,7 @@ def derive() -> Board:
         constraints=above,
     )
     on_theta = {Theta: Theta_of_xi}
-    board.kernel(
+    surface = board.kernel(
         name="clearance_for_response",
         args=(aM, aK, aC, am, ae, aF, aXb, aW, axi),
         expr=clearance.subs(on_theta).subs(on_rho),
@@ -323,6 +323,8 @@ def derive() -> Board:
         lhs="d",
         constraints=above,
     )
+    # the response surface's slopes in every argument (sympy.diff)
+    board.derivatives(surface, tuple(a.name for a in surface.args))
     for i, c_ in enumerate(coefficients):
         c_ = c_.subs(whole)
         board.kernel(

@@ -20,7 +20,9 @@ ARGS = (0.25, 1.0, 1000.0, 0.075)  # m, M, k_hz, ż0 of Table 1
 EXPECTED = float(closed_forms.hertz_contact_duration(*ARGS))
 
 
-@pytest.mark.parametrize(("target", "sub"), [("numpy", ""), ("c", "c"), ("octave", "octave")])
+@pytest.mark.parametrize(
+    ("target", "sub"), [("numpy", ""), ("c", "c"), ("c-cmake", "c"), ("octave", "octave")]
+)
 def test_export_copies_the_generated_files(tmp_path, target, sub, capsys):
     out = tmp_path / "kernels"
     assert main(["export", "--target", target, "--out", str(out)]) == 0
@@ -30,6 +32,7 @@ def test_export_copies_the_generated_files(tmp_path, target, sub, capsys):
         p.name
         for p in source.iterdir()
         if p.is_file() and p.suffix in {"numpy": (".py", ".md"), "c": (".c", ".h", ".md", ".txt", ".in"),
+                                        "c-cmake": (".c", ".h", ".md", ".txt", ".in"),
                                         "octave": (".m", ".md")}[target]
     }  # fmt: skip
     assert {p.name for p in out.iterdir()} == wanted | {".symimpact-output"}  # --force's marker

@@ -111,8 +111,45 @@ def derivation_page(step: str) -> str:
                 "|---|---|---|"]  # fmt: skip
         out += [f"| `{k.name}({', '.join(a.name for a in k.args)})` | {k.equation} | "
                 f"{_cell(_prose(k.returns))} [{_prose(k.unit)}] |" for k in b.kernels]  # fmt: skip
-        out.append("")
+        out += ["", "### The same kernels in every target", "",
+                "As each target declares them (read from the generated files; the C library "
+                "also has a `_batch` variant of each, and the Rust functions live in the module "
+                f"`symimpact::{b.module}`):", ""]  # fmt: skip
+        for k in b.kernels:
+            out += ["```text", *target_signatures(b.module, k.name), "```", ""]
     return "\n".join(out)
+
+
+@functools.cache
+def _generated_text(relative: str) -> str:
+    return (HERE.parent / "generated" / relative).read_text(encoding="utf-8")
+
+
+def target_signatures(module: str, name: str) -> list[str]:
+    """The signature of kernel ``name`` of step ``module`` in each target, as the generated
+    files declare it (NumPy and JAX: the ``def`` line; C: the header's prototype; Octave: the
+    function line; Rust: the ``pub fn`` line; Fortran: the function statement)."""
+    full = f"{module}_{name}"
+    found = {
+        "NumPy": (f"{module}.py", rf"^def ({name}\(.*?\)):"),
+        "C": ("c/symimpact.h", rf"^(double symimpact_{full}\(.*?\));"),
+        "Octave": (f"octave/{full}.m", r"^function (.*)$"),
+        "Rust": ("rust/src/lib.rs", rf"^ *(pub fn {name}\(.*?\) -> f64)"),
+        "Fortran": ("fortran/symimpact.f90", rf"^ *(pure elemental function {full}\(.*?\))"),
+        "JAX": (f"jax/{module}.py", rf"^def ({name}\(.*?\)):"),
+    }
+    out = []
+    for target, (path, pattern) in found.items():
+        if target == "Rust":  # the Rust function of this module: after its `pub mod` line
+            text = _generated_text(path).split(f"pub mod {module} {{", 1)[1]
+            text = text.split("\npub mod ", 1)[0]
+        else:
+            text = _generated_text(path)
+        match = re.search(pattern, text, re.M)
+        if match is None:
+            raise RuntimeError(f"{target}: no declaration of {full} in generated/{path}")
+        out.append(f"{target + ':':<9}{match.group(1)}")
+    return out
 
 
 def errata_page() -> str:

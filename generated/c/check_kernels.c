@@ -880,6 +880,166 @@ static void check_closed_forms_linear_restitution(void)
     }
 }
 
+/* closed_forms.hertz_contact_duration_d_impact_mass: ∂/∂m of: hertz contact duration (its partial derivative in impact mass m) [s/kg] */
+static void check_closed_forms_hertz_contact_duration_d_impact_mass(void)
+{
+    static const double expected[3] = { 5.153446524992846e-05, 0.0006977758674392841, 0.13030198693386175 };
+    static const double scale[3] = { 0.0013204900920463203, 0.0013983052410817774, 0.3035495298897656 };
+    static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_zdot0[3] = { 0.00382829, 1.46558, 0.0561068 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_hertz_contact_duration_d_impact_mass", i, symimpact_closed_forms_hertz_contact_duration_d_impact_mass(a_m[i], a_M[i], a_k_hz[i], a_zdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_closed_forms_hertz_contact_duration_d_impact_mass_batch(3, a_m, a_M, a_k_hz, a_zdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_hertz_contact_duration_d_impact_mass_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* closed_forms.hertz_contact_duration_d_main_mass: ∂/∂M of: hertz contact duration (its partial derivative in main mass M) [s/kg] */
+static void check_closed_forms_hertz_contact_duration_d_main_mass(void)
+{
+    static const double expected[3] = { 0.007189917841357623, 2.7164153866971025e-09, 0.003538550764729489 };
+    static const double scale[3] = { 0.01559725684426171, 2.758939033982669e-06, 0.050022657551501044 };
+    static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_zdot0[3] = { 0.00382829, 1.46558, 0.0561068 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_hertz_contact_duration_d_main_mass", i, symimpact_closed_forms_hertz_contact_duration_d_main_mass(a_m[i], a_M[i], a_k_hz[i], a_zdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_closed_forms_hertz_contact_duration_d_main_mass_batch(3, a_m, a_M, a_k_hz, a_zdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_hertz_contact_duration_d_main_mass_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* closed_forms.hertz_contact_duration_d_k_hz: ∂/∂k_hz of: hertz contact duration (its partial derivative in hertz contact... [m^1.5 s/N] */
+static void check_closed_forms_hertz_contact_duration_d_k_hz(void)
+{
+    static const double expected[3] = { -4.5975665132776225e-11, -9.588782342253083e-15, -0.00020498804640122438 };
+    static const double scale[3] = { 9.195133026555245e-11, 1.9177564684506166e-14, 0.00040997609280244877 };
+    static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_zdot0[3] = { 0.00382829, 1.46558, 0.0561068 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_hertz_contact_duration_d_k_hz", i, symimpact_closed_forms_hertz_contact_duration_d_k_hz(a_m[i], a_M[i], a_k_hz[i], a_zdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_closed_forms_hertz_contact_duration_d_k_hz_batch(3, a_m, a_M, a_k_hz, a_zdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_hertz_contact_duration_d_k_hz_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* closed_forms.hertz_contact_duration_d_zdot0: ∂/∂zdot0 of: hertz contact duration (its partial derivative in relative... [s^2/m] */
+static void check_closed_forms_hertz_contact_duration_d_zdot0(void)
+{
+    static const double expected[3] = { -0.25299111657869805, -1.8363167870922495e-05, -1.3662130977958653 };
+    static const double scale[3] = { 0.5059822331573961, 3.672633574184499e-05, 2.7324261955917306 };
+    static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_zdot0[3] = { 0.00382829, 1.46558, 0.0561068 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_hertz_contact_duration_d_zdot0", i, symimpact_closed_forms_hertz_contact_duration_d_zdot0(a_m[i], a_M[i], a_k_hz[i], a_zdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_closed_forms_hertz_contact_duration_d_zdot0_batch(3, a_m, a_M, a_k_hz, a_zdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_hertz_contact_duration_d_zdot0_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* closed_forms.linear_contact_duration_d_impact_mass: ∂/∂m of: linear damped contact duration (its partial derivative in impact mass m) [s/kg] */
+static void check_closed_forms_linear_contact_duration_d_impact_mass(void)
+{
+    static const double expected[3] = { 3.915503248612775e-05, 0.0021638154739013604, 0.09331181216020386 };
+    static const double scale[3] = { 0.0010032865698384687, 0.004336170270628969, 0.21741630961415576 };
+    static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_k1[3] = { 260860, 6.80481e+06, 177.51 };
+    static const double a_c1[3] = { 0.0728757, 0.395751, 0.218627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_linear_contact_duration_d_impact_mass", i, symimpact_closed_forms_linear_contact_duration_d_impact_mass(a_m[i], a_M[i], a_k1[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_closed_forms_linear_contact_duration_d_impact_mass_batch(3, a_m, a_M, a_k1, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_linear_contact_duration_d_impact_mass_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* closed_forms.linear_contact_duration_d_main_mass: ∂/∂M of: linear damped contact duration (its partial derivative in main mass M) [s/kg] */
+static void check_closed_forms_linear_contact_duration_d_main_mass(void)
+{
+    static const double expected[3] = { 0.005462780399207461, 8.42365281110899e-09, 0.0025340257048066337 };
+    static const double scale[3] = { 0.011850537785473271, 8.55552196394022e-06, 0.035832545348669385 };
+    static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_k1[3] = { 260860, 6.80481e+06, 177.51 };
+    static const double a_c1[3] = { 0.0728757, 0.395751, 0.218627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_linear_contact_duration_d_main_mass", i, symimpact_closed_forms_linear_contact_duration_d_main_mass(a_m[i], a_M[i], a_k1[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_closed_forms_linear_contact_duration_d_main_mass_batch(3, a_m, a_M, a_k1, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_linear_contact_duration_d_main_mass_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* closed_forms.linear_contact_duration_d_k1: ∂/∂k1 of: linear damped contact duration (its partial derivative in linear... [m s/N] */
+static void check_closed_forms_linear_contact_duration_d_k1(void)
+{
+    static const double expected[3] = { -5.6418617583305524e-09, -2.4528752901135204e-11, -0.0006185775187455155 };
+    static const double scale[3] = { 1.1283723516661105e-08, 4.905750580227041e-11, 0.001237155037491031 };
+    static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_k1[3] = { 260860, 6.80481e+06, 177.51 };
+    static const double a_c1[3] = { 0.0728757, 0.395751, 0.218627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_linear_contact_duration_d_k1", i, symimpact_closed_forms_linear_contact_duration_d_k1(a_m[i], a_M[i], a_k1[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_closed_forms_linear_contact_duration_d_k1_batch(3, a_m, a_M, a_k1, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_linear_contact_duration_d_k1_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* closed_forms.linear_contact_duration_d_c1: ∂/∂c1 of: linear damped contact duration (its partial derivative in contact... [m/N] */
+static void check_closed_forms_linear_contact_duration_d_c1(void)
+{
+    static const double expected[3] = { 8.977338817540039e-10, 6.316963942168118e-11, 7.797440897580077e-05 };
+    static const double scale[3] = { 1.7954677635080078e-09, 1.2633927884336237e-10, 0.00015594881795160154 };
+    static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_k1[3] = { 260860, 6.80481e+06, 177.51 };
+    static const double a_c1[3] = { 0.0728757, 0.395751, 0.218627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_linear_contact_duration_d_c1", i, symimpact_closed_forms_linear_contact_duration_d_c1(a_m[i], a_M[i], a_k1[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_closed_forms_linear_contact_duration_d_c1_batch(3, a_m, a_M, a_k1, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_closed_forms_linear_contact_duration_d_c1_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* free_flight.main_mass_displacement: Main-mass displacement x(t) in free flight [m] */
 static void check_free_flight_main_mass_displacement(void)
 {
@@ -1013,6 +1173,318 @@ static void check_forced_flight_forced_velocity(void)
     }
 }
 
+/* forced_flight.forced_displacement_d_t: ∂/∂t of: main-mass displacement x(t) in forced free flight (its partial... [m/s] */
+static void check_forced_flight_forced_displacement_d_t(void)
+{
+    static const double expected[3] = { -3.582469517580021, 0.22535741998218997, 0.30639423474236777 };
+    static const double scale[3] = { 9.752201978378293, 2.576120566630043, 0.6470017238516398 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_t", i, symimpact_forced_flight_forced_displacement_d_t(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_displacement_d_t_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_t_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_displacement_d_x0: ∂/∂x0 of: main-mass displacement x(t) in forced free flight (its partial... [1] */
+static void check_forced_flight_forced_displacement_d_x0(void)
+{
+    static const double expected[3] = { 0.2277967187579221, -0.03630523276621419, 0.9842293577643402 };
+    static const double scale[3] = { 1.0793116850624607, 1.0343308426353268, 1.9709491315946521 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_x0", i, symimpact_forced_flight_forced_displacement_d_x0(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_displacement_d_x0_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_x0_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_displacement_d_xdot0: ∂/∂xdot0 of: main-mass displacement x(t) in forced free flight (its partial... [s] */
+static void check_forced_flight_forced_displacement_d_xdot0(void)
+{
+    static const double expected[3] = { -0.001867844218883491, 0.007313775801781447, 0.0014271484693960178 };
+    static const double scale[3] = { 0.0038064797406801047, 0.014632401698058854, 0.2338624222836518 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_xdot0", i, symimpact_forced_flight_forced_displacement_d_xdot0(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_displacement_d_xdot0_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_xdot0_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_displacement_d_F0: ∂/∂F0 of: main-mass displacement x(t) in forced free flight (its partial... [m/N] */
+static void check_forced_flight_forced_displacement_d_F0(void)
+{
+    static const double expected[3] = { 1.807631760683126e-05, 1.753733706008945e-06, -2.831399056020138e-07 };
+    static const double scale[3] = { 5.85774429849897e-05, 3.4757909051045753e-06, 9.577367155851846e-05 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_F0", i, symimpact_forced_flight_forced_displacement_d_F0(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_displacement_d_F0_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_F0_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_displacement_d_X_b: ∂/∂X_b of: main-mass displacement x(t) in forced free flight (its partial... [1] */
+static void check_forced_flight_forced_displacement_d_X_b(void)
+{
+    static const double expected[3] = { 0.865924446034428, 1.27239738450161, -0.00010658669358719146 };
+    static const double scale[3] = { 2.806079676554524, 2.5219429846174983, 0.015680412829857136 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_X_b", i, symimpact_forced_flight_forced_displacement_d_X_b(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_displacement_d_X_b_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_X_b_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_displacement_d_phi: ∂/∂phi of: main-mass displacement x(t) in forced free flight (its partial... [m/rad] */
+static void check_forced_flight_forced_displacement_d_phi(void)
+{
+    static const double expected[3] = { -0.006864397100871322, -0.004527370952733622, 1.9391079670411544e-06 };
+    static const double scale[3] = { 0.022426696886244633, 0.009815646260478846, 0.00015477729539001742 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_phi", i, symimpact_forced_flight_forced_displacement_d_phi(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_displacement_d_phi_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_phi_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_velocity_d_t: ∂/∂t of: main-mass velocity ẋ(t) in forced free flight (its partial... [m/s^2] */
+static void check_forced_flight_forced_velocity_d_t(void)
+{
+    static const double expected[3] = { 551.7441436778978, -6.179680537813477, -0.36953528638146454 };
+    static const double scale[3] = { 3050.8381336287907, 337.08964339277543, 2.0738368632203894 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_t", i, symimpact_forced_flight_forced_velocity_d_t(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_velocity_d_t_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_t_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_velocity_d_x0: ∂/∂x0 of: main-mass velocity ẋ(t) in forced free flight (its partial... [1/s] */
+static void check_forced_flight_forced_velocity_d_x0(void)
+{
+    static const double expected[3] = { 360.2125427530413, -136.00238915690514, -0.025589593276717587 };
+    static const double scale[3] = { 734.2270130793975, 272.1010410173936, 4.214351032496912 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_x0", i, symimpact_forced_flight_forced_velocity_d_x0(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_velocity_d_x0_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_x0_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_velocity_d_xdot0: ∂/∂xdot0 of: main-mass velocity ẋ(t) in forced free flight (its partial... [1] */
+static void check_forced_flight_forced_velocity_d_xdot0(void)
+{
+    static const double expected[3] = { 0.22812553448044887, -0.036349741027029044, 0.9841988158422643 };
+    static const double scale[3] = { 1.0796405007849874, 1.0343753508961417, 1.9709185896725763 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_xdot0", i, symimpact_forced_flight_forced_velocity_d_xdot0(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_velocity_d_xdot0_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_xdot0_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_velocity_d_F0: ∂/∂F0 of: main-mass velocity ẋ(t) in forced free flight (its partial... [m/N/s] */
+static void check_forced_flight_forced_velocity_d_F0(void)
+{
+    static const double expected[3] = { 0.006155799639727966, -0.0002951559046555919, -0.0003691415932009604 };
+    static const double scale[3] = { 0.01653084575096147, 0.0005494283673640772, 0.001172644202211734 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_F0", i, symimpact_forced_flight_forced_velocity_d_F0(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_velocity_d_F0_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_F0_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_velocity_d_X_b: ∂/∂X_b of: main-mass velocity ẋ(t) in forced free flight (its partial... [1/s] */
+static void check_forced_flight_forced_velocity_d_X_b(void)
+{
+    static const double expected[3] = { 294.88031657788486, -214.1615162175668, -0.04021838404907254 };
+    static const double scale[3] = { 791.8837897320454, 398.66470065004575, 0.1712639413013542 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_X_b", i, symimpact_forced_flight_forced_velocity_d_X_b(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_velocity_d_X_b_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_X_b_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_velocity_d_phi: ∂/∂phi of: main-mass velocity ẋ(t) in forced free flight (its partial... [m/rad/s] */
+static void check_forced_flight_forced_velocity_d_phi(void)
+{
+    static const double expected[3] = { -1.657196595263989, -0.36780325038285205, -8.130945683200315e-05 };
+    static const double scale[3] = { 5.643742064372354, 1.1486500112726912, 0.0013673624321909306 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_phi", i, symimpact_forced_flight_forced_velocity_d_phi(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_velocity_d_phi_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_phi_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* forced_flight.steady_cosine: Coefficient of cos(Ωt + φ) in the steady solution of the primary [m] */
 static void check_forced_flight_steady_cosine(void)
 {
@@ -1118,6 +1590,132 @@ static void check_rigid_impact_impact_velocity_after(void)
     symimpact_rigid_impact_impact_velocity_after_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, out);
     for (i = 0; i < 3; ++i) {
         check("symimpact_rigid_impact_impact_velocity_after_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* rigid_impact.main_velocity_after_d_e: ∂/∂e of: main-mass velocity after a rigid impact (its partial derivative in... [m/s] */
+static void check_rigid_impact_main_velocity_after_d_e(void)
+{
+    static const double expected[3] = { 0.9258259428086487, -0.0003260780950686189, 0.0006773124668177276 };
+    static const double scale[3] = { 1.8516518856172974, 0.0006521561901372377, 0.006734859639942183 };
+    static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+    static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+    static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_main_velocity_after_d_e", i, symimpact_rigid_impact_main_velocity_after_d_e(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i]), expected[i], scale[i]);
+    }
+    symimpact_rigid_impact_main_velocity_after_d_e_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_main_velocity_after_d_e_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* rigid_impact.main_velocity_after_d_xdot_minus: ∂/∂xdot_minus of: main-mass velocity after a rigid impact (its partial... [1] */
+static void check_rigid_impact_main_velocity_after_d_xdot_minus(void)
+{
+    static const double expected[3] = { -0.19791346124114692, 0.9995115325337702, 0.9675792705653878 };
+    static const double scale[3] = { 2.3958269224822937, 2.0, 2.0 };
+    static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+    static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+    static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_main_velocity_after_d_xdot_minus", i, symimpact_rigid_impact_main_velocity_after_d_xdot_minus(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i]), expected[i], scale[i]);
+    }
+    symimpact_rigid_impact_main_velocity_after_d_xdot_minus_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_main_velocity_after_d_xdot_minus_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* rigid_impact.main_velocity_after_d_ydot_minus: ∂/∂ydot_minus of: main-mass velocity after a rigid impact (its partial... [1] */
+static void check_rigid_impact_main_velocity_after_d_ydot_minus(void)
+{
+    static const double expected[3] = { 1.1979134612411468, 0.0004884674662297367, 0.03242072943461219 };
+    static const double scale[3] = { 2.3958269224822937, 0.0009769349324594734, 0.06484145886922438 };
+    static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+    static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+    static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_main_velocity_after_d_ydot_minus", i, symimpact_rigid_impact_main_velocity_after_d_ydot_minus(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i]), expected[i], scale[i]);
+    }
+    symimpact_rigid_impact_main_velocity_after_d_ydot_minus_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_main_velocity_after_d_ydot_minus_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* rigid_impact.impact_velocity_after_d_e: ∂/∂e of: impact-mass velocity after a rigid impact (its partial derivative... [m/s] */
+static void check_rigid_impact_impact_velocity_after_d_e(void)
+{
+    static const double expected[3] = { -0.41592105719135125, 1.3161799219049313, -0.02456368753318226 };
+    static const double scale[3] = { 0.8318421143827025, 2.6323598438098625, 0.2442491403600578 };
+    static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+    static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+    static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_impact_velocity_after_d_e", i, symimpact_rigid_impact_impact_velocity_after_d_e(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i]), expected[i], scale[i]);
+    }
+    symimpact_rigid_impact_impact_velocity_after_d_e_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_impact_velocity_after_d_e_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* rigid_impact.impact_velocity_after_d_xdot_minus: ∂/∂xdot_minus of: impact-mass velocity after a rigid impact (its partial... [1] */
+static void check_rigid_impact_impact_velocity_after_d_xdot_minus(void)
+{
+    static const double expected[3] = { 0.538154538758853, 1.9716475325337703, 1.175783270565388 };
+    static const double scale[3] = { 1.076309077517706, 3.9432950650675407, 2.351566541130776 };
+    static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+    static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+    static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_impact_velocity_after_d_xdot_minus", i, symimpact_rigid_impact_impact_velocity_after_d_xdot_minus(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i]), expected[i], scale[i]);
+    }
+    symimpact_rigid_impact_impact_velocity_after_d_xdot_minus_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_impact_velocity_after_d_xdot_minus_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* rigid_impact.impact_velocity_after_d_ydot_minus: ∂/∂ydot_minus of: impact-mass velocity after a rigid impact (its partial... [1] */
+static void check_rigid_impact_impact_velocity_after_d_ydot_minus(void)
+{
+    static const double expected[3] = { 0.461845461241147, -0.9716475325337702, -0.1757832705653878 };
+    static const double scale[3] = { 2.0, 3.9432950650675407, 2.351566541130776 };
+    static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+    static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+    static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_impact_velocity_after_d_ydot_minus", i, symimpact_rigid_impact_impact_velocity_after_d_ydot_minus(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i]), expected[i], scale[i]);
+    }
+    symimpact_rigid_impact_impact_velocity_after_d_ydot_minus_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_rigid_impact_impact_velocity_after_d_ydot_minus_batch", i, out[i], expected[i], scale[i]);
     }
 }
 
@@ -1593,6 +2191,231 @@ static void check_slow_flow_clearance_for_response(void)
     symimpact_slow_flow_clearance_for_response_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
     for (i = 0; i < 3; ++i) {
         check("symimpact_slow_flow_clearance_for_response_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* slow_flow.clearance_for_response_d_main_mass: ∂/∂M of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the... [m/kg] */
+static void check_slow_flow_clearance_for_response_d_main_mass(void)
+{
+    static const double expected[3] = { -8.645067569238502e-06, 4.7673681068122075e-05, -0.0010375408524110898 };
+    static const double scale[3] = { 1.7332960661064765e-05, 0.000148814035535072, 0.0023248435931612654 };
+    static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+    static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+    static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+    static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+    static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+    static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+    static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+    static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+    static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_main_mass", i, symimpact_slow_flow_clearance_for_response_d_main_mass(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_slow_flow_clearance_for_response_d_main_mass_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_main_mass_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* slow_flow.clearance_for_response_d_K: ∂/∂K of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the... [m^2/N] */
+static void check_slow_flow_clearance_for_response_d_K(void)
+{
+    static const double expected[3] = { -4.245479647523432e-08, -2.2015113414877292e-08, 1.6141701878732862e-07 };
+    static const double scale[3] = { 1.0162871512524641e-07, 2.1053276409487083e-07, 3.2861974288071283e-07 };
+    static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+    static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+    static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+    static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+    static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+    static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+    static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+    static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+    static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_K", i, symimpact_slow_flow_clearance_for_response_d_K(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_slow_flow_clearance_for_response_d_K_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_K_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* slow_flow.clearance_for_response_d_C: ∂/∂C of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the... [m^2/N/s] */
+static void check_slow_flow_clearance_for_response_d_C(void)
+{
+    static const double expected[3] = { 1.0501950590555848e-07, -6.698433777535246e-10, 4.5710375733521933e-07 };
+    static const double scale[3] = { 2.100965668911972e-07, 2.0612935725739602e-09, 9.517565021610194e-07 };
+    static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+    static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+    static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+    static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+    static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+    static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+    static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+    static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+    static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_C", i, symimpact_slow_flow_clearance_for_response_d_C(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_slow_flow_clearance_for_response_d_C_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_C_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* slow_flow.clearance_for_response_d_impact_mass: ∂/∂m of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the... [m/kg] */
+static void check_slow_flow_clearance_for_response_d_impact_mass(void)
+{
+    static const double expected[3] = { -2.1229830331942447e-05, 3.729119563796722e-05, -0.0009269382908180645 };
+    static const double scale[3] = { 8.842943705669158e-05, 8.470911913751996e-05, 0.0016765346590463775 };
+    static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+    static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+    static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+    static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+    static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+    static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+    static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+    static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+    static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_impact_mass", i, symimpact_slow_flow_clearance_for_response_d_impact_mass(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_slow_flow_clearance_for_response_d_impact_mass_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_impact_mass_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* slow_flow.clearance_for_response_d_e: ∂/∂e of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the... [m] */
+static void check_slow_flow_clearance_for_response_d_e(void)
+{
+    static const double expected[3] = { -1.4718303745420558e-08, 1.0838163476448268e-07, -1.1292427223066737e-07 };
+    static const double scale[3] = { 3.280461137909563e-07, 1.351615884437346e-06, 2.4495601676300704e-06 };
+    static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+    static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+    static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+    static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+    static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+    static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+    static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+    static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+    static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_e", i, symimpact_slow_flow_clearance_for_response_d_e(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_slow_flow_clearance_for_response_d_e_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_e_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* slow_flow.clearance_for_response_d_F0: ∂/∂F0 of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the... [m/N] */
+static void check_slow_flow_clearance_for_response_d_F0(void)
+{
+    static const double expected[3] = { -1.7438361607326342e-05, 5.988683475899715e-06, 1.3949657533409853e-05 };
+    static const double scale[3] = { 4.127611499936895e-05, 1.248287512131932e-05, 2.7899315066819705e-05 };
+    static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+    static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+    static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+    static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+    static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+    static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+    static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+    static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+    static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_F0", i, symimpact_slow_flow_clearance_for_response_d_F0(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_slow_flow_clearance_for_response_d_F0_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_F0_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* slow_flow.clearance_for_response_d_X_b: ∂/∂X_b of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the... [1] */
+static void check_slow_flow_clearance_for_response_d_X_b(void)
+{
+    static const double expected[3] = { -0.008647101622553796, 0.0734158735698532, 0.02687478745479328 };
+    static const double scale[3] = { 0.020504611819891515, 0.15302882234066767, 0.05374957490958656 };
+    static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+    static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+    static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+    static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+    static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+    static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+    static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+    static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+    static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_X_b", i, symimpact_slow_flow_clearance_for_response_d_X_b(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_slow_flow_clearance_for_response_d_X_b_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_X_b_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* slow_flow.clearance_for_response_d_Omega: ∂/∂Omega of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the... [m s/rad] */
+static void check_slow_flow_clearance_for_response_d_Omega(void)
+{
+    static const double expected[3] = { -1.736834263569008e-06, 2.1758814183652573e-05, -4.126642826847206e-06 };
+    static const double scale[3] = { 3.484330272302455e-06, 6.789647412452392e-05, 9.241821990218337e-06 };
+    static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+    static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+    static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+    static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+    static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+    static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+    static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+    static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+    static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_Omega", i, symimpact_slow_flow_clearance_for_response_d_Omega(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_slow_flow_clearance_for_response_d_Omega_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_Omega_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* slow_flow.clearance_for_response_d_xi: ∂/∂xi of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the... [m] */
+static void check_slow_flow_clearance_for_response_d_xi(void)
+{
+    static const double expected[3] = { -0.00024540155185923525, -1.2236490681613105e-05, -4.244074182258537e-05 };
+    static const double scale[3] = { 0.000986267936067523, 0.00013462585814466184, 0.00021565872858590661 };
+    static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+    static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+    static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+    static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+    static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+    static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+    static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+    static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+    static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_xi", i, symimpact_slow_flow_clearance_for_response_d_xi(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_slow_flow_clearance_for_response_d_xi_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_slow_flow_clearance_for_response_d_xi_batch", i, out[i], expected[i], scale[i]);
     }
 }
 
@@ -2145,17 +2968,43 @@ int main(void)
     check_closed_forms_hertz_max_penetration();
     check_closed_forms_linear_contact_duration();
     check_closed_forms_linear_restitution();
+    check_closed_forms_hertz_contact_duration_d_impact_mass();
+    check_closed_forms_hertz_contact_duration_d_main_mass();
+    check_closed_forms_hertz_contact_duration_d_k_hz();
+    check_closed_forms_hertz_contact_duration_d_zdot0();
+    check_closed_forms_linear_contact_duration_d_impact_mass();
+    check_closed_forms_linear_contact_duration_d_main_mass();
+    check_closed_forms_linear_contact_duration_d_k1();
+    check_closed_forms_linear_contact_duration_d_c1();
     check_free_flight_main_mass_displacement();
     check_free_flight_main_mass_velocity();
     check_free_flight_impact_mass_velocity();
     check_free_flight_impact_mass_displacement();
     check_forced_flight_forced_displacement();
     check_forced_flight_forced_velocity();
+    check_forced_flight_forced_displacement_d_t();
+    check_forced_flight_forced_displacement_d_x0();
+    check_forced_flight_forced_displacement_d_xdot0();
+    check_forced_flight_forced_displacement_d_F0();
+    check_forced_flight_forced_displacement_d_X_b();
+    check_forced_flight_forced_displacement_d_phi();
+    check_forced_flight_forced_velocity_d_t();
+    check_forced_flight_forced_velocity_d_x0();
+    check_forced_flight_forced_velocity_d_xdot0();
+    check_forced_flight_forced_velocity_d_F0();
+    check_forced_flight_forced_velocity_d_X_b();
+    check_forced_flight_forced_velocity_d_phi();
     check_forced_flight_steady_cosine();
     check_forced_flight_steady_sine();
     check_forced_flight_linear_amplitude();
     check_rigid_impact_main_velocity_after();
     check_rigid_impact_impact_velocity_after();
+    check_rigid_impact_main_velocity_after_d_e();
+    check_rigid_impact_main_velocity_after_d_xdot_minus();
+    check_rigid_impact_main_velocity_after_d_ydot_minus();
+    check_rigid_impact_impact_velocity_after_d_e();
+    check_rigid_impact_impact_velocity_after_d_xdot_minus();
+    check_rigid_impact_impact_velocity_after_d_ydot_minus();
     check_rigid_impact_energy_lost();
     check_rigid_impact_linear_c1_for_restitution();
     check_rigid_impact_saltation_main_gain();
@@ -2178,6 +3027,15 @@ int main(void)
     check_slow_flow_absorber_amplitude_ratio();
     check_slow_flow_absorber_phase_lag();
     check_slow_flow_clearance_for_response();
+    check_slow_flow_clearance_for_response_d_main_mass();
+    check_slow_flow_clearance_for_response_d_K();
+    check_slow_flow_clearance_for_response_d_C();
+    check_slow_flow_clearance_for_response_d_impact_mass();
+    check_slow_flow_clearance_for_response_d_e();
+    check_slow_flow_clearance_for_response_d_F0();
+    check_slow_flow_clearance_for_response_d_X_b();
+    check_slow_flow_clearance_for_response_d_Omega();
+    check_slow_flow_clearance_for_response_d_xi();
     check_slow_flow_response_quartic_4();
     check_slow_flow_response_quartic_3();
     check_slow_flow_response_quartic_2();
@@ -2201,6 +3059,6 @@ int main(void)
     check_fixed_points_contact_duration_printed();
     check_fixed_points_hunt_crossley_restitution();
     check_fixed_points_hunt_crossley_peak_speed_ratio();
-    printf("symimpact: %ld checks of 93 kernels and 5 iterations, %ld failed\n", checks, failures);
+    printf("symimpact: %ld checks of 128 kernels and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -738,6 +738,150 @@ void symimpact_closed_forms_linear_restitution_batch(size_t n, const double *res
     }
 }
 
+/* Eq. 34: \partial T_{CD}^{(Hertz)} / \partial m = - \frac{32 \cdot 5^{\frac{2}{5}} \sqrt{\pi} M^{\frac{2}{5}} k_{hz} m^{\frac{2}{5}} \Gamma\left(\frac{2}{5}\right)}{25 \sqrt[5]{\dot{z}_{0}} \left(4 M k_{hz} + 4 k_{hz} m\right)^{\frac{7}{5}} \Gamma\left(\frac{9}{10}\right)} + \frac{8 \cdot 5^{\frac{2}{5}} \sqrt{\pi} M^{\frac{2}{5}} \Gamma\left(\frac{2}{5}\right)}{25 m^{\frac{3}{5}} \sqrt[5]{\dot{z}_{0}} \left(4 M k_{hz} + 4 k_{hz} m\right)^{\frac{2}{5}} \Gamma\left(\frac{9}{10}\right)} */
+double symimpact_closed_forms_hertz_contact_duration_d_impact_mass(double m, double M, double k_hz, double zdot0)
+{
+    const double _x0 = pow(5, 2.0/5.0);
+    const double _x1 = sqrt(3.141592653589793);
+    const double _x2 = pow(M, 2.0/5.0);
+    const double _x3 = pow(zdot0, -1.0/5.0);
+    const double _x4 = 4*k_hz;
+    const double _x5 = M*_x4 + _x4*m;
+    return 0.6642260802042403*_x0*_x1*_x2*_x3/(pow(_x5, 2.0/5.0)*pow(m, 3.0/5.0)) - 2.6569043208169614*_x0*_x1*_x2*_x3*k_hz*pow(m, 2.0/5.0)/pow(_x5, 7.0/5.0);
+}
+
+void symimpact_closed_forms_hertz_contact_duration_d_impact_mass_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k_hz, const double *restrict zdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_closed_forms_hertz_contact_duration_d_impact_mass(m[i], M[i], k_hz[i], zdot0[i]);
+    }
+}
+
+/* Eq. 34: \partial T_{CD}^{(Hertz)} / \partial M = - \frac{32 \cdot 5^{\frac{2}{5}} \sqrt{\pi} M^{\frac{2}{5}} k_{hz} m^{\frac{2}{5}} \Gamma\left(\frac{2}{5}\right)}{25 \sqrt[5]{\dot{z}_{0}} \left(4 M k_{hz} + 4 k_{hz} m\right)^{\frac{7}{5}} \Gamma\left(\frac{9}{10}\right)} + \frac{8 \cdot 5^{\frac{2}{5}} \sqrt{\pi} m^{\frac{2}{5}} \Gamma\left(\frac{2}{5}\right)}{25 M^{\frac{3}{5}} \sqrt[5]{\dot{z}_{0}} \left(4 M k_{hz} + 4 k_{hz} m\right)^{\frac{2}{5}} \Gamma\left(\frac{9}{10}\right)} */
+double symimpact_closed_forms_hertz_contact_duration_d_main_mass(double m, double M, double k_hz, double zdot0)
+{
+    const double _x0 = pow(5, 2.0/5.0);
+    const double _x1 = sqrt(3.141592653589793);
+    const double _x2 = pow(m, 2.0/5.0);
+    const double _x3 = pow(zdot0, -1.0/5.0);
+    const double _x4 = 4*k_hz;
+    const double _x5 = M*_x4 + _x4*m;
+    return -2.6569043208169614*pow(M, 2.0/5.0)*_x0*_x1*_x2*_x3*k_hz/pow(_x5, 7.0/5.0) + 0.6642260802042403*_x0*_x1*_x2*_x3/(pow(M, 3.0/5.0)*pow(_x5, 2.0/5.0));
+}
+
+void symimpact_closed_forms_hertz_contact_duration_d_main_mass_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k_hz, const double *restrict zdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_closed_forms_hertz_contact_duration_d_main_mass(m[i], M[i], k_hz[i], zdot0[i]);
+    }
+}
+
+/* Eq. 34: \partial T_{CD}^{(Hertz)} / \partial k_{hz} = \frac{4 \cdot 5^{\frac{2}{5}} \sqrt{\pi} M^{\frac{2}{5}} m^{\frac{2}{5}} \left(- \frac{8 M}{5} - \frac{8 m}{5}\right) \Gamma\left(\frac{2}{5}\right)}{5 \sqrt[5]{\dot{z}_{0}} \left(4 M k_{hz} + 4 k_{hz} m\right)^{\frac{7}{5}} \Gamma\left(\frac{9}{10}\right)} */
+double symimpact_closed_forms_hertz_contact_duration_d_k_hz(double m, double M, double k_hz, double zdot0)
+{
+    const double _x0 = 4*k_hz;
+    return 1.6605652005106006*pow(5, 2.0/5.0)*sqrt(3.141592653589793)*pow(M, 2.0/5.0)*pow(m, 2.0/5.0)*(-8.0/5.0*M - 8.0/5.0*m)/(pow(zdot0, 1.0/5.0)*pow(M*_x0 + _x0*m, 7.0/5.0));
+}
+
+void symimpact_closed_forms_hertz_contact_duration_d_k_hz_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k_hz, const double *restrict zdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_closed_forms_hertz_contact_duration_d_k_hz(m[i], M[i], k_hz[i], zdot0[i]);
+    }
+}
+
+/* Eq. 34: \partial T_{CD}^{(Hertz)} / \partial \dot{z}_{0} = - \frac{4 \cdot 5^{\frac{2}{5}} \sqrt{\pi} M^{\frac{2}{5}} m^{\frac{2}{5}} \Gamma\left(\frac{2}{5}\right)}{25 \dot{z}_{0}^{\frac{6}{5}} \left(4 M k_{hz} + 4 k_{hz} m\right)^{\frac{2}{5}} \Gamma\left(\frac{9}{10}\right)} */
+double symimpact_closed_forms_hertz_contact_duration_d_zdot0(double m, double M, double k_hz, double zdot0)
+{
+    const double _x0 = 4*k_hz;
+    return -0.33211304010212017*pow(5, 2.0/5.0)*sqrt(3.141592653589793)*pow(M, 2.0/5.0)*pow(m, 2.0/5.0)/(pow(zdot0, 6.0/5.0)*pow(M*_x0 + _x0*m, 2.0/5.0));
+}
+
+void symimpact_closed_forms_hertz_contact_duration_d_zdot0_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k_hz, const double *restrict zdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_closed_forms_hertz_contact_duration_d_zdot0(m[i], M[i], k_hz[i], zdot0[i]);
+    }
+}
+
+/* Eq. 35: \partial T_{CD}^{(Linear)} / \partial m = \frac{\pi \left(- \frac{k_{1}}{2 M m} + \frac{k_{1} \left(M + m\right)}{2 M m^{2}} + \frac{c_{1}^{2} \left(2 M + 2 m\right)}{8 M^{2} m^{2}} - \frac{c_{1}^{2} \left(M + m\right)^{2}}{4 M^{2} m^{3}}\right)}{\left(\frac{k_{1} \left(M + m\right)}{M m} - \frac{c_{1}^{2} \left(M + m\right)^{2}}{4 M^{2} m^{2}}\right)^{\frac{3}{2}}} */
+double symimpact_closed_forms_linear_contact_duration_d_impact_mass(double m, double M, double k1, double c1)
+{
+    const double _x0 = M + m;
+    const double _x1 = 1.0/M;
+    const double _x2 = _x1*k1/m;
+    const double _x3 = pow(c1, 2);
+    const double _x4 = pow(M, -2);
+    const double _x5 = pow(m, -2);
+    const double _x6 = (1.0/4.0)*pow(_x0, 2);
+    return 3.141592653589793*((1.0/2.0)*_x0*_x1*_x5*k1 - 1.0/2.0*_x2 + (1.0/8.0)*_x3*_x4*_x5*(2*M + 2*m) - _x3*_x4*_x6/pow(m, 3))/pow(_x0*_x2 - _x3*_x4*_x5*_x6, 3.0/2.0);
+}
+
+void symimpact_closed_forms_linear_contact_duration_d_impact_mass_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k1, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_closed_forms_linear_contact_duration_d_impact_mass(m[i], M[i], k1[i], c1[i]);
+    }
+}
+
+/* Eq. 35: \partial T_{CD}^{(Linear)} / \partial M = \frac{\pi \left(- \frac{k_{1}}{2 M m} + \frac{c_{1}^{2} \left(2 M + 2 m\right)}{8 M^{2} m^{2}} + \frac{k_{1} \left(M + m\right)}{2 M^{2} m} - \frac{c_{1}^{2} \left(M + m\right)^{2}}{4 M^{3} m^{2}}\right)}{\left(\frac{k_{1} \left(M + m\right)}{M m} - \frac{c_{1}^{2} \left(M + m\right)^{2}}{4 M^{2} m^{2}}\right)^{\frac{3}{2}}} */
+double symimpact_closed_forms_linear_contact_duration_d_main_mass(double m, double M, double k1, double c1)
+{
+    const double _x0 = M + m;
+    const double _x1 = 1.0/m;
+    const double _x2 = _x1*k1/M;
+    const double _x3 = pow(c1, 2);
+    const double _x4 = pow(M, -2);
+    const double _x5 = pow(m, -2);
+    const double _x6 = (1.0/4.0)*pow(_x0, 2);
+    return 3.141592653589793*((1.0/2.0)*_x0*_x1*_x4*k1 - 1.0/2.0*_x2 + (1.0/8.0)*_x3*_x4*_x5*(2*M + 2*m) - _x3*_x5*_x6/pow(M, 3))/pow(_x0*_x2 - _x3*_x4*_x5*_x6, 3.0/2.0);
+}
+
+void symimpact_closed_forms_linear_contact_duration_d_main_mass_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k1, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_closed_forms_linear_contact_duration_d_main_mass(m[i], M[i], k1[i], c1[i]);
+    }
+}
+
+/* Eq. 35: \partial T_{CD}^{(Linear)} / \partial k_{1} = - \frac{\pi \left(M + m\right)}{2 M m \left(\frac{k_{1} \left(M + m\right)}{M m} - \frac{c_{1}^{2} \left(M + m\right)^{2}}{4 M^{2} m^{2}}\right)^{\frac{3}{2}}} */
+double symimpact_closed_forms_linear_contact_duration_d_k1(double m, double M, double k1, double c1)
+{
+    const double _x0 = M + m;
+    const double _x1 = _x0/(M*m);
+    return -1.0/2.0*3.141592653589793*_x1/pow(_x1*k1 - 1.0/4.0*pow(_x0, 2)*pow(c1, 2)/(pow(M, 2)*pow(m, 2)), 3.0/2.0);
+}
+
+void symimpact_closed_forms_linear_contact_duration_d_k1_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k1, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_closed_forms_linear_contact_duration_d_k1(m[i], M[i], k1[i], c1[i]);
+    }
+}
+
+/* Eq. 35: \partial T_{CD}^{(Linear)} / \partial c_{1} = \frac{\pi c_{1} \left(M + m\right)^{2}}{4 M^{2} m^{2} \left(\frac{k_{1} \left(M + m\right)}{M m} - \frac{c_{1}^{2} \left(M + m\right)^{2}}{4 M^{2} m^{2}}\right)^{\frac{3}{2}}} */
+double symimpact_closed_forms_linear_contact_duration_d_c1(double m, double M, double k1, double c1)
+{
+    const double _x0 = M + m;
+    const double _x1 = (1.0/4.0)*pow(_x0, 2)/(pow(M, 2)*pow(m, 2));
+    return 3.141592653589793*_x1*c1/pow(-_x1*pow(c1, 2) + _x0*k1/(M*m), 3.0/2.0);
+}
+
+void symimpact_closed_forms_linear_contact_duration_d_c1_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k1, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_closed_forms_linear_contact_duration_d_c1(m[i], M[i], k1[i], c1[i]);
+    }
+}
+
 /* ---- free_flight: Free flight between impacts (paper Eq. 7) ---- */
 
 /* Eq. 7: x(t) = \left(x_{0} \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C x_{0}}{2 M} + \dot{x}_{0}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}} */
@@ -898,6 +1042,486 @@ void symimpact_forced_flight_forced_velocity_batch(size_t n, const double *restr
     }
 }
 
+/* Eq. F1: \partial x(t) / \partial t = \begin{cases} \frac{F_{0} \Omega^{2} t \cos{\left(\Omega t + \phi \right)} + F_{0} \Omega \sin{\left(\Omega t + \phi \right)} + K \left(\Omega^{2} X_{b} t \cos{\left(\Omega t + \phi \right)} + \Omega X_{b} \sin{\left(\Omega t + \phi \right)} - 2 \Omega x_{0} \sin{\left(\Omega t \right)}\right) - \Omega \left(F_{0} \sin{\left(\phi \right)} + K X_{b} \sin{\left(\phi \right)} - 2 M \Omega \dot{x}_{0}\right) \cos{\left(\Omega t \right)}}{2 K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\- \frac{C \left(\left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}}}{2 M} - \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \left(\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_displacement_d_t(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    const double _x0 = Omega*t;
+    const double _x1 = _x0 + phi;
+    const double _x2 = Omega*sin(_x1);
+    const double _x3 = pow(Omega, 2);
+    const double _x4 = cos(_x1);
+    const double _x5 = _x3*_x4*t;
+    const double _x6 = sin(phi);
+    const double _x7 = K*X_b;
+    const double _x8 = 2*Omega;
+    const double _x9 = M*_x3;
+    const double _x10 = pow(C, 2);
+    const double _x11 = _x10*_x3;
+    const double _x12 = K - _x9;
+    const double _x13 = 1.0/(_x11 + pow(_x12, 2));
+    const double _x14 = F0 + _x7;
+    const double _x15 = _x13*(X_b*_x11 + _x12*_x14);
+    const double _x16 = -C*Omega*X_b*_x12 + C*Omega*_x14;
+    const double _x17 = 1.0/M;
+    const double _x18 = (1.0/2.0)*C*_x17;
+    const double _x19 = exp(-_x18*t);
+    const double _x20 = sqrt(K*_x17 - 1.0/4.0*_x10/pow(M, 2));
+    const double _x21 = _x20*t;
+    const double _x22 = sin(_x21);
+    const double _x23 = _x13*_x16;
+    const double _x24 = cos(phi);
+    const double _x25 = -_x15*_x24 - _x23*_x6 + x0;
+    const double _x26 = cos(_x21);
+    const double _x27 = Omega*_x15*_x6 - Omega*_x23*_x24 + _x18*_x25 + xdot0;
+    return ((C == 0 && K == _x9) ? (
+   (1.0/2.0)*(F0*_x2 + F0*_x5 + K*(X_b*_x2 + X_b*_x5 - _x8*x0*sin(_x0)) - Omega*(F0*_x6 - M*_x8*xdot0 + _x6*_x7)*cos(_x0))/K
+)
+: (
+   Omega*_x13*_x16*_x4 - _x15*_x2 - _x18*_x19*(_x25*_x26 + _x22*_x27/_x20) + _x19*(-_x20*_x22*_x25 + _x26*_x27)
+));
+}
+
+void symimpact_forced_flight_forced_displacement_d_t_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_displacement_d_t(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial x(t) / \partial x_{0} = \begin{cases} \cos{\left(\Omega t \right)} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\\left(\frac{C \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_displacement_d_x0(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)F0;
+    (void)X_b;
+    (void)phi;
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = 1.0/M;
+    const double _x1 = (1.0/2.0)*C*_x0;
+    const double _x2 = sqrt(-1.0/4.0*pow(C, 2)/pow(M, 2) + K*_x0);
+    const double _x3 = _x2*t;
+    return ((C == 0 && K == M*pow(Omega, 2)) ? (
+   cos(Omega*t)
+)
+: (
+   (_x1*sin(_x3)/_x2 + cos(_x3))*exp(-_x1*t)
+));
+}
+
+void symimpact_forced_flight_forced_displacement_d_x0_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_displacement_d_x0(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial x(t) / \partial \dot{x}_{0} = \begin{cases} \frac{M \Omega \sin{\left(\Omega t \right)}}{K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\\frac{e^{- \frac{C t}{2 M}} \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_displacement_d_xdot0(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)F0;
+    (void)X_b;
+    (void)phi;
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = 1.0/M;
+    const double _x1 = sqrt(-1.0/4.0*pow(C, 2)/pow(M, 2) + K*_x0);
+    return ((C == 0 && K == M*pow(Omega, 2)) ? (
+   M*Omega*sin(Omega*t)/K
+)
+: (
+   exp(-1.0/2.0*C*_x0*t)*sin(_x1*t)/_x1
+));
+}
+
+void symimpact_forced_flight_forced_displacement_d_xdot0_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_displacement_d_xdot0(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial x(t) / \partial F_{0} = \begin{cases} \frac{\Omega t \sin{\left(\Omega t + \phi \right)} - \sin{\left(\phi \right)} \sin{\left(\Omega t \right)}}{2 K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\\frac{C \Omega \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(K - M \Omega^{2}\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(\left(- \frac{C \Omega \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(K - M \Omega^{2}\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(- \frac{C \Omega^{2} \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{C \left(- \frac{C \Omega \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(K - M \Omega^{2}\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(K - M \Omega^{2}\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_displacement_d_F0(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)F0;
+    (void)X_b;
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = sin(phi);
+    const double _x1 = Omega*t;
+    const double _x2 = _x1 + phi;
+    const double _x3 = sin(_x2);
+    const double _x4 = pow(Omega, 2);
+    const double _x5 = M*_x4;
+    const double _x6 = pow(C, 2);
+    const double _x7 = K - _x5;
+    const double _x8 = 1.0/(_x4*_x6 + pow(_x7, 2));
+    const double _x9 = C*_x8;
+    const double _x10 = _x7*_x8;
+    const double _x11 = 1.0/M;
+    const double _x12 = (1.0/2.0)*C*_x11;
+    const double _x13 = sqrt(K*_x11 - 1.0/4.0*_x6/pow(M, 2));
+    const double _x14 = _x13*t;
+    const double _x15 = Omega*_x0;
+    const double _x16 = cos(phi);
+    const double _x17 = -_x10*_x16 - _x15*_x9;
+    return ((C == 0 && K == _x5) ? (
+   (1.0/2.0)*(-_x0*sin(_x1) + _x1*_x3)/K
+)
+: (
+   Omega*_x3*_x9 + _x10*cos(_x2) + (_x17*cos(_x14) + (_x10*_x15 + _x12*_x17 - _x16*_x4*_x9)*sin(_x14)/_x13)*exp(-_x12*t)
+));
+}
+
+void symimpact_forced_flight_forced_displacement_d_F0_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_displacement_d_F0(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial x(t) / \partial X_{b} = \begin{cases} \frac{K \Omega t \sin{\left(\Omega t + \phi \right)} - K \sin{\left(\phi \right)} \sin{\left(\Omega t \right)}}{2 K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\\frac{\left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(\left(- \frac{\left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(- \frac{\left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}} + \frac{\left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_displacement_d_X_b(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)F0;
+    (void)X_b;
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = sin(phi);
+    const double _x1 = Omega*t;
+    const double _x2 = _x1 + phi;
+    const double _x3 = sin(_x2);
+    const double _x4 = pow(Omega, 2);
+    const double _x5 = M*_x4;
+    const double _x6 = pow(C, 2);
+    const double _x7 = _x4*_x6;
+    const double _x8 = K - _x5;
+    const double _x9 = 1.0/(_x7 + pow(_x8, 2));
+    const double _x10 = C*Omega;
+    const double _x11 = _x9*(K*_x10 - _x10*_x8);
+    const double _x12 = _x9*(K*_x8 + _x7);
+    const double _x13 = 1.0/M;
+    const double _x14 = (1.0/2.0)*C*_x13;
+    const double _x15 = sqrt(K*_x13 - 1.0/4.0*_x6/pow(M, 2));
+    const double _x16 = _x15*t;
+    const double _x17 = cos(phi);
+    const double _x18 = -_x0*_x11 - _x12*_x17;
+    return ((C == 0 && K == _x5) ? (
+   (1.0/2.0)*(-K*_x0*sin(_x1) + K*_x1*_x3)/K
+)
+: (
+   _x11*_x3 + _x12*cos(_x2) + (_x18*cos(_x16) + (Omega*_x0*_x12 - Omega*_x11*_x17 + _x14*_x18)*sin(_x16)/_x15)*exp(-_x14*t)
+));
+}
+
+void symimpact_forced_flight_forced_displacement_d_X_b_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_displacement_d_X_b(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial x(t) / \partial \phi = \begin{cases} \frac{F_{0} \Omega t \cos{\left(\Omega t + \phi \right)} + K \Omega X_{b} t \cos{\left(\Omega t + \phi \right)} - \left(F_{0} \cos{\left(\phi \right)} + K X_{b} \cos{\left(\phi \right)}\right) \sin{\left(\Omega t \right)}}{2 K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\\left(\left(\frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(\frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_displacement_d_phi(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = Omega*t;
+    const double _x1 = _x0 + phi;
+    const double _x2 = cos(_x1);
+    const double _x3 = _x0*_x2;
+    const double _x4 = K*X_b;
+    const double _x5 = cos(phi);
+    const double _x6 = pow(Omega, 2);
+    const double _x7 = M*_x6;
+    const double _x8 = pow(C, 2);
+    const double _x9 = _x6*_x8;
+    const double _x10 = K - _x7;
+    const double _x11 = 1.0/(pow(_x10, 2) + _x9);
+    const double _x12 = F0 + _x4;
+    const double _x13 = _x11*(-C*Omega*X_b*_x10 + C*Omega*_x12);
+    const double _x14 = _x11*(X_b*_x9 + _x10*_x12);
+    const double _x15 = 1.0/M;
+    const double _x16 = (1.0/2.0)*C*_x15;
+    const double _x17 = sqrt(K*_x15 - 1.0/4.0*_x8/pow(M, 2));
+    const double _x18 = _x17*t;
+    const double _x19 = sin(phi);
+    const double _x20 = -_x13*_x5 + _x14*_x19;
+    return ((C == 0 && K == _x7) ? (
+   (1.0/2.0)*(F0*_x3 + _x3*_x4 - (F0*_x5 + _x4*_x5)*sin(_x0))/K
+)
+: (
+   _x13*_x2 - _x14*sin(_x1) + (_x20*cos(_x18) + (Omega*_x13*_x19 + Omega*_x14*_x5 + _x16*_x20)*sin(_x18)/_x17)*exp(-_x16*t)
+));
+}
+
+void symimpact_forced_flight_forced_displacement_d_phi_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_displacement_d_phi(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial \dot{x}(t) / \partial t = \begin{cases} \frac{- F_{0} \Omega^{3} t \sin{\left(\Omega t + \phi \right)} + 2 F_{0} \Omega^{2} \cos{\left(\Omega t + \phi \right)} + K \left(- \Omega^{3} X_{b} t \sin{\left(\Omega t + \phi \right)} + 2 \Omega^{2} X_{b} \cos{\left(\Omega t + \phi \right)} - 2 \Omega^{2} x_{0} \cos{\left(\Omega t \right)}\right) + \Omega^{2} \left(F_{0} \sin{\left(\phi \right)} + K X_{b} \sin{\left(\phi \right)} - 2 M \Omega \dot{x}_{0}\right) \sin{\left(\Omega t \right)}}{2 K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\\frac{C^{2} \left(\left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}}}{4 M^{2}} - \frac{C \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \left(\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}}}{M} - \frac{\Omega^{2} \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega^{2} \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} - \left(- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}\right) \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_velocity_d_t(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    const double _x0 = Omega*t;
+    const double _x1 = _x0 + phi;
+    const double _x2 = cos(_x1);
+    const double _x3 = pow(Omega, 2);
+    const double _x4 = 2*_x3;
+    const double _x5 = sin(_x1);
+    const double _x6 = pow(Omega, 3)*_x5*t;
+    const double _x7 = sin(phi);
+    const double _x8 = K*X_b;
+    const double _x9 = M*_x3;
+    const double _x10 = pow(C, 2);
+    const double _x11 = _x10*_x3;
+    const double _x12 = K - _x9;
+    const double _x13 = 1.0/(_x11 + pow(_x12, 2));
+    const double _x14 = F0 + _x8;
+    const double _x15 = _x13*(-C*Omega*X_b*_x12 + C*Omega*_x14);
+    const double _x16 = _x13*(X_b*_x11 + _x12*_x14);
+    const double _x17 = 1.0/M;
+    const double _x18 = C*_x17;
+    const double _x19 = (1.0/2.0)*_x18;
+    const double _x20 = exp(-_x19*t);
+    const double _x21 = cos(phi);
+    const double _x22 = -_x15*_x7 - _x16*_x21 + x0;
+    const double _x23 = pow(M, -2);
+    const double _x24 = K*_x17 - 1.0/4.0*_x10*_x23;
+    const double _x25 = sqrt(_x24);
+    const double _x26 = _x25*t;
+    const double _x27 = sin(_x26);
+    const double _x28 = _x25*_x27;
+    const double _x29 = cos(_x26);
+    const double _x30 = -Omega*_x15*_x21 + Omega*_x16*_x7 + _x19*_x22 + xdot0;
+    const double _x31 = _x22*_x29;
+    return ((C == 0 && K == _x9) ? (
+   (1.0/2.0)*(F0*_x2*_x4 - F0*_x6 + K*(2*X_b*_x2*_x3 - X_b*_x6 - _x4*x0*cos(_x0)) + _x3*(F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8)*sin(_x0))/K
+)
+: (
+   (1.0/4.0)*_x10*_x20*_x23*(_x31 + _x27*_x30/_x25) - _x15*_x3*_x5 - _x16*_x2*_x3 - _x18*_x20*(-_x22*_x28 + _x29*_x30) + _x20*(-_x24*_x31 - _x28*_x30)
+));
+}
+
+void symimpact_forced_flight_forced_velocity_d_t_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_velocity_d_t(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial \dot{x}(t) / \partial x_{0} = \begin{cases} - \Omega \sin{\left(\Omega t \right)} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\- \frac{C \left(\frac{C \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}}}{2 M} + \left(\frac{C \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_velocity_d_x0(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)F0;
+    (void)X_b;
+    (void)phi;
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = 1.0/M;
+    const double _x1 = (1.0/2.0)*C*_x0;
+    const double _x2 = exp(-_x1*t);
+    const double _x3 = sqrt(-1.0/4.0*pow(C, 2)/pow(M, 2) + K*_x0);
+    const double _x4 = _x3*t;
+    const double _x5 = cos(_x4);
+    const double _x6 = sin(_x4);
+    return ((C == 0 && K == M*pow(Omega, 2)) ? (
+   -Omega*sin(Omega*t)
+)
+: (
+   -_x1*_x2*(_x1*_x6/_x3 + _x5) + _x2*(_x1*_x5 - _x3*_x6)
+));
+}
+
+void symimpact_forced_flight_forced_velocity_d_x0_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_velocity_d_x0(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial \dot{x}(t) / \partial \dot{x}_{0} = \begin{cases} \frac{M \Omega^{2} \cos{\left(\Omega t \right)}}{K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\- \frac{C e^{- \frac{C t}{2 M}} \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{C t}{2 M}} \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_velocity_d_xdot0(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)F0;
+    (void)X_b;
+    (void)phi;
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = M*pow(Omega, 2);
+    const double _x1 = 1.0/M;
+    const double _x2 = (1.0/2.0)*C*_x1;
+    const double _x3 = exp(-_x2*t);
+    const double _x4 = sqrt(-1.0/4.0*pow(C, 2)/pow(M, 2) + K*_x1);
+    const double _x5 = _x4*t;
+    return ((C == 0 && K == _x0) ? (
+   _x0*cos(Omega*t)/K
+)
+: (
+   -_x2*_x3*sin(_x5)/_x4 + _x3*cos(_x5)
+));
+}
+
+void symimpact_forced_flight_forced_velocity_d_xdot0_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_velocity_d_xdot0(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial \dot{x}(t) / \partial F_{0} = \begin{cases} \frac{\Omega^{2} t \cos{\left(\Omega t + \phi \right)} - \Omega \sin{\left(\phi \right)} \cos{\left(\Omega t \right)} + \Omega \sin{\left(\Omega t + \phi \right)}}{2 K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\\frac{C \Omega^{2} \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{C \left(\left(- \frac{C \Omega \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(K - M \Omega^{2}\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(- \frac{C \Omega^{2} \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{C \left(- \frac{C \Omega \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(K - M \Omega^{2}\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(K - M \Omega^{2}\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}}}{2 M} - \frac{\Omega \left(K - M \Omega^{2}\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(- \frac{C \Omega \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(K - M \Omega^{2}\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \left(- \frac{C \Omega^{2} \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{C \left(- \frac{C \Omega \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(K - M \Omega^{2}\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(K - M \Omega^{2}\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_velocity_d_F0(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)F0;
+    (void)X_b;
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = Omega*t;
+    const double _x1 = _x0 + phi;
+    const double _x2 = Omega*sin(_x1);
+    const double _x3 = Omega*sin(phi);
+    const double _x4 = pow(Omega, 2);
+    const double _x5 = _x4*cos(_x1);
+    const double _x6 = M*_x4;
+    const double _x7 = pow(C, 2);
+    const double _x8 = K - _x6;
+    const double _x9 = 1.0/(_x4*_x7 + pow(_x8, 2));
+    const double _x10 = C*_x9;
+    const double _x11 = _x8*_x9;
+    const double _x12 = 1.0/M;
+    const double _x13 = (1.0/2.0)*C*_x12;
+    const double _x14 = exp(-_x13*t);
+    const double _x15 = sqrt(K*_x12 - 1.0/4.0*_x7/pow(M, 2));
+    const double _x16 = _x15*t;
+    const double _x17 = sin(_x16);
+    const double _x18 = cos(phi);
+    const double _x19 = -_x10*_x3 - _x11*_x18;
+    const double _x20 = cos(_x16);
+    const double _x21 = -_x10*_x18*_x4 + _x11*_x3 + _x13*_x19;
+    return ((C == 0 && K == _x6) ? (
+   (1.0/2.0)*(_x2 - _x3*cos(_x0) + _x5*t)/K
+)
+: (
+   _x10*_x5 - _x11*_x2 - _x13*_x14*(_x19*_x20 + _x17*_x21/_x15) + _x14*(-_x15*_x17*_x19 + _x20*_x21)
+));
+}
+
+void symimpact_forced_flight_forced_velocity_d_F0_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_velocity_d_F0(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial \dot{x}(t) / \partial X_{b} = \begin{cases} \frac{- K \Omega \sin{\left(\phi \right)} \cos{\left(\Omega t \right)} + K \left(\Omega^{2} t \cos{\left(\Omega t + \phi \right)} + \Omega \sin{\left(\Omega t + \phi \right)}\right)}{2 K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\- \frac{C \left(\left(- \frac{\left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(- \frac{\left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}}}{2 M} - \frac{\Omega \left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\Omega \left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(- \frac{\left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \left(\frac{C \left(- \frac{\left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} + K \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(C K \Omega - C \Omega \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_velocity_d_X_b(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)F0;
+    (void)X_b;
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = Omega*t;
+    const double _x1 = sin(phi);
+    const double _x2 = Omega*_x1;
+    const double _x3 = _x0 + phi;
+    const double _x4 = Omega*sin(_x3);
+    const double _x5 = pow(Omega, 2);
+    const double _x6 = cos(_x3);
+    const double _x7 = M*_x5;
+    const double _x8 = pow(C, 2);
+    const double _x9 = _x5*_x8;
+    const double _x10 = K - _x7;
+    const double _x11 = 1.0/(pow(_x10, 2) + _x9);
+    const double _x12 = _x11*(K*_x10 + _x9);
+    const double _x13 = C*Omega;
+    const double _x14 = K*_x13 - _x10*_x13;
+    const double _x15 = 1.0/M;
+    const double _x16 = (1.0/2.0)*C*_x15;
+    const double _x17 = exp(-_x16*t);
+    const double _x18 = sqrt(K*_x15 - 1.0/4.0*_x8/pow(M, 2));
+    const double _x19 = _x18*t;
+    const double _x20 = sin(_x19);
+    const double _x21 = _x11*_x14;
+    const double _x22 = cos(phi);
+    const double _x23 = -_x1*_x21 - _x12*_x22;
+    const double _x24 = cos(_x19);
+    const double _x25 = -Omega*_x21*_x22 + _x12*_x2 + _x16*_x23;
+    return ((C == 0 && K == _x7) ? (
+   (1.0/2.0)*(-K*_x2*cos(_x0) + K*(_x4 + _x5*_x6*t))/K
+)
+: (
+   Omega*_x11*_x14*_x6 - _x12*_x4 - _x16*_x17*(_x23*_x24 + _x20*_x25/_x18) + _x17*(-_x18*_x20*_x23 + _x24*_x25)
+));
+}
+
+void symimpact_forced_flight_forced_velocity_d_X_b_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_velocity_d_X_b(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial \dot{x}(t) / \partial \phi = \begin{cases} \frac{- F_{0} \Omega^{2} t \sin{\left(\Omega t + \phi \right)} + F_{0} \Omega \cos{\left(\Omega t + \phi \right)} + K \left(- \Omega^{2} X_{b} t \sin{\left(\Omega t + \phi \right)} + \Omega X_{b} \cos{\left(\Omega t + \phi \right)}\right) - \Omega \left(F_{0} \cos{\left(\phi \right)} + K X_{b} \cos{\left(\phi \right)}\right) \cos{\left(\Omega t \right)}}{2 K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\- \frac{C \left(\left(\frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(\frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}}}{2 M} - \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(\frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \left(\frac{C \left(\frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_velocity_d_phi(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = Omega*t;
+    const double _x1 = _x0 + phi;
+    const double _x2 = cos(_x1);
+    const double _x3 = pow(Omega, 2);
+    const double _x4 = sin(_x1);
+    const double _x5 = _x3*_x4*t;
+    const double _x6 = cos(phi);
+    const double _x7 = K*X_b;
+    const double _x8 = M*_x3;
+    const double _x9 = pow(C, 2);
+    const double _x10 = _x3*_x9;
+    const double _x11 = K - _x8;
+    const double _x12 = 1.0/(_x10 + pow(_x11, 2));
+    const double _x13 = F0 + _x7;
+    const double _x14 = _x12*(-C*Omega*X_b*_x11 + C*Omega*_x13);
+    const double _x15 = Omega*_x14;
+    const double _x16 = _x12*(X_b*_x10 + _x11*_x13);
+    const double _x17 = 1.0/M;
+    const double _x18 = (1.0/2.0)*C*_x17;
+    const double _x19 = exp(-_x18*t);
+    const double _x20 = sqrt(K*_x17 - 1.0/4.0*_x9/pow(M, 2));
+    const double _x21 = _x20*t;
+    const double _x22 = sin(_x21);
+    const double _x23 = sin(phi);
+    const double _x24 = -_x14*_x6 + _x16*_x23;
+    const double _x25 = cos(_x21);
+    const double _x26 = Omega*_x16*_x6 + _x15*_x23 + _x18*_x24;
+    return ((C == 0 && K == _x8) ? (
+   (1.0/2.0)*(F0*Omega*_x2 - F0*_x5 + K*(Omega*X_b*_x2 - X_b*_x5) - Omega*(F0*_x6 + _x6*_x7)*cos(_x0))/K
+)
+: (
+   -Omega*_x16*_x2 - _x15*_x4 - _x18*_x19*(_x24*_x25 + _x22*_x26/_x20) + _x19*(-_x20*_x22*_x24 + _x25*_x26)
+));
+}
+
+void symimpact_forced_flight_forced_velocity_d_phi_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_velocity_d_phi(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
 /* Eq. F1: A = \frac{C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} */
 double symimpact_forced_flight_steady_cosine(double M, double K, double C, double F0, double X_b, double Omega)
 {
@@ -974,6 +1598,100 @@ void symimpact_rigid_impact_impact_velocity_after_batch(size_t n, const double *
     size_t i;
     for (i = 0; i < n; ++i) {
         out[i] = symimpact_rigid_impact_impact_velocity_after(m[i], M[i], e[i], xdot_minus[i], ydot_minus[i]);
+    }
+}
+
+/* Eq. F2: \partial \dot{x}^+ / \partial e = - \frac{m \left(\dot{x}_{minus} - \dot{y}_{minus}\right)}{M + m} */
+double symimpact_rigid_impact_main_velocity_after_d_e(double m, double M, double e, double xdot_minus, double ydot_minus)
+{
+    (void)e;
+    return -m*(xdot_minus - ydot_minus)/(M + m);
+}
+
+void symimpact_rigid_impact_main_velocity_after_d_e_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict e, const double *restrict xdot_minus, const double *restrict ydot_minus, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_rigid_impact_main_velocity_after_d_e(m[i], M[i], e[i], xdot_minus[i], ydot_minus[i]);
+    }
+}
+
+/* Eq. F2: \partial \dot{x}^+ / \partial \dot{x}_{minus} = - \frac{m \left(e + 1\right)}{M + m} + 1 */
+double symimpact_rigid_impact_main_velocity_after_d_xdot_minus(double m, double M, double e, double xdot_minus, double ydot_minus)
+{
+    (void)xdot_minus;
+    (void)ydot_minus;
+    return -m*(e + 1)/(M + m) + 1;
+}
+
+void symimpact_rigid_impact_main_velocity_after_d_xdot_minus_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict e, const double *restrict xdot_minus, const double *restrict ydot_minus, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_rigid_impact_main_velocity_after_d_xdot_minus(m[i], M[i], e[i], xdot_minus[i], ydot_minus[i]);
+    }
+}
+
+/* Eq. F2: \partial \dot{x}^+ / \partial \dot{y}_{minus} = \frac{m \left(e + 1\right)}{M + m} */
+double symimpact_rigid_impact_main_velocity_after_d_ydot_minus(double m, double M, double e, double xdot_minus, double ydot_minus)
+{
+    (void)xdot_minus;
+    (void)ydot_minus;
+    return m*(e + 1)/(M + m);
+}
+
+void symimpact_rigid_impact_main_velocity_after_d_ydot_minus_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict e, const double *restrict xdot_minus, const double *restrict ydot_minus, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_rigid_impact_main_velocity_after_d_ydot_minus(m[i], M[i], e[i], xdot_minus[i], ydot_minus[i]);
+    }
+}
+
+/* Eq. F2: \partial \dot{y}^+ / \partial e = \frac{M \left(\dot{x}_{minus} - \dot{y}_{minus}\right)}{M + m} */
+double symimpact_rigid_impact_impact_velocity_after_d_e(double m, double M, double e, double xdot_minus, double ydot_minus)
+{
+    (void)e;
+    return M*(xdot_minus - ydot_minus)/(M + m);
+}
+
+void symimpact_rigid_impact_impact_velocity_after_d_e_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict e, const double *restrict xdot_minus, const double *restrict ydot_minus, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_rigid_impact_impact_velocity_after_d_e(m[i], M[i], e[i], xdot_minus[i], ydot_minus[i]);
+    }
+}
+
+/* Eq. F2: \partial \dot{y}^+ / \partial \dot{x}_{minus} = \frac{M \left(e + 1\right)}{M + m} */
+double symimpact_rigid_impact_impact_velocity_after_d_xdot_minus(double m, double M, double e, double xdot_minus, double ydot_minus)
+{
+    (void)xdot_minus;
+    (void)ydot_minus;
+    return M*(e + 1)/(M + m);
+}
+
+void symimpact_rigid_impact_impact_velocity_after_d_xdot_minus_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict e, const double *restrict xdot_minus, const double *restrict ydot_minus, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_rigid_impact_impact_velocity_after_d_xdot_minus(m[i], M[i], e[i], xdot_minus[i], ydot_minus[i]);
+    }
+}
+
+/* Eq. F2: \partial \dot{y}^+ / \partial \dot{y}_{minus} = - \frac{M \left(e + 1\right)}{M + m} + 1 */
+double symimpact_rigid_impact_impact_velocity_after_d_ydot_minus(double m, double M, double e, double xdot_minus, double ydot_minus)
+{
+    (void)xdot_minus;
+    (void)ydot_minus;
+    return -M*(e + 1)/(M + m) + 1;
+}
+
+void symimpact_rigid_impact_impact_velocity_after_d_ydot_minus_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict e, const double *restrict xdot_minus, const double *restrict ydot_minus, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_rigid_impact_impact_velocity_after_d_ydot_minus(m[i], M[i], e[i], xdot_minus[i], ydot_minus[i]);
     }
 }
 
@@ -1893,6 +2611,288 @@ void symimpact_slow_flow_clearance_for_response_batch(size_t n, const double *re
     size_t i;
     for (i = 0; i < n; ++i) {
         out[i] = symimpact_slow_flow_clearance_for_response(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
+    }
+}
+
+/* Eq. F5: \partial d / \partial M = \frac{2 \Omega^{2} \xi^{3} \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}} \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} */
+double symimpact_slow_flow_clearance_for_response_d_main_mass(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
+{
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(xi, 2);
+    const double _x2 = pow(3.141592653589793, -2);
+    const double _x3 = e - 1;
+    const double _x4 = e + 1;
+    const double _x5 = 4*_x2*pow(_x3, 2)/pow(_x4, 2);
+    const double _x6 = _x5 + 1;
+    const double _x7 = 1.0/_x6;
+    const double _x8 = sqrt(_x1*_x5 + _x1 - _x5) + 1;
+    const double _x9 = _x0*m;
+    const double _x10 = _x1*(K - M*_x0) - 8*_x2*_x7*_x8*_x9*(_x7*_x8 - 1);
+    return 2*_x0*_x10*pow(xi, 3)*sqrt(pow(C, 2)*pow(X_b, 2)*_x0 + pow(F0 + K*X_b, 2))/pow(pow(_x10, 2) + pow(C*Omega*_x1 - 16*_x3*pow(_x8, 2)*_x9/(pow(3.141592653589793, 3)*_x4*pow(_x6, 2)), 2), 3.0/2.0);
+}
+
+void symimpact_slow_flow_clearance_for_response_d_main_mass_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_slow_flow_clearance_for_response_d_main_mass(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
+    }
+}
+
+/* Eq. F5: \partial d / \partial K = \frac{2 X_{b} \xi \left(F_{0} + K X_{b}\right)}{\sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}} \sqrt{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}}} - \frac{2 \xi^{3} \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}} \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} */
+double symimpact_slow_flow_clearance_for_response_d_K(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
+{
+    const double _x0 = F0 + K*X_b;
+    const double _x1 = pow(Omega, 2);
+    const double _x2 = sqrt(pow(C, 2)*pow(X_b, 2)*_x1 + pow(_x0, 2));
+    const double _x3 = pow(xi, 2);
+    const double _x4 = e + 1;
+    const double _x5 = pow(3.141592653589793, -2);
+    const double _x6 = e - 1;
+    const double _x7 = 4*_x5*pow(_x6, 2)/pow(_x4, 2);
+    const double _x8 = sqrt(_x3*_x7 + _x3 - _x7) + 1;
+    const double _x9 = _x7 + 1;
+    const double _x10 = _x1*m;
+    const double _x11 = 1.0/_x9;
+    const double _x12 = -8*_x10*_x11*_x5*_x8*(_x11*_x8 - 1) + _x3*(K - M*_x1);
+    const double _x13 = pow(_x12, 2) + pow(C*Omega*_x3 - 16*_x10*_x6*pow(_x8, 2)/(pow(3.141592653589793, 3)*_x4*pow(_x9, 2)), 2);
+    return 2*X_b*_x0*xi/(sqrt(_x13)*_x2) - 2*_x12*_x2*pow(xi, 3)/pow(_x13, 3.0/2.0);
+}
+
+void symimpact_slow_flow_clearance_for_response_d_K_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_slow_flow_clearance_for_response_d_K(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
+    }
+}
+
+/* Eq. F5: \partial d / \partial C = \frac{2 C \Omega^{2} X_{b}^{2} \xi}{\sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}} \sqrt{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}}} - \frac{2 \Omega \xi^{3} \left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right) \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}}}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} */
+double symimpact_slow_flow_clearance_for_response_d_C(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
+{
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(X_b, 2)*_x0;
+    const double _x2 = sqrt(pow(C, 2)*_x1 + pow(F0 + K*X_b, 2));
+    const double _x3 = pow(xi, 2);
+    const double _x4 = e + 1;
+    const double _x5 = pow(3.141592653589793, -2);
+    const double _x6 = e - 1;
+    const double _x7 = 4*_x5*pow(_x6, 2)/pow(_x4, 2);
+    const double _x8 = sqrt(_x3*_x7 + _x3 - _x7) + 1;
+    const double _x9 = _x7 + 1;
+    const double _x10 = _x0*m;
+    const double _x11 = C*Omega*_x3 - 16*_x10*_x6*pow(_x8, 2)/(pow(3.141592653589793, 3)*_x4*pow(_x9, 2));
+    const double _x12 = 1.0/_x9;
+    const double _x13 = pow(_x11, 2) + pow(-8*_x10*_x12*_x5*_x8*(_x12*_x8 - 1) + _x3*(K - M*_x0), 2);
+    return 2*C*_x1*xi/(sqrt(_x13)*_x2) - 2*Omega*_x11*_x2*pow(xi, 3)/pow(_x13, 3.0/2.0);
+}
+
+void symimpact_slow_flow_clearance_for_response_d_C_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_slow_flow_clearance_for_response_d_C(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
+    }
+}
+
+/* Eq. F5: \partial d / \partial m = \frac{2 \xi \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}} \left(\frac{8 \Omega^{2} \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \frac{16 \Omega^{2} \left(e - 1\right) \left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} */
+double symimpact_slow_flow_clearance_for_response_d_impact_mass(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
+{
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(xi, 2);
+    const double _x2 = _x0*m;
+    const double _x3 = e + 1;
+    const double _x4 = pow(3.141592653589793, -2);
+    const double _x5 = e - 1;
+    const double _x6 = 4*_x4*pow(_x5, 2)/pow(_x3, 2);
+    const double _x7 = sqrt(_x1*_x6 + _x1 - _x6) + 1;
+    const double _x8 = _x6 + 1;
+    const double _x9 = 16*_x5*pow(_x7, 2)/(pow(3.141592653589793, 3)*_x3*pow(_x8, 2));
+    const double _x10 = C*Omega*_x1 - _x2*_x9;
+    const double _x11 = 1.0/_x8;
+    const double _x12 = 8*_x11*_x4*_x7*(_x11*_x7 - 1);
+    const double _x13 = _x1*(K - M*_x0) - _x12*_x2;
+    return 2*xi*sqrt(pow(C, 2)*pow(X_b, 2)*_x0 + pow(F0 + K*X_b, 2))*(_x0*_x10*_x9 + _x0*_x12*_x13)/pow(pow(_x10, 2) + pow(_x13, 2), 3.0/2.0);
+}
+
+void symimpact_slow_flow_clearance_for_response_d_impact_mass_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_slow_flow_clearance_for_response_d_impact_mass(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
+    }
+}
+
+/* Eq. F5: \partial d / \partial e = \frac{2 \xi \left(- \frac{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right) \left(- \frac{32 \Omega^{2} m \left(e - 1\right) \left(\frac{16 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{8 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{3}} - \frac{64 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right) \left(- \frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} + \frac{2 \xi^{2} \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}} + \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{2 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right)}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2} \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}} + \frac{32 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right)^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}} - \frac{32 \Omega^{2} m \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)}{2} - \frac{\left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right) \left(- \frac{16 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\frac{8 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{4 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}} - \frac{16 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(- \frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} + \frac{2 \xi^{2} \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}} + \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{2 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right) \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}} - \frac{16 \Omega^{2} m \left(\frac{\left(\frac{8 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{4 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}} + \frac{- \frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} + \frac{2 \xi^{2} \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}} + \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{2 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}}{\left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right) \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)}\right)}{2}\right) \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}}}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} */
+double symimpact_slow_flow_clearance_for_response_d_e(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
+{
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(xi, 2);
+    const double _x2 = e - 1;
+    const double _x3 = pow(3.141592653589793, -2);
+    const double _x4 = e + 1;
+    const double _x5 = pow(_x4, -2);
+    const double _x6 = _x3*_x5;
+    const double _x7 = pow(_x2, 2);
+    const double _x8 = 4*_x7;
+    const double _x9 = _x6*_x8;
+    const double _x10 = _x9 + 1;
+    const double _x11 = pow(_x10, -2);
+    const double _x12 = sqrt(_x1*_x9 + _x1 - _x9);
+    const double _x13 = _x12 + 1;
+    const double _x14 = pow(_x13, 2);
+    const double _x15 = pow(3.141592653589793, -3);
+    const double _x16 = _x0*m;
+    const double _x17 = _x15*_x16/_x4;
+    const double _x18 = _x11*_x14*_x17;
+    const double _x19 = C*Omega*_x1 - 16*_x18*_x2;
+    const double _x20 = 1.0/_x10;
+    const double _x21 = _x13*_x20 - 1;
+    const double _x22 = _x13*_x16*_x20*_x3;
+    const double _x23 = _x1*(K - M*_x0) - 8*_x21*_x22;
+    const double _x24 = pow(_x4, -3);
+    const double _x25 = _x24*_x3;
+    const double _x26 = _x25*_x7;
+    const double _x27 = 2*e - 2;
+    const double _x28 = _x27*_x6;
+    const double _x29 = (-_x1*_x25*_x8 + 2*_x1*_x27*_x3*_x5 + 4*_x24*_x3*_x7 - 2*_x28)/_x12;
+    const double _x30 = _x11*_x13;
+    const double _x31 = _x30*(8*_x26 - 4*_x28);
+    const double _x32 = 16*_x16*_x21*_x3;
+    const double _x33 = _x20*_x29;
+    return 2*xi*(-1.0/2.0*_x19*(32*_x0*_x11*_x14*_x15*_x2*_x5*m - 64*_x17*_x2*_x29*_x30 - 32*_x18 - 32*_x14*_x17*_x2*(16*_x26 - 8*_x28)/pow(_x10, 3)) - 1.0/2.0*_x23*(-16*_x22*(_x31 + _x33) - _x31*_x32 - _x32*_x33))*sqrt(pow(C, 2)*pow(X_b, 2)*_x0 + pow(F0 + K*X_b, 2))/pow(pow(_x19, 2) + pow(_x23, 2), 3.0/2.0);
+}
+
+void symimpact_slow_flow_clearance_for_response_d_e_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_slow_flow_clearance_for_response_d_e(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
+    }
+}
+
+/* Eq. F5: \partial d / \partial F_{0} = \frac{2 \xi \left(F_{0} + K X_{b}\right)}{\sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}} \sqrt{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}}} */
+double symimpact_slow_flow_clearance_for_response_d_F0(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
+{
+    const double _x0 = F0 + K*X_b;
+    const double _x1 = pow(Omega, 2);
+    const double _x2 = pow(xi, 2);
+    const double _x3 = e + 1;
+    const double _x4 = pow(3.141592653589793, -2);
+    const double _x5 = e - 1;
+    const double _x6 = 4*_x4*pow(_x5, 2)/pow(_x3, 2);
+    const double _x7 = sqrt(_x2*_x6 + _x2 - _x6) + 1;
+    const double _x8 = _x6 + 1;
+    const double _x9 = _x1*m;
+    const double _x10 = 1.0/_x8;
+    return 2*_x0*xi/(sqrt(pow(C, 2)*pow(X_b, 2)*_x1 + pow(_x0, 2))*sqrt(pow(C*Omega*_x2 - 16*_x5*pow(_x7, 2)*_x9/(pow(3.141592653589793, 3)*_x3*pow(_x8, 2)), 2) + pow(-8*_x10*_x4*_x7*_x9*(_x10*_x7 - 1) + _x2*(K - M*_x1), 2)));
+}
+
+void symimpact_slow_flow_clearance_for_response_d_F0_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_slow_flow_clearance_for_response_d_F0(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
+    }
+}
+
+/* Eq. F5: \partial d / \partial X_{b} = \frac{2 \xi \left(C^{2} \Omega^{2} X_{b} + K \left(F_{0} + K X_{b}\right)\right)}{\sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}} \sqrt{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}}} */
+double symimpact_slow_flow_clearance_for_response_d_X_b(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
+{
+    const double _x0 = F0 + K*X_b;
+    const double _x1 = pow(Omega, 2);
+    const double _x2 = pow(C, 2)*_x1;
+    const double _x3 = pow(xi, 2);
+    const double _x4 = e + 1;
+    const double _x5 = pow(3.141592653589793, -2);
+    const double _x6 = e - 1;
+    const double _x7 = 4*_x5*pow(_x6, 2)/pow(_x4, 2);
+    const double _x8 = sqrt(_x3*_x7 + _x3 - _x7) + 1;
+    const double _x9 = _x7 + 1;
+    const double _x10 = _x1*m;
+    const double _x11 = 1.0/_x9;
+    return 2*xi*(K*_x0 + X_b*_x2)/(sqrt(pow(X_b, 2)*_x2 + pow(_x0, 2))*sqrt(pow(C*Omega*_x3 - 16*_x10*_x6*pow(_x8, 2)/(pow(3.141592653589793, 3)*_x4*pow(_x9, 2)), 2) + pow(-8*_x10*_x11*_x5*_x8*(_x11*_x8 - 1) + _x3*(K - M*_x1), 2)));
+}
+
+void symimpact_slow_flow_clearance_for_response_d_X_b_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_slow_flow_clearance_for_response_d_X_b(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
+    }
+}
+
+/* Eq. F5: \partial d / \partial \Omega = \frac{2 C^{2} \Omega X_{b}^{2} \xi}{\sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}} \sqrt{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}}} + \frac{2 \xi \left(- \frac{\left(2 C \xi^{2} - \frac{64 \Omega m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right) \left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)}{2} - \frac{\left(- 4 M \Omega \xi^{2} - \frac{32 \Omega m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)}\right) \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)}{2}\right) \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}}}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} */
+double symimpact_slow_flow_clearance_for_response_d_Omega(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
+{
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(C, 2)*pow(X_b, 2);
+    const double _x2 = sqrt(_x0*_x1 + pow(F0 + K*X_b, 2));
+    const double _x3 = pow(xi, 2);
+    const double _x4 = C*_x3;
+    const double _x5 = _x0*m;
+    const double _x6 = e + 1;
+    const double _x7 = pow(3.141592653589793, -2);
+    const double _x8 = e - 1;
+    const double _x9 = 4*_x7*pow(_x8, 2)/pow(_x6, 2);
+    const double _x10 = sqrt(_x3*_x9 + _x3 - _x9) + 1;
+    const double _x11 = _x9 + 1;
+    const double _x12 = pow(_x10, 2)*_x8/(pow(3.141592653589793, 3)*pow(_x11, 2)*_x6);
+    const double _x13 = Omega*_x4 - 16*_x12*_x5;
+    const double _x14 = 1.0/_x11;
+    const double _x15 = _x10*_x14*_x7*(_x10*_x14 - 1);
+    const double _x16 = -8*_x15*_x5 + _x3*(K - M*_x0);
+    const double _x17 = pow(_x13, 2) + pow(_x16, 2);
+    const double _x18 = 2*xi;
+    const double _x19 = Omega*m;
+    return Omega*_x1*_x18/(sqrt(_x17)*_x2) + _x18*_x2*(-1.0/2.0*_x13*(-64*_x12*_x19 + 2*_x4) - 1.0/2.0*_x16*(-4*M*Omega*_x3 - 32*_x15*_x19))/pow(_x17, 3.0/2.0);
+}
+
+void symimpact_slow_flow_clearance_for_response_d_Omega_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_slow_flow_clearance_for_response_d_Omega(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
+    }
+}
+
+/* Eq. F5: \partial d / \partial \xi = \frac{2 \xi \left(- \frac{\left(4 C \Omega \xi - \frac{64 \Omega^{2} m \left(e - 1\right) \left(\frac{4 \xi \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2} \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}}\right) \left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)}{2} - \frac{\left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right) \left(- \frac{16 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\frac{4 \xi \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right) \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}} - \frac{16 \Omega^{2} m \left(\frac{4 \xi \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2} \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}} + 4 \xi \left(K - M \Omega^{2}\right)\right)}{2}\right) \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}}}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} + \frac{2 \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}}}{\sqrt{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}}} */
+double symimpact_slow_flow_clearance_for_response_d_xi(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
+{
+    const double _x0 = pow(xi, 2);
+    const double _x1 = C*Omega;
+    const double _x2 = pow(3.141592653589793, -2);
+    const double _x3 = e + 1;
+    const double _x4 = e - 1;
+    const double _x5 = _x2*pow(_x4, 2)/pow(_x3, 2);
+    const double _x6 = 4*_x5;
+    const double _x7 = sqrt(_x0*_x6 + _x0 - _x6);
+    const double _x8 = _x7 + 1;
+    const double _x9 = _x6 + 1;
+    const double _x10 = pow(_x9, -2);
+    const double _x11 = 16*_x10;
+    const double _x12 = pow(Omega, 2);
+    const double _x13 = _x12*m;
+    const double _x14 = _x13*_x4/(pow(3.141592653589793, 3)*_x3);
+    const double _x15 = _x0*_x1 - _x11*_x14*pow(_x8, 2);
+    const double _x16 = K - M*_x12;
+    const double _x17 = 1.0/_x9;
+    const double _x18 = _x13*_x2;
+    const double _x19 = _x18*(_x17*_x8 - 1);
+    const double _x20 = _x0*_x16 - 8*_x17*_x19*_x8;
+    const double _x21 = pow(_x15, 2) + pow(_x20, 2);
+    const double _x22 = 2*sqrt(pow(C, 2)*pow(X_b, 2)*_x12 + pow(F0 + K*X_b, 2));
+    const double _x23 = 4*xi;
+    const double _x24 = (_x23*_x5 + xi)/_x7;
+    const double _x25 = _x24*_x8;
+    return _x22/sqrt(_x21) + _x22*xi*(-1.0/2.0*_x15*(_x1*_x23 - 64*_x10*_x14*_x25) - 1.0/2.0*_x20*(-_x11*_x18*_x25 + 4*_x16*xi - 16*_x17*_x19*_x24))/pow(_x21, 3.0/2.0);
+}
+
+void symimpact_slow_flow_clearance_for_response_d_xi_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_slow_flow_clearance_for_response_d_xi(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i]);
     }
 }
 

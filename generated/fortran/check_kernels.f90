@@ -395,6 +395,78 @@ program check_kernels
 [0.0728757_dp, 0.395751_dp, 0.218627_dp])
     call check("closed_forms_linear_restitution", got, expected, scale)
 
+    ! closed_forms.hertz_contact_duration_d_impact_mass
+    expected = [5.153446524992846e-05_dp, 0.0006977758674392841_dp, 0.13030198693386175_dp]
+    scale = [0.0013204900920463203_dp, 0.0013983052410817774_dp, 0.3035495298897656_dp]
+    got = closed_forms_hertz_contact_duration_d_impact_mass([2.93383_dp, 0.0769866_dp, 1.0101_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[0.00382829_dp, 1.46558_dp, 0.0561068_dp])
+    call check("closed_forms_hertz_contact_duration_d_impact_mass", got, expected, scale)
+
+    ! closed_forms.hertz_contact_duration_d_main_mass
+    expected = [0.007189917841357623_dp, 2.7164153866971025e-09_dp, 0.003538550764729489_dp]
+    scale = [0.01559725684426171_dp, 2.758939033982669e-06_dp, 0.050022657551501044_dp]
+    got = closed_forms_hertz_contact_duration_d_main_mass([2.93383_dp, 0.0769866_dp, 1.0101_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[0.00382829_dp, 1.46558_dp, 0.0561068_dp])
+    call check("closed_forms_hertz_contact_duration_d_main_mass", got, expected, scale)
+
+    ! closed_forms.hertz_contact_duration_d_k_hz
+    expected = [-4.5975665132776225e-11_dp, -9.588782342253083e-15_dp, -0.00020498804640122438_dp]
+    scale = [9.195133026555245e-11_dp, 1.9177564684506166e-14_dp, 0.00040997609280244877_dp]
+    got = closed_forms_hertz_contact_duration_d_k_hz([2.93383_dp, 0.0769866_dp, 1.0101_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[0.00382829_dp, 1.46558_dp, 0.0561068_dp])
+    call check("closed_forms_hertz_contact_duration_d_k_hz", got, expected, scale)
+
+    ! closed_forms.hertz_contact_duration_d_zdot0
+    expected = [-0.25299111657869805_dp, -1.8363167870922495e-05_dp, -1.3662130977958653_dp]
+    scale = [0.5059822331573961_dp, 3.672633574184499e-05_dp, 2.7324261955917306_dp]
+    got = closed_forms_hertz_contact_duration_d_zdot0([2.93383_dp, 0.0769866_dp, 1.0101_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[0.00382829_dp, 1.46558_dp, 0.0561068_dp])
+    call check("closed_forms_hertz_contact_duration_d_zdot0", got, expected, scale)
+
+    ! closed_forms.linear_contact_duration_d_impact_mass
+    expected = [3.915503248612775e-05_dp, 0.0021638154739013604_dp, 0.09331181216020386_dp]
+    scale = [0.0010032865698384687_dp, 0.004336170270628969_dp, 0.21741630961415576_dp]
+    got = closed_forms_linear_contact_duration_d_impact_mass([2.93383_dp, 0.0769866_dp, 1.0101_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[260860.0_dp, 6.80481e+06_dp, 177.51_dp], &
+[0.0728757_dp, 0.395751_dp, 0.218627_dp])
+    call check("closed_forms_linear_contact_duration_d_impact_mass", got, expected, scale)
+
+    ! closed_forms.linear_contact_duration_d_main_mass
+    expected = [0.005462780399207461_dp, 8.42365281110899e-09_dp, 0.0025340257048066337_dp]
+    scale = [0.011850537785473271_dp, 8.55552196394022e-06_dp, 0.035832545348669385_dp]
+    got = closed_forms_linear_contact_duration_d_main_mass([2.93383_dp, 0.0769866_dp, 1.0101_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[260860.0_dp, 6.80481e+06_dp, 177.51_dp], &
+[0.0728757_dp, 0.395751_dp, 0.218627_dp])
+    call check("closed_forms_linear_contact_duration_d_main_mass", got, expected, scale)
+
+    ! closed_forms.linear_contact_duration_d_k1
+    expected = [-5.6418617583305524e-09_dp, -2.4528752901135204e-11_dp, -0.0006185775187455155_dp]
+    scale = [1.1283723516661105e-08_dp, 4.905750580227041e-11_dp, 0.001237155037491031_dp]
+    got = closed_forms_linear_contact_duration_d_k1([2.93383_dp, 0.0769866_dp, 1.0101_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[260860.0_dp, 6.80481e+06_dp, 177.51_dp], &
+[0.0728757_dp, 0.395751_dp, 0.218627_dp])
+    call check("closed_forms_linear_contact_duration_d_k1", got, expected, scale)
+
+    ! closed_forms.linear_contact_duration_d_c1
+    expected = [8.977338817540039e-10_dp, 6.316963942168118e-11_dp, 7.797440897580077e-05_dp]
+    scale = [1.7954677635080078e-09_dp, 1.2633927884336237e-10_dp, 0.00015594881795160154_dp]
+    got = closed_forms_linear_contact_duration_d_c1([2.93383_dp, 0.0769866_dp, 1.0101_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[260860.0_dp, 6.80481e+06_dp, 177.51_dp], &
+[0.0728757_dp, 0.395751_dp, 0.218627_dp])
+    call check("closed_forms_linear_contact_duration_d_c1", got, expected, scale)
+
     ! free_flight.main_mass_displacement
     expected = [0.002916059422279071_dp, 0.0033542119577836442_dp, -0.0015100236999920932_dp]
     scale = [0.008519636764358567_dp, 0.011299939259534748_dp, 0.08675038350351236_dp]
@@ -462,6 +534,186 @@ program check_kernels
 [0.77033_dp, -0.459341_dp, 0.310989_dp])
     call check("forced_flight_forced_velocity", got, expected, scale)
 
+    ! forced_flight.forced_displacement_d_t
+    expected = [-3.582469517580021_dp, 0.22535741998218997_dp, 0.30639423474236777_dp]
+    scale = [9.752201978378293_dp, 2.576120566630043_dp, 0.6470017238516398_dp]
+    got = forced_flight_forced_displacement_d_t([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_displacement_d_t", got, expected, scale)
+
+    ! forced_flight.forced_displacement_d_x0
+    expected = [0.2277967187579221_dp, -0.03630523276621419_dp, 0.9842293577643402_dp]
+    scale = [1.0793116850624607_dp, 1.0343308426353268_dp, 1.9709491315946521_dp]
+    got = forced_flight_forced_displacement_d_x0([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_displacement_d_x0", got, expected, scale)
+
+    ! forced_flight.forced_displacement_d_xdot0
+    expected = [-0.001867844218883491_dp, 0.007313775801781447_dp, 0.0014271484693960178_dp]
+    scale = [0.0038064797406801047_dp, 0.014632401698058854_dp, 0.2338624222836518_dp]
+    got = forced_flight_forced_displacement_d_xdot0([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_displacement_d_xdot0", got, expected, scale)
+
+    ! forced_flight.forced_displacement_d_F0
+    expected = [1.807631760683126e-05_dp, 1.753733706008945e-06_dp, -2.831399056020138e-07_dp]
+    scale = [5.85774429849897e-05_dp, 3.4757909051045753e-06_dp, 9.577367155851846e-05_dp]
+    got = forced_flight_forced_displacement_d_F0([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_displacement_d_F0", got, expected, scale)
+
+    ! forced_flight.forced_displacement_d_X_b
+    expected = [0.865924446034428_dp, 1.27239738450161_dp, -0.00010658669358719146_dp]
+    scale = [2.806079676554524_dp, 2.5219429846174983_dp, 0.015680412829857136_dp]
+    got = forced_flight_forced_displacement_d_X_b([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_displacement_d_X_b", got, expected, scale)
+
+    ! forced_flight.forced_displacement_d_phi
+    expected = [-0.006864397100871322_dp, -0.004527370952733622_dp, 1.9391079670411544e-06_dp]
+    scale = [0.022426696886244633_dp, 0.009815646260478846_dp, 0.00015477729539001742_dp]
+    got = forced_flight_forced_displacement_d_phi([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_displacement_d_phi", got, expected, scale)
+
+    ! forced_flight.forced_velocity_d_t
+    expected = [551.7441436778978_dp, -6.179680537813477_dp, -0.36953528638146454_dp]
+    scale = [3050.8381336287907_dp, 337.08964339277543_dp, 2.0738368632203894_dp]
+    got = forced_flight_forced_velocity_d_t([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_velocity_d_t", got, expected, scale)
+
+    ! forced_flight.forced_velocity_d_x0
+    expected = [360.2125427530413_dp, -136.00238915690514_dp, -0.025589593276717587_dp]
+    scale = [734.2270130793975_dp, 272.1010410173936_dp, 4.214351032496912_dp]
+    got = forced_flight_forced_velocity_d_x0([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_velocity_d_x0", got, expected, scale)
+
+    ! forced_flight.forced_velocity_d_xdot0
+    expected = [0.22812553448044887_dp, -0.036349741027029044_dp, 0.9841988158422643_dp]
+    scale = [1.0796405007849874_dp, 1.0343753508961417_dp, 1.9709185896725763_dp]
+    got = forced_flight_forced_velocity_d_xdot0([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_velocity_d_xdot0", got, expected, scale)
+
+    ! forced_flight.forced_velocity_d_F0
+    expected = [0.006155799639727966_dp, -0.0002951559046555919_dp, -0.0003691415932009604_dp]
+    scale = [0.01653084575096147_dp, 0.0005494283673640772_dp, 0.001172644202211734_dp]
+    got = forced_flight_forced_velocity_d_F0([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_velocity_d_F0", got, expected, scale)
+
+    ! forced_flight.forced_velocity_d_X_b
+    expected = [294.88031657788486_dp, -214.1615162175668_dp, -0.04021838404907254_dp]
+    scale = [791.8837897320454_dp, 398.66470065004575_dp, 0.1712639413013542_dp]
+    got = forced_flight_forced_velocity_d_X_b([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_velocity_d_X_b", got, expected, scale)
+
+    ! forced_flight.forced_velocity_d_phi
+    expected = [-1.657196595263989_dp, -0.36780325038285205_dp, -8.130945683200315e-05_dp]
+    scale = [5.643742064372354_dp, 1.1486500112726912_dp, 0.0013673624321909306_dp]
+    got = forced_flight_forced_velocity_d_phi([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_velocity_d_phi", got, expected, scale)
+
     ! forced_flight.steady_cosine
     expected = [-0.2390237686564484_dp, -0.007426459582678258_dp, -0.0010676774409069149_dp]
     scale = [0.4780871824416633_dp, 0.014852919165358594_dp, 0.002135354881814534_dp]
@@ -514,6 +766,66 @@ program check_kernels
 [-0.708497_dp, 0.583005_dp, -0.125492_dp], &
 [0.63325_dp, -0.733501_dp, -0.100251_dp])
     call check("rigid_impact_impact_velocity_after", got, expected, scale)
+
+    ! rigid_impact.main_velocity_after_d_e
+    expected = [0.9258259428086487_dp, -0.0003260780950686189_dp, 0.0006773124668177276_dp]
+    scale = [1.8516518856172974_dp, 0.0006521561901372377_dp, 0.006734859639942183_dp]
+    got = rigid_impact_main_velocity_after_d_e([0.552892_dp, 0.00966677_dp, 0.169014_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[0.736068_dp, 0.972136_dp, 0.208204_dp], &
+[-0.708497_dp, 0.583005_dp, -0.125492_dp], &
+[0.63325_dp, -0.733501_dp, -0.100251_dp])
+    call check("rigid_impact_main_velocity_after_d_e", got, expected, scale)
+
+    ! rigid_impact.main_velocity_after_d_xdot_minus
+    expected = [-0.19791346124114692_dp, 0.9995115325337702_dp, 0.9675792705653878_dp]
+    scale = [2.3958269224822937_dp, 2.0_dp, 2.0_dp]
+    got = rigid_impact_main_velocity_after_d_xdot_minus([0.552892_dp, 0.00966677_dp, 0.169014_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[0.736068_dp, 0.972136_dp, 0.208204_dp], &
+[-0.708497_dp, 0.583005_dp, -0.125492_dp], &
+[0.63325_dp, -0.733501_dp, -0.100251_dp])
+    call check("rigid_impact_main_velocity_after_d_xdot_minus", got, expected, scale)
+
+    ! rigid_impact.main_velocity_after_d_ydot_minus
+    expected = [1.1979134612411468_dp, 0.0004884674662297367_dp, 0.03242072943461219_dp]
+    scale = [2.3958269224822937_dp, 0.0009769349324594734_dp, 0.06484145886922438_dp]
+    got = rigid_impact_main_velocity_after_d_ydot_minus([0.552892_dp, 0.00966677_dp, 0.169014_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[0.736068_dp, 0.972136_dp, 0.208204_dp], &
+[-0.708497_dp, 0.583005_dp, -0.125492_dp], &
+[0.63325_dp, -0.733501_dp, -0.100251_dp])
+    call check("rigid_impact_main_velocity_after_d_ydot_minus", got, expected, scale)
+
+    ! rigid_impact.impact_velocity_after_d_e
+    expected = [-0.41592105719135125_dp, 1.3161799219049313_dp, -0.02456368753318226_dp]
+    scale = [0.8318421143827025_dp, 2.6323598438098625_dp, 0.2442491403600578_dp]
+    got = rigid_impact_impact_velocity_after_d_e([0.552892_dp, 0.00966677_dp, 0.169014_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[0.736068_dp, 0.972136_dp, 0.208204_dp], &
+[-0.708497_dp, 0.583005_dp, -0.125492_dp], &
+[0.63325_dp, -0.733501_dp, -0.100251_dp])
+    call check("rigid_impact_impact_velocity_after_d_e", got, expected, scale)
+
+    ! rigid_impact.impact_velocity_after_d_xdot_minus
+    expected = [0.538154538758853_dp, 1.9716475325337703_dp, 1.175783270565388_dp]
+    scale = [1.076309077517706_dp, 3.9432950650675407_dp, 2.351566541130776_dp]
+    got = rigid_impact_impact_velocity_after_d_xdot_minus([0.552892_dp, 0.00966677_dp, 0.169014_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[0.736068_dp, 0.972136_dp, 0.208204_dp], &
+[-0.708497_dp, 0.583005_dp, -0.125492_dp], &
+[0.63325_dp, -0.733501_dp, -0.100251_dp])
+    call check("rigid_impact_impact_velocity_after_d_xdot_minus", got, expected, scale)
+
+    ! rigid_impact.impact_velocity_after_d_ydot_minus
+    expected = [0.461845461241147_dp, -0.9716475325337702_dp, -0.1757832705653878_dp]
+    scale = [2.0_dp, 3.9432950650675407_dp, 2.351566541130776_dp]
+    got = rigid_impact_impact_velocity_after_d_ydot_minus([0.552892_dp, 0.00966677_dp, 0.169014_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[0.736068_dp, 0.972136_dp, 0.208204_dp], &
+[-0.708497_dp, 0.583005_dp, -0.125492_dp], &
+[0.63325_dp, -0.733501_dp, -0.100251_dp])
+    call check("rigid_impact_impact_velocity_after_d_ydot_minus", got, expected, scale)
 
     ! rigid_impact.energy_lost
     expected = [0.0706888037678286_dp, 0.0004602245868197003_dp, 5.012407581833858e-05_dp]
@@ -747,6 +1059,132 @@ program check_kernels
 [134.152_dp, 26.8255_dp, 207.771_dp], &
 [0.473717_dp, 42.5222_dp, 9.00845_dp])
     call check("slow_flow_clearance_for_response", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_d_main_mass
+    expected = [-8.645067569238502e-06_dp, 4.7673681068122075e-05_dp, -0.0010375408524110898_dp]
+    scale = [1.7332960661064765e-05_dp, 0.000148814035535072_dp, 0.0023248435931612654_dp]
+    got = slow_flow_clearance_for_response_d_main_mass([13.4728_dp, 6.1138_dp, 0.411849_dp], &
+[496.767_dp, 12259.1_dp, 1925.79_dp], &
+[0.368034_dp, 0.104102_dp, 0.222136_dp], &
+[0.0021646_dp, 0.0101423_dp, 0.00155238_dp], &
+[0.816625_dp, 0.449874_dp, 0.766499_dp], &
+[-7.88897_dp, -3.66692_dp, 8.4441_dp], &
+[0.00246211_dp, 0.00738634_dp, 0.00984845_dp], &
+[134.152_dp, 26.8255_dp, 207.771_dp], &
+[0.473717_dp, 42.5222_dp, 9.00845_dp])
+    call check("slow_flow_clearance_for_response_d_main_mass", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_d_K
+    expected = [-4.245479647523432e-08_dp, -2.2015113414877292e-08_dp, 1.6141701878732862e-07_dp]
+    scale = [1.0162871512524641e-07_dp, 2.1053276409487083e-07_dp, 3.2861974288071283e-07_dp]
+    got = slow_flow_clearance_for_response_d_K([13.4728_dp, 6.1138_dp, 0.411849_dp], &
+[496.767_dp, 12259.1_dp, 1925.79_dp], &
+[0.368034_dp, 0.104102_dp, 0.222136_dp], &
+[0.0021646_dp, 0.0101423_dp, 0.00155238_dp], &
+[0.816625_dp, 0.449874_dp, 0.766499_dp], &
+[-7.88897_dp, -3.66692_dp, 8.4441_dp], &
+[0.00246211_dp, 0.00738634_dp, 0.00984845_dp], &
+[134.152_dp, 26.8255_dp, 207.771_dp], &
+[0.473717_dp, 42.5222_dp, 9.00845_dp])
+    call check("slow_flow_clearance_for_response_d_K", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_d_C
+    expected = [1.0501950590555848e-07_dp, -6.698433777535246e-10_dp, 4.5710375733521933e-07_dp]
+    scale = [2.100965668911972e-07_dp, 2.0612935725739602e-09_dp, 9.517565021610194e-07_dp]
+    got = slow_flow_clearance_for_response_d_C([13.4728_dp, 6.1138_dp, 0.411849_dp], &
+[496.767_dp, 12259.1_dp, 1925.79_dp], &
+[0.368034_dp, 0.104102_dp, 0.222136_dp], &
+[0.0021646_dp, 0.0101423_dp, 0.00155238_dp], &
+[0.816625_dp, 0.449874_dp, 0.766499_dp], &
+[-7.88897_dp, -3.66692_dp, 8.4441_dp], &
+[0.00246211_dp, 0.00738634_dp, 0.00984845_dp], &
+[134.152_dp, 26.8255_dp, 207.771_dp], &
+[0.473717_dp, 42.5222_dp, 9.00845_dp])
+    call check("slow_flow_clearance_for_response_d_C", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_d_impact_mass
+    expected = [-2.1229830331942447e-05_dp, 3.729119563796722e-05_dp, -0.0009269382908180645_dp]
+    scale = [8.842943705669158e-05_dp, 8.470911913751996e-05_dp, 0.0016765346590463775_dp]
+    got = slow_flow_clearance_for_response_d_impact_mass([13.4728_dp, 6.1138_dp, 0.411849_dp], &
+[496.767_dp, 12259.1_dp, 1925.79_dp], &
+[0.368034_dp, 0.104102_dp, 0.222136_dp], &
+[0.0021646_dp, 0.0101423_dp, 0.00155238_dp], &
+[0.816625_dp, 0.449874_dp, 0.766499_dp], &
+[-7.88897_dp, -3.66692_dp, 8.4441_dp], &
+[0.00246211_dp, 0.00738634_dp, 0.00984845_dp], &
+[134.152_dp, 26.8255_dp, 207.771_dp], &
+[0.473717_dp, 42.5222_dp, 9.00845_dp])
+    call check("slow_flow_clearance_for_response_d_impact_mass", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_d_e
+    expected = [-1.4718303745420558e-08_dp, 1.0838163476448268e-07_dp, -1.1292427223066737e-07_dp]
+    scale = [3.280461137909563e-07_dp, 1.351615884437346e-06_dp, 2.4495601676300704e-06_dp]
+    got = slow_flow_clearance_for_response_d_e([13.4728_dp, 6.1138_dp, 0.411849_dp], &
+[496.767_dp, 12259.1_dp, 1925.79_dp], &
+[0.368034_dp, 0.104102_dp, 0.222136_dp], &
+[0.0021646_dp, 0.0101423_dp, 0.00155238_dp], &
+[0.816625_dp, 0.449874_dp, 0.766499_dp], &
+[-7.88897_dp, -3.66692_dp, 8.4441_dp], &
+[0.00246211_dp, 0.00738634_dp, 0.00984845_dp], &
+[134.152_dp, 26.8255_dp, 207.771_dp], &
+[0.473717_dp, 42.5222_dp, 9.00845_dp])
+    call check("slow_flow_clearance_for_response_d_e", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_d_F0
+    expected = [-1.7438361607326342e-05_dp, 5.988683475899715e-06_dp, 1.3949657533409853e-05_dp]
+    scale = [4.127611499936895e-05_dp, 1.248287512131932e-05_dp, 2.7899315066819705e-05_dp]
+    got = slow_flow_clearance_for_response_d_F0([13.4728_dp, 6.1138_dp, 0.411849_dp], &
+[496.767_dp, 12259.1_dp, 1925.79_dp], &
+[0.368034_dp, 0.104102_dp, 0.222136_dp], &
+[0.0021646_dp, 0.0101423_dp, 0.00155238_dp], &
+[0.816625_dp, 0.449874_dp, 0.766499_dp], &
+[-7.88897_dp, -3.66692_dp, 8.4441_dp], &
+[0.00246211_dp, 0.00738634_dp, 0.00984845_dp], &
+[134.152_dp, 26.8255_dp, 207.771_dp], &
+[0.473717_dp, 42.5222_dp, 9.00845_dp])
+    call check("slow_flow_clearance_for_response_d_F0", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_d_X_b
+    expected = [-0.008647101622553796_dp, 0.0734158735698532_dp, 0.02687478745479328_dp]
+    scale = [0.020504611819891515_dp, 0.15302882234066767_dp, 0.05374957490958656_dp]
+    got = slow_flow_clearance_for_response_d_X_b([13.4728_dp, 6.1138_dp, 0.411849_dp], &
+[496.767_dp, 12259.1_dp, 1925.79_dp], &
+[0.368034_dp, 0.104102_dp, 0.222136_dp], &
+[0.0021646_dp, 0.0101423_dp, 0.00155238_dp], &
+[0.816625_dp, 0.449874_dp, 0.766499_dp], &
+[-7.88897_dp, -3.66692_dp, 8.4441_dp], &
+[0.00246211_dp, 0.00738634_dp, 0.00984845_dp], &
+[134.152_dp, 26.8255_dp, 207.771_dp], &
+[0.473717_dp, 42.5222_dp, 9.00845_dp])
+    call check("slow_flow_clearance_for_response_d_X_b", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_d_Omega
+    expected = [-1.736834263569008e-06_dp, 2.1758814183652573e-05_dp, -4.126642826847206e-06_dp]
+    scale = [3.484330272302455e-06_dp, 6.789647412452392e-05_dp, 9.241821990218337e-06_dp]
+    got = slow_flow_clearance_for_response_d_Omega([13.4728_dp, 6.1138_dp, 0.411849_dp], &
+[496.767_dp, 12259.1_dp, 1925.79_dp], &
+[0.368034_dp, 0.104102_dp, 0.222136_dp], &
+[0.0021646_dp, 0.0101423_dp, 0.00155238_dp], &
+[0.816625_dp, 0.449874_dp, 0.766499_dp], &
+[-7.88897_dp, -3.66692_dp, 8.4441_dp], &
+[0.00246211_dp, 0.00738634_dp, 0.00984845_dp], &
+[134.152_dp, 26.8255_dp, 207.771_dp], &
+[0.473717_dp, 42.5222_dp, 9.00845_dp])
+    call check("slow_flow_clearance_for_response_d_Omega", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_d_xi
+    expected = [-0.00024540155185923525_dp, -1.2236490681613105e-05_dp, -4.244074182258537e-05_dp]
+    scale = [0.000986267936067523_dp, 0.00013462585814466184_dp, 0.00021565872858590661_dp]
+    got = slow_flow_clearance_for_response_d_xi([13.4728_dp, 6.1138_dp, 0.411849_dp], &
+[496.767_dp, 12259.1_dp, 1925.79_dp], &
+[0.368034_dp, 0.104102_dp, 0.222136_dp], &
+[0.0021646_dp, 0.0101423_dp, 0.00155238_dp], &
+[0.816625_dp, 0.449874_dp, 0.766499_dp], &
+[-7.88897_dp, -3.66692_dp, 8.4441_dp], &
+[0.00246211_dp, 0.00738634_dp, 0.00984845_dp], &
+[134.152_dp, 26.8255_dp, 207.771_dp], &
+[0.473717_dp, 42.5222_dp, 9.00845_dp])
+    call check("slow_flow_clearance_for_response_d_xi", got, expected, scale)
 
     ! slow_flow.response_quartic_4
     expected = [9.952130071400735e-05_dp, 160621.99143512207_dp, 2826.2910660338393_dp]
@@ -990,7 +1428,7 @@ program check_kernels
     call check("fixed_points_hunt_crossley_peak_speed_ratio", got, expected, scale)
     call check_steps("fixed_points_hunt_crossley_peak_speed_ratio", taken, steps)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 93 kernels and 5 iterations, ", &
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 128 kernels and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

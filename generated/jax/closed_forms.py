@@ -18,6 +18,14 @@ __all__ = [
     "hertz_max_penetration",
     "linear_contact_duration",
     "linear_restitution",
+    "hertz_contact_duration_d_impact_mass",
+    "hertz_contact_duration_d_main_mass",
+    "hertz_contact_duration_d_k_hz",
+    "hertz_contact_duration_d_zdot0",
+    "linear_contact_duration_d_impact_mass",
+    "linear_contact_duration_d_main_mass",
+    "linear_contact_duration_d_k1",
+    "linear_contact_duration_d_c1",
 ]
 
 
@@ -84,3 +92,131 @@ def linear_restitution(m, M, k1, c1):
     _x0 = M + m
     _x1 = _x0/(M*m)
     return jax.numpy.exp(-1/2*jax.numpy.pi*_x1*c1/jax.numpy.sqrt(_x1*k1 - 1/4*_x0**2*c1**2/(M**2*m**2)))
+
+
+@jax.jit
+def hertz_contact_duration_d_impact_mass(m, M, k_hz, zdot0):
+    r"""∂/∂m of: hertz contact duration (its partial derivative in impact mass m) [s/kg], paper Eq. 34.
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``zdot0``: Relative approach speed Ż₀ [m/s]
+    """
+    _x0 = 5**(2/5)
+    _x1 = jax.numpy.sqrt(jax.numpy.pi)
+    _x2 = M**(2/5)
+    _x3 = zdot0**(-1/5)
+    _x4 = 4*k_hz
+    _x5 = M*_x4 + _x4*m
+    return 0.6642260802042403*_x0*_x1*_x2*_x3/(_x5**(2/5)*m**(3/5)) - 2.6569043208169614*_x0*_x1*_x2*_x3*k_hz*m**(2/5)/_x5**(7/5)
+
+
+@jax.jit
+def hertz_contact_duration_d_main_mass(m, M, k_hz, zdot0):
+    r"""∂/∂M of: hertz contact duration (its partial derivative in main mass M) [s/kg], paper Eq. 34.
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``zdot0``: Relative approach speed Ż₀ [m/s]
+    """
+    _x0 = 5**(2/5)
+    _x1 = jax.numpy.sqrt(jax.numpy.pi)
+    _x2 = m**(2/5)
+    _x3 = zdot0**(-1/5)
+    _x4 = 4*k_hz
+    _x5 = M*_x4 + _x4*m
+    return -2.6569043208169614*M**(2/5)*_x0*_x1*_x2*_x3*k_hz/_x5**(7/5) + 0.6642260802042403*_x0*_x1*_x2*_x3/(M**(3/5)*_x5**(2/5))
+
+
+@jax.jit
+def hertz_contact_duration_d_k_hz(m, M, k_hz, zdot0):
+    r"""∂/∂k_hz of: hertz contact duration (its partial derivative in hertz contact stiffness K_Hz) [m^1.5 s/N], paper Eq. 34.
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``zdot0``: Relative approach speed Ż₀ [m/s]
+    """
+    _x0 = 4*k_hz
+    return 1.6605652005106006*5**(2/5)*jax.numpy.sqrt(jax.numpy.pi)*M**(2/5)*m**(2/5)*(-8/5*M - 8/5*m)/(zdot0**(1/5)*(M*_x0 + _x0*m)**(7/5))
+
+
+@jax.jit
+def hertz_contact_duration_d_zdot0(m, M, k_hz, zdot0):
+    r"""∂/∂zdot0 of: hertz contact duration (its partial derivative in relative approach speed Ż₀) [s^2/m], paper Eq. 34.
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``zdot0``: Relative approach speed Ż₀ [m/s]
+    """
+    _x0 = 4*k_hz
+    return -0.33211304010212017*5**(2/5)*jax.numpy.sqrt(jax.numpy.pi)*M**(2/5)*m**(2/5)/(zdot0**(6/5)*(M*_x0 + _x0*m)**(2/5))
+
+
+@jax.jit
+def linear_contact_duration_d_impact_mass(m, M, k1, c1):
+    r"""∂/∂m of: linear damped contact duration (its partial derivative in impact mass m) [s/kg], paper Eq. 35.
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``k1``: Linear contact stiffness k₁ [N/m]
+    ``c1``: Contact damping c₁ (below critical) [N s/m]
+    """
+    _x0 = M + m
+    _x1 = M**(-1.0)
+    _x2 = _x1*k1/m
+    _x3 = c1**2
+    _x4 = M**(-2.0)
+    _x5 = m**(-2.0)
+    _x6 = (1/4)*_x0**2
+    return jax.numpy.pi*((1/2)*_x0*_x1*_x5*k1 - 1/2*_x2 + (1/8)*_x3*_x4*_x5*(2*M + 2*m) - _x3*_x4*_x6/m**3)/(_x0*_x2 - _x3*_x4*_x5*_x6)**(3/2)
+
+
+@jax.jit
+def linear_contact_duration_d_main_mass(m, M, k1, c1):
+    r"""∂/∂M of: linear damped contact duration (its partial derivative in main mass M) [s/kg], paper Eq. 35.
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``k1``: Linear contact stiffness k₁ [N/m]
+    ``c1``: Contact damping c₁ (below critical) [N s/m]
+    """
+    _x0 = M + m
+    _x1 = m**(-1.0)
+    _x2 = _x1*k1/M
+    _x3 = c1**2
+    _x4 = M**(-2.0)
+    _x5 = m**(-2.0)
+    _x6 = (1/4)*_x0**2
+    return jax.numpy.pi*((1/2)*_x0*_x1*_x4*k1 - 1/2*_x2 + (1/8)*_x3*_x4*_x5*(2*M + 2*m) - _x3*_x5*_x6/M**3)/(_x0*_x2 - _x3*_x4*_x5*_x6)**(3/2)
+
+
+@jax.jit
+def linear_contact_duration_d_k1(m, M, k1, c1):
+    r"""∂/∂k1 of: linear damped contact duration (its partial derivative in linear contact stiffness k₁) [m s/N], paper Eq. 35.
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``k1``: Linear contact stiffness k₁ [N/m]
+    ``c1``: Contact damping c₁ (below critical) [N s/m]
+    """
+    _x0 = M + m
+    _x1 = _x0/(M*m)
+    return -1/2*jax.numpy.pi*_x1/(_x1*k1 - 1/4*_x0**2*c1**2/(M**2*m**2))**(3/2)
+
+
+@jax.jit
+def linear_contact_duration_d_c1(m, M, k1, c1):
+    r"""∂/∂c1 of: linear damped contact duration (its partial derivative in contact damping c₁ (below critical)) [m/N], paper Eq. 35.
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``k1``: Linear contact stiffness k₁ [N/m]
+    ``c1``: Contact damping c₁ (below critical) [N s/m]
+    """
+    _x0 = M + m
+    _x1 = (1/4)*_x0**2/(M**2*m**2)
+    return jax.numpy.pi*_x1*c1/(-_x1*c1**2 + _x0*k1/(M*m))**(3/2)

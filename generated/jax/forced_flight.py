@@ -15,6 +15,18 @@ import jax.numpy
 __all__ = [
     "forced_displacement",
     "forced_velocity",
+    "forced_displacement_d_t",
+    "forced_displacement_d_x0",
+    "forced_displacement_d_xdot0",
+    "forced_displacement_d_F0",
+    "forced_displacement_d_X_b",
+    "forced_displacement_d_phi",
+    "forced_velocity_d_t",
+    "forced_velocity_d_x0",
+    "forced_velocity_d_xdot0",
+    "forced_velocity_d_F0",
+    "forced_velocity_d_X_b",
+    "forced_velocity_d_phi",
     "steady_cosine",
     "steady_sine",
     "linear_amplitude",
@@ -104,6 +116,434 @@ def forced_velocity(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
     _x26 = jax.numpy.cos(_x21)
     _x27 = Omega*_x15*_x6 - Omega*_x23*_x24 + _x18*_x25 + xdot0
     return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x9)]), axis=0),True], [(1/2)*(F0*_x2 + F0*_x5 + K*(X_b*_x2 + X_b*_x5 - _x8*x0*jax.numpy.sin(_x0)) - Omega*(F0*_x6 - M*_x8*xdot0 + _x6*_x7)*jax.numpy.cos(_x0))/K,Omega*_x13*_x16*_x4 - _x15*_x2 - _x18*_x19*(_x25*_x26 + _x22*_x27/_x20) + _x19*(-_x20*_x22*_x25 + _x26*_x27)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_displacement_d_t(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂t of: main-mass displacement x(t) in forced free flight (its partial derivative in time since the last event) [m/s], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega*t
+    _x1 = _x0 + phi
+    _x2 = Omega*jax.numpy.sin(_x1)
+    _x3 = Omega**2
+    _x4 = jax.numpy.cos(_x1)
+    _x5 = _x3*_x4*t
+    _x6 = jax.numpy.sin(phi)
+    _x7 = K*X_b
+    _x8 = 2*Omega
+    _x9 = M*_x3
+    _x10 = C**2
+    _x11 = _x10*_x3
+    _x12 = K - _x9
+    _x13 = (_x11 + _x12**2)**(-1.0)
+    _x14 = F0 + _x7
+    _x15 = _x13*(X_b*_x11 + _x12*_x14)
+    _x16 = -C*Omega*X_b*_x12 + C*Omega*_x14
+    _x17 = M**(-1.0)
+    _x18 = (1/2)*C*_x17
+    _x19 = jax.numpy.exp(-_x18*t)
+    _x20 = jax.numpy.sqrt(K*_x17 - 1/4*_x10/M**2)
+    _x21 = _x20*t
+    _x22 = jax.numpy.sin(_x21)
+    _x23 = _x13*_x16
+    _x24 = jax.numpy.cos(phi)
+    _x25 = -_x15*_x24 - _x23*_x6 + x0
+    _x26 = jax.numpy.cos(_x21)
+    _x27 = Omega*_x15*_x6 - Omega*_x23*_x24 + _x18*_x25 + xdot0
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x9)]), axis=0),True], [(1/2)*(F0*_x2 + F0*_x5 + K*(X_b*_x2 + X_b*_x5 - _x8*x0*jax.numpy.sin(_x0)) - Omega*(F0*_x6 - M*_x8*xdot0 + _x6*_x7)*jax.numpy.cos(_x0))/K,Omega*_x13*_x16*_x4 - _x15*_x2 - _x18*_x19*(_x25*_x26 + _x22*_x27/_x20) + _x19*(-_x20*_x22*_x25 + _x26*_x27)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_displacement_d_x0(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂x0 of: main-mass displacement x(t) in forced free flight (its partial derivative in main-mass displacement at t = 0) [1], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = M**(-1.0)
+    _x1 = (1/2)*C*_x0
+    _x2 = jax.numpy.sqrt(-1/4*C**2/M**2 + K*_x0)
+    _x3 = _x2*t
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, M*Omega**2)]), axis=0),True], [jax.numpy.cos(Omega*t),(_x1*jax.numpy.sin(_x3)/_x2 + jax.numpy.cos(_x3))*jax.numpy.exp(-_x1*t)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_displacement_d_xdot0(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂xdot0 of: main-mass displacement x(t) in forced free flight (its partial derivative in main-mass velocity at t = 0) [s], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = M**(-1.0)
+    _x1 = jax.numpy.sqrt(-1/4*C**2/M**2 + K*_x0)
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, M*Omega**2)]), axis=0),True], [M*Omega*jax.numpy.sin(Omega*t)/K,jax.numpy.exp(-1/2*C*_x0*t)*jax.numpy.sin(_x1*t)/_x1], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_displacement_d_F0(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂F0 of: main-mass displacement x(t) in forced free flight (its partial derivative in force amplitude F0 on the main mass) [m/N], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = jax.numpy.sin(phi)
+    _x1 = Omega*t
+    _x2 = _x1 + phi
+    _x3 = jax.numpy.sin(_x2)
+    _x4 = Omega**2
+    _x5 = M*_x4
+    _x6 = C**2
+    _x7 = K - _x5
+    _x8 = (_x4*_x6 + _x7**2)**(-1.0)
+    _x9 = C*_x8
+    _x10 = _x7*_x8
+    _x11 = M**(-1.0)
+    _x12 = (1/2)*C*_x11
+    _x13 = jax.numpy.sqrt(K*_x11 - 1/4*_x6/M**2)
+    _x14 = _x13*t
+    _x15 = Omega*_x0
+    _x16 = jax.numpy.cos(phi)
+    _x17 = -_x10*_x16 - _x15*_x9
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x5)]), axis=0),True], [(1/2)*(-_x0*jax.numpy.sin(_x1) + _x1*_x3)/K,Omega*_x3*_x9 + _x10*jax.numpy.cos(_x2) + (_x17*jax.numpy.cos(_x14) + (_x10*_x15 + _x12*_x17 - _x16*_x4*_x9)*jax.numpy.sin(_x14)/_x13)*jax.numpy.exp(-_x12*t)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_displacement_d_X_b(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂X_b of: main-mass displacement x(t) in forced free flight (its partial derivative in base-motion amplitude X_b) [1], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = jax.numpy.sin(phi)
+    _x1 = Omega*t
+    _x2 = _x1 + phi
+    _x3 = jax.numpy.sin(_x2)
+    _x4 = Omega**2
+    _x5 = M*_x4
+    _x6 = C**2
+    _x7 = _x4*_x6
+    _x8 = K - _x5
+    _x9 = (_x7 + _x8**2)**(-1.0)
+    _x10 = C*Omega
+    _x11 = _x9*(K*_x10 - _x10*_x8)
+    _x12 = _x9*(K*_x8 + _x7)
+    _x13 = M**(-1.0)
+    _x14 = (1/2)*C*_x13
+    _x15 = jax.numpy.sqrt(K*_x13 - 1/4*_x6/M**2)
+    _x16 = _x15*t
+    _x17 = jax.numpy.cos(phi)
+    _x18 = -_x0*_x11 - _x12*_x17
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x5)]), axis=0),True], [(1/2)*(-K*_x0*jax.numpy.sin(_x1) + K*_x1*_x3)/K,_x11*_x3 + _x12*jax.numpy.cos(_x2) + (_x18*jax.numpy.cos(_x16) + (Omega*_x0*_x12 - Omega*_x11*_x17 + _x14*_x18)*jax.numpy.sin(_x16)/_x15)*jax.numpy.exp(-_x14*t)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_displacement_d_phi(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂phi of: main-mass displacement x(t) in forced free flight (its partial derivative in forcing phase at t = 0, φ) [m/rad], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega*t
+    _x1 = _x0 + phi
+    _x2 = jax.numpy.cos(_x1)
+    _x3 = _x0*_x2
+    _x4 = K*X_b
+    _x5 = jax.numpy.cos(phi)
+    _x6 = Omega**2
+    _x7 = M*_x6
+    _x8 = C**2
+    _x9 = _x6*_x8
+    _x10 = K - _x7
+    _x11 = (_x10**2 + _x9)**(-1.0)
+    _x12 = F0 + _x4
+    _x13 = _x11*(-C*Omega*X_b*_x10 + C*Omega*_x12)
+    _x14 = _x11*(X_b*_x9 + _x10*_x12)
+    _x15 = M**(-1.0)
+    _x16 = (1/2)*C*_x15
+    _x17 = jax.numpy.sqrt(K*_x15 - 1/4*_x8/M**2)
+    _x18 = _x17*t
+    _x19 = jax.numpy.sin(phi)
+    _x20 = -_x13*_x5 + _x14*_x19
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x7)]), axis=0),True], [(1/2)*(F0*_x3 + _x3*_x4 - (F0*_x5 + _x4*_x5)*jax.numpy.sin(_x0))/K,_x13*_x2 - _x14*jax.numpy.sin(_x1) + (_x20*jax.numpy.cos(_x18) + (Omega*_x13*_x19 + Omega*_x14*_x5 + _x16*_x20)*jax.numpy.sin(_x18)/_x17)*jax.numpy.exp(-_x16*t)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_velocity_d_t(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂t of: main-mass velocity ẋ(t) in forced free flight (its partial derivative in time since the last event) [m/s^2], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega*t
+    _x1 = _x0 + phi
+    _x2 = jax.numpy.cos(_x1)
+    _x3 = Omega**2
+    _x4 = 2*_x3
+    _x5 = jax.numpy.sin(_x1)
+    _x6 = Omega**3*_x5*t
+    _x7 = jax.numpy.sin(phi)
+    _x8 = K*X_b
+    _x9 = M*_x3
+    _x10 = C**2
+    _x11 = _x10*_x3
+    _x12 = K - _x9
+    _x13 = (_x11 + _x12**2)**(-1.0)
+    _x14 = F0 + _x8
+    _x15 = _x13*(-C*Omega*X_b*_x12 + C*Omega*_x14)
+    _x16 = _x13*(X_b*_x11 + _x12*_x14)
+    _x17 = M**(-1.0)
+    _x18 = C*_x17
+    _x19 = (1/2)*_x18
+    _x20 = jax.numpy.exp(-_x19*t)
+    _x21 = jax.numpy.cos(phi)
+    _x22 = -_x15*_x7 - _x16*_x21 + x0
+    _x23 = M**(-2.0)
+    _x24 = K*_x17 - 1/4*_x10*_x23
+    _x25 = jax.numpy.sqrt(_x24)
+    _x26 = _x25*t
+    _x27 = jax.numpy.sin(_x26)
+    _x28 = _x25*_x27
+    _x29 = jax.numpy.cos(_x26)
+    _x30 = -Omega*_x15*_x21 + Omega*_x16*_x7 + _x19*_x22 + xdot0
+    _x31 = _x22*_x29
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x9)]), axis=0),True], [(1/2)*(F0*_x2*_x4 - F0*_x6 + K*(2*X_b*_x2*_x3 - X_b*_x6 - _x4*x0*jax.numpy.cos(_x0)) + _x3*(F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8)*jax.numpy.sin(_x0))/K,(1/4)*_x10*_x20*_x23*(_x31 + _x27*_x30/_x25) - _x15*_x3*_x5 - _x16*_x2*_x3 - _x18*_x20*(-_x22*_x28 + _x29*_x30) + _x20*(-_x24*_x31 - _x28*_x30)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_velocity_d_x0(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂x0 of: main-mass velocity ẋ(t) in forced free flight (its partial derivative in main-mass displacement at t = 0) [1/s], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = M**(-1.0)
+    _x1 = (1/2)*C*_x0
+    _x2 = jax.numpy.exp(-_x1*t)
+    _x3 = jax.numpy.sqrt(-1/4*C**2/M**2 + K*_x0)
+    _x4 = _x3*t
+    _x5 = jax.numpy.cos(_x4)
+    _x6 = jax.numpy.sin(_x4)
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, M*Omega**2)]), axis=0),True], [-Omega*jax.numpy.sin(Omega*t),-_x1*_x2*(_x1*_x6/_x3 + _x5) + _x2*(_x1*_x5 - _x3*_x6)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_velocity_d_xdot0(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂xdot0 of: main-mass velocity ẋ(t) in forced free flight (its partial derivative in main-mass velocity at t = 0) [1], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = M*Omega**2
+    _x1 = M**(-1.0)
+    _x2 = (1/2)*C*_x1
+    _x3 = jax.numpy.exp(-_x2*t)
+    _x4 = jax.numpy.sqrt(-1/4*C**2/M**2 + K*_x1)
+    _x5 = _x4*t
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x0)]), axis=0),True], [_x0*jax.numpy.cos(Omega*t)/K,-_x2*_x3*jax.numpy.sin(_x5)/_x4 + _x3*jax.numpy.cos(_x5)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_velocity_d_F0(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂F0 of: main-mass velocity ẋ(t) in forced free flight (its partial derivative in force amplitude F0 on the main mass) [m/N/s], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega*t
+    _x1 = _x0 + phi
+    _x2 = Omega*jax.numpy.sin(_x1)
+    _x3 = Omega*jax.numpy.sin(phi)
+    _x4 = Omega**2
+    _x5 = _x4*jax.numpy.cos(_x1)
+    _x6 = M*_x4
+    _x7 = C**2
+    _x8 = K - _x6
+    _x9 = (_x4*_x7 + _x8**2)**(-1.0)
+    _x10 = C*_x9
+    _x11 = _x8*_x9
+    _x12 = M**(-1.0)
+    _x13 = (1/2)*C*_x12
+    _x14 = jax.numpy.exp(-_x13*t)
+    _x15 = jax.numpy.sqrt(K*_x12 - 1/4*_x7/M**2)
+    _x16 = _x15*t
+    _x17 = jax.numpy.sin(_x16)
+    _x18 = jax.numpy.cos(phi)
+    _x19 = -_x10*_x3 - _x11*_x18
+    _x20 = jax.numpy.cos(_x16)
+    _x21 = -_x10*_x18*_x4 + _x11*_x3 + _x13*_x19
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x6)]), axis=0),True], [(1/2)*(_x2 - _x3*jax.numpy.cos(_x0) + _x5*t)/K,_x10*_x5 - _x11*_x2 - _x13*_x14*(_x19*_x20 + _x17*_x21/_x15) + _x14*(-_x15*_x17*_x19 + _x20*_x21)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_velocity_d_X_b(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂X_b of: main-mass velocity ẋ(t) in forced free flight (its partial derivative in base-motion amplitude X_b) [1/s], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega*t
+    _x1 = jax.numpy.sin(phi)
+    _x2 = Omega*_x1
+    _x3 = _x0 + phi
+    _x4 = Omega*jax.numpy.sin(_x3)
+    _x5 = Omega**2
+    _x6 = jax.numpy.cos(_x3)
+    _x7 = M*_x5
+    _x8 = C**2
+    _x9 = _x5*_x8
+    _x10 = K - _x7
+    _x11 = (_x10**2 + _x9)**(-1.0)
+    _x12 = _x11*(K*_x10 + _x9)
+    _x13 = C*Omega
+    _x14 = K*_x13 - _x10*_x13
+    _x15 = M**(-1.0)
+    _x16 = (1/2)*C*_x15
+    _x17 = jax.numpy.exp(-_x16*t)
+    _x18 = jax.numpy.sqrt(K*_x15 - 1/4*_x8/M**2)
+    _x19 = _x18*t
+    _x20 = jax.numpy.sin(_x19)
+    _x21 = _x11*_x14
+    _x22 = jax.numpy.cos(phi)
+    _x23 = -_x1*_x21 - _x12*_x22
+    _x24 = jax.numpy.cos(_x19)
+    _x25 = -Omega*_x21*_x22 + _x12*_x2 + _x16*_x23
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x7)]), axis=0),True], [(1/2)*(-K*_x2*jax.numpy.cos(_x0) + K*(_x4 + _x5*_x6*t))/K,Omega*_x11*_x14*_x6 - _x12*_x4 - _x16*_x17*(_x23*_x24 + _x20*_x25/_x18) + _x17*(-_x18*_x20*_x23 + _x24*_x25)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_velocity_d_phi(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂phi of: main-mass velocity ẋ(t) in forced free flight (its partial derivative in forcing phase at t = 0, φ) [m/rad/s], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega*t
+    _x1 = _x0 + phi
+    _x2 = jax.numpy.cos(_x1)
+    _x3 = Omega**2
+    _x4 = jax.numpy.sin(_x1)
+    _x5 = _x3*_x4*t
+    _x6 = jax.numpy.cos(phi)
+    _x7 = K*X_b
+    _x8 = M*_x3
+    _x9 = C**2
+    _x10 = _x3*_x9
+    _x11 = K - _x8
+    _x12 = (_x10 + _x11**2)**(-1.0)
+    _x13 = F0 + _x7
+    _x14 = _x12*(-C*Omega*X_b*_x11 + C*Omega*_x13)
+    _x15 = Omega*_x14
+    _x16 = _x12*(X_b*_x10 + _x11*_x13)
+    _x17 = M**(-1.0)
+    _x18 = (1/2)*C*_x17
+    _x19 = jax.numpy.exp(-_x18*t)
+    _x20 = jax.numpy.sqrt(K*_x17 - 1/4*_x9/M**2)
+    _x21 = _x20*t
+    _x22 = jax.numpy.sin(_x21)
+    _x23 = jax.numpy.sin(phi)
+    _x24 = -_x14*_x6 + _x16*_x23
+    _x25 = jax.numpy.cos(_x21)
+    _x26 = Omega*_x16*_x6 + _x15*_x23 + _x18*_x24
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x8)]), axis=0),True], [(1/2)*(F0*Omega*_x2 - F0*_x5 + K*(Omega*X_b*_x2 - X_b*_x5) - Omega*(F0*_x6 + _x6*_x7)*jax.numpy.cos(_x0))/K,-Omega*_x16*_x2 - _x15*_x4 - _x18*_x19*(_x24*_x25 + _x22*_x26/_x20) + _x19*(-_x20*_x22*_x24 + _x25*_x26)], default=jax.numpy.nan)
 
 
 @jax.jit

@@ -15,6 +15,12 @@ import jax.numpy
 __all__ = [
     "main_velocity_after",
     "impact_velocity_after",
+    "main_velocity_after_d_e",
+    "main_velocity_after_d_xdot_minus",
+    "main_velocity_after_d_ydot_minus",
+    "impact_velocity_after_d_e",
+    "impact_velocity_after_d_xdot_minus",
+    "impact_velocity_after_d_ydot_minus",
     "energy_lost",
     "linear_c1_for_restitution",
     "saltation_main_gain",
@@ -48,6 +54,84 @@ def impact_velocity_after(m, M, e, xdot_minus, ydot_minus):
     ``ydot_minus``: Impact-mass velocity before the impact [m/s]
     """
     return M*(e + 1)*(xdot_minus - ydot_minus)/(M + m) + ydot_minus
+
+
+@jax.jit
+def main_velocity_after_d_e(m, M, e, xdot_minus, ydot_minus):
+    r"""∂/∂e of: main-mass velocity after a rigid impact (its partial derivative in coefficient of restitution e) [m/s], Eq. F2 (derived here, beyond the paper).
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``xdot_minus``: Main-mass velocity before the impact [m/s]
+    ``ydot_minus``: Impact-mass velocity before the impact [m/s]
+    """
+    return -m*(xdot_minus - ydot_minus)/(M + m)
+
+
+@jax.jit
+def main_velocity_after_d_xdot_minus(m, M, e, xdot_minus, ydot_minus):
+    r"""∂/∂xdot_minus of: main-mass velocity after a rigid impact (its partial derivative in main-mass velocity before the impact) [1], Eq. F2 (derived here, beyond the paper).
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``xdot_minus``: Main-mass velocity before the impact [m/s]
+    ``ydot_minus``: Impact-mass velocity before the impact [m/s]
+    """
+    return -m*(e + 1)/(M + m) + 1
+
+
+@jax.jit
+def main_velocity_after_d_ydot_minus(m, M, e, xdot_minus, ydot_minus):
+    r"""∂/∂ydot_minus of: main-mass velocity after a rigid impact (its partial derivative in impact-mass velocity before the impact) [1], Eq. F2 (derived here, beyond the paper).
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``xdot_minus``: Main-mass velocity before the impact [m/s]
+    ``ydot_minus``: Impact-mass velocity before the impact [m/s]
+    """
+    return m*(e + 1)/(M + m)
+
+
+@jax.jit
+def impact_velocity_after_d_e(m, M, e, xdot_minus, ydot_minus):
+    r"""∂/∂e of: impact-mass velocity after a rigid impact (its partial derivative in coefficient of restitution e) [m/s], Eq. F2 (derived here, beyond the paper).
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``xdot_minus``: Main-mass velocity before the impact [m/s]
+    ``ydot_minus``: Impact-mass velocity before the impact [m/s]
+    """
+    return M*(xdot_minus - ydot_minus)/(M + m)
+
+
+@jax.jit
+def impact_velocity_after_d_xdot_minus(m, M, e, xdot_minus, ydot_minus):
+    r"""∂/∂xdot_minus of: impact-mass velocity after a rigid impact (its partial derivative in main-mass velocity before the impact) [1], Eq. F2 (derived here, beyond the paper).
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``xdot_minus``: Main-mass velocity before the impact [m/s]
+    ``ydot_minus``: Impact-mass velocity before the impact [m/s]
+    """
+    return M*(e + 1)/(M + m)
+
+
+@jax.jit
+def impact_velocity_after_d_ydot_minus(m, M, e, xdot_minus, ydot_minus):
+    r"""∂/∂ydot_minus of: impact-mass velocity after a rigid impact (its partial derivative in impact-mass velocity before the impact) [1], Eq. F2 (derived here, beyond the paper).
+
+    ``m``: Impact mass m [kg]
+    ``M``: Main mass M [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``xdot_minus``: Main-mass velocity before the impact [m/s]
+    ``ydot_minus``: Impact-mass velocity before the impact [m/s]
+    """
+    return -M*(e + 1)/(M + m) + 1
 
 
 @jax.jit

@@ -18,6 +18,15 @@ __all__ = [
     "absorber_amplitude_ratio",
     "absorber_phase_lag",
     "clearance_for_response",
+    "clearance_for_response_d_main_mass",
+    "clearance_for_response_d_K",
+    "clearance_for_response_d_C",
+    "clearance_for_response_d_impact_mass",
+    "clearance_for_response_d_e",
+    "clearance_for_response_d_F0",
+    "clearance_for_response_d_X_b",
+    "clearance_for_response_d_Omega",
+    "clearance_for_response_d_xi",
     "response_quartic_4",
     "response_quartic_3",
     "response_quartic_2",
@@ -101,6 +110,315 @@ def clearance_for_response(M, K, C, m, e, F0, X_b, Omega, xi):
     _x8 = _x0*m
     _x9 = _x7**(-1.0)
     return 2*xi*jax.numpy.sqrt(C**2*X_b**2*_x0 + (F0 + K*X_b)**2)/jax.numpy.sqrt((_x1*(K - M*_x0) - 8*_x3*_x6*_x8*_x9*(_x6*_x9 - 1))**2 + (C*Omega*_x1 - 16*_x4*_x6**2*_x8/(jax.numpy.pi**3*_x2*_x7**2))**2)
+
+
+@jax.jit
+def clearance_for_response_d_main_mass(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""∂/∂M of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the response surface) (its partial derivative in main mass M) [m/kg], Eq. F5 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``xi``: Primary amplitude over half the clearance ξ [1]
+    """
+    _x0 = Omega**2
+    _x1 = xi**2
+    _x2 = jax.numpy.pi**(-2.0)
+    _x3 = e - 1
+    _x4 = e + 1
+    _x5 = 4*_x2*_x3**2/_x4**2
+    _x6 = _x5 + 1
+    _x7 = _x6**(-1.0)
+    _x8 = jax.numpy.sqrt(_x1*_x5 + _x1 - _x5) + 1
+    _x9 = _x0*m
+    _x10 = _x1*(K - M*_x0) - 8*_x2*_x7*_x8*_x9*(_x7*_x8 - 1)
+    return 2*_x0*_x10*xi**3*jax.numpy.sqrt(C**2*X_b**2*_x0 + (F0 + K*X_b)**2)/(_x10**2 + (C*Omega*_x1 - 16*_x3*_x8**2*_x9/(jax.numpy.pi**3*_x4*_x6**2))**2)**(3/2)
+
+
+@jax.jit
+def clearance_for_response_d_K(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""∂/∂K of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the response surface) (its partial derivative in main stiffness K) [m^2/N], Eq. F5 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``xi``: Primary amplitude over half the clearance ξ [1]
+    """
+    _x0 = F0 + K*X_b
+    _x1 = Omega**2
+    _x2 = jax.numpy.sqrt(C**2*X_b**2*_x1 + _x0**2)
+    _x3 = xi**2
+    _x4 = e + 1
+    _x5 = jax.numpy.pi**(-2.0)
+    _x6 = e - 1
+    _x7 = 4*_x5*_x6**2/_x4**2
+    _x8 = jax.numpy.sqrt(_x3*_x7 + _x3 - _x7) + 1
+    _x9 = _x7 + 1
+    _x10 = _x1*m
+    _x11 = _x9**(-1.0)
+    _x12 = -8*_x10*_x11*_x5*_x8*(_x11*_x8 - 1) + _x3*(K - M*_x1)
+    _x13 = _x12**2 + (C*Omega*_x3 - 16*_x10*_x6*_x8**2/(jax.numpy.pi**3*_x4*_x9**2))**2
+    return 2*X_b*_x0*xi/(jax.numpy.sqrt(_x13)*_x2) - 2*_x12*_x2*xi**3/_x13**(3/2)
+
+
+@jax.jit
+def clearance_for_response_d_C(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""∂/∂C of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the response surface) (its partial derivative in main damping C (underdamped)) [m^2/N/s], Eq. F5 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``xi``: Primary amplitude over half the clearance ξ [1]
+    """
+    _x0 = Omega**2
+    _x1 = X_b**2*_x0
+    _x2 = jax.numpy.sqrt(C**2*_x1 + (F0 + K*X_b)**2)
+    _x3 = xi**2
+    _x4 = e + 1
+    _x5 = jax.numpy.pi**(-2.0)
+    _x6 = e - 1
+    _x7 = 4*_x5*_x6**2/_x4**2
+    _x8 = jax.numpy.sqrt(_x3*_x7 + _x3 - _x7) + 1
+    _x9 = _x7 + 1
+    _x10 = _x0*m
+    _x11 = C*Omega*_x3 - 16*_x10*_x6*_x8**2/(jax.numpy.pi**3*_x4*_x9**2)
+    _x12 = _x9**(-1.0)
+    _x13 = _x11**2 + (-8*_x10*_x12*_x5*_x8*(_x12*_x8 - 1) + _x3*(K - M*_x0))**2
+    return 2*C*_x1*xi/(jax.numpy.sqrt(_x13)*_x2) - 2*Omega*_x11*_x2*xi**3/_x13**(3/2)
+
+
+@jax.jit
+def clearance_for_response_d_impact_mass(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""∂/∂m of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the response surface) (its partial derivative in impact mass m) [m/kg], Eq. F5 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``xi``: Primary amplitude over half the clearance ξ [1]
+    """
+    _x0 = Omega**2
+    _x1 = xi**2
+    _x2 = _x0*m
+    _x3 = e + 1
+    _x4 = jax.numpy.pi**(-2.0)
+    _x5 = e - 1
+    _x6 = 4*_x4*_x5**2/_x3**2
+    _x7 = jax.numpy.sqrt(_x1*_x6 + _x1 - _x6) + 1
+    _x8 = _x6 + 1
+    _x9 = 16*_x5*_x7**2/(jax.numpy.pi**3*_x3*_x8**2)
+    _x10 = C*Omega*_x1 - _x2*_x9
+    _x11 = _x8**(-1.0)
+    _x12 = 8*_x11*_x4*_x7*(_x11*_x7 - 1)
+    _x13 = _x1*(K - M*_x0) - _x12*_x2
+    return 2*xi*jax.numpy.sqrt(C**2*X_b**2*_x0 + (F0 + K*X_b)**2)*(_x0*_x10*_x9 + _x0*_x12*_x13)/(_x10**2 + _x13**2)**(3/2)
+
+
+@jax.jit
+def clearance_for_response_d_e(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""∂/∂e of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the response surface) (its partial derivative in coefficient of restitution e) [m], Eq. F5 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``xi``: Primary amplitude over half the clearance ξ [1]
+    """
+    _x0 = Omega**2
+    _x1 = xi**2
+    _x2 = e - 1
+    _x3 = jax.numpy.pi**(-2.0)
+    _x4 = e + 1
+    _x5 = _x4**(-2.0)
+    _x6 = _x3*_x5
+    _x7 = _x2**2
+    _x8 = 4*_x7
+    _x9 = _x6*_x8
+    _x10 = _x9 + 1
+    _x11 = _x10**(-2.0)
+    _x12 = jax.numpy.sqrt(_x1*_x9 + _x1 - _x9)
+    _x13 = _x12 + 1
+    _x14 = _x13**2
+    _x15 = jax.numpy.pi**(-3.0)
+    _x16 = _x0*m
+    _x17 = _x15*_x16/_x4
+    _x18 = _x11*_x14*_x17
+    _x19 = C*Omega*_x1 - 16*_x18*_x2
+    _x20 = _x10**(-1.0)
+    _x21 = _x13*_x20 - 1
+    _x22 = _x13*_x16*_x20*_x3
+    _x23 = _x1*(K - M*_x0) - 8*_x21*_x22
+    _x24 = _x4**(-3.0)
+    _x25 = _x24*_x3
+    _x26 = _x25*_x7
+    _x27 = 2*e - 2
+    _x28 = _x27*_x6
+    _x29 = (-_x1*_x25*_x8 + 2*_x1*_x27*_x3*_x5 + 4*_x24*_x3*_x7 - 2*_x28)/_x12
+    _x30 = _x11*_x13
+    _x31 = _x30*(8*_x26 - 4*_x28)
+    _x32 = 16*_x16*_x21*_x3
+    _x33 = _x20*_x29
+    return 2*xi*(-1/2*_x19*(32*_x0*_x11*_x14*_x15*_x2*_x5*m - 64*_x17*_x2*_x29*_x30 - 32*_x18 - 32*_x14*_x17*_x2*(16*_x26 - 8*_x28)/_x10**3) - 1/2*_x23*(-16*_x22*(_x31 + _x33) - _x31*_x32 - _x32*_x33))*jax.numpy.sqrt(C**2*X_b**2*_x0 + (F0 + K*X_b)**2)/(_x19**2 + _x23**2)**(3/2)
+
+
+@jax.jit
+def clearance_for_response_d_F0(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""∂/∂F0 of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the response surface) (its partial derivative in force amplitude F0 on the main mass) [m/N], Eq. F5 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``xi``: Primary amplitude over half the clearance ξ [1]
+    """
+    _x0 = F0 + K*X_b
+    _x1 = Omega**2
+    _x2 = xi**2
+    _x3 = e + 1
+    _x4 = jax.numpy.pi**(-2.0)
+    _x5 = e - 1
+    _x6 = 4*_x4*_x5**2/_x3**2
+    _x7 = jax.numpy.sqrt(_x2*_x6 + _x2 - _x6) + 1
+    _x8 = _x6 + 1
+    _x9 = _x1*m
+    _x10 = _x8**(-1.0)
+    return 2*_x0*xi/(jax.numpy.sqrt(C**2*X_b**2*_x1 + _x0**2)*jax.numpy.sqrt((C*Omega*_x2 - 16*_x5*_x7**2*_x9/(jax.numpy.pi**3*_x3*_x8**2))**2 + (-8*_x10*_x4*_x7*_x9*(_x10*_x7 - 1) + _x2*(K - M*_x1))**2))
+
+
+@jax.jit
+def clearance_for_response_d_X_b(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""∂/∂X_b of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the response surface) (its partial derivative in base-motion amplitude X_b) [1], Eq. F5 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``xi``: Primary amplitude over half the clearance ξ [1]
+    """
+    _x0 = F0 + K*X_b
+    _x1 = Omega**2
+    _x2 = C**2*_x1
+    _x3 = xi**2
+    _x4 = e + 1
+    _x5 = jax.numpy.pi**(-2.0)
+    _x6 = e - 1
+    _x7 = 4*_x5*_x6**2/_x4**2
+    _x8 = jax.numpy.sqrt(_x3*_x7 + _x3 - _x7) + 1
+    _x9 = _x7 + 1
+    _x10 = _x1*m
+    _x11 = _x9**(-1.0)
+    return 2*xi*(K*_x0 + X_b*_x2)/(jax.numpy.sqrt(X_b**2*_x2 + _x0**2)*jax.numpy.sqrt((C*Omega*_x3 - 16*_x10*_x6*_x8**2/(jax.numpy.pi**3*_x4*_x9**2))**2 + (-8*_x10*_x11*_x5*_x8*(_x11*_x8 - 1) + _x3*(K - M*_x1))**2))
+
+
+@jax.jit
+def clearance_for_response_d_Omega(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""∂/∂Omega of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the response surface) (its partial derivative in forcing frequency Ω) [m s/rad], Eq. F5 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``xi``: Primary amplitude over half the clearance ξ [1]
+    """
+    _x0 = Omega**2
+    _x1 = C**2*X_b**2
+    _x2 = jax.numpy.sqrt(_x0*_x1 + (F0 + K*X_b)**2)
+    _x3 = xi**2
+    _x4 = C*_x3
+    _x5 = _x0*m
+    _x6 = e + 1
+    _x7 = jax.numpy.pi**(-2.0)
+    _x8 = e - 1
+    _x9 = 4*_x7*_x8**2/_x6**2
+    _x10 = jax.numpy.sqrt(_x3*_x9 + _x3 - _x9) + 1
+    _x11 = _x9 + 1
+    _x12 = _x10**2*_x8/(jax.numpy.pi**3*_x11**2*_x6)
+    _x13 = Omega*_x4 - 16*_x12*_x5
+    _x14 = _x11**(-1.0)
+    _x15 = _x10*_x14*_x7*(_x10*_x14 - 1)
+    _x16 = -8*_x15*_x5 + _x3*(K - M*_x0)
+    _x17 = _x13**2 + _x16**2
+    _x18 = 2*xi
+    _x19 = Omega*m
+    return Omega*_x1*_x18/(jax.numpy.sqrt(_x17)*_x2) + _x18*_x2*(-1/2*_x13*(-64*_x12*_x19 + 2*_x4) - 1/2*_x16*(-4*M*Omega*_x3 - 32*_x15*_x19))/_x17**(3/2)
+
+
+@jax.jit
+def clearance_for_response_d_xi(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""∂/∂xi of: clearance d at which the primary's amplitude is ξ·d/2 at Ω (the response surface) (its partial derivative in primary amplitude over half the clearance ξ) [m], Eq. F5 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``xi``: Primary amplitude over half the clearance ξ [1]
+    """
+    _x0 = xi**2
+    _x1 = C*Omega
+    _x2 = jax.numpy.pi**(-2.0)
+    _x3 = e + 1
+    _x4 = e - 1
+    _x5 = _x2*_x4**2/_x3**2
+    _x6 = 4*_x5
+    _x7 = jax.numpy.sqrt(_x0*_x6 + _x0 - _x6)
+    _x8 = _x7 + 1
+    _x9 = _x6 + 1
+    _x10 = _x9**(-2.0)
+    _x11 = 16*_x10
+    _x12 = Omega**2
+    _x13 = _x12*m
+    _x14 = _x13*_x4/(jax.numpy.pi**3*_x3)
+    _x15 = _x0*_x1 - _x11*_x14*_x8**2
+    _x16 = K - M*_x12
+    _x17 = _x9**(-1.0)
+    _x18 = _x13*_x2
+    _x19 = _x18*(_x17*_x8 - 1)
+    _x20 = _x0*_x16 - 8*_x17*_x19*_x8
+    _x21 = _x15**2 + _x20**2
+    _x22 = 2*jax.numpy.sqrt(C**2*X_b**2*_x12 + (F0 + K*X_b)**2)
+    _x23 = 4*xi
+    _x24 = (_x23*_x5 + xi)/_x7
+    _x25 = _x24*_x8
+    return _x22/jax.numpy.sqrt(_x21) + _x22*xi*(-1/2*_x15*(_x1*_x23 - 64*_x10*_x14*_x25) - 1/2*_x20*(-_x11*_x18*_x25 + 4*_x16*xi - 16*_x17*_x19*_x24))/_x21**(3/2)
 
 
 @jax.jit

@@ -21,6 +21,8 @@ TARGETS: dict[str, tuple[str, tuple[str, ...], bool]] = {
     "numpy": ("", (".py", ".md"), False),
     # the C library's CMake project (CMakeLists.txt) and its package templates (*.in)
     "c": ("c", (".c", ".h", ".md", ".txt", ".in"), False),
+    # the same files under the name a CMake user looks for: the C target is a CMake project
+    "c-cmake": ("c", (".c", ".h", ".md", ".txt", ".in"), False),
     "octave": ("octave", (".m", ".md"), False),
     # a crate: Cargo.toml, src/lib.rs, tests/check_kernels.rs
     "rust": ("rust", (".toml", ".rs", ".md"), True),

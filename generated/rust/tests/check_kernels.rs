@@ -524,6 +524,102 @@ fn closed_forms_linear_restitution() {
 }
 
 #[test]
+fn closed_forms_hertz_contact_duration_d_impact_mass() {
+    let expected = [5.153446524992846e-05, 0.0006977758674392841, 0.13030198693386175];
+    let scale = [0.0013204900920463203, 0.0013983052410817774, 0.3035495298897656];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 4.2132e+07_f64, 0.00382829_f64], [0.0769866_f64, 39.0189_f64, 5.61337e+09_f64, 1.46558_f64], [1.0101_f64, 6.12953_f64, 747.886_f64, 0.0561068_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::hertz_contact_duration_d_impact_mass(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("closed_forms::hertz_contact_duration_d_impact_mass", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_hertz_contact_duration_d_main_mass() {
+    let expected = [0.007189917841357623, 2.7164153866971025e-09, 0.003538550764729489];
+    let scale = [0.01559725684426171, 2.758939033982669e-06, 0.050022657551501044];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 4.2132e+07_f64, 0.00382829_f64], [0.0769866_f64, 39.0189_f64, 5.61337e+09_f64, 1.46558_f64], [1.0101_f64, 6.12953_f64, 747.886_f64, 0.0561068_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::hertz_contact_duration_d_main_mass(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("closed_forms::hertz_contact_duration_d_main_mass", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_hertz_contact_duration_d_k_hz() {
+    let expected = [-4.5975665132776225e-11, -9.588782342253083e-15, -0.00020498804640122438];
+    let scale = [9.195133026555245e-11, 1.9177564684506166e-14, 0.00040997609280244877];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 4.2132e+07_f64, 0.00382829_f64], [0.0769866_f64, 39.0189_f64, 5.61337e+09_f64, 1.46558_f64], [1.0101_f64, 6.12953_f64, 747.886_f64, 0.0561068_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::hertz_contact_duration_d_k_hz(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("closed_forms::hertz_contact_duration_d_k_hz", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_hertz_contact_duration_d_zdot0() {
+    let expected = [-0.25299111657869805, -1.8363167870922495e-05, -1.3662130977958653];
+    let scale = [0.5059822331573961, 3.672633574184499e-05, 2.7324261955917306];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 4.2132e+07_f64, 0.00382829_f64], [0.0769866_f64, 39.0189_f64, 5.61337e+09_f64, 1.46558_f64], [1.0101_f64, 6.12953_f64, 747.886_f64, 0.0561068_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::hertz_contact_duration_d_zdot0(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("closed_forms::hertz_contact_duration_d_zdot0", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_linear_contact_duration_d_impact_mass() {
+    let expected = [3.915503248612775e-05, 0.0021638154739013604, 0.09331181216020386];
+    let scale = [0.0010032865698384687, 0.004336170270628969, 0.21741630961415576];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 260860_f64, 0.0728757_f64], [0.0769866_f64, 39.0189_f64, 6.80481e+06_f64, 0.395751_f64], [1.0101_f64, 6.12953_f64, 177.51_f64, 0.218627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::linear_contact_duration_d_impact_mass(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("closed_forms::linear_contact_duration_d_impact_mass", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_linear_contact_duration_d_main_mass() {
+    let expected = [0.005462780399207461, 8.42365281110899e-09, 0.0025340257048066337];
+    let scale = [0.011850537785473271, 8.55552196394022e-06, 0.035832545348669385];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 260860_f64, 0.0728757_f64], [0.0769866_f64, 39.0189_f64, 6.80481e+06_f64, 0.395751_f64], [1.0101_f64, 6.12953_f64, 177.51_f64, 0.218627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::linear_contact_duration_d_main_mass(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("closed_forms::linear_contact_duration_d_main_mass", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_linear_contact_duration_d_k1() {
+    let expected = [-5.6418617583305524e-09, -2.4528752901135204e-11, -0.0006185775187455155];
+    let scale = [1.1283723516661105e-08, 4.905750580227041e-11, 0.001237155037491031];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 260860_f64, 0.0728757_f64], [0.0769866_f64, 39.0189_f64, 6.80481e+06_f64, 0.395751_f64], [1.0101_f64, 6.12953_f64, 177.51_f64, 0.218627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::linear_contact_duration_d_k1(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("closed_forms::linear_contact_duration_d_k1", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_linear_contact_duration_d_c1() {
+    let expected = [8.977338817540039e-10, 6.316963942168118e-11, 7.797440897580077e-05];
+    let scale = [1.7954677635080078e-09, 1.2633927884336237e-10, 0.00015594881795160154];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 260860_f64, 0.0728757_f64], [0.0769866_f64, 39.0189_f64, 6.80481e+06_f64, 0.395751_f64], [1.0101_f64, 6.12953_f64, 177.51_f64, 0.218627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::linear_contact_duration_d_c1(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("closed_forms::linear_contact_duration_d_c1", &got, &expected, &scale);
+}
+
+#[test]
 fn free_flight_main_mass_displacement() {
     let expected = [0.002916059422279071, 0.0033542119577836442, -0.0015100236999920932];
     let scale = [0.008519636764358567, 0.011299939259534748, 0.08675038350351236];
@@ -596,6 +692,150 @@ fn forced_flight_forced_velocity() {
 }
 
 #[test]
+fn forced_flight_forced_displacement_d_t() {
+    let expected = [-3.582469517580021, 0.22535741998218997, 0.30639423474236777];
+    let scale = [9.752201978378293, 2.576120566630043, 0.6470017238516398];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_displacement_d_t(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_displacement_d_t", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_displacement_d_x0() {
+    let expected = [0.2277967187579221, -0.03630523276621419, 0.9842293577643402];
+    let scale = [1.0793116850624607, 1.0343308426353268, 1.9709491315946521];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_displacement_d_x0(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_displacement_d_x0", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_displacement_d_xdot0() {
+    let expected = [-0.001867844218883491, 0.007313775801781447, 0.0014271484693960178];
+    let scale = [0.0038064797406801047, 0.014632401698058854, 0.2338624222836518];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_displacement_d_xdot0(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_displacement_d_xdot0", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_displacement_d_F0() {
+    let expected = [1.807631760683126e-05, 1.753733706008945e-06, -2.831399056020138e-07];
+    let scale = [5.85774429849897e-05, 3.4757909051045753e-06, 9.577367155851846e-05];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_displacement_d_F0(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_displacement_d_F0", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_displacement_d_X_b() {
+    let expected = [0.865924446034428, 1.27239738450161, -0.00010658669358719146];
+    let scale = [2.806079676554524, 2.5219429846174983, 0.015680412829857136];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_displacement_d_X_b(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_displacement_d_X_b", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_displacement_d_phi() {
+    let expected = [-0.006864397100871322, -0.004527370952733622, 1.9391079670411544e-06];
+    let scale = [0.022426696886244633, 0.009815646260478846, 0.00015477729539001742];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_displacement_d_phi(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_displacement_d_phi", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_velocity_d_t() {
+    let expected = [551.7441436778978, -6.179680537813477, -0.36953528638146454];
+    let scale = [3050.8381336287907, 337.08964339277543, 2.0738368632203894];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_velocity_d_t(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_velocity_d_t", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_velocity_d_x0() {
+    let expected = [360.2125427530413, -136.00238915690514, -0.025589593276717587];
+    let scale = [734.2270130793975, 272.1010410173936, 4.214351032496912];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_velocity_d_x0(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_velocity_d_x0", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_velocity_d_xdot0() {
+    let expected = [0.22812553448044887, -0.036349741027029044, 0.9841988158422643];
+    let scale = [1.0796405007849874, 1.0343753508961417, 1.9709185896725763];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_velocity_d_xdot0(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_velocity_d_xdot0", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_velocity_d_F0() {
+    let expected = [0.006155799639727966, -0.0002951559046555919, -0.0003691415932009604];
+    let scale = [0.01653084575096147, 0.0005494283673640772, 0.001172644202211734];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_velocity_d_F0(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_velocity_d_F0", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_velocity_d_X_b() {
+    let expected = [294.88031657788486, -214.1615162175668, -0.04021838404907254];
+    let scale = [791.8837897320454, 398.66470065004575, 0.1712639413013542];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_velocity_d_X_b(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_velocity_d_X_b", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_velocity_d_phi() {
+    let expected = [-1.657196595263989, -0.36780325038285205, -8.130945683200315e-05];
+    let scale = [5.643742064372354, 1.1486500112726912, 0.0013673624321909306];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_velocity_d_phi(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]))
+        .collect();
+    check("forced_flight::forced_velocity_d_phi", &got, &expected, &scale);
+}
+
+#[test]
 fn forced_flight_steady_cosine() {
     let expected = [-0.2390237686564484, -0.007426459582678258, -0.0010676774409069149];
     let scale = [0.4780871824416633, 0.014852919165358594, 0.002135354881814534];
@@ -653,6 +893,78 @@ fn rigid_impact_impact_velocity_after() {
         .map(|p| symimpact::rigid_impact::impact_velocity_after(p[0], p[1], p[2], p[3], p[4]))
         .collect();
     check("rigid_impact::impact_velocity_after", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_main_velocity_after_d_e() {
+    let expected = [0.9258259428086487, -0.0003260780950686189, 0.0006773124668177276];
+    let scale = [1.8516518856172974, 0.0006521561901372377, 0.006734859639942183];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::main_velocity_after_d_e(p[0], p[1], p[2], p[3], p[4]))
+        .collect();
+    check("rigid_impact::main_velocity_after_d_e", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_main_velocity_after_d_xdot_minus() {
+    let expected = [-0.19791346124114692, 0.9995115325337702, 0.9675792705653878];
+    let scale = [2.3958269224822937, 2.0, 2.0];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::main_velocity_after_d_xdot_minus(p[0], p[1], p[2], p[3], p[4]))
+        .collect();
+    check("rigid_impact::main_velocity_after_d_xdot_minus", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_main_velocity_after_d_ydot_minus() {
+    let expected = [1.1979134612411468, 0.0004884674662297367, 0.03242072943461219];
+    let scale = [2.3958269224822937, 0.0009769349324594734, 0.06484145886922438];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::main_velocity_after_d_ydot_minus(p[0], p[1], p[2], p[3], p[4]))
+        .collect();
+    check("rigid_impact::main_velocity_after_d_ydot_minus", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_impact_velocity_after_d_e() {
+    let expected = [-0.41592105719135125, 1.3161799219049313, -0.02456368753318226];
+    let scale = [0.8318421143827025, 2.6323598438098625, 0.2442491403600578];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::impact_velocity_after_d_e(p[0], p[1], p[2], p[3], p[4]))
+        .collect();
+    check("rigid_impact::impact_velocity_after_d_e", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_impact_velocity_after_d_xdot_minus() {
+    let expected = [0.538154538758853, 1.9716475325337703, 1.175783270565388];
+    let scale = [1.076309077517706, 3.9432950650675407, 2.351566541130776];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::impact_velocity_after_d_xdot_minus(p[0], p[1], p[2], p[3], p[4]))
+        .collect();
+    check("rigid_impact::impact_velocity_after_d_xdot_minus", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_impact_velocity_after_d_ydot_minus() {
+    let expected = [0.461845461241147, -0.9716475325337702, -0.1757832705653878];
+    let scale = [2.0, 3.9432950650675407, 2.351566541130776];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::impact_velocity_after_d_ydot_minus(p[0], p[1], p[2], p[3], p[4]))
+        .collect();
+    check("rigid_impact::impact_velocity_after_d_ydot_minus", &got, &expected, &scale);
 }
 
 #[test]
@@ -917,6 +1229,114 @@ fn slow_flow_clearance_for_response() {
         .map(|p| symimpact::slow_flow::clearance_for_response(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
         .collect();
     check("slow_flow::clearance_for_response", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_d_main_mass() {
+    let expected = [-8.645067569238502e-06, 4.7673681068122075e-05, -0.0010375408524110898];
+    let scale = [1.7332960661064765e-05, 0.000148814035535072, 0.0023248435931612654];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_d_main_mass(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
+        .collect();
+    check("slow_flow::clearance_for_response_d_main_mass", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_d_K() {
+    let expected = [-4.245479647523432e-08, -2.2015113414877292e-08, 1.6141701878732862e-07];
+    let scale = [1.0162871512524641e-07, 2.1053276409487083e-07, 3.2861974288071283e-07];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_d_K(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
+        .collect();
+    check("slow_flow::clearance_for_response_d_K", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_d_C() {
+    let expected = [1.0501950590555848e-07, -6.698433777535246e-10, 4.5710375733521933e-07];
+    let scale = [2.100965668911972e-07, 2.0612935725739602e-09, 9.517565021610194e-07];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_d_C(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
+        .collect();
+    check("slow_flow::clearance_for_response_d_C", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_d_impact_mass() {
+    let expected = [-2.1229830331942447e-05, 3.729119563796722e-05, -0.0009269382908180645];
+    let scale = [8.842943705669158e-05, 8.470911913751996e-05, 0.0016765346590463775];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_d_impact_mass(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
+        .collect();
+    check("slow_flow::clearance_for_response_d_impact_mass", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_d_e() {
+    let expected = [-1.4718303745420558e-08, 1.0838163476448268e-07, -1.1292427223066737e-07];
+    let scale = [3.280461137909563e-07, 1.351615884437346e-06, 2.4495601676300704e-06];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_d_e(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
+        .collect();
+    check("slow_flow::clearance_for_response_d_e", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_d_F0() {
+    let expected = [-1.7438361607326342e-05, 5.988683475899715e-06, 1.3949657533409853e-05];
+    let scale = [4.127611499936895e-05, 1.248287512131932e-05, 2.7899315066819705e-05];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_d_F0(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
+        .collect();
+    check("slow_flow::clearance_for_response_d_F0", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_d_X_b() {
+    let expected = [-0.008647101622553796, 0.0734158735698532, 0.02687478745479328];
+    let scale = [0.020504611819891515, 0.15302882234066767, 0.05374957490958656];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_d_X_b(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
+        .collect();
+    check("slow_flow::clearance_for_response_d_X_b", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_d_Omega() {
+    let expected = [-1.736834263569008e-06, 2.1758814183652573e-05, -4.126642826847206e-06];
+    let scale = [3.484330272302455e-06, 6.789647412452392e-05, 9.241821990218337e-06];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_d_Omega(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
+        .collect();
+    check("slow_flow::clearance_for_response_d_Omega", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_d_xi() {
+    let expected = [-0.00024540155185923525, -1.2236490681613105e-05, -4.244074182258537e-05];
+    let scale = [0.000986267936067523, 0.00013462585814466184, 0.00021565872858590661];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_d_xi(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]))
+        .collect();
+    check("slow_flow::clearance_for_response_d_xi", &got, &expected, &scale);
 }
 
 #[test]

@@ -17,8 +17,9 @@ def add_parser(sub: Any) -> None:
     p.add_argument(
         "--target",
         required=True,
-        choices=("c", "octave", "numpy", "rust", "fortran", "jax"),
-        help="which kernels",
+        choices=("c", "c-cmake", "octave", "numpy", "rust", "fortran", "jax"),
+        help="which kernels (c-cmake: the C target, which is a CMake project, under the name a "
+        "CMake user looks for)",
     )
     p.add_argument(
         "--out", required=True, metavar="DIR", help="folder to create (new or empty unless --force)"
