@@ -21,6 +21,7 @@ from . import (
     frc,
     map_throughput,
     million_map,
+    parameter_derivative,
     startup,
     stepper_peers,
     targets,
@@ -35,6 +36,10 @@ SUITE = (
     ("5. start-up: import symimpact, symimpact simulate, python -m derive --check", startup.main),
     ("6. a 200-frequency response curve with stability against brute-force sweeps", frc.main),
     ("7. the generated targets (C, JAX, Rust, Fortran) against NumPy at 10^6 points", targets.main),
+    (
+        "8. the continuation's ∂P/∂p: the chain's derivative kernels against differences",
+        parameter_derivative.main,
+    ),
 )
 
 

@@ -203,15 +203,19 @@ class Board:
         self.kernels.append(k)
         return k
 
-    def derivatives(self, kernel: Kernel, wrt: tuple[str, ...]) -> list[Kernel]:
+    def derivatives(
+        self, kernel: Kernel, wrt: tuple[str, ...], given: dict[str, sp.Expr] | None = None
+    ) -> list[Kernel]:
         """Declare the partial derivatives of ``kernel`` with respect to the arguments named in
         ``wrt``: one kernel ``<name>_d_<arg>`` each, its expression ``sympy.diff`` of the value's,
         its unit the value's over the argument's, its error scale :func:`rounding_scale` of the
         derivative (the sum of its terms' sizes: what rounding cannot beat).
 
         An argument in the condition of a case distinction (a ``Piecewise``, e.g. the resonant
-        flight M·Ω² = K) is refused: differentiating case by case is wrong on the case's own set.
+        flight M·Ω² = K) is refused: differentiating case by case is wrong on the case's own set,
+        unless ``given`` holds the derivative the step derived for it (its case as a limit).
         An argument the value does not depend on gets no kernel (its derivative is zero)."""
+        given = given or {}
         cases = set().union(*(c.free_symbols for pw in kernel.expr.atoms(sp.Piecewise)
                                for _, c in pw.args))  # fmt: skip
         by_name = {a.name: a for a in kernel.args}
@@ -221,12 +225,12 @@ class Board:
             a = by_name[name]
             if a.symbol not in kernel.expr.free_symbols:
                 continue  # identically zero: nothing to emit
-            if a.symbol in cases:
+            if a.symbol in cases and name not in given:
                 raise ValueError(f"{kernel.name}: {name} appears in a case condition")
             # names that differ only in case (m, M) are one name in Fortran and in a file system
             # that ignores case (the Octave files): spelled out
             suffix = SPELLED[name] if lower.count(name.lower()) > 1 else name
-            d = sp.diff(kernel.expr, a.symbol)
+            d = given[name] if name in given else sp.diff(kernel.expr, a.symbol)
             out.append(
                 self.kernel(
                     name=f"{kernel.name}_d_{suffix}",
@@ -237,7 +241,8 @@ class Board:
                     unit=unit_quotient(kernel.unit, a.unit),
                     equation=kernel.equation,
                     lhs=rf"\partial {kernel.lhs} / \partial {sp.latex(a.symbol)}",
-                    note=f"sympy.diff of {kernel.name} in {name}",
+                    note=f"sympy.diff of {kernel.name} in {name}"
+                    + (" (the case's own limit derived on the board)" if name in given else ""),
                     printed=kernel.printed,
                     constraints=kernel.constraints,
                     magnitude=rounding_scale(d),

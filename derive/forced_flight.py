@@ -190,6 +190,37 @@ def derive() -> Board:
     # they decide the resonant case, where differentiating case by case would be wrong.
     for k in (x_kernel, v_kernel):
         board.derivatives(k, ("t", "x0", "xdot0", "F0", "X_b", "phi"))
+    # ∂/∂Ω, which the continuation in Ω needs: case by case off the resonant set; on it (C = 0,
+    # K = MΩ²) the limit of the undamped general derivative as the natural frequency tends to Ω,
+    # as the value's own resonant case is the limit of the general response.
+    wn = sp.Symbol("w", positive=True)
+    for k, g, what in (
+        (x_kernel, general, "displacement"),
+        (v_kernel, general.diff(t), "velocity"),
+    ):
+        lim = w(
+            f"{k.name}_d_Omega_resonant",
+            sp.simplify(sp.limit(g.subs(C, 0).diff(W).subs(K, M * wn**2), wn, W)),
+            f"∂/∂Ω of the flight's {what} at resonance: the limit ωₙ → Ω of the undamped general "
+            "derivative.",
+            "F1",
+        )
+        near = {M: sp.Rational(13, 10), W: 27, t: sp.Rational(7, 10), C: 0, F0: 2,
+                Xb: sp.Rational(1, 1000), phi: sp.Rational(3, 10), x0: sp.Rational(1, 100),
+                xd0: sp.Rational(1, 5)}  # fmt: skip
+        # the general derivative a relative 1e-30 off resonance, at 80 digits
+        off = sp.N(
+            g.diff(W).subs({**near, K: near[M] * near[W] ** 2 * (1 + sp.Rational(1, 10**30))}), 80
+        )
+        on = sp.N(lim.subs(near), 80)
+        board.check(
+            f"the {what}'s ∂/∂Ω at resonance is the limit of the general derivative",
+            "F1",
+            abs(off - on) <= sp.Float(1e-20) * abs(on),
+            f"{sp.N(on, 12)} at the resonance, {sp.N(off, 12)} a relative 1e-30 off it",
+        )
+        d = sp.Piecewise((lim, at_resonance), (g.diff(W), True))
+        board.derivatives(k, ("Omega",), given={"Omega": d})
     for name, coefficient, which in (
         ("steady_cosine", A_value, "cos"),
         ("steady_sine", B_value, "sin"),

@@ -8,7 +8,7 @@ expressions as every other target, checked against mpmath and JAX's own transfor
   XLA may fuse a batch differently, which moves the last bits).
 - ``jax.jacfwd`` of each kernel, with respect to every argument, at its first recorded point
   against the derivative of the derivation's expression (``sympy.diff``) evaluated by mpmath at
-  50 digits, to 1e-9 of the derivative's scale |∂f/∂xᵢ| + scale/|xᵢ|: differentiation through
+  50 digits, and against the JAX derivative kernels (``<kernel>_d_<argument>``) there, to 1e-9 of the derivative's scale |∂f/∂xᵢ| + scale/|xᵢ|: differentiation through
   the generated code multiplies rounding by the formula's conditioning, which 1e-9 leaves a
   factor 10⁶ above double rounding for.
 
@@ -128,7 +128,7 @@ def test_vmap_equals_single_calls(recorded, evaluated):
 
 
 @pytest.mark.slow  # about a minute and a half: sympy.diff and mpmath of every kernel
-def test_jacfwd_agrees_with_the_derivative_of_the_expression(recorded, tmp_path):
+def test_jacfwd_agrees_with_the_derivative_of_the_expression(recorded, evaluated, tmp_path):
     cases = [(m, k, pts[0]) for m, k, pts in recorded["kernels"] if k.args]
     jacobians = [(m, k.name, [float(a) for a in p.args]) for m, k, p in cases]
     payload = {"kernels": [], "iterations": [], "jacobians": jacobians}
@@ -142,3 +142,18 @@ def test_jacfwd_agrees_with_the_derivative_of_the_expression(recorded, tmp_path)
                 bound = GRAD_RTOL * (abs(exact) + mp.mpf(p.scale) / abs(args[i]))
                 assert abs(mp.mpf(jac[i]) - exact) <= bound, (
                     module, k.name, s, jac[i], float(exact))  # fmt: skip
+    # the derivative kernels (sympy.diff, issue 38 item 1) equal jacfwd of their value kernels
+    by_name = {(m, k.name): (k, p, jac) for (m, k, p), jac in zip(cases, jacobians, strict=True)}
+    compared = 0
+    for (module, k, points), (values, _, _) in zip(
+        recorded["kernels"], evaluated["kernels"], strict=True
+    ):
+        if k.derivative_of is None:
+            continue
+        value_kernel, p, jac = by_name[module, k.derivative_of[0]]
+        if p.args != points[0].args:  # the first recorded points differ: nothing to compare
+            continue
+        i = [a.name for a in value_kernel.args].index(k.derivative_of[1])
+        assert abs(values[0] - jac[i]) <= GRAD_RTOL * float(points[0].scale), (module, k.name)
+        compared += 1
+    assert compared >= 30

@@ -1485,6 +1485,58 @@ static void check_forced_flight_forced_velocity_d_phi(void)
     }
 }
 
+/* forced_flight.forced_displacement_d_Omega: ∂/∂Omega of: main-mass displacement x(t) in forced free flight (its partial... [m s/rad] */
+static void check_forced_flight_forced_displacement_d_Omega(void)
+{
+    static const double expected[3] = { -0.00869588846120767, -0.004100441483146047, 6.962252331472442e-07 };
+    static const double scale[3] = { 0.02300881477807726, 0.005288998178445128, 5.731746308190318e-06 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_Omega", i, symimpact_forced_flight_forced_displacement_d_Omega(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_displacement_d_Omega_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_displacement_d_Omega_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.forced_velocity_d_Omega: ∂/∂Omega of: main-mass velocity ẋ(t) in forced free flight (its partial... [m/rad] */
+static void check_forced_flight_forced_velocity_d_Omega(void)
+{
+    static const double expected[3] = { 0.8594746382688498, 0.3851992035937141, -0.000800832764858104 };
+    static const double scale[3] = { 1.9385147295685725, 0.589387439526462, 0.001779888262136834 };
+    static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+    static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+    static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+    static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+    static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_Omega", i, symimpact_forced_flight_forced_velocity_d_Omega(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_forced_velocity_d_Omega_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_forced_velocity_d_Omega_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* forced_flight.steady_cosine: Coefficient of cos(Ωt + φ) in the steady solution of the primary [m] */
 static void check_forced_flight_steady_cosine(void)
 {
@@ -2994,6 +3046,8 @@ int main(void)
     check_forced_flight_forced_velocity_d_F0();
     check_forced_flight_forced_velocity_d_X_b();
     check_forced_flight_forced_velocity_d_phi();
+    check_forced_flight_forced_displacement_d_Omega();
+    check_forced_flight_forced_velocity_d_Omega();
     check_forced_flight_steady_cosine();
     check_forced_flight_steady_sine();
     check_forced_flight_linear_amplitude();
@@ -3059,6 +3113,6 @@ int main(void)
     check_fixed_points_contact_duration_printed();
     check_fixed_points_hunt_crossley_restitution();
     check_fixed_points_hunt_crossley_peak_speed_ratio();
-    printf("symimpact: %ld checks of 128 kernels and 5 iterations, %ld failed\n", checks, failures);
+    printf("symimpact: %ld checks of 130 kernels and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1522,6 +1522,131 @@ void symimpact_forced_flight_forced_velocity_d_phi_batch(size_t n, const double 
     }
 }
 
+/* Eq. F1: \partial x(t) / \partial \Omega = \begin{cases} \frac{F_{0} \Omega^{2} t^{2} \cos{\left(\Omega t + \phi \right)} - F_{0} \Omega t \sin{\left(\Omega t + \phi \right)} + F_{0} \sin{\left(\phi \right)} \sin{\left(\Omega t \right)} + M \Omega^{4} X_{b} t^{2} \cos{\left(\Omega t + \phi \right)} - M \Omega^{3} X_{b} t \sin{\left(\Omega t + \phi \right)} + M \Omega^{2} X_{b} \sin{\left(\phi \right)} \sin{\left(\Omega t \right)}}{4 M \Omega^{3}} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\- \frac{t \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{t \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\Omega t + \phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \left(\left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\Omega \left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}} + \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_displacement_d_Omega(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = 1.0/M;
+    const double _x1 = pow(Omega, 3);
+    const double _x2 = sin(phi);
+    const double _x3 = Omega*t;
+    const double _x4 = _x2*sin(_x3);
+    const double _x5 = _x3 + phi;
+    const double _x6 = sin(_x5);
+    const double _x7 = pow(Omega, 2);
+    const double _x8 = M*_x7;
+    const double _x9 = cos(_x5);
+    const double _x10 = _x9*pow(t, 2);
+    const double _x11 = M*X_b;
+    const double _x12 = pow(C, 2);
+    const double _x13 = 2*Omega;
+    const double _x14 = _x12*_x13;
+    const double _x15 = F0 + K*X_b;
+    const double _x16 = -M*_x13*_x15 + X_b*_x14;
+    const double _x17 = _x12*_x7;
+    const double _x18 = K - _x8;
+    const double _x19 = _x17 + pow(_x18, 2);
+    const double _x20 = 1.0/_x19;
+    const double _x21 = _x20*_x9;
+    const double _x22 = C*X_b;
+    const double _x23 = _x18*_x22;
+    const double _x24 = C*Omega*_x15 - Omega*_x23;
+    const double _x25 = X_b*_x17 + _x15*_x18;
+    const double _x26 = _x20*_x6;
+    const double _x27 = C*_x15 + 2*_x22*_x8 - _x23;
+    const double _x28 = (4*M*Omega*_x18 - _x14)/pow(_x19, 2);
+    const double _x29 = _x24*_x28;
+    const double _x30 = _x25*_x28;
+    const double _x31 = (1.0/2.0)*C*_x0;
+    const double _x32 = sqrt(K*_x0 - 1.0/4.0*_x12/pow(M, 2));
+    const double _x33 = _x32*t;
+    const double _x34 = cos(phi);
+    const double _x35 = _x20*_x34;
+    const double _x36 = _x2*_x20;
+    const double _x37 = -_x16*_x35 - _x2*_x29 - _x27*_x36 - _x30*_x34;
+    return ((C == 0 && K == _x8) ? (
+   (1.0/4.0)*_x0*(F0*_x10*_x7 - F0*_x3*_x6 + F0*_x4 + pow(Omega, 4)*_x10*_x11 + X_b*_x4*_x8 - _x1*_x11*_x6*t)/_x1
+)
+: (
+   _x16*_x21 + _x21*_x24*t - _x25*_x26*t + _x26*_x27 + _x29*_x6 + _x30*_x9 + (_x37*cos(_x33) + (Omega*_x16*_x36 + Omega*_x2*_x30 - Omega*_x27*_x35 - Omega*_x29*_x34 - _x24*_x35 + _x25*_x36 + _x31*_x37)*sin(_x33)/_x32)*exp(-_x31*t)
+));
+}
+
+void symimpact_forced_flight_forced_displacement_d_Omega_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_displacement_d_Omega(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \partial \dot{x}(t) / \partial \Omega = \begin{cases} - \frac{F_{0} t^{2} \sin{\left(\Omega t + \phi \right)}}{4 M} + \frac{F_{0} t \cos{\left(\Omega t + \phi \right)}}{4 M \Omega} - \frac{F_{0} \sin{\left(\Omega t \right)} \cos{\left(\phi \right)}}{4 M \Omega^{2}} - \frac{\Omega^{2} X_{b} t^{2} \sin{\left(\Omega t + \phi \right)}}{4} + \frac{\Omega X_{b} t \cos{\left(\Omega t + \phi \right)}}{4} - \frac{X_{b} \sin{\left(\Omega t \right)} \cos{\left(\phi \right)}}{4} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\- \frac{C \left(\left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\Omega \left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}}}{2 M} - \frac{\Omega t \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega t \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\Omega \left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\Omega \left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \left(\frac{C \left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\Omega \left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases} */
+double symimpact_forced_flight_forced_velocity_d_Omega(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = (1.0/4.0)*X_b;
+    const double _x1 = cos(phi);
+    const double _x2 = Omega*t;
+    const double _x3 = _x1*sin(_x2);
+    const double _x4 = _x2 + phi;
+    const double _x5 = cos(_x4);
+    const double _x6 = sin(_x4);
+    const double _x7 = _x6*pow(t, 2);
+    const double _x8 = 1.0/M;
+    const double _x9 = (1.0/4.0)*F0*_x8;
+    const double _x10 = pow(Omega, 2);
+    const double _x11 = M*_x10;
+    const double _x12 = pow(C, 2);
+    const double _x13 = _x10*_x12;
+    const double _x14 = K - _x11;
+    const double _x15 = _x13 + pow(_x14, 2);
+    const double _x16 = 1.0/_x15;
+    const double _x17 = _x16*_x6;
+    const double _x18 = 2*Omega;
+    const double _x19 = _x12*_x18;
+    const double _x20 = F0 + K*X_b;
+    const double _x21 = -M*_x18*_x20 + X_b*_x19;
+    const double _x22 = Omega*_x21;
+    const double _x23 = X_b*_x13 + _x14*_x20;
+    const double _x24 = C*X_b;
+    const double _x25 = _x14*_x24;
+    const double _x26 = C*Omega*_x20 - Omega*_x25;
+    const double _x27 = C*_x20 + 2*_x11*_x24 - _x25;
+    const double _x28 = pow(_x15, -2);
+    const double _x29 = 4*M*Omega*_x14 - _x19;
+    const double _x30 = _x28*_x29;
+    const double _x31 = _x23*_x30;
+    const double _x32 = Omega*_x31;
+    const double _x33 = (1.0/2.0)*C*_x8;
+    const double _x34 = exp(-_x33*t);
+    const double _x35 = sqrt(K*_x8 - 1.0/4.0*_x12/pow(M, 2));
+    const double _x36 = _x35*t;
+    const double _x37 = sin(_x36);
+    const double _x38 = _x1*_x16;
+    const double _x39 = sin(phi);
+    const double _x40 = _x16*_x39;
+    const double _x41 = _x26*_x30;
+    const double _x42 = -_x1*_x31 - _x21*_x38 - _x27*_x40 - _x39*_x41;
+    const double _x43 = cos(_x36);
+    const double _x44 = -Omega*_x1*_x41 - Omega*_x27*_x38 + _x22*_x40 + _x23*_x40 - _x26*_x38 + _x32*_x39 + _x33*_x42;
+    return ((C == 0 && K == _x11) ? (
+   (1.0/4.0)*F0*_x5*_x8*t/Omega + (1.0/4.0)*Omega*X_b*_x5*t - _x0*_x10*_x7 - _x0*_x3 - _x7*_x9 - _x3*_x9/_x10
+)
+: (
+   Omega*_x16*_x27*_x5 + Omega*_x26*_x28*_x29*_x5 - _x16*_x2*_x23*_x5 + _x16*_x26*_x5 - _x17*_x2*_x26 - _x17*_x22 - _x17*_x23 - _x32*_x6 - _x33*_x34*(_x42*_x43 + _x37*_x44/_x35) + _x34*(-_x35*_x37*_x42 + _x43*_x44)
+));
+}
+
+void symimpact_forced_flight_forced_velocity_d_Omega_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_forced_velocity_d_Omega(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
 /* Eq. F1: A = \frac{C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} */
 double symimpact_forced_flight_steady_cosine(double M, double K, double C, double F0, double X_b, double Omega)
 {

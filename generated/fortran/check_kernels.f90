@@ -714,6 +714,36 @@ program check_kernels
 [0.77033_dp, -0.459341_dp, 0.310989_dp])
     call check("forced_flight_forced_velocity_d_phi", got, expected, scale)
 
+    ! forced_flight.forced_displacement_d_Omega
+    expected = [-0.00869588846120767_dp, -0.004100441483146047_dp, 6.962252331472442e-07_dp]
+    scale = [0.02300881477807726_dp, 0.005288998178445128_dp, 5.731746308190318e-06_dp]
+    got = forced_flight_forced_displacement_d_Omega([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_displacement_d_Omega", got, expected, scale)
+
+    ! forced_flight.forced_velocity_d_Omega
+    expected = [0.8594746382688498_dp, 0.3851992035937141_dp, -0.000800832764858104_dp]
+    scale = [1.9385147295685725_dp, 0.589387439526462_dp, 0.001779888262136834_dp]
+    got = forced_flight_forced_velocity_d_Omega([1.82843_dp, 0.656854_dp, 1.48528_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-0.00788897_dp, 0.00422205_dp, -0.00366692_dp], &
+[74.0145_dp, 173.234_dp, 405.462_dp], &
+[2.26106_dp, -1.77787_dp, 0.48319_dp], &
+[-0.00408337_dp, -0.00816674_dp, 0.00774989_dp], &
+[0.77033_dp, -0.459341_dp, 0.310989_dp])
+    call check("forced_flight_forced_velocity_d_Omega", got, expected, scale)
+
     ! forced_flight.steady_cosine
     expected = [-0.2390237686564484_dp, -0.007426459582678258_dp, -0.0010676774409069149_dp]
     scale = [0.4780871824416633_dp, 0.014852919165358594_dp, 0.002135354881814534_dp]
@@ -1428,7 +1458,7 @@ program check_kernels
     call check("fixed_points_hunt_crossley_peak_speed_ratio", got, expected, scale)
     call check_steps("fixed_points_hunt_crossley_peak_speed_ratio", taken, steps)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 128 kernels and 5 iterations, ", &
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 130 kernels and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

@@ -27,6 +27,8 @@ __all__ = [
     "forced_velocity_d_F0",
     "forced_velocity_d_X_b",
     "forced_velocity_d_phi",
+    "forced_displacement_d_Omega",
+    "forced_velocity_d_Omega",
     "steady_cosine",
     "steady_sine",
     "linear_amplitude",
@@ -544,6 +546,125 @@ def forced_velocity_d_phi(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
     _x25 = jax.numpy.cos(_x21)
     _x26 = Omega*_x16*_x6 + _x15*_x23 + _x18*_x24
     return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x8)]), axis=0),True], [(1/2)*(F0*Omega*_x2 - F0*_x5 + K*(Omega*X_b*_x2 - X_b*_x5) - Omega*(F0*_x6 + _x6*_x7)*jax.numpy.cos(_x0))/K,-Omega*_x16*_x2 - _x15*_x4 - _x18*_x19*(_x24*_x25 + _x22*_x26/_x20) + _x19*(-_x20*_x22*_x24 + _x25*_x26)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_displacement_d_Omega(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂Omega of: main-mass displacement x(t) in forced free flight (its partial derivative in forcing frequency Ω) [m s/rad], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = M**(-1.0)
+    _x1 = Omega**3
+    _x2 = jax.numpy.sin(phi)
+    _x3 = Omega*t
+    _x4 = _x2*jax.numpy.sin(_x3)
+    _x5 = _x3 + phi
+    _x6 = jax.numpy.sin(_x5)
+    _x7 = Omega**2
+    _x8 = M*_x7
+    _x9 = jax.numpy.cos(_x5)
+    _x10 = _x9*t**2
+    _x11 = M*X_b
+    _x12 = C**2
+    _x13 = 2*Omega
+    _x14 = _x12*_x13
+    _x15 = F0 + K*X_b
+    _x16 = -M*_x13*_x15 + X_b*_x14
+    _x17 = _x12*_x7
+    _x18 = K - _x8
+    _x19 = _x17 + _x18**2
+    _x20 = _x19**(-1.0)
+    _x21 = _x20*_x9
+    _x22 = C*X_b
+    _x23 = _x18*_x22
+    _x24 = C*Omega*_x15 - Omega*_x23
+    _x25 = X_b*_x17 + _x15*_x18
+    _x26 = _x20*_x6
+    _x27 = C*_x15 + 2*_x22*_x8 - _x23
+    _x28 = (4*M*Omega*_x18 - _x14)/_x19**2
+    _x29 = _x24*_x28
+    _x30 = _x25*_x28
+    _x31 = (1/2)*C*_x0
+    _x32 = jax.numpy.sqrt(K*_x0 - 1/4*_x12/M**2)
+    _x33 = _x32*t
+    _x34 = jax.numpy.cos(phi)
+    _x35 = _x20*_x34
+    _x36 = _x2*_x20
+    _x37 = -_x16*_x35 - _x2*_x29 - _x27*_x36 - _x30*_x34
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x8)]), axis=0),True], [(1/4)*_x0*(F0*_x10*_x7 - F0*_x3*_x6 + F0*_x4 + Omega**4*_x10*_x11 + X_b*_x4*_x8 - _x1*_x11*_x6*t)/_x1,_x16*_x21 + _x21*_x24*t - _x25*_x26*t + _x26*_x27 + _x29*_x6 + _x30*_x9 + (_x37*jax.numpy.cos(_x33) + (Omega*_x16*_x36 + Omega*_x2*_x30 - Omega*_x27*_x35 - Omega*_x29*_x34 - _x24*_x35 + _x25*_x36 + _x31*_x37)*jax.numpy.sin(_x33)/_x32)*jax.numpy.exp(-_x31*t)], default=jax.numpy.nan)
+
+
+@jax.jit
+def forced_velocity_d_Omega(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""∂/∂Omega of: main-mass velocity ẋ(t) in forced free flight (its partial derivative in forcing frequency Ω) [m/rad], Eq. F1 (derived here, beyond the paper).
+
+    ``t``: Time since the last event [s]
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = (1/4)*X_b
+    _x1 = jax.numpy.cos(phi)
+    _x2 = Omega*t
+    _x3 = _x1*jax.numpy.sin(_x2)
+    _x4 = _x2 + phi
+    _x5 = jax.numpy.cos(_x4)
+    _x6 = jax.numpy.sin(_x4)
+    _x7 = _x6*t**2
+    _x8 = M**(-1.0)
+    _x9 = (1/4)*F0*_x8
+    _x10 = Omega**2
+    _x11 = M*_x10
+    _x12 = C**2
+    _x13 = _x10*_x12
+    _x14 = K - _x11
+    _x15 = _x13 + _x14**2
+    _x16 = _x15**(-1.0)
+    _x17 = _x16*_x6
+    _x18 = 2*Omega
+    _x19 = _x12*_x18
+    _x20 = F0 + K*X_b
+    _x21 = -M*_x18*_x20 + X_b*_x19
+    _x22 = Omega*_x21
+    _x23 = X_b*_x13 + _x14*_x20
+    _x24 = C*X_b
+    _x25 = _x14*_x24
+    _x26 = C*Omega*_x20 - Omega*_x25
+    _x27 = C*_x20 + 2*_x11*_x24 - _x25
+    _x28 = _x15**(-2.0)
+    _x29 = 4*M*Omega*_x14 - _x19
+    _x30 = _x28*_x29
+    _x31 = _x23*_x30
+    _x32 = Omega*_x31
+    _x33 = (1/2)*C*_x8
+    _x34 = jax.numpy.exp(-_x33*t)
+    _x35 = jax.numpy.sqrt(K*_x8 - 1/4*_x12/M**2)
+    _x36 = _x35*t
+    _x37 = jax.numpy.sin(_x36)
+    _x38 = _x1*_x16
+    _x39 = jax.numpy.sin(phi)
+    _x40 = _x16*_x39
+    _x41 = _x26*_x30
+    _x42 = -_x1*_x31 - _x21*_x38 - _x27*_x40 - _x39*_x41
+    _x43 = jax.numpy.cos(_x36)
+    _x44 = -Omega*_x1*_x41 - Omega*_x27*_x38 + _x22*_x40 + _x23*_x40 - _x26*_x38 + _x32*_x39 + _x33*_x42
+    return jax.numpy.select([jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x11)]), axis=0),True], [(1/4)*F0*_x5*_x8*t/Omega + (1/4)*Omega*X_b*_x5*t - _x0*_x10*_x7 - _x0*_x3 - _x7*_x9 - _x3*_x9/_x10,Omega*_x16*_x27*_x5 + Omega*_x26*_x28*_x29*_x5 - _x16*_x2*_x23*_x5 + _x16*_x26*_x5 - _x17*_x2*_x26 - _x17*_x22 - _x17*_x23 - _x32*_x6 - _x33*_x34*(_x42*_x43 + _x37*_x44/_x35) + _x34*(-_x35*_x37*_x42 + _x43*_x44)], default=jax.numpy.nan)
 
 
 @jax.jit

@@ -59,6 +59,15 @@ _xf_x0 = njit(cache=True)(_fl.forced_displacement_d_x0_scalar)
 _xf_v0 = njit(cache=True)(_fl.forced_displacement_d_xdot0_scalar)
 _vf_x0 = njit(cache=True)(_fl.forced_velocity_d_x0_scalar)
 _vf_v0 = njit(cache=True)(_fl.forced_velocity_d_xdot0_scalar)
+# and its derivatives in the forcing, for the map's ∂P/∂p
+_xf_F0 = njit(cache=True)(_fl.forced_displacement_d_F0_scalar)
+_vf_F0 = njit(cache=True)(_fl.forced_velocity_d_F0_scalar)
+_xf_Xb = njit(cache=True)(_fl.forced_displacement_d_X_b_scalar)
+_vf_Xb = njit(cache=True)(_fl.forced_velocity_d_X_b_scalar)
+_xf_W = njit(cache=True)(_fl.forced_displacement_d_Omega_scalar)
+_vf_W = njit(cache=True)(_fl.forced_velocity_d_Omega_scalar)
+_xf_phi = njit(cache=True)(_fl.forced_displacement_d_phi_scalar)
+_vf_phi = njit(cache=True)(_fl.forced_velocity_d_phi_scalar)
 _steady_cos = njit(cache=True)(_fl.steady_cosine_scalar)
 _steady_sin = njit(cache=True)(_fl.steady_sine_scalar)
 
@@ -96,6 +105,33 @@ def flight_matrices(taus, masses, K, C):
         out[i, 1, 1] = _vf_v0(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
         out[i, 2, 0], out[i, 2, 1], out[i, 2, 2], out[i, 2, 3] = 1.0 - p11, -p12, 1.0, tau
         out[i, 3, 3] = 1.0
+    return out
+
+
+@njit(cache=True)
+def flight_parameter_terms(times, masses, xa, va, K, C, F0, X_b, W, phi, which):
+    """∂(x, ẋ)/∂p at the end of each flight from its fixed start (time ``times[i]``, state
+    ``xa[i]``, ``va[i]``, moving mass ``masses[i]``) to ``times[i + 1]``, the generated
+    derivative kernels of Eq. F1 compiled: ``which`` 0 F0, 1 X_b, 2 Ω (with the start phase
+    Ω·tₐ + φ moving too); returned, shape (n, 2)."""
+    n = masses.shape[0]
+    out = np.zeros((n, 2))
+    for i in range(n):
+        ta, tau = times[i], times[i + 1] - times[i]
+        mu, th, x0, v0 = masses[i], W * ta + phi, xa[i], va[i]
+        if which == 0:
+            out[i, 0] = _xf_F0(tau, mu, K, C, F0, X_b, W, th, x0, v0)
+            out[i, 1] = _vf_F0(tau, mu, K, C, F0, X_b, W, th, x0, v0)
+        elif which == 1:
+            out[i, 0] = _xf_Xb(tau, mu, K, C, F0, X_b, W, th, x0, v0)
+            out[i, 1] = _vf_Xb(tau, mu, K, C, F0, X_b, W, th, x0, v0)
+        else:
+            out[i, 0] = _xf_W(tau, mu, K, C, F0, X_b, W, th, x0, v0) + ta * _xf_phi(
+                tau, mu, K, C, F0, X_b, W, th, x0, v0
+            )
+            out[i, 1] = _vf_W(tau, mu, K, C, F0, X_b, W, th, x0, v0) + ta * _vf_phi(
+                tau, mu, K, C, F0, X_b, W, th, x0, v0
+            )
     return out
 
 

@@ -5,9 +5,12 @@ base-motion amplitude X_b or the restitution e: :func:`continue_orbit`.
 The unknowns are y = (s, p), s = (x, ẋ, z, ẏ) at the section t = 0, scaled by the starting
 orbit's amplitude, velocity amplitude, d/2, and p by a tenth of its range.  A point of the branch
 solves P(s; p) − s = 0 (P the stroboscopic map over k periods, :func:`symimpact.forced.monodromy`);
-its Jacobian is [monodromy − I | ∂P/∂p], the monodromy carried through flights and impacts and
-∂P/∂p by central differences (a parameter derivative: step 1e-6 of the parameter, or of a tenth
-of its range where that is larger; ~1e-10 of the map).  Each
+its Jacobian is [monodromy − I | ∂P/∂p], the monodromy carried through flights and impacts and,
+for rigid impacts, ∂P/∂p along the same chain (each link's explicit derivative in the parameter:
+the generated flight kernels ``forced_*_d_{F0,X_b,Omega,phi}``, the impact law's ``*_d_e``, the
+wall's move with d, the chatter's Δ and the end of the k periods in Ω,
+:func:`.shooting.rigid_monodromy`); for a compliant contact by central differences (step 1e-6
+of the parameter, or of a tenth of its range where that is larger; ~1e-10 of the map).  Each
 step predicts along the branch's unit tangent and corrects by Newton's method with the
 pseudo-arclength condition, so the branch is followed around folds.
 
@@ -178,11 +181,15 @@ class _Problem:
     def evaluate(self, y: np.ndarray):
         """(residual, Jacobian 4×5, monodromy, the simulation) at y, all scaled."""
         s, value = y[:4] * self.scale, y[4] * self.unit
-        ps, mono, res = monodromy(*self.at(value), s, self.periods)
-        d = 1e-6 * max(abs(value), self.unit)
-        plus = monodromy(*self.at(value + d), s, self.periods, jacobian=False)[0]
-        minus = monodromy(*self.at(value - d), s, self.periods, jacobian=False)[0]
-        dp = (plus - minus) / (2 * d) * self.unit
+        if is_rigid(self.e):  # ∂P/∂p carried along the monodromy's chain
+            ps, J5, res = monodromy(*self.at(value), s, self.periods, parameter=self.parameter)
+            mono, dp = J5[:, :4], J5[:, 4] * self.unit
+        else:  # a compliant contact: by central differences of the map
+            ps, mono, res = monodromy(*self.at(value), s, self.periods)
+            d = 1e-6 * max(abs(value), self.unit)
+            plus = monodromy(*self.at(value + d), s, self.periods, jacobian=False)[0]
+            minus = monodromy(*self.at(value - d), s, self.periods, jacobian=False)[0]
+            dp = (plus - minus) / (2 * d) * self.unit
         J = np.zeros((4, 5))
         J[:, :4] = (mono - np.eye(4)) * self.scale[None, :] / self.scale[:, None]
         J[:, 4] = dp / self.scale
