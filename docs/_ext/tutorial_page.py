@@ -79,6 +79,46 @@ K, M = beam_constants(E="{E}", I={I_AREA:.6g}, rho="{RHO}",
 print(f"K = {{K:.3f}} N/m, M = {{M:.4f}} kg")"""
     out += ["```python", code1, "```", "", "```text", _py(code1, env), "```", ""]
     M_modal = env["M"]
+    code1b = f"""import math
+from scipy.integrate import quad
+from symimpact.generated import ritz
+bL = ritz.BETA_L[0]                     # mode 1 (Eq. 4)
+m_beam = 2700 * {AREA:.6g} * 0.5  # kg
+# Eq. 3's shape scaled to unit modal mass, as an FE model
+# or a modal test reports a mode: phi^T M phi = 1
+norm = quad(lambda u: ritz.mode_shape(bL, u) ** 2, 0, 1)[0]
+def phi(xi):                            # kg^-1/2
+    return ritz.mode_shape(bL, xi) / math.sqrt(m_beam * norm)
+f_n = math.sqrt(K / M) / (2 * math.pi)
+for where, xi in (("tip", 1.0), ("mid-span", 0.5)):
+    M_d = 1 / phi(xi) ** 2              # kg, at the damper
+    K_d = M_d * (2 * math.pi * f_n) ** 2
+    print(f"damper at the {{where}}: phi = {{phi(xi):.4f}}, "
+          f"M = {{M_d:.4f}} kg, K = {{K_d:.2f}} N/m")
+print(f"f_n = {{f_n:.3f}} Hz; rho*A*L/4 = {{m_beam / 4:.4f}} kg")"""
+    out += [
+        "**The same from modal data.** A finite-element model or a modal test gives the natural "
+        "frequency f<sub>n</sub> and the mode shape normalised to unit modal mass (φᵀ**M**φ = 1, "
+        "φ in kg<sup>−1/2</sup>). The paper's one-mode model refers the motion to the point "
+        "where the damper sits, which moves by one unit: there the modal mass is M = 1/φ(x<sub>d"
+        "</sub>)² and the stiffness K = M(2πf<sub>n</sub>)². Here the beam's mode stands in for "
+        "what the FE model would print:",
+        "",
+        "```python",
+        code1b,
+        "```",
+        "",
+        "```text",
+        _py(code1b, env),
+        "```",
+        "",
+        "At the tip this is the Ritz M and K above (a cantilever's modal mass at its tip is a "
+        "quarter of its mass); at mid-span the same mode moves less, so the damper sees a larger "
+        "mass and stiffness, with the same f<sub>n</sub>. On the command line the modal data go "
+        "in as they are: `--fn` with `--M` (the modal mass at the damper), e.g. "
+        f'`--fn "{env["f_n"]:.4g} Hz" --M {M_modal:.4g}` for the tip.',
+        "",
+    ]
     ball = (
         f"steel sphere {1e3 * (6 * 0.1 * M_modal / (7850 * 3.141592653589793)) ** (1 / 3):.1f} mm"
     )
