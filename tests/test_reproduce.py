@@ -70,6 +70,8 @@ def test_every_table_has_its_csv_with_full_precision(report):
             for v, text in zip(raw, row, strict=True):
                 if isinstance(v, float):
                     assert float(text) == v  # round-trip exact
+                    # and the shortest such decimal: no float noise (0.1, not 0.10000000000000001)
+                    assert text == repr(float(v))
 
 
 def test_html_and_markdown_carry_version_command_and_every_figure(report):

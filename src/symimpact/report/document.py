@@ -81,12 +81,13 @@ class Section:
 
 
 def write_csv(table: Table, f: IO[str]) -> None:
-    """The table's raw values, floats with 17 significant digits (round-trip exact)."""
+    """The table's raw values, each float as its shortest round-trip decimal (``repr``: an
+    input of 0.1 reads 0.1, not 0.10000000000000001; every value reads back exactly)."""
     w = csv.writer(f, lineterminator="\n")
     w.writerow(table.columns)
     for row in table.rows:
         w.writerow(
-            ["" if v is None else format(v, ".17g") if isinstance(v, float) else v for v in row]
+            ["" if v is None else repr(float(v)) if isinstance(v, float) else v for v in row]
         )
 
 
