@@ -148,8 +148,38 @@ def target_signatures(module: str, name: str) -> list[str]:
         match = re.search(pattern, text, re.M)
         if match is None:
             raise RuntimeError(f"{target}: no declaration of {full} in generated/{path}")
-        out.append(f"{target + ':':<9}{match.group(1)}")
+        out += [f"{target}:", *_wrapped(match.group(1))]
     return out
+
+
+#: Longest line of a code block on a page: what the content column shows without scrolling at
+#: a 1000 px window (as the tutorial's, ``tutorial_page.CODE_COLUMNS``).
+CODE_COLUMNS = 64
+
+
+def _wrapped(signature: str, width: int = CODE_COLUMNS) -> list[str]:
+    """A declaration ``head(arg, arg, …)tail`` in lines of at most ``width`` characters: the
+    head indented 2 (its words split where it is too long), the arguments 6, packed."""
+    head, _, rest = signature.partition("(")
+    inner, _, tail = rest.rpartition(")")
+    lines, words = [], head.split(" ")
+    current = "  " + words[0]
+    for w in words[1:]:
+        if len(current) + 1 + len(w) + 1 > width:
+            lines.append(current)
+            current = "  " + w
+        else:
+            current += " " + w
+    current += "("
+    for i, a in enumerate(inner.split(", ") if inner else []):
+        piece = a + ("," if i < len(inner.split(", ")) - 1 else "")
+        if len(current) + 1 + len(piece) > width - len(tail) - 1:
+            lines.append(current)
+            current = "      " + piece
+        else:
+            current += ("" if current.endswith("(") else " ") + piece
+    lines.append(current + ")" + tail)
+    return lines
 
 
 def errata_page() -> str:
