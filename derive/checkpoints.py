@@ -133,11 +133,25 @@ def iteration_points(fp: FixedPoint) -> list[CheckPoint]:
     raise ValueError(f"{fp.name}: fewer than {POINTS} converging points in {CANDIDATES} tried")
 
 
+#: Points already found, by the identity of their kernel or iteration (which is kept alive with
+#: them): the C, Rust and Fortran backends and the tests ask for the same boards' points, and
+#: finding them is most of a derivation's time (mpmath at 50 digits).
+_FOUND: dict[int, tuple[object, list[CheckPoint]]] = {}
+
+
+def _once(item, find) -> list[CheckPoint]:
+    got = _FOUND.get(id(item))
+    if got is None or got[0] is not item:
+        got = _FOUND[id(item)] = (item, find(item))
+    return got[1]
+
+
 def recorded(boards: list[Board]) -> dict:
-    """``{"kernels": [(module, kernel, points)], "iterations": [(module, fp, points)]}``."""
+    """``{"kernels": [(module, kernel, points)], "iterations": [(module, fp, points)]}``; each
+    kernel's and iteration's points found once per process (:data:`_FOUND`)."""
     return {
-        "kernels": [(b.module, k, kernel_points(k)) for b in boards for k in b.kernels],
+        "kernels": [(b.module, k, _once(k, kernel_points)) for b in boards for k in b.kernels],
         "iterations": [
-            (b.module, fp, iteration_points(fp)) for b in boards for fp in b.fixed_points
+            (b.module, fp, _once(fp, iteration_points)) for b in boards for fp in b.fixed_points
         ],
     }
