@@ -37,6 +37,10 @@ if importlib.util.find_spec("jax") is None:  # pragma: no cover - the test extra
         raise ImportError("jax is not installed (the test extra installs it)")
     pytest.skip("jax is not installed", allow_module_level=True)
 
+#: In the slow set, which CI runs second: JAX's start and compilation of 130 kernels take about
+#: a minute, which the README's test command (within about twelve minutes) cannot spare.
+pytestmark = pytest.mark.slow
+
 RTOL = checkpoints.RTOL
 VMAP_RTOL = 1e-13
 GRAD_RTOL = 1e-9
@@ -127,7 +131,6 @@ def test_vmap_equals_single_calls(recorded, evaluated):
         assert np.all(diff <= VMAP_RTOL * scale), (module, k.name)
 
 
-@pytest.mark.slow  # about a minute and a half: sympy.diff and mpmath of every kernel
 def test_jacfwd_agrees_with_the_derivative_of_the_expression(recorded, evaluated, tmp_path):
     cases = [(m, k, pts[0]) for m, k, pts in recorded["kernels"] if k.args]
     jacobians = [(m, k.name, [float(a) for a in p.args]) for m, k, p in cases]
