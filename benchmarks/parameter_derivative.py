@@ -17,23 +17,10 @@ import numpy as np
 
 from symimpact.forced import continuation as cont
 from symimpact.forced.forcing import Forcing
-from symimpact.forced.shooting import monodromy, shoot_from_rest
+from symimpact.forced.shooting import shoot_from_rest
 from symimpact.system import ImpactSystem
 
 from .timing import timed
-
-
-def _differenced(self, y):
-    """The continuation's evaluation with ∂P/∂p by central differences of the map."""
-    s, value = y[:4] * self.scale, y[4] * self.unit
-    ps, mono, res = monodromy(*self.at(value), s, self.periods)
-    d = 1e-6 * max(abs(value), self.unit)
-    plus = monodromy(*self.at(value + d), s, self.periods, jacobian=False)[0]
-    minus = monodromy(*self.at(value - d), s, self.periods, jacobian=False)[0]
-    J = np.zeros((4, 5))
-    J[:, :4] = (mono - np.eye(4)) * self.scale[None, :] / self.scale[:, None]
-    J[:, 4] = (plus - minus) / (2 * d) * self.unit / self.scale
-    return (ps - s) / self.scale, J, mono, res
 
 
 def cases():
@@ -58,18 +45,17 @@ def cases():
 def main() -> None:
     print("continuation: ∂P/∂p along the chain (generated derivative kernels) against central "
           "differences of the map; median of 5 (fastest–slowest)")  # fmt: skip
-    chain = cont._Problem.evaluate
     for label, system, f, s0, bounds, parameter, direction in cases():
 
         def trace(system=system, f=f, s0=s0, bounds=bounds, p=parameter, d=direction):
             return cont.continue_orbit(system, f, 0.6, s0, bounds, parameter=p, direction=d)
 
         tc = timed(trace)
-        cont._Problem.evaluate = _differenced
+        cont._Problem.carried = False  # ∂P/∂p by central differences of the map
         try:
             td = timed(trace)
         finally:
-            cont._Problem.evaluate = chain
+            cont._Problem.carried = True
         a = np.array([(p.value, p.amplitude) for p in tc.out.points])
         b = np.array([(p.value, p.amplitude) for p in td.out.points])
         same = a.shape == b.shape

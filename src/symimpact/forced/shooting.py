@@ -190,9 +190,9 @@ def rigid_monodromy(
 
     ∂P/∂p is carried by the same chain with the parameter's explicit terms at each link
     (:class:`_ParameterTerms`): each flight's derivative at its fixed start (the generated
-    kernels ``forced_*_d_{F0,X_b,Omega,phi}``, compiled: :func:`._rigid.flight_parameter_terms`), an impact's through its time (the wall at d/2)
-    and its law (``*_velocity_after_d_e``), the chatter's Δ, and in Ω the end of the k periods,
-    T = 2πk/Ω.
+    kernels ``forced_*_d_{F0,X_b,Omega,phi}``, compiled: :func:`._rigid.flight_parameter_terms`),
+    an impact's through its time (the wall at d/2) and its law (``*_velocity_after_d_e``), the
+    chatter's Δ, and in Ω the end of the k periods, T = 2πk/Ω.
     """
     M, m = system.M, system.m
     W, phi = forcing.omega, forcing.phase
@@ -301,12 +301,12 @@ class _ParameterTerms:
     def impact_law(self, row) -> np.ndarray:
         """∂(x, ẋ⁺, z, ẏ⁺)/∂p of the impact law at fixed velocities before it: in e, the
         generated ``main_velocity_after_d_e`` and ``impact_velocity_after_d_e`` (Eq. F2)."""
-        out = np.zeros(5)
+        out = np.zeros(4)
         if self.parameter == "e":
             m, M, v, u = self.system.m, self.system.M, row[_rigid.E_XD], row[_rigid.E_YD]
             out[1] = ri.main_velocity_after_d_e_scalar(m, M, self.e, v, u)
             out[3] = ri.impact_velocity_after_d_e_scalar(m, M, self.e, v, u)
-        return out[:4]
+        return out
 
     def impact(self, row, acc) -> np.ndarray:
         """The parameter column of an impact's saltation: (G·f⁻ − f⁺)·∂t/∂p plus the law's own
