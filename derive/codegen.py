@@ -124,9 +124,21 @@ def kernel_body(
     return lines, printer.doprint(reduced), ops
 
 
+#: A derivative's formula written out longer than this (LaTeX characters) is no help to a reader
+#: (the closed-form orbit's run to 200 000): its docstring states what it is the derivative of.
+LONGEST_DERIVATIVE_LATEX = 4000
+
+
 def latex_of(kernel: Kernel) -> str:
-    """The kernel's formula in LaTeX, as ``lhs = expr``."""
-    return f"{kernel.lhs} = {sp.latex(kernel.expr)}"
+    """The kernel's formula in LaTeX, as ``lhs = expr``; a derivative kernel whose formula would
+    be longer than :data:`LONGEST_DERIVATIVE_LATEX` as ``lhs = ∂/∂arg`` of its value kernel."""
+    written = f"{kernel.lhs} = {sp.latex(kernel.expr)}"
+    if kernel.derivative_of is None or len(written) <= LONGEST_DERIVATIVE_LATEX:
+        return written
+    of, arg = kernel.derivative_of
+    by_name = {a.name: a for a in kernel.args}
+    name = of.replace("_", r"\_")
+    return rf"{kernel.lhs} = \frac{{\partial}}{{\partial {sp.latex(by_name[arg].symbol)}}}\,\mathtt{{{name}}}"
 
 
 def render_module(board: Board) -> str:

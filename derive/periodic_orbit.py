@@ -325,6 +325,7 @@ def derive() -> Board:
         sp.Symbol("phi", real=True), "rad", "Forcing phase at the first impact φ", -3.15, 3.15
     )
     on_phase = {cphi: sp.cos(aphi.symbol), sphi: sp.sin(aphi.symbol)}
+    at_phase_kernels = []
     for name, expr, what, unit in (
         ("impact_displacement", X_phi, "Main-mass displacement X at the first impact", "m"),
         ("main_velocity_after", V_phi, "Main-mass velocity V after the first impact", "m/s"),
@@ -335,7 +336,7 @@ def derive() -> Board:
             "m/s",
         ),
     ):
-        board.kernel(
+        k = board.kernel(
             name=name,
             args=(*args, aphi),
             expr=expr.subs(on_phase).subs(closed),
@@ -345,4 +346,30 @@ def derive() -> Board:
             equation="F3",
             lhs={"impact_displacement": "X", "main_velocity_after": "V"}.get(name, "U"),
         )
+        at_phase_kernels.append(k)
+    # --- the residual of the phase condition, and the orbit's slopes ----------------------------
+    # r(φ) = a·cos φ + b·sin φ − c vanishes on the orbit.  Its slopes in φ and in a parameter p
+    # give the phase's, dφ/dp = −(∂r/∂p)/(∂r/∂φ), and with ∂X/∂p + ∂X/∂φ·dφ/dp the state's: the
+    # orbit's sensitivity to the damper (m, e, d) and to the forcing (F0, X_b) without
+    # differencing.  Not in M, K, C, Ω: they enter through Φ and Γ, where C = 0 is a case and the
+    # resonant sinc's derivative cancels catastrophically next to ωₙ.
+    residual = board.kernel(
+        name="phase_residual",
+        args=(*args, aphi),
+        expr=(a_coef * cphi + b_coef * sphi - c_coef).subs(on_phase).subs(closed),
+        magnitude=(
+            _rounding_scale(a_coef) * sp.Abs(cphi)
+            + _rounding_scale(b_coef) * sp.Abs(sphi)
+            + _rounding_scale(c_coef)
+        )
+        .subs(on_phase)
+        .subs(closed),
+        returns="Residual r = a·cos φ + b·sin φ − c of the orbit's phase condition",
+        unit="kg m/s",
+        equation="F3",
+        lhs="r",
+    )
+    board.derivatives(residual, ("phi", "e", "d", "m", "F0", "X_b"))
+    for k in at_phase_kernels:
+        board.derivatives(k, ("phi", "e", "d"))
     return board

@@ -2046,6 +2046,422 @@ static void check_periodic_orbit_impact_mass_velocity_after(void)
     }
 }
 
+/* periodic_orbit.phase_residual: Residual r = a·cos φ + b·sin φ − c of the orbit's phase condition [kg m/s] */
+static void check_periodic_orbit_phase_residual(void)
+{
+    static const double expected[3] = { 0.0012034644155894218, 0.011224841892893645, -1.290319088743204e-07 };
+    static const double scale[3] = { 0.01539678364265028, 0.17294075261329953, 5.715294801898301e-07 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual", i, symimpact_periodic_orbit_phase_residual(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_phase_residual_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.phase_residual_d_phi: ∂/∂phi of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition... [kg m/rad/s] */
+static void check_periodic_orbit_phase_residual_d_phi(void)
+{
+    static const double expected[3] = { -0.0011779373061544648, 0.0069121197809340965, -8.428577153256806e-08 };
+    static const double scale[3] = { 0.020888493172773644, 2.471313652092032, 6.166974511500441e-07 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_phi", i, symimpact_periodic_orbit_phase_residual_d_phi(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_phase_residual_d_phi_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_phi_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.phase_residual_d_e: ∂/∂e of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition... [kg m/s] */
+static void check_periodic_orbit_phase_residual_d_e(void)
+{
+    static const double expected[3] = { 0.00018090449663344063, 0.02111567861172046, 2.615100132156169e-09 };
+    static const double scale[3] = { 0.01106398621828408, 2.2048111693539223, 5.138169185933974e-07 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_e", i, symimpact_periodic_orbit_phase_residual_d_e(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_phase_residual_d_e_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_e_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.phase_residual_d_d: ∂/∂d of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition... [kg/s] */
+static void check_periodic_orbit_phase_residual_d_d(void)
+{
+    static const double expected[3] = { -0.0009249279922699639, -0.813520334467653, -7.196738762399061e-05 };
+    static const double scale[3] = { 0.30975603356702497, 2.082074820287281, 0.00036311489617053404 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_d", i, symimpact_periodic_orbit_phase_residual_d_d(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_phase_residual_d_d_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_d_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.phase_residual_d_impact_mass: ∂/∂m of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition... [m/s] */
+static void check_periodic_orbit_phase_residual_d_impact_mass(void)
+{
+    static const double expected[3] = { -0.00022909607061149273, -0.007586401008704871, -2.2156238568002612e-08 };
+    static const double scale[3] = { 0.0007489781691765737, 0.03492074822151698, 1.0218096153371363e-07 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_impact_mass", i, symimpact_periodic_orbit_phase_residual_d_impact_mass(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_phase_residual_d_impact_mass_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_impact_mass_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.phase_residual_d_F0: ∂/∂F0 of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition... [kg m/N/s] */
+static void check_periodic_orbit_phase_residual_d_F0(void)
+{
+    static const double expected[3] = { 0.0002001405962600689, -4.1282603323015064e-05, -2.9572869996261017e-09 };
+    static const double scale[3] = { 0.0034623042132394064, 0.005574571815200737, 2.3265723421457293e-08 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_F0", i, symimpact_periodic_orbit_phase_residual_d_F0(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_phase_residual_d_F0_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_F0_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.phase_residual_d_X_b: ∂/∂X_b of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition... [kg/s] */
+static void check_periodic_orbit_phase_residual_d_X_b(void)
+{
+    static const double expected[3] = { 0.09903545075783521, -3.221616554347606, -3.63066282713426e-05 };
+    static const double scale[3] = { 1.7260600737880165, 435.03187012719485, 0.0002856036433680527 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_X_b", i, symimpact_periodic_orbit_phase_residual_d_X_b(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_phase_residual_d_X_b_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_phase_residual_d_X_b_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.impact_displacement_d_phi: ∂/∂phi of: main-mass displacement X at the first impact (its partial... [m/rad] */
+static void check_periodic_orbit_impact_displacement_d_phi(void)
+{
+    static const double expected[3] = { -0.03402621729556107, -0.005607966753125811, 0.00012662089896299728 };
+    static const double scale[3] = { 0.04600795791056222, 0.012160333893283503, 0.0005389811962243886 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_displacement_d_phi", i, symimpact_periodic_orbit_impact_displacement_d_phi(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_impact_displacement_d_phi_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_displacement_d_phi_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.impact_displacement_d_e: ∂/∂e of: main-mass displacement X at the first impact (its partial... [m] */
+static void check_periodic_orbit_impact_displacement_d_e(void)
+{
+    static const double expected[3] = { -0.011759400970147476, -0.00010933663476483657, 3.509319422002264e-05 };
+    static const double scale[3] = { 0.033420069786953346, 0.028791997137784364, 0.0011720281171092254 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_displacement_d_e", i, symimpact_periodic_orbit_impact_displacement_d_e(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_impact_displacement_d_e_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_displacement_d_e_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.impact_displacement_d_d: ∂/∂d of: main-mass displacement X at the first impact (its partial... [1] */
+static void check_periodic_orbit_impact_displacement_d_d(void)
+{
+    static const double expected[3] = { 0.004191291142670135, 0.008182969061042579, -0.025064016082724794 };
+    static const double scale[3] = { 0.09987652994774078, 0.013381906774496808, 0.1874988037215574 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_displacement_d_d", i, symimpact_periodic_orbit_impact_displacement_d_d(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_impact_displacement_d_d_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_displacement_d_d_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.main_velocity_after_d_phi: ∂/∂phi of: main-mass velocity V after the first impact (its partial... [m/rad/s] */
+static void check_periodic_orbit_main_velocity_after_d_phi(void)
+{
+    static const double expected[3] = { 0.01696159635872268, 0.004495465154285595, 0.016178436705647132 };
+    static const double scale[3] = { 0.0905467499189953, 0.2518960836502556, 0.04645384134185711 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_main_velocity_after_d_phi", i, symimpact_periodic_orbit_main_velocity_after_d_phi(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_main_velocity_after_d_phi_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_main_velocity_after_d_phi_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.main_velocity_after_d_e: ∂/∂e of: main-mass velocity V after the first impact (its partial derivative... [m/s] */
+static void check_periodic_orbit_main_velocity_after_d_e(void)
+{
+    static const double expected[3] = { -0.09783449449975665, 0.006116403036632686, -0.00011331844732091835 };
+    static const double scale[3] = { 0.2405118265040745, 2.4866171809089685, 0.09482038178342816 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_main_velocity_after_d_e", i, symimpact_periodic_orbit_main_velocity_after_d_e(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_main_velocity_after_d_e_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_main_velocity_after_d_e_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.main_velocity_after_d_d: ∂/∂d of: main-mass velocity V after the first impact (its partial derivative... [1/s] */
+static void check_periodic_orbit_main_velocity_after_d_d(void)
+{
+    static const double expected[3] = { -0.1708280208536544, -0.40717961515620826, -0.1406531491697867 };
+    static const double scale[3] = { 0.7744807843631336, 0.9472933252847798, 12.916278946239624 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_main_velocity_after_d_d", i, symimpact_periodic_orbit_main_velocity_after_d_d(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_main_velocity_after_d_d_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_main_velocity_after_d_d_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.impact_mass_velocity_after_d_phi: ∂/∂phi of: impact-mass velocity U after the first impact (its partial... [m/rad/s] */
+static void check_periodic_orbit_impact_mass_velocity_after_d_phi(void)
+{
+    static const double expected[3] = { 0.11735740829476811, 0.00602131475509867, -0.011097417925537768 };
+    static const double scale[3] = { 0.16785010808803266, 0.013159437433361698, 0.051946177326171024 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_mass_velocity_after_d_phi", i, symimpact_periodic_orbit_impact_mass_velocity_after_d_phi(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_impact_mass_velocity_after_d_phi_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_mass_velocity_after_d_phi_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.impact_mass_velocity_after_d_e: ∂/∂e of: impact-mass velocity U after the first impact (its partial... [m/s] */
+static void check_periodic_orbit_impact_mass_velocity_after_d_e(void)
+{
+    static const double expected[3] = { 0.042251841773672534, 0.00011871728472119854, -0.0075563806190504235 };
+    static const double scale[3] = { 0.13920713502036744, 0.04673431357879455, 0.13379401495812832 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_mass_velocity_after_d_e", i, symimpact_periodic_orbit_impact_mass_velocity_after_d_e(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_impact_mass_velocity_after_d_e_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_mass_velocity_after_d_e_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* periodic_orbit.impact_mass_velocity_after_d_d: ∂/∂d of: impact-mass velocity U after the first impact (its partial... [1/s] */
+static void check_periodic_orbit_impact_mass_velocity_after_d_d(void)
+{
+    static const double expected[3] = { -1.7347313225971392, -0.5456190166174647, -46.35338359032523 };
+    static const double scale[3] = { 2.9515879489552823, 1.0769098344412193, 76.89753487680608 };
+    static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+    static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+    static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+    static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+    static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+    static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+    static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+    static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+    static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_mass_velocity_after_d_d", i, symimpact_periodic_orbit_impact_mass_velocity_after_d_d(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i]), expected[i], scale[i]);
+    }
+    symimpact_periodic_orbit_impact_mass_velocity_after_d_d_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_periodic_orbit_impact_mass_velocity_after_d_d_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* hunt_crossley.max_penetration: Largest penetration of the Hunt–Crossley contact (n = 3/2) [m] */
 static void check_hunt_crossley_max_penetration(void)
 {
@@ -3071,6 +3487,22 @@ int main(void)
     check_periodic_orbit_impact_displacement();
     check_periodic_orbit_main_velocity_after();
     check_periodic_orbit_impact_mass_velocity_after();
+    check_periodic_orbit_phase_residual();
+    check_periodic_orbit_phase_residual_d_phi();
+    check_periodic_orbit_phase_residual_d_e();
+    check_periodic_orbit_phase_residual_d_d();
+    check_periodic_orbit_phase_residual_d_impact_mass();
+    check_periodic_orbit_phase_residual_d_F0();
+    check_periodic_orbit_phase_residual_d_X_b();
+    check_periodic_orbit_impact_displacement_d_phi();
+    check_periodic_orbit_impact_displacement_d_e();
+    check_periodic_orbit_impact_displacement_d_d();
+    check_periodic_orbit_main_velocity_after_d_phi();
+    check_periodic_orbit_main_velocity_after_d_e();
+    check_periodic_orbit_main_velocity_after_d_d();
+    check_periodic_orbit_impact_mass_velocity_after_d_phi();
+    check_periodic_orbit_impact_mass_velocity_after_d_e();
+    check_periodic_orbit_impact_mass_velocity_after_d_d();
     check_hunt_crossley_max_penetration();
     check_hunt_crossley_penetration_at_speed();
     check_hunt_crossley_force_at_speed();
@@ -3113,6 +3545,6 @@ int main(void)
     check_fixed_points_contact_duration_printed();
     check_fixed_points_hunt_crossley_restitution();
     check_fixed_points_hunt_crossley_peak_speed_ratio();
-    printf("symimpact: %ld checks of 130 kernels and 5 iterations, %ld failed\n", checks, failures);
+    printf("symimpact: %ld checks of 146 kernels and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

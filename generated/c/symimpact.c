@@ -1268,7 +1268,7 @@ void symimpact_forced_flight_forced_displacement_d_phi_batch(size_t n, const dou
     }
 }
 
-/* Eq. F1: \partial \dot{x}(t) / \partial t = \begin{cases} \frac{- F_{0} \Omega^{3} t \sin{\left(\Omega t + \phi \right)} + 2 F_{0} \Omega^{2} \cos{\left(\Omega t + \phi \right)} + K \left(- \Omega^{3} X_{b} t \sin{\left(\Omega t + \phi \right)} + 2 \Omega^{2} X_{b} \cos{\left(\Omega t + \phi \right)} - 2 \Omega^{2} x_{0} \cos{\left(\Omega t \right)}\right) + \Omega^{2} \left(F_{0} \sin{\left(\phi \right)} + K X_{b} \sin{\left(\phi \right)} - 2 M \Omega \dot{x}_{0}\right) \sin{\left(\Omega t \right)}}{2 K} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\\frac{C^{2} \left(\left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}}}{4 M^{2}} - \frac{C \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \left(\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}}}{M} - \frac{\Omega^{2} \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega^{2} \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} - \left(- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}\right) \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} & \text{otherwise} \end{cases} */
+/* Eq. F1: \partial \dot{x}(t) / \partial t = \frac{\partial}{\partial t}\,\mathtt{forced\_velocity} */
 double symimpact_forced_flight_forced_velocity_d_t(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
 {
     const double _x0 = Omega*t;
@@ -1522,7 +1522,7 @@ void symimpact_forced_flight_forced_velocity_d_phi_batch(size_t n, const double 
     }
 }
 
-/* Eq. F1: \partial x(t) / \partial \Omega = \begin{cases} \frac{F_{0} \Omega^{2} t^{2} \cos{\left(\Omega t + \phi \right)} - F_{0} \Omega t \sin{\left(\Omega t + \phi \right)} + F_{0} \sin{\left(\phi \right)} \sin{\left(\Omega t \right)} + M \Omega^{4} X_{b} t^{2} \cos{\left(\Omega t + \phi \right)} - M \Omega^{3} X_{b} t \sin{\left(\Omega t + \phi \right)} + M \Omega^{2} X_{b} \sin{\left(\phi \right)} \sin{\left(\Omega t \right)}}{4 M \Omega^{3}} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\- \frac{t \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{t \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\Omega t + \phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \left(\left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\Omega \left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}} + \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases} */
+/* Eq. F1: \partial x(t) / \partial \Omega = \frac{\partial}{\partial \Omega}\,\mathtt{forced\_displacement} */
 double symimpact_forced_flight_forced_displacement_d_Omega(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
 {
     (void)x0;
@@ -1581,7 +1581,7 @@ void symimpact_forced_flight_forced_displacement_d_Omega_batch(size_t n, const d
     }
 }
 
-/* Eq. F1: \partial \dot{x}(t) / \partial \Omega = \begin{cases} - \frac{F_{0} t^{2} \sin{\left(\Omega t + \phi \right)}}{4 M} + \frac{F_{0} t \cos{\left(\Omega t + \phi \right)}}{4 M \Omega} - \frac{F_{0} \sin{\left(\Omega t \right)} \cos{\left(\phi \right)}}{4 M \Omega^{2}} - \frac{\Omega^{2} X_{b} t^{2} \sin{\left(\Omega t + \phi \right)}}{4} + \frac{\Omega X_{b} t \cos{\left(\Omega t + \phi \right)}}{4} - \frac{X_{b} \sin{\left(\Omega t \right)} \cos{\left(\phi \right)}}{4} & \text{for}\: C = 0 \wedge K = M \Omega^{2} \\- \frac{C \left(\left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C \left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\Omega \left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}}}{2 M} - \frac{\Omega t \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega t \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\Omega \left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\Omega \left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \left(- \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \left(\frac{C \left(- \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} - \frac{\Omega \left(- 2 C^{2} \Omega + 4 M \Omega \left(K - M \Omega^{2}\right)\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{\left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)^{2}} + \frac{\Omega \left(2 C^{2} \Omega X_{b} - 2 M \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(2 C M \Omega^{2} X_{b} - C X_{b} \left(K - M \Omega^{2}\right) + C \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}\right) e^{- \frac{C t}{2 M}} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\Omega t + \phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases} */
+/* Eq. F1: \partial \dot{x}(t) / \partial \Omega = \frac{\partial}{\partial \Omega}\,\mathtt{forced\_velocity} */
 double symimpact_forced_flight_forced_velocity_d_Omega(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
 {
     (void)x0;
@@ -2476,6 +2476,1706 @@ void symimpact_periodic_orbit_impact_mass_velocity_after_batch(size_t n, const d
     }
 }
 
+/* Eq. F3: r = \left(- \frac{2 e \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} - \frac{\pi C X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{2}} - \frac{2 e \left(\begin{cases} - \frac{\pi C X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{2}} + \frac{2 e \left(\begin{cases} \frac{\pi C \sqrt{K} X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\Omega^{2} \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \frac{2 \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} - \frac{\pi C X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{2}} + \frac{2 \left(\begin{cases} - \frac{\pi C X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{2}} - \frac{2 \left(\begin{cases} \frac{\pi C \sqrt{K} X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\Omega^{2} \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \frac{\pi e \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} \frac{\pi C \sqrt{K} X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}}}{\Omega^{3}} - \frac{\pi e \left(- \frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} + \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(\begin{cases} - \frac{\pi C X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{3}} + \frac{\pi e \left(\begin{cases} \frac{\pi C \sqrt{K} X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{3}} + \frac{\pi \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} \frac{\pi C \sqrt{K} X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}}}{\Omega^{3}} - \frac{\pi \left(- \frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} + \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(\begin{cases} - \frac{\pi C X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{3}} + \frac{\pi \left(\begin{cases} \frac{\pi C \sqrt{K} X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{3}} - \frac{4 e m \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} - \frac{\pi C X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{M \Omega^{2}} + \frac{4 e m \left(\begin{cases} \frac{\pi C \sqrt{K} X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{M \Omega^{2} \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \frac{4 m \left(\begin{cases} - \frac{\pi C X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{M \Omega^{2}}\right) \sin{\left(\phi \right)} + \left(- \frac{2 e \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} - \frac{\pi C \Omega X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} + \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{2}} - \frac{2 e \left(\begin{cases} - \frac{\pi C \Omega X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} + \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{2}} + \frac{2 e \left(\begin{cases} - \frac{\pi C \Omega X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \sqrt{K} \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\Omega^{2} \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \frac{2 \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} - \frac{\pi C \Omega X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} + \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{2}} + \frac{2 \left(\begin{cases} - \frac{\pi C \Omega X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} + \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{2}} - \frac{2 \left(\begin{cases} - \frac{\pi C \Omega X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \sqrt{K} \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\Omega^{2} \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \frac{\pi e \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} - \frac{\pi C \Omega X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \sqrt{K} \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}}}{\Omega^{3}} - \frac{\pi e \left(- \frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} + \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(\begin{cases} - \frac{\pi C \Omega X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} + \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{3}} + \frac{\pi e \left(\begin{cases} - \frac{\pi C \Omega X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \sqrt{K} \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{3}} + \frac{\pi \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} - \frac{\pi C \Omega X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \sqrt{K} \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}}}{\Omega^{3}} - \frac{\pi \left(- \frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} + \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) \left(\begin{cases} - \frac{\pi C \Omega X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} + \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{3}} + \frac{\pi \left(\begin{cases} - \frac{\pi C \Omega X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \sqrt{K} \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{\Omega^{3}} - \frac{4 e m \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(\begin{cases} - \frac{\pi C \Omega X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} + \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{M \Omega^{2}} + \frac{4 e m \left(\begin{cases} - \frac{\pi C \Omega X_{b} \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} - \frac{\pi \sqrt{K} \left(F_{0} + K X_{b}\right) \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M^{\frac{3}{2}} \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\\frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \left(\frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - 1 - e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \left(\frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} - \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{M \Omega^{2} \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \frac{4 m \left(\begin{cases} - \frac{\pi C \Omega X_{b} \cos{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{\sqrt{K} \sqrt{M} \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} + \frac{\pi \left(F_{0} + K X_{b}\right) \sin{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)} \operatorname{sinc}{\left(\frac{\pi \left(- \frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)}{2 \Omega} \right)}}{M \Omega \left(\frac{\sqrt{K}}{\sqrt{M}} + \Omega\right)} & \text{for}\: C = 0 \\- \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}\right)} + \frac{\left(- \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}} - 1\right) \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} & \text{otherwise} \end{cases}\right)}{M \Omega^{2}}\right) \cos{\left(\phi \right)} + \frac{d e \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{\Omega^{2}} + \frac{d e \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{\Omega^{2}} + \frac{d e \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{\Omega^{2}} + \frac{d e}{\Omega^{2}} - \frac{d e \left(- \frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} + \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\Omega^{2} \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - \frac{d \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{\Omega^{2}} - \frac{d \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{\Omega^{2}} - \frac{d \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{\Omega^{2}} - \frac{d}{\Omega^{2}} + \frac{d \left(- \frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} + \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{\Omega^{2} \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \frac{2 d e m \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{M \Omega^{2}} + \frac{2 d e m \left(- \frac{C e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + e^{- \frac{\pi C}{2 M \Omega}} \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right)}{M \Omega^{2}} - \frac{2 d e m \left(- \frac{C \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{2 M} + \left(\frac{C \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}\right) e^{- \frac{\pi C}{2 M \Omega}} \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{M \Omega^{2} \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - \frac{2 d m \left(\frac{C \sin{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} + \cos{\left(\frac{\pi \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}{\Omega} \right)}\right) e^{- \frac{\pi C}{2 M \Omega}}}{M \Omega^{2}} - \frac{2 d m}{M \Omega^{2}} */
+double symimpact_periodic_orbit_phase_residual(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = 1.0/_x0;
+    const double _x2 = _x1*d;
+    const double _x3 = _x2*e;
+    const double _x4 = 1.0/M;
+    const double _x5 = _x4*m;
+    const double _x6 = 2*_x5;
+    const double _x7 = 1.0/Omega;
+    const double _x8 = 3.141592653589793*_x7;
+    const double _x9 = (1.0/2.0)*_x8;
+    const double _x10 = C*_x4;
+    const double _x11 = exp(-_x10*_x9);
+    const double _x12 = pow(C, 2);
+    const double _x13 = sqrt(K*_x4 - 1.0/4.0*_x12/pow(M, 2));
+    const double _x14 = _x13*_x8;
+    const double _x15 = cos(_x14);
+    const double _x16 = (1.0/2.0)*_x10;
+    const double _x17 = sin(_x14);
+    const double _x18 = _x17/_x13;
+    const double _x19 = _x16*_x18;
+    const double _x20 = _x11*(_x15 + _x19);
+    const double _x21 = _x2*_x20;
+    const double _x22 = _x11*_x15;
+    const double _x23 = _x11*_x19;
+    const double _x24 = _x22 - _x23;
+    const double _x25 = _x2*_x24;
+    const double _x26 = _x24*_x3;
+    const double _x27 = _x20*_x26;
+    const double _x28 = -_x11*(-_x13*_x17 + _x15*_x16) + _x16*_x20;
+    const double _x29 = -_x28;
+    const double _x30 = _x11*_x18;
+    const double _x31 = _x29*_x30;
+    const double _x32 = _x3*_x31;
+    const double _x33 = sqrt(K);
+    const double _x34 = pow(M, -1.0/2.0);
+    const double _x35 = _x33*_x34;
+    const double _x36 = _x9*(Omega - _x35);
+    const double _x37 = sin(_x36);
+    const double _x38 = 3.141592653589793*_x37;
+    const double _x39 = 1.0/(Omega + _x35);
+    const double _x40 = (((_x36 != 0) ? (
+   sin(_x36)/_x36
+)
+: (
+   1
+)));
+    const double _x41 = _x39*_x40;
+    const double _x42 = _x38*_x41;
+    const double _x43 = cos(_x36);
+    const double _x44 = F0 + K*X_b;
+    const double _x45 = _x39*_x40*_x44;
+    const double _x46 = _x43*_x45;
+    const double _x47 = 3.141592653589793*_x34/_x33;
+    const double _x48 = C == 0;
+    const double _x49 = _x0*_x12;
+    const double _x50 = K - M*_x0;
+    const double _x51 = 1.0/(_x49 + pow(_x50, 2));
+    const double _x52 = X_b*_x49 + _x44*_x50;
+    const double _x53 = _x51*_x52;
+    const double _x54 = Omega*_x30;
+    const double _x55 = -_x20 - 1;
+    const double _x56 = C*Omega*X_b;
+    const double _x57 = C*Omega*_x44 - _x50*_x56;
+    const double _x58 = _x51*_x57;
+    const double _x59 = ((_x48) ? (
+   -X_b*_x10*_x42 - _x46*_x47
+)
+: (
+   _x53*_x54 + _x55*_x58
+));
+    const double _x60 = 2*_x1;
+    const double _x61 = _x59*_x60;
+    const double _x62 = _x61*e;
+    const double _x63 = 4*_x1*_x5;
+    const double _x64 = _x59*_x63;
+    const double _x65 = _x24*e;
+    const double _x66 = _x33/pow(M, 3.0/2.0);
+    const double _x67 = _x41*_x43;
+    const double _x68 = Omega*(-_x22 + _x23 - 1);
+    const double _x69 = ((_x48) ? (
+   3.141592653589793*C*X_b*_x66*_x67 - _x38*_x4*_x45
+)
+: (
+   _x28*_x51*_x57 - _x53*_x68
+));
+    const double _x70 = 3.141592653589793/pow(Omega, 3);
+    const double _x71 = _x69*_x70;
+    const double _x72 = _x71*e;
+    const double _x73 = _x29*_x70;
+    const double _x74 = _x59*_x73;
+    const double _x75 = _x30*_x60;
+    const double _x76 = _x69*_x75;
+    const double _x77 = _x30*_x63*e;
+    const double _x78 = ((_x48) ? (
+   3.141592653589793*_x37*_x39*_x4*_x40*_x44*_x7 - _x47*_x56*_x67
+)
+: (
+   _x51*_x52*_x55 - _x54*_x58
+));
+    const double _x79 = _x60*_x78;
+    const double _x80 = _x79*e;
+    const double _x81 = _x63*_x78;
+    const double _x82 = ((_x48) ? (
+   -_x4*_x42*_x56 - _x46*_x66*_x8
+)
+: (
+   _x28*_x53 + _x58*_x68
+));
+    const double _x83 = _x70*_x82;
+    const double _x84 = _x83*e;
+    const double _x85 = _x73*_x78;
+    const double _x86 = _x75*_x82;
+    return _x2*_x31 - _x2*_x6 - _x2 - _x20*_x25 + _x20*_x3 - _x21*_x6 - _x21 - _x25 + _x26*_x6 + _x26 + _x27*_x6 + _x27 + _x3 - _x32*_x6 - _x32 + (_x20*_x71 + _x20*_x72 + _x24*_x61 - _x24*_x62 + _x61 - _x62 - _x64*_x65 + _x64 + _x69*_x77 + _x71 + _x72 - _x74*e - _x74 + _x76*e - _x76)*sin(phi) + (_x20*_x83 + _x20*_x84 + _x24*_x79 - _x24*_x80 - _x65*_x81 + _x77*_x82 + _x79 - _x80 + _x81 + _x83 + _x84 - _x85*e - _x85 + _x86*e - _x86)*cos(phi);
+}
+
+void symimpact_periodic_orbit_phase_residual_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_phase_residual(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial r / \partial \phi = \frac{\partial}{\partial \phi}\,\mathtt{phase\_residual} */
+double symimpact_periodic_orbit_phase_residual_d_phi(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    const double _x0 = 1.0/M;
+    const double _x1 = C*_x0;
+    const double _x2 = sqrt(K);
+    const double _x3 = pow(M, -1.0/2.0);
+    const double _x4 = _x2*_x3;
+    const double _x5 = 1.0/Omega;
+    const double _x6 = 3.141592653589793*_x5;
+    const double _x7 = (1.0/2.0)*_x6;
+    const double _x8 = _x7*(Omega - _x4);
+    const double _x9 = sin(_x8);
+    const double _x10 = 1.0/(Omega + _x4);
+    const double _x11 = (((_x8 != 0) ? (
+   sin(_x8)/_x8
+)
+: (
+   1
+)));
+    const double _x12 = 3.141592653589793*_x10*_x11;
+    const double _x13 = _x12*_x9;
+    const double _x14 = F0 + K*X_b;
+    const double _x15 = cos(_x8);
+    const double _x16 = _x12*_x15;
+    const double _x17 = _x16*_x3/_x2;
+    const double _x18 = C == 0;
+    const double _x19 = pow(C, 2);
+    const double _x20 = pow(Omega, 2);
+    const double _x21 = _x19*_x20;
+    const double _x22 = K - M*_x20;
+    const double _x23 = 1.0/(_x21 + pow(_x22, 2));
+    const double _x24 = X_b*_x21 + _x14*_x22;
+    const double _x25 = _x23*_x24;
+    const double _x26 = exp(-_x1*_x7);
+    const double _x27 = sqrt(K*_x0 - 1.0/4.0*_x19/pow(M, 2));
+    const double _x28 = _x27*_x6;
+    const double _x29 = sin(_x28);
+    const double _x30 = _x29/_x27;
+    const double _x31 = _x26*_x30;
+    const double _x32 = Omega*_x31;
+    const double _x33 = cos(_x28);
+    const double _x34 = (1.0/2.0)*_x1;
+    const double _x35 = _x30*_x34;
+    const double _x36 = _x26*(_x33 + _x35);
+    const double _x37 = -_x36 - 1;
+    const double _x38 = C*Omega*X_b;
+    const double _x39 = C*Omega*_x14 - _x22*_x38;
+    const double _x40 = _x23*_x39;
+    const double _x41 = ((_x18) ? (
+   -X_b*_x1*_x13 - _x14*_x17
+)
+: (
+   _x25*_x32 + _x37*_x40
+));
+    const double _x42 = 1.0/_x20;
+    const double _x43 = 2*_x42;
+    const double _x44 = _x41*_x43;
+    const double _x45 = _x44*e;
+    const double _x46 = 4*_x0*_x42*m;
+    const double _x47 = _x41*_x46;
+    const double _x48 = _x26*_x33;
+    const double _x49 = _x26*_x35;
+    const double _x50 = _x48 - _x49;
+    const double _x51 = _x50*e;
+    const double _x52 = _x2/pow(M, 3.0/2.0);
+    const double _x53 = Omega*(-_x48 + _x49 - 1);
+    const double _x54 = -_x26*(-_x27*_x29 + _x33*_x34) + _x34*_x36;
+    const double _x55 = ((_x18) ? (
+   C*X_b*_x16*_x52 - _x0*_x13*_x14
+)
+: (
+   _x23*_x39*_x54 - _x25*_x53
+));
+    const double _x56 = 3.141592653589793/pow(Omega, 3);
+    const double _x57 = _x55*_x56;
+    const double _x58 = _x57*e;
+    const double _x59 = -_x54*_x56;
+    const double _x60 = _x41*_x59;
+    const double _x61 = _x31*_x43;
+    const double _x62 = _x55*_x61;
+    const double _x63 = _x31*_x46*e;
+    const double _x64 = ((_x18) ? (
+   3.141592653589793*_x0*_x10*_x11*_x14*_x5*_x9 - _x17*_x38
+)
+: (
+   _x23*_x24*_x37 - _x32*_x40
+));
+    const double _x65 = _x43*_x64;
+    const double _x66 = _x65*e;
+    const double _x67 = _x46*_x64;
+    const double _x68 = ((_x18) ? (
+   -_x0*_x13*_x38 - _x10*_x11*_x14*_x15*_x52*_x6
+)
+: (
+   _x25*_x54 + _x40*_x53
+));
+    const double _x69 = _x56*_x68;
+    const double _x70 = _x69*e;
+    const double _x71 = _x59*_x64;
+    const double _x72 = _x61*_x68;
+    return (_x36*_x57 + _x36*_x58 + _x44*_x50 + _x44 - _x45*_x50 - _x45 - _x47*_x51 + _x47 + _x55*_x63 + _x57 + _x58 - _x60*e - _x60 + _x62*e - _x62)*cos(phi) - (_x36*_x69 + _x36*_x70 + _x50*_x65 - _x50*_x66 - _x51*_x67 + _x63*_x68 + _x65 - _x66 + _x67 + _x69 + _x70 - _x71*e - _x71 + _x72*e - _x72)*sin(phi);
+}
+
+void symimpact_periodic_orbit_phase_residual_d_phi_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_phase_residual_d_phi(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial r / \partial e = \frac{\partial}{\partial e}\,\mathtt{phase\_residual} */
+double symimpact_periodic_orbit_phase_residual_d_e(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)e;
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = 1.0/_x0;
+    const double _x2 = _x1*d;
+    const double _x3 = 1.0/Omega;
+    const double _x4 = 3.141592653589793*_x3;
+    const double _x5 = (1.0/2.0)*_x4;
+    const double _x6 = 1.0/M;
+    const double _x7 = C*_x6;
+    const double _x8 = exp(-_x5*_x7);
+    const double _x9 = pow(C, 2);
+    const double _x10 = sqrt(K*_x6 - 1.0/4.0*_x9/pow(M, 2));
+    const double _x11 = _x10*_x4;
+    const double _x12 = cos(_x11);
+    const double _x13 = (1.0/2.0)*_x7;
+    const double _x14 = sin(_x11);
+    const double _x15 = 1.0/_x10;
+    const double _x16 = _x14*_x15;
+    const double _x17 = _x13*_x16;
+    const double _x18 = _x12 + _x17;
+    const double _x19 = _x18*_x8;
+    const double _x20 = _x12*_x8;
+    const double _x21 = _x17*_x8;
+    const double _x22 = _x20 - _x21;
+    const double _x23 = _x2*_x22;
+    const double _x24 = _x6*m;
+    const double _x25 = 2*_x24;
+    const double _x26 = _x19*_x23;
+    const double _x27 = _x13*_x19 - _x8*(-_x10*_x14 + _x12*_x13);
+    const double _x28 = -_x27;
+    const double _x29 = _x16*_x8;
+    const double _x30 = _x2*_x28*_x29;
+    const double _x31 = sqrt(K);
+    const double _x32 = pow(M, -1.0/2.0);
+    const double _x33 = _x31*_x32;
+    const double _x34 = _x5*(Omega - _x33);
+    const double _x35 = sin(_x34);
+    const double _x36 = 3.141592653589793*_x35;
+    const double _x37 = 1.0/(Omega + _x33);
+    const double _x38 = (((_x34 != 0) ? (
+   sin(_x34)/_x34
+)
+: (
+   1
+)));
+    const double _x39 = _x37*_x38;
+    const double _x40 = _x36*_x39;
+    const double _x41 = cos(_x34);
+    const double _x42 = F0 + K*X_b;
+    const double _x43 = _x37*_x38*_x42;
+    const double _x44 = _x41*_x43;
+    const double _x45 = 3.141592653589793*_x32/_x31;
+    const double _x46 = C == 0;
+    const double _x47 = _x0*_x9;
+    const double _x48 = K - M*_x0;
+    const double _x49 = 1.0/(_x47 + pow(_x48, 2));
+    const double _x50 = X_b*_x47 + _x42*_x48;
+    const double _x51 = _x49*_x50;
+    const double _x52 = Omega*_x29;
+    const double _x53 = -_x19 - 1;
+    const double _x54 = C*Omega*X_b;
+    const double _x55 = C*Omega*_x42 - _x48*_x54;
+    const double _x56 = _x49*_x55;
+    const double _x57 = ((_x46) ? (
+   -X_b*_x40*_x7 - _x44*_x45
+)
+: (
+   _x51*_x52 + _x53*_x56
+));
+    const double _x58 = 2*_x1;
+    const double _x59 = _x57*_x58;
+    const double _x60 = 4*_x1*_x22*_x24;
+    const double _x61 = pow(Omega, -3);
+    const double _x62 = _x31/pow(M, 3.0/2.0);
+    const double _x63 = _x39*_x41;
+    const double _x64 = Omega*(-_x20 + _x21 - 1);
+    const double _x65 = ((_x46) ? (
+   3.141592653589793*C*X_b*_x62*_x63 - _x36*_x43*_x6
+)
+: (
+   _x27*_x49*_x55 - _x51*_x64
+));
+    const double _x66 = 3.141592653589793*_x28*_x61;
+    const double _x67 = ((_x46) ? (
+   3.141592653589793*_x3*_x35*_x37*_x38*_x42*_x6 - _x45*_x54*_x63
+)
+: (
+   _x49*_x50*_x53 - _x52*_x56
+));
+    const double _x68 = _x58*_x67;
+    const double _x69 = ((_x46) ? (
+   -_x4*_x44*_x62 - _x40*_x54*_x6
+)
+: (
+   _x27*_x51 + _x56*_x64
+));
+    return _x19*_x2 + _x2 + _x23*_x25 + _x23 + _x25*_x26 - _x25*_x30 + _x26 - _x30 + (4*_x1*_x14*_x15*_x6*_x65*_x8*m + 2*_x1*_x14*_x15*_x65*_x8 + 3.141592653589793*_x18*_x61*_x65*_x8 - _x22*_x59 - _x57*_x60 - _x57*_x66 - _x59 + 3.141592653589793*_x61*_x65)*sin(phi) + (4*_x1*_x14*_x15*_x6*_x69*_x8*m + 2*_x1*_x14*_x15*_x69*_x8 + 3.141592653589793*_x18*_x61*_x69*_x8 - _x22*_x68 - _x60*_x67 + 3.141592653589793*_x61*_x69 - _x66*_x67 - _x68)*cos(phi);
+}
+
+void symimpact_periodic_orbit_phase_residual_d_e_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_phase_residual_d_e(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial r / \partial d = \frac{\partial}{\partial d}\,\mathtt{phase\_residual} */
+double symimpact_periodic_orbit_phase_residual_d_d(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    (void)F0;
+    (void)X_b;
+    (void)phi;
+    const double _x0 = pow(Omega, -2);
+    const double _x1 = 1.0/M;
+    const double _x2 = 2*_x1*m;
+    const double _x3 = 3.141592653589793/Omega;
+    const double _x4 = (1.0/2.0)*C*_x1;
+    const double _x5 = exp(-_x3*_x4);
+    const double _x6 = sqrt(-1.0/4.0*pow(C, 2)/pow(M, 2) + K*_x1);
+    const double _x7 = _x3*_x6;
+    const double _x8 = cos(_x7);
+    const double _x9 = sin(_x7);
+    const double _x10 = 1.0/_x6;
+    const double _x11 = _x10*_x9;
+    const double _x12 = _x11*_x4;
+    const double _x13 = _x12 + _x8;
+    const double _x14 = _x13*_x5;
+    const double _x15 = _x0*_x14;
+    const double _x16 = -_x12*_x5 + _x5*_x8;
+    const double _x17 = _x0*_x16;
+    const double _x18 = -_x14*_x4 + _x5*(_x4*_x8 - _x6*_x9);
+    const double _x19 = _x0*_x11*_x18*_x5*e;
+    return 2*_x0*_x1*_x13*_x16*_x5*e*m + 2*_x0*_x1*_x16*e*m + _x0*_x10*_x18*_x5*_x9 + _x0*_x13*_x16*_x5*e + _x0*_x13*_x5*e + _x0*_x16*e - _x0*_x2 + _x0*e - _x0 - _x14*_x17 - _x15*_x2 - _x15 - _x17 - _x19*_x2 - _x19;
+}
+
+void symimpact_periodic_orbit_phase_residual_d_d_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_phase_residual_d_d(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial r / \partial m = \frac{\partial}{\partial m}\,\mathtt{phase\_residual} */
+double symimpact_periodic_orbit_phase_residual_d_impact_mass(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)m;
+    const double _x0 = 1.0/M;
+    const double _x1 = pow(Omega, 2);
+    const double _x2 = _x0/_x1;
+    const double _x3 = 2*_x2*d;
+    const double _x4 = 1.0/Omega;
+    const double _x5 = 3.141592653589793*_x4;
+    const double _x6 = (1.0/2.0)*_x5;
+    const double _x7 = C*_x0;
+    const double _x8 = exp(-_x6*_x7);
+    const double _x9 = pow(C, 2);
+    const double _x10 = sqrt(K*_x0 - 1.0/4.0*_x9/pow(M, 2));
+    const double _x11 = _x10*_x5;
+    const double _x12 = cos(_x11);
+    const double _x13 = (1.0/2.0)*_x7;
+    const double _x14 = sin(_x11);
+    const double _x15 = _x14/_x10;
+    const double _x16 = _x13*_x15;
+    const double _x17 = _x8*(_x12 + _x16);
+    const double _x18 = _x17*_x3;
+    const double _x19 = _x12*_x8;
+    const double _x20 = _x16*_x8;
+    const double _x21 = e*(_x19 - _x20);
+    const double _x22 = _x13*_x17 - _x8*(-_x10*_x14 + _x12*_x13);
+    const double _x23 = _x15*_x8;
+    const double _x24 = _x23*e;
+    const double _x25 = sqrt(K);
+    const double _x26 = pow(M, -1.0/2.0);
+    const double _x27 = _x25*_x26;
+    const double _x28 = _x6*(Omega - _x27);
+    const double _x29 = sin(_x28);
+    const double _x30 = 3.141592653589793*_x29;
+    const double _x31 = 1.0/(Omega + _x27);
+    const double _x32 = (((_x28 != 0) ? (
+   sin(_x28)/_x28
+)
+: (
+   1
+)));
+    const double _x33 = _x31*_x32;
+    const double _x34 = _x30*_x33;
+    const double _x35 = cos(_x28);
+    const double _x36 = F0 + K*X_b;
+    const double _x37 = _x31*_x32*_x36;
+    const double _x38 = _x35*_x37;
+    const double _x39 = 3.141592653589793*_x26/_x25;
+    const double _x40 = C == 0;
+    const double _x41 = _x1*_x9;
+    const double _x42 = K - M*_x1;
+    const double _x43 = 1.0/(_x41 + pow(_x42, 2));
+    const double _x44 = X_b*_x41 + _x36*_x42;
+    const double _x45 = _x43*_x44;
+    const double _x46 = Omega*_x23;
+    const double _x47 = -_x17 - 1;
+    const double _x48 = C*Omega*X_b;
+    const double _x49 = C*Omega*_x36 - _x42*_x48;
+    const double _x50 = _x43*_x49;
+    const double _x51 = 4*_x2;
+    const double _x52 = _x51*((_x40) ? (
+   -X_b*_x34*_x7 - _x38*_x39
+)
+: (
+   _x45*_x46 + _x47*_x50
+));
+    const double _x53 = _x25/pow(M, 3.0/2.0);
+    const double _x54 = _x33*_x35;
+    const double _x55 = Omega*(-_x19 + _x20 - 1);
+    const double _x56 = _x24*_x51;
+    const double _x57 = _x51*((_x40) ? (
+   3.141592653589793*_x0*_x29*_x31*_x32*_x36*_x4 - _x39*_x48*_x54
+)
+: (
+   _x43*_x44*_x47 - _x46*_x50
+));
+    return _x18*_x21 - _x18 + _x21*_x3 + _x22*_x24*_x3 - _x3 + (-_x21*_x52 + _x52 + _x56*((_x40) ? (
+   3.141592653589793*C*X_b*_x53*_x54 - _x0*_x30*_x37
+)
+: (
+   _x22*_x43*_x49 - _x45*_x55
+)))*sin(phi) + (-_x21*_x57 + _x56*((_x40) ? (
+   -_x0*_x34*_x48 - _x38*_x5*_x53
+)
+: (
+   _x22*_x45 + _x50*_x55
+)) + _x57)*cos(phi);
+}
+
+void symimpact_periodic_orbit_phase_residual_d_impact_mass_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_phase_residual_d_impact_mass(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial r / \partial F_{0} = \frac{\partial}{\partial F_{0}}\,\mathtt{phase\_residual} */
+double symimpact_periodic_orbit_phase_residual_d_F0(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    (void)F0;
+    (void)X_b;
+    const double _x0 = pow(M, -1.0/2.0);
+    const double _x1 = sqrt(K);
+    const double _x2 = _x0*_x1;
+    const double _x3 = 3.141592653589793/Omega;
+    const double _x4 = (1.0/2.0)*_x3;
+    const double _x5 = _x4*(Omega - _x2);
+    const double _x6 = cos(_x5);
+    const double _x7 = (((_x5 != 0) ? (
+   sin(_x5)/_x5
+)
+: (
+   1
+)))/(Omega + _x2);
+    const double _x8 = 3.141592653589793*_x7;
+    const double _x9 = C == 0;
+    const double _x10 = pow(C, 2);
+    const double _x11 = pow(Omega, 2);
+    const double _x12 = K - M*_x11;
+    const double _x13 = 1.0/(_x10*_x11 + pow(_x12, 2));
+    const double _x14 = _x12*_x13;
+    const double _x15 = Omega*_x14;
+    const double _x16 = 1.0/M;
+    const double _x17 = C*_x16;
+    const double _x18 = exp(-_x17*_x4);
+    const double _x19 = sqrt(K*_x16 - 1.0/4.0*_x10/pow(M, 2));
+    const double _x20 = _x19*_x3;
+    const double _x21 = sin(_x20);
+    const double _x22 = _x21/_x19;
+    const double _x23 = _x18*_x22;
+    const double _x24 = cos(_x20);
+    const double _x25 = (1.0/2.0)*_x17;
+    const double _x26 = _x22*_x25;
+    const double _x27 = _x18*(_x24 + _x26);
+    const double _x28 = -_x27 - 1;
+    const double _x29 = C*_x13;
+    const double _x30 = Omega*_x29;
+    const double _x31 = ((_x9) ? (
+   -_x0*_x6*_x8/_x1
+)
+: (
+   _x15*_x23 + _x28*_x30
+));
+    const double _x32 = 1.0/_x11;
+    const double _x33 = 2*_x32;
+    const double _x34 = _x31*_x33;
+    const double _x35 = _x34*e;
+    const double _x36 = 4*_x16*_x32*m;
+    const double _x37 = _x31*_x36;
+    const double _x38 = _x18*_x24;
+    const double _x39 = _x18*_x26;
+    const double _x40 = _x38 - _x39;
+    const double _x41 = _x40*e;
+    const double _x42 = _x16*sin(_x5);
+    const double _x43 = -_x38 + _x39 - 1;
+    const double _x44 = -_x18*(-_x19*_x21 + _x24*_x25) + _x25*_x27;
+    const double _x45 = ((_x9) ? (
+   -_x42*_x8
+)
+: (
+   -_x15*_x43 + _x30*_x44
+));
+    const double _x46 = 3.141592653589793/pow(Omega, 3);
+    const double _x47 = _x45*_x46;
+    const double _x48 = _x47*e;
+    const double _x49 = -_x44*_x46;
+    const double _x50 = _x31*_x49;
+    const double _x51 = _x23*_x33;
+    const double _x52 = _x45*_x51;
+    const double _x53 = _x23*_x36*e;
+    const double _x54 = _x3*_x7;
+    const double _x55 = _x11*_x29;
+    const double _x56 = ((_x9) ? (
+   _x42*_x54
+)
+: (
+   _x12*_x13*_x28 - _x23*_x55
+));
+    const double _x57 = _x33*_x56;
+    const double _x58 = _x57*e;
+    const double _x59 = _x36*_x56;
+    const double _x60 = ((_x9) ? (
+   -_x1*_x54*_x6/pow(M, 3.0/2.0)
+)
+: (
+   _x14*_x44 + _x43*_x55
+));
+    const double _x61 = _x46*_x60;
+    const double _x62 = _x61*e;
+    const double _x63 = _x49*_x56;
+    const double _x64 = _x51*_x60;
+    return (_x27*_x47 + _x27*_x48 + _x34*_x40 + _x34 - _x35*_x40 - _x35 - _x37*_x41 + _x37 + _x45*_x53 + _x47 + _x48 - _x50*e - _x50 + _x52*e - _x52)*sin(phi) + (_x27*_x61 + _x27*_x62 + _x40*_x57 - _x40*_x58 - _x41*_x59 + _x53*_x60 + _x57 - _x58 + _x59 + _x61 + _x62 - _x63*e - _x63 + _x64*e - _x64)*cos(phi);
+}
+
+void symimpact_periodic_orbit_phase_residual_d_F0_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_phase_residual_d_F0(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial r / \partial X_{b} = \frac{\partial}{\partial X_{b}}\,\mathtt{phase\_residual} */
+double symimpact_periodic_orbit_phase_residual_d_X_b(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    (void)F0;
+    (void)X_b;
+    const double _x0 = 1.0/M;
+    const double _x1 = C*_x0;
+    const double _x2 = sqrt(K);
+    const double _x3 = pow(M, -1.0/2.0);
+    const double _x4 = _x2*_x3;
+    const double _x5 = 1.0/Omega;
+    const double _x6 = 3.141592653589793*_x5;
+    const double _x7 = (1.0/2.0)*_x6;
+    const double _x8 = _x7*(Omega - _x4);
+    const double _x9 = sin(_x8);
+    const double _x10 = 1.0/(Omega + _x4);
+    const double _x11 = (((_x8 != 0) ? (
+   sin(_x8)/_x8
+)
+: (
+   1
+)));
+    const double _x12 = _x10*_x11;
+    const double _x13 = 3.141592653589793*_x12;
+    const double _x14 = _x13*_x9;
+    const double _x15 = cos(_x8);
+    const double _x16 = _x13*_x15;
+    const double _x17 = C == 0;
+    const double _x18 = pow(C, 2);
+    const double _x19 = pow(Omega, 2);
+    const double _x20 = _x18*_x19;
+    const double _x21 = K - M*_x19;
+    const double _x22 = 1.0/(_x20 + pow(_x21, 2));
+    const double _x23 = K*_x21 + _x20;
+    const double _x24 = _x22*_x23;
+    const double _x25 = exp(-_x1*_x7);
+    const double _x26 = sqrt(K*_x0 - 1.0/4.0*_x18/pow(M, 2));
+    const double _x27 = _x26*_x6;
+    const double _x28 = sin(_x27);
+    const double _x29 = _x28/_x26;
+    const double _x30 = _x25*_x29;
+    const double _x31 = Omega*_x30;
+    const double _x32 = cos(_x27);
+    const double _x33 = (1.0/2.0)*_x1;
+    const double _x34 = _x29*_x33;
+    const double _x35 = _x25*(_x32 + _x34);
+    const double _x36 = -_x35 - 1;
+    const double _x37 = C*Omega;
+    const double _x38 = K*_x37 - _x21*_x37;
+    const double _x39 = _x22*_x38;
+    const double _x40 = ((_x17) ? (
+   -_x1*_x14 - _x16*_x4
+)
+: (
+   _x24*_x31 + _x36*_x39
+));
+    const double _x41 = 1.0/_x19;
+    const double _x42 = 2*_x41;
+    const double _x43 = _x40*_x42;
+    const double _x44 = _x43*e;
+    const double _x45 = 4*_x0*_x41*m;
+    const double _x46 = _x40*_x45;
+    const double _x47 = _x25*_x32;
+    const double _x48 = _x25*_x34;
+    const double _x49 = _x47 - _x48;
+    const double _x50 = _x49*e;
+    const double _x51 = pow(M, -3.0/2.0);
+    const double _x52 = Omega*(-_x47 + _x48 - 1);
+    const double _x53 = -_x25*(-_x26*_x28 + _x32*_x33) + _x33*_x35;
+    const double _x54 = ((_x17) ? (
+   C*_x16*_x2*_x51 - K*_x0*_x14
+)
+: (
+   _x22*_x38*_x53 - _x24*_x52
+));
+    const double _x55 = 3.141592653589793/pow(Omega, 3);
+    const double _x56 = _x54*_x55;
+    const double _x57 = _x56*e;
+    const double _x58 = -_x53*_x55;
+    const double _x59 = _x40*_x58;
+    const double _x60 = _x30*_x42;
+    const double _x61 = _x54*_x60;
+    const double _x62 = _x30*_x45*e;
+    const double _x63 = ((_x17) ? (
+   3.141592653589793*K*_x0*_x10*_x11*_x5*_x9 - _x16*_x3*_x37/_x2
+)
+: (
+   _x22*_x23*_x36 - _x31*_x39
+));
+    const double _x64 = _x42*_x63;
+    const double _x65 = _x64*e;
+    const double _x66 = _x45*_x63;
+    const double _x67 = ((_x17) ? (
+   -pow(K, 3.0/2.0)*_x12*_x15*_x51*_x6 - _x0*_x14*_x37
+)
+: (
+   _x24*_x53 + _x39*_x52
+));
+    const double _x68 = _x55*_x67;
+    const double _x69 = _x68*e;
+    const double _x70 = _x58*_x63;
+    const double _x71 = _x60*_x67;
+    return (_x35*_x56 + _x35*_x57 + _x43*_x49 + _x43 - _x44*_x49 - _x44 - _x46*_x50 + _x46 + _x54*_x62 + _x56 + _x57 - _x59*e - _x59 + _x61*e - _x61)*sin(phi) + (_x35*_x68 + _x35*_x69 + _x49*_x64 - _x49*_x65 - _x50*_x66 + _x62*_x67 + _x64 - _x65 + _x66 + _x68 + _x69 - _x70*e - _x70 + _x71*e - _x71)*cos(phi);
+}
+
+void symimpact_periodic_orbit_phase_residual_d_X_b_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_phase_residual_d_X_b(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial X / \partial \phi = \frac{\partial}{\partial \phi}\,\mathtt{impact\_displacement} */
+double symimpact_periodic_orbit_impact_displacement_d_phi(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    const double _x0 = 3.141592653589793*M;
+    const double _x1 = 4*Omega*m;
+    const double _x2 = 1.0/Omega;
+    const double _x3 = 3.141592653589793*_x2;
+    const double _x4 = 1.0/M;
+    const double _x5 = C*_x4;
+    const double _x6 = (1.0/2.0)*_x5;
+    const double _x7 = exp(-_x3*_x6);
+    const double _x8 = pow(C, 2);
+    const double _x9 = pow(M, -2);
+    const double _x10 = sqrt(K*_x4 - 1.0/4.0*_x8*_x9);
+    const double _x11 = _x10*_x3;
+    const double _x12 = sin(_x11);
+    const double _x13 = 1.0/_x10;
+    const double _x14 = _x12*_x13;
+    const double _x15 = _x14*_x7;
+    const double _x16 = cos(_x11);
+    const double _x17 = _x14*_x6 + _x16;
+    const double _x18 = _x17*_x7;
+    const double _x19 = _x16*_x7;
+    const double _x20 = _x15*_x6;
+    const double _x21 = _x19 - _x20;
+    const double _x22 = _x0*_x21;
+    const double _x23 = _x18*_x6 - _x7*(-_x10*_x12 + _x16*_x6);
+    const double _x24 = -_x23;
+    const double _x25 = 3.141592653589793*M*_x12*_x13*_x24*_x7 - _x0*_x18 - _x0 - _x1*_x15 - _x18*_x22 - _x22;
+    const double _x26 = pow(Omega, -4);
+    const double _x27 = _x26*_x9;
+    const double _x28 = pow(Omega, -6);
+    const double _x29 = 2*Omega;
+    const double _x30 = M*e;
+    const double _x31 = M*_x21;
+    const double _x32 = _x21*_x30;
+    const double _x33 = _x21*e;
+    const double _x34 = _x0*_x24;
+    const double _x35 = -M*_x29 + _x1*_x33 - _x1 + _x29*_x30 - _x29*_x31 + _x29*_x32 + _x34*e + _x34;
+    const double _x36 = _x15*_x24;
+    const double _x37 = _x36*e;
+    const double _x38 = 2*Omega*_x12*_x13*_x7 - _x15*_x29*e + 3.141592653589793*_x17*_x21*_x7*e - 3.141592653589793*_x18 + 3.141592653589793*_x21*e - 3.141592653589793*_x37 - 3.141592653589793;
+    const double _x39 = 2*m;
+    const double _x40 = M*_x12*_x13*_x24*_x7 + M*_x17*_x21*_x7*e + M*_x17*_x7*e - M*_x18 + M*_x21*e + M*e - M + 2*_x17*_x21*_x7*e*m - _x18*_x31 - _x18*_x39 + 2*_x21*e*m - _x30*_x36 - _x31 - _x37*_x39 - _x39;
+    const double _x41 = 3.141592653589793*_x21;
+    const double _x42 = -_x41 - 3.141592653589793;
+    const double _x43 = cos(phi);
+    const double _x44 = sqrt(K);
+    const double _x45 = pow(M, -1.0/2.0);
+    const double _x46 = _x44*_x45;
+    const double _x47 = (1.0/2.0)*_x3*(Omega - _x46);
+    const double _x48 = sin(_x47);
+    const double _x49 = 1.0/(Omega + _x46);
+    const double _x50 = (((_x47 != 0) ? (
+   sin(_x47)/_x47
+)
+: (
+   1
+)));
+    const double _x51 = 3.141592653589793*_x49*_x50;
+    const double _x52 = _x48*_x51;
+    const double _x53 = F0 + K*X_b;
+    const double _x54 = cos(_x47);
+    const double _x55 = _x51*_x54;
+    const double _x56 = _x45*_x55/_x44;
+    const double _x57 = C == 0;
+    const double _x58 = pow(Omega, 2);
+    const double _x59 = _x58*_x8;
+    const double _x60 = K - M*_x58;
+    const double _x61 = X_b*_x59 + _x53*_x60;
+    const double _x62 = 1.0/(_x59 + pow(_x60, 2));
+    const double _x63 = Omega*_x62;
+    const double _x64 = _x15*_x63;
+    const double _x65 = C*Omega*X_b;
+    const double _x66 = C*Omega*_x53 - _x60*_x65;
+    const double _x67 = -_x18 - 1;
+    const double _x68 = sin(phi);
+    const double _x69 = -_x43*((_x57) ? (
+   -X_b*_x5*_x52 - _x53*_x56
+)
+: (
+   _x61*_x64 + _x62*_x66*_x67
+)) + _x68*((_x57) ? (
+   3.141592653589793*_x2*_x4*_x48*_x49*_x50*_x53 - _x56*_x65
+)
+: (
+   _x61*_x62*_x67 - _x64*_x66
+));
+    const double _x70 = _x41*e - 3.141592653589793;
+    const double _x71 = _x44/pow(M, 3.0/2.0);
+    const double _x72 = _x63*(-_x19 + _x20 - 1);
+    const double _x73 = _x43*((_x57) ? (
+   C*X_b*_x55*_x71 - _x4*_x52*_x53
+)
+: (
+   _x23*_x62*_x66 - _x61*_x72
+)) - _x68*((_x57) ? (
+   -_x3*_x49*_x50*_x53*_x54*_x71 - _x4*_x52*_x65
+)
+: (
+   _x23*_x61*_x62 + _x66*_x72
+));
+    const double _x74 = _x4*_x73;
+    const double _x75 = 3.141592653589793*_x26;
+    const double _x76 = -_x73*e;
+    const double _x77 = _x15*_x76;
+    return (-_x15*_x25*_x74*_x75 + _x25*_x26*_x4*_x42*_x69 + _x26*_x38*_x69*_x70 + _x26*_x40*_x69*_x9*(-M + _x30 - _x31 + _x32 + _x33*_x39 - _x39) - _x27*_x39*_x40*_x77 - _x28*_x35*_x4*_x42*_x76 + _x28*_x35*_x4*_x70*_x73 - _x38*_x75*_x77 - _x40*_x74*(_x12*_x13*_x2*_x7 - _x15*_x2*e)/pow(Omega, 3))/(pow(_x25, 2)*_x27 + _x26*pow(_x38, 2) + _x27*pow(_x40, 2) + _x28*pow(_x35, 2)*_x9);
+}
+
+void symimpact_periodic_orbit_impact_displacement_d_phi_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_impact_displacement_d_phi(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial X / \partial e = \frac{\partial}{\partial e}\,\mathtt{impact\_displacement} */
+double symimpact_periodic_orbit_impact_displacement_d_e(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    const double _x0 = 3.141592653589793*M;
+    const double _x1 = 4*Omega;
+    const double _x2 = _x1*m;
+    const double _x3 = 1.0/Omega;
+    const double _x4 = 3.141592653589793*_x3;
+    const double _x5 = 1.0/M;
+    const double _x6 = C*_x5;
+    const double _x7 = (1.0/2.0)*_x6;
+    const double _x8 = exp(-_x4*_x7);
+    const double _x9 = pow(C, 2);
+    const double _x10 = pow(M, -2);
+    const double _x11 = sqrt(K*_x5 - 1.0/4.0*_x10*_x9);
+    const double _x12 = _x11*_x4;
+    const double _x13 = sin(_x12);
+    const double _x14 = 1.0/_x11;
+    const double _x15 = _x13*_x14;
+    const double _x16 = _x15*_x8;
+    const double _x17 = cos(_x12);
+    const double _x18 = _x15*_x7 + _x17;
+    const double _x19 = _x18*_x8;
+    const double _x20 = _x17*_x8;
+    const double _x21 = _x16*_x7;
+    const double _x22 = _x20 - _x21;
+    const double _x23 = _x0*_x22;
+    const double _x24 = _x19*_x7 - _x8*(-_x11*_x13 + _x17*_x7);
+    const double _x25 = -_x24;
+    const double _x26 = 3.141592653589793*M*_x13*_x14*_x25*_x8 - _x0*_x19 - _x0 - _x16*_x2 - _x19*_x23 - _x23;
+    const double _x27 = pow(Omega, -4);
+    const double _x28 = _x10*_x27;
+    const double _x29 = 2*M;
+    const double _x30 = Omega*_x29;
+    const double _x31 = M*e;
+    const double _x32 = 2*Omega;
+    const double _x33 = M*_x22;
+    const double _x34 = 2*_x33;
+    const double _x35 = Omega*_x34;
+    const double _x36 = _x22*_x31;
+    const double _x37 = _x2*_x22;
+    const double _x38 = _x0*_x25;
+    const double _x39 = -_x2 - _x30 + _x31*_x32 + _x32*_x36 - _x35 + _x37*e + _x38*e + _x38;
+    const double _x40 = pow(Omega, -6);
+    const double _x41 = _x10*_x40;
+    const double _x42 = _x16*_x32;
+    const double _x43 = _x16*_x25;
+    const double _x44 = 3.141592653589793*_x43;
+    const double _x45 = 3.141592653589793*_x18*_x22*_x8*e - 3.141592653589793*_x19 + 3.141592653589793*_x22*e - _x42*e + _x42 - _x44*e - 3.141592653589793;
+    const double _x46 = 2*m;
+    const double _x47 = _x43*_x46;
+    const double _x48 = M + _x33;
+    const double _x49 = M*_x19 - M*_x43 + _x19*_x33;
+    const double _x50 = M*_x18*_x22*_x8*e + M*_x18*_x8*e + M*_x22*e + M*e + 2*_x18*_x22*_x8*e*m - _x19*_x46 + 2*_x22*e*m - _x31*_x43 - _x46 - _x47*e - _x48 - _x49;
+    const double _x51 = pow(_x26, 2)*_x28 + _x27*pow(_x45, 2) + _x28*pow(_x50, 2) + pow(_x39, 2)*_x41;
+    const double _x52 = _x22*m;
+    const double _x53 = _x27*_x45;
+    const double _x54 = 4*_x52;
+    const double _x55 = _x28*_x50;
+    const double _x56 = pow(Omega, -3);
+    const double _x57 = pow(Omega, 2);
+    const double _x58 = _x13*_x14*_x3*_x8 - _x16*_x3*e;
+    const double _x59 = _x58*d/_x57;
+    const double _x60 = _x22*_x46;
+    const double _x61 = -M + _x31 - _x33 + _x36 - _x46 + _x60*e;
+    const double _x62 = _x10*d/pow(Omega, 5);
+    const double _x63 = _x39*_x62;
+    const double _x64 = 3.141592653589793*_x22;
+    const double _x65 = -_x64 - 3.141592653589793;
+    const double _x66 = sin(phi);
+    const double _x67 = sqrt(K);
+    const double _x68 = pow(M, -1.0/2.0);
+    const double _x69 = _x67*_x68;
+    const double _x70 = (1.0/2.0)*_x4*(Omega - _x69);
+    const double _x71 = sin(_x70);
+    const double _x72 = 1.0/(Omega + _x69);
+    const double _x73 = (((_x70 != 0) ? (
+   sin(_x70)/_x70
+)
+: (
+   1
+)));
+    const double _x74 = 3.141592653589793*_x72*_x73;
+    const double _x75 = _x71*_x74;
+    const double _x76 = F0 + K*X_b;
+    const double _x77 = cos(_x70);
+    const double _x78 = _x74*_x77;
+    const double _x79 = _x68*_x78/_x67;
+    const double _x80 = C == 0;
+    const double _x81 = _x57*_x9;
+    const double _x82 = K - M*_x57;
+    const double _x83 = X_b*_x81 + _x76*_x82;
+    const double _x84 = 1.0/(_x81 + pow(_x82, 2));
+    const double _x85 = Omega*_x84;
+    const double _x86 = _x16*_x85;
+    const double _x87 = C*Omega*X_b;
+    const double _x88 = C*Omega*_x76 - _x82*_x87;
+    const double _x89 = -_x19 - 1;
+    const double _x90 = cos(phi);
+    const double _x91 = -_x66*((_x80) ? (
+   -X_b*_x6*_x75 - _x76*_x79
+)
+: (
+   _x83*_x86 + _x84*_x88*_x89
+)) - _x90*((_x80) ? (
+   3.141592653589793*_x3*_x5*_x71*_x72*_x73*_x76 - _x79*_x87
+)
+: (
+   _x83*_x84*_x89 - _x86*_x88
+));
+    const double _x92 = _x64*e - 3.141592653589793;
+    const double _x93 = _x67/pow(M, 3.0/2.0);
+    const double _x94 = _x85*(-_x20 + _x21 - 1);
+    const double _x95 = _x66*((_x80) ? (
+   C*X_b*_x78*_x93 - _x5*_x75*_x76
+)
+: (
+   _x24*_x84*_x88 - _x83*_x94
+)) + _x90*((_x80) ? (
+   -_x4*_x72*_x73*_x76*_x77*_x93 - _x5*_x75*_x87
+)
+: (
+   _x24*_x83*_x84 + _x88*_x94
+));
+    const double _x96 = _x5*_x95;
+    const double _x97 = -_x95;
+    const double _x98 = _x16*_x97;
+    const double _x99 = 3.141592653589793*_x98;
+    const double _x100 = _x53*_x99;
+    const double _x101 = _x40*_x5*_x65*_x97;
+    const double _x102 = _x101*_x39;
+    const double _x103 = _x46*_x98;
+    const double _x104 = _x103*_x55;
+    const double _x105 = _x56*_x58*_x96;
+    const double _x106 = 3.141592653589793*_x18*_x22*_x8 - _x42 - _x44 + _x64;
+    const double _x107 = _x30 + _x35 + _x37 + _x38;
+    const double _x108 = _x48 + _x60;
+    const double _x109 = _x108 + _x19*_x60 - _x47 + _x49;
+    return (_x10*_x108*_x27*_x50*_x91 + _x10*_x109*_x27*_x61*_x91 - _x100 - _x101*_x107*e - _x102 - _x103*_x109*_x28*e - _x104 - _x105*_x109 + _x106*_x27*_x91*_x92 - _x106*_x27*_x99*e - _x106*_x59 + _x107*_x40*_x5*_x92*_x95 - _x107*_x61*_x62 - _x108*_x63 + _x13*_x14*_x27*_x5*_x50*_x8*_x95 + _x13*_x14*_x45*_x56*_x8*d + 3.141592653589793*_x22*_x27*_x45*_x91 + 3.141592653589793*_x22*_x39*_x40*_x5*_x95)/_x51 + (-_x39*_x41*(M*_x1 + 8*Omega*_x52 + _x1*_x33 + 2*_x38) - _x53*(-_x1*_x16 + 2*3.141592653589793*_x18*_x22*_x8 + 2*3.141592653589793*_x22 - 2*_x44) - _x55*(_x19*_x29 + _x19*_x34 + _x19*_x54 - _x29*_x43 + _x29 + _x34 - 4*_x43*m + _x54))*(2*_x10*_x13*_x14*_x26*_x56*_x8*d*m + _x10*_x27*_x50*_x61*_x91 - _x100*e - _x102*e - _x104*e - _x105*_x50 - 3.141592653589793*_x16*_x26*_x27*_x96 + _x26*_x27*_x5*_x65*_x91 + _x27*_x45*_x91*_x92 + _x39*_x40*_x5*_x92*_x95 - _x45*_x59 - _x61*_x63)/pow(_x51, 2);
+}
+
+void symimpact_periodic_orbit_impact_displacement_d_e_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_impact_displacement_d_e(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial X / \partial d = \frac{\partial}{\partial d}\,\mathtt{impact\_displacement} */
+double symimpact_periodic_orbit_impact_displacement_d_d(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    (void)F0;
+    (void)X_b;
+    (void)phi;
+    const double _x0 = pow(M, -2);
+    const double _x1 = 1.0/Omega;
+    const double _x2 = 3.141592653589793*_x1;
+    const double _x3 = 1.0/M;
+    const double _x4 = (1.0/2.0)*C*_x3;
+    const double _x5 = exp(-_x2*_x4);
+    const double _x6 = sqrt(-1.0/4.0*pow(C, 2)*_x0 + K*_x3);
+    const double _x7 = 1.0/_x6;
+    const double _x8 = _x2*_x6;
+    const double _x9 = sin(_x8);
+    const double _x10 = 3.141592653589793*M;
+    const double _x11 = 4*Omega*m;
+    const double _x12 = _x7*_x9;
+    const double _x13 = _x12*_x5;
+    const double _x14 = cos(_x8);
+    const double _x15 = _x12*_x4 + _x14;
+    const double _x16 = _x15*_x5;
+    const double _x17 = -_x13*_x4 + _x14*_x5;
+    const double _x18 = _x10*_x17;
+    const double _x19 = -_x16*_x4 + _x5*(_x14*_x4 - _x6*_x9);
+    const double _x20 = 3.141592653589793*M*_x19*_x5*_x7*_x9 - _x10*_x16 - _x10 - _x11*_x13 - _x16*_x18 - _x18;
+    const double _x21 = 2*Omega;
+    const double _x22 = _x13*_x19;
+    const double _x23 = _x22*e;
+    const double _x24 = 2*Omega*_x5*_x7*_x9 - _x13*_x21*e + 3.141592653589793*_x15*_x17*_x5*e - 3.141592653589793*_x16 + 3.141592653589793*_x17*e - 3.141592653589793*_x23 - 3.141592653589793;
+    const double _x25 = 2*m;
+    const double _x26 = M*e;
+    const double _x27 = M*_x17;
+    const double _x28 = _x17*_x26;
+    const double _x29 = _x17*e;
+    const double _x30 = _x10*_x19;
+    const double _x31 = -M*_x21 + _x11*_x29 - _x11 + _x21*_x26 - _x21*_x27 + _x21*_x28 + _x30*e + _x30;
+    const double _x32 = pow(Omega, -4);
+    const double _x33 = _x0*_x32;
+    return (-_x24*(-_x1*_x13*e + _x1*_x5*_x7*_x9)/pow(Omega, 2) + 2*_x0*_x20*_x5*_x7*_x9*m/pow(Omega, 3) - _x0*_x31*(-M + _x25*_x29 - _x25 + _x26 - _x27 + _x28)/pow(Omega, 5))/(pow(_x20, 2)*_x33 + pow(_x24, 2)*_x32 + _x33*pow(M*_x15*_x17*_x5*e + M*_x15*_x5*e - M*_x16 + M*_x17*e + M*_x19*_x5*_x7*_x9 + M*e - M + 2*_x15*_x17*_x5*e*m - _x16*_x25 - _x16*_x27 + 2*_x17*e*m - _x22*_x26 - _x23*_x25 - _x25 - _x27, 2) + _x0*pow(_x31, 2)/pow(Omega, 6));
+}
+
+void symimpact_periodic_orbit_impact_displacement_d_d_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_impact_displacement_d_d(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial V / \partial \phi = \frac{\partial}{\partial \phi}\,\mathtt{main\_velocity\_after} */
+double symimpact_periodic_orbit_main_velocity_after_d_phi(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    const double _x0 = 3.141592653589793*M;
+    const double _x1 = 4*Omega*m;
+    const double _x2 = 1.0/Omega;
+    const double _x3 = 3.141592653589793*_x2;
+    const double _x4 = 1.0/M;
+    const double _x5 = C*_x4;
+    const double _x6 = (1.0/2.0)*_x5;
+    const double _x7 = exp(-_x3*_x6);
+    const double _x8 = pow(C, 2);
+    const double _x9 = pow(M, -2);
+    const double _x10 = sqrt(K*_x4 - 1.0/4.0*_x8*_x9);
+    const double _x11 = _x10*_x3;
+    const double _x12 = sin(_x11);
+    const double _x13 = 1.0/_x10;
+    const double _x14 = _x12*_x13;
+    const double _x15 = _x14*_x7;
+    const double _x16 = cos(_x11);
+    const double _x17 = _x14*_x6;
+    const double _x18 = _x16 + _x17;
+    const double _x19 = _x18*_x7;
+    const double _x20 = _x16*_x7;
+    const double _x21 = _x17*_x7;
+    const double _x22 = _x20 - _x21;
+    const double _x23 = _x0*_x22;
+    const double _x24 = _x19*_x6 - _x7*(-_x10*_x12 + _x16*_x6);
+    const double _x25 = -_x24;
+    const double _x26 = 3.141592653589793*M*_x12*_x13*_x25*_x7 - _x0*_x19 - _x0 - _x1*_x15 - _x19*_x23 - _x23;
+    const double _x27 = pow(Omega, -4);
+    const double _x28 = _x27*_x9;
+    const double _x29 = 2*Omega;
+    const double _x30 = M*_x22;
+    const double _x31 = M*e;
+    const double _x32 = _x0*_x25;
+    const double _x33 = -_x1 + _x32;
+    const double _x34 = -M*_x29 + _x1*_x22*e + _x22*_x29*_x31 - _x29*_x30 + _x29*_x31 + _x32*e + _x33;
+    const double _x35 = pow(Omega, -6);
+    const double _x36 = _x29*e;
+    const double _x37 = 3.141592653589793*_x25*e;
+    const double _x38 = 2*Omega*_x12*_x13*_x7 - _x15*_x36 - _x15*_x37 + 3.141592653589793*_x18*_x22*_x7*e - 3.141592653589793*_x19 + 3.141592653589793*_x22*e - 3.141592653589793;
+    const double _x39 = _x25*_x31;
+    const double _x40 = 2*m;
+    const double _x41 = _x25*_x40*e;
+    const double _x42 = _x19*_x40 + _x40;
+    const double _x43 = M*_x12*_x13*_x25*_x7 + M*_x18*_x22*_x7*e + M*_x18*_x7*e - M*_x19 + M*_x22*e + M*e - M - _x15*_x39 - _x15*_x41 + 2*_x18*_x22*_x7*e*m - _x19*_x30 + 2*_x22*e*m - _x30 - _x42;
+    const double _x44 = -_x33;
+    const double _x45 = cos(phi);
+    const double _x46 = sqrt(K);
+    const double _x47 = pow(M, -1.0/2.0);
+    const double _x48 = _x46*_x47;
+    const double _x49 = (1.0/2.0)*_x3*(Omega - _x48);
+    const double _x50 = sin(_x49);
+    const double _x51 = 3.141592653589793*_x50;
+    const double _x52 = 1.0/(Omega + _x48);
+    const double _x53 = (((_x49 != 0) ? (
+   sin(_x49)/_x49
+)
+: (
+   1
+)));
+    const double _x54 = _x52*_x53;
+    const double _x55 = _x51*_x54;
+    const double _x56 = cos(_x49);
+    const double _x57 = F0 + K*X_b;
+    const double _x58 = _x52*_x53*_x57;
+    const double _x59 = _x56*_x58;
+    const double _x60 = 3.141592653589793*_x47/_x46;
+    const double _x61 = C == 0;
+    const double _x62 = pow(Omega, 2);
+    const double _x63 = _x62*_x8;
+    const double _x64 = K - M*_x62;
+    const double _x65 = X_b*_x63 + _x57*_x64;
+    const double _x66 = 1.0/(_x63 + pow(_x64, 2));
+    const double _x67 = Omega*_x66;
+    const double _x68 = _x15*_x67;
+    const double _x69 = C*Omega*X_b;
+    const double _x70 = C*Omega*_x57 - _x64*_x69;
+    const double _x71 = -_x19 - 1;
+    const double _x72 = sin(phi);
+    const double _x73 = _x54*_x56;
+    const double _x74 = -_x45*((_x61) ? (
+   -X_b*_x5*_x55 - _x59*_x60
+)
+: (
+   _x65*_x68 + _x66*_x70*_x71
+)) + _x72*((_x61) ? (
+   3.141592653589793*_x2*_x4*_x50*_x52*_x53*_x57 - _x60*_x69*_x73
+)
+: (
+   _x65*_x66*_x71 - _x68*_x70
+));
+    const double _x75 = _x28*_x74;
+    const double _x76 = -_x29 + _x36 + _x37;
+    const double _x77 = (-_x19*_x3 - _x3)/pow(Omega, 3);
+    const double _x78 = _x46/pow(M, 3.0/2.0);
+    const double _x79 = _x67*(-_x20 + _x21 - 1);
+    const double _x80 = _x45*((_x61) ? (
+   3.141592653589793*C*X_b*_x73*_x78 - _x4*_x51*_x58
+)
+: (
+   _x24*_x66*_x70 - _x65*_x79
+)) - _x72*((_x61) ? (
+   -_x3*_x59*_x78 - _x4*_x55*_x69
+)
+: (
+   _x24*_x65*_x66 + _x70*_x79
+));
+    const double _x81 = _x4*_x80;
+    const double _x82 = -_x80;
+    return (-_x26*_x44*_x75 - _x26*_x77*_x81 - _x27*_x38*_x74*_x76 + _x27*_x42*_x43*_x82*_x9*e - _x27*_x43*_x81*(_x19*e - _x19 + e - 1) + _x34*_x35*_x44*_x82*_x9*e - _x34*_x35*_x76*_x81 - _x38*_x77*_x82*e - _x43*_x75*(-M*_x25 + _x39 + _x41))/(pow(_x26, 2)*_x28 + _x27*pow(_x38, 2) + _x28*pow(_x43, 2) + pow(_x34, 2)*_x35*_x9);
+}
+
+void symimpact_periodic_orbit_main_velocity_after_d_phi_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_main_velocity_after_d_phi(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial V / \partial e = \frac{\partial}{\partial e}\,\mathtt{main\_velocity\_after} */
+double symimpact_periodic_orbit_main_velocity_after_d_e(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    const double _x0 = 3.141592653589793*M;
+    const double _x1 = 4*Omega;
+    const double _x2 = _x1*m;
+    const double _x3 = 1.0/Omega;
+    const double _x4 = 3.141592653589793*_x3;
+    const double _x5 = 1.0/M;
+    const double _x6 = C*_x5;
+    const double _x7 = (1.0/2.0)*_x6;
+    const double _x8 = exp(-_x4*_x7);
+    const double _x9 = pow(C, 2);
+    const double _x10 = pow(M, -2);
+    const double _x11 = sqrt(K*_x5 - 1.0/4.0*_x10*_x9);
+    const double _x12 = _x11*_x4;
+    const double _x13 = sin(_x12);
+    const double _x14 = 1.0/_x11;
+    const double _x15 = _x13*_x14;
+    const double _x16 = _x15*_x8;
+    const double _x17 = cos(_x12);
+    const double _x18 = _x15*_x7;
+    const double _x19 = _x17 + _x18;
+    const double _x20 = _x19*_x8;
+    const double _x21 = _x17*_x8;
+    const double _x22 = _x18*_x8;
+    const double _x23 = _x21 - _x22;
+    const double _x24 = _x0*_x23;
+    const double _x25 = _x20*_x7 - _x8*(-_x11*_x13 + _x17*_x7);
+    const double _x26 = -_x25;
+    const double _x27 = 3.141592653589793*M*_x13*_x14*_x26*_x8 - _x0*_x20 - _x0 - _x16*_x2 - _x20*_x24 - _x24;
+    const double _x28 = pow(Omega, -4);
+    const double _x29 = _x10*_x28;
+    const double _x30 = 2*Omega;
+    const double _x31 = M*_x30;
+    const double _x32 = M*_x23;
+    const double _x33 = _x30*_x32;
+    const double _x34 = M*e;
+    const double _x35 = _x0*_x26;
+    const double _x36 = _x2*_x23;
+    const double _x37 = -_x2 + _x35;
+    const double _x38 = _x23*_x30*_x34 + _x30*_x34 - _x31 - _x33 + _x35*e + _x36*e + _x37;
+    const double _x39 = pow(Omega, -6);
+    const double _x40 = _x10*_x39;
+    const double _x41 = _x16*_x30;
+    const double _x42 = _x30*e;
+    const double _x43 = 3.141592653589793*_x26;
+    const double _x44 = _x43*e;
+    const double _x45 = -_x16*_x42 - _x16*_x44 + 3.141592653589793*_x19*_x23*_x8*e - 3.141592653589793*_x20 + 3.141592653589793*_x23*e + _x41 - 3.141592653589793;
+    const double _x46 = _x26*_x34;
+    const double _x47 = 2*m;
+    const double _x48 = _x26*_x47;
+    const double _x49 = _x48*e;
+    const double _x50 = _x20*_x47 + _x47;
+    const double _x51 = M*_x26;
+    const double _x52 = _x16*_x51;
+    const double _x53 = M*_x20 + M + _x20*_x32 + _x32 - _x52;
+    const double _x54 = M*_x19*_x23*_x8*e + M*_x19*_x8*e + M*_x23*e + M*e - _x16*_x46 - _x16*_x49 + 2*_x19*_x23*_x8*e*m + 2*_x23*e*m - _x50 - _x53;
+    const double _x55 = pow(_x27, 2)*_x29 + _x28*pow(_x45, 2) + _x29*pow(_x54, 2) + pow(_x38, 2)*_x40;
+    const double _x56 = _x23*m;
+    const double _x57 = _x16*_x43;
+    const double _x58 = _x28*_x45;
+    const double _x59 = 2*M;
+    const double _x60 = 2*_x32;
+    const double _x61 = 4*_x56;
+    const double _x62 = _x29*_x54;
+    const double _x63 = pow(Omega, -3);
+    const double _x64 = _x63*d;
+    const double _x65 = _x20*e - _x20 + e - 1;
+    const double _x66 = _x45*_x64;
+    const double _x67 = pow(Omega, -5);
+    const double _x68 = _x46 + _x49 - _x51;
+    const double _x69 = -_x37;
+    const double _x70 = sin(phi);
+    const double _x71 = sqrt(K);
+    const double _x72 = pow(M, -1.0/2.0);
+    const double _x73 = _x71*_x72;
+    const double _x74 = (1.0/2.0)*_x4*(Omega - _x73);
+    const double _x75 = sin(_x74);
+    const double _x76 = 1.0/(Omega + _x73);
+    const double _x77 = (((_x74 != 0) ? (
+   sin(_x74)/_x74
+)
+: (
+   1
+)));
+    const double _x78 = 3.141592653589793*_x76*_x77;
+    const double _x79 = _x75*_x78;
+    const double _x80 = F0 + K*X_b;
+    const double _x81 = cos(_x74);
+    const double _x82 = _x78*_x81;
+    const double _x83 = _x72*_x82/_x71;
+    const double _x84 = C == 0;
+    const double _x85 = pow(Omega, 2);
+    const double _x86 = _x85*_x9;
+    const double _x87 = K - M*_x85;
+    const double _x88 = X_b*_x86 + _x80*_x87;
+    const double _x89 = 1.0/(_x86 + pow(_x87, 2));
+    const double _x90 = Omega*_x89;
+    const double _x91 = _x16*_x90;
+    const double _x92 = C*Omega*X_b;
+    const double _x93 = C*Omega*_x80 - _x87*_x92;
+    const double _x94 = _x20 + 1;
+    const double _x95 = -_x94;
+    const double _x96 = cos(phi);
+    const double _x97 = -_x70*((_x84) ? (
+   -X_b*_x6*_x79 - _x80*_x83
+)
+: (
+   _x88*_x91 + _x89*_x93*_x95
+)) - _x96*((_x84) ? (
+   3.141592653589793*_x3*_x5*_x75*_x76*_x77*_x80 - _x83*_x92
+)
+: (
+   _x88*_x89*_x95 - _x91*_x93
+));
+    const double _x98 = _x29*_x97;
+    const double _x99 = -_x30 + _x42 + _x44;
+    const double _x100 = _x58*_x97;
+    const double _x101 = _x63*(-_x20*_x4 - _x4);
+    const double _x102 = _x71/pow(M, 3.0/2.0);
+    const double _x103 = _x90*(-_x21 + _x22 - 1);
+    const double _x104 = _x70*((_x84) ? (
+   C*X_b*_x102*_x82 - _x5*_x79*_x80
+)
+: (
+   -_x103*_x88 + _x25*_x89*_x93
+)) + _x96*((_x84) ? (
+   -_x102*_x4*_x76*_x77*_x80*_x81 - _x5*_x79*_x92
+)
+: (
+   _x103*_x93 + _x25*_x88*_x89
+));
+    const double _x105 = _x104*_x5;
+    const double _x106 = -_x104;
+    const double _x107 = _x101*_x106;
+    const double _x108 = _x107*_x45;
+    const double _x109 = _x105*_x39;
+    const double _x110 = _x109*_x38;
+    const double _x111 = _x105*_x28;
+    const double _x112 = _x111*_x54;
+    const double _x113 = _x62*_x97;
+    const double _x114 = 3.141592653589793*_x19*_x23*_x8 + 3.141592653589793*_x23 - _x41 - _x57;
+    const double _x115 = _x31 + _x33 + _x35 + _x36;
+    const double _x116 = _x48 + _x51;
+    const double _x117 = _x30 + _x43;
+    const double _x118 = _x23*_x47;
+    const double _x119 = _x118*_x20 + _x118 - _x16*_x48 + _x53;
+    return (_x10*_x106*_x115*_x39*_x69*e + _x10*_x106*_x119*_x28*_x50*e + _x10*_x106*_x28*_x50*_x54 + _x10*_x106*_x38*_x39*_x69 + _x10*_x115*_x67*_x68*d + _x10*_x116*_x38*_x67*d - _x100*_x117 - _x107*_x114*e - _x108 - _x109*_x115*_x99 - _x110*_x117 - _x111*_x119*_x65 - _x112*_x94 - _x113*_x116 - _x114*_x28*_x97*_x99 - _x114*_x64*_x65 - _x119*_x68*_x98 - _x66*_x94)/_x55 + (-_x38*_x40*(M*_x1 + 8*Omega*_x56 + _x1*_x32 + 2*_x35) - _x58*(-_x1*_x16 + 2*3.141592653589793*_x19*_x23*_x8 + 2*3.141592653589793*_x23 - 2*_x57) - _x62*(-4*_x16*_x26*m + _x20*_x59 + _x20*_x60 + _x20*_x61 - 2*_x52 + _x59 + _x60 + _x61))*(_x10*_x106*_x28*_x50*_x54*e + _x10*_x106*_x38*_x39*_x69*e - _x10*_x27*_x50*_x64 + _x10*_x38*_x67*_x68*d - _x100*_x99 - _x101*_x105*_x27 - _x108*e - _x110*_x99 - _x112*_x65 - _x113*_x68 - _x27*_x69*_x98 - _x65*_x66)/pow(_x55, 2);
+}
+
+void symimpact_periodic_orbit_main_velocity_after_d_e_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_main_velocity_after_d_e(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial V / \partial d = \frac{\partial}{\partial d}\,\mathtt{main\_velocity\_after} */
+double symimpact_periodic_orbit_main_velocity_after_d_d(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    (void)F0;
+    (void)X_b;
+    (void)phi;
+    const double _x0 = pow(M, -2);
+    const double _x1 = pow(Omega, -3);
+    const double _x2 = 2*m;
+    const double _x3 = 3.141592653589793/Omega;
+    const double _x4 = 1.0/M;
+    const double _x5 = (1.0/2.0)*C*_x4;
+    const double _x6 = exp(-_x3*_x5);
+    const double _x7 = sqrt(-1.0/4.0*pow(C, 2)*_x0 + K*_x4);
+    const double _x8 = _x3*_x7;
+    const double _x9 = cos(_x8);
+    const double _x10 = sin(_x8);
+    const double _x11 = 1.0/_x7;
+    const double _x12 = _x10*_x11;
+    const double _x13 = _x12*_x5;
+    const double _x14 = _x13 + _x9;
+    const double _x15 = _x14*_x6;
+    const double _x16 = _x15*_x2 + _x2;
+    const double _x17 = 3.141592653589793*M;
+    const double _x18 = 4*Omega*m;
+    const double _x19 = _x12*_x6;
+    const double _x20 = -_x13*_x6 + _x6*_x9;
+    const double _x21 = _x17*_x20;
+    const double _x22 = -_x15*_x5 + _x6*(-_x10*_x7 + _x5*_x9);
+    const double _x23 = 3.141592653589793*M*_x10*_x11*_x22*_x6 - _x15*_x17 - _x15*_x21 - _x17 - _x18*_x19 - _x21;
+    const double _x24 = 2*Omega;
+    const double _x25 = _x22*e;
+    const double _x26 = 2*Omega*_x10*_x11*_x6 + 3.141592653589793*_x14*_x20*_x6*e - 3.141592653589793*_x15 - _x19*_x24*e - 3.141592653589793*_x19*_x25 + 3.141592653589793*_x20*e - 3.141592653589793;
+    const double _x27 = M*e;
+    const double _x28 = _x22*_x27;
+    const double _x29 = _x2*_x25;
+    const double _x30 = M*_x20;
+    const double _x31 = _x17*_x22;
+    const double _x32 = -M*_x24 + _x18*_x20*e - _x18 + _x20*_x24*_x27 + _x24*_x27 - _x24*_x30 + _x31*e + _x31;
+    const double _x33 = pow(Omega, -4);
+    const double _x34 = _x0*_x33;
+    return (-_x0*_x1*_x16*_x23 - _x1*_x26*(_x15*e - _x15 + e - 1) + _x0*_x32*(-M*_x22 + _x28 + _x29)/pow(Omega, 5))/(pow(_x23, 2)*_x34 + pow(_x26, 2)*_x33 + _x34*pow(M*_x10*_x11*_x22*_x6 + M*_x14*_x20*_x6*e + M*_x14*_x6*e - M*_x15 + M*_x20*e + M*e - M + 2*_x14*_x20*_x6*e*m - _x15*_x30 - _x16 - _x19*_x28 - _x19*_x29 + 2*_x20*e*m - _x30, 2) + _x0*pow(_x32, 2)/pow(Omega, 6));
+}
+
+void symimpact_periodic_orbit_main_velocity_after_d_d_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_main_velocity_after_d_d(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial U / \partial \phi = \frac{\partial}{\partial \phi}\,\mathtt{impact\_mass\_velocity\_after} */
+double symimpact_periodic_orbit_impact_mass_velocity_after_d_phi(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    const double _x0 = 3.141592653589793*M;
+    const double _x1 = 4*Omega*m;
+    const double _x2 = 1.0/Omega;
+    const double _x3 = 3.141592653589793*_x2;
+    const double _x4 = 1.0/M;
+    const double _x5 = C*_x4;
+    const double _x6 = (1.0/2.0)*_x5;
+    const double _x7 = exp(-_x3*_x6);
+    const double _x8 = pow(C, 2);
+    const double _x9 = pow(M, -2);
+    const double _x10 = sqrt(K*_x4 - 1.0/4.0*_x8*_x9);
+    const double _x11 = _x10*_x3;
+    const double _x12 = sin(_x11);
+    const double _x13 = 1.0/_x10;
+    const double _x14 = _x12*_x13;
+    const double _x15 = _x14*_x7;
+    const double _x16 = cos(_x11);
+    const double _x17 = _x14*_x6 + _x16;
+    const double _x18 = _x17*_x7;
+    const double _x19 = _x16*_x7;
+    const double _x20 = _x15*_x6;
+    const double _x21 = _x19 - _x20;
+    const double _x22 = _x0*_x21;
+    const double _x23 = -_x10*_x12 + _x16*_x6;
+    const double _x24 = _x18*_x6;
+    const double _x25 = -_x23*_x7 + _x24;
+    const double _x26 = -_x25;
+    const double _x27 = 3.141592653589793*M*_x12*_x13*_x26*_x7 - _x0*_x18 - _x0 - _x1*_x15 - _x18*_x22 - _x22;
+    const double _x28 = pow(Omega, -4);
+    const double _x29 = _x28*_x9;
+    const double _x30 = 2*Omega;
+    const double _x31 = M*e;
+    const double _x32 = M*_x21;
+    const double _x33 = _x21*e;
+    const double _x34 = _x26*e;
+    const double _x35 = -M*_x30 + _x0*_x26 + _x0*_x34 + _x1*_x33 - _x1 + _x21*_x30*_x31 + _x30*_x31 - _x30*_x32;
+    const double _x36 = _x15*_x34;
+    const double _x37 = 2*Omega*_x12*_x13*_x7 - _x15*_x30*e + 3.141592653589793*_x17*_x21*_x7*e - 3.141592653589793*_x18 + 3.141592653589793*_x21*e - 3.141592653589793*_x36 - 3.141592653589793;
+    const double _x38 = 2*m;
+    const double _x39 = _x15*_x26;
+    const double _x40 = M*_x12*_x13*_x26*_x7 + M*_x17*_x21*_x7*e + M*_x17*_x7*e - M*_x18 + M*_x21*e + M*e - M + 2*_x17*_x21*_x7*e*m - _x18*_x32 - _x18*_x38 + 2*_x21*e*m - _x31*_x39 - _x32 - _x36*_x38 - _x38;
+    const double _x41 = pow(Omega, 2);
+    const double _x42 = 2*_x2;
+    const double _x43 = _x21*_x42 + _x42;
+    const double _x44 = cos(phi);
+    const double _x45 = sqrt(K);
+    const double _x46 = pow(M, -1.0/2.0);
+    const double _x47 = _x45*_x46;
+    const double _x48 = (1.0/2.0)*_x3*(Omega - _x47);
+    const double _x49 = sin(_x48);
+    const double _x50 = 1.0/(Omega + _x47);
+    const double _x51 = (((_x48 != 0) ? (
+   sin(_x48)/_x48
+)
+: (
+   1
+)));
+    const double _x52 = 3.141592653589793*_x50*_x51;
+    const double _x53 = _x49*_x52;
+    const double _x54 = F0 + K*X_b;
+    const double _x55 = cos(_x48);
+    const double _x56 = _x52*_x55;
+    const double _x57 = _x46*_x56/_x45;
+    const double _x58 = C == 0;
+    const double _x59 = _x41*_x8;
+    const double _x60 = K - M*_x41;
+    const double _x61 = X_b*_x59 + _x54*_x60;
+    const double _x62 = 1.0/(_x59 + pow(_x60, 2));
+    const double _x63 = Omega*_x62;
+    const double _x64 = _x15*_x63;
+    const double _x65 = C*Omega*X_b;
+    const double _x66 = C*Omega*_x54 - _x60*_x65;
+    const double _x67 = _x18 + 1;
+    const double _x68 = -_x67;
+    const double _x69 = sin(phi);
+    const double _x70 = -_x44*((_x58) ? (
+   -X_b*_x5*_x53 - _x54*_x57
+)
+: (
+   _x61*_x64 + _x62*_x66*_x68
+)) + _x69*((_x58) ? (
+   3.141592653589793*_x2*_x4*_x49*_x50*_x51*_x54 - _x57*_x65
+)
+: (
+   _x61*_x62*_x68 - _x64*_x66
+));
+    const double _x71 = _x4*_x70;
+    const double _x72 = 2 - 2*_x33;
+    const double _x73 = pow(Omega, -3);
+    const double _x74 = _x37*_x73;
+    const double _x75 = _x45/pow(M, 3.0/2.0);
+    const double _x76 = _x19 - _x20;
+    const double _x77 = _x63*(-_x76 - 1);
+    const double _x78 = _x44*((_x58) ? (
+   C*X_b*_x56*_x75 - _x4*_x53*_x54
+)
+: (
+   _x25*_x62*_x66 - _x61*_x77
+)) - _x69*((_x58) ? (
+   -_x3*_x50*_x51*_x54*_x55*_x75 - _x4*_x53*_x65
+)
+: (
+   _x25*_x61*_x62 + _x66*_x77
+));
+    const double _x79 = _x4*_x78;
+    const double _x80 = 2*_x15;
+    const double _x81 = -_x78*e;
+    const double _x82 = _x4*_x81;
+    const double _x83 = _x28*_x40;
+    return (_x27*_x73*_x79*_x80 + _x27*_x43*_x71/_x41 - _x28*_x35*_x43*_x82 + _x70*_x72*_x74 + _x71*_x83*(_x23*_x7 - _x24 + _x34) + _x74*_x80*_x81 + _x79*_x83*(-_x18*_x33 - _x33 + _x36 + _x67) - _x82*_x83*(_x18*_x21 - _x39 + _x67 + _x76) + _x35*_x72*_x79/pow(Omega, 5))/(pow(_x27, 2)*_x29 + _x28*pow(_x37, 2) + _x29*pow(_x40, 2) + pow(_x35, 2)*_x9/pow(Omega, 6));
+}
+
+void symimpact_periodic_orbit_impact_mass_velocity_after_d_phi_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_impact_mass_velocity_after_d_phi(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial U / \partial e = \frac{\partial}{\partial e}\,\mathtt{impact\_mass\_velocity\_after} */
+double symimpact_periodic_orbit_impact_mass_velocity_after_d_e(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    const double _x0 = 3.141592653589793*M;
+    const double _x1 = 4*Omega;
+    const double _x2 = _x1*m;
+    const double _x3 = 1.0/Omega;
+    const double _x4 = 3.141592653589793*_x3;
+    const double _x5 = 1.0/M;
+    const double _x6 = C*_x5;
+    const double _x7 = (1.0/2.0)*_x6;
+    const double _x8 = exp(-_x4*_x7);
+    const double _x9 = pow(C, 2);
+    const double _x10 = pow(M, -2);
+    const double _x11 = sqrt(K*_x5 - 1.0/4.0*_x10*_x9);
+    const double _x12 = _x11*_x4;
+    const double _x13 = sin(_x12);
+    const double _x14 = 1.0/_x11;
+    const double _x15 = _x13*_x14;
+    const double _x16 = _x15*_x8;
+    const double _x17 = cos(_x12);
+    const double _x18 = _x15*_x7 + _x17;
+    const double _x19 = _x18*_x8;
+    const double _x20 = _x17*_x8;
+    const double _x21 = _x16*_x7;
+    const double _x22 = -_x20 + _x21;
+    const double _x23 = -_x22;
+    const double _x24 = _x0*_x23;
+    const double _x25 = -_x11*_x13 + _x17*_x7;
+    const double _x26 = _x19*_x7;
+    const double _x27 = -_x25*_x8 + _x26;
+    const double _x28 = -_x27;
+    const double _x29 = 3.141592653589793*M*_x13*_x14*_x28*_x8 - _x0*_x19 - _x0 - _x16*_x2 - _x19*_x24 - _x24;
+    const double _x30 = pow(Omega, -4);
+    const double _x31 = _x10*_x30;
+    const double _x32 = 2*M;
+    const double _x33 = Omega*_x32;
+    const double _x34 = M*e;
+    const double _x35 = 2*Omega;
+    const double _x36 = M*_x23;
+    const double _x37 = 2*_x36;
+    const double _x38 = Omega*_x37;
+    const double _x39 = _x23*e;
+    const double _x40 = _x0*_x28;
+    const double _x41 = _x28*e;
+    const double _x42 = _x0*_x41 + _x2*_x39 - _x2 + _x23*_x34*_x35 - _x33 + _x34*_x35 - _x38 + _x40;
+    const double _x43 = _x10/pow(Omega, 6);
+    const double _x44 = _x16*_x35;
+    const double _x45 = _x16*_x41;
+    const double _x46 = 3.141592653589793*_x18*_x23*_x8*e - 3.141592653589793*_x19 + 3.141592653589793*_x23*e - _x44*e + _x44 - 3.141592653589793*_x45 - 3.141592653589793;
+    const double _x47 = 2*m;
+    const double _x48 = _x16*_x28;
+    const double _x49 = M*_x19 - M*_x48 + M + _x19*_x36 + _x36;
+    const double _x50 = M*_x18*_x23*_x8*e + M*_x18*_x8*e + M*_x23*e + M*e + 2*_x18*_x23*_x8*e*m - _x19*_x47 + 2*_x23*e*m - _x34*_x48 - _x45*_x47 - _x47 - _x49;
+    const double _x51 = pow(_x29, 2)*_x31 + _x30*pow(_x46, 2) + _x31*pow(_x50, 2) + pow(_x42, 2)*_x43;
+    const double _x52 = _x23*m;
+    const double _x53 = 3.141592653589793*_x48;
+    const double _x54 = _x19*_x23;
+    const double _x55 = 4*m;
+    const double _x56 = _x25*_x8 - _x26 + _x41;
+    const double _x57 = _x5/pow(Omega, 5);
+    const double _x58 = _x57*d;
+    const double _x59 = _x42*_x58;
+    const double _x60 = _x19 + 1;
+    const double _x61 = _x20 - _x21;
+    const double _x62 = -_x48 + _x54 + _x60 + _x61;
+    const double _x63 = pow(Omega, -3);
+    const double _x64 = _x63*d;
+    const double _x65 = _x29*_x5;
+    const double _x66 = -_x19*_x39 - _x39 + _x45 + _x60;
+    const double _x67 = _x64*_x66;
+    const double _x68 = sin(phi);
+    const double _x69 = sqrt(K);
+    const double _x70 = pow(M, -1.0/2.0);
+    const double _x71 = _x69*_x70;
+    const double _x72 = (1.0/2.0)*_x4*(Omega - _x71);
+    const double _x73 = sin(_x72);
+    const double _x74 = 1.0/(Omega + _x71);
+    const double _x75 = (((_x72 != 0) ? (
+   sin(_x72)/_x72
+)
+: (
+   1
+)));
+    const double _x76 = 3.141592653589793*_x74*_x75;
+    const double _x77 = _x73*_x76;
+    const double _x78 = F0 + K*X_b;
+    const double _x79 = cos(_x72);
+    const double _x80 = _x76*_x79;
+    const double _x81 = _x70*_x80/_x69;
+    const double _x82 = C == 0;
+    const double _x83 = pow(Omega, 2);
+    const double _x84 = _x83*_x9;
+    const double _x85 = K - M*_x83;
+    const double _x86 = X_b*_x84 + _x78*_x85;
+    const double _x87 = 1.0/(_x84 + pow(_x85, 2));
+    const double _x88 = Omega*_x87;
+    const double _x89 = _x16*_x88;
+    const double _x90 = C*Omega*X_b;
+    const double _x91 = C*Omega*_x78 - _x85*_x90;
+    const double _x92 = -_x60;
+    const double _x93 = cos(phi);
+    const double _x94 = -_x68*((_x82) ? (
+   -X_b*_x6*_x77 - _x78*_x81
+)
+: (
+   _x86*_x89 + _x87*_x91*_x92
+)) - _x93*((_x82) ? (
+   3.141592653589793*_x3*_x5*_x73*_x74*_x75*_x78 - _x81*_x90
+)
+: (
+   _x86*_x87*_x92 - _x89*_x91
+));
+    const double _x95 = 2*_x3;
+    const double _x96 = _x23*_x95 + _x95;
+    const double _x97 = 2 - 2*_x39;
+    const double _x98 = _x63*_x94;
+    const double _x99 = _x97*_x98;
+    const double _x100 = _x69/pow(M, 3.0/2.0);
+    const double _x101 = _x88*(-_x61 - 1);
+    const double _x102 = _x68*((_x82) ? (
+   C*X_b*_x100*_x80 - _x5*_x77*_x78
+)
+: (
+   -_x101*_x86 + _x27*_x87*_x91
+)) + _x93*((_x82) ? (
+   -_x100*_x4*_x74*_x75*_x78*_x79 - _x5*_x77*_x90
+)
+: (
+   _x101*_x91 + _x27*_x86*_x87
+));
+    const double _x103 = 2*_x16*_x63;
+    const double _x104 = -_x102;
+    const double _x105 = _x103*_x104;
+    const double _x106 = _x105*_x46;
+    const double _x107 = _x102*_x57;
+    const double _x108 = _x107*_x97;
+    const double _x109 = _x30*_x5;
+    const double _x110 = _x104*_x109*_x96;
+    const double _x111 = _x110*_x42;
+    const double _x112 = _x109*_x50;
+    const double _x113 = _x112*_x94;
+    const double _x114 = _x104*_x62;
+    const double _x115 = _x112*_x114;
+    const double _x116 = _x102*_x112;
+    const double _x117 = _x2*_x23 + _x33 + _x38 + _x40;
+    const double _x118 = 3.141592653589793*_x18*_x23*_x8 + 3.141592653589793*_x23 - _x44 - _x53;
+    const double _x119 = _x22 + _x48 - _x54;
+    const double _x120 = 2*_x22;
+    const double _x121 = _x109*(_x23*_x47 - _x47*_x48 + _x47*_x54 + _x49);
+    return (_x102*_x121*_x66 + _x105*_x118*e + _x106 + _x107*_x120*_x42 + _x108*_x117 - _x110*_x117*e - _x111 + _x113*_x28 - _x114*_x121*e - _x115 + _x116*_x119 - _x117*_x56*_x58 + _x118*_x67 + _x118*_x99 + _x119*_x46*_x64 + _x120*_x46*_x98 + _x121*_x56*_x94 - _x28*_x59)/_x51 + (-_x30*_x46*(-_x1*_x16 + 2*3.141592653589793*_x18*_x23*_x8 + 2*3.141592653589793*_x23 - 2*_x53) - _x31*_x50*(_x19*_x32 + _x19*_x37 - _x32*_x48 + _x32 + _x37 - _x48*_x55 + 4*_x52 + _x54*_x55) - _x42*_x43*(M*_x1 + 8*Omega*_x52 + _x1*_x36 + 2*_x40))*(_x102*_x103*_x65 + _x106*e + _x108*_x42 - _x111*e + _x113*_x56 - _x115*e + _x116*_x66 + _x46*_x67 + _x46*_x99 - _x56*_x59 + _x62*_x64*_x65 + _x65*_x94*_x96/_x83)/pow(_x51, 2);
+}
+
+void symimpact_periodic_orbit_impact_mass_velocity_after_d_e_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_impact_mass_velocity_after_d_e(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
+/* Eq. F3: \partial U / \partial d = \frac{\partial}{\partial d}\,\mathtt{impact\_mass\_velocity\_after} */
+double symimpact_periodic_orbit_impact_mass_velocity_after_d_d(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi)
+{
+    (void)d;
+    (void)F0;
+    (void)X_b;
+    (void)phi;
+    const double _x0 = 1.0/M;
+    const double _x1 = 3.141592653589793/Omega;
+    const double _x2 = (1.0/2.0)*C*_x0;
+    const double _x3 = exp(-_x1*_x2);
+    const double _x4 = pow(M, -2);
+    const double _x5 = sqrt(-1.0/4.0*pow(C, 2)*_x4 + K*_x0);
+    const double _x6 = _x1*_x5;
+    const double _x7 = cos(_x6);
+    const double _x8 = sin(_x6);
+    const double _x9 = _x2*_x7 - _x5*_x8;
+    const double _x10 = 1.0/_x5;
+    const double _x11 = _x10*_x8;
+    const double _x12 = _x11*_x2 + _x7;
+    const double _x13 = _x12*_x3;
+    const double _x14 = _x13*_x2;
+    const double _x15 = -_x14 + _x3*_x9;
+    const double _x16 = _x15*e;
+    const double _x17 = 2*Omega;
+    const double _x18 = 4*Omega*m;
+    const double _x19 = M*e;
+    const double _x20 = _x11*_x3;
+    const double _x21 = _x2*_x20;
+    const double _x22 = -_x21 + _x3*_x7;
+    const double _x23 = M*_x22;
+    const double _x24 = _x22*e;
+    const double _x25 = 3.141592653589793*M;
+    const double _x26 = -M*_x17 + _x15*_x25 + _x16*_x25 + _x17*_x19*_x22 + _x17*_x19 - _x17*_x23 + _x18*_x24 - _x18;
+    const double _x27 = pow(Omega, -3);
+    const double _x28 = _x15*_x20;
+    const double _x29 = _x13 + 1;
+    const double _x30 = _x22*_x25;
+    const double _x31 = 3.141592653589793*M*_x10*_x15*_x3*_x8 - _x13*_x25 - _x13*_x30 - _x18*_x20 - _x25 - _x30;
+    const double _x32 = _x16*_x20;
+    const double _x33 = 2*Omega*_x10*_x3*_x8 + 3.141592653589793*_x12*_x22*_x3*e - 3.141592653589793*_x13 - _x17*_x20*e + 3.141592653589793*_x22*e - 3.141592653589793*_x32 - 3.141592653589793;
+    const double _x34 = pow(Omega, -4);
+    const double _x35 = _x34*_x4;
+    const double _x36 = 2*m;
+    return (_x0*_x27*_x31*(_x13*_x22 - _x21 - _x28 + _x29 + _x3*_x7) + _x27*_x33*(-_x13*_x24 - _x24 + _x29 + _x32) - _x0*_x26*(-_x14 + _x16 + _x3*_x9)/pow(Omega, 5))/(pow(_x31, 2)*_x35 + pow(_x33, 2)*_x34 + _x35*pow(M*_x10*_x15*_x3*_x8 + M*_x12*_x22*_x3*e + M*_x12*_x3*e - M*_x13 + M*_x22*e + M*e - M + 2*_x12*_x22*_x3*e*m - _x13*_x23 - _x13*_x36 - _x19*_x28 + 2*_x22*e*m - _x23 - _x32*_x36 - _x36, 2) + pow(_x26, 2)*_x4/pow(Omega, 6));
+}
+
+void symimpact_periodic_orbit_impact_mass_velocity_after_d_d_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_periodic_orbit_impact_mass_velocity_after_d_d(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i]);
+    }
+}
+
 /* ---- hunt_crossley: The Hunt–Crossley contact: exact restitution (Eq. F4 (derived here, beyond the paper)) ---- */
 
 /* Eq. F4: \delta_{max} = \frac{2^{\frac{3}{5}} \cdot 5^{\frac{2}{5}} M^{\frac{2}{5}} m^{\frac{2}{5}} v_{0}^{\frac{4}{5}} \left(\begin{cases} \left(\frac{\chi^{12} v_{0}^{12}}{14} - \frac{\chi^{11} v_{0}^{11}}{13} + \frac{\chi^{10} v_{0}^{10}}{12} - \frac{\chi^{9} v_{0}^{9}}{11} + \frac{\chi^{8} v_{0}^{8}}{10} - \frac{\chi^{7} v_{0}^{7}}{9} + \frac{\chi^{6} v_{0}^{6}}{8} - \frac{\chi^{5} v_{0}^{5}}{7} + \frac{\chi^{4} v_{0}^{4}}{6} - \frac{\chi^{3} v_{0}^{3}}{5} + \frac{\chi^{2} v_{0}^{2}}{4} - \frac{\chi v_{0}}{3} + \frac{1}{2}\right)^{\frac{2}{5}} & \text{for}\: \chi v_{0} < \frac{1}{20} \\\frac{\left(\chi v_{0} - \operatorname{log1p}{\left(\chi v_{0} \right)}\right)^{\frac{2}{5}}}{\max\left(\frac{1}{400}, \chi^{2} v_{0}^{2}\right)^{\frac{2}{5}}} & \text{otherwise} \end{cases}\right)}{2 K_{Hz}^{\frac{2}{5}} \left(M + m\right)^{\frac{2}{5}}} */
@@ -2848,7 +4548,7 @@ void symimpact_slow_flow_clearance_for_response_d_impact_mass_batch(size_t n, co
     }
 }
 
-/* Eq. F5: \partial d / \partial e = \frac{2 \xi \left(- \frac{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right) \left(- \frac{32 \Omega^{2} m \left(e - 1\right) \left(\frac{16 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{8 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{3}} - \frac{64 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right) \left(- \frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} + \frac{2 \xi^{2} \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}} + \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{2 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right)}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2} \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}} + \frac{32 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right)^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}} - \frac{32 \Omega^{2} m \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)}{2} - \frac{\left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right) \left(- \frac{16 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\frac{8 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{4 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}} - \frac{16 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(- \frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} + \frac{2 \xi^{2} \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}} + \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{2 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right) \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}} - \frac{16 \Omega^{2} m \left(\frac{\left(\frac{8 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{4 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}} + \frac{- \frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} + \frac{2 \xi^{2} \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}} + \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{3}} - \frac{2 \left(2 e - 2\right)}{\pi^{2} \left(e + 1\right)^{2}}}{\left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right) \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)}\right)}{2}\right) \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}}}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} */
+/* Eq. F5: \partial d / \partial e = \frac{\partial}{\partial e}\,\mathtt{clearance\_for\_response} */
 double symimpact_slow_flow_clearance_for_response_d_e(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
 {
     const double _x0 = pow(Omega, 2);
@@ -2947,7 +4647,7 @@ void symimpact_slow_flow_clearance_for_response_d_X_b_batch(size_t n, const doub
     }
 }
 
-/* Eq. F5: \partial d / \partial \Omega = \frac{2 C^{2} \Omega X_{b}^{2} \xi}{\sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}} \sqrt{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}}} + \frac{2 \xi \left(- \frac{\left(2 C \xi^{2} - \frac{64 \Omega m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right) \left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)}{2} - \frac{\left(- 4 M \Omega \xi^{2} - \frac{32 \Omega m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)}\right) \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)}{2}\right) \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}}}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} */
+/* Eq. F5: \partial d / \partial \Omega = \frac{\partial}{\partial \Omega}\,\mathtt{clearance\_for\_response} */
 double symimpact_slow_flow_clearance_for_response_d_Omega(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
 {
     const double _x0 = pow(Omega, 2);
@@ -2981,7 +4681,7 @@ void symimpact_slow_flow_clearance_for_response_d_Omega_batch(size_t n, const do
     }
 }
 
-/* Eq. F5: \partial d / \partial \xi = \frac{2 \xi \left(- \frac{\left(4 C \Omega \xi - \frac{64 \Omega^{2} m \left(e - 1\right) \left(\frac{4 \xi \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2} \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}}\right) \left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)}{2} - \frac{\left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right) \left(- \frac{16 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\frac{4 \xi \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right) \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}} - \frac{16 \Omega^{2} m \left(\frac{4 \xi \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2} \sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}}} + 4 \xi \left(K - M \Omega^{2}\right)\right)}{2}\right) \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}}}{\left(\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}\right)^{\frac{3}{2}}} + \frac{2 \sqrt{C^{2} \Omega^{2} X_{b}^{2} + \left(F_{0} + K X_{b}\right)^{2}}}{\sqrt{\left(C \Omega \xi^{2} - \frac{16 \Omega^{2} m \left(e - 1\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)^{2}}{\pi^{3} \left(e + 1\right) \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)^{2}}\right)^{2} + \left(- \frac{8 \Omega^{2} m \left(-1 + \frac{\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1}{\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1}\right) \left(\sqrt{\frac{4 \xi^{2} \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + \xi^{2} - \frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}}} + 1\right)}{\pi^{2} \left(\frac{4 \left(e - 1\right)^{2}}{\pi^{2} \left(e + 1\right)^{2}} + 1\right)} + \xi^{2} \left(K - M \Omega^{2}\right)\right)^{2}}} */
+/* Eq. F5: \partial d / \partial \xi = \frac{\partial}{\partial \xi}\,\mathtt{clearance\_for\_response} */
 double symimpact_slow_flow_clearance_for_response_d_xi(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi)
 {
     const double _x0 = pow(xi, 2);

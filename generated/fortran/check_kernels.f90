@@ -1000,6 +1000,246 @@ program check_kernels
 [2.42654_dp, -1.44692_dp, 0.979615_dp])
     call check("periodic_orbit_impact_mass_velocity_after", got, expected, scale)
 
+    ! periodic_orbit.phase_residual
+    expected = [0.0012034644155894218_dp, 0.011224841892893645_dp, -1.290319088743204e-07_dp]
+    scale = [0.01539678364265028_dp, 0.17294075261329953_dp, 5.715294801898301e-07_dp]
+    got = periodic_orbit_phase_residual([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_phase_residual", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_d_phi
+    expected = [-0.0011779373061544648_dp, 0.0069121197809340965_dp, -8.428577153256806e-08_dp]
+    scale = [0.020888493172773644_dp, 2.471313652092032_dp, 6.166974511500441e-07_dp]
+    got = periodic_orbit_phase_residual_d_phi([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_phase_residual_d_phi", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_d_e
+    expected = [0.00018090449663344063_dp, 0.02111567861172046_dp, 2.615100132156169e-09_dp]
+    scale = [0.01106398621828408_dp, 2.2048111693539223_dp, 5.138169185933974e-07_dp]
+    got = periodic_orbit_phase_residual_d_e([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_phase_residual_d_e", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_d_d
+    expected = [-0.0009249279922699639_dp, -0.813520334467653_dp, -7.196738762399061e-05_dp]
+    scale = [0.30975603356702497_dp, 2.082074820287281_dp, 0.00036311489617053404_dp]
+    got = periodic_orbit_phase_residual_d_d([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_phase_residual_d_d", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_d_impact_mass
+    expected = [-0.00022909607061149273_dp, -0.007586401008704871_dp, -2.2156238568002612e-08_dp]
+    scale = [0.0007489781691765737_dp, 0.03492074822151698_dp, 1.0218096153371363e-07_dp]
+    got = periodic_orbit_phase_residual_d_impact_mass([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_phase_residual_d_impact_mass", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_d_F0
+    expected = [0.0002001405962600689_dp, -4.1282603323015064e-05_dp, -2.9572869996261017e-09_dp]
+    scale = [0.0034623042132394064_dp, 0.005574571815200737_dp, 2.3265723421457293e-08_dp]
+    got = periodic_orbit_phase_residual_d_F0([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_phase_residual_d_F0", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_d_X_b
+    expected = [0.09903545075783521_dp, -3.221616554347606_dp, -3.63066282713426e-05_dp]
+    scale = [1.7260600737880165_dp, 435.03187012719485_dp, 0.0002856036433680527_dp]
+    got = periodic_orbit_phase_residual_d_X_b([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_phase_residual_d_X_b", got, expected, scale)
+
+    ! periodic_orbit.impact_displacement_d_phi
+    expected = [-0.03402621729556107_dp, -0.005607966753125811_dp, 0.00012662089896299728_dp]
+    scale = [0.04600795791056222_dp, 0.012160333893283503_dp, 0.0005389811962243886_dp]
+    got = periodic_orbit_impact_displacement_d_phi([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_impact_displacement_d_phi", got, expected, scale)
+
+    ! periodic_orbit.impact_displacement_d_e
+    expected = [-0.011759400970147476_dp, -0.00010933663476483657_dp, 3.509319422002264e-05_dp]
+    scale = [0.033420069786953346_dp, 0.028791997137784364_dp, 0.0011720281171092254_dp]
+    got = periodic_orbit_impact_displacement_d_e([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_impact_displacement_d_e", got, expected, scale)
+
+    ! periodic_orbit.impact_displacement_d_d
+    expected = [0.004191291142670135_dp, 0.008182969061042579_dp, -0.025064016082724794_dp]
+    scale = [0.09987652994774078_dp, 0.013381906774496808_dp, 0.1874988037215574_dp]
+    got = periodic_orbit_impact_displacement_d_d([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_impact_displacement_d_d", got, expected, scale)
+
+    ! periodic_orbit.main_velocity_after_d_phi
+    expected = [0.01696159635872268_dp, 0.004495465154285595_dp, 0.016178436705647132_dp]
+    scale = [0.0905467499189953_dp, 0.2518960836502556_dp, 0.04645384134185711_dp]
+    got = periodic_orbit_main_velocity_after_d_phi([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_main_velocity_after_d_phi", got, expected, scale)
+
+    ! periodic_orbit.main_velocity_after_d_e
+    expected = [-0.09783449449975665_dp, 0.006116403036632686_dp, -0.00011331844732091835_dp]
+    scale = [0.2405118265040745_dp, 2.4866171809089685_dp, 0.09482038178342816_dp]
+    got = periodic_orbit_main_velocity_after_d_e([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_main_velocity_after_d_e", got, expected, scale)
+
+    ! periodic_orbit.main_velocity_after_d_d
+    expected = [-0.1708280208536544_dp, -0.40717961515620826_dp, -0.1406531491697867_dp]
+    scale = [0.7744807843631336_dp, 0.9472933252847798_dp, 12.916278946239624_dp]
+    got = periodic_orbit_main_velocity_after_d_d([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_main_velocity_after_d_d", got, expected, scale)
+
+    ! periodic_orbit.impact_mass_velocity_after_d_phi
+    expected = [0.11735740829476811_dp, 0.00602131475509867_dp, -0.011097417925537768_dp]
+    scale = [0.16785010808803266_dp, 0.013159437433361698_dp, 0.051946177326171024_dp]
+    got = periodic_orbit_impact_mass_velocity_after_d_phi([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_impact_mass_velocity_after_d_phi", got, expected, scale)
+
+    ! periodic_orbit.impact_mass_velocity_after_d_e
+    expected = [0.042251841773672534_dp, 0.00011871728472119854_dp, -0.0075563806190504235_dp]
+    scale = [0.13920713502036744_dp, 0.04673431357879455_dp, 0.13379401495812832_dp]
+    got = periodic_orbit_impact_mass_velocity_after_d_e([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_impact_mass_velocity_after_d_e", got, expected, scale)
+
+    ! periodic_orbit.impact_mass_velocity_after_d_d
+    expected = [-1.7347313225971392_dp, -0.5456190166174647_dp, -46.35338359032523_dp]
+    scale = [2.9515879489552823_dp, 1.0769098344412193_dp, 76.89753487680608_dp]
+    got = periodic_orbit_impact_mass_velocity_after_d_d([13.4728_dp, 0.907579_dp, 6.1138_dp], &
+[496.767_dp, 78037.8_dp, 12259.1_dp], &
+[0.368034_dp, 0.486068_dp, 0.104102_dp], &
+[0.0021646_dp, 0.066263_dp, 0.0101423_dp], &
+[0.816625_dp, 0.13325_dp, 0.449874_dp], &
+[0.000192699_dp, 0.00830318_dp, 0.000715549_dp], &
+[2.46211_dp, 4.92423_dp, 7.38634_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[5.40518_dp, 1.68679_dp, 157.918_dp], &
+[2.42654_dp, -1.44692_dp, 0.979615_dp])
+    call check("periodic_orbit_impact_mass_velocity_after_d_d", got, expected, scale)
+
     ! hunt_crossley.max_penetration
     expected = [0.0002202551088250464_dp, 1.9107704356534762e-07_dp, 0.0006217076758576359_dp]
     scale = [0.0002202551088250464_dp, 1.9107704356534762e-07_dp, 0.0006217076758576359_dp]
@@ -1458,7 +1698,7 @@ program check_kernels
     call check("fixed_points_hunt_crossley_peak_speed_ratio", got, expected, scale)
     call check_steps("fixed_points_hunt_crossley_peak_speed_ratio", taken, steps)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 130 kernels and 5 iterations, ", &
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 146 kernels and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

@@ -19,6 +19,22 @@ __all__ = [
     "impact_displacement",
     "main_velocity_after",
     "impact_mass_velocity_after",
+    "phase_residual",
+    "phase_residual_d_phi",
+    "phase_residual_d_e",
+    "phase_residual_d_d",
+    "phase_residual_d_impact_mass",
+    "phase_residual_d_F0",
+    "phase_residual_d_X_b",
+    "impact_displacement_d_phi",
+    "impact_displacement_d_e",
+    "impact_displacement_d_d",
+    "main_velocity_after_d_phi",
+    "main_velocity_after_d_e",
+    "main_velocity_after_d_d",
+    "impact_mass_velocity_after_d_phi",
+    "impact_mass_velocity_after_d_e",
+    "impact_mass_velocity_after_d_d",
 ]
 
 
@@ -501,3 +517,1439 @@ def impact_mass_velocity_after(M, K, C, m, e, d, F0, X_b, Omega, phi):
     _x87 = _x4*_x85
     _x88 = _x28*_x40
     return (-_x28*_x35*_x79*_x87 - _x41*_x42*d + _x41*_x77*_x88 + _x42*_x80*_x86 + _x45*_x48*d - _x45*_x87*_x88 + _x47*_x77*_x79/_x66 + _x48*_x83*_x84 + _x49*_x50*d + _x49*_x86*_x88 + _x50*_x77*_x80 + _x50*_x84*_x85)/(_x27**2*_x29 + _x28*_x37**2 + _x29*_x40**2 + _x35**2*_x9/Omega**6)
+
+
+@jax.jit
+def phase_residual(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""Residual r = a·cos φ + b·sin φ − c of the orbit's phase condition [kg m/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = Omega**2
+    _x1 = _x0**(-1.0)
+    _x2 = _x1*d
+    _x3 = _x2*e
+    _x4 = M**(-1.0)
+    _x5 = _x4*m
+    _x6 = 2*_x5
+    _x7 = Omega**(-1.0)
+    _x8 = jax.numpy.pi*_x7
+    _x9 = (1/2)*_x8
+    _x10 = C*_x4
+    _x11 = jax.numpy.exp(-_x10*_x9)
+    _x12 = C**2
+    _x13 = jax.numpy.sqrt(K*_x4 - 1/4*_x12/M**2)
+    _x14 = _x13*_x8
+    _x15 = jax.numpy.cos(_x14)
+    _x16 = (1/2)*_x10
+    _x17 = jax.numpy.sin(_x14)
+    _x18 = _x17/_x13
+    _x19 = _x16*_x18
+    _x20 = _x11*(_x15 + _x19)
+    _x21 = _x2*_x20
+    _x22 = _x11*_x15
+    _x23 = _x11*_x19
+    _x24 = _x22 - _x23
+    _x25 = _x2*_x24
+    _x26 = _x24*_x3
+    _x27 = _x20*_x26
+    _x28 = -_x11*(-_x13*_x17 + _x15*_x16) + _x16*_x20
+    _x29 = -_x28
+    _x30 = _x11*_x18
+    _x31 = _x29*_x30
+    _x32 = _x3*_x31
+    _x33 = jax.numpy.sqrt(K)
+    _x34 = 1/jax.numpy.sqrt(M)
+    _x35 = _x33*_x34
+    _x36 = _x9*(Omega - _x35)
+    _x37 = jax.numpy.sin(_x36)
+    _x38 = jax.numpy.pi*_x37
+    _x39 = (Omega + _x35)**(-1.0)
+    _x40 = jax.numpy.sinc(_x36/jax.numpy.pi)
+    _x41 = _x39*_x40
+    _x42 = _x38*_x41
+    _x43 = jax.numpy.cos(_x36)
+    _x44 = F0 + K*X_b
+    _x45 = _x39*_x40*_x44
+    _x46 = _x43*_x45
+    _x47 = jax.numpy.pi*_x34/_x33
+    _x48 = jax.numpy.equal(C, 0)
+    _x49 = _x0*_x12
+    _x50 = K - M*_x0
+    _x51 = (_x49 + _x50**2)**(-1.0)
+    _x52 = X_b*_x49 + _x44*_x50
+    _x53 = _x51*_x52
+    _x54 = Omega*_x30
+    _x55 = -_x20 - 1
+    _x56 = C*Omega*X_b
+    _x57 = C*Omega*_x44 - _x50*_x56
+    _x58 = _x51*_x57
+    _x59 = jax.numpy.select([_x48,True], [-X_b*_x10*_x42 - _x46*_x47,_x53*_x54 + _x55*_x58], default=jax.numpy.nan)
+    _x60 = 2*_x1
+    _x61 = _x59*_x60
+    _x62 = _x61*e
+    _x63 = 4*_x1*_x5
+    _x64 = _x59*_x63
+    _x65 = _x24*e
+    _x66 = _x33/M**(3/2)
+    _x67 = _x41*_x43
+    _x68 = Omega*(-_x22 + _x23 - 1)
+    _x69 = jax.numpy.select([_x48,True], [jax.numpy.pi*C*X_b*_x66*_x67 - _x38*_x4*_x45,_x28*_x51*_x57 - _x53*_x68], default=jax.numpy.nan)
+    _x70 = jax.numpy.pi/Omega**3
+    _x71 = _x69*_x70
+    _x72 = _x71*e
+    _x73 = _x29*_x70
+    _x74 = _x59*_x73
+    _x75 = _x30*_x60
+    _x76 = _x69*_x75
+    _x77 = _x30*_x63*e
+    _x78 = jax.numpy.select([_x48,True], [jax.numpy.pi*_x37*_x39*_x4*_x40*_x44*_x7 - _x47*_x56*_x67,_x51*_x52*_x55 - _x54*_x58], default=jax.numpy.nan)
+    _x79 = _x60*_x78
+    _x80 = _x79*e
+    _x81 = _x63*_x78
+    _x82 = jax.numpy.select([_x48,True], [-_x4*_x42*_x56 - _x46*_x66*_x8,_x28*_x53 + _x58*_x68], default=jax.numpy.nan)
+    _x83 = _x70*_x82
+    _x84 = _x83*e
+    _x85 = _x73*_x78
+    _x86 = _x75*_x82
+    return _x2*_x31 - _x2*_x6 - _x2 - _x20*_x25 + _x20*_x3 - _x21*_x6 - _x21 - _x25 + _x26*_x6 + _x26 + _x27*_x6 + _x27 + _x3 - _x32*_x6 - _x32 + (_x20*_x71 + _x20*_x72 + _x24*_x61 - _x24*_x62 + _x61 - _x62 - _x64*_x65 + _x64 + _x69*_x77 + _x71 + _x72 - _x74*e - _x74 + _x76*e - _x76)*jax.numpy.sin(phi) + (_x20*_x83 + _x20*_x84 + _x24*_x79 - _x24*_x80 - _x65*_x81 + _x77*_x82 + _x79 - _x80 + _x81 + _x83 + _x84 - _x85*e - _x85 + _x86*e - _x86)*jax.numpy.cos(phi)
+
+
+@jax.jit
+def phase_residual_d_phi(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂phi of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition (its partial derivative in forcing phase at the first impact φ) [kg m/rad/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = M**(-1.0)
+    _x1 = C*_x0
+    _x2 = jax.numpy.sqrt(K)
+    _x3 = 1/jax.numpy.sqrt(M)
+    _x4 = _x2*_x3
+    _x5 = Omega**(-1.0)
+    _x6 = jax.numpy.pi*_x5
+    _x7 = (1/2)*_x6
+    _x8 = _x7*(Omega - _x4)
+    _x9 = jax.numpy.sin(_x8)
+    _x10 = (Omega + _x4)**(-1.0)
+    _x11 = jax.numpy.sinc(_x8/jax.numpy.pi)
+    _x12 = jax.numpy.pi*_x10*_x11
+    _x13 = _x12*_x9
+    _x14 = F0 + K*X_b
+    _x15 = jax.numpy.cos(_x8)
+    _x16 = _x12*_x15
+    _x17 = _x16*_x3/_x2
+    _x18 = jax.numpy.equal(C, 0)
+    _x19 = C**2
+    _x20 = Omega**2
+    _x21 = _x19*_x20
+    _x22 = K - M*_x20
+    _x23 = (_x21 + _x22**2)**(-1.0)
+    _x24 = X_b*_x21 + _x14*_x22
+    _x25 = _x23*_x24
+    _x26 = jax.numpy.exp(-_x1*_x7)
+    _x27 = jax.numpy.sqrt(K*_x0 - 1/4*_x19/M**2)
+    _x28 = _x27*_x6
+    _x29 = jax.numpy.sin(_x28)
+    _x30 = _x29/_x27
+    _x31 = _x26*_x30
+    _x32 = Omega*_x31
+    _x33 = jax.numpy.cos(_x28)
+    _x34 = (1/2)*_x1
+    _x35 = _x30*_x34
+    _x36 = _x26*(_x33 + _x35)
+    _x37 = -_x36 - 1
+    _x38 = C*Omega*X_b
+    _x39 = C*Omega*_x14 - _x22*_x38
+    _x40 = _x23*_x39
+    _x41 = jax.numpy.select([_x18,True], [-X_b*_x1*_x13 - _x14*_x17,_x25*_x32 + _x37*_x40], default=jax.numpy.nan)
+    _x42 = _x20**(-1.0)
+    _x43 = 2*_x42
+    _x44 = _x41*_x43
+    _x45 = _x44*e
+    _x46 = 4*_x0*_x42*m
+    _x47 = _x41*_x46
+    _x48 = _x26*_x33
+    _x49 = _x26*_x35
+    _x50 = _x48 - _x49
+    _x51 = _x50*e
+    _x52 = _x2/M**(3/2)
+    _x53 = Omega*(-_x48 + _x49 - 1)
+    _x54 = -_x26*(-_x27*_x29 + _x33*_x34) + _x34*_x36
+    _x55 = jax.numpy.select([_x18,True], [C*X_b*_x16*_x52 - _x0*_x13*_x14,_x23*_x39*_x54 - _x25*_x53], default=jax.numpy.nan)
+    _x56 = jax.numpy.pi/Omega**3
+    _x57 = _x55*_x56
+    _x58 = _x57*e
+    _x59 = -_x54*_x56
+    _x60 = _x41*_x59
+    _x61 = _x31*_x43
+    _x62 = _x55*_x61
+    _x63 = _x31*_x46*e
+    _x64 = jax.numpy.select([_x18,True], [jax.numpy.pi*_x0*_x10*_x11*_x14*_x5*_x9 - _x17*_x38,_x23*_x24*_x37 - _x32*_x40], default=jax.numpy.nan)
+    _x65 = _x43*_x64
+    _x66 = _x65*e
+    _x67 = _x46*_x64
+    _x68 = jax.numpy.select([_x18,True], [-_x0*_x13*_x38 - _x10*_x11*_x14*_x15*_x52*_x6,_x25*_x54 + _x40*_x53], default=jax.numpy.nan)
+    _x69 = _x56*_x68
+    _x70 = _x69*e
+    _x71 = _x59*_x64
+    _x72 = _x61*_x68
+    return (_x36*_x57 + _x36*_x58 + _x44*_x50 + _x44 - _x45*_x50 - _x45 - _x47*_x51 + _x47 + _x55*_x63 + _x57 + _x58 - _x60*e - _x60 + _x62*e - _x62)*jax.numpy.cos(phi) - (_x36*_x69 + _x36*_x70 + _x50*_x65 - _x50*_x66 - _x51*_x67 + _x63*_x68 + _x65 - _x66 + _x67 + _x69 + _x70 - _x71*e - _x71 + _x72*e - _x72)*jax.numpy.sin(phi)
+
+
+@jax.jit
+def phase_residual_d_e(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂e of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition (its partial derivative in coefficient of restitution e) [kg m/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = Omega**2
+    _x1 = _x0**(-1.0)
+    _x2 = _x1*d
+    _x3 = Omega**(-1.0)
+    _x4 = jax.numpy.pi*_x3
+    _x5 = (1/2)*_x4
+    _x6 = M**(-1.0)
+    _x7 = C*_x6
+    _x8 = jax.numpy.exp(-_x5*_x7)
+    _x9 = C**2
+    _x10 = jax.numpy.sqrt(K*_x6 - 1/4*_x9/M**2)
+    _x11 = _x10*_x4
+    _x12 = jax.numpy.cos(_x11)
+    _x13 = (1/2)*_x7
+    _x14 = jax.numpy.sin(_x11)
+    _x15 = _x10**(-1.0)
+    _x16 = _x14*_x15
+    _x17 = _x13*_x16
+    _x18 = _x12 + _x17
+    _x19 = _x18*_x8
+    _x20 = _x12*_x8
+    _x21 = _x17*_x8
+    _x22 = _x20 - _x21
+    _x23 = _x2*_x22
+    _x24 = _x6*m
+    _x25 = 2*_x24
+    _x26 = _x19*_x23
+    _x27 = _x13*_x19 - _x8*(-_x10*_x14 + _x12*_x13)
+    _x28 = -_x27
+    _x29 = _x16*_x8
+    _x30 = _x2*_x28*_x29
+    _x31 = jax.numpy.sqrt(K)
+    _x32 = 1/jax.numpy.sqrt(M)
+    _x33 = _x31*_x32
+    _x34 = _x5*(Omega - _x33)
+    _x35 = jax.numpy.sin(_x34)
+    _x36 = jax.numpy.pi*_x35
+    _x37 = (Omega + _x33)**(-1.0)
+    _x38 = jax.numpy.sinc(_x34/jax.numpy.pi)
+    _x39 = _x37*_x38
+    _x40 = _x36*_x39
+    _x41 = jax.numpy.cos(_x34)
+    _x42 = F0 + K*X_b
+    _x43 = _x37*_x38*_x42
+    _x44 = _x41*_x43
+    _x45 = jax.numpy.pi*_x32/_x31
+    _x46 = jax.numpy.equal(C, 0)
+    _x47 = _x0*_x9
+    _x48 = K - M*_x0
+    _x49 = (_x47 + _x48**2)**(-1.0)
+    _x50 = X_b*_x47 + _x42*_x48
+    _x51 = _x49*_x50
+    _x52 = Omega*_x29
+    _x53 = -_x19 - 1
+    _x54 = C*Omega*X_b
+    _x55 = C*Omega*_x42 - _x48*_x54
+    _x56 = _x49*_x55
+    _x57 = jax.numpy.select([_x46,True], [-X_b*_x40*_x7 - _x44*_x45,_x51*_x52 + _x53*_x56], default=jax.numpy.nan)
+    _x58 = 2*_x1
+    _x59 = _x57*_x58
+    _x60 = 4*_x1*_x22*_x24
+    _x61 = Omega**(-3.0)
+    _x62 = _x31/M**(3/2)
+    _x63 = _x39*_x41
+    _x64 = Omega*(-_x20 + _x21 - 1)
+    _x65 = jax.numpy.select([_x46,True], [jax.numpy.pi*C*X_b*_x62*_x63 - _x36*_x43*_x6,_x27*_x49*_x55 - _x51*_x64], default=jax.numpy.nan)
+    _x66 = jax.numpy.pi*_x28*_x61
+    _x67 = jax.numpy.select([_x46,True], [jax.numpy.pi*_x3*_x35*_x37*_x38*_x42*_x6 - _x45*_x54*_x63,_x49*_x50*_x53 - _x52*_x56], default=jax.numpy.nan)
+    _x68 = _x58*_x67
+    _x69 = jax.numpy.select([_x46,True], [-_x4*_x44*_x62 - _x40*_x54*_x6,_x27*_x51 + _x56*_x64], default=jax.numpy.nan)
+    return _x19*_x2 + _x2 + _x23*_x25 + _x23 + _x25*_x26 - _x25*_x30 + _x26 - _x30 + (4*_x1*_x14*_x15*_x6*_x65*_x8*m + 2*_x1*_x14*_x15*_x65*_x8 + jax.numpy.pi*_x18*_x61*_x65*_x8 - _x22*_x59 - _x57*_x60 - _x57*_x66 - _x59 + jax.numpy.pi*_x61*_x65)*jax.numpy.sin(phi) + (4*_x1*_x14*_x15*_x6*_x69*_x8*m + 2*_x1*_x14*_x15*_x69*_x8 + jax.numpy.pi*_x18*_x61*_x69*_x8 - _x22*_x68 - _x60*_x67 + jax.numpy.pi*_x61*_x69 - _x66*_x67 - _x68)*jax.numpy.cos(phi)
+
+
+@jax.jit
+def phase_residual_d_d(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂d of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition (its partial derivative in total clearance d) [kg/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = Omega**(-2.0)
+    _x1 = M**(-1.0)
+    _x2 = 2*_x1*m
+    _x3 = jax.numpy.pi/Omega
+    _x4 = (1/2)*C*_x1
+    _x5 = jax.numpy.exp(-_x3*_x4)
+    _x6 = jax.numpy.sqrt(-1/4*C**2/M**2 + K*_x1)
+    _x7 = _x3*_x6
+    _x8 = jax.numpy.cos(_x7)
+    _x9 = jax.numpy.sin(_x7)
+    _x10 = _x6**(-1.0)
+    _x11 = _x10*_x9
+    _x12 = _x11*_x4
+    _x13 = _x12 + _x8
+    _x14 = _x13*_x5
+    _x15 = _x0*_x14
+    _x16 = -_x12*_x5 + _x5*_x8
+    _x17 = _x0*_x16
+    _x18 = -_x14*_x4 + _x5*(_x4*_x8 - _x6*_x9)
+    _x19 = _x0*_x11*_x18*_x5*e
+    return 2*_x0*_x1*_x13*_x16*_x5*e*m + 2*_x0*_x1*_x16*e*m + _x0*_x10*_x18*_x5*_x9 + _x0*_x13*_x16*_x5*e + _x0*_x13*_x5*e + _x0*_x16*e - _x0*_x2 + _x0*e - _x0 - _x14*_x17 - _x15*_x2 - _x15 - _x17 - _x19*_x2 - _x19
+
+
+@jax.jit
+def phase_residual_d_impact_mass(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂m of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition (its partial derivative in impact mass m) [m/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = M**(-1.0)
+    _x1 = Omega**2
+    _x2 = _x0/_x1
+    _x3 = 2*_x2*d
+    _x4 = Omega**(-1.0)
+    _x5 = jax.numpy.pi*_x4
+    _x6 = (1/2)*_x5
+    _x7 = C*_x0
+    _x8 = jax.numpy.exp(-_x6*_x7)
+    _x9 = C**2
+    _x10 = jax.numpy.sqrt(K*_x0 - 1/4*_x9/M**2)
+    _x11 = _x10*_x5
+    _x12 = jax.numpy.cos(_x11)
+    _x13 = (1/2)*_x7
+    _x14 = jax.numpy.sin(_x11)
+    _x15 = _x14/_x10
+    _x16 = _x13*_x15
+    _x17 = _x8*(_x12 + _x16)
+    _x18 = _x17*_x3
+    _x19 = _x12*_x8
+    _x20 = _x16*_x8
+    _x21 = e*(_x19 - _x20)
+    _x22 = _x13*_x17 - _x8*(-_x10*_x14 + _x12*_x13)
+    _x23 = _x15*_x8
+    _x24 = _x23*e
+    _x25 = jax.numpy.sqrt(K)
+    _x26 = 1/jax.numpy.sqrt(M)
+    _x27 = _x25*_x26
+    _x28 = _x6*(Omega - _x27)
+    _x29 = jax.numpy.sin(_x28)
+    _x30 = jax.numpy.pi*_x29
+    _x31 = (Omega + _x27)**(-1.0)
+    _x32 = jax.numpy.sinc(_x28/jax.numpy.pi)
+    _x33 = _x31*_x32
+    _x34 = _x30*_x33
+    _x35 = jax.numpy.cos(_x28)
+    _x36 = F0 + K*X_b
+    _x37 = _x31*_x32*_x36
+    _x38 = _x35*_x37
+    _x39 = jax.numpy.pi*_x26/_x25
+    _x40 = jax.numpy.equal(C, 0)
+    _x41 = _x1*_x9
+    _x42 = K - M*_x1
+    _x43 = (_x41 + _x42**2)**(-1.0)
+    _x44 = X_b*_x41 + _x36*_x42
+    _x45 = _x43*_x44
+    _x46 = Omega*_x23
+    _x47 = -_x17 - 1
+    _x48 = C*Omega*X_b
+    _x49 = C*Omega*_x36 - _x42*_x48
+    _x50 = _x43*_x49
+    _x51 = 4*_x2
+    _x52 = _x51*jax.numpy.select([_x40,True], [-X_b*_x34*_x7 - _x38*_x39,_x45*_x46 + _x47*_x50], default=jax.numpy.nan)
+    _x53 = _x25/M**(3/2)
+    _x54 = _x33*_x35
+    _x55 = Omega*(-_x19 + _x20 - 1)
+    _x56 = _x24*_x51
+    _x57 = _x51*jax.numpy.select([_x40,True], [jax.numpy.pi*_x0*_x29*_x31*_x32*_x36*_x4 - _x39*_x48*_x54,_x43*_x44*_x47 - _x46*_x50], default=jax.numpy.nan)
+    return _x18*_x21 - _x18 + _x21*_x3 + _x22*_x24*_x3 - _x3 + (-_x21*_x52 + _x52 + _x56*jax.numpy.select([_x40,True], [jax.numpy.pi*C*X_b*_x53*_x54 - _x0*_x30*_x37,_x22*_x43*_x49 - _x45*_x55], default=jax.numpy.nan))*jax.numpy.sin(phi) + (-_x21*_x57 + _x56*jax.numpy.select([_x40,True], [-_x0*_x34*_x48 - _x38*_x5*_x53,_x22*_x45 + _x50*_x55], default=jax.numpy.nan) + _x57)*jax.numpy.cos(phi)
+
+
+@jax.jit
+def phase_residual_d_F0(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂F0 of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition (its partial derivative in force amplitude F0 on the main mass) [kg m/N/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = 1/jax.numpy.sqrt(M)
+    _x1 = jax.numpy.sqrt(K)
+    _x2 = _x0*_x1
+    _x3 = jax.numpy.pi/Omega
+    _x4 = (1/2)*_x3
+    _x5 = _x4*(Omega - _x2)
+    _x6 = jax.numpy.cos(_x5)
+    _x7 = jax.numpy.sinc(_x5/jax.numpy.pi)/(Omega + _x2)
+    _x8 = jax.numpy.pi*_x7
+    _x9 = jax.numpy.equal(C, 0)
+    _x10 = C**2
+    _x11 = Omega**2
+    _x12 = K - M*_x11
+    _x13 = (_x10*_x11 + _x12**2)**(-1.0)
+    _x14 = _x12*_x13
+    _x15 = Omega*_x14
+    _x16 = M**(-1.0)
+    _x17 = C*_x16
+    _x18 = jax.numpy.exp(-_x17*_x4)
+    _x19 = jax.numpy.sqrt(K*_x16 - 1/4*_x10/M**2)
+    _x20 = _x19*_x3
+    _x21 = jax.numpy.sin(_x20)
+    _x22 = _x21/_x19
+    _x23 = _x18*_x22
+    _x24 = jax.numpy.cos(_x20)
+    _x25 = (1/2)*_x17
+    _x26 = _x22*_x25
+    _x27 = _x18*(_x24 + _x26)
+    _x28 = -_x27 - 1
+    _x29 = C*_x13
+    _x30 = Omega*_x29
+    _x31 = jax.numpy.select([_x9,True], [-_x0*_x6*_x8/_x1,_x15*_x23 + _x28*_x30], default=jax.numpy.nan)
+    _x32 = _x11**(-1.0)
+    _x33 = 2*_x32
+    _x34 = _x31*_x33
+    _x35 = _x34*e
+    _x36 = 4*_x16*_x32*m
+    _x37 = _x31*_x36
+    _x38 = _x18*_x24
+    _x39 = _x18*_x26
+    _x40 = _x38 - _x39
+    _x41 = _x40*e
+    _x42 = _x16*jax.numpy.sin(_x5)
+    _x43 = -_x38 + _x39 - 1
+    _x44 = -_x18*(-_x19*_x21 + _x24*_x25) + _x25*_x27
+    _x45 = jax.numpy.select([_x9,True], [-_x42*_x8,-_x15*_x43 + _x30*_x44], default=jax.numpy.nan)
+    _x46 = jax.numpy.pi/Omega**3
+    _x47 = _x45*_x46
+    _x48 = _x47*e
+    _x49 = -_x44*_x46
+    _x50 = _x31*_x49
+    _x51 = _x23*_x33
+    _x52 = _x45*_x51
+    _x53 = _x23*_x36*e
+    _x54 = _x3*_x7
+    _x55 = _x11*_x29
+    _x56 = jax.numpy.select([_x9,True], [_x42*_x54,_x12*_x13*_x28 - _x23*_x55], default=jax.numpy.nan)
+    _x57 = _x33*_x56
+    _x58 = _x57*e
+    _x59 = _x36*_x56
+    _x60 = jax.numpy.select([_x9,True], [-_x1*_x54*_x6/M**(3/2),_x14*_x44 + _x43*_x55], default=jax.numpy.nan)
+    _x61 = _x46*_x60
+    _x62 = _x61*e
+    _x63 = _x49*_x56
+    _x64 = _x51*_x60
+    return (_x27*_x47 + _x27*_x48 + _x34*_x40 + _x34 - _x35*_x40 - _x35 - _x37*_x41 + _x37 + _x45*_x53 + _x47 + _x48 - _x50*e - _x50 + _x52*e - _x52)*jax.numpy.sin(phi) + (_x27*_x61 + _x27*_x62 + _x40*_x57 - _x40*_x58 - _x41*_x59 + _x53*_x60 + _x57 - _x58 + _x59 + _x61 + _x62 - _x63*e - _x63 + _x64*e - _x64)*jax.numpy.cos(phi)
+
+
+@jax.jit
+def phase_residual_d_X_b(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂X_b of: residual r = a·cos φ + b·sin φ − c of the orbit's phase condition (its partial derivative in base-motion amplitude X_b) [kg/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = M**(-1.0)
+    _x1 = C*_x0
+    _x2 = jax.numpy.sqrt(K)
+    _x3 = 1/jax.numpy.sqrt(M)
+    _x4 = _x2*_x3
+    _x5 = Omega**(-1.0)
+    _x6 = jax.numpy.pi*_x5
+    _x7 = (1/2)*_x6
+    _x8 = _x7*(Omega - _x4)
+    _x9 = jax.numpy.sin(_x8)
+    _x10 = (Omega + _x4)**(-1.0)
+    _x11 = jax.numpy.sinc(_x8/jax.numpy.pi)
+    _x12 = _x10*_x11
+    _x13 = jax.numpy.pi*_x12
+    _x14 = _x13*_x9
+    _x15 = jax.numpy.cos(_x8)
+    _x16 = _x13*_x15
+    _x17 = jax.numpy.equal(C, 0)
+    _x18 = C**2
+    _x19 = Omega**2
+    _x20 = _x18*_x19
+    _x21 = K - M*_x19
+    _x22 = (_x20 + _x21**2)**(-1.0)
+    _x23 = K*_x21 + _x20
+    _x24 = _x22*_x23
+    _x25 = jax.numpy.exp(-_x1*_x7)
+    _x26 = jax.numpy.sqrt(K*_x0 - 1/4*_x18/M**2)
+    _x27 = _x26*_x6
+    _x28 = jax.numpy.sin(_x27)
+    _x29 = _x28/_x26
+    _x30 = _x25*_x29
+    _x31 = Omega*_x30
+    _x32 = jax.numpy.cos(_x27)
+    _x33 = (1/2)*_x1
+    _x34 = _x29*_x33
+    _x35 = _x25*(_x32 + _x34)
+    _x36 = -_x35 - 1
+    _x37 = C*Omega
+    _x38 = K*_x37 - _x21*_x37
+    _x39 = _x22*_x38
+    _x40 = jax.numpy.select([_x17,True], [-_x1*_x14 - _x16*_x4,_x24*_x31 + _x36*_x39], default=jax.numpy.nan)
+    _x41 = _x19**(-1.0)
+    _x42 = 2*_x41
+    _x43 = _x40*_x42
+    _x44 = _x43*e
+    _x45 = 4*_x0*_x41*m
+    _x46 = _x40*_x45
+    _x47 = _x25*_x32
+    _x48 = _x25*_x34
+    _x49 = _x47 - _x48
+    _x50 = _x49*e
+    _x51 = M**(-3/2)
+    _x52 = Omega*(-_x47 + _x48 - 1)
+    _x53 = -_x25*(-_x26*_x28 + _x32*_x33) + _x33*_x35
+    _x54 = jax.numpy.select([_x17,True], [C*_x16*_x2*_x51 - K*_x0*_x14,_x22*_x38*_x53 - _x24*_x52], default=jax.numpy.nan)
+    _x55 = jax.numpy.pi/Omega**3
+    _x56 = _x54*_x55
+    _x57 = _x56*e
+    _x58 = -_x53*_x55
+    _x59 = _x40*_x58
+    _x60 = _x30*_x42
+    _x61 = _x54*_x60
+    _x62 = _x30*_x45*e
+    _x63 = jax.numpy.select([_x17,True], [jax.numpy.pi*K*_x0*_x10*_x11*_x5*_x9 - _x16*_x3*_x37/_x2,_x22*_x23*_x36 - _x31*_x39], default=jax.numpy.nan)
+    _x64 = _x42*_x63
+    _x65 = _x64*e
+    _x66 = _x45*_x63
+    _x67 = jax.numpy.select([_x17,True], [-K**(3/2)*_x12*_x15*_x51*_x6 - _x0*_x14*_x37,_x24*_x53 + _x39*_x52], default=jax.numpy.nan)
+    _x68 = _x55*_x67
+    _x69 = _x68*e
+    _x70 = _x58*_x63
+    _x71 = _x60*_x67
+    return (_x35*_x56 + _x35*_x57 + _x43*_x49 + _x43 - _x44*_x49 - _x44 - _x46*_x50 + _x46 + _x54*_x62 + _x56 + _x57 - _x59*e - _x59 + _x61*e - _x61)*jax.numpy.sin(phi) + (_x35*_x68 + _x35*_x69 + _x49*_x64 - _x49*_x65 - _x50*_x66 + _x62*_x67 + _x64 - _x65 + _x66 + _x68 + _x69 - _x70*e - _x70 + _x71*e - _x71)*jax.numpy.cos(phi)
+
+
+@jax.jit
+def impact_displacement_d_phi(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂phi of: main-mass displacement X at the first impact (its partial derivative in forcing phase at the first impact φ) [m/rad], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = jax.numpy.pi*M
+    _x1 = 4*Omega*m
+    _x2 = Omega**(-1.0)
+    _x3 = jax.numpy.pi*_x2
+    _x4 = M**(-1.0)
+    _x5 = C*_x4
+    _x6 = (1/2)*_x5
+    _x7 = jax.numpy.exp(-_x3*_x6)
+    _x8 = C**2
+    _x9 = M**(-2.0)
+    _x10 = jax.numpy.sqrt(K*_x4 - 1/4*_x8*_x9)
+    _x11 = _x10*_x3
+    _x12 = jax.numpy.sin(_x11)
+    _x13 = _x10**(-1.0)
+    _x14 = _x12*_x13
+    _x15 = _x14*_x7
+    _x16 = jax.numpy.cos(_x11)
+    _x17 = _x14*_x6 + _x16
+    _x18 = _x17*_x7
+    _x19 = _x16*_x7
+    _x20 = _x15*_x6
+    _x21 = _x19 - _x20
+    _x22 = _x0*_x21
+    _x23 = _x18*_x6 - _x7*(-_x10*_x12 + _x16*_x6)
+    _x24 = -_x23
+    _x25 = jax.numpy.pi*M*_x12*_x13*_x24*_x7 - _x0*_x18 - _x0 - _x1*_x15 - _x18*_x22 - _x22
+    _x26 = Omega**(-4.0)
+    _x27 = _x26*_x9
+    _x28 = Omega**(-6.0)
+    _x29 = 2*Omega
+    _x30 = M*e
+    _x31 = M*_x21
+    _x32 = _x21*_x30
+    _x33 = _x21*e
+    _x34 = _x0*_x24
+    _x35 = -M*_x29 + _x1*_x33 - _x1 + _x29*_x30 - _x29*_x31 + _x29*_x32 + _x34*e + _x34
+    _x36 = _x15*_x24
+    _x37 = _x36*e
+    _x38 = 2*Omega*_x12*_x13*_x7 - _x15*_x29*e + jax.numpy.pi*_x17*_x21*_x7*e - jax.numpy.pi*_x18 + jax.numpy.pi*_x21*e - jax.numpy.pi*_x37 - jax.numpy.pi
+    _x39 = 2*m
+    _x40 = M*_x12*_x13*_x24*_x7 + M*_x17*_x21*_x7*e + M*_x17*_x7*e - M*_x18 + M*_x21*e + M*e - M + 2*_x17*_x21*_x7*e*m - _x18*_x31 - _x18*_x39 + 2*_x21*e*m - _x30*_x36 - _x31 - _x37*_x39 - _x39
+    _x41 = jax.numpy.pi*_x21
+    _x42 = -_x41 - jax.numpy.pi
+    _x43 = jax.numpy.cos(phi)
+    _x44 = jax.numpy.sqrt(K)
+    _x45 = 1/jax.numpy.sqrt(M)
+    _x46 = _x44*_x45
+    _x47 = (1/2)*_x3*(Omega - _x46)
+    _x48 = jax.numpy.sin(_x47)
+    _x49 = (Omega + _x46)**(-1.0)
+    _x50 = jax.numpy.sinc(_x47/jax.numpy.pi)
+    _x51 = jax.numpy.pi*_x49*_x50
+    _x52 = _x48*_x51
+    _x53 = F0 + K*X_b
+    _x54 = jax.numpy.cos(_x47)
+    _x55 = _x51*_x54
+    _x56 = _x45*_x55/_x44
+    _x57 = jax.numpy.equal(C, 0)
+    _x58 = Omega**2
+    _x59 = _x58*_x8
+    _x60 = K - M*_x58
+    _x61 = X_b*_x59 + _x53*_x60
+    _x62 = (_x59 + _x60**2)**(-1.0)
+    _x63 = Omega*_x62
+    _x64 = _x15*_x63
+    _x65 = C*Omega*X_b
+    _x66 = C*Omega*_x53 - _x60*_x65
+    _x67 = -_x18 - 1
+    _x68 = jax.numpy.sin(phi)
+    _x69 = -_x43*jax.numpy.select([_x57,True], [-X_b*_x5*_x52 - _x53*_x56,_x61*_x64 + _x62*_x66*_x67], default=jax.numpy.nan) + _x68*jax.numpy.select([_x57,True], [jax.numpy.pi*_x2*_x4*_x48*_x49*_x50*_x53 - _x56*_x65,_x61*_x62*_x67 - _x64*_x66], default=jax.numpy.nan)
+    _x70 = _x41*e - jax.numpy.pi
+    _x71 = _x44/M**(3/2)
+    _x72 = _x63*(-_x19 + _x20 - 1)
+    _x73 = _x43*jax.numpy.select([_x57,True], [C*X_b*_x55*_x71 - _x4*_x52*_x53,_x23*_x62*_x66 - _x61*_x72], default=jax.numpy.nan) - _x68*jax.numpy.select([_x57,True], [-_x3*_x49*_x50*_x53*_x54*_x71 - _x4*_x52*_x65,_x23*_x61*_x62 + _x66*_x72], default=jax.numpy.nan)
+    _x74 = _x4*_x73
+    _x75 = jax.numpy.pi*_x26
+    _x76 = -_x73*e
+    _x77 = _x15*_x76
+    return (-_x15*_x25*_x74*_x75 + _x25*_x26*_x4*_x42*_x69 + _x26*_x38*_x69*_x70 + _x26*_x40*_x69*_x9*(-M + _x30 - _x31 + _x32 + _x33*_x39 - _x39) - _x27*_x39*_x40*_x77 - _x28*_x35*_x4*_x42*_x76 + _x28*_x35*_x4*_x70*_x73 - _x38*_x75*_x77 - _x40*_x74*(_x12*_x13*_x2*_x7 - _x15*_x2*e)/Omega**3)/(_x25**2*_x27 + _x26*_x38**2 + _x27*_x40**2 + _x28*_x35**2*_x9)
+
+
+@jax.jit
+def impact_displacement_d_e(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂e of: main-mass displacement X at the first impact (its partial derivative in coefficient of restitution e) [m], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = jax.numpy.pi*M
+    _x1 = 4*Omega
+    _x2 = _x1*m
+    _x3 = Omega**(-1.0)
+    _x4 = jax.numpy.pi*_x3
+    _x5 = M**(-1.0)
+    _x6 = C*_x5
+    _x7 = (1/2)*_x6
+    _x8 = jax.numpy.exp(-_x4*_x7)
+    _x9 = C**2
+    _x10 = M**(-2.0)
+    _x11 = jax.numpy.sqrt(K*_x5 - 1/4*_x10*_x9)
+    _x12 = _x11*_x4
+    _x13 = jax.numpy.sin(_x12)
+    _x14 = _x11**(-1.0)
+    _x15 = _x13*_x14
+    _x16 = _x15*_x8
+    _x17 = jax.numpy.cos(_x12)
+    _x18 = _x15*_x7 + _x17
+    _x19 = _x18*_x8
+    _x20 = _x17*_x8
+    _x21 = _x16*_x7
+    _x22 = _x20 - _x21
+    _x23 = _x0*_x22
+    _x24 = _x19*_x7 - _x8*(-_x11*_x13 + _x17*_x7)
+    _x25 = -_x24
+    _x26 = jax.numpy.pi*M*_x13*_x14*_x25*_x8 - _x0*_x19 - _x0 - _x16*_x2 - _x19*_x23 - _x23
+    _x27 = Omega**(-4.0)
+    _x28 = _x10*_x27
+    _x29 = 2*M
+    _x30 = Omega*_x29
+    _x31 = M*e
+    _x32 = 2*Omega
+    _x33 = M*_x22
+    _x34 = 2*_x33
+    _x35 = Omega*_x34
+    _x36 = _x22*_x31
+    _x37 = _x2*_x22
+    _x38 = _x0*_x25
+    _x39 = -_x2 - _x30 + _x31*_x32 + _x32*_x36 - _x35 + _x37*e + _x38*e + _x38
+    _x40 = Omega**(-6.0)
+    _x41 = _x10*_x40
+    _x42 = _x16*_x32
+    _x43 = _x16*_x25
+    _x44 = jax.numpy.pi*_x43
+    _x45 = jax.numpy.pi*_x18*_x22*_x8*e - jax.numpy.pi*_x19 + jax.numpy.pi*_x22*e - _x42*e + _x42 - _x44*e - jax.numpy.pi
+    _x46 = 2*m
+    _x47 = _x43*_x46
+    _x48 = M + _x33
+    _x49 = M*_x19 - M*_x43 + _x19*_x33
+    _x50 = M*_x18*_x22*_x8*e + M*_x18*_x8*e + M*_x22*e + M*e + 2*_x18*_x22*_x8*e*m - _x19*_x46 + 2*_x22*e*m - _x31*_x43 - _x46 - _x47*e - _x48 - _x49
+    _x51 = _x26**2*_x28 + _x27*_x45**2 + _x28*_x50**2 + _x39**2*_x41
+    _x52 = _x22*m
+    _x53 = _x27*_x45
+    _x54 = 4*_x52
+    _x55 = _x28*_x50
+    _x56 = Omega**(-3.0)
+    _x57 = Omega**2
+    _x58 = _x13*_x14*_x3*_x8 - _x16*_x3*e
+    _x59 = _x58*d/_x57
+    _x60 = _x22*_x46
+    _x61 = -M + _x31 - _x33 + _x36 - _x46 + _x60*e
+    _x62 = _x10*d/Omega**5
+    _x63 = _x39*_x62
+    _x64 = jax.numpy.pi*_x22
+    _x65 = -_x64 - jax.numpy.pi
+    _x66 = jax.numpy.sin(phi)
+    _x67 = jax.numpy.sqrt(K)
+    _x68 = 1/jax.numpy.sqrt(M)
+    _x69 = _x67*_x68
+    _x70 = (1/2)*_x4*(Omega - _x69)
+    _x71 = jax.numpy.sin(_x70)
+    _x72 = (Omega + _x69)**(-1.0)
+    _x73 = jax.numpy.sinc(_x70/jax.numpy.pi)
+    _x74 = jax.numpy.pi*_x72*_x73
+    _x75 = _x71*_x74
+    _x76 = F0 + K*X_b
+    _x77 = jax.numpy.cos(_x70)
+    _x78 = _x74*_x77
+    _x79 = _x68*_x78/_x67
+    _x80 = jax.numpy.equal(C, 0)
+    _x81 = _x57*_x9
+    _x82 = K - M*_x57
+    _x83 = X_b*_x81 + _x76*_x82
+    _x84 = (_x81 + _x82**2)**(-1.0)
+    _x85 = Omega*_x84
+    _x86 = _x16*_x85
+    _x87 = C*Omega*X_b
+    _x88 = C*Omega*_x76 - _x82*_x87
+    _x89 = -_x19 - 1
+    _x90 = jax.numpy.cos(phi)
+    _x91 = -_x66*jax.numpy.select([_x80,True], [-X_b*_x6*_x75 - _x76*_x79,_x83*_x86 + _x84*_x88*_x89], default=jax.numpy.nan) - _x90*jax.numpy.select([_x80,True], [jax.numpy.pi*_x3*_x5*_x71*_x72*_x73*_x76 - _x79*_x87,_x83*_x84*_x89 - _x86*_x88], default=jax.numpy.nan)
+    _x92 = _x64*e - jax.numpy.pi
+    _x93 = _x67/M**(3/2)
+    _x94 = _x85*(-_x20 + _x21 - 1)
+    _x95 = _x66*jax.numpy.select([_x80,True], [C*X_b*_x78*_x93 - _x5*_x75*_x76,_x24*_x84*_x88 - _x83*_x94], default=jax.numpy.nan) + _x90*jax.numpy.select([_x80,True], [-_x4*_x72*_x73*_x76*_x77*_x93 - _x5*_x75*_x87,_x24*_x83*_x84 + _x88*_x94], default=jax.numpy.nan)
+    _x96 = _x5*_x95
+    _x97 = -_x95
+    _x98 = _x16*_x97
+    _x99 = jax.numpy.pi*_x98
+    _x100 = _x53*_x99
+    _x101 = _x40*_x5*_x65*_x97
+    _x102 = _x101*_x39
+    _x103 = _x46*_x98
+    _x104 = _x103*_x55
+    _x105 = _x56*_x58*_x96
+    _x106 = jax.numpy.pi*_x18*_x22*_x8 - _x42 - _x44 + _x64
+    _x107 = _x30 + _x35 + _x37 + _x38
+    _x108 = _x48 + _x60
+    _x109 = _x108 + _x19*_x60 - _x47 + _x49
+    return (_x10*_x108*_x27*_x50*_x91 + _x10*_x109*_x27*_x61*_x91 - _x100 - _x101*_x107*e - _x102 - _x103*_x109*_x28*e - _x104 - _x105*_x109 + _x106*_x27*_x91*_x92 - _x106*_x27*_x99*e - _x106*_x59 + _x107*_x40*_x5*_x92*_x95 - _x107*_x61*_x62 - _x108*_x63 + _x13*_x14*_x27*_x5*_x50*_x8*_x95 + _x13*_x14*_x45*_x56*_x8*d + jax.numpy.pi*_x22*_x27*_x45*_x91 + jax.numpy.pi*_x22*_x39*_x40*_x5*_x95)/_x51 + (-_x39*_x41*(M*_x1 + 8*Omega*_x52 + _x1*_x33 + 2*_x38) - _x53*(-_x1*_x16 + 2*jax.numpy.pi*_x18*_x22*_x8 + 2*jax.numpy.pi*_x22 - 2*_x44) - _x55*(_x19*_x29 + _x19*_x34 + _x19*_x54 - _x29*_x43 + _x29 + _x34 - 4*_x43*m + _x54))*(2*_x10*_x13*_x14*_x26*_x56*_x8*d*m + _x10*_x27*_x50*_x61*_x91 - _x100*e - _x102*e - _x104*e - _x105*_x50 - jax.numpy.pi*_x16*_x26*_x27*_x96 + _x26*_x27*_x5*_x65*_x91 + _x27*_x45*_x91*_x92 + _x39*_x40*_x5*_x92*_x95 - _x45*_x59 - _x61*_x63)/_x51**2
+
+
+@jax.jit
+def impact_displacement_d_d(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂d of: main-mass displacement X at the first impact (its partial derivative in total clearance d) [1], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = M**(-2.0)
+    _x1 = Omega**(-1.0)
+    _x2 = jax.numpy.pi*_x1
+    _x3 = M**(-1.0)
+    _x4 = (1/2)*C*_x3
+    _x5 = jax.numpy.exp(-_x2*_x4)
+    _x6 = jax.numpy.sqrt(-1/4*C**2*_x0 + K*_x3)
+    _x7 = _x6**(-1.0)
+    _x8 = _x2*_x6
+    _x9 = jax.numpy.sin(_x8)
+    _x10 = jax.numpy.pi*M
+    _x11 = 4*Omega*m
+    _x12 = _x7*_x9
+    _x13 = _x12*_x5
+    _x14 = jax.numpy.cos(_x8)
+    _x15 = _x12*_x4 + _x14
+    _x16 = _x15*_x5
+    _x17 = -_x13*_x4 + _x14*_x5
+    _x18 = _x10*_x17
+    _x19 = -_x16*_x4 + _x5*(_x14*_x4 - _x6*_x9)
+    _x20 = jax.numpy.pi*M*_x19*_x5*_x7*_x9 - _x10*_x16 - _x10 - _x11*_x13 - _x16*_x18 - _x18
+    _x21 = 2*Omega
+    _x22 = _x13*_x19
+    _x23 = _x22*e
+    _x24 = 2*Omega*_x5*_x7*_x9 - _x13*_x21*e + jax.numpy.pi*_x15*_x17*_x5*e - jax.numpy.pi*_x16 + jax.numpy.pi*_x17*e - jax.numpy.pi*_x23 - jax.numpy.pi
+    _x25 = 2*m
+    _x26 = M*e
+    _x27 = M*_x17
+    _x28 = _x17*_x26
+    _x29 = _x17*e
+    _x30 = _x10*_x19
+    _x31 = -M*_x21 + _x11*_x29 - _x11 + _x21*_x26 - _x21*_x27 + _x21*_x28 + _x30*e + _x30
+    _x32 = Omega**(-4.0)
+    _x33 = _x0*_x32
+    return (-_x24*(-_x1*_x13*e + _x1*_x5*_x7*_x9)/Omega**2 + 2*_x0*_x20*_x5*_x7*_x9*m/Omega**3 - _x0*_x31*(-M + _x25*_x29 - _x25 + _x26 - _x27 + _x28)/Omega**5)/(_x20**2*_x33 + _x24**2*_x32 + _x33*(M*_x15*_x17*_x5*e + M*_x15*_x5*e - M*_x16 + M*_x17*e + M*_x19*_x5*_x7*_x9 + M*e - M + 2*_x15*_x17*_x5*e*m - _x16*_x25 - _x16*_x27 + 2*_x17*e*m - _x22*_x26 - _x23*_x25 - _x25 - _x27)**2 + _x0*_x31**2/Omega**6)
+
+
+@jax.jit
+def main_velocity_after_d_phi(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂phi of: main-mass velocity V after the first impact (its partial derivative in forcing phase at the first impact φ) [m/rad/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = jax.numpy.pi*M
+    _x1 = 4*Omega*m
+    _x2 = Omega**(-1.0)
+    _x3 = jax.numpy.pi*_x2
+    _x4 = M**(-1.0)
+    _x5 = C*_x4
+    _x6 = (1/2)*_x5
+    _x7 = jax.numpy.exp(-_x3*_x6)
+    _x8 = C**2
+    _x9 = M**(-2.0)
+    _x10 = jax.numpy.sqrt(K*_x4 - 1/4*_x8*_x9)
+    _x11 = _x10*_x3
+    _x12 = jax.numpy.sin(_x11)
+    _x13 = _x10**(-1.0)
+    _x14 = _x12*_x13
+    _x15 = _x14*_x7
+    _x16 = jax.numpy.cos(_x11)
+    _x17 = _x14*_x6
+    _x18 = _x16 + _x17
+    _x19 = _x18*_x7
+    _x20 = _x16*_x7
+    _x21 = _x17*_x7
+    _x22 = _x20 - _x21
+    _x23 = _x0*_x22
+    _x24 = _x19*_x6 - _x7*(-_x10*_x12 + _x16*_x6)
+    _x25 = -_x24
+    _x26 = jax.numpy.pi*M*_x12*_x13*_x25*_x7 - _x0*_x19 - _x0 - _x1*_x15 - _x19*_x23 - _x23
+    _x27 = Omega**(-4.0)
+    _x28 = _x27*_x9
+    _x29 = 2*Omega
+    _x30 = M*_x22
+    _x31 = M*e
+    _x32 = _x0*_x25
+    _x33 = -_x1 + _x32
+    _x34 = -M*_x29 + _x1*_x22*e + _x22*_x29*_x31 - _x29*_x30 + _x29*_x31 + _x32*e + _x33
+    _x35 = Omega**(-6.0)
+    _x36 = _x29*e
+    _x37 = jax.numpy.pi*_x25*e
+    _x38 = 2*Omega*_x12*_x13*_x7 - _x15*_x36 - _x15*_x37 + jax.numpy.pi*_x18*_x22*_x7*e - jax.numpy.pi*_x19 + jax.numpy.pi*_x22*e - jax.numpy.pi
+    _x39 = _x25*_x31
+    _x40 = 2*m
+    _x41 = _x25*_x40*e
+    _x42 = _x19*_x40 + _x40
+    _x43 = M*_x12*_x13*_x25*_x7 + M*_x18*_x22*_x7*e + M*_x18*_x7*e - M*_x19 + M*_x22*e + M*e - M - _x15*_x39 - _x15*_x41 + 2*_x18*_x22*_x7*e*m - _x19*_x30 + 2*_x22*e*m - _x30 - _x42
+    _x44 = -_x33
+    _x45 = jax.numpy.cos(phi)
+    _x46 = jax.numpy.sqrt(K)
+    _x47 = 1/jax.numpy.sqrt(M)
+    _x48 = _x46*_x47
+    _x49 = (1/2)*_x3*(Omega - _x48)
+    _x50 = jax.numpy.sin(_x49)
+    _x51 = jax.numpy.pi*_x50
+    _x52 = (Omega + _x48)**(-1.0)
+    _x53 = jax.numpy.sinc(_x49/jax.numpy.pi)
+    _x54 = _x52*_x53
+    _x55 = _x51*_x54
+    _x56 = jax.numpy.cos(_x49)
+    _x57 = F0 + K*X_b
+    _x58 = _x52*_x53*_x57
+    _x59 = _x56*_x58
+    _x60 = jax.numpy.pi*_x47/_x46
+    _x61 = jax.numpy.equal(C, 0)
+    _x62 = Omega**2
+    _x63 = _x62*_x8
+    _x64 = K - M*_x62
+    _x65 = X_b*_x63 + _x57*_x64
+    _x66 = (_x63 + _x64**2)**(-1.0)
+    _x67 = Omega*_x66
+    _x68 = _x15*_x67
+    _x69 = C*Omega*X_b
+    _x70 = C*Omega*_x57 - _x64*_x69
+    _x71 = -_x19 - 1
+    _x72 = jax.numpy.sin(phi)
+    _x73 = _x54*_x56
+    _x74 = -_x45*jax.numpy.select([_x61,True], [-X_b*_x5*_x55 - _x59*_x60,_x65*_x68 + _x66*_x70*_x71], default=jax.numpy.nan) + _x72*jax.numpy.select([_x61,True], [jax.numpy.pi*_x2*_x4*_x50*_x52*_x53*_x57 - _x60*_x69*_x73,_x65*_x66*_x71 - _x68*_x70], default=jax.numpy.nan)
+    _x75 = _x28*_x74
+    _x76 = -_x29 + _x36 + _x37
+    _x77 = (-_x19*_x3 - _x3)/Omega**3
+    _x78 = _x46/M**(3/2)
+    _x79 = _x67*(-_x20 + _x21 - 1)
+    _x80 = _x45*jax.numpy.select([_x61,True], [jax.numpy.pi*C*X_b*_x73*_x78 - _x4*_x51*_x58,_x24*_x66*_x70 - _x65*_x79], default=jax.numpy.nan) - _x72*jax.numpy.select([_x61,True], [-_x3*_x59*_x78 - _x4*_x55*_x69,_x24*_x65*_x66 + _x70*_x79], default=jax.numpy.nan)
+    _x81 = _x4*_x80
+    _x82 = -_x80
+    return (-_x26*_x44*_x75 - _x26*_x77*_x81 - _x27*_x38*_x74*_x76 + _x27*_x42*_x43*_x82*_x9*e - _x27*_x43*_x81*(_x19*e - _x19 + e - 1) + _x34*_x35*_x44*_x82*_x9*e - _x34*_x35*_x76*_x81 - _x38*_x77*_x82*e - _x43*_x75*(-M*_x25 + _x39 + _x41))/(_x26**2*_x28 + _x27*_x38**2 + _x28*_x43**2 + _x34**2*_x35*_x9)
+
+
+@jax.jit
+def main_velocity_after_d_e(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂e of: main-mass velocity V after the first impact (its partial derivative in coefficient of restitution e) [m/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = jax.numpy.pi*M
+    _x1 = 4*Omega
+    _x2 = _x1*m
+    _x3 = Omega**(-1.0)
+    _x4 = jax.numpy.pi*_x3
+    _x5 = M**(-1.0)
+    _x6 = C*_x5
+    _x7 = (1/2)*_x6
+    _x8 = jax.numpy.exp(-_x4*_x7)
+    _x9 = C**2
+    _x10 = M**(-2.0)
+    _x11 = jax.numpy.sqrt(K*_x5 - 1/4*_x10*_x9)
+    _x12 = _x11*_x4
+    _x13 = jax.numpy.sin(_x12)
+    _x14 = _x11**(-1.0)
+    _x15 = _x13*_x14
+    _x16 = _x15*_x8
+    _x17 = jax.numpy.cos(_x12)
+    _x18 = _x15*_x7
+    _x19 = _x17 + _x18
+    _x20 = _x19*_x8
+    _x21 = _x17*_x8
+    _x22 = _x18*_x8
+    _x23 = _x21 - _x22
+    _x24 = _x0*_x23
+    _x25 = _x20*_x7 - _x8*(-_x11*_x13 + _x17*_x7)
+    _x26 = -_x25
+    _x27 = jax.numpy.pi*M*_x13*_x14*_x26*_x8 - _x0*_x20 - _x0 - _x16*_x2 - _x20*_x24 - _x24
+    _x28 = Omega**(-4.0)
+    _x29 = _x10*_x28
+    _x30 = 2*Omega
+    _x31 = M*_x30
+    _x32 = M*_x23
+    _x33 = _x30*_x32
+    _x34 = M*e
+    _x35 = _x0*_x26
+    _x36 = _x2*_x23
+    _x37 = -_x2 + _x35
+    _x38 = _x23*_x30*_x34 + _x30*_x34 - _x31 - _x33 + _x35*e + _x36*e + _x37
+    _x39 = Omega**(-6.0)
+    _x40 = _x10*_x39
+    _x41 = _x16*_x30
+    _x42 = _x30*e
+    _x43 = jax.numpy.pi*_x26
+    _x44 = _x43*e
+    _x45 = -_x16*_x42 - _x16*_x44 + jax.numpy.pi*_x19*_x23*_x8*e - jax.numpy.pi*_x20 + jax.numpy.pi*_x23*e + _x41 - jax.numpy.pi
+    _x46 = _x26*_x34
+    _x47 = 2*m
+    _x48 = _x26*_x47
+    _x49 = _x48*e
+    _x50 = _x20*_x47 + _x47
+    _x51 = M*_x26
+    _x52 = _x16*_x51
+    _x53 = M*_x20 + M + _x20*_x32 + _x32 - _x52
+    _x54 = M*_x19*_x23*_x8*e + M*_x19*_x8*e + M*_x23*e + M*e - _x16*_x46 - _x16*_x49 + 2*_x19*_x23*_x8*e*m + 2*_x23*e*m - _x50 - _x53
+    _x55 = _x27**2*_x29 + _x28*_x45**2 + _x29*_x54**2 + _x38**2*_x40
+    _x56 = _x23*m
+    _x57 = _x16*_x43
+    _x58 = _x28*_x45
+    _x59 = 2*M
+    _x60 = 2*_x32
+    _x61 = 4*_x56
+    _x62 = _x29*_x54
+    _x63 = Omega**(-3.0)
+    _x64 = _x63*d
+    _x65 = _x20*e - _x20 + e - 1
+    _x66 = _x45*_x64
+    _x67 = Omega**(-5.0)
+    _x68 = _x46 + _x49 - _x51
+    _x69 = -_x37
+    _x70 = jax.numpy.sin(phi)
+    _x71 = jax.numpy.sqrt(K)
+    _x72 = 1/jax.numpy.sqrt(M)
+    _x73 = _x71*_x72
+    _x74 = (1/2)*_x4*(Omega - _x73)
+    _x75 = jax.numpy.sin(_x74)
+    _x76 = (Omega + _x73)**(-1.0)
+    _x77 = jax.numpy.sinc(_x74/jax.numpy.pi)
+    _x78 = jax.numpy.pi*_x76*_x77
+    _x79 = _x75*_x78
+    _x80 = F0 + K*X_b
+    _x81 = jax.numpy.cos(_x74)
+    _x82 = _x78*_x81
+    _x83 = _x72*_x82/_x71
+    _x84 = jax.numpy.equal(C, 0)
+    _x85 = Omega**2
+    _x86 = _x85*_x9
+    _x87 = K - M*_x85
+    _x88 = X_b*_x86 + _x80*_x87
+    _x89 = (_x86 + _x87**2)**(-1.0)
+    _x90 = Omega*_x89
+    _x91 = _x16*_x90
+    _x92 = C*Omega*X_b
+    _x93 = C*Omega*_x80 - _x87*_x92
+    _x94 = _x20 + 1
+    _x95 = -_x94
+    _x96 = jax.numpy.cos(phi)
+    _x97 = -_x70*jax.numpy.select([_x84,True], [-X_b*_x6*_x79 - _x80*_x83,_x88*_x91 + _x89*_x93*_x95], default=jax.numpy.nan) - _x96*jax.numpy.select([_x84,True], [jax.numpy.pi*_x3*_x5*_x75*_x76*_x77*_x80 - _x83*_x92,_x88*_x89*_x95 - _x91*_x93], default=jax.numpy.nan)
+    _x98 = _x29*_x97
+    _x99 = -_x30 + _x42 + _x44
+    _x100 = _x58*_x97
+    _x101 = _x63*(-_x20*_x4 - _x4)
+    _x102 = _x71/M**(3/2)
+    _x103 = _x90*(-_x21 + _x22 - 1)
+    _x104 = _x70*jax.numpy.select([_x84,True], [C*X_b*_x102*_x82 - _x5*_x79*_x80,-_x103*_x88 + _x25*_x89*_x93], default=jax.numpy.nan) + _x96*jax.numpy.select([_x84,True], [-_x102*_x4*_x76*_x77*_x80*_x81 - _x5*_x79*_x92,_x103*_x93 + _x25*_x88*_x89], default=jax.numpy.nan)
+    _x105 = _x104*_x5
+    _x106 = -_x104
+    _x107 = _x101*_x106
+    _x108 = _x107*_x45
+    _x109 = _x105*_x39
+    _x110 = _x109*_x38
+    _x111 = _x105*_x28
+    _x112 = _x111*_x54
+    _x113 = _x62*_x97
+    _x114 = jax.numpy.pi*_x19*_x23*_x8 + jax.numpy.pi*_x23 - _x41 - _x57
+    _x115 = _x31 + _x33 + _x35 + _x36
+    _x116 = _x48 + _x51
+    _x117 = _x30 + _x43
+    _x118 = _x23*_x47
+    _x119 = _x118*_x20 + _x118 - _x16*_x48 + _x53
+    return (_x10*_x106*_x115*_x39*_x69*e + _x10*_x106*_x119*_x28*_x50*e + _x10*_x106*_x28*_x50*_x54 + _x10*_x106*_x38*_x39*_x69 + _x10*_x115*_x67*_x68*d + _x10*_x116*_x38*_x67*d - _x100*_x117 - _x107*_x114*e - _x108 - _x109*_x115*_x99 - _x110*_x117 - _x111*_x119*_x65 - _x112*_x94 - _x113*_x116 - _x114*_x28*_x97*_x99 - _x114*_x64*_x65 - _x119*_x68*_x98 - _x66*_x94)/_x55 + (-_x38*_x40*(M*_x1 + 8*Omega*_x56 + _x1*_x32 + 2*_x35) - _x58*(-_x1*_x16 + 2*jax.numpy.pi*_x19*_x23*_x8 + 2*jax.numpy.pi*_x23 - 2*_x57) - _x62*(-4*_x16*_x26*m + _x20*_x59 + _x20*_x60 + _x20*_x61 - 2*_x52 + _x59 + _x60 + _x61))*(_x10*_x106*_x28*_x50*_x54*e + _x10*_x106*_x38*_x39*_x69*e - _x10*_x27*_x50*_x64 + _x10*_x38*_x67*_x68*d - _x100*_x99 - _x101*_x105*_x27 - _x108*e - _x110*_x99 - _x112*_x65 - _x113*_x68 - _x27*_x69*_x98 - _x65*_x66)/_x55**2
+
+
+@jax.jit
+def main_velocity_after_d_d(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂d of: main-mass velocity V after the first impact (its partial derivative in total clearance d) [1/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = M**(-2.0)
+    _x1 = Omega**(-3.0)
+    _x2 = 2*m
+    _x3 = jax.numpy.pi/Omega
+    _x4 = M**(-1.0)
+    _x5 = (1/2)*C*_x4
+    _x6 = jax.numpy.exp(-_x3*_x5)
+    _x7 = jax.numpy.sqrt(-1/4*C**2*_x0 + K*_x4)
+    _x8 = _x3*_x7
+    _x9 = jax.numpy.cos(_x8)
+    _x10 = jax.numpy.sin(_x8)
+    _x11 = _x7**(-1.0)
+    _x12 = _x10*_x11
+    _x13 = _x12*_x5
+    _x14 = _x13 + _x9
+    _x15 = _x14*_x6
+    _x16 = _x15*_x2 + _x2
+    _x17 = jax.numpy.pi*M
+    _x18 = 4*Omega*m
+    _x19 = _x12*_x6
+    _x20 = -_x13*_x6 + _x6*_x9
+    _x21 = _x17*_x20
+    _x22 = -_x15*_x5 + _x6*(-_x10*_x7 + _x5*_x9)
+    _x23 = jax.numpy.pi*M*_x10*_x11*_x22*_x6 - _x15*_x17 - _x15*_x21 - _x17 - _x18*_x19 - _x21
+    _x24 = 2*Omega
+    _x25 = _x22*e
+    _x26 = 2*Omega*_x10*_x11*_x6 + jax.numpy.pi*_x14*_x20*_x6*e - jax.numpy.pi*_x15 - _x19*_x24*e - jax.numpy.pi*_x19*_x25 + jax.numpy.pi*_x20*e - jax.numpy.pi
+    _x27 = M*e
+    _x28 = _x22*_x27
+    _x29 = _x2*_x25
+    _x30 = M*_x20
+    _x31 = _x17*_x22
+    _x32 = -M*_x24 + _x18*_x20*e - _x18 + _x20*_x24*_x27 + _x24*_x27 - _x24*_x30 + _x31*e + _x31
+    _x33 = Omega**(-4.0)
+    _x34 = _x0*_x33
+    return (-_x0*_x1*_x16*_x23 - _x1*_x26*(_x15*e - _x15 + e - 1) + _x0*_x32*(-M*_x22 + _x28 + _x29)/Omega**5)/(_x23**2*_x34 + _x26**2*_x33 + _x34*(M*_x10*_x11*_x22*_x6 + M*_x14*_x20*_x6*e + M*_x14*_x6*e - M*_x15 + M*_x20*e + M*e - M + 2*_x14*_x20*_x6*e*m - _x15*_x30 - _x16 - _x19*_x28 - _x19*_x29 + 2*_x20*e*m - _x30)**2 + _x0*_x32**2/Omega**6)
+
+
+@jax.jit
+def impact_mass_velocity_after_d_phi(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂phi of: impact-mass velocity U after the first impact (its partial derivative in forcing phase at the first impact φ) [m/rad/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = jax.numpy.pi*M
+    _x1 = 4*Omega*m
+    _x2 = Omega**(-1.0)
+    _x3 = jax.numpy.pi*_x2
+    _x4 = M**(-1.0)
+    _x5 = C*_x4
+    _x6 = (1/2)*_x5
+    _x7 = jax.numpy.exp(-_x3*_x6)
+    _x8 = C**2
+    _x9 = M**(-2.0)
+    _x10 = jax.numpy.sqrt(K*_x4 - 1/4*_x8*_x9)
+    _x11 = _x10*_x3
+    _x12 = jax.numpy.sin(_x11)
+    _x13 = _x10**(-1.0)
+    _x14 = _x12*_x13
+    _x15 = _x14*_x7
+    _x16 = jax.numpy.cos(_x11)
+    _x17 = _x14*_x6 + _x16
+    _x18 = _x17*_x7
+    _x19 = _x16*_x7
+    _x20 = _x15*_x6
+    _x21 = _x19 - _x20
+    _x22 = _x0*_x21
+    _x23 = -_x10*_x12 + _x16*_x6
+    _x24 = _x18*_x6
+    _x25 = -_x23*_x7 + _x24
+    _x26 = -_x25
+    _x27 = jax.numpy.pi*M*_x12*_x13*_x26*_x7 - _x0*_x18 - _x0 - _x1*_x15 - _x18*_x22 - _x22
+    _x28 = Omega**(-4.0)
+    _x29 = _x28*_x9
+    _x30 = 2*Omega
+    _x31 = M*e
+    _x32 = M*_x21
+    _x33 = _x21*e
+    _x34 = _x26*e
+    _x35 = -M*_x30 + _x0*_x26 + _x0*_x34 + _x1*_x33 - _x1 + _x21*_x30*_x31 + _x30*_x31 - _x30*_x32
+    _x36 = _x15*_x34
+    _x37 = 2*Omega*_x12*_x13*_x7 - _x15*_x30*e + jax.numpy.pi*_x17*_x21*_x7*e - jax.numpy.pi*_x18 + jax.numpy.pi*_x21*e - jax.numpy.pi*_x36 - jax.numpy.pi
+    _x38 = 2*m
+    _x39 = _x15*_x26
+    _x40 = M*_x12*_x13*_x26*_x7 + M*_x17*_x21*_x7*e + M*_x17*_x7*e - M*_x18 + M*_x21*e + M*e - M + 2*_x17*_x21*_x7*e*m - _x18*_x32 - _x18*_x38 + 2*_x21*e*m - _x31*_x39 - _x32 - _x36*_x38 - _x38
+    _x41 = Omega**2
+    _x42 = 2*_x2
+    _x43 = _x21*_x42 + _x42
+    _x44 = jax.numpy.cos(phi)
+    _x45 = jax.numpy.sqrt(K)
+    _x46 = 1/jax.numpy.sqrt(M)
+    _x47 = _x45*_x46
+    _x48 = (1/2)*_x3*(Omega - _x47)
+    _x49 = jax.numpy.sin(_x48)
+    _x50 = (Omega + _x47)**(-1.0)
+    _x51 = jax.numpy.sinc(_x48/jax.numpy.pi)
+    _x52 = jax.numpy.pi*_x50*_x51
+    _x53 = _x49*_x52
+    _x54 = F0 + K*X_b
+    _x55 = jax.numpy.cos(_x48)
+    _x56 = _x52*_x55
+    _x57 = _x46*_x56/_x45
+    _x58 = jax.numpy.equal(C, 0)
+    _x59 = _x41*_x8
+    _x60 = K - M*_x41
+    _x61 = X_b*_x59 + _x54*_x60
+    _x62 = (_x59 + _x60**2)**(-1.0)
+    _x63 = Omega*_x62
+    _x64 = _x15*_x63
+    _x65 = C*Omega*X_b
+    _x66 = C*Omega*_x54 - _x60*_x65
+    _x67 = _x18 + 1
+    _x68 = -_x67
+    _x69 = jax.numpy.sin(phi)
+    _x70 = -_x44*jax.numpy.select([_x58,True], [-X_b*_x5*_x53 - _x54*_x57,_x61*_x64 + _x62*_x66*_x68], default=jax.numpy.nan) + _x69*jax.numpy.select([_x58,True], [jax.numpy.pi*_x2*_x4*_x49*_x50*_x51*_x54 - _x57*_x65,_x61*_x62*_x68 - _x64*_x66], default=jax.numpy.nan)
+    _x71 = _x4*_x70
+    _x72 = 2 - 2*_x33
+    _x73 = Omega**(-3.0)
+    _x74 = _x37*_x73
+    _x75 = _x45/M**(3/2)
+    _x76 = _x19 - _x20
+    _x77 = _x63*(-_x76 - 1)
+    _x78 = _x44*jax.numpy.select([_x58,True], [C*X_b*_x56*_x75 - _x4*_x53*_x54,_x25*_x62*_x66 - _x61*_x77], default=jax.numpy.nan) - _x69*jax.numpy.select([_x58,True], [-_x3*_x50*_x51*_x54*_x55*_x75 - _x4*_x53*_x65,_x25*_x61*_x62 + _x66*_x77], default=jax.numpy.nan)
+    _x79 = _x4*_x78
+    _x80 = 2*_x15
+    _x81 = -_x78*e
+    _x82 = _x4*_x81
+    _x83 = _x28*_x40
+    return (_x27*_x73*_x79*_x80 + _x27*_x43*_x71/_x41 - _x28*_x35*_x43*_x82 + _x70*_x72*_x74 + _x71*_x83*(_x23*_x7 - _x24 + _x34) + _x74*_x80*_x81 + _x79*_x83*(-_x18*_x33 - _x33 + _x36 + _x67) - _x82*_x83*(_x18*_x21 - _x39 + _x67 + _x76) + _x35*_x72*_x79/Omega**5)/(_x27**2*_x29 + _x28*_x37**2 + _x29*_x40**2 + _x35**2*_x9/Omega**6)
+
+
+@jax.jit
+def impact_mass_velocity_after_d_e(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂e of: impact-mass velocity U after the first impact (its partial derivative in coefficient of restitution e) [m/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = jax.numpy.pi*M
+    _x1 = 4*Omega
+    _x2 = _x1*m
+    _x3 = Omega**(-1.0)
+    _x4 = jax.numpy.pi*_x3
+    _x5 = M**(-1.0)
+    _x6 = C*_x5
+    _x7 = (1/2)*_x6
+    _x8 = jax.numpy.exp(-_x4*_x7)
+    _x9 = C**2
+    _x10 = M**(-2.0)
+    _x11 = jax.numpy.sqrt(K*_x5 - 1/4*_x10*_x9)
+    _x12 = _x11*_x4
+    _x13 = jax.numpy.sin(_x12)
+    _x14 = _x11**(-1.0)
+    _x15 = _x13*_x14
+    _x16 = _x15*_x8
+    _x17 = jax.numpy.cos(_x12)
+    _x18 = _x15*_x7 + _x17
+    _x19 = _x18*_x8
+    _x20 = _x17*_x8
+    _x21 = _x16*_x7
+    _x22 = -_x20 + _x21
+    _x23 = -_x22
+    _x24 = _x0*_x23
+    _x25 = -_x11*_x13 + _x17*_x7
+    _x26 = _x19*_x7
+    _x27 = -_x25*_x8 + _x26
+    _x28 = -_x27
+    _x29 = jax.numpy.pi*M*_x13*_x14*_x28*_x8 - _x0*_x19 - _x0 - _x16*_x2 - _x19*_x24 - _x24
+    _x30 = Omega**(-4.0)
+    _x31 = _x10*_x30
+    _x32 = 2*M
+    _x33 = Omega*_x32
+    _x34 = M*e
+    _x35 = 2*Omega
+    _x36 = M*_x23
+    _x37 = 2*_x36
+    _x38 = Omega*_x37
+    _x39 = _x23*e
+    _x40 = _x0*_x28
+    _x41 = _x28*e
+    _x42 = _x0*_x41 + _x2*_x39 - _x2 + _x23*_x34*_x35 - _x33 + _x34*_x35 - _x38 + _x40
+    _x43 = _x10/Omega**6
+    _x44 = _x16*_x35
+    _x45 = _x16*_x41
+    _x46 = jax.numpy.pi*_x18*_x23*_x8*e - jax.numpy.pi*_x19 + jax.numpy.pi*_x23*e - _x44*e + _x44 - jax.numpy.pi*_x45 - jax.numpy.pi
+    _x47 = 2*m
+    _x48 = _x16*_x28
+    _x49 = M*_x19 - M*_x48 + M + _x19*_x36 + _x36
+    _x50 = M*_x18*_x23*_x8*e + M*_x18*_x8*e + M*_x23*e + M*e + 2*_x18*_x23*_x8*e*m - _x19*_x47 + 2*_x23*e*m - _x34*_x48 - _x45*_x47 - _x47 - _x49
+    _x51 = _x29**2*_x31 + _x30*_x46**2 + _x31*_x50**2 + _x42**2*_x43
+    _x52 = _x23*m
+    _x53 = jax.numpy.pi*_x48
+    _x54 = _x19*_x23
+    _x55 = 4*m
+    _x56 = _x25*_x8 - _x26 + _x41
+    _x57 = _x5/Omega**5
+    _x58 = _x57*d
+    _x59 = _x42*_x58
+    _x60 = _x19 + 1
+    _x61 = _x20 - _x21
+    _x62 = -_x48 + _x54 + _x60 + _x61
+    _x63 = Omega**(-3.0)
+    _x64 = _x63*d
+    _x65 = _x29*_x5
+    _x66 = -_x19*_x39 - _x39 + _x45 + _x60
+    _x67 = _x64*_x66
+    _x68 = jax.numpy.sin(phi)
+    _x69 = jax.numpy.sqrt(K)
+    _x70 = 1/jax.numpy.sqrt(M)
+    _x71 = _x69*_x70
+    _x72 = (1/2)*_x4*(Omega - _x71)
+    _x73 = jax.numpy.sin(_x72)
+    _x74 = (Omega + _x71)**(-1.0)
+    _x75 = jax.numpy.sinc(_x72/jax.numpy.pi)
+    _x76 = jax.numpy.pi*_x74*_x75
+    _x77 = _x73*_x76
+    _x78 = F0 + K*X_b
+    _x79 = jax.numpy.cos(_x72)
+    _x80 = _x76*_x79
+    _x81 = _x70*_x80/_x69
+    _x82 = jax.numpy.equal(C, 0)
+    _x83 = Omega**2
+    _x84 = _x83*_x9
+    _x85 = K - M*_x83
+    _x86 = X_b*_x84 + _x78*_x85
+    _x87 = (_x84 + _x85**2)**(-1.0)
+    _x88 = Omega*_x87
+    _x89 = _x16*_x88
+    _x90 = C*Omega*X_b
+    _x91 = C*Omega*_x78 - _x85*_x90
+    _x92 = -_x60
+    _x93 = jax.numpy.cos(phi)
+    _x94 = -_x68*jax.numpy.select([_x82,True], [-X_b*_x6*_x77 - _x78*_x81,_x86*_x89 + _x87*_x91*_x92], default=jax.numpy.nan) - _x93*jax.numpy.select([_x82,True], [jax.numpy.pi*_x3*_x5*_x73*_x74*_x75*_x78 - _x81*_x90,_x86*_x87*_x92 - _x89*_x91], default=jax.numpy.nan)
+    _x95 = 2*_x3
+    _x96 = _x23*_x95 + _x95
+    _x97 = 2 - 2*_x39
+    _x98 = _x63*_x94
+    _x99 = _x97*_x98
+    _x100 = _x69/M**(3/2)
+    _x101 = _x88*(-_x61 - 1)
+    _x102 = _x68*jax.numpy.select([_x82,True], [C*X_b*_x100*_x80 - _x5*_x77*_x78,-_x101*_x86 + _x27*_x87*_x91], default=jax.numpy.nan) + _x93*jax.numpy.select([_x82,True], [-_x100*_x4*_x74*_x75*_x78*_x79 - _x5*_x77*_x90,_x101*_x91 + _x27*_x86*_x87], default=jax.numpy.nan)
+    _x103 = 2*_x16*_x63
+    _x104 = -_x102
+    _x105 = _x103*_x104
+    _x106 = _x105*_x46
+    _x107 = _x102*_x57
+    _x108 = _x107*_x97
+    _x109 = _x30*_x5
+    _x110 = _x104*_x109*_x96
+    _x111 = _x110*_x42
+    _x112 = _x109*_x50
+    _x113 = _x112*_x94
+    _x114 = _x104*_x62
+    _x115 = _x112*_x114
+    _x116 = _x102*_x112
+    _x117 = _x2*_x23 + _x33 + _x38 + _x40
+    _x118 = jax.numpy.pi*_x18*_x23*_x8 + jax.numpy.pi*_x23 - _x44 - _x53
+    _x119 = _x22 + _x48 - _x54
+    _x120 = 2*_x22
+    _x121 = _x109*(_x23*_x47 - _x47*_x48 + _x47*_x54 + _x49)
+    return (_x102*_x121*_x66 + _x105*_x118*e + _x106 + _x107*_x120*_x42 + _x108*_x117 - _x110*_x117*e - _x111 + _x113*_x28 - _x114*_x121*e - _x115 + _x116*_x119 - _x117*_x56*_x58 + _x118*_x67 + _x118*_x99 + _x119*_x46*_x64 + _x120*_x46*_x98 + _x121*_x56*_x94 - _x28*_x59)/_x51 + (-_x30*_x46*(-_x1*_x16 + 2*jax.numpy.pi*_x18*_x23*_x8 + 2*jax.numpy.pi*_x23 - 2*_x53) - _x31*_x50*(_x19*_x32 + _x19*_x37 - _x32*_x48 + _x32 + _x37 - _x48*_x55 + 4*_x52 + _x54*_x55) - _x42*_x43*(M*_x1 + 8*Omega*_x52 + _x1*_x36 + 2*_x40))*(_x102*_x103*_x65 + _x106*e + _x108*_x42 - _x111*e + _x113*_x56 - _x115*e + _x116*_x66 + _x46*_x67 + _x46*_x99 - _x56*_x59 + _x62*_x64*_x65 + _x65*_x94*_x96/_x83)/_x51**2
+
+
+@jax.jit
+def impact_mass_velocity_after_d_d(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""∂/∂d of: impact-mass velocity U after the first impact (its partial derivative in total clearance d) [1/s], Eq. F3 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped) [N s/m]
+    ``m``: Impact mass m [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``d``: Total clearance d [m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at the first impact φ [rad]
+    """
+    _x0 = M**(-1.0)
+    _x1 = jax.numpy.pi/Omega
+    _x2 = (1/2)*C*_x0
+    _x3 = jax.numpy.exp(-_x1*_x2)
+    _x4 = M**(-2.0)
+    _x5 = jax.numpy.sqrt(-1/4*C**2*_x4 + K*_x0)
+    _x6 = _x1*_x5
+    _x7 = jax.numpy.cos(_x6)
+    _x8 = jax.numpy.sin(_x6)
+    _x9 = _x2*_x7 - _x5*_x8
+    _x10 = _x5**(-1.0)
+    _x11 = _x10*_x8
+    _x12 = _x11*_x2 + _x7
+    _x13 = _x12*_x3
+    _x14 = _x13*_x2
+    _x15 = -_x14 + _x3*_x9
+    _x16 = _x15*e
+    _x17 = 2*Omega
+    _x18 = 4*Omega*m
+    _x19 = M*e
+    _x20 = _x11*_x3
+    _x21 = _x2*_x20
+    _x22 = -_x21 + _x3*_x7
+    _x23 = M*_x22
+    _x24 = _x22*e
+    _x25 = jax.numpy.pi*M
+    _x26 = -M*_x17 + _x15*_x25 + _x16*_x25 + _x17*_x19*_x22 + _x17*_x19 - _x17*_x23 + _x18*_x24 - _x18
+    _x27 = Omega**(-3.0)
+    _x28 = _x15*_x20
+    _x29 = _x13 + 1
+    _x30 = _x22*_x25
+    _x31 = jax.numpy.pi*M*_x10*_x15*_x3*_x8 - _x13*_x25 - _x13*_x30 - _x18*_x20 - _x25 - _x30
+    _x32 = _x16*_x20
+    _x33 = 2*Omega*_x10*_x3*_x8 + jax.numpy.pi*_x12*_x22*_x3*e - jax.numpy.pi*_x13 - _x17*_x20*e + jax.numpy.pi*_x22*e - jax.numpy.pi*_x32 - jax.numpy.pi
+    _x34 = Omega**(-4.0)
+    _x35 = _x34*_x4
+    _x36 = 2*m
+    return (_x0*_x27*_x31*(_x13*_x22 - _x21 - _x28 + _x29 + _x3*_x7) + _x27*_x33*(-_x13*_x24 - _x24 + _x29 + _x32) - _x0*_x26*(-_x14 + _x16 + _x3*_x9)/Omega**5)/(_x31**2*_x35 + _x33**2*_x34 + _x35*(M*_x10*_x15*_x3*_x8 + M*_x12*_x22*_x3*e + M*_x12*_x3*e - M*_x13 + M*_x22*e + M*e - M + 2*_x12*_x22*_x3*e*m - _x13*_x23 - _x13*_x36 - _x19*_x28 + 2*_x22*e*m - _x23 - _x32*_x36 - _x36)**2 + _x26**2*_x4/Omega**6)

@@ -90,13 +90,14 @@ def run(ns) -> None:
         unit = display_unit("x")  # the amplitude is a displacement of the main mass
         lines.append(
             f"impact phase [rad]  amplitude [{unit}]  impact speed [m/s]  admissible  stable  "
-            "largest |multiplier|"
+            f"largest |multiplier|  ∂A/∂d [1]  ∂A/∂e [{unit}]"
         )
         for o in orbits:
             lines.append(
                 f"{o.impact_phase:18.6f}  {shown('x', o.amplitude):14.6g}  {o.impact_speed:18.6g}  "
                 f"{'yes' if o.admissible else 'no':>10}  {'yes' if o.stable else 'no':>6}  "
-                f"{o.multipliers[0]:.6g}"
+                f"{o.multipliers[0]:20.6g}  {o.amplitude_slope_gap:9.4g}  "
+                f"{shown('x', o.amplitude_slope_e):.4g}"
             )
         text = "\n".join(lines)
     emit(ns, out, text)

@@ -9,6 +9,10 @@ r = √(a² + b²).  Each solution is then checked:
   flight, sampled and refined where ẋ = 0;
 - *admissible*: the impact mass approaches the second wall (U − ẋ(τ⁻) < 0) and touches no wall in
   between (abs(z) < d/2 on (0, τ), z = y − x, refined where ż = 0);
+- *slopes*: the amplitude's derivatives in the clearance d and the restitution e, from the
+  generated derivatives of the phase residual r(φ) = a·cos φ + b·sin φ − c and of X, V at a fixed
+  phase (dφ/dp = −(∂r/∂p)/(∂r/∂φ)), carried to the extreme of x by the flight's transition
+  kernels (∂x/∂t = 0 there, so the extreme's moving time does not enter);
 - *stable*: the Floquet multipliers all have modulus < 1.  A perturbation of the state
   (x, ẋ, z, ẏ) just after the impact on the wall +d/2 is carried through the flight by its
   transition matrix Φ(τ) (the free-decay solutions of Step 8: the flight is affine in the state)
@@ -46,6 +50,8 @@ class PeriodicOrbit:
     ``X`` [m], ``V``, ``U`` [m/s]: x, ẋ, ẏ after that impact.  ``admissible``: approaches the
     next wall and touches none in between.  ``stable``: every multiplier inside the unit circle.
     ``multipliers``: moduli of the full-period multipliers, sorted descending.
+    ``amplitude_slope_gap`` [1]: ∂(amplitude)/∂d, and ``amplitude_slope_e`` [m]:
+    ∂(amplitude)/∂e, along the orbit (Eq. F3 differentiated; see the module's docstring).
     """
 
     impact_phase: float
@@ -57,6 +63,8 @@ class PeriodicOrbit:
     admissible: bool
     stable: bool
     multipliers: tuple[float, ...]
+    amplitude_slope_gap: float
+    amplitude_slope_e: float
 
     def as_dict(self) -> dict[str, Any]:
         d = dict(self.__dict__)
@@ -110,6 +118,12 @@ def _flight(system, forcing, phi, X, V, tau):
 
 def _refined_extremes(f, df, t):
     """Values of f at the samples t and at the zeros of df between them (scipy's brentq)."""
+    return _extremes_and_times(f, df, t)[0]
+
+
+def _extremes_and_times(f, df, t):
+    """(values, times): f at the samples t and at the zeros of df between them (scipy's
+    brentq), and where they are."""
     from scipy.optimize import brentq
 
     d = df(t)
@@ -122,7 +136,8 @@ def _refined_extremes(f, df, t):
         brentq(scalar_df, t[i], t[i + 1], xtol=1e-15 * t[-1], rtol=4 * np.finfo(float).eps)
         for i in idx
     ]
-    return np.concatenate([f(t), f(np.array(roots))])
+    times = np.concatenate([t, np.array(roots)])
+    return f(times), times
 
 
 def _describe(system, forcing, e, phi, X, V, U) -> PeriodicOrbit:
@@ -136,7 +151,10 @@ def _describe(system, forcing, e, phi, X, V, U) -> PeriodicOrbit:
     def v_of(s):
         return _flight(system, forcing, phi, X, V, s)[1]
 
-    amplitude = float(np.max(np.abs(_refined_extremes(x_of, v_of, t))))
+    values, times = _extremes_and_times(x_of, v_of, t)
+    at = int(np.argmax(np.abs(values)))
+    amplitude = float(abs(values[at]))
+    slopes = _amplitude_slopes(system, forcing, e, phi, X, V, float(times[at]), values[at])
     v1 = float(_flight(system, forcing, phi, X, V, tau)[1])
     approach = -(U - v1)  # towards the wall −d/2: z decreasing
 
@@ -161,7 +179,45 @@ def _describe(system, forcing, e, phi, X, V, U) -> PeriodicOrbit:
         admissible=admissible,
         stable=bool(moduli[0] < 1.0),
         multipliers=tuple(float(m) for m in moduli),
+        amplitude_slope_gap=slopes["d"],
+        amplitude_slope_e=slopes["e"],
     )
+
+
+def _amplitude_slopes(system, forcing, e, phi, X, V, t_peak, x_peak) -> dict[str, float]:
+    """∂(amplitude)/∂p for p = d, e (Eq. F3 differentiated): the phase's slope from the residual,
+    dφ/dp = −(∂r/∂p)/(∂r/∂φ); the state's, dX/dp = ∂X/∂p + ∂X/∂φ·dφ/dp (V alike); carried to the
+    extreme of x at ``t_peak`` by the flight's derivatives in (x0, ẋ0, φ) (Eq. F1 differentiated),
+    with no term for the extreme's own move since ẋ = 0 there.  At the impact (t = 0 or τ, where
+    x = ±X) the slope is X's own."""
+    args = (system.M, system.K, system.C, system.m, e, system.gap, forcing.F0, forcing.X_b,
+            forcing.omega)  # fmt: skip
+    flight = (t_peak, system.M, system.K, system.C, forcing.F0, forcing.X_b, forcing.omega, phi,
+              X, V)  # fmt: skip
+    tau = math.pi / forcing.omega
+    interior = 0.0 < t_peak < tau
+    r_phi = float(po.phase_residual_d_phi(*args, phi))
+    slopes = {}
+    for p in ("d", "e"):
+        d_phi = -float(getattr(po, f"phase_residual_d_{p}")(*args, phi)) / r_phi
+        dX = (
+            float(getattr(po, f"impact_displacement_d_{p}")(*args, phi))
+            + float(po.impact_displacement_d_phi(*args, phi)) * d_phi
+        )
+        if not interior:
+            slopes[p] = math.copysign(1.0, x_peak) * (1.0 if t_peak == 0.0 else -1.0) * dX
+            continue
+        dV = (
+            float(getattr(po, f"main_velocity_after_d_{p}")(*args, phi))
+            + float(po.main_velocity_after_d_phi(*args, phi)) * d_phi
+        )
+        dx = (
+            float(ff.forced_displacement_d_x0(*flight)) * dX
+            + float(ff.forced_displacement_d_xdot0(*flight)) * dV
+            + float(ff.forced_displacement_d_phi(*flight)) * d_phi
+        )
+        slopes[p] = math.copysign(1.0, x_peak) * dx
+    return slopes
 
 
 def _multipliers(system, forcing, e, phi, X, V, U, tau):
