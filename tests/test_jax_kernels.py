@@ -37,7 +37,7 @@ if importlib.util.find_spec("jax") is None:  # pragma: no cover - the test extra
         raise ImportError("jax is not installed (the test extra installs it)")
     pytest.skip("jax is not installed", allow_module_level=True)
 
-#: In the slow set, which CI runs second: JAX's start and compilation of 130 kernels take about
+#: In the slow set, which CI runs second: JAX's start and compilation of 146 kernels take about
 #: a minute, which the README's test command (within about twelve minutes) cannot spare.
 pytestmark = pytest.mark.slow
 

@@ -20,12 +20,46 @@ from symimpact.reference import reference_impacts
 from symimpact.report import beyond_stage, contact_stage, paper, reproduce, vibration_stage
 from symimpact.report.document import Figure, Table
 
+#: The progress bars of the fixture's report, in the order they were opened.
+_BARS: list[_Bar] = []
+
+
+class _Bar:
+    """Records a stage's progress bar: its total and every update."""
+
+    def __init__(self, total, desc, **_):
+        self.total, self.desc, self.updates = total, desc, []
+        _BARS.append(self)
+
+    def update(self, n=1):
+        self.updates.append(n)
+
+    def close(self):
+        pass
+
 
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
     out = tmp_path_factory.mktemp("rep") / "report"
-    path, sections = reproduce(out, quick=True, progress=False, command="pytest")
+    _BARS.clear()
+    with pytest.MonkeyPatch.context() as mp_:
+        mp_.setattr("symimpact.report.tqdm", _Bar)
+        path, sections = reproduce(out, quick=True, progress=True, command="pytest")
     return path, {s.key: s for s in sections}
+
+
+def test_every_stage_reaches_its_planned_steps_and_the_design_map_moves_per_design(report):
+    from symimpact.report import forced_stage
+
+    assert [b.desc.split(" ")[0] for b in _BARS] == ["contact", "free", "beyond", "forced"]
+    for bar in _BARS:
+        assert sum(bar.updates) == bar.total, bar.desc
+    forced = _BARS[-1]
+    designs = len(forced_stage._design_gaps(True)) * len(forced_stage.MASS_RATIOS_QUICK)
+    assert forced.total == 1 + 2 * len(forced_stage.GAPS_MM) + designs
+    # one update per design or per group of designs finished together, never one for the map
+    assert len([n for n in forced.updates if n > 0]) >= 1 + 2 * len(forced_stage.GAPS_MM) + 2
+    assert forced_stage.steps(False) > forced_stage.steps(True)
 
 
 # --- files -----------------------------------------------------------------------------------------

@@ -28,14 +28,15 @@ TITLE = (
 )
 
 
-def _stages() -> list[tuple[str, int, Callable[..., Section]]]:
+def _stages(quick: bool = False) -> list[tuple[str, int, Callable[..., Section]]]:
+    """(description, progress steps, builder) of each stage, in order."""
     from . import beyond_stage, contact_stage, forced_stage, vibration_stage
 
     return [
         ("contact (Fig. 2, 3, Table 1)", contact_stage.STEPS, contact_stage.section),
         ("free vibration (Fig. 4–7, Table 3)", vibration_stage.STEPS, vibration_stage.section),
         ("beyond (accuracy map, Lindstedt)", beyond_stage.STEPS, beyond_stage.section),
-        ("forced (curves, design map)", forced_stage.STEPS, forced_stage.section),
+        ("forced (curves, design map)", forced_stage.steps(quick), forced_stage.section),
     ]
 
 
@@ -67,7 +68,7 @@ def reproduce(
     command = command or " ".join(shlex.quote(a) for a in [Path(sys.argv[0]).name, *sys.argv[1:]])
     sections: list[Section] = []
     with staged_folder(out, force=force) as tmp:
-        for desc, steps, build in _stages():
+        for desc, steps, build in _stages(quick):
             bar = tqdm(total=steps, desc=desc, unit="step", file=sys.stderr, disable=not progress)
             try:
                 sections.append(build(tmp, quick, bar.update, earlier=sections))

@@ -7,7 +7,8 @@ is that of the paper's linear fit k1 with the same c1 (Eq. 35's contact, Step 9)
 e = ``closed_forms.linear_restitution(m, M, k1, c1)``; the stage states how long that contact
 lasts against the forcing period, which is what the idealisation neglects.
 
-- The frequency-response curve with and without the damper at three of Table 3's gaps
+- The frequency-response curve with and without the damper at three of Table 3's gaps (the six
+  curves, rigid and compliant, on worker processes, one per core)
   (:func:`symimpact.forced.frequency_response`: branches continued with their stability, located
   bifurcations, brute-force sweeps up and down as a cross-check), and the located points;
 - the same curves with that linear contact itself, integrated through each contact (a
@@ -19,6 +20,7 @@ lasts against the forcing period, which is what the idealisation neglects.
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 from typing import Any
 
@@ -51,7 +53,21 @@ DESIGN_GAPS_MM = (2.0, 41.0, 3.0)
 DESIGN_GAPS_MM_QUICK = (5.0, 41.0, 9.0)
 MASS_RATIOS = (0.1, 0.25, 0.5)
 MASS_RATIOS_QUICK = (0.25,)
-STEPS = 1 + 2 * len(GAPS_MM) + 1
+
+
+def _design_gaps(quick: bool) -> np.ndarray:
+    """The design map's clearances [m]."""
+    lo, hi, step = DESIGN_GAPS_MM_QUICK if quick else DESIGN_GAPS_MM
+    return np.arange(lo, hi + step / 2, step) * 1e-3
+
+
+def steps(quick: bool) -> int:
+    """The stage's progress steps: the opening, two curves per gap, one per design of the map."""
+    ratios = MASS_RATIOS_QUICK if quick else MASS_RATIOS
+    return 1 + 2 * len(GAPS_MM) + len(_design_gaps(quick)) * len(ratios)
+
+
+STEPS = steps(False)
 
 
 def _system(earlier: Any) -> ImpactSystem:
@@ -84,38 +100,70 @@ def section(folder: Path, quick: bool, tick: Any, earlier: Any = ()) -> Section:
         "integrated through each contact."
     )
     tick()
-    rigid_peaks = _curves(s, folder, base, forcing, e, omegas, tick)
-    _compliant_curves(s, folder, base.with_(contact="linear", k1=k1), forcing, omegas,
-                      rigid_peaks, tick)  # fmt: skip
+    compliant = base.with_(contact="linear", k1=k1)
+    jobs = [(gap_mm, law, system.with_(gap=gap_mm * 1e-3))
+            for law, system in ((e, base), (CompliantContact("linear"), compliant))
+            for gap_mm in GAPS_MM]  # fmt: skip
+    curves = _computed_curves(jobs, forcing, omegas, tick)
+    rigid_peaks = _curves(s, folder, curves[: len(GAPS_MM)])
+    _compliant_curves(s, folder, curves[len(GAPS_MM) :], rigid_peaks)
     band = np.linspace(omegas[0], omegas[-1], N_DESIGN_BAND_QUICK if quick else N_DESIGN_BAND)
-    _design(s, folder, base, forcing, e, band, quick)
-    tick()
+    _design(s, folder, base, forcing, e, band, quick, tick)
     return s
 
 
-def _curves(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: float,
-            omegas: np.ndarray, tick: Any) -> dict[float, float]:  # fmt: skip
-    """The rigid idealisation's curves; returns each gap's peak (gap [mm] → peak [mm])."""
+def _curve(job: tuple) -> tuple:
+    """(frequency response, design row) of one curve: ``job`` = (system, forcing, contact,
+    omegas).  Module level, so that worker processes can run it."""
+    system, forcing, contact, omegas = job
+    frf = frequency_response(system, forcing, contact, omegas)
+    return frf, design_row(system, forcing, contact, omegas, curve=frf)
+
+
+def _computed_curves(jobs: list, forcing: Forcing, omegas: np.ndarray, tick: Any) -> list:
+    """(gap [mm], frequency response, design row) of each job (gap [mm], contact, system), in
+    order: the curves are independent, so they run on the map engine's worker processes (one per
+    core), the stage's bar moving as each ends."""
+    from ..maps.executors import _processes
+
+    payloads = [(system, forcing, law, omegas) for _, law, system in jobs]
+    workers = min(os.cpu_count() or 1, len(payloads))
+    results: list[Any] = [None] * len(jobs)
+    if workers == 1:
+        done = ((i, _curve(p)) for i, p in enumerate(payloads))
+    else:
+        done = _processes([(i, p) for i, p in enumerate(payloads)], workers, _numbered_curve)
+    for i, (frf, row) in done:
+        results[i] = (jobs[i][0], frf, row)
+        tick()
+    return results
+
+
+def _numbered_curve(payload: tuple) -> tuple:
+    """(index, (frequency response, design row)) of ``payload`` = (index, job)."""
+    i, job = payload
+    return i, _curve(job)
+
+
+def _curves(s: Section, folder: Path, curves: list) -> dict[float, float]:
+    """The rigid idealisation's curves (``curves``: (gap [mm], frequency response, design row)
+    each); returns each gap's peak (gap [mm] → peak [mm])."""
     plt = pyplot()
     fig, axes = plt.subplots(len(GAPS_MM), 1, figsize=(9, 4.2 * len(GAPS_MM)), sharex=True)
     located: list[list[Any]] = []
     peaks: list[list[Any]] = []
-    for ax, gap_mm in zip(axes, GAPS_MM, strict=True):
-        system = base.with_(gap=gap_mm * 1e-3)
-        frf = frequency_response(system, forcing, e, omegas)
+    for ax, (gap_mm, frf, row) in zip(axes, curves, strict=True):
         draw_frf(ax, frf)
         ax.set_title(f"d = {gap_mm:g} mm", fontsize=10)
         for i, b in enumerate(frf.branches):
             for f in b.bifurcations:
                 located.append([gap_mm, i, f.kind, f.omega, f.amplitude * 1e3])
-        row = design_row(system, forcing, e, omegas, curve=frf)
         swept = max(float(np.max(frf.sweep_up[:, 1])), float(np.max(frf.sweep_down[:, 1])))
         cov = frf.coverage
         peaks.append([gap_mm, len(frf.branches), row["peak_amplitude"] * 1e3, row["peak_omega"],
                       row["peak_motion"], swept * 1e3, row["baseline_peak"] * 1e3,
                       row["peak_ratio"], f"{sum(cov.traced)} of {len(cov.traced)}",
                       len(cov.missed)])  # fmt: skip
-        tick()
     save(fig, folder, "forced_frc")
     s.blocks.append(
         Figure(
@@ -180,25 +228,20 @@ def _curves(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: f
     return {row[0]: row[2] for row in peaks}
 
 
-def _compliant_curves(s: Section, folder: Path, system: ImpactSystem, forcing: Forcing,
-                      omegas: np.ndarray, rigid_peaks: dict[float, float],
-                      tick: Any) -> None:  # fmt: skip
-    """The curves with the linear contact law integrated through each contact, and each gap's
-    peak beside the rigid idealisation's (``rigid_peaks``: gap [mm] → peak [mm])."""
-    contact = CompliantContact("linear")
+def _compliant_curves(s: Section, folder: Path, curves: list,
+                      rigid_peaks: dict[float, float]) -> None:  # fmt: skip
+    """The curves with the linear contact law integrated through each contact (``curves`` as
+    for :func:`_curves`), and each gap's peak beside the rigid idealisation's (``rigid_peaks``:
+    gap [mm] → peak [mm])."""
     plt = pyplot()
     fig, axes = plt.subplots(len(GAPS_MM), 1, figsize=(9, 4.2 * len(GAPS_MM)), sharex=True)
     rows = []
-    for ax, gap_mm in zip(axes, GAPS_MM, strict=True):
-        design = system.with_(gap=gap_mm * 1e-3)
-        frf = frequency_response(design, forcing, contact, omegas)
+    for ax, (gap_mm, frf, row) in zip(axes, curves, strict=True):
         draw_frf(ax, frf)
         ax.set_title(f"d = {gap_mm:g} mm, linear contact", fontsize=10)
-        row = design_row(design, forcing, contact, omegas, curve=frf)
         peak = row["peak_amplitude"] * 1e3
         rows.append([gap_mm, len(frf.branches), peak, row["peak_omega"], row["peak_motion"],
                      rigid_peaks[gap_mm], peak / rigid_peaks[gap_mm]])  # fmt: skip
-        tick()
     save(fig, folder, "forced_frc_compliant")
     s.blocks.append(
         Figure(
@@ -233,11 +276,17 @@ def _compliant_curves(s: Section, folder: Path, system: ImpactSystem, forcing: F
 
 
 def _design(s: Section, folder: Path, base: ImpactSystem, forcing: Forcing, e: float,
-            omegas: np.ndarray, quick: bool) -> None:  # fmt: skip
-    lo, hi, step = DESIGN_GAPS_MM_QUICK if quick else DESIGN_GAPS_MM
-    gaps = np.arange(lo, hi + step / 2, step) * 1e-3
+            omegas: np.ndarray, quick: bool, tick: Any) -> None:  # fmt: skip
+    gaps = _design_gaps(quick)
     ratios = MASS_RATIOS_QUICK if quick else MASS_RATIOS
-    table = design_map(base, forcing, e, omegas, {"gap": gaps, "mass_ratio": list(ratios)})
+    ticked = [0]
+
+    def designs_done(done: int, total: int) -> None:  # the stage's bar moves with each design
+        tick(done - ticked[0])
+        ticked[0] = done
+
+    table = design_map(base, forcing, e, omegas, {"gap": gaps, "mass_ratio": list(ratios)},
+                       progress=designs_done)  # fmt: skip
     plot_design(table, folder / "forced_design_map.png",
                 title=f"F0 = {F0:g} N, e = {e:.3f}, Ω {omegas[0]:.3g}–{omegas[-1]:.3g} rad/s")  # fmt: skip
     s.blocks.append(
