@@ -112,7 +112,12 @@ def test_stable_branch_points_are_brute_force_steady_states(curve):
     (n = ln(1e-6)/ln μ periods, then 20 kept): what is left is far below 1e-6."""
     checked = 0
     for b in curve.branches:
-        stable = [p for p in b.points if p.stable]
+        # not within 1e-3 of Ω from a located grazing: there a run 1e-3 off the orbit can cross
+        # it into the basin of the orbit with one impact more (at 30.8761 rad/s, 2e-5 rad/s from
+        # a grazing, the offset run settles on 28 impacts a period, the exact start on 26)
+        grazings = [f.omega for f in b.bifurcations if f.kind == "grazing"]
+        stable = [p for p in b.points if p.stable
+                  and all(abs(p.omega - g) > 1e-3 * g for g in grazings)]  # fmt: skip
         if not stable:
             continue
         p = min(stable, key=lambda q: max(abs(m) for m in q.multipliers))

@@ -75,6 +75,14 @@ MAX_NEWTON = 8
 #: The largest arclength step accepted [scaled unknowns]: one moves the parameter by a tenth of
 #: its range (see :func:`continue_orbit`); the default is 0.02.
 MAX_STEP = 1.0
+#: The drawn curve's bound: between consecutive points a branch departs from the straight line by
+#: at most this much in the plane of its figure, the continued parameter in widths of its range
+#: and the amplitude relative to its own value (a steep stretch is judged across, not along the
+#: amplitude axis).  Estimated from the circle through the last three points: a segment of length
+#: s on a curve of curvature κ departs by κs²/8 at its middle.  The step shrinks to keep it, to
+#: no less than a sixteenth of the given step (at a kink of max abs(x), where two extremes of x
+#: swap, the curvature is unbounded and the bound cannot hold).
+CHORD = 1e-3
 
 
 @dataclass(frozen=True)
@@ -378,7 +386,8 @@ def continue_orbit(
     :func:`symimpact.forced.shoot`) in ``parameter`` — ``"omega"`` (Ω [rad/s], the default),
     ``"gap"`` (d [m]), ``"F0"`` [N], ``"X_b"`` [m] or ``"e"`` — over ``bounds`` = (low, high) in
     SI, first towards increasing values (``direction`` 1) or decreasing (−1); ``step``: the
-    arclength step in scaled unknowns (adapted between step/64 and 4·step).  Eq. F1 and F2 along
+    arclength step in scaled unknowns (adapted between step/64 and 4·step, and shortened where
+    the branch curves so that the drawn line between points stays within :data:`CHORD`).  Eq. F1 and F2 along
     the orbits (Step 8, Step 9)."""
     system, forcing, e = checked(system, forcing, e)
     checks.choice("parameter", parameter, tuple(PARAMETERS))
@@ -421,6 +430,7 @@ def continue_orbit(
     tests = _tests(t, mono)
     ds = step
     crossings = 0
+    before: BranchPoint | None = None  # the point before ``point``: the drawn curve's curvature
     while len(branch.points) < max_points:
         moved = _resection(problem, y, t, res)
         if moved is not None:  # the same orbit, its section moved away from the impacts
@@ -437,6 +447,7 @@ def continue_orbit(
                                        "appearing and vanishing, as before chatter)")  # fmt: skip
                 return branch
             y, t, mono, res, point = crossed
+            before = None
             tests = _tests(t, mono)  # the multipliers jump at a grazing: no test across it
             branch.points.append(point)
             continue
@@ -450,7 +461,7 @@ def continue_orbit(
                 return branch
             continue
         y1, J1, mono1, res1 = attempt
-        res = res1
+        res_here, res = res, res1
         t1 = _tangent(J1, t)
         p1 = _point(problem, y1, mono1, res1)
         if p1.impact_events_per_period != point.impact_events_per_period:  # (the corrector checks)
@@ -465,6 +476,12 @@ def continue_orbit(
             branch.stopped = (f"rejoined the period-{periods // 2} orbits at "
                               f"{problem.where(p1.value)}")  # fmt: skip
             return branch
+        kappa = _curvature(before, point, p1, hi - lo)
+        reach = _chord(point, p1, hi - lo) / ds  # drawn length per unit of step
+        if kappa * _chord(point, p1, hi - lo) ** 2 / 8 > CHORD and ds > step / 16:
+            ds = max(0.5 * ds, step / 16)  # too far for the drawn curve: a shorter step
+            res = res_here
+            continue
         tests1 = _tests(t1, mono1)
         for kind in ("fold", "branch-point", "period-doubling", "neimark-sacker"):
             a, b = tests[kind], tests1[kind]
@@ -474,7 +491,7 @@ def continue_orbit(
                 found = _locate(problem, kind, y, t, ds, a, b)
                 if found is not None:
                     branch.bifurcations.append(found)
-        y, t, mono, point, tests = y1, t1, mono1, p1, tests1
+        y, t, mono, point, before, tests = y1, t1, mono1, p1, point, tests1
         branch.points.append(point)
         again = _revisited(branch.points, problem, ds)
         if again is not None:
@@ -485,8 +502,32 @@ def continue_orbit(
             branch.stopped = f"the range's edge at {problem.where(point.value)}"
             return branch
         ds = min(ds * 1.5, 4 * step)
+        if kappa > 0 and reach > 0:  # the next segment within the drawn bound, if it can be
+            ds = max(min(ds, 0.9 * math.sqrt(8 * CHORD / kappa) / reach), step / 16)
     branch.stopped = f"{max_points} points"
     return branch
+
+
+def _plane(p: BranchPoint, ref: BranchPoint, width: float) -> np.ndarray:
+    """``p`` in the drawn plane: its parameter value in ``width``s (its range's), its amplitude
+    relative to ``ref``'s (:data:`CHORD`)."""
+    return np.array([p.value / width, p.amplitude / max(ref.amplitude, 1e-300)])
+
+
+def _chord(p: BranchPoint, q: BranchPoint, width: float) -> float:
+    """The length of the drawn segment from ``p`` to ``q`` (:func:`_plane` relative to ``p``)."""
+    return float(np.linalg.norm(_plane(q, p, width) - _plane(p, p, width)))
+
+
+def _curvature(a: BranchPoint | None, b: BranchPoint, c: BranchPoint, width: float) -> float:
+    """The curvature of the circle through ``a``, ``b``, ``c`` in the drawn plane
+    (:func:`_plane` relative to ``b``): 4·area/(product of the sides); 0 without ``a``."""
+    if a is None:
+        return 0.0
+    pa, pb, pc = _plane(a, b, width), _plane(b, b, width), _plane(c, b, width)
+    u, v = pa - pb, pc - pb
+    sides = np.linalg.norm(u) * np.linalg.norm(v) * np.linalg.norm(pc - pa)
+    return float(2.0 * abs(u[0] * v[1] - u[1] * v[0]) / sides) if sides > 0 else 0.0
 
 
 def _revisited(points: list[BranchPoint], problem: _Problem, ds: float) -> BranchPoint | None:
