@@ -1,0 +1,140 @@
+"""Responses besides the displacement (relative displacement, acceleration, force into the base,
+transmissibility): the primary alone against the textbook transmissibility, and along orbits
+against a direct numerical integration of the primary between the run's own impacts."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from symimpact.errors import MethodNotApplicable, ParameterError
+from symimpact.forced import CompliantContact, Forcing, periodic_orbits, simulate_forced
+from symimpact.forced.responses import linear_response, orbit_response
+from symimpact.forced.simulation import EVENT_COLUMNS
+from symimpact.system import ImpactSystem
+
+SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+E = 0.6
+
+
+def _textbook(zeta, r):
+    """√((1 + (2ζr)²)/((1 − r²)² + (2ζr)²)): force and motion transmissibility of a damped
+    single-degree-of-freedom system."""
+    return np.sqrt((1 + (2 * zeta * r) ** 2) / ((1 - r * r) ** 2 + (2 * zeta * r) ** 2))
+
+
+@pytest.mark.parametrize("forcing", [Forcing(F0=2.0, omega=30.0), Forcing(X_b=1e-3, omega=30.0),
+                                     Forcing(A_b=4.9, omega=30.0)], ids=["force", "base", "acc"])  # fmt: skip
+def test_the_primary_alone_has_the_textbook_transmissibility(forcing):
+    w = np.linspace(5.0, 80.0, 151)
+    r = w / SYSTEM.omega_n
+    got = linear_response("transmissibility", SYSTEM, forcing, w)
+    # 1e-12: a few roundings of the steady coefficients (condition ~1/(2ζ) = 32 at resonance)
+    np.testing.assert_allclose(got, _textbook(SYSTEM.zeta, r), rtol=1e-12)
+
+
+def test_the_primary_alone_base_motion_responses_by_hand():
+    """Under base motion X_b cos θ the relative motion obeys M q̈ + C q̇ + K q = M Ω² X_b cos θ
+    (textbook): its amplitude MΩ²X_b/√((K − MΩ²)² + (CΩ)²)); the absolute acceleration is Ω² times
+    the absolute amplitude, and the force K q + C q̇ has amplitude √(K² + (CΩ)²)·|q|."""
+    f = Forcing(X_b=1e-3, omega=30.0)
+    w = np.array([10.0, 31.0, 50.0])
+    M, K, C = SYSTEM.M, SYSTEM.K, SYSTEM.C
+    q = M * w**2 * 1e-3 / np.hypot(K - M * w**2, C * w)
+    np.testing.assert_allclose(linear_response("relative-displacement", SYSTEM, f, w), q,
+                               rtol=1e-12)  # fmt: skip
+    np.testing.assert_allclose(linear_response("force", SYSTEM, f, w), np.hypot(K, C * w) * q,
+                               rtol=1e-12)  # fmt: skip
+    np.testing.assert_allclose(linear_response("acceleration", SYSTEM, f, w),
+                               w**2 * linear_response("displacement", SYSTEM, f, w), rtol=1e-15)  # fmt: skip
+
+
+def _integrated(name, forcing, res):
+    """``name``'s largest absolute value over the run's first period by solve_ivp (DOP853, rtol
+    1e-12) of the primary between the run's own impacts, restarted at each impact from the
+    velocity after it (its events), 20 001 samples a period: independent of the closed-form
+    flight."""
+    M, K, C = SYSTEM.M, SYSTEM.K, SYSTEM.C
+    W, phase, X_b = forcing.omega, forcing.phase, float(forcing.base_amplitude(forcing.omega))
+
+    def base(t):
+        th = W * t + phase
+        return X_b * np.cos(th), -W * X_b * np.sin(th)
+
+    def rhs(t, s):
+        xb, vb = base(t)
+        return [
+            s[1],
+            (forcing.F0 * math.cos(W * t + phase) - K * (s[0] - xb) - C * (s[1] - vb)) / M,
+        ]
+
+    T = forcing.period
+    ev = res.events
+    cuts = [0.0, *[float(t) for t in ev[:, 0] if 0 < t < T], T]
+    x, v = res.initial_state[0], res.initial_state[1]
+    best = 0.0
+    for k, (a, b) in enumerate(itertools.pairwise(cuts)):
+        if k > 0:
+            row = ev[ev[:, 0] == a][0]
+            x, v = row[EVENT_COLUMNS.index("x")], row[EVENT_COLUMNS.index("xdot_after")]
+        t = np.linspace(a, b, max(int(20001 * (b - a) / T), 3))
+        sol = solve_ivp(rhs, (a, b), [x, v], method="DOP853", rtol=1e-12, atol=1e-15, t_eval=t)
+        xb, vb = base(sol.t)
+        xs, vs = sol.y
+        force = K * (xs - xb) + C * (vs - vb)
+        value = {"displacement": xs, "relative-displacement": xs - xb, "force": force,
+                 "acceleration": (forcing.F0 * np.cos(W * sol.t + phase) - force) / M}[name]  # fmt: skip
+        best = max(best, float(np.max(np.abs(value))))
+        x, v = xs[-1], vs[-1]
+    return best
+
+
+@pytest.mark.parametrize("name", ["displacement", "relative-displacement", "force", "acceleration"])
+@pytest.mark.parametrize("base", [False, True], ids=["force", "base"])
+def test_an_orbits_responses_equal_a_direct_integration(name, base):
+    forcing = Forcing(X_b=2e-3, omega=36.0) if base else Forcing(F0=2.0, omega=36.0)
+    orbit = max(
+        (o for o in periodic_orbits(SYSTEM, forcing, E) if o.stable), key=lambda o: o.amplitude
+    )
+    f = forcing.at(forcing.omega, orbit.impact_phase)  # t = 0 at the impact on the wall +d/2
+    state = (orbit.X, orbit.V, SYSTEM.gap / 2.0, orbit.U)
+    got = orbit_response(name, SYSTEM, f, E, state)
+    x, v, z, u = state
+    res = simulate_forced(SYSTEM, f, contact="rigid", e=E, periods=1, x0=x, xdot0=v, y0=x + z,
+                          ydot0=u)  # fmt: skip
+    # 1e-7: the integration's samples are 1/20001 of a period apart, so its maximum is low by
+    # up to (π·h/20001)²/2 ≈ 1e-8·h² for the h-th harmonic; Brent locates ours to 1e-12 T
+    assert got == pytest.approx(_integrated(name, f, res), rel=1e-7)
+    if name == "displacement":
+        assert got == pytest.approx(orbit.amplitude, rel=1e-12)
+
+
+def test_the_orbit_without_impacts_has_the_closed_form_responses():
+    """A clearance too wide to reach: the motion is the primary alone's steady state."""
+    wide = SYSTEM.with_(gap=10.0)
+    f = Forcing(F0=2.0, omega=25.0)
+    A = float(linear_response("displacement", wide, f, 25.0))
+    # the steady state at t = 0: x = A cos φ + B sin φ with φ = 0, from Step 8's coefficients
+    from symimpact.generated import forced_flight as ff
+
+    a = float(ff.steady_cosine(wide.M, wide.K, wide.C, 2.0, 0.0, 25.0))
+    b = float(ff.steady_sine(wide.M, wide.K, wide.C, 2.0, 0.0, 25.0))
+    state = (a, 25.0 * b, 0.0, 25.0 * b)
+    for name in ("displacement", "force", "acceleration", "transmissibility"):
+        got = orbit_response(name, wide, f, E, state)
+        assert got == pytest.approx(float(linear_response(name, wide, f, 25.0)), rel=1e-10), name
+    assert orbit_response("displacement", wide, f, E, state) == pytest.approx(A, rel=1e-10)
+
+
+def test_bad_requests_are_one_line_refusals():
+    with pytest.raises(ParameterError, match="response: must be one of"):
+        linear_response("stress", SYSTEM, Forcing(F0=1.0, omega=30.0), 30.0)
+    with pytest.raises(ParameterError, match="not both"):
+        linear_response("transmissibility", SYSTEM, Forcing(F0=1.0, X_b=1e-3, omega=30.0), 30.0)
+    hc = CompliantContact("linear")
+    with pytest.raises(MethodNotApplicable, match="compliant contact"):
+        orbit_response("acceleration", SYSTEM, Forcing(F0=2.0, omega=36.0), hc, (0, 0, 0, 0))
