@@ -28,7 +28,8 @@ COMMANDS = _commands()
 def test_the_block_holds_every_subcommand():
     assert [c.split()[1] for c in COMMANDS] == [
         "fit", "ritz", "contact", "contact-duration", "simulate", "simulate", "simulate",
-        "periodic", "periodic", "periodic", "frf", "frf", "branch", "design", "design", "sweep",
+        "periodic", "periodic", "periodic", "frf", "frf", "frf", "branch", "design", "design",
+        "sweep",
         "map",
     ]  # fmt: skip
 
@@ -64,6 +65,9 @@ def test_readme_command_runs_and_shows_something(command, tmp_path):
     elif sub == "frf" and "--base-acc" in args:  # the shaker: the textbook peak 0.862 mm × 50
         assert "peak without the damper: 43.154 mm at Ω 11.9964 Hz" in out and "rad/s" not in out
         assert (tmp_path / "shaker.png").stat().st_size > 10_000
+    elif sub == "frf" and "force" in args:  # the force into the ground: F0 × max TR = 50 × 50.01
+        assert "peak force without the damper: 2500.6 N at Ω" in out and "rad/s" not in out
+        assert "peak force with the damper:" in out
     elif sub == "frf":  # the stable symmetric branch and its symmetry-breaking branch point
         assert "branch-point at Ω 34.53" in out
         assert (tmp_path / "frf.png").stat().st_size > 10_000

@@ -138,3 +138,70 @@ def test_bad_requests_are_one_line_refusals():
     hc = CompliantContact("linear")
     with pytest.raises(MethodNotApplicable, match="compliant contact"):
         orbit_response("acceleration", SYSTEM, Forcing(F0=2.0, omega=36.0), hc, (0, 0, 0, 0))
+
+
+# --- the curve in another response (frf --response) ------------------------------------------
+@pytest.fixture(scope="module")
+def force_curve():
+    from symimpact.forced.frf import frequency_response
+    from symimpact.forced.response_curve import response_curve
+
+    f = Forcing(F0=2.0, omega=33.0)
+    w = np.arange(33.0, 36.0001, 0.1)
+    frf = frequency_response(SYSTEM, f, E, w, sweeps=False)
+    return frf, response_curve(frf, "force", SYSTEM, f, E), f
+
+
+def test_the_force_curve_carries_each_orbits_force(force_curve):
+    frf, curve, f = force_curve
+    assert curve.response == "force" and frf.response == "displacement"
+    b0, b1 = frf.branches[0], curve.branches[0]
+    for p, q in list(zip(b0.points, b1.points, strict=True))[::10]:
+        assert q.omega == p.omega and q.stable == p.stable
+        direct = orbit_response("force", SYSTEM, f.at(p.omega, p.phase), E, p.state,
+                                b0.period_multiple)  # fmt: skip
+        assert q.amplitude == direct
+
+
+def test_the_force_peak_is_located_above_every_stable_point(force_curve):
+    """The located peak is no lower than any stable point of the curve, and the primary alone's
+    peak force equals the closed form's maximum on a fine grid (its own maximum, not a sample)."""
+    _, curve, f = force_curve
+    stable = [
+        p.amplitude
+        for b in curve.branches
+        for p in b.points
+        if p.stable and 33.0 <= p.omega <= 36.0
+    ]  # (a branch ends just past the band)
+    stable += [v for lo, hi in curve.no_impact
+               for v in linear_response("force", SYSTEM, f, np.linspace(lo, hi, 201))]  # fmt: skip
+    assert curve.peak.amplitude >= max(stable) * (1 - 1e-12)
+    w = np.linspace(33.0, 36.0, 300001)
+    fine = linear_response("force", SYSTEM, f, w)
+    # the grid's step 1e-5 rad/s leaves its maximum low by ~(1e-5/width)²: 1e-9 relative
+    assert curve.baseline_peak.amplitude == pytest.approx(float(fine.max()), rel=1e-9)
+    assert curve.baseline_peak.amplitude >= float(fine.max())
+
+
+def test_frf_response_on_the_command_line(tmp_path, capsys):
+    import json
+
+    from symimpact.cli import main
+
+    argv = ["frf", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm",
+            "--force", "2 N", "--contact", "rigid", "--e", "0.6", "--omega-range", "33:36:0.5",
+            "--no-sweeps"]  # fmt: skip
+    assert main([*argv, "--response", "force", "--csv", str(tmp_path / "f.csv")]) == 0
+    text = capsys.readouterr().out
+    assert "peak force with the damper:" in text and " N at Ω" in text
+    assert (tmp_path / "f.csv").read_text().startswith("omega [rad/s],force [N],")
+    assert main([*argv, "--response", "relative-displacement", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["response"] == {"name": "relative-displacement", "unit": "m"}
+    assert "relative_displacement" in out["points"][0] and "amplitude" not in out["points"][0]
+    assert set(out["peak"]) >= {"relative_displacement", "omega"}
+    assert main([*argv, "--response", "stress"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "response" in err[0]
+    assert main([*argv, "--base", "1 mm", "--response", "transmissibility"]) == 2
+    assert "not both" in capsys.readouterr().err

@@ -35,6 +35,11 @@ OUTPUT_SI_UNITS = {
     "ydot": "m/s",
     "duration": "s",
     "amplitude": "m",
+    # the responses of a curve (symimpact.forced.responses), as frf's JSON and CSV name them
+    "relative_displacement": "m",
+    "acceleration": "m/s^2",
+    "force": "N",
+    "transmissibility": "dimensionless",
     "impacts_per_period": "dimensionless",
     "impact_events_per_period": "dimensionless",
     "period_multiple": "dimensionless",

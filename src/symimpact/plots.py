@@ -105,21 +105,28 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     import numpy as np
 
     from .display import display_unit, shown
+    from .forced.responses import AXIS, QUANTITY
 
     def W(v):  # Ω in its display unit (rad/s, or Hz when the band was given in Hz)
         return shown("omega", v)
 
+    name = getattr(frf, "response", "displacement")  # what the amplitude fields hold
+    quantity = QUANTITY[name]
+
+    def Y(v):  # the response in its display unit
+        return v if quantity is None else shown(quantity, v)
+
     base = frf.baseline
-    ax.plot(W(base[:, 0]), shown("x", base[:, 1]), color="0.6", lw=1.0, label="without the damper")
+    ax.plot(W(base[:, 0]), Y(base[:, 1]), color="0.6", lw=1.0, label="without the damper")
     for k, (lo, hi) in enumerate(getattr(frf, "no_impact", [])):
         inside = (base[:, 0] >= lo) & (base[:, 0] <= hi)
-        ax.plot(W(base[inside, 0]), shown("x", base[inside, 1]), color="0.6", lw=4, alpha=0.45,
+        ax.plot(W(base[inside, 0]), Y(base[inside, 1]), color="0.6", lw=4, alpha=0.45,
                 solid_capstyle="butt", label=None if k else "no impact (mass at rest midway)")  # fmt: skip
     for g in getattr(frf, "no_impact_grazings", []):
         ax.axvline(W(g), color="0.6", lw=0.8, ls=":")
     for i, b in enumerate(frf.branches):
         w = W(np.array([p.omega for p in b.points]))
-        a = shown("x", np.array([p.amplitude for p in b.points]))
+        a = Y(np.array([p.amplitude for p in b.points]))
         stable = np.array([p.stable for p in b.points])
         color = f"C{i % 10}"
         for flag, style in ((True, "-"), (False, "--")):
@@ -133,18 +140,18 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     seen = set()
     for b in frf.branches:
         for f in b.bifurcations:
-            ax.plot(W(f.omega), shown("x", f.amplitude), markers[f.kind], color="k", ms=6, mfc="none",
+            ax.plot(W(f.omega), Y(f.amplitude), markers[f.kind], color="k", ms=6, mfc="none",
                     label=None if f.kind in seen else f.kind)  # fmt: skip
             seen.add(f.kind)
     if sweeps and frf.sweep_up is not None and len(frf.sweep_up):
-        ax.plot(W(frf.sweep_up[:, 0]), shown("x", frf.sweep_up[:, 1]), "^", color="C3", ms=3,
+        ax.plot(W(frf.sweep_up[:, 0]), Y(frf.sweep_up[:, 1]), "^", color="C3", ms=3,
                 alpha=0.6, label="sweep up")  # fmt: skip
-        ax.plot(W(frf.sweep_down[:, 0]), shown("x", frf.sweep_down[:, 1]), "v", color="C0", ms=3,
+        ax.plot(W(frf.sweep_down[:, 0]), Y(frf.sweep_down[:, 1]), "v", color="C0", ms=3,
                 alpha=0.6, label="sweep down")  # fmt: skip
     ax.plot([], [], "-", color="k", label="stable")
     ax.plot([], [], "--", color="k", label="unstable")
     ax.set_xlabel(f"Ω [{display_unit('omega')}]")
-    ax.set_ylabel(f"amplitude max |x| [{display_unit('x')}]")
+    ax.set_ylabel(AXIS[name] + ("" if quantity is None else f" [{display_unit(quantity)}]"))
     ax.set_xlim(W(frf.omegas[0]), W(frf.omegas[-1]))
     ax.legend(fontsize=8, ncol=3)
 

@@ -32,7 +32,27 @@ def add_parser(sub: Any) -> None:
     add_band(g)
     g.add_argument("--no-sweeps", action="store_true",
                    help="skip the brute-force sweeps up and down the band")  # fmt: skip
+    p.add_argument(
+        "--response",
+        default="displacement",
+        metavar="NAME",
+        help="what the curve shows: displacement (max |x|, default), relative-displacement "
+        "(max |x − x_b|), acceleration (max |ẍ| between impacts), force (into the base, "
+        "max |K(x − x_b) + C(ẋ − ẋ_b)|) or transmissibility (force/F0 under a force, "
+        "max |x|/X_b under base motion); the text, JSON, CSV and plot then carry it",
+    )
     add_output(p, plot=True)
+
+
+def response_text(name: str, value: float, spec: str = ".5g", unit: bool = True) -> str:
+    """``value`` [SI] of the response ``name`` in its display unit (with it, if ``unit``)."""
+    from ..display import display_unit, shown
+    from ..forced.responses import QUANTITY
+
+    q = QUANTITY[name]
+    if q is None:
+        return format(value, spec)
+    return format(shown(q, value), spec) + (f" {display_unit(q)}" if unit else "")
 
 
 def add_band(g: Any) -> None:
@@ -132,7 +152,14 @@ def run(ns) -> None:
     system = system_from(ns)
     forcing = forcing_of(ns, omega=float(omegas[0]))
     e = contact_of(ns)
+    from ..forced.responses import checked_response
+
+    response = checked_response(ns.response, forcing)
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps)
+    if response != "displacement":
+        from ..forced.response_curve import response_curve
+
+        frf = response_curve(frf, response, system, forcing, e)
     out = frf.as_dict()
     if ns.csv:
         write_csv(ns.csv, "csv", out["points"])
@@ -141,7 +168,8 @@ def run(ns) -> None:
 
         plot_frf(frf, ns.plot, title=f"m/M = {system.m / system.M:.3g}, d = "
                  f"{shown('gap', system.gap):.4g} {display_unit('gap')}, {contact_title(ns, e)}")  # fmt: skip
-    unit = display_unit("x")
+    what = "amplitude" if response == "displacement" else response
+    key = "amplitude" if response == "displacement" else response.replace("-", "_")
     lines = [
         f"Ω {shown('omega', omegas[0]):.6g}–{omega_text(omegas[-1])}: {len(frf.branches)} "
         f"branch(es), "
@@ -153,16 +181,17 @@ def run(ns) -> None:
         lines.append(
             f"branch {i}: {b.period_multiple} period(s), Ω "
             f"{shown('omega', min(p.omega for p in b.points)):.4g}"
-            f"–{omega_text(max(p.omega for p in b.points), '.4g')}, amplitude "
-            f"{shown('x', min(amps)):.4g}–{shown('x', max(amps)):.4g} {unit}, "
+            f"–{omega_text(max(p.omega for p in b.points), '.4g')}, {what} "
+            f"{response_text(response, min(amps), '.4g', unit=False)}–"
+            f"{response_text(response, max(amps), '.4g')}, "
             f"{stable} of {len(amps)} points stable"
             + (", asymmetric orbits (each with its mirror image)" if b.mirrored else "")
             + (f"; from the {_origin_text(b)}" if b.origin else "")
         )
     for f in out["bifurcations"]:
         lines.append(
-            f"  {f['kind']} at Ω {omega_text(f['omega'])}, amplitude "
-            f"{shown('x', f['amplitude']):.5g} {unit} (branch {f['branch']})"
+            f"  {f['kind']} at Ω {omega_text(f['omega'])}, {what} "
+            f"{response_text(response, f[key])} (branch {f['branch']})"
         )
     if frf.no_impact:
         spans = ", ".join(f"{shown('omega', a):.5g}–{shown('omega', b):.5g}"
@@ -191,16 +220,17 @@ def _origin_text(branch) -> str:
 
 def peak_lines(frf) -> list[str]:
     """The located peak with and without the damper, and the reduction, in words."""
-    from ..display import display_unit, impacts_text, omega_text, shown
+    from ..display import display_unit, impacts_text, omega_text
 
-    unit = display_unit("x")
+    name = getattr(frf, "response", "displacement")
+    what = "peak" if name == "displacement" else f"peak {name}"
 
     def at(p) -> str:
         other = "" if display_unit("omega") == "Hz" else f" ({p.omega / (2 * math.pi):.6g} Hz)"
-        return f"{shown('x', p.amplitude):.5g} {unit} at Ω {omega_text(p.omega)}{other}"
+        return f"{response_text(name, p.amplitude)} at Ω {omega_text(p.omega)}{other}"
 
     if frf.peak is None:
-        lines = ["peak with the damper: no stable motion traced in the band"]
+        lines = [f"{what} with the damper: no stable motion traced in the band"]
     else:
         p = frf.peak
         if p.motion == "periodic":
@@ -214,8 +244,8 @@ def peak_lines(frf) -> list[str]:
             kind = p.motion
         how = ("sampled by the multi-start" if p.where == "multi-start"
                else f"located: {p.where}")  # fmt: skip
-        lines = [f"peak with the damper: {at(p)} ({kind}; {how})"]
-    lines.append(f"peak without the damper: {at(frf.baseline_peak)}")
+        lines = [f"{what} with the damper: {at(p)} ({kind}; {how})"]
+    lines.append(f"{what} without the damper: {at(frf.baseline_peak)}")
     if not math.isnan(frf.reduction):
         lines.append(f"reduction: {100 * frf.reduction:.4g} %")
     cov = frf.coverage

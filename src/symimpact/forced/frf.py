@@ -97,6 +97,10 @@ class FrequencyResponse:
     baseline_peak: Peak | None = None
     #: the multi-start's attractors and the share of the periodic ones on a traced branch
     coverage: Coverage = field(default_factory=Coverage)
+    #: what the ``amplitude`` fields hold: "displacement" (max abs(x)), or another response of
+    #: :data:`symimpact.forced.responses.RESPONSES` (:func:`.response_curve.response_curve`),
+    #: whose name replaces the key "amplitude" in :meth:`as_dict`
+    response: str = "displacement"
 
     @property
     def reduction(self) -> float:
@@ -111,7 +115,29 @@ class FrequencyResponse:
         ``impacts_per_period`` counts every impact the simulation resolved, its
         ``impact_events_per_period`` a chatter sequence once (its accumulation), and its
         ``kind`` is "periodic" (every traced point is an orbit; the multi-start's other
-        attractors are in ``coverage``)."""
+        attractors are in ``coverage``).  In another response than the displacement its name
+        (``force``, ``relative_displacement``, …) replaces every "amplitude" key but the
+        coverage's (the attractors' displacements)."""
+        out = self._as_dict()
+        if self.response == "displacement":
+            return out
+        key = self.response.replace("-", "_")
+
+        def renamed(row):
+            if isinstance(row, dict):
+                return {key if k == "amplitude" else k: v for k, v in row.items()}
+            return row
+
+        for name in ("points", "bifurcations", "baseline", "sweep_up", "sweep_down"):
+            out[name] = [renamed(r) for r in out[name]]
+        for name in ("peak", "baseline_peak"):
+            out[name] = renamed(out[name])
+        from .responses import response_unit
+
+        out["response"] = {"name": self.response, "unit": response_unit(self.response)}
+        return out
+
+    def _as_dict(self) -> dict[str, Any]:
         points, bifurcations = [], []
         for i, b in enumerate(self.branches):
             for p in b.points:

@@ -21,6 +21,7 @@ primary without the damper.
 from __future__ import annotations
 
 import itertools
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -83,29 +84,42 @@ def _maximum(f, lo: float, hi: float) -> tuple[float, float]:
     return best
 
 
-def baseline_peak(system: ImpactSystem, forcing: Forcing, band: tuple[float, float]) -> Peak:
+def baseline_peak(
+    system: ImpactSystem, forcing: Forcing, band: tuple[float, float],
+    linear: Callable[[Any], Any] | None = None,
+) -> Peak:  # fmt: skip
     """The largest amplitude of the primary without the damper over ``band`` [rad/s]: the
-    maximum of X(Ω) (Step 8, Eq. F1) located by Brent's method (resonance) or a band edge."""
+    maximum of X(Ω) (Step 8, Eq. F1) located by Brent's method (resonance) or a band edge.
+    ``linear``: another response of Ω to locate instead of X(Ω) (one maximum in the band, as
+    :func:`symimpact.forced.responses.linear_response`'s)."""
+    if linear is None:
+
+        def linear(x):
+            return linear_amplitude(system, forcing, x)
+
     lo, hi = band
     grid = np.linspace(lo, hi, 401)
-    i = int(np.argmax(linear_amplitude(system, forcing, grid)))
+    i = int(np.argmax(linear(grid)))
     a, b = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
-    w, amp = _maximum(lambda x: float(linear_amplitude(system, forcing, x)), float(a), float(b))
+    w, amp = _maximum(lambda x: float(linear(x)), float(a), float(b))
     where = "band edge" if w in (lo, hi) else "resonance"
     return Peak(amp, w, "linear", where)
 
 
 def no_impact_peak(
-    system: ImpactSystem, forcing: Forcing, intervals: list[tuple[float, float]]
-) -> Peak | None:
+    system: ImpactSystem, forcing: Forcing, intervals: list[tuple[float, float]],
+    linear: Callable[[Any], Any] | None = None,
+) -> Peak | None:  # fmt: skip
     """The largest amplitude of the motion without impacts (the impact mass at rest midway, the
     primary's linear response inside the clearance) over its Ω ``intervals``; None if it has
-    none.  X(Ω) has one maximum, so on an interval it is the resonance or an end."""
+    none.  X(Ω) has one maximum, so on an interval it is the resonance or an end.  ``linear``
+    as for :func:`baseline_peak`."""
     best: Peak | None = None
     for lo, hi in intervals:
-        inner = baseline_peak(system, forcing, (lo, hi))
+        inner = baseline_peak(system, forcing, (lo, hi), linear)
         where = inner.where
-        if where == "band edge" and abs(inner.amplitude - system.gap / 2) <= 1e-9 * system.gap:
+        X = float(linear_amplitude(system, forcing, inner.omega))
+        if where == "band edge" and abs(X - system.gap / 2) <= 1e-9 * system.gap:
             where = "grazing"  # the interval ends where X reaches d/2
         peak = Peak(inner.amplitude, inner.omega, "no impact", where)
         if best is None or peak.amplitude > best.amplitude:
@@ -113,14 +127,26 @@ def no_impact_peak(
     return best
 
 
+#: ``measure(state, omega, phase, periods)``: a response of the orbit through ``state`` (x, ẋ,
+#: z, ẏ) at t = 0 with the forcing at ``omega`` [rad/s] and ``phase`` [rad], over ``periods``
+#: forcing periods (:func:`symimpact.forced.responses.orbit_response`); None: the amplitude.
+Measure = Callable[[Any, float, float, int], float]
+
+
 def stable_peak(
     branches: list[Branch], system: ImpactSystem, forcing: Forcing, e: Any,
-    band: tuple[float, float],
+    band: tuple[float, float], measure: Measure | None = None,
 ) -> Peak | None:  # fmt: skip
     """The largest amplitude among the stable orbits of ``branches`` (continued in Ω) within
-    ``band`` (module text); None if no branch has a stable orbit there."""
+    ``band`` (module text); None if no branch has a stable orbit there.  With ``measure``, the
+    largest of that response instead, the branches' points and bifurcations carrying it in their
+    ``amplitude`` (:func:`symimpact.forced.response_curve.response_curve`)."""
     lo, hi = band
     best: Peak | None = None
+
+    def value(o, omega: float, phase: float, periods: int) -> float:
+        """The shot orbit ``o``'s amplitude, or its ``measure``."""
+        return o.amplitude if measure is None else measure(o.state, omega, phase, periods)
 
     def offer(amp, omega, where, i, b, p):
         nonlocal best
@@ -146,7 +172,7 @@ def stable_peak(
                 continue
             if (p1.omega - p0.omega) * (p2.omega - p1.omega) <= 0:
                 continue  # Ω turns here: a fold, located as such
-            located = _interior_maximum(b, p0, p1, p2, system, forcing, e)
+            located = _interior_maximum(b, p0, p1, p2, system, forcing, e, value)
             if located is not None:
                 offer(*located, "maximum", i, b, p1)
         for edge in (lo, hi):
@@ -154,7 +180,8 @@ def stable_peak(
                 if p.stable and q.stable and min(p.omega, q.omega) <= edge <= max(p.omega, q.omega):
                     o = orbit_between(p, q, edge, _at(system, forcing, e, edge), b.period_multiple)
                     if o is not None and o.stable:
-                        offer(o.amplitude, edge, "band edge", i, b, p)
+                        amp = value(o, edge, p.phase, b.period_multiple)
+                        offer(amp, edge, "band edge", i, b, p)
     return best
 
 
@@ -162,15 +189,18 @@ def _at(system, forcing, e, omega):
     return system, forcing.at(omega), e
 
 
-def _interior_maximum(b: Branch, p0, p1, p2, system, forcing, e):
+def _interior_maximum(b: Branch, p0, p1, p2, system, forcing, e, value):
     """(amplitude, Ω) of the amplitude's maximum between p0 and p2 (Brent's method on Ω, each
-    orbit by Newton's method from the nearer segment's interpolated state)."""
+    orbit by Newton's method from the nearer segment's interpolated state; ``value(orbit, Ω,
+    phase, periods)`` its amplitude or response)."""
     a, c = sorted((p0.omega, p2.omega))
 
     def amp(w: float) -> float:
         p, q = (p0, p1) if min(p0.omega, p1.omega) <= w <= max(p0.omega, p1.omega) else (p1, p2)
         o = orbit_between(p, q, w, _at(system, forcing, e, w), b.period_multiple)
-        return o.amplitude if o is not None and o.stable else 0.0  # (below any orbit's)
+        if o is None or not o.stable:
+            return 0.0  # (below any orbit's)
+        return value(o, w, p.phase, b.period_multiple)
 
     w, value = _maximum(amp, a, c)
     return (value, w) if value > 0 else None
@@ -179,15 +209,22 @@ def _interior_maximum(b: Branch, p0, p1, p2, system, forcing, e):
 def curve_peak(
     branches: list[Branch], system: ImpactSystem, forcing: Forcing, e: Any,
     band: tuple[float, float], no_impact: list[tuple[float, float]], others: Any = (),
+    measure: Measure | None = None, linear: Callable[[Any], Any] | None = None,
 ) -> Peak | None:  # fmt: skip
     """The largest of :func:`stable_peak`, :func:`no_impact_peak` and the steady motions that no
     branch can hold (``others``: attractors of :mod:`symimpact.forced.coverage` of the kinds
     UNTRACEABLE — chatter or sticking, chaotic, quasi-periodic, not periodic — their largest
     abs(x) over the kept periods, at the
-    multi-start's frequency): the worst steady motion found over ``band``."""
-    found = [p for p in (stable_peak(branches, system, forcing, e, band),
-                         no_impact_peak(system, forcing, no_impact)) if p is not None]  # fmt: skip
-    found += [Peak(a.amplitude, a.omega, a.kind, "multi-start", None,
-                   a.period_multiple or None, a.impacts_per_period)
-              for a in others if a.kind in UNTRACEABLE]  # fmt: skip
+    multi-start's frequency): the worst steady motion found over ``band``.  With ``measure``
+    and ``linear`` (:func:`stable_peak`, :func:`baseline_peak`), the worst of that response; an
+    untraceable motion's over the KEPT periods that follow its recorded state."""
+    from .coverage import KEPT
+
+    found = [p for p in (stable_peak(branches, system, forcing, e, band, measure),
+                         no_impact_peak(system, forcing, no_impact, linear)) if p is not None]  # fmt: skip
+    for a in others:
+        if a.kind in UNTRACEABLE:
+            amp = a.amplitude if measure is None else measure(a.state, a.omega, forcing.phase, KEPT)
+            found.append(Peak(amp, a.omega, a.kind, "multi-start", None,
+                              a.period_multiple or None, a.impacts_per_period))  # fmt: skip
     return max(found, key=lambda p: p.amplitude) if found else None

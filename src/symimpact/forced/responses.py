@@ -47,6 +47,14 @@ RESPONSES = {
     "force": ("N", "largest force into the base, max abs(K(x − x_b) + C(ẋ − ẋ_b))"),
     "transmissibility": ("1", "max abs(F_T)/F0 under a force, max abs(x)/X_b under base motion"),
 }
+#: The quantity whose display unit each response is shown in (:mod:`symimpact.display`; None:
+#: a pure number).
+QUANTITY = {"displacement": "x", "relative-displacement": "x", "acceleration": "A_b",
+            "force": "F0", "transmissibility": None}  # fmt: skip
+#: How each response is named on a plot's axis.
+AXIS = {"displacement": "amplitude max |x|", "relative-displacement": "max |x − x_b|",
+        "acceleration": "max |ẍ| between impacts", "force": "force into the base max |F_T|",
+        "transmissibility": "transmissibility"}  # fmt: skip
 #: Samples a forcing period where an orbit's response is looked for (and a compliant run's grid).
 SAMPLES = 4096
 
