@@ -205,3 +205,22 @@ def test_frf_response_on_the_command_line(tmp_path, capsys):
     assert len(err) == 1 and "response" in err[0]
     assert main([*argv, "--base", "1 mm", "--response", "transmissibility"]) == 2
     assert "not both" in capsys.readouterr().err
+
+
+def test_periodic_response_on_the_command_line(capsys):
+    import json
+
+    from symimpact.cli import main
+
+    argv = ["periodic", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm",
+            "--force", "2 N", "--omega", "36", "--contact", "rigid", "--e", "0.6"]  # fmt: skip
+    assert main([*argv, "--response", "force", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    f = Forcing(F0=2.0, omega=36.0)
+    for row, o in zip(rows, periodic_orbits(SYSTEM, f, E), strict=True):
+        state = (o.X, o.V, SYSTEM.gap / 2.0, o.U)
+        direct = orbit_response("force", SYSTEM, f.at(36.0, o.impact_phase), E, state)
+        assert row["force"] == direct
+    assert main([*argv, "--response", "acceleration", "--method", "shooting"]) == 0
+    assert "acceleration: " in capsys.readouterr().out
+    assert main([*argv, "--response", "nope"]) == 2

@@ -53,7 +53,31 @@ def add_parser(sub: Any) -> None:
         metavar="K",
         help="look for an orbit of K forcing periods (K > 1: a subharmonic); default 1",
     )
+    p.add_argument(
+        "--response",
+        default=None,
+        metavar="NAME",
+        help="also each orbit's relative-displacement, acceleration (between impacts), force "
+        "(into the base) or transmissibility, as frf --response",
+    )
     add_output(p)
+
+
+def _with_response(ns, rows: list[dict], orbits: list, starts: list, system, forcing, e) -> str:
+    """Each orbit's ``--response`` (SI) added to its JSON row under the response's name; the
+    text line that states them ('' without --response).  ``starts``: each orbit's (state at
+    t = 0, forcing phase, periods)."""
+    if ns.response is None:
+        return ""
+    from ..forced.responses import checked_response, orbit_response
+    from .frf import response_text
+
+    name = checked_response(ns.response, forcing)
+    values = [orbit_response(name, system, forcing.at(forcing.omega, phase), e, state, k)
+              for state, phase, k in starts]  # fmt: skip
+    for row, v in zip(rows, values, strict=True):
+        row[name.replace("-", "_")] = v
+    return f"{name}: " + ", ".join(response_text(name, v) for v in values)
 
 
 def run(ns) -> None:
@@ -62,6 +86,10 @@ def run(ns) -> None:
     from ..forced import periodic_orbits
     from .frf import contact_of
 
+    if ns.response is not None:  # refused before any orbit is computed
+        from ..forced.responses import checked_response
+
+        checked_response(ns.response, forcing_from(ns))
     if ns.method == "shooting":
         e = contact_of(ns)
         return _shooting(ns, system_from(ns), forcing_from(ns), e)
@@ -80,6 +108,9 @@ def run(ns) -> None:
             raise ParameterError(key, "applies to --method shooting")
     orbits = periodic_orbits(system, forcing, ns.e)
     out = [o.as_dict() for o in orbits]
+    # t = 0 at the impact on the wall +d/2: the state just after it
+    starts = [((o.X, o.V, system.gap / 2.0, o.U), o.impact_phase, 1) for o in orbits]
+    extra = _with_response(ns, out, orbits, starts, system, forcing, ns.e)
     if not orbits:
         text = (
             f"Ω {omega_text(forcing.omega)}: no symmetric two-impact orbit (the phase condition "
@@ -99,7 +130,7 @@ def run(ns) -> None:
                 f"{o.multipliers[0]:20.6g}  {o.amplitude_slope_gap:9.4g}  "
                 f"{shown('x', o.amplitude_slope_e):.4g}"
             )
-        text = "\n".join(lines)
+        text = "\n".join(lines + ([extra] if extra else []))
     emit(ns, out, text)
 
 
@@ -116,6 +147,8 @@ def _shooting(ns, system, forcing, e) -> None:
     if not 1 <= multiple <= MAX_MULTIPLE:
         raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
     o = shoot_from_rest(system, forcing, e, warmup=warmup, periods=multiple)
+    out = [o.as_dict()]
+    extra = _with_response(ns, out, [o], [(o.state, forcing.phase, multiple)], system, forcing, e)
     unit = display_unit("x")
     text = (
         f"Ω {omega_text(forcing.omega)}: an orbit of {multiple} forcing period(s) by shooting "
@@ -123,8 +156,8 @@ def _shooting(ns, system, forcing, e) -> None:
         f"{shown('x', o.amplitude):.6g} {unit}, "
         f"{impacts_text(o.impacts_per_period, o.impact_events_per_period)}, "
         f"{'stable' if o.stable else 'unstable'} (largest |multiplier| {o.multipliers[0]:.6g})"
-    )
-    emit(ns, [o.as_dict()], text)
+    ) + (f"\n{extra}" if extra else "")
+    emit(ns, out, text)
 
 
 #: The subcommands this module runs.
