@@ -199,7 +199,8 @@ def readable_numbers(expr: sp.Basic, digits: int = DIGITS) -> tuple[sp.Basic, bo
 
     A rational with a numerator or denominator above 1000 becomes a decimal (exact when it terminates within 12
     significant digits); a float, or a sub-expression without symbols whose LaTeX is longer than
-    16 characters (an exact algebraic number), is rounded to :data:`DIGITS` digits.
+    16 characters (an exact algebraic number), is rounded to :data:`DIGITS` digits — unless it
+    is a plain exact constant a reader works with, as 3/(4π²) (:func:`_plain_exact`).
     """
     rounded = False
 
@@ -222,7 +223,8 @@ def readable_numbers(expr: sp.Basic, digits: int = DIGITS) -> tuple[sp.Basic, bo
             return number(e)
         if not e.args:
             return e
-        if not e.free_symbols and not isinstance(e, sp.Number) and len(sp.latex(e)) > 16:
+        if (not e.free_symbols and not isinstance(e, sp.Number) and len(sp.latex(e)) > 16
+                and not _plain_exact(e)):  # fmt: skip
             try:
                 return number(sp.Float(sp.N(e, 30), 30))
             except (TypeError, ValueError):
@@ -231,6 +233,23 @@ def readable_numbers(expr: sp.Basic, digits: int = DIGITS) -> tuple[sp.Basic, bo
         return e.func(*new) if any(n is not a for n, a in zip(new, e.args, strict=True)) else e
 
     return walk(expr), rounded
+
+
+def _plain_exact(e: sp.Basic) -> bool:
+    """Whether the constant ``e`` reads best as it stands: built from whole numbers and fractions
+    up to 1000, π and Euler's e by sums, products, powers and roots, at most 40 LaTeX characters
+    (3/(4π²), √2/2) — not an algebraic number from a solve or a 60-digit root."""
+    if len(sp.latex(e)) > 40:
+        return False
+    for a in sp.preorder_traversal(e):
+        if isinstance(a, sp.Rational):
+            if abs(a.p) > 1000 or a.q > 1000:
+                return False
+        elif a.is_Atom and a not in (sp.pi, sp.E):
+            return False  # a float, a root object, anything but small exact numbers
+        elif not isinstance(a, sp.Add | sp.Mul | sp.Pow) and not a.is_Atom:
+            return False  # a function (a logarithm, a Bessel value): its decimal is read
+    return True
 
 
 def _float_digits(x: sp.Float) -> str:

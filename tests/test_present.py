@@ -88,6 +88,19 @@ def test_numbers_read_as_the_paper_prints_them(number, text):
     assert tex(shown) == text and not rounded
 
 
+def test_exact_constants_stay_exact_and_long_roots_are_rounded():
+    """3/(4π²) (Eq. 29's cubic term over π²) is written as it is, not as 0.07599089; a long
+    algebraic number and a logarithm's value are still rounded (and the line says ≈)."""
+    T = sp.Symbol("T")
+    shown, rounded = readable_numbers(3 * T**2 / (4 * sp.pi**2))
+    assert not rounded and r"\pi^{2}" in tex(shown)
+    shown, rounded = readable_numbers(sp.sqrt(2) / 2 + sp.Rational(1, 3) * sp.pi)
+    assert not rounded
+    for long in (sp.sqrt(3 + sp.sqrt(5 + sp.sqrt(7 + sp.sqrt(11)))) * sp.pi, sp.log(3) ** 3):
+        _, rounded = readable_numbers(long * T)
+        assert rounded
+
+
 def test_amplitude_ratio_reads_b_over_b_minus_a():
     ba = sp.Symbol("ba")
     shown = board_form(ba / (ba - 1))
