@@ -224,3 +224,35 @@ def test_periodic_response_on_the_command_line(capsys):
     assert main([*argv, "--response", "acceleration", "--method", "shooting"]) == 0
     assert "acceleration: " in capsys.readouterr().out
     assert main([*argv, "--response", "nope"]) == 2
+
+
+def test_steady_response_of_a_run_equals_its_settled_orbits():
+    """A run from rest that settles on the stable orbit at 36 rad/s: its steady force over the
+    kept periods equals the orbit's own (the run's transient after 300 periods is
+    exp(−ζωₙ·300T) ≈ 1e-9 of it; 1e-8 asserted)."""
+    from symimpact.forced.responses import steady_response
+
+    f = Forcing(F0=2.0, omega=36.0)
+    o = min((o for o in periodic_orbits(SYSTEM, f, E) if o.stable), key=lambda o: o.amplitude)
+    res = simulate_forced(SYSTEM, f, contact="rigid", e=E, periods=400, discard=300)
+    state = (o.X, o.V, SYSTEM.gap / 2.0, o.U)
+    orbit = orbit_response("force", SYSTEM, f.at(36.0, o.impact_phase), E, state)
+    assert steady_response("force", res, 300) == pytest.approx(orbit, rel=1e-8)
+
+
+def test_simulate_response_on_the_command_line(capsys):
+    import json
+
+    from symimpact.cli import main
+
+    argv = ["simulate", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm",
+            "--force", "2 N", "--omega", "36"]  # fmt: skip
+    assert main([*argv, "--contact", "rigid", "--e", "0.6", "--response", "force", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["response"]["name"] == "force" and out["response"]["unit"] == "N"
+    assert out["response"]["value"] == pytest.approx(4.5216, abs=1e-4)
+    hc = ["--contact", "hunt-crossley", "--k-hz", "1e9", "--chi", "0.5 s/m"]
+    # refused before the run: one line, exit 2
+    assert main([*argv, *hc, "--response", "acceleration", "--periods", "100000"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "compliant contact" in err[0]

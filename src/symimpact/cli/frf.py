@@ -152,9 +152,10 @@ def run(ns) -> None:
     system = system_from(ns)
     forcing = forcing_of(ns, omega=float(omegas[0]))
     e = contact_of(ns)
+    from ..forced.contact_law import is_rigid
     from ..forced.responses import checked_response
 
-    response = checked_response(ns.response, forcing)
+    response = checked_response(ns.response, forcing, rigid=is_rigid(e))
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps)
     if response != "displacement":
         from ..forced.response_curve import response_curve

@@ -89,7 +89,8 @@ def run(ns) -> None:
     if ns.response is not None:  # refused before any orbit is computed
         from ..forced.responses import checked_response
 
-        checked_response(ns.response, forcing_from(ns))
+        rigid = ns.contact in (None, "rigid")
+        checked_response(ns.response, forcing_from(ns), rigid=rigid)
     if ns.method == "shooting":
         e = contact_of(ns)
         return _shooting(ns, system_from(ns), forcing_from(ns), e)

@@ -60,10 +60,18 @@ def add_parser(sub: Any) -> None:
         help="report the steady state over the periods after the first N0; default: the first "
         "three quarters of --periods",
     )
+    g.add_argument(
+        "--response",
+        default=None,
+        metavar="NAME",
+        help="also the steady relative-displacement, acceleration (between impacts), force "
+        "(into the base) or transmissibility, as frf --response",
+    )
     add_output(p, plot=True)
 
 
-_FORCED_ONLY = {"periods": "--periods", "discard": "--discard", "e": "--e", "chi": "--chi"}
+_FORCED_ONLY = {"periods": "--periods", "discard": "--discard", "e": "--e", "chi": "--chi",
+                "response": "--response"}  # fmt: skip
 #: The laws the forced run takes (the perturbation solution is free vibration only).
 _FORCED_LAWS = ("rigid", "cubic", "hertz", "linear", "hunt-crossley")
 #: Samples of the state per forcing period for --csv and --plot.
@@ -159,6 +167,10 @@ def run_forced(ns) -> None:
         raise ParameterError("chi", "applies to --contact hunt-crossley only")
     system = system_from(ns)
     forcing = forcing_from(ns)
+    if ns.response is not None:  # refused before the run
+        from ..forced.responses import SAMPLES, checked_response, steady_response
+
+        checked_response(ns.response, forcing, rigid=ns.contact == "rigid")
     periods = period_count("periods", "400" if ns.periods is None else ns.periods)
     discard = int(0.75 * periods) if ns.discard is None else period_count("discard", ns.discard)
     res = simulate_forced(
@@ -173,8 +185,9 @@ def run_forced(ns) -> None:
         xdot0="0" if ns.xdot0 is None else ns.xdot0,
         y0=ns.y0,
         ydot0=ns.ydot0,
-        samples_per_period=_SAMPLES if (ns.csv or ns.plot) else 16,
-    )
+        samples_per_period=SAMPLES if ns.response is not None and ns.contact != "rigid"
+        else _SAMPLES if (ns.csv or ns.plot) else 16,
+    )  # fmt: skip
     if ns.csv or ns.plot:
         _forced_outputs(ns, res, discard)
     st = res.steady
@@ -192,8 +205,16 @@ def run_forced(ns) -> None:
         )
         + f"; energy residual {res.energy['relative_residual']:.1e}"
     )
+    out = res.as_dict()
+    if ns.response is not None:
+        from ..forced.responses import response_unit
+        from .frf import response_text
+
+        value = steady_response(ns.response, res, discard)
+        out["response"] = {"name": ns.response, "unit": response_unit(ns.response), "value": value}
+        text += f"\nsteady {ns.response}: {response_text(ns.response, value)}"
     text += "".join(f"\nnote: {n}" for n in res.notes)
-    emit(ns, res.as_dict(), text)
+    emit(ns, out, text)
 
 
 def _forced_outputs(ns, res, discard: int) -> None:

@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from .. import checks
 from ..errors import MethodNotApplicable, ParameterError
 from ..generated import forced_flight as ff
 from ..system import ImpactSystem
@@ -57,10 +58,18 @@ AXIS = {"displacement": "amplitude max |x|", "relative-displacement": "max |x âˆ
         "transmissibility": "transmissibility"}  # fmt: skip
 #: Samples a forcing period where an orbit's response is looked for (and a compliant run's grid).
 SAMPLES = 4096
+COMPLIANT_ACCELERATION = (
+    "acceleration with a compliant contact: its peak inside a contact is not resolved by "
+    f"the run's {SAMPLES} samples a period; use contact rigid (the acceleration between impacts) "
+    "or the displacement, relative displacement or force"
+)
 
 
-def checked_response(name: Any, forcing: Forcing) -> str:
-    """``name`` if it is one of :data:`RESPONSES` that ``forcing`` defines, else one line."""
+def checked_response(name: Any, forcing: Forcing, rigid: bool | None = None) -> str:
+    """``name`` if it is one of :data:`RESPONSES` that ``forcing`` defines (and, told whether the
+    contact is ``rigid``, that its runs resolve), else one line."""
+    if name == "acceleration" and rigid is False:
+        raise MethodNotApplicable("response", COMPLIANT_ACCELERATION)
     if name not in RESPONSES:
         raise ParameterError("response", f"must be one of {', '.join(RESPONSES)}, got {name!r}")
     if name == "transmissibility":
@@ -132,27 +141,54 @@ def orbit_response(
     forcing phase of ``forcing``) over ``periods`` forcing periods, with rigid impacts of
     restitution ``e`` or the compliant contact ``e`` (module text: Eq. F1 between impacts,
     Eq. F2 at them)."""
-    from .simulation import simulate_forced, state_at
+    from .simulation import simulate_forced
 
     checked_response(name, forcing)
     rigid = is_rigid(e)
     if name == "acceleration" and not rigid:
-        raise MethodNotApplicable(
-            "response",
-            f"acceleration with a compliant contact: its peak inside a contact is not resolved by "
-            f"the run's {SAMPLES} samples a period; use contact rigid (the acceleration between "
-            "impacts) or the displacement, relative displacement or force",
-        )
+        raise MethodNotApplicable("response", COMPLIANT_ACCELERATION)
     x, v, z, u = (float(c) for c in state)
     res = simulate_forced(system, forcing, **simulation_arguments(e), periods=periods,
                           x0=x, xdot0=v, y0=x + z, ydot0=u,
                           samples_per_period=16 if rigid else SAMPLES)  # fmt: skip
+    return _largest(name, res, 0, periods)
+
+
+def steady_response(name: str, result: Any, discard: int) -> float:
+    """``name`` (:data:`RESPONSES`) of a run (:func:`symimpact.forced.simulate_forced`) over its
+    periods after the first ``discard`` (module text; a compliant run recorded at
+    :data:`SAMPLES` samples a period)."""
+    from .simulation import ForcedResult
+
+    checks.instance("result", result, ForcedResult, "a ForcedResult (from simulate_forced)")
+    checked_response(name, result.forcing)
+    n = len(result.period_max)
+    discard = checks.whole_number("discard", discard, 0, n - 1)
+    if result.samples is not None:
+        if name == "acceleration":
+            raise MethodNotApplicable("response", COMPLIANT_ACCELERATION)
+        if (result.samples.shape[0] - 1) // max(n, 1) != SAMPLES:
+            raise MethodNotApplicable(
+                "response",
+                f"a compliant run's response needs its state at {SAMPLES} samples a period "
+                "(simulate_forced(..., samples_per_period=SAMPLES))",
+            )
+    return _largest(name, result, discard, n - discard)
+
+
+def _largest(name: str, res: Any, first: int, periods: int) -> float:
+    """The largest abs(``name``) of the run ``res`` over ``periods`` periods from period
+    ``first``: SAMPLES samples a period, the largest refined by Brent's method (rigid impacts,
+    the state rebuilt exactly), or the largest sample (a compliant run's grid)."""
+    from .simulation import state_at
+
+    system, forcing = res.system, res.forcing
     n = periods * SAMPLES
-    t = np.arange(n + 1) * (forcing.period / SAMPLES)
+    t = (first * SAMPLES + np.arange(n + 1)) * (forcing.period / SAMPLES)
     s = state_at(res, t)
     values = np.abs(_values(name, system, forcing, t, s))
     best = int(np.argmax(values))
-    if not rigid:
+    if res.samples is not None:
         return float(values[best])
 
     def minus(time: float) -> float:
@@ -170,4 +206,11 @@ def response_unit(name: str) -> str:
     return RESPONSES[name][0]
 
 
-__all__ = ["RESPONSES", "checked_response", "linear_response", "orbit_response", "response_unit"]
+__all__ = [
+    "RESPONSES",
+    "checked_response",
+    "linear_response",
+    "orbit_response",
+    "response_unit",
+    "steady_response",
+]
