@@ -387,8 +387,8 @@ def continue_orbit(
     ``"gap"`` (d [m]), ``"F0"`` [N], ``"X_b"`` [m] or ``"e"`` — over ``bounds`` = (low, high) in
     SI, first towards increasing values (``direction`` 1) or decreasing (−1); ``step``: the
     arclength step in scaled unknowns (adapted between step/64 and 4·step, and shortened where
-    the branch curves so that the drawn line between points stays within :data:`CHORD`).  Eq. F1 and F2 along
-    the orbits (Step 8, Step 9)."""
+    the branch curves so that the drawn line between points stays within :data:`CHORD`).
+    Eq. F1 and F2 along the orbits (Step 8, Step 9)."""
     system, forcing, e = checked(system, forcing, e)
     checks.choice("parameter", parameter, tuple(PARAMETERS))
     lo, hi = checks.bounds("bounds", bounds)

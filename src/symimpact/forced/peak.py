@@ -189,9 +189,9 @@ def _at(system, forcing, e, omega):
     return system, forcing.at(omega), e
 
 
-def _interior_maximum(b: Branch, p0, p1, p2, system, forcing, e, value):
+def _interior_maximum(b: Branch, p0, p1, p2, system, forcing, e, measured):
     """(amplitude, Ω) of the amplitude's maximum between p0 and p2 (Brent's method on Ω, each
-    orbit by Newton's method from the nearer segment's interpolated state; ``value(orbit, Ω,
+    orbit by Newton's method from the nearer segment's interpolated state; ``measured(orbit, Ω,
     phase, periods)`` its amplitude or response)."""
     a, c = sorted((p0.omega, p2.omega))
 
@@ -200,7 +200,7 @@ def _interior_maximum(b: Branch, p0, p1, p2, system, forcing, e, value):
         o = orbit_between(p, q, w, _at(system, forcing, e, w), b.period_multiple)
         if o is None or not o.stable:
             return 0.0  # (below any orbit's)
-        return value(o, w, p.phase, b.period_multiple)
+        return measured(o, w, p.phase, b.period_multiple)
 
     w, value = _maximum(amp, a, c)
     return (value, w) if value > 0 else None
