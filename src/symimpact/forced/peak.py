@@ -28,7 +28,6 @@ from typing import Any
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from ..generated import forced_flight as ff
 from ..system import ImpactSystem
 from .continuation import Branch, orbit_between
 from .forcing import Forcing
@@ -66,11 +65,9 @@ class Peak:
 
 def linear_amplitude(system: ImpactSystem, forcing: Forcing, w: Any) -> np.ndarray:
     """The primary without the damper: amplitude of Step 8's steady solution (Eq. F1) [m]."""
-    w = np.asarray(w, dtype=float)
-    X_b = forcing.base_amplitude(w)  # constant, or V_b/Ω, A_b/Ω² over the band
-    A = ff.steady_cosine(system.M, system.K, system.C, forcing.F0, X_b, w)
-    B = ff.steady_sine(system.M, system.K, system.C, forcing.F0, X_b, w)
-    return np.hypot(A, B)
+    from .responses import steady_amplitude
+
+    return np.abs(steady_amplitude(system, forcing, w))
 
 
 def _maximum(f, lo: float, hi: float) -> tuple[float, float]:

@@ -84,6 +84,16 @@ def checked_response(name: Any, forcing: Forcing, rigid: bool | None = None) -> 
     return name
 
 
+def steady_amplitude(system: ImpactSystem, forcing: Forcing, omega: Any) -> np.ndarray:
+    """The primary alone's complex amplitude X̂ = A − iB at the frequencies ``omega`` [rad/s]:
+    x = Re(X̂e^{iθ}) = A cos θ + B sin θ, Step 8's steady solution (Eq. F1) [m]."""
+    w = np.asarray(omega, dtype=float)
+    X_b = forcing.base_amplitude(w)  # constant, or V_b/Ω, A_b/Ω² over the band
+    A = ff.steady_cosine(system.M, system.K, system.C, forcing.F0, X_b, w)
+    B = ff.steady_sine(system.M, system.K, system.C, forcing.F0, X_b, w)
+    return A - 1j * B
+
+
 def linear_response(name: str, system: ImpactSystem, forcing: Forcing, omega: Any) -> np.ndarray:
     """``name`` (:data:`RESPONSES`) of the primary alone in its steady state at the frequencies
     ``omega`` [rad/s] (Step 8's steady solution, Eq. F1: x = A cos θ + B sin θ, so x = Re(X̂e^{iθ})
@@ -91,9 +101,7 @@ def linear_response(name: str, system: ImpactSystem, forcing: Forcing, omega: An
     checked_response(name, forcing)
     w = np.asarray(omega, dtype=float)
     X_b = forcing.base_amplitude(w)
-    A = ff.steady_cosine(system.M, system.K, system.C, forcing.F0, X_b, w)
-    B = ff.steady_sine(system.M, system.K, system.C, forcing.F0, X_b, w)
-    X = A - 1j * B
+    X = steady_amplitude(system, forcing, w)
     relative = np.abs(X - X_b)
     force = np.abs(system.K + 1j * w * system.C) * relative
     if name == "displacement":
