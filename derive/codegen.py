@@ -114,14 +114,36 @@ def kernel_body(
 
     ``printer_class(settings)`` prints them (default settings: the Python printers' fully
     qualified module names); ``prefix`` names the subexpressions (``_x0``, ``_x1``, ...)."""
+    replacements, reduced, ops = _once(_reduced, kernel, prefix)
+    printer = printer_class({"fully_qualified_modules": True} if settings is None else settings)
+    lines = [(str(sym), printer.doprint(val)) for sym, val in replacements]
+    return lines, printer.doprint(reduced), ops
+
+
+#: Results already computed, by function, argument identity and further arguments; each entry
+#: keeps its kernel alive, so an identity is never reused for another.  Every target prints the
+#: same reduced expressions and docstrings: computing them once per process is most of the
+#: difference between a derivation run of 3 and of 2 minutes (issue 38, CI's time).
+_DONE: dict[tuple, tuple[object, object]] = {}
+
+
+def _once(func, item, *rest):
+    key = (func.__name__, id(item), *rest)
+    got = _DONE.get(key)
+    if got is None or got[0] is not item:
+        got = _DONE[key] = (item, func(item, *rest))
+    return got[1]
+
+
+def _reduced(kernel: Kernel, prefix: str) -> tuple[list, sp.Expr, int]:
+    """The kernel's expression with special-function constants evaluated, CSE-reduced (the
+    subexpressions named ``prefix0``, ``prefix1``, ...), and its operation count."""
     expr = numeric_constants(sp.sympify(kernel.expr))
     replacements, (reduced,) = sp.cse(
         [expr], symbols=sp.numbered_symbols(prefix), order="canonical"
     )
-    printer = printer_class({"fully_qualified_modules": True} if settings is None else settings)
-    lines = [(str(sym), printer.doprint(val)) for sym, val in replacements]
     ops = sum(int(sp.count_ops(val)) for _, val in replacements) + int(sp.count_ops(reduced))
-    return lines, printer.doprint(reduced), ops
+    return replacements, reduced, ops
 
 
 #: A derivative's formula written out longer than this (LaTeX characters) is no help to a reader
@@ -131,7 +153,12 @@ LONGEST_DERIVATIVE_LATEX = 4000
 
 def latex_of(kernel: Kernel) -> str:
     """The kernel's formula in LaTeX, as ``lhs = expr``; a derivative kernel whose formula would
-    be longer than :data:`LONGEST_DERIVATIVE_LATEX` as ``lhs = ∂/∂arg`` of its value kernel."""
+    be longer than :data:`LONGEST_DERIVATIVE_LATEX` as ``lhs = ∂/∂arg`` of its value kernel
+    (written once per kernel: every target's docstring carries it)."""
+    return _once(_latex, kernel)
+
+
+def _latex(kernel: Kernel) -> str:
     written = f"{kernel.lhs} = {sp.latex(kernel.expr)}"
     if kernel.derivative_of is None or len(written) <= LONGEST_DERIVATIVE_LATEX:
         return written
