@@ -38,12 +38,26 @@ class _Bar:
         pass
 
 
+#: What each of the fixture's figures' legends cover (figure name → labels), found as it was saved.
+_COVERED: dict[str, list[str]] = {}
+
+
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
+    from symimpact.report import figures
+
     out = tmp_path_factory.mktemp("rep") / "report"
     _BARS.clear()
+    _COVERED.clear()
+    savefig = figures.atomic_savefig
+
+    def recorded(fig, path, **kw):
+        _COVERED[Path(path).stem] = figures.covered_by_legend(fig)
+        return savefig(fig, path, **kw)
+
     with pytest.MonkeyPatch.context() as mp_:
         mp_.setattr("symimpact.report.tqdm", _Bar)
+        mp_.setattr(figures, "atomic_savefig", recorded)
         path, sections = reproduce(out, quick=True, progress=True, command="pytest")
     return path, {s.key: s for s in sections}
 
@@ -87,6 +101,34 @@ def test_every_figure_is_a_valid_nonempty_png(report):
         img = matplotlib.image.imread(png)
         assert img.shape[:2] == (h, w)
         assert float(np.std(img[..., :3])) > 0.01  # not a blank canvas
+
+
+def test_no_legend_covers_data(report):
+    """Every figure's legends sit on blank space or outside the axes (issue 35, item 8: the
+    legends of Fig. 5 and Fig. 7 covered curves and markers)."""
+    assert len(_COVERED) >= 12, sorted(_COVERED)
+    assert {name: labels for name, labels in _COVERED.items() if labels} == {}
+
+
+def test_covered_by_legend_sees_a_line_under_the_legend():
+    """The check itself, on figures whose answer is known: a level line through a corner legend
+    and a marker under it are covered; the same legend beside the axes covers nothing."""
+    from symimpact.plots import legend_beside
+    from symimpact.report.figures import covered_by_legend, pyplot
+
+    plt = pyplot()
+    x = np.linspace(0.0, 1.0, 50)
+    fig, ax = plt.subplots()
+    ax.plot(x, x**8, label="low curve")
+    ax.axhline(0.97, label="level")
+    ax.plot([0.03], [0.9], "ko", label="point")
+    ax.legend(loc="upper left")
+    assert covered_by_legend(fig) == ["level", "point"]
+    ax.get_legend().remove()
+    legend_beside(ax)
+    fig.tight_layout()
+    assert covered_by_legend(fig) == []
+    plt.close(fig)
 
 
 def test_every_table_has_its_csv_with_full_precision(report):

@@ -100,6 +100,15 @@ def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.Pa
     plt.close(fig)
 
 
+def legend_beside(ax: Any, *handles_labels: Any, **options: Any) -> Any:
+    """The axes' legend outside it, to the right of its top corner, so that it covers no curve
+    however the data fall (``tight_layout`` makes room for it); ``handles_labels`` and
+    ``options`` as for ``Axes.legend``."""
+    options = {"fontsize": 8, "loc": "upper left", "bbox_to_anchor": (1.01, 1.0),
+               "borderaxespad": 0.0, **options}  # fmt: skip
+    return ax.legend(*handles_labels, **options)
+
+
 def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     """Draw a frequency-response curve on ``ax`` (see :func:`plot_frf`), with its legend."""
     import numpy as np
@@ -153,7 +162,7 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     ax.set_xlabel(f"Ω [{display_unit('omega')}]")
     ax.set_ylabel(AXIS[name] + ("" if quantity is None else f" [{display_unit(quantity)}]"))
     ax.set_xlim(W(frf.omegas[0]), W(frf.omegas[-1]))
-    ax.legend(fontsize=8, ncol=3)
+    legend_beside(ax)
 
 
 def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:

@@ -18,6 +18,7 @@ from ..errors import SymimpactError
 from ..generated import free_flight
 from ..maps import gap_class
 from ..maps.sweep import fig5_limits, gap_range, sweep
+from ..plots import legend_beside
 from ..simulation import SimulationResult, simulate
 from ..system import ImpactSystem
 from ..units import si
@@ -324,7 +325,7 @@ def _fig5(
         pv = float(paper.GAP_RANGE[key])
         ax1.axhline(pv / 2, color="grey", lw=0.6, ls=ls, label=f"{key}/2 (paper)")
     ax1.set_ylabel("relative displacement [mm]")
-    ax1.legend(fontsize=7, ncol=3)
+    legend_beside(ax1, fontsize=7)
     ax2.plot(tp, h["xdot"], "C0", lw=1, label="ẋ main mass")
     ax2.plot(tp, h["ydot"], "C1", lw=1, label="ẏ impact mass")
     eff = [i for i in r.impacts if i.effective]
@@ -333,7 +334,7 @@ def _fig5(
     )
     ax2.set_xlabel("t' = t·√(K/M)")
     ax2.set_ylabel("velocity [m/s]")
-    ax2.legend(fontsize=7)
+    legend_beside(ax2, fontsize=7)
     save(fig, folder, "fig5_relative_motion")
     s.blocks += [
         Figure(
@@ -493,7 +494,7 @@ def _fig7(s: Section, folder: Path, chosen: Reading, quick: bool, workers: int |
     alone = chosen.alone()
     di_alone = alone.damping_inclination * 1e6
     plt = pyplot()
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5.0))
     for ax, other, p_other, label in (
         (ax1, neff, p_ne, "N_eff"),
         (ax2, eff, p_eff, "effectiveness"),
@@ -510,7 +511,9 @@ def _fig7(s: Section, folder: Path, chosen: Reading, quick: bool, workers: int |
         tw.set_ylabel(label)
         h1, l1 = ax.get_legend_handles_labels()
         h2, l2 = tw.get_legend_handles_labels()
-        ax.legend(h1 + h2, l1 + l2, fontsize=7)
+        # below the panel: its right side holds the twin axis's label
+        ax.legend(h1 + h2, l1 + l2, fontsize=7, ncol=2, loc="upper center",
+                  bbox_to_anchor=(0.5, -0.16), borderaxespad=0.0)  # fmt: skip
     ax1.set_title("(a) DI and N_eff", fontsize=10)
     ax2.set_title("(b) DI and effectiveness", fontsize=10)
     save(fig, folder, "fig7_gap_sweep")
