@@ -59,6 +59,4 @@ def covered_by_legend(fig: Any) -> list[str]:
 
 def _inside(xy: Any, box: Any) -> Any:
     """Which of the display points ``xy`` (n × 2) lie in the box."""
-    return (
-        (xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1) & (xy[:, 1] >= box.y0) & (xy[:, 1] <= box.y1)
-    )
+    return (xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1) & (xy[:, 1] >= box.y0) & (xy[:, 1] <= box.y1)
