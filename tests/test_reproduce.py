@@ -366,11 +366,27 @@ def test_lindstedt_truth_matches_the_elliptic_integral_and_orders_improve():
     assert err["order1"][0] == pytest.approx(21 / 256 * 1e-4, rel=2e-2)
 
 
+def test_accuracy_by_cancellation_is_a_sign_change_not_a_regime():
+    """A grid whose error crosses zero along a line: its small-error stripe is accurate by
+    cancellation; an error that shrinks towards a corner with one sign is a regime; the two side
+    by side are told apart (issue 35, item 8: the accuracy map counted the stripes as accuracy)."""
+    x, y = np.meshgrid(np.linspace(0.0, 1.0, 41), np.linspace(0.0, 1.0, 41))
+    crossing = 40.0 * (x - 0.5125)  # [%]: zero between grid lines, at x = 0.5125
+    chance = beyond_stage.accurate_by_cancellation(crossing)
+    assert np.array_equal(chance, np.abs(crossing) <= 10.0)
+    regime = 30.0 * (x + y)  # [%]: one sign, small towards the corner (0, 0)
+    assert not beyond_stage.accurate_by_cancellation(regime).any()
+    both = np.where(y < 0.5, regime, crossing)
+    chance = beyond_stage.accurate_by_cancellation(both)
+    assert not chance[y < 0.3].any()  # the regime's corner, away from the crossing
+    assert chance[(y > 0.6) & (np.abs(crossing) <= 10.0)].all()
+
+
 def test_accuracy_map_hertz_is_exact_without_spring_and_linear_matches_closed_form():
     q = np.array([0.05, 0.5])
     v0 = np.array([0.02, 0.3])
     err = beyond_stage.accuracy_errors(q, v0, 1e-9)
-    assert np.max(err["hertz"]) < 1e-6  # Eq. 34 is exact for two free bodies (percent)
+    assert np.max(np.abs(err["hertz"])) < 1e-6  # Eq. 34 is exact for two free bodies (percent)
     for i, m in enumerate(q):
         for j, v in enumerate(v0):
             assert err["truth"][i, j] == pytest.approx(_hertz_mp(m, 1.0, 1000.0, v), rel=1e-8)
