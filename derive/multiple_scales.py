@@ -328,7 +328,11 @@ def derive() -> Board:
     ab = Arg(b, "N/m", "Linear coefficient b", 1.0, 1e5, log=True)
     ac = Arg(c1, "N s/m", "Contact damping c₁", 0.0, 5.0)
     az = Arg(Zd0, "m/s", "Relative approach speed Ż₀ at contact onset", 1e-3, 1.0, log=True)
-    aR = Arg(R, "1", "Amplitude ratio B/A (Eq. 13), impact mode: negative", -20.0, -0.1)
+    # The impact mode is the root of Eq. 12 with the larger |B/A|: out of phase (B/A < 0; −M/m
+    # for two free bodies) when the contact is stiffer than the main spring, in phase (B/A > 1,
+    # since its ω² < K/M) when it is softer. The check points sample the out-of-phase side.
+    aR = Arg(R, "1", "Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in "
+             "phase", -20.0, -0.1)  # fmt: skip
     at = Arg(t, "s", "Time since contact onset", 0.0, 0.5)
     aO = Arg(Om, "rad/s", "Contact angular frequency Ω (= π/T_CD)", 1.0, 1e3, log=True)
     # Back to physical time and coefficients: η = μt, μκ₁ = λc₁/m, μκ₂ = λa/m.

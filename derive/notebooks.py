@@ -28,7 +28,6 @@ from .exercises import EXERCISES
 #: Board methods and local aliases of ``board.write`` whose call ends a cell.
 _BOARD_CALLS = {"write", "check", "erratum", "kernel", "fixed_point", "constant"}
 _WRITE_ALIASES = {"w", "wr"}
-ROOT = Path(__file__).resolve().parent.parent
 
 
 @dataclass
@@ -154,7 +153,7 @@ import pathlib
 import sys
 
 _here = pathlib.Path.cwd().resolve()
-_places = [os.environ.get("SYMIMPACT_CHECKOUT"), _here, *_here.parents, {written_from!r}]
+_places = [os.environ.get("SYMIMPACT_CHECKOUT"), _here, *_here.parents]
 root = next((pathlib.Path(p) for p in _places
              if p and (pathlib.Path(p) / "derive" / "board.py").is_file()), None)
 if root is None:
@@ -198,7 +197,7 @@ def notebook(step: str):
         f"*This notebook runs the statements of `derive/{step}.py` one board line at a time. "
         "Run the cells in order; after each one, `show(board)` displays what it wrote on the "
         "board. Exercises at the end change one assumption at a time.*"))  # fmt: skip
-    nb.cells.append(nbformat.v4.new_code_cell(_BOOT.format(step=step, written_from=str(ROOT))))
+    nb.cells.append(nbformat.v4.new_code_cell(_BOOT.format(step=step)))
     for c in cells:
         text = _describe(c)
         if text:
@@ -233,5 +232,5 @@ def write_notebooks(folder: str | Path, steps: tuple[str, ...] = STEPS) -> list[
     from .walkthrough import notebook as walkthrough_notebook
 
     path = out / NOTEBOOK
-    nbformat.write(walkthrough_notebook(ROOT), path)
+    nbformat.write(walkthrough_notebook(), path)
     return [*paths, path]

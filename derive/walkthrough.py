@@ -156,7 +156,7 @@ def executed(root: Path):
     in ``root`` (the checkout) — what the docs page shows and offers for download."""
     import nbclient
 
-    nb = notebook(root)
+    nb = notebook()
     client = nbclient.NotebookClient(nb, timeout=900, kernel_name="python3",
                                      resources={"metadata": {"path": str(root)}})  # fmt: skip
     client.execute()
@@ -187,8 +187,9 @@ def page(nb) -> str:
     return "\n".join(out)
 
 
-def notebook(root: Path):
-    """The same walk-through as a notebook (nbformat v4)."""
+def notebook():
+    """The same walk-through as a notebook (nbformat v4); its first cell finds the checkout from
+    ``SYMIMPACT_CHECKOUT`` or the folder it runs in and above (no path of this machine)."""
     import nbformat
 
     nb = nbformat.v4.new_notebook()
@@ -198,11 +199,11 @@ def notebook(root: Path):
         "language": "python",
     }
     nb.cells.append(nbformat.v4.new_markdown_cell(f"# {TITLE}\n\n{INTRO.format(name=NOTEBOOK)}"))
-    boot = f"""import os
+    boot = """import os
 from pathlib import Path
 
 _here = Path.cwd().resolve()
-_places = [os.environ.get("SYMIMPACT_CHECKOUT"), _here, *_here.parents, {str(root)!r}]
+_places = [os.environ.get("SYMIMPACT_CHECKOUT"), _here, *_here.parents]
 root = next((Path(p) for p in _places if p and (Path(p) / "derive" / "board.py").is_file()), None)
 if root is None:
     raise RuntimeError("derive/ not found: open the notebook inside the symimpact checkout "

@@ -175,7 +175,7 @@ def contact_duration(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
     tol : float
         Relative tolerance of the last step (default 1e-14).
     max_iter : int
@@ -385,7 +385,7 @@ def contact_duration_newton(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
     tol : float
         Relative tolerance of the last step (default 1e-14).
     max_iter : int
@@ -546,7 +546,7 @@ def contact_duration_printed(m, a, b, c1, zdot0, ba, tol=1e-14, max_iter=100):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
     tol : float
         Relative tolerance of the last step (default 1e-14).
     max_iter : int

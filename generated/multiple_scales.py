@@ -66,7 +66,7 @@ def contact_duration_map(T, m, a, b, c1, zdot0, ba):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------
@@ -108,7 +108,7 @@ def contact_duration_start(m, b, ba):
     b : array_like
         Linear coefficient b [N/m].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------
@@ -152,7 +152,7 @@ def relative_displacement(t, Omega, m, a, c1, zdot0, ba):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------
@@ -210,7 +210,7 @@ def relative_velocity(t, Omega, m, a, c1, zdot0, ba):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------
@@ -280,7 +280,7 @@ def main_mass_displacement_contact(t, Omega, m, a, c1, zdot0, ba):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------
@@ -340,7 +340,7 @@ def contact_duration_map_printed(T, m, a, b, c1, zdot0, ba):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------
@@ -382,7 +382,7 @@ def contact_duration_start_printed(m, b, ba):
     b : array_like
         Linear coefficient b [N/m].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------
@@ -426,7 +426,7 @@ def relative_displacement_printed(t, Omega, m, a, c1, zdot0, ba):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------
@@ -484,7 +484,7 @@ def relative_velocity_printed(t, Omega, m, a, c1, zdot0, ba):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------
@@ -554,7 +554,7 @@ def main_mass_displacement_contact_printed(t, Omega, m, a, c1, zdot0, ba):
     zdot0 : array_like
         Relative approach speed Ż₀ at contact onset [m/s].
     ba : array_like
-        Amplitude ratio B/A (Eq. 13), impact mode: negative [1].
+        Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1].
 
     Returns
     -------

@@ -218,3 +218,27 @@ def test_where_newton_and_the_iteration_part(boards):
     text = re.sub(r"\s+", " ", doc.read_text())
     missing = [f for f in figures if f not in text]
     assert not missing, missing
+
+
+def test_the_kernel_page_example_runs_on_the_impact_mode():
+    """docs/kernels.md's code block, run as printed: its B/A is the impact mode's, the mode of
+    the linear two-mass system (main spring K, contact b) with the larger |B/A|, from NumPy's
+    eigenvectors; and its loop ends on a fixed point of Eq. 31 (issue 35, item 8: the page called
+    the out-of-phase root the impact mode where the in-phase root is)."""
+    import re
+    from pathlib import Path
+
+    import scipy.linalg
+
+    page = (Path(__file__).resolve().parents[1] / "docs" / "kernels.md").read_text()
+    (block,) = re.findall(r"```python\n(.*?)```", page, flags=re.S)
+    ns: dict = {}
+    exec(block, ns)
+    M, K, m, b = ns["M"], ns["K"], ns["m"], ns["b"]
+    _, vectors = scipy.linalg.eigh([[K + b, -b], [-b, b]], np.diag([M, m]))
+    ratios = vectors[1] / vectors[0]  # B/A of each mode
+    assert ns["ratio"] == pytest.approx(max(ratios, key=abs), rel=1e-12)
+    assert ns["ratio"] > 1  # the in-phase root: the contact is softer than the main spring
+    T = ns["T"]
+    step = ns["ms"].contact_duration_map(T, m, ns["a"], b, ns["c1"], ns["v0"], ns["ratio"])
+    assert step == pytest.approx(T, rel=1e-12)

@@ -164,3 +164,14 @@ def test_reading_a_quantity_does_not_import_dask():
     )
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert run.returncode == 0, run.stdout + run.stderr
+
+
+def test_octave_help_states_each_formula_once():
+    """An Octave kernel's help shows its formula as ``lhs = expr``, its left-hand side once
+    (issue 35, item 8: every help line read ``T = T = …``)."""
+    import re
+
+    repeated = re.compile(r"^% (\S[^=]*?) = \1 = ", flags=re.M)
+    files = sorted((ROOT / "generated" / "octave").glob("*.m"))
+    assert len(files) > 100
+    assert [f.name for f in files if repeated.search(f.read_text(encoding="utf-8"))] == []

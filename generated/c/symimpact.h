@@ -258,7 +258,7 @@ void symimpact_lindstedt_frequency_eq20_batch(size_t n, const double *restrict K
  *   b: Linear coefficient b [N/m]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_contact_duration_map(double T, double m, double a, double b, double c1, double zdot0, double ba);
 void symimpact_multiple_scales_contact_duration_map_batch(size_t n, const double *restrict T, const double *restrict m, const double *restrict a, const double *restrict b, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double *restrict out);
@@ -266,7 +266,7 @@ void symimpact_multiple_scales_contact_duration_map_batch(size_t n, const double
 /* Starting contact duration T⁽⁰⁾ [s], paper Eq. 31.
  *   m: Impact mass m [kg]
  *   b: Linear coefficient b [N/m]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_contact_duration_start(double m, double b, double ba);
 void symimpact_multiple_scales_contact_duration_start_batch(size_t n, const double *restrict m, const double *restrict b, const double *restrict ba, double *restrict out);
@@ -278,7 +278,7 @@ void symimpact_multiple_scales_contact_duration_start_batch(size_t n, const doub
  *   a: Cubic coefficient a [N/m^3]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_relative_displacement(double t, double Omega, double m, double a, double c1, double zdot0, double ba);
 void symimpact_multiple_scales_relative_displacement_batch(size_t n, const double *restrict t, const double *restrict Omega, const double *restrict m, const double *restrict a, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double *restrict out);
@@ -290,7 +290,7 @@ void symimpact_multiple_scales_relative_displacement_batch(size_t n, const doubl
  *   a: Cubic coefficient a [N/m^3]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_relative_velocity(double t, double Omega, double m, double a, double c1, double zdot0, double ba);
 void symimpact_multiple_scales_relative_velocity_batch(size_t n, const double *restrict t, const double *restrict Omega, const double *restrict m, const double *restrict a, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double *restrict out);
@@ -302,7 +302,7 @@ void symimpact_multiple_scales_relative_velocity_batch(size_t n, const double *r
  *   a: Cubic coefficient a [N/m^3]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_main_mass_displacement_contact(double t, double Omega, double m, double a, double c1, double zdot0, double ba);
 void symimpact_multiple_scales_main_mass_displacement_contact_batch(size_t n, const double *restrict t, const double *restrict Omega, const double *restrict m, const double *restrict a, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double *restrict out);
@@ -314,7 +314,7 @@ void symimpact_multiple_scales_main_mass_displacement_contact_batch(size_t n, co
  *   b: Linear coefficient b [N/m]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_contact_duration_map_printed(double T, double m, double a, double b, double c1, double zdot0, double ba);
 void symimpact_multiple_scales_contact_duration_map_printed_batch(size_t n, const double *restrict T, const double *restrict m, const double *restrict a, const double *restrict b, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double *restrict out);
@@ -322,7 +322,7 @@ void symimpact_multiple_scales_contact_duration_map_printed_batch(size_t n, cons
 /* Starting contact duration T⁽⁰⁾ [s], paper Eq. 31 as printed (see errata.md).
  *   m: Impact mass m [kg]
  *   b: Linear coefficient b [N/m]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_contact_duration_start_printed(double m, double b, double ba);
 void symimpact_multiple_scales_contact_duration_start_printed_batch(size_t n, const double *restrict m, const double *restrict b, const double *restrict ba, double *restrict out);
@@ -334,7 +334,7 @@ void symimpact_multiple_scales_contact_duration_start_printed_batch(size_t n, co
  *   a: Cubic coefficient a [N/m^3]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_relative_displacement_printed(double t, double Omega, double m, double a, double c1, double zdot0, double ba);
 void symimpact_multiple_scales_relative_displacement_printed_batch(size_t n, const double *restrict t, const double *restrict Omega, const double *restrict m, const double *restrict a, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double *restrict out);
@@ -346,7 +346,7 @@ void symimpact_multiple_scales_relative_displacement_printed_batch(size_t n, con
  *   a: Cubic coefficient a [N/m^3]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_relative_velocity_printed(double t, double Omega, double m, double a, double c1, double zdot0, double ba);
 void symimpact_multiple_scales_relative_velocity_printed_batch(size_t n, const double *restrict t, const double *restrict Omega, const double *restrict m, const double *restrict a, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double *restrict out);
@@ -358,7 +358,7 @@ void symimpact_multiple_scales_relative_velocity_printed_batch(size_t n, const d
  *   a: Cubic coefficient a [N/m^3]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_multiple_scales_main_mass_displacement_contact_printed(double t, double Omega, double m, double a, double c1, double zdot0, double ba);
 void symimpact_multiple_scales_main_mass_displacement_contact_printed_batch(size_t n, const double *restrict t, const double *restrict Omega, const double *restrict m, const double *restrict a, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double *restrict out);
@@ -1678,7 +1678,7 @@ void symimpact_hertz_contact_thornton_restitution_batch(size_t n, const double *
  *   b: Linear coefficient b [N/m]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_fixed_points_contact_duration(double m, double a, double b, double c1, double zdot0, double ba, double tol, long max_iter, long *steps_taken);
 void symimpact_fixed_points_contact_duration_batch(size_t n, const double *restrict m, const double *restrict a, const double *restrict b, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double tol, long max_iter, double *restrict out, long *restrict steps_taken);
@@ -1694,7 +1694,7 @@ void symimpact_fixed_points_contact_duration_batch(size_t n, const double *restr
  *   b: Linear coefficient b [N/m]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_fixed_points_contact_duration_newton(double m, double a, double b, double c1, double zdot0, double ba, double tol, long max_iter, long *steps_taken);
 void symimpact_fixed_points_contact_duration_newton_batch(size_t n, const double *restrict m, const double *restrict a, const double *restrict b, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double tol, long max_iter, double *restrict out, long *restrict steps_taken);
@@ -1710,7 +1710,7 @@ void symimpact_fixed_points_contact_duration_newton_batch(size_t n, const double
  *   b: Linear coefficient b [N/m]
  *   c1: Contact damping c₁ [N s/m]
  *   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
- *   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+ *   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
  */
 double symimpact_fixed_points_contact_duration_printed(double m, double a, double b, double c1, double zdot0, double ba, double tol, long max_iter, long *steps_taken);
 void symimpact_fixed_points_contact_duration_printed_batch(size_t n, const double *restrict m, const double *restrict a, const double *restrict b, const double *restrict c1, const double *restrict zdot0, const double *restrict ba, double tol, long max_iter, double *restrict out, long *restrict steps_taken);

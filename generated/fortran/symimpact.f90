@@ -602,7 +602,7 @@ contains
     !   b: Linear coefficient b [N/m]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_contact_duration_map(T, m, a, b, c1, zdot0, ba) result(f_result)
         real(dp), intent(in) :: T, m, a, b, c1, zdot0, ba
         real(dp) :: f_result
@@ -616,7 +616,7 @@ contains
     ! Starting contact duration T⁽⁰⁾ [s], paper Eq. 31.
     !   m: Impact mass m [kg]
     !   b: Linear coefficient b [N/m]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_contact_duration_start(m, b, ba) result(f_result)
         real(dp), intent(in) :: m, b, ba
         real(dp) :: f_result
@@ -631,7 +631,7 @@ contains
     !   a: Cubic coefficient a [N/m^3]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_relative_displacement(t, Omega, m, a, c1, zdot0, ba) result(f_result)
         real(dp), intent(in) :: t, Omega, m, a, c1, zdot0, ba
         real(dp) :: f_result
@@ -652,7 +652,7 @@ contains
     !   a: Cubic coefficient a [N/m^3]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_relative_velocity(t, Omega, m, a, c1, zdot0, ba) result(f_result)
         real(dp), intent(in) :: t, Omega, m, a, c1, zdot0, ba
         real(dp) :: f_result
@@ -681,7 +681,7 @@ contains
     !   a: Cubic coefficient a [N/m^3]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_main_mass_displacement_contact(t, Omega, m, a, c1, zdot0, ba) result(f_result)
         real(dp), intent(in) :: t, Omega, m, a, c1, zdot0, ba
         real(dp) :: f_result
@@ -704,7 +704,7 @@ contains
     !   b: Linear coefficient b [N/m]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_contact_duration_map_printed(T, m, a, b, c1, zdot0, ba) result(f_result)
         real(dp), intent(in) :: T, m, a, b, c1, zdot0, ba
         real(dp) :: f_result
@@ -718,7 +718,7 @@ contains
     ! Starting contact duration T⁽⁰⁾ [s], paper Eq. 31 as printed (see errata.md).
     !   m: Impact mass m [kg]
     !   b: Linear coefficient b [N/m]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_contact_duration_start_printed(m, b, ba) result(f_result)
         real(dp), intent(in) :: m, b, ba
         real(dp) :: f_result
@@ -733,7 +733,7 @@ contains
     !   a: Cubic coefficient a [N/m^3]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_relative_displacement_printed(t, Omega, m, a, c1, zdot0, ba) result(f_result)
         real(dp), intent(in) :: t, Omega, m, a, c1, zdot0, ba
         real(dp) :: f_result
@@ -754,7 +754,7 @@ contains
     !   a: Cubic coefficient a [N/m^3]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_relative_velocity_printed(t, Omega, m, a, c1, zdot0, ba) result(f_result)
         real(dp), intent(in) :: t, Omega, m, a, c1, zdot0, ba
         real(dp) :: f_result
@@ -783,7 +783,7 @@ contains
     !   a: Cubic coefficient a [N/m^3]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental function multiple_scales_main_mass_displacement_contact_printed(t, Omega, m, a, c1, zdot0, ba) result(f_result)
         real(dp), intent(in) :: t, Omega, m, a, c1, zdot0, ba
         real(dp) :: f_result
@@ -5482,7 +5482,7 @@ contains
     !   b: Linear coefficient b [N/m]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental subroutine fixed_points_contact_duration(m, a, b, c1, zdot0, ba, tol, max_iter, value, steps)
         real(dp), intent(in) :: m, a, b, c1, zdot0, ba, tol
         integer, intent(in) :: max_iter
@@ -5518,7 +5518,7 @@ contains
     !   b: Linear coefficient b [N/m]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental subroutine fixed_points_contact_duration_newton(m, a, b, c1, zdot0, ba, tol, max_iter, value, steps)
         real(dp), intent(in) :: m, a, b, c1, zdot0, ba, tol
         integer, intent(in) :: max_iter
@@ -5564,7 +5564,7 @@ contains
     !   b: Linear coefficient b [N/m]
     !   c1: Contact damping c₁ [N s/m]
     !   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-    !   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    !   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     pure elemental subroutine fixed_points_contact_duration_printed(m, a, b, c1, zdot0, ba, tol, max_iter, value, steps)
         real(dp), intent(in) :: m, a, b, c1, zdot0, ba, tol
         integer, intent(in) :: max_iter

@@ -41,7 +41,7 @@ def contact_duration_map(T, m, a, b, c1, zdot0, ba):
     ``b``: Linear coefficient b [N/m]
     ``c1``: Contact damping c₁ [N s/m]
     ``zdot0``: Relative approach speed Ż₀ at contact onset [m/s]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     _x0 = (ba - 1)/(ba*m)
     return jax.numpy.pi/jax.numpy.sqrt((3/4)*T**2*_x0*a*zdot0**2*jax.numpy.exp(-T*_x0*c1)/jax.numpy.pi**2 + _x0*b)
@@ -53,7 +53,7 @@ def contact_duration_start(m, b, ba):
 
     ``m``: Impact mass m [kg]
     ``b``: Linear coefficient b [N/m]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     return jax.numpy.pi*jax.numpy.sqrt(m)/(jax.numpy.sqrt(b)*jax.numpy.sqrt((ba - 1)/ba))
 
@@ -68,7 +68,7 @@ def relative_displacement(t, Omega, m, a, c1, zdot0, ba):
     ``a``: Cubic coefficient a [N/m^3]
     ``c1``: Contact damping c₁ [N s/m]
     ``zdot0``: Relative approach speed Ż₀ at contact onset [m/s]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     _x0 = Omega*t
     _x1 = jax.numpy.sin(_x0)
@@ -88,7 +88,7 @@ def relative_velocity(t, Omega, m, a, c1, zdot0, ba):
     ``a``: Cubic coefficient a [N/m^3]
     ``c1``: Contact damping c₁ [N s/m]
     ``zdot0``: Relative approach speed Ż₀ at contact onset [m/s]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     _x0 = Omega*t
     _x1 = jax.numpy.cos(_x0)
@@ -114,7 +114,7 @@ def main_mass_displacement_contact(t, Omega, m, a, c1, zdot0, ba):
     ``a``: Cubic coefficient a [N/m^3]
     ``c1``: Contact damping c₁ [N s/m]
     ``zdot0``: Relative approach speed Ż₀ at contact onset [m/s]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     _x0 = ba - 1
     _x1 = Omega*t
@@ -135,7 +135,7 @@ def contact_duration_map_printed(T, m, a, b, c1, zdot0, ba):
     ``b``: Linear coefficient b [N/m]
     ``c1``: Contact damping c₁ [N s/m]
     ``zdot0``: Relative approach speed Ż₀ at contact onset [m/s]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     _x0 = ba/(m*(ba - 1))
     return jax.numpy.pi/jax.numpy.sqrt((3/4)*T**2*_x0*a*zdot0**2*jax.numpy.exp(-T*_x0*c1)/jax.numpy.pi**2 + _x0*b)
@@ -147,7 +147,7 @@ def contact_duration_start_printed(m, b, ba):
 
     ``m``: Impact mass m [kg]
     ``b``: Linear coefficient b [N/m]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     return 2*jax.numpy.pi*jax.numpy.sqrt(m)/(jax.numpy.sqrt(b)*jax.numpy.sqrt(ba/(ba - 1)))
 
@@ -162,7 +162,7 @@ def relative_displacement_printed(t, Omega, m, a, c1, zdot0, ba):
     ``a``: Cubic coefficient a [N/m^3]
     ``c1``: Contact damping c₁ [N s/m]
     ``zdot0``: Relative approach speed Ż₀ at contact onset [m/s]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     _x0 = Omega*t
     _x1 = jax.numpy.sin(_x0)
@@ -182,7 +182,7 @@ def relative_velocity_printed(t, Omega, m, a, c1, zdot0, ba):
     ``a``: Cubic coefficient a [N/m^3]
     ``c1``: Contact damping c₁ [N s/m]
     ``zdot0``: Relative approach speed Ż₀ at contact onset [m/s]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     _x0 = Omega*t
     _x1 = jax.numpy.cos(_x0)
@@ -208,7 +208,7 @@ def main_mass_displacement_contact_printed(t, Omega, m, a, c1, zdot0, ba):
     ``a``: Cubic coefficient a [N/m^3]
     ``c1``: Contact damping c₁ [N s/m]
     ``zdot0``: Relative approach speed Ż₀ at contact onset [m/s]
-    ``ba``: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    ``ba``: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     """
     _x0 = (ba - 1)**(-1.0)
     _x1 = Omega*t

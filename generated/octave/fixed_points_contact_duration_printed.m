@@ -10,7 +10,7 @@ function [value, iterations] = fixed_points_contact_duration_printed(m, a, b, c1
 %   b: Linear coefficient b [N/m]
 %   c1: Contact damping c₁ [N s/m]
 %   zdot0: Relative approach speed Ż₀ at contact onset [m/s]
-%   ba: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+%   ba: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
 %   tol: relative tolerance of the last step (default 1e-14)
 %   max_iter: most steps taken (default 100)
 %

@@ -386,7 +386,7 @@ pub mod multiple_scales {
     /// * `b`: Linear coefficient b [N/m]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn contact_duration_map(T: f64, m: f64, a: f64, b: f64, c1: f64, zdot0: f64, ba: f64) -> f64 {
         let _x0 = (ba - 1_f64)/(ba*m);
@@ -397,7 +397,7 @@ pub mod multiple_scales {
     ///
     /// * `m`: Impact mass m [kg]
     /// * `b`: Linear coefficient b [N/m]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn contact_duration_start(m: f64, b: f64, ba: f64) -> f64 {
         3.141592653589793_f64*(m).sqrt()/((b).sqrt()*((ba - 1_f64)/ba).sqrt())
@@ -411,7 +411,7 @@ pub mod multiple_scales {
     /// * `a`: Cubic coefficient a [N/m^3]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn relative_displacement(t: f64, Omega: f64, m: f64, a: f64, c1: f64, zdot0: f64, ba: f64) -> f64 {
         let _x0 = Omega*t;
@@ -430,7 +430,7 @@ pub mod multiple_scales {
     /// * `a`: Cubic coefficient a [N/m^3]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn relative_velocity(t: f64, Omega: f64, m: f64, a: f64, c1: f64, zdot0: f64, ba: f64) -> f64 {
         let _x0 = Omega*t;
@@ -455,7 +455,7 @@ pub mod multiple_scales {
     /// * `a`: Cubic coefficient a [N/m^3]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn main_mass_displacement_contact(t: f64, Omega: f64, m: f64, a: f64, c1: f64, zdot0: f64, ba: f64) -> f64 {
         let _x0 = ba - 1_f64;
@@ -475,7 +475,7 @@ pub mod multiple_scales {
     /// * `b`: Linear coefficient b [N/m]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn contact_duration_map_printed(T: f64, m: f64, a: f64, b: f64, c1: f64, zdot0: f64, ba: f64) -> f64 {
         let _x0 = ba/(m*(ba - 1_f64));
@@ -486,7 +486,7 @@ pub mod multiple_scales {
     ///
     /// * `m`: Impact mass m [kg]
     /// * `b`: Linear coefficient b [N/m]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn contact_duration_start_printed(m: f64, b: f64, ba: f64) -> f64 {
         2_f64*3.141592653589793_f64*(m).sqrt()/((b).sqrt()*(ba/(ba - 1_f64)).sqrt())
@@ -500,7 +500,7 @@ pub mod multiple_scales {
     /// * `a`: Cubic coefficient a [N/m^3]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn relative_displacement_printed(t: f64, Omega: f64, m: f64, a: f64, c1: f64, zdot0: f64, ba: f64) -> f64 {
         let _x0 = Omega*t;
@@ -519,7 +519,7 @@ pub mod multiple_scales {
     /// * `a`: Cubic coefficient a [N/m^3]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn relative_velocity_printed(t: f64, Omega: f64, m: f64, a: f64, c1: f64, zdot0: f64, ba: f64) -> f64 {
         let _x0 = Omega*t;
@@ -544,7 +544,7 @@ pub mod multiple_scales {
     /// * `a`: Cubic coefficient a [N/m^3]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     #[inline]
     pub fn main_mass_displacement_contact_printed(t: f64, Omega: f64, m: f64, a: f64, c1: f64, zdot0: f64, ba: f64) -> f64 {
         let _x0 = (ba - 1_f64).recip();
@@ -4838,7 +4838,7 @@ pub mod fixed_points {
     /// * `b`: Linear coefficient b [N/m]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     /// * `tol`: relative tolerance [1]; `max_iter`: largest number of steps
     pub fn contact_duration(m: f64, a: f64, b: f64, c1: f64, zdot0: f64, ba: f64, tol: f64, max_iter: i64) -> (f64, i64) {
         if !(tol >= 0.0) || max_iter <= 0 {
@@ -4864,7 +4864,7 @@ pub mod fixed_points {
     /// * `b`: Linear coefficient b [N/m]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     /// * `tol`: relative tolerance [1]; `max_iter`: largest number of steps
     pub fn contact_duration_newton(m: f64, a: f64, b: f64, c1: f64, zdot0: f64, ba: f64, tol: f64, max_iter: i64) -> (f64, i64) {
         if !(tol >= 0.0) || max_iter <= 0 {
@@ -4898,7 +4898,7 @@ pub mod fixed_points {
     /// * `b`: Linear coefficient b [N/m]
     /// * `c1`: Contact damping c₁ [N s/m]
     /// * `zdot0`: Relative approach speed Ż₀ at contact onset [m/s]
-    /// * `ba`: Amplitude ratio B/A (Eq. 13), impact mode: negative [1]
+    /// * `ba`: Amplitude ratio B/A (Eq. 13) of the impact mode: < 0 out of phase, > 1 in phase [1]
     /// * `tol`: relative tolerance [1]; `max_iter`: largest number of steps
     pub fn contact_duration_printed(m: f64, a: f64, b: f64, c1: f64, zdot0: f64, ba: f64, tol: f64, max_iter: i64) -> (f64, i64) {
         if !(tol >= 0.0) || max_iter <= 0 {
