@@ -13,9 +13,19 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class Exercise:
+    """One exercise: ``text`` sets the scene, ``ask`` is the question, ``code`` the solution
+    (hidden in the notebook), ``answer`` the expression, evaluated after the solution, that the
+    reader's answer is checked against (:func:`derive.teach.check`); ``stated`` the same value as
+    a textbook, the paper or an independent computation gives it (the digits it is stated to),
+    with ``source``; the tests hold ``answer`` to it."""
+
     title: str
     text: str
     code: str
+    ask: str = ""
+    answer: str = ""
+    stated: str | None = None
+    source: str = ""
 
 
 EXERCISES: dict[str, tuple[Exercise, ...]] = {
@@ -29,12 +39,20 @@ EXERCISES: dict[str, tuple[Exercise, ...]] = {
     print(f"xi0 = {where}: M/(rho A L) = {mp.nstr(Mc, 6)}, K L^3/(EI) = {mp.nstr(Kc, 6)}, "
           f"K/M = {mp.nstr(Kc / Mc, 8)}")
 print("(beta_1 L)^4 =", mp.nstr(roots[0] ** 4, 8))""",
+            ask="K/M with the damper at mid-span (ξ₀ = 1/2) divided by K/M at the tip.",
+            answer="(fk(roots[0], sp.Rational(1, 2)) / fm(roots[0], sp.Rational(1, 2))) / (fk(roots[0], 1) / fm(roots[0], 1))",
+            stated="1.000000000",
+            source="the frequency does not depend on where the motion is referred to",
         ),
         Exercise(
             "The second mode",
             "The same reduction for mode 2: K·L³/(EI) at the tip is (β₂L)⁴/4.",
             """print("K L^3/(EI), mode 2:", mp.nstr(fk(roots[1], 1), 10))
 print("(beta_2 L)^4 / 4:     ", mp.nstr(roots[1] ** 4 / 4, 10))""",
+            ask="K·L³/(EI) of mode 2 referred to the tip.",
+            answer="fk(roots[1], 1)",
+            stated="121.3797046",
+            source="(β₂L)⁴/4, β₂L the second root of cos βL·cosh βL = −1",
         ),
         Exercise(
             "Rayleigh with the static deflection shape",
@@ -49,6 +67,10 @@ show_value(sp.Eq(sp.Symbol("M_psi"), M_psi))
 show_value(sp.Eq(sp.Symbol("K_psi"), K_psi))
 ratio = mp.sqrt(mp.mpf(str(K_psi / M_psi))) / roots[0] ** 2
 print("omega_Rayleigh / omega_exact =", mp.nstr(ratio, 8))""",
+            ask="ω_Rayleigh/ω_exact for the static tip-load shape.",
+            answer="ratio",
+            stated="1.014651549",
+            source="√(3/(33/140))/(β₁L)², the classic 3EI/L³ and 33/140 ρAL",
         ),
     ),
     "contact_fits": (
@@ -63,6 +85,10 @@ print("omega_Rayleigh / omega_exact =", mp.nstr(ratio, 8))""",
     print(f"n = {ns:2d}: a = {a_v / 1e6:.4f} N/cm^3, b = {b_v / 100:.4f} N/cm")
 print(f"continuous: a = {float(cont_vals['a']) / 1e6:.4f} N/cm^3, "
       f"b = {float(cont_vals['b']) / 100:.4f} N/cm")""",
+            ask="a in N/cm³ from n = 21 samples.",
+            answer="float(discrete(21)[0]) * 1000 / 0.02**1.5 / 1e6",
+            stated="0.1553",
+            source="the paper's printed a",
         ),
         Exercise(
             "Keep the full Hertz law",
@@ -74,6 +100,10 @@ for frac in (0.25, 0.5, 1.0, 1.5, 2.0):
     d = frac * 0.02
     print(f"delta = {frac:4.2f} delta_max: Hertz {F_hz(d):8.3f} N, cubic {F_cc(d):8.3f} N, "
           f"cubic/Hertz = {F_cc(d) / F_hz(d):.3f}")""",
+            ask="The ratio cubic/Hertz of the two forces at twice the fitted range, δ = 2·δ_max.",
+            answer="F_cc(0.04) / F_hz(0.04)",
+            stated="1.66",
+            source="a·δ³ + b·δ with the paper's a = 0.1553 N/cm³, b = 0.8360 N/cm, over 1000·δ^1.5",
         ),
         Exercise(
             "A shorter fit range",
@@ -82,6 +112,10 @@ for frac in (0.25, 0.5, 1.0, 1.5, 2.0):
     vals = {k_hz: 1000, d_max: dm}
     print(f"delta_max = {float(dm) * 100:.0f} cm: a = {float(scale[a].subs(vals)) / 1e6:.4f} "
           f"N/cm^3, b = {float(scale[b].subs(vals)) / 100:.4f} N/cm")""",
+            ask="a(δ_max = 1 cm) divided by a(δ_max = 2 cm).",
+            answer="scale[a].subs({k_hz: 1000, d_max: sp.Rational(1, 100)}) / scale[a].subs({k_hz: 1000, d_max: sp.Rational(2, 100)})",
+            stated="2.828427125",
+            source="2^(3/2), from a ∝ δ_max^(−3/2)",
         ),
     ),
     "harmonic_balance": (
@@ -94,6 +128,10 @@ theta = sp.Symbol("theta")
 sin_part = sp.simplify(sp.integrate((damped * sp.sin(omega * t)).subs(t, theta / omega),
                                     (theta, 0, 2 * sp.pi)) / sp.pi)
 show_value(sp.Eq(sp.Symbol("S_1"), sin_part))""",
+            ask="S₁ for ω = 2 rad/s, A = 1 m, B = 3 m, C = 0.1 N s/m, c₁ = 0.5 N s/m.",
+            answer="sin_part.subs({omega: 2, A: 1, B: 3, C: sp.Rational(1, 10), c1: sp.Rational(1, 2)})",
+            stated="1.800000000",
+            source="−ω(C·A + c₁(A − B)): the damping forces' sin ωt part",
         ),
         Exercise(
             "Linear contact, numbers",
@@ -103,6 +141,10 @@ show_value(sp.Eq(sp.Symbol("S_1"), sin_part))""",
 for root in sorted(sp.solve(char.subs(vals), W)):
     f_hz = sp.sqrt(root) / (2 * sp.pi)
     print(f"omega^2 = {float(root):9.3f} rad^2/s^2, f = {float(f_hz):.3f} Hz")""",
+            ask="The higher natural frequency in Hz.",
+            answer="max(float(sp.sqrt(r) / (2 * sp.pi)) for r in sp.solve(char.subs(vals), W))",
+            stated="3.34761087",
+            source="scipy.linalg.eigh of the two-mass stiffness and mass matrices",
         ),
     ),
     "lindstedt": (
@@ -115,6 +157,10 @@ for root in sorted(sp.solve(char.subs(vals), W)):
     exact_w = float(exact_frequency().subs(vals).evalf())
     orders = ", ".join(f"order {n}: {float(frequency(n).subs(vals)):.6f}" for n in (1, 2, 3))
     print(f"alpha = {al}: {orders}; exact {exact_w:.6f}")""",
+            ask="The order-3 frequency at α = 1 (ω₀ = 1 rad/s, ε = 1).",
+            answer="frequency(3).subs({omega0: 1, eps: 1, alpha: 1})",
+            stated="1.33251953125",
+            source="1 + 3/8 − 21/256 + 81/2048, the series' published coefficients",
         ),
         Exercise(
             "A softening contact (ε < 0)",
@@ -124,6 +170,10 @@ for root in sorted(sp.solve(char.subs(vals), W)):
     print(f"alpha = {al}: order 1 {float(frequency(1).subs(vals)):.6f}, "
           f"order 3 {float(frequency(3).subs(vals)):.6f}, "
           f"exact {float(exact_frequency().subs(vals).evalf()):.6f}")""",
+            ask="The order-1 frequency at α = 1.5 for ε = −0.2.",
+            answer="frequency(1).subs({omega0: 1, eps: -sp.Rational(1, 5), alpha: sp.Rational(3, 2)})",
+            stated="0.8312500000",
+            source="1 + (3/8)·ε·α²",
         ),
     ),
     "multiple_scales": (
@@ -137,6 +187,10 @@ for root in sorted(sp.solve(char.subs(vals), W)):
     for _ in range(60):
         Tk = step_map(Tk)
     print(f"c1 = {float(c1_val):.2f} N s/m: T = {mp.nstr(Tk, 6)} s")""",
+            ask="T at c₁ = 0.5 N s/m, in s.",
+            answer="Tk",
+            stated="0.1526983391",
+            source="the generated kernel fixed_points.contact_duration (double precision, its own loop)",
         ),
         Exercise(
             "The printed factor for a heavier impact mass",
@@ -148,6 +202,10 @@ for root in sorted(sp.solve(char.subs(vals), W)):
     t_d = sp.N(T0.subs(lam, lam_derived).subs(subs), 12)
     print(f"m = {m_val} kg: printed/derived = {float(t_p / t_d):.5f}, "
           f"1 + m/M = {1 + float(m_val):.5f}")""",
+            ask="printed/derived T⁽⁰⁾ for m = 0.5 kg.",
+            answer="sp.N(T0.subs(lam, lam_printed).subs(table1_inputs('0.5')) / T0.subs(lam, lam_derived).subs(table1_inputs('0.5')), 15)",
+            stated="1.500000000",
+            source="1 + m/M",
         ),
     ),
     "closed_forms": (
@@ -160,6 +218,10 @@ const_n = 2 * sp.beta(1 / (n_ + 1), sp.Rational(1, 2)) / (n_ + 1)
 for n_val in (1, sp.Rational(3, 2), 2, 3):
     print(f"n = {n_val}: constant = {float(sp.N(const_n.subs(n_, n_val), 15)):.6f}")
 print("pi =", float(sp.pi))""",
+            ask="The constant for n = 2.",
+            answer="sp.N(const_n.subs(n_, 2), 15)",
+            stated="2.804364211",
+            source="mpmath's own beta function: (2/3)·B(1/3, 1/2)",
         ),
         Exercise(
             "Restitution of the linear law",
@@ -169,6 +231,10 @@ print("pi =", float(sp.pi))""",
     vals = {m: sp.Rational(1, 4), M: 1, k1: sp.Rational("122.7"), c1: c1_val}
     print(f"c1 = {float(c1_val):.2f} N s/m: T = {float(T_lin.subs(vals)) * 1e3:.2f} ms, "
           f"e = {float(e_lin.subs(vals)):.4f}")""",
+            ask="e for c₁ = 2 N s/m.",
+            answer="e_lin.subs({m: sp.Rational(1, 4), M: 1, k1: sp.Rational('122.7'), c1: 2})",
+            stated="0.5233471629",
+            source="exp(−c₁T/(2μ)), T = π/ω_d, ω_d² = k₁/μ − (c₁/2μ)², μ = mM/(m + M)",
         ),
     ),
     "free_flight": (
@@ -179,11 +245,19 @@ print("pi =", float(sp.pi))""",
             """over = sp.dsolve(eq_x.lhs.subs({M: 1, K: 1, C: 3}), x(t),
                  ics={x(0): x0, x(t).diff(t).subs(t, 0): xd0}).rhs
 show_value(sp.Eq(sp.Symbol("x_over"), sp.simplify(over)))""",
+            ask="The decay rate [1/s] of the slower exponential.",
+            answer="min(-sp.re(r) for r in sp.solve(sp.Symbol('s') ** 2 + 3 * sp.Symbol('s') + 1))",
+            stated="0.3819660113",
+            source="(3 − √5)/2, the smaller root of s² + 3s + 1",
         ),
         Exercise(
             "The undamped limit",
             "C → 0 in the free-flight solution gives the undamped oscillator.",
             """show_value(sp.Eq(sp.Symbol("x_undamped"), sp.simplify(x_t.subs(C, 0))))""",
+            ask="x_undamped at t = π/3 s for K = M = 1, x₀ = 1 m, ẋ₀ = 0.",
+            answer="x_t.subs(C, 0).subs({K: 1, M: 1, x0: 1, xd0: 0}).subs(t, sp.pi / 3)",
+            stated="0.5000000000",
+            source="cos(π/3)",
         ),
     ),
     "forced_flight": (
@@ -194,6 +268,10 @@ show_value(sp.Eq(sp.Symbol("x_over"), sp.simplify(over)))""",
             """T2 = sp.simplify((amplitude**2).subs({P: P_value, Q: Q_value}).subs(F0, 0) / Xb**2)
 show_value(sp.Eq(sp.Symbol("T_b") ** 2, T2))
 print("at Omega = sqrt(2 K/M):", sp.simplify(T2.subs(W, sp.sqrt(2 * K / M))))""",
+            ask="T_b² at Ω = √(2K/M).",
+            answer="T2.subs(W, sp.sqrt(2 * K / M))",
+            stated="1.000000000",
+            source="the crossing of any damping",
         ),
         Exercise(
             "Beats below resonance, growth at it",
@@ -203,6 +281,10 @@ for Wv in (27, 29.5, 30):
     expr = resonant if Wv == 30 else general
     at_W = expr.subs(vals).subs(W, Wv)
     print(f"Omega = {Wv}:", [sp.N(at_W.subs(t, tt), 4) for tt in (1, 2, 4, 8)])""",
+            ask="x [m] at t = 8 s for Ω = 30 rad/s.",
+            answer="resonant.subs(vals).subs(W, 30).subs(t, 8)",
+            stated="0.1260593540",
+            source="F₀/(2Mω)·t·sin ωt",
         ),
     ),
     "rigid_impact": (
@@ -214,6 +296,10 @@ for Wv in (27, 29.5, 30):
 show_value(sp.Eq(sp.Symbol("share"), share))
 for r in (sp.Rational(1, 100), sp.Rational(1, 10), 1):
     print(f"m/M = {r}, e = 0.6:", sp.N(share.subs({m: r * M, e: sp.Rational(3, 5)}), 6))""",
+            ask="The share lost at m/M = 0.1, e = 0.6.",
+            answer="share.subs({m: M / 10, e: sp.Rational(3, 5)})",
+            stated="0.5818181818",
+            source="(1 − e²)·M/(m + M)",
         ),
         Exercise(
             "The c1 for a wanted e",
@@ -221,6 +307,10 @@ for r in (sp.Rational(1, 100), sp.Rational(1, 10), 1):
             "k1 = 10⁵ N/m).",
             """for ev in (0.9, 0.6, 0.3):
     print(f"e = {ev}: c1 =", sp.N(c1_value.subs({m: 0.25, M: 1, k1: 1e5, e: ev}), 6), "N s/m")""",
+            ask="c₁ [N s/m] for e = 0.6.",
+            answer="c1_value.subs({m: 0.25, M: 1, k1: 1e5, e: 0.6})",
+            stated="45.39428865",
+            source="2ζ√(k₁μ), ζ = −ln e/√(π² + ln² e), μ = mM/(m + M)",
         ),
     ),
     "periodic_orbit": (
@@ -236,11 +326,15 @@ for Wv in (10, 20, 30, 38, 60):
     a_, b_, c_ = fabc(Wv)
     r_ = math.hypot(a_, b_)
     print(f"Omega = {Wv}: c/r = {c_ / r_:.4f}:", "two phases" if abs(c_) < r_ else "no orbit")""",
+            ask="c/√(a² + b²) at Ω = 38 rad/s.",
+            answer="(lambda a_, b_, c_: c_ / math.hypot(a_, b_))(*fabc(38))",
         ),
         Exercise(
             "Elastic impacts",
             "At e = 1 no energy is lost in the impacts; the right side c keeps its form.",
             """show_value(sp.Eq(sp.Symbol("c"), sp.factor(c_coef.subs(e, 1))))""",
+            ask="c at e = 1 for the issue's system at Ω = 30 rad/s (M 1 kg, K 1000 N/m, C 0.5 N s/m, m 0.05 kg, d 20 mm, F0 2 N).",
+            answer="c_coef.subs(e, 1).subs(closed).subs({M: 1, K: 1000, C: sp.Rational(1, 2), m: sp.Rational(1, 20), d: sp.Rational(1, 50), F0: 2, Xb: 0, W: 30})",
         ),
     ),
     "hunt_crossley": (
@@ -257,6 +351,10 @@ with mp.workdps(30):
         z_hc, z_ln = 1.5 * (1 - wanted), 0.75 * (1 - wanted**2)
         print(f"wanted e = {wanted}: HC gives {mp.nstr(exact_e(mp.mpf(z_hc)), 6)}, "
               f"LN gives {mp.nstr(exact_e(mp.mpf(z_ln)), 6)}")""",
+            ask="The e Hunt–Crossley's χ gives for a wanted e = 0.6.",
+            answer="exact_e(mp.mpf(1.5 * (1 - 0.6)))",
+            stated="0.7119501796",
+            source="scipy's brentq on g(−e·z) = g(z), g(u) = u − ln(1 + u), z = 3(1 − e)/2",
         ),
         Exercise(
             "How long the Kelvin–Voigt law pulls",
@@ -265,6 +363,10 @@ with mp.workdps(30):
             """for ev in (0.9, 0.6, 0.3, 0.1):
     share = 2 * sp.atan(-sp.log(sp.Float(ev)) / sp.pi) / sp.pi
     print(f"e = {ev}: pulls during {sp.N(100 * share, 4)} % of the contact")""",
+            ask="The tensile share [%] at e = 0.6.",
+            answer="100 * 2 * sp.atan(-sp.log(sp.Float(0.6)) / sp.pi) / sp.pi",
+            stated="10.26168396",
+            source="2·atan(−ln e/π)/π",
         ),
     ),
     "slow_flow": (
@@ -275,6 +377,10 @@ with mp.workdps(30):
             """for ev in (1, 0.9, 0.6, 0.3, 0):
     rv = rho_value.subs(e, ev)
     print(f"e = {ev}: rho = {sp.N(rv, 4)}, threshold = {sp.N(threshold.subs(rho, rv), 4)}")""",
+            ask="ξ_a at e = 0.6.",
+            answer="threshold.subs(rho, rho_value.subs(e, sp.Rational(3, 5)))",
+            stated="0.1571767255",
+            source="ρ/√(1 + ρ²), ρ = 2(1 − e)/(π(1 + e))",
         ),
         Exercise(
             "The best clearance",
@@ -289,6 +395,8 @@ grid = np.geomspace(float(threshold.subs(vals)) * 1.0001, 50, 4000)
 best = grid[np.argmax(f(grid))]
 print(f"best clearance about {1e3 * f(best):.3f} mm at xi = {best:.3f}: "
       f"primary peak {1e3 * best * f(best) / 2:.3f} mm")""",
+            ask="The best clearance in mm.",
+            answer="1e3 * f(best)",
         ),
     ),
     "hertz_contact": (
@@ -302,6 +410,10 @@ R_v = radius.subs({R1: sp.Rational(1, 100), kappa2: 0})
 K_v = k_hz.subs({Es: Es_v, R: R_v})
 print(f"E* = {sp.N(Es_v / 1e9, 5)} GPa, R = {sp.N(R_v * 1e3, 4)} mm, "
       f"K_Hz = {sp.N(K_v, 4)} N/m^1.5 = {sp.N(K_v / 1000, 3)} x the paper's")""",
+            ask="K_Hz [N/m^1.5] of the 20 mm steel sphere on the steel flat.",
+            answer="k_hz.subs({Es: E_star.subs(steel), R: radius.subs({R1: sp.Rational(1, 100), kappa2: 0})})",
+            stated="1.538461538e10",
+            source="(4/3)·E*·√R, E* = E/(2(1 − ν²)) (Johnson, Contact Mechanics, §4.2)",
         ),
         Exercise(
             "Where yield starts, for other Poisson ratios",
@@ -311,6 +423,10 @@ print(f"E* = {sp.N(Es_v / 1e9, 5)} GPa, R = {sp.N(R_v * 1e3, 4)} mm, "
     f = sp.lambdify(zeta, difference.subs(nu, sp.Rational(nv)), "mpmath")
     zs = mp.findroot(lambda t: mp.diff(f, t), mp.mpf("0.5"))
     print(f"nu = {nv}: depth {mp.nstr(zs, 4)} a, p0 = {mp.nstr(1 / f(zs), 4)} Y")""",
+            ask="p₀/Y at ν = 0.3.",
+            answer="(lambda f: 1 / f(mp.findroot(lambda t: mp.diff(f, t), mp.mpf('0.5'))))(sp.lambdify(zeta, difference.subs(nu, sp.Rational(3, 10)), 'mpmath'))",
+            stated="1.61",
+            source="Johnson, Contact Mechanics, §3.4: the largest τ₁ = 0.31·p₀, at z = 0.48a (ν = 0.3); Tresca, τ₁ = Y/2",
         ),
         Exercise(
             "Restitution against impact speed",
@@ -320,6 +436,10 @@ print(f"E* = {sp.N(Es_v / 1e9, 5)} GPa, R = {sp.N(R_v * 1e3, 4)} mm, "
 for k in (1, 2, 5, 10, 100, 1000):
     ev = f(mp.mpf(1) / k)
     print(f"v0/vy = {k:5d}: e = {mp.nstr(ev, 5)}, e * (v0/vy)^(1/4) = {mp.nstr(ev * k**0.25, 5)}")""",
+            ask="e·(v₀/v_y)^(1/4) at v₀/v_y = 1000.",
+            answer="f(mp.mpf(1) / 1000) * 1000**0.25",
+            stated="1.185",
+            source="Thornton (1997), e = √(6√3/5)·√(1 − r²/6)·(r/(r + 2√(6/5 − r²/5)))^(1/4), r = v_y/v₀",
         ),
     ),
 }

@@ -163,7 +163,7 @@ sys.path.insert(0, str(root))
 import derive.{step} as step  # noqa: E402  the step's own module: its helpers and constants
 
 globals().update({{k: v for k, v in vars(step).items() if not k.startswith("__")}})
-from derive.teach import show, show_value  # noqa: E402
+from derive.teach import check, show, show_value  # noqa: E402
 
 print(f"derive/{step}.py from {{root}}")"""
 
@@ -206,14 +206,36 @@ def notebook(step: str):
     exercises = EXERCISES.get(step, ())
     if exercises:
         nb.cells.append(nbformat.v4.new_markdown_cell(
-            "## Exercises\n\nEach changes one assumption of the derivation above and shows its "
-            "effect; change the numbers and run again."))  # fmt: skip
+            "## Exercises\n\nEach changes one assumption of the derivation above. Compute what "
+            "it asks with the names the notebook defined, put the value in the answer cell and "
+            "run the check below it. The solution is in the collapsed cell between them: "
+            "expand it when you are done, or stuck."))  # fmt: skip
     for k, ex in enumerate(exercises, 1):
-        nb.cells.append(nbformat.v4.new_markdown_cell(f"### Exercise {k}: {ex.title}\n\n{ex.text}"))
-        nb.cells.append(nbformat.v4.new_code_cell(ex.code))
+        nb.cells.extend(exercise_cells(k, ex))
     nb.cells.append(nbformat.v4.new_markdown_cell("## The notebook's board is the step's board"))
     nb.cells.append(nbformat.v4.new_code_cell(_SAME.format(step=step)))
     return nb
+
+
+def exercise_cells(k: int, ex) -> list:
+    """The cells of exercise ``k``: the question, the reader's answer cell (``answer_k = ...``),
+    the solution, collapsed (source and output hidden in Jupyter), which sets ``expected_k``, and
+    the check (:func:`derive.teach.check`)."""
+    import nbformat
+
+    solution = nbformat.v4.new_code_cell(
+        f"# Solution of exercise {k}\n{ex.code}\nexpected_{k} = {ex.answer}"
+    )
+    solution.metadata["jupyter"] = {"source_hidden": True, "outputs_hidden": True}
+    solution.metadata["tags"] = ["solution"]
+    return [
+        nbformat.v4.new_markdown_cell(
+            f"### Exercise {k}: {ex.title}\n\n{ex.text}\n\n**Your turn.** {ex.ask}"
+        ),
+        nbformat.v4.new_code_cell(f"answer_{k} = ...  # your computation here"),
+        solution,
+        nbformat.v4.new_code_cell(f"check(answer_{k}, expected_{k})"),
+    ]
 
 
 def write_notebooks(folder: str | Path, steps: tuple[str, ...] = STEPS) -> list[Path]:

@@ -79,3 +79,37 @@ def show(board: Board) -> None:
     _SEEN[id(board)] = tuple(
         len(x) for x in (board.lines, board.checks, board.errata, board.kernels, board.constants)
     )
+
+
+#: How close an exercise's answer must come to the solution's: a relative 1e-9, loose enough for
+#: any double-precision route to the same number (a float sum, mpmath, SymPy's N), tight enough
+#: that no other formula passes by chance.
+ANSWER_RTOL = 1e-9
+
+
+def _number(value: Any) -> complex:
+    import sympy as sp
+
+    return complex(sp.N(sp.sympify(value), 30))
+
+
+def check(answer: Any, expected: Any) -> bool | None:
+    """Compare an exercise's ``answer`` with its hidden solution's ``expected`` (numbers, to
+    :data:`ANSWER_RTOL`) and say so; ``None`` while the answer cell still holds ``...``."""
+    if answer is ...:
+        print("Not answered yet: compute the value in the cell above, assign it to the answer "
+              "variable and run this cell again (the solution is in the hidden cell above).")  # fmt: skip
+        return None
+    try:
+        got, want = _number(answer), _number(expected)
+    except (TypeError, ValueError) as exc:
+        print(f"Your answer is not a number ({type(answer).__name__}: {exc}).")
+        return False
+    if abs(got - want) <= ANSWER_RTOL * max(abs(want), 1e-300):
+        print(f"Right: {answer}.")
+        return True
+    print(
+        f"Not yet: your {got.real if got.imag == 0 else got:.10g} is off by a relative "
+        f"{abs(got - want) / max(abs(want), 1e-300):.2g}; look at the hidden solution."
+    )
+    return False

@@ -8,6 +8,8 @@ numbers, its checks and its errata where they arise, and hold two or three exerc
 
 from __future__ import annotations
 
+import ast
+import decimal
 import subprocess
 import sys
 import time
@@ -55,13 +57,30 @@ def test_notebook_runs_and_rederives_its_step(notebooks, step, tmp_path, monkeyp
     # alone (no path of the machine that wrote it is kept in the notebook)
     assert str(ROOT) not in path.read_text(encoding="utf-8")
     monkeypatch.setenv("SYMIMPACT_CHECKOUT", str(ROOT))
+    exercises = EXERCISES[step]
+    # a last cell reports each hidden solution's value, to hold it to the stated one
+    values = ", ".join(f"expected_{k}" for k in range(1, len(exercises) + 1))
+    nb.cells.append(nbformat.v4.new_code_cell(
+        f"print('SOLUTIONS', [str(complex(sp.N(sp.sympify(v), 20))) for v in [{values}]])"))  # fmt: skip
     t0 = time.perf_counter()
     nbclient.NotebookClient(nb, timeout=600, kernel_name="python3",
                             resources={"metadata": {"path": str(tmp_path)}}).execute()  # fmt: skip
     seconds = time.perf_counter() - t0
+    solutions = _outputs_text(nb.cells.pop()).split("SOLUTIONS", 1)[1]
+    for ex, value in zip(exercises, ast.literal_eval(solutions.strip()), strict=True):
+        assert ex.ask and ex.answer, ex.title  # a question and a checked answer
+        if ex.stated is not None:  # held to the stated digits: half a unit of the last one
+            stated = decimal.Decimal(ex.stated)
+            half = decimal.Decimal(5).scaleb(stated.as_tuple().exponent - 1)
+            assert complex(value).imag == 0, (ex.title, value)
+            assert abs(decimal.Decimal(complex(value).real) - stated) <= half, (ex.title, value)
+    checks = [_outputs_text(c) for c in nb.cells if c.source.startswith("check(answer_")]
+    assert len(checks) == len(exercises)
+    assert all(c.startswith("Not answered yet") for c in checks), checks
     code = [c for c in nb.cells if c.cell_type == "code"]
-    empty = [c.source.splitlines()[0] for c in code if not c.get("outputs")]
-    assert not empty, empty  # every cell shows something
+    empty = [c.source.splitlines()[0] for c in code
+             if not c.get("outputs") and not c.source.startswith("answer_")]  # fmt: skip
+    assert not empty, empty  # every cell but the reader's answer cells shows something
     errors = [o for c in code for o in c.outputs if o.get("output_type") == "error"]
     assert not errors
     board = derive.board(step)
@@ -92,6 +111,26 @@ def test_regenerating_notebook_is_the_walkthrough(notebooks):
     code = [c.source for c in nb.cells if c.cell_type == "code"]
     assert code[1:] == [s.code for s in SNIPPETS]
     assert "SYMIMPACT_CHECKOUT" in code[0]
+
+
+def test_check_tells_right_wrong_and_unanswered(capsys):
+    """The exercises' check: a value within the tolerance is right, one off by 1e-6 is not, an
+    untouched ``...`` is not answered, a non-number says so; SymPy, mpmath and NumPy values all
+    compare as numbers."""
+    import mpmath as mp
+    import numpy as np
+    import sympy as sp
+
+    from derive.teach import check
+
+    assert check(..., 1.0) is None
+    assert check(sp.sqrt(2), mp.sqrt(2)) is True
+    assert check(np.float64(2**0.5) * (1 + 1e-12), sp.sqrt(2)) is True
+    assert check(2**0.5 * (1 + 1e-6), sp.sqrt(2)) is False
+    assert check("one", 1.0) is False
+    said = capsys.readouterr().out.splitlines()
+    assert [s.split(":")[0].split(" ")[0] for s in said] == ["Not", "Right", "Right", "Not",
+                                                             "Your"]  # fmt: skip
 
 
 def test_notebooks_refuse_a_folder_they_cannot_write(tmp_path):
