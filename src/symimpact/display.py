@@ -51,6 +51,24 @@ OUTPUT_SI_UNITS = {
     "baseline_omega": "rad/s",
     "worst_peak": "m",
     "nominal_peak": "m",
+    # a design's peaks in a response (design --response NAME): peak_force, baseline_force, …
+    **{
+        f"{where}_{q}{end}": unit
+        for q, unit in (
+            ("relative_displacement", "m"),
+            ("acceleration", "m/s^2"),
+            ("force", "N"),
+            ("transmissibility", "dimensionless"),
+        )
+        for where, end in (
+            ("peak", ""),
+            ("baseline", ""),
+            ("peak", "_e_minus"),
+            ("peak", "_e_plus"),
+            ("worst", ""),
+            ("nominal", ""),
+        )
+    },
     "worst_e": "dimensionless",
     "e": "dimensionless",
 }

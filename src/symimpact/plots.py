@@ -223,12 +223,21 @@ def plot_branch(branch: Any, path: str | os.PathLike, title: str = "") -> None:
     plt.close(fig)
 
 
-def plot_design(table: Any, path: str | os.PathLike, title: str = "") -> None:
+def plot_design(
+    table: Any, path: str | os.PathLike, title: str = "", response: str = "displacement"
+) -> None:
     """The clearance design map (:func:`symimpact.maps.design.design_map`): the peak amplitude
-    over the band against the clearance, one line per mass ratio, the best clearance of each
-    marked, and the primary without the damper's peak (dashed)."""
+    (or the peak of ``response``, as the map was run) over the band against the clearance, one
+    line per mass ratio, the best clearance of each marked, and the primary without the damper's
+    peak (dashed)."""
     from .display import shown
+    from .forced.responses import QUANTITY
     from .maps.design import best_clearances
+
+    quantity = QUANTITY[response]
+
+    def Y(v):  # the response in its display unit
+        return v if quantity is None else shown(quantity, v)
 
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 5))
@@ -238,12 +247,12 @@ def plot_design(table: Any, path: str | os.PathLike, title: str = "") -> None:
         g = g.sort_values("gap")
         text = "" if key is None else (f"m/M = {key:g}" if by == "mass_ratio" else
                                        f"m = {key:g} kg")  # fmt: skip
-        ax.plot(shown("gap", g["gap"]), shown("x", g["peak_amplitude"]), "o-", color=f"C{i % 10}",
+        ax.plot(shown("gap", g["gap"]), Y(g["peak_amplitude"]), "o-", color=f"C{i % 10}",
                 ms=3, lw=1.3, label=text or "with the damper")  # fmt: skip
     for i, (_, row) in enumerate(best_clearances(table).iterrows()):
-        ax.plot(shown("gap", row["gap"]), shown("x", row["peak_amplitude"]), "*", ms=13,
+        ax.plot(shown("gap", row["gap"]), Y(row["peak_amplitude"]), "*", ms=13,
                 color=f"C{i % 10}", mec="k", label="best clearance" if i == 0 else None)  # fmt: skip
-    _finish_design(plt, fig, ax, float(table["baseline_peak"].max()), path, title)
+    _finish_design(plt, fig, ax, float(table["baseline_peak"].max()), path, title, response)
 
 
 def plot_robust_design(result: dict[str, Any], path: str | os.PathLike, title: str = "") -> None:
@@ -272,14 +281,21 @@ def plot_robust_design(result: dict[str, Any], path: str | os.PathLike, title: s
     _finish_design(plt, fig, ax, rows[0]["baseline_peak"], path, title)
 
 
-def _finish_design(plt: Any, fig: Any, ax: Any, baseline: float, path: Any, title: str) -> None:
-    """A design figure's common end: the primary alone's peak (dashed), the axes, the legend,
-    the title, and the file written."""
+def _finish_design(plt: Any, fig: Any, ax: Any, baseline: float, path: Any, title: str,
+                   response: str = "displacement") -> None:  # fmt: skip
+    """A design figure's common end: the primary alone's peak (dashed), the axes (the peak of
+    ``response``), the legend, the title, and the file written."""
     from .display import display_unit, shown
+    from .forced.responses import AXIS, QUANTITY
 
-    ax.axhline(shown("x", baseline), ls="--", color="0.5", lw=1.0, label="without the damper")
+    quantity = QUANTITY[response]
+    shown_baseline = baseline if quantity is None else shown(quantity, baseline)
+    ax.axhline(shown_baseline, ls="--", color="0.5", lw=1.0, label="without the damper")
     ax.set_xlabel(f"clearance d [{display_unit('gap')}]")
-    ax.set_ylabel(f"peak amplitude over the band [{display_unit('x')}]")
+    unit = "" if quantity is None else f" [{display_unit(quantity)}]"
+    what = ("peak amplitude" if response == "displacement"
+            else f"peak of {AXIS[response].split(' [')[0]}")  # fmt: skip
+    ax.set_ylabel(f"{what} over the band{unit}")
     ax.set_ylim(bottom=0)
     ax.legend(fontsize=8)
     if title:

@@ -38,6 +38,10 @@ def add_parser(sub: Any) -> None:
                    "the ends, the middle and the quarters)")  # fmt: skip
     g.add_argument("--no-refine", action="store_true",
                    help="report the grid's best clearance as it is")  # fmt: skip
+    g.add_argument("--response", default="displacement", metavar="NAME",
+                   help="what the peaks measure: displacement (max |x|, default), "
+                   "relative-displacement, acceleration, force (into the base) or "
+                   "transmissibility, as for frf --response")  # fmt: skip
     g = p.add_argument_group("execution and files")
     g.add_argument("--executor", choices=("serial", "processes", "dask"), default=None,
                    help="where the designs run (default: local processes)")  # fmt: skip
@@ -61,6 +65,7 @@ def run(ns) -> None:
     from ..maps.points import parse_range
     from ..maps.table import table_rows
     from ..units import positive_float
+    from .frf import response_text
 
     e_range = _e_range(ns)  # before the band's checks read --e as one number
     omegas = band_from(ns)
@@ -79,6 +84,10 @@ def run(ns) -> None:
     if ns.workers is not None and ns.workers < 1:
         raise ParameterError("workers", "must be a positive integer")
     e = contact_of(ns)
+    from ..forced.contact_law import is_rigid
+    from ..forced.responses import checked_response
+
+    response = checked_response(ns.response, forcing, rigid=is_rigid(e))
     tolerance = positive_float("tolerance", ns.tolerance, "m")
     if e_range is not None:
         if ns.mass_ratios is not None or ns.out is not None:
@@ -86,20 +95,25 @@ def run(ns) -> None:
                 "e", "a restitution range takes one mass ratio and no --out (it runs one map "
                 "per restitution)"
             )  # fmt: skip
-        return _robust(ns, system, forcing, e_range, omegas, grid["gap"])
+        return _robust(ns, system, forcing, e_range, omegas, grid["gap"], response)
     from ..forced.coverage import FREQUENCIES  # here: the CLI starts without the forced package
 
     multistart = FREQUENCIES if ns.multistart is None else ns.multistart
     table = design_map(system, forcing, e, omegas, grid, executor=ns.executor,
                        workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
                        force=ns.overwrite, progress=not (ns.quiet or ns.json),
-                       multistart=multistart)  # fmt: skip
+                       multistart=multistart, response=response)  # fmt: skip
     rows = table_rows(table)
     if ns.no_refine or len(grid["gap"]) < 2:
         best = table_rows(best_clearances(table))
     else:
         best = refine_best(table, system, forcing, e, omegas, tolerance=tolerance,
-                           multistart=multistart)  # fmt: skip
+                           multistart=multistart, response=response)  # fmt: skip
+    rows, best = _named(rows, response), _named(best, response)
+
+    def k(name: str) -> str:
+        return _renamed(name, response)
+
     if ns.csv:
         write_csv(ns.csv, "csv", rows)
     if ns.plot:
@@ -107,17 +121,22 @@ def run(ns) -> None:
 
         plot_design(table, ns.plot, title=f"band {shown('omega', omegas[0]):.4g}–"
                     f"{omega_text(omegas[-1], '.4g')}, "
-                    f"{contact_title(ns, e)}")  # fmt: skip
-    unit, gunit = display_unit("x"), display_unit("gap")
+                    f"{contact_title(ns, e)}", response=response)  # fmt: skip
+    gunit = display_unit("gap")
+
+    def value(v: float) -> str:
+        return response_text(response, v)
+
+    what = "peak" if response == "displacement" else f"peak {response}"
     lines = [f"{len(rows)} design(s) over Ω {shown('omega', omegas[0]):.6g}–"
-             f"{omega_text(omegas[-1])} ({len(omegas)} frequencies); without the damper the peak "
-             f"is {shown('x', rows[0]['baseline_peak']):.5g} {unit} at Ω "
+             f"{omega_text(omegas[-1])} ({len(omegas)} frequencies); without the damper the "
+             f"{what} is {value(rows[0][k('baseline_peak')])} at Ω "
              f"{omega_text(rows[0]['baseline_omega'], '.5g')}"]  # fmt: skip
     for r in rows:
         ratio = f", m/M {r['mass_ratio']:g}" if "mass_ratio" in r else ""
         lines.append(
-            f"d {shown('gap', r['gap']):.4g} {gunit}{ratio}: peak "
-            f"{shown('x', r['peak_amplitude']):.5g} {unit} at Ω {omega_text(r['peak_omega'], '.5g')} "
+            f"d {shown('gap', r['gap']):.4g} {gunit}{ratio}: {what} "
+            f"{value(r[k('peak_amplitude')])} at Ω {omega_text(r['peak_omega'], '.5g')} "
             f"({r['peak_motion']}), {r['peak_ratio']:.3f} of the primary alone"
         )
     for r in best:
@@ -128,14 +147,46 @@ def run(ns) -> None:
                      f"walk of {r['walk_moves']} step(s), {r['evaluations']} designs)")  # fmt: skip
         else:
             where = f"d {shown('gap', r['gap']):.4g} {gunit}"
-        line = (f"best clearance{ratio}: {where}, peak {shown('x', r['peak_amplitude']):.5g} "
-                f"{unit} at Ω {omega_text(r['peak_omega'], '.5g')} ({r['peak_motion']}; "
+        line = (f"best clearance{ratio}: {where}, {what} {value(r[k('peak_amplitude')])} "
+                f"at Ω {omega_text(r['peak_omega'], '.5g')} ({r['peak_motion']}; "
                 f"{r['peak_ratio']:.3f} of the primary alone)")  # fmt: skip
-        if "peak_e_minus" in r:
-            line += (f"; the peak with e − 0.1: {shown('x', r['peak_e_minus']):.5g} {unit}, "
-                     f"with e + 0.1: {shown('x', r['peak_e_plus']):.5g} {unit}")  # fmt: skip
+        if k("peak_e_minus") in r:
+            line += (f"; the {what} with e − 0.1: {value(r[k('peak_e_minus')])}, "
+                     f"with e + 0.1: {value(r[k('peak_e_plus')])}")  # fmt: skip
         lines.append(line)
-    emit(ns, {"designs": rows, "best": best}, "\n".join(lines))
+    emit(ns, {"designs": rows, "best": best, "response": _response_json(response)},
+         "\n".join(lines))  # fmt: skip
+
+
+def _key(response: str) -> str:
+    """The name a design's peaks carry: ``amplitude`` (displacement) or the response's."""
+    return "amplitude" if response == "displacement" else response.replace("-", "_")
+
+
+#: A design row's keys that hold a peak, and their names in a response (``{key}``: the
+#: response's name, :func:`_key`); the displacement keeps the first.
+_PEAK_KEYS = {"peak_amplitude": "peak_{key}", "baseline_peak": "baseline_{key}",
+              "peak_e_minus": "peak_{key}_e_minus", "peak_e_plus": "peak_{key}_e_plus",
+              "worst_peak": "worst_{key}", "nominal_peak": "nominal_{key}"}  # fmt: skip
+
+
+def _named(rows: list[dict[str, Any]], response: str) -> list[dict[str, Any]]:
+    """``rows`` with their peak keys named for ``response`` (SI in its unit): the JSON and CSV
+    say which response a number is; the displacement's rows are as they were."""
+    return [{_renamed(k, response): v for k, v in r.items()} for r in rows]
+
+
+def _renamed(name: str, response: str) -> str:
+    """A design row's key ``name`` under ``response`` (peaks renamed, :data:`_PEAK_KEYS`)."""
+    if response == "displacement" or name not in _PEAK_KEYS:
+        return name
+    return _PEAK_KEYS[name].format(key=_key(response))
+
+
+def _response_json(response: str) -> dict[str, str]:
+    from ..forced.responses import response_unit
+
+    return {"name": response, "unit": response_unit(response)}
 
 
 def _e_range(ns) -> tuple[float, float] | None:
@@ -155,35 +206,42 @@ def _e_range(ns) -> tuple[float, float] | None:
     return lo, hi
 
 
-def _robust(ns, system, forcing, e_range, omegas, gaps) -> None:
+def _robust(ns, system, forcing, e_range, omegas, gaps, response: str) -> None:
     """The robust design over a restitution range (:func:`symimpact.maps.design.robust_design`)."""
     from ..display import display_unit, omega_text, shown
     from ..forced.coverage import FREQUENCIES
     from ..maps.design import robust_design
+    from .frf import response_text
+
+    def value(v: float) -> str:
+        return response_text(response, v)
+
+    def k(name: str) -> str:
+        return _renamed(name, response)
 
     multistart = FREQUENCIES if ns.multistart is None else ns.multistart
     res = robust_design(system, forcing, e_range, omegas, gaps, samples=ns.e_samples,
-                        multistart=multistart,
+                        multistart=multistart, response=response,
                         executor=ns.executor, workers=ns.workers, scheduler=ns.scheduler,
                         progress=not (ns.quiet or ns.json))  # fmt: skip
-    unit, gunit = display_unit("x"), display_unit("gap")
+    gunit = display_unit("gap")
     es = res["e"]
     lines = [f"{len(res['rows'])} clearance(s) at e = " + ", ".join(f"{e:.3g}" for e in es)
              + f" over Ω {shown('omega', omegas[0]):.6g}–{omega_text(omegas[-1])}; without the "
-             "damper the peak "
-             f"is {shown('x', res['rows'][0]['baseline_peak']):.5g} {unit}"]  # fmt: skip
+             f"damper the {'peak' if response == 'displacement' else 'peak ' + response} "
+             f"is {value(res['rows'][0]['baseline_peak'])}"]  # fmt: skip
     for r in res["rows"]:
         lines.append(
-            f"d {shown('gap', r['gap']):.4g} {gunit}: peak {shown('x', min(r['peaks'])):.5g}–"
-            f"{shown('x', r['worst_peak']):.5g} {unit} over e {es[0]:.3g}–{es[-1]:.3g} (worst "
-            f"at e {r['worst_e']:.3g}; nominal {shown('x', r['nominal_peak']):.5g} {unit})"
+            f"d {shown('gap', r['gap']):.4g} {gunit}: peak {value(min(r['peaks']))}–"
+            f"{value(r['worst_peak'])} over e {es[0]:.3g}–{es[-1]:.3g} (worst "
+            f"at e {r['worst_e']:.3g}; nominal {value(r['nominal_peak'])})"
         )
     nb, rb = res["nominal_best"], res["robust_best"]
     lines.append(f"best clearance at the nominal e {es[len(es) // 2]:.3g}: d "
-                 f"{shown('gap', nb['gap']):.4g} {gunit} (peak {shown('x', nb['nominal_peak']):.5g} "
-                 f"{unit}; worst case {shown('x', nb['worst_peak']):.5g} {unit})")  # fmt: skip
+                 f"{shown('gap', nb['gap']):.4g} {gunit} (peak {value(nb['nominal_peak'])}; "
+                 f"worst case {value(nb['worst_peak'])})")  # fmt: skip
     lines.append(f"robust clearance (smallest worst case over e): d {shown('gap', rb['gap']):.4g} "
-                 f"{gunit} (worst case {shown('x', rb['worst_peak']):.5g} {unit} at e "
+                 f"{gunit} (worst case {value(rb['worst_peak'])} at e "
                  f"{rb['worst_e']:.3g})")  # fmt: skip
     if ns.plot:
         from ..plots import plot_robust_design
@@ -192,10 +250,14 @@ def _robust(ns, system, forcing, e_range, omegas, gaps) -> None:
                            f"{omega_text(omegas[-1], '.4g')}, "
                            f"rigid, e {es[0]:.3g}–{es[-1]:.3g}")  # fmt: skip
     if ns.csv:
-        rows = [{"gap": r["gap"], "e": e, "peak_amplitude": p}
+        rows = [{"gap": r["gap"], "e": e, k("peak_amplitude"): p}
                 for r in res["rows"] for e, p in zip(es, r["peaks"], strict=True)]  # fmt: skip
         write_csv(ns.csv, "csv", rows)
-    emit(ns, res, "\n".join(lines))
+    named = {**res, "rows": _named(res["rows"], response),
+             "nominal_best": _named([res["nominal_best"]], response)[0],
+             "robust_best": _named([res["robust_best"]], response)[0],
+             "response": _response_json(response)}  # fmt: skip
+    emit(ns, named, "\n".join(lines))
 
 
 #: The subcommands this module runs.

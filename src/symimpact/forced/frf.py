@@ -447,12 +447,20 @@ class _SweepPoint:
     periodic: bool
     period_multiple: int
     impacts_per_period: float
+    response: float = math.nan  # the response asked of the sweep over its kept periods [SI]
 
 
-def _sweep_runs(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> list[_SweepPoint]:
+def _sweep_runs(
+    system, forcing, e, omegas, settled: float = SWEEP_SETTLED, response: str | None = None
+) -> list[_SweepPoint]:
     """Brute-force sweep: at each Ω, a run from the previous end state until its transient has
     fallen to ``settled``; the steady amplitude over the last SWEEP_KEPT periods, the end state
-    and whether the motion repeats (:func:`symimpact.forced.steady_state`)."""
+    and whether the motion repeats (:func:`symimpact.forced.steady_state`); with ``response``
+    (:data:`symimpact.forced.responses.RESPONSES`) also that response over the same periods
+    (:func:`symimpact.forced.responses.steady_response`; a compliant run then records its state
+    at :data:`symimpact.forced.responses.SAMPLES` samples a period)."""
+    from .responses import SAMPLES, steady_response
+
     state = (0.0, 0.0, 0.0, 0.0)
     rows = []
     for omega in omegas:
@@ -463,8 +471,17 @@ def _sweep_runs(system, forcing, e, omegas, settled: float = SWEEP_SETTLED) -> l
                               y0=state[2], ydot0=state[3])  # fmt: skip
         x, v, y, u = res.final_state
         st = res.steady
+        value = math.nan
+        if response is not None and is_rigid(e):  # the run's state is rebuilt exactly
+            value = steady_response(response, res, periods - SWEEP_KEPT)
+        elif response is not None:  # the kept periods again, recorded densely
+            again = simulate_forced(system, f, **simulation_arguments(e), periods=SWEEP_KEPT,
+                                    x0=x, xdot0=v, y0=y, ydot0=u,
+                                    samples_per_period=SAMPLES)  # fmt: skip
+            value = steady_response(response, again, 0)
         rows.append(_SweepPoint(float(omega), st.amplitude, (x, v, y - x, u), bool(st.periodic),
-                                int(st.period_multiple or 0), float(st.impacts_per_period)))  # fmt: skip
+                                int(st.period_multiple or 0), float(st.impacts_per_period),
+                                float(value)))  # fmt: skip
         # the forcing phase restarts at t = 0: the end state after whole periods is at phase φ
         state = (x, v, y, u)
     return rows

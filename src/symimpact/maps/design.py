@@ -54,7 +54,7 @@ from ..errors import ParameterError
 from ..forced.contact_law import checked, is_rigid
 from ..forced.coverage import FREQUENCIES
 from ..forced.forcing import Forcing
-from ..forced.frf import SWEEP_ACCURACY, _sweep, frequency_response
+from ..forced.frf import SWEEP_ACCURACY, _sweep, _sweep_runs, frequency_response
 from ..system import ImpactSystem
 from .engine import _executor, _gather, _launch, _progress
 from .points import MapPoints, as_points
@@ -86,6 +86,7 @@ class _DesignBase:
     e: float
     omegas: tuple[float, ...]
     multistart: int = FREQUENCIES
+    response: str = "displacement"
 
 
 def _design_system(base: _DesignBase, names: Sequence[str], values: Sequence[float]):
@@ -112,7 +113,7 @@ def _stable_spans(branches) -> list[tuple[float, float]]:
 
 def design_row(
     system: ImpactSystem, forcing: Forcing, e: float, omegas: Any, curve: Any = None,
-    multistart: int = FREQUENCIES,
+    multistart: int = FREQUENCIES, response: str = "displacement",
 ) -> dict[str, Any]:  # fmt: skip
     """The design map's figures for one system over the band ``omegas`` [rad/s] (module text):
     ``peak_amplitude`` [m] and ``peak_omega`` [rad/s] of the worst steady motion, ``peak_motion``
@@ -121,32 +122,56 @@ def design_row(
     ``branches`` of the curve and how many frequencies of the band each kind of motion covers.
     ``curve``: the system's frequency response over ``omegas`` if already computed (its sweeps
     are run and stored in it if it has none); ``multistart``: frequencies of the curve's
-    multi-start (:mod:`symimpact.forced.coverage`; 0: none)."""
+    multi-start (:mod:`symimpact.forced.coverage`; 0: none).  ``response``
+    (:data:`symimpact.forced.responses.RESPONSES`): what the peaks measure [its SI unit] —
+    the curve in that response (:func:`symimpact.forced.response_curve.response_curve`), the
+    primary alone's closed form, and the sweeps measured in it over their kept periods."""
     w = np.asarray(omegas, dtype=float)
     if curve is None:
         curve = frequency_response(system, forcing, e, w, multistart=multistart)
+    if response != "displacement":
+        return _response_row(system, forcing, e, w, curve, response)
     if curve.sweep_up is None or not len(curve.sweep_up):
         curve.sweep_up = _sweep(system, forcing, e, w)
         curve.sweep_down = _sweep(system, forcing, e, w[::-1])[::-1]
+    return _row(system, w, curve, curve, curve.sweep_up, curve.sweep_down)
+
+
+def _response_row(system, forcing, e, w, curve, response: str) -> dict[str, Any]:
+    """:func:`design_row` in a response other than the displacement."""
+    from ..forced.response_curve import response_curve
+
+    shown = response_curve(curve, response, system, forcing, e)
+    up = _sweep_runs(system, forcing, e, w, response=response)
+    down = _sweep_runs(system, forcing, e, w[::-1], response=response)[::-1]
+    return _row(system, w, curve, shown,
+                np.array([(p.omega, p.response) for p in up]),
+                np.array([(p.omega, p.response) for p in down]))  # fmt: skip
+
+
+def _row(system, w, curve, shown, sweep_up, sweep_down) -> dict[str, Any]:
+    """A design row: ``curve`` (the displacement's: where the motion is stable or without
+    impacts), ``shown`` (the same curve in the measured response: its located peaks) and the
+    sweeps ((Ω, response) rows, up and down)."""
     linear = curve.baseline[:, 1]  # the primary alone (Step 8), computed with the curve
     spans = _stable_spans(curve.branches)
     stable = np.array([any(lo <= x <= hi for lo, hi in spans) for x in w], dtype=bool)
     free = linear < system.gap / 2.0
-    located = curve.peak
+    located = shown.peak
     if located is None:
         peak, peak_omega, motion = 0.0, math.nan, ""
     else:
         peak, peak_omega = located.amplitude, located.omega
         motion = MOTIONS[0] if located.motion == "periodic" else MOTIONS[1]
     swept = [(float(a), float(x), motion)
-             for motion, sweep in ((MOTIONS[2], curve.sweep_up), (MOTIONS[3], curve.sweep_down))
+             for motion, sweep in ((MOTIONS[2], sweep_up), (MOTIONS[3], sweep_down))
              for x, a in sweep]  # fmt: skip
     top = max(swept)
     # a swept amplitude carries its transient (≤ SWEEP_ACCURACY): it names the peak only where
     # it exceeds every traced motion by more than that (a motion no branch holds)
     if top[0] > peak * (1.0 + SWEEP_ACCURACY):
         peak, peak_omega, motion = top
-    base = curve.baseline_peak
+    base = shown.baseline_peak
     return {
         "peak_amplitude": peak,
         "peak_omega": peak_omega,
@@ -170,7 +195,7 @@ def _design_chunk(payload: tuple[_DesignBase, tuple[str, ...], list[int], np.nda
         row: dict[str, Any] = {"run": int(run)}
         row.update(zip(names, (float(x) for x in v), strict=True))
         row.update(design_row(system, base.forcing, base.e, np.array(base.omegas),
-                              multistart=base.multistart))  # fmt: skip
+                              multistart=base.multistart, response=base.response))  # fmt: skip
         rows.append(row)
     return rows
 
@@ -205,6 +230,7 @@ def design_map(
     force: bool = False,
     progress: bool | Callable[[int, int], None] = False,
     multistart: int = FREQUENCIES,
+    response: str = "displacement",
 ):
     """The clearance design map (module text): one row per point of ``grid`` (``{name:
     values}`` over :data:`DESIGN_SWEEPABLE`, values in SI or with units) for the contact ``e``
@@ -212,8 +238,12 @@ def design_map(
     under ``forcing`` over the band ``omegas`` [rad/s].  ``executor``,
     ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
     :func:`symimpact.maps.parameter_map`: the same executors, and a resumable ``out`` file;
-    ``multistart``: frequencies of each curve's multi-start (0: none)."""
+    ``multistart``: frequencies of each curve's multi-start (0: none); ``response``: what the
+    peaks measure (:func:`design_row`)."""
+    from ..forced.responses import checked_response
+
     system, forcing, e = checked(system, forcing, e)
+    response = checked_response(response, forcing, rigid=is_rigid(e))
     if not isinstance(grid, Mapping) or not grid:
         raise ParameterError("grid", "give the clearance (gap) and/or mass_ratio values")
     bad = [n for n in grid if n not in DESIGN_SWEEPABLE]
@@ -232,7 +262,7 @@ def design_map(
             "stays at rest and every peak ratio is 0/0",
         )
     multistart = checks.whole_number("multistart", multistart, 0, 1000)
-    base = _DesignBase(system, forcing, e, tuple(float(x) for x in w), multistart)
+    base = _DesignBase(system, forcing, e, tuple(float(x) for x in w), multistart, response)
     for row in points.values:  # a bad point fails here, in one line, before any run
         _design_system(base, points.names, row)
     executor = _executor(executor, workers, client, scheduler)
@@ -243,8 +273,10 @@ def design_map(
         settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, **motion,
                     **contact,
                     "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip
-        if multistart != FREQUENCIES:  # (files written with the default carry no entry)
+        if multistart != FREQUENCIES:  # (files written with the defaults carry no entry)
             settings["multistart"] = multistart
+        if response != "displacement":
+            settings["response"] = response
         store = MapStore(out, system=system, points=points, settings=settings, force=force,
                          outputs=DESIGN_OUTPUTS, table=design_table)  # fmt: skip
     try:
@@ -293,6 +325,7 @@ def refine_best(
     *,
     tolerance: float = TOLERANCE,
     multistart: int = FREQUENCIES,
+    response: str = "displacement",
 ) -> list[dict[str, Any]]:
     """For each mass ratio (or impact mass) of a design ``table`` (from :func:`design_map` over
     the clearance), the best clearance refined: Brent's bounded method on the peak of
@@ -300,7 +333,7 @@ def refine_best(
     end where the best lies there), stopped at ``tolerance`` [m] on d.  Each row: the design
     row at the refined d, with ``tolerance``, ``grid_gap`` (the grid's best), ``evaluations``,
     ``walk_moves`` (the moves of the walk after Brent's method, module text) and, for rigid impacts, ``peak_e_minus`` / ``peak_e_plus``: the peak at e − 0.1 and e + 0.1
-    (within 0–1) for the refined d; ``multistart`` as for :func:`design_row`."""
+    (within 0–1) for the refined d; ``multistart`` and ``response`` as for :func:`design_row`."""
     from scipy.optimize import minimize_scalar
 
     system, forcing, e = checked(system, forcing, e)
@@ -322,7 +355,8 @@ def refine_best(
 
         def row(d: float, sys_=base, cache=cache) -> dict[str, Any]:
             if d not in cache:
-                cache[d] = design_row(sys_.with_(gap=d), forcing, e, w, multistart=multistart)
+                cache[d] = design_row(sys_.with_(gap=d), forcing, e, w, multistart=multistart,
+                                      response=response)  # fmt: skip
             return cache[d]
 
         lo, hi = gaps[max(i - 1, 0)], gaps[min(i + 1, len(gaps) - 1)]
@@ -340,7 +374,8 @@ def refine_best(
             for key, de in (("peak_e_minus", -0.1), ("peak_e_plus", 0.1)):
                 ee = min(max(float(e) + de, 0.0), 1.0)
                 result[key] = design_row(base.with_(gap=best_d), forcing, ee, w,
-                                         multistart=multistart)["peak_amplitude"]  # fmt: skip
+                                         multistart=multistart,
+                                         response=response)["peak_amplitude"]  # fmt: skip
         out.append(result)
     return out
 
@@ -403,6 +438,7 @@ def robust_design(
     *,
     samples: int = E_SAMPLES,
     multistart: int = FREQUENCIES,
+    response: str = "displacement",
     **map_options: Any,
 ) -> dict[str, Any]:
     """A clearance design robust to an uncertain restitution e ∈ ``e_range`` (rigid impacts).
@@ -427,7 +463,7 @@ def robust_design(
     es[samples // 2] = 0.5 * (lo + hi)
     w = np.asarray(omegas, dtype=float)
     tables = [design_map(system, forcing, float(e), w, {"gap": gaps}, multistart=multistart,
-                         **map_options) for e in es]  # fmt: skip
+                         response=response, **map_options) for e in es]  # fmt: skip
     rows = []
     for k in range(len(tables[0])):
         d = float(tables[0]["gap"].iloc[k])
@@ -435,7 +471,8 @@ def robust_design(
         sys_d = system.with_(gap=d)
 
         def peak_at(e: float, sys_d=sys_d) -> float:
-            return design_row(sys_d, forcing, e, w, multistart=multistart)["peak_amplitude"]
+            return design_row(sys_d, forcing, e, w, multistart=multistart,
+                              response=response)["peak_amplitude"]  # fmt: skip
 
         worst_e, worst = worst_over(es, peaks, peak_at)
         rows.append({
