@@ -450,7 +450,8 @@ def robust_design(
     :data:`E_TOLERANCE`; :func:`worst_over`).  Returns ``{"rows": per clearance
     {gap, peaks (one per sample), worst_peak, worst_e, nominal_peak (the middle e),
     baseline_peak}, "e": the samples, "nominal_best": the row of the smallest nominal peak,
-    "robust_best": the row of the smallest worst case}`` (SI; best clearances on the grid)."""
+    "robust_best": the row of the smallest worst case}`` (SI; best clearances on the grid);
+    ``response``: what the peaks measure (:func:`design_row`)."""
     lo, hi = (float(v) for v in e_range)
     if not 0.0 <= lo < hi <= 1.0:
         raise ParameterError("e", f"a range needs 0 ≤ low < high ≤ 1, got {lo:g}:{hi:g}")
