@@ -82,7 +82,7 @@ def _real(value) -> mp.mpf | None:
 def kernel_points(kernel: Kernel) -> list[CheckPoint]:
     """:data:`POINTS` recorded points of ``kernel`` (module text)."""
     symbols = [a.symbol for a in kernel.args]
-    exact = sp.lambdify(symbols, kernel.expr, "mpmath", cse=True)
+    exact = sp.lambdify(symbols, kernel.expr, "mpmath")
     magnitude = sp.lambdify(symbols, kernel.magnitude or 0, "mpmath")
     checks = [sp.lambdify(symbols, c, "mpmath") for c in kernel.constraints]
     out: list[CheckPoint] = []
