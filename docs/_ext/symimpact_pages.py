@@ -255,8 +255,9 @@ def notebooks_page(folder: Path) -> str:
     out = ["# Notebooks", "",
            "One Jupyter notebook per derivation step: each runs the step's own statements from "
            "`derive/` one board line at a time, in the paper's order, showing every result, "
-           "check and erratum as it arises, and ends with exercises that change one assumption "
-           "and show its effect. A last notebook walks through [regenerating after a "
+           "check and erratum as it arises, and ends with exercises that change one assumption: "
+           "each asks for a value, checks the reader's answer (`derive.teach.check`) and keeps "
+           "its solution in a collapsed cell. A last notebook walks through [regenerating after a "
            "change](regenerating.md).", "",
            "Run them from the checkout:", "", "```console",
            "$ pip install -e \".[teach]\"        # JupyterLab, nbformat, ipykernel",
