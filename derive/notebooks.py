@@ -24,6 +24,7 @@ from pathlib import Path
 
 from . import STEPS
 from .exercises import EXERCISES
+from .teach import ANSWER_RTOL
 
 #: Board methods and local aliases of ``board.write`` whose call ends a cell.
 _BOARD_CALLS = {"write", "check", "erratum", "kernel", "fixed_point", "constant"}
@@ -234,7 +235,11 @@ def exercise_cells(k: int, ex) -> list:
         ),
         nbformat.v4.new_code_cell(f"answer_{k} = ...  # your computation here"),
         solution,
-        nbformat.v4.new_code_cell(f"check(answer_{k}, expected_{k})"),
+        nbformat.v4.new_code_cell(
+            f"check(answer_{k}, expected_{k}"
+            + ("" if ex.rtol == ANSWER_RTOL else f", rtol={ex.rtol:g}")
+            + ")"
+        ),
     ]
 
 

@@ -93,9 +93,9 @@ def _number(value: Any) -> complex:
     return complex(sp.N(sp.sympify(value), 30))
 
 
-def check(answer: Any, expected: Any) -> bool | None:
-    """Compare an exercise's ``answer`` with its hidden solution's ``expected`` (numbers, to
-    :data:`ANSWER_RTOL`) and say so; ``None`` while the answer cell still holds ``...``."""
+def check(answer: Any, expected: Any, rtol: float = ANSWER_RTOL) -> bool | None:
+    """Compare an exercise's ``answer`` with its hidden solution's ``expected`` (numbers, to the
+    relative ``rtol``) and say so; ``None`` while the answer cell still holds ``...``."""
     if answer is ...:
         print("Not answered yet: compute the value in the cell above, assign it to the answer "
               "variable and run this cell again (the solution is in the hidden cell above).")  # fmt: skip
@@ -105,7 +105,7 @@ def check(answer: Any, expected: Any) -> bool | None:
     except (TypeError, ValueError) as exc:
         print(f"Your answer is not a number ({type(answer).__name__}: {exc}).")
         return False
-    if abs(got - want) <= ANSWER_RTOL * max(abs(want), 1e-300):
+    if abs(got - want) <= rtol * max(abs(want), 1e-300):
         print(f"Right: {answer}.")
         return True
     print(

@@ -128,9 +128,10 @@ def test_check_tells_right_wrong_and_unanswered(capsys):
     assert check(np.float64(2**0.5) * (1 + 1e-12), sp.sqrt(2)) is True
     assert check(2**0.5 * (1 + 1e-6), sp.sqrt(2)) is False
     assert check("one", 1.0) is False
+    assert check(2**0.5 * (1 + 1e-6), sp.sqrt(2), rtol=1e-5) is True  # an approximate solution
     said = capsys.readouterr().out.splitlines()
     assert [s.split(":")[0].split(" ")[0] for s in said] == ["Not", "Right", "Right", "Not",
-                                                             "Your"]  # fmt: skip
+                                                             "Your", "Right"]  # fmt: skip
 
 
 def test_notebooks_refuse_a_folder_they_cannot_write(tmp_path):
