@@ -338,8 +338,10 @@ for Wv in (10, 20, 30, 38, 60):
             "Elastic impacts",
             "At e = 1 no energy is lost in the impacts; the right side c keeps its form.",
             """show_value(sp.Eq(sp.Symbol("c"), sp.factor(c_coef.subs(e, 1))))""",
-            ask="c at e = 1 for the issue's system at Ω = 30 rad/s (M 1 kg, K 1000 N/m, C 0.5 N s/m, m 0.05 kg, d 20 mm, F0 2 N).",
-            answer="c_coef.subs(e, 1).subs(closed).subs({M: 1, K: 1000, C: sp.Rational(1, 2), m: sp.Rational(1, 20), d: sp.Rational(1, 50), F0: 2, Xb: 0, W: 30})",
+            ask="c/√(a² + b²) at e = 1 for the issue's system at Ω = 30 rad/s (M 1 kg, K 1000 "
+            "N/m, C 0.5 N s/m, m 0.05 kg, d 20 mm, F0 2 N): a, b and c share an arbitrary "
+            "factor, their ratio does not.",
+            answer="(lambda a_, b_, c_: sp.N(c_ / sp.sqrt(a_**2 + b_**2), 20))(*[v.subs(e, 1).subs(closed).subs({M: 1, K: 1000, C: sp.Rational(1, 2), m: sp.Rational(1, 20), d: sp.Rational(1, 50), F0: 2, Xb: 0, W: 30}) for v in (a_coef, b_coef, c_coef)])",
         ),
     ),
     "hunt_crossley": (
