@@ -81,3 +81,20 @@ def test_cli_refuses_a_response_it_cannot_give_in_one_line(extra, word, capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and word in err[0], err
+
+
+def test_robust_design_in_a_response(tmp_path, capsys):
+    """The design robust to e in the force: its JSON keys and text name the force, and its
+    figure is drawn in newtons (it was drawn as a displacement in mm before)."""
+    plot = tmp_path / "robust.png"
+    argv = ["design", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--force", "2 N",
+            "--contact", "rigid", "--e", "0.4:0.8", "--e-samples", "3", "--omega-range",
+            "30:33:1", "--gaps", "1 km", "--executor", "serial", "--quiet", "--multistart", "0",
+            "--response", "force", "--plot", str(plot), "--json"]  # fmt: skip
+    assert main(argv) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["response"] == {"name": "force", "unit": "N"}
+    (row,) = data["rows"]
+    # no impacts: every e gives the primary alone's force
+    assert row["worst_force"] == pytest.approx(row["baseline_force"], rel=1e-9)
+    assert plot.stat().st_size > 0

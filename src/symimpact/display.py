@@ -51,27 +51,21 @@ OUTPUT_SI_UNITS = {
     "baseline_omega": "rad/s",
     "worst_peak": "m",
     "nominal_peak": "m",
-    # a design's peaks in a response (design --response NAME): peak_force, baseline_force, …
-    **{
-        f"{where}_{q}{end}": unit
-        for q, unit in (
-            ("relative_displacement", "m"),
-            ("acceleration", "m/s^2"),
-            ("force", "N"),
-            ("transmissibility", "dimensionless"),
-        )
-        for where, end in (
-            ("peak", ""),
-            ("baseline", ""),
-            ("peak", "_e_minus"),
-            ("peak", "_e_plus"),
-            ("worst", ""),
-            ("nominal", ""),
-        )
-    },
     "worst_e": "dimensionless",
     "e": "dimensionless",
 }
+
+#: A design row's keys that hold a peak of the primary's response, and their names when the
+#: design measures another response than the displacement (``design --response``; ``{key}``:
+#: the response's JSON name, e.g. ``peak_force``).
+DESIGN_PEAK_NAMES = {"peak_amplitude": "peak_{key}", "baseline_peak": "baseline_{key}",
+                     "peak_e_minus": "peak_{key}_e_minus", "peak_e_plus": "peak_{key}_e_plus",
+                     "worst_peak": "worst_{key}", "nominal_peak": "nominal_{key}"}  # fmt: skip
+OUTPUT_SI_UNITS.update({
+    name.format(key=key): OUTPUT_SI_UNITS[key]
+    for key in ("relative_displacement", "acceleration", "force", "transmissibility")
+    for name in DESIGN_PEAK_NAMES.values()
+})  # fmt: skip
 
 #: The unit each quantity is shown in (quantities not listed: their SI unit).
 DISPLAY_UNITS: dict[str, str] = {

@@ -114,7 +114,7 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     import numpy as np
 
     from .display import display_unit, shown
-    from .forced.responses import AXIS, QUANTITY
+    from .forced.responses import AXIS, QUANTITY, shown_response
 
     def W(v):  # Ω in its display unit (rad/s, or Hz when the band was given in Hz)
         return shown("omega", v)
@@ -123,7 +123,7 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     quantity = QUANTITY[name]
 
     def Y(v):  # the response in its display unit
-        return v if quantity is None else shown(quantity, v)
+        return shown_response(name, v)
 
     base = frf.baseline
     ax.plot(W(base[:, 0]), Y(base[:, 1]), color="0.6", lw=1.0, label="without the damper")
@@ -231,13 +231,11 @@ def plot_design(
     line per mass ratio, the best clearance of each marked, and the primary without the damper's
     peak (dashed)."""
     from .display import shown
-    from .forced.responses import QUANTITY
+    from .forced.responses import shown_response
     from .maps.design import best_clearances
 
-    quantity = QUANTITY[response]
-
     def Y(v):  # the response in its display unit
-        return v if quantity is None else shown(quantity, v)
+        return shown_response(response, v)
 
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 5))
@@ -255,46 +253,53 @@ def plot_design(
     _finish_design(plt, fig, ax, float(table["baseline_peak"].max()), path, title, response)
 
 
-def plot_robust_design(result: dict[str, Any], path: str | os.PathLike, title: str = "") -> None:
+def plot_robust_design(
+    result: dict[str, Any], path: str | os.PathLike, title: str = "",
+    response: str = "displacement",
+) -> None:  # fmt: skip
     """A design robust to the restitution (:func:`symimpact.maps.design.robust_design`): the
-    band of the peak over the range of e against the clearance, the nominal e's curve, the worst
-    case, both best clearances marked, and the primary without the damper (dashed)."""
+    band of the peak (of ``response``, as the design was run) over the range of e against the
+    clearance, the nominal e's curve, the worst case, both best clearances marked, and the
+    primary without the damper (dashed)."""
     from .display import shown
+    from .forced.responses import shown_response
+
+    def Y(v):  # the response in its display unit
+        return shown_response(response, v)
 
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 5))
     rows = result["rows"]
     d = [shown("gap", r["gap"]) for r in rows]
-    low = [shown("x", min(r["peaks"])) for r in rows]
-    worst = [shown("x", r["worst_peak"]) for r in rows]
+    low = [Y(min(r["peaks"])) for r in rows]
+    worst = [Y(r["worst_peak"]) for r in rows]
     es = result["e"]
     ax.fill_between(d, low, worst, color="C0", alpha=0.25,
                     label=f"peak over e {es[0]:.3g}–{es[-1]:.3g}")  # fmt: skip
-    ax.plot(d, [shown("x", r["nominal_peak"]) for r in rows], "o-", color="C0", ms=3, lw=1.3,
+    ax.plot(d, [Y(r["nominal_peak"]) for r in rows], "o-", color="C0", ms=3, lw=1.3,
             label=f"nominal e {es[len(es) // 2]:.3g}")  # fmt: skip
     ax.plot(d, worst, "s--", color="C3", ms=3, lw=1.0, label="worst case over e")
     nb, rb = result["nominal_best"], result["robust_best"]
-    ax.plot(shown("gap", nb["gap"]), shown("x", nb["nominal_peak"]), "*", ms=13, color="C0",
+    ax.plot(shown("gap", nb["gap"]), Y(nb["nominal_peak"]), "*", ms=13, color="C0",
             mec="k", label="best at the nominal e")  # fmt: skip
-    ax.plot(shown("gap", rb["gap"]), shown("x", rb["worst_peak"]), "*", ms=13, color="C3",
+    ax.plot(shown("gap", rb["gap"]), Y(rb["worst_peak"]), "*", ms=13, color="C3",
             mec="k", label="robust (smallest worst case)")  # fmt: skip
-    _finish_design(plt, fig, ax, rows[0]["baseline_peak"], path, title)
+    _finish_design(plt, fig, ax, rows[0]["baseline_peak"], path, title, response)
 
 
 def _finish_design(plt: Any, fig: Any, ax: Any, baseline: float, path: Any, title: str,
                    response: str = "displacement") -> None:  # fmt: skip
     """A design figure's common end: the primary alone's peak (dashed), the axes (the peak of
     ``response``), the legend, the title, and the file written."""
-    from .display import display_unit, shown
-    from .forced.responses import AXIS, QUANTITY
+    from .display import display_unit
+    from .forced.responses import AXIS, QUANTITY, shown_response
 
     quantity = QUANTITY[response]
-    shown_baseline = baseline if quantity is None else shown(quantity, baseline)
-    ax.axhline(shown_baseline, ls="--", color="0.5", lw=1.0, label="without the damper")
+    ax.axhline(shown_response(response, baseline), ls="--", color="0.5", lw=1.0,
+               label="without the damper")  # fmt: skip
     ax.set_xlabel(f"clearance d [{display_unit('gap')}]")
     unit = "" if quantity is None else f" [{display_unit(quantity)}]"
-    what = ("peak amplitude" if response == "displacement"
-            else f"peak of {AXIS[response].split(' [')[0]}")  # fmt: skip
+    what = "peak amplitude" if response == "displacement" else f"peak of {AXIS[response]}"
     ax.set_ylabel(f"{what} over the band{unit}")
     ax.set_ylim(bottom=0)
     ax.legend(fontsize=8)

@@ -158,18 +158,6 @@ def run(ns) -> None:
          "\n".join(lines))  # fmt: skip
 
 
-def _key(response: str) -> str:
-    """The name a design's peaks carry: ``amplitude`` (displacement) or the response's."""
-    return "amplitude" if response == "displacement" else response.replace("-", "_")
-
-
-#: A design row's keys that hold a peak, and their names in a response (``{key}``: the
-#: response's name, :func:`_key`); the displacement keeps the first.
-_PEAK_KEYS = {"peak_amplitude": "peak_{key}", "baseline_peak": "baseline_{key}",
-              "peak_e_minus": "peak_{key}_e_minus", "peak_e_plus": "peak_{key}_e_plus",
-              "worst_peak": "worst_{key}", "nominal_peak": "nominal_{key}"}  # fmt: skip
-
-
 def _named(rows: list[dict[str, Any]], response: str) -> list[dict[str, Any]]:
     """``rows`` with their peak keys named for ``response`` (SI in its unit): the JSON and CSV
     say which response a number is; the displacement's rows are as they were."""
@@ -177,10 +165,14 @@ def _named(rows: list[dict[str, Any]], response: str) -> list[dict[str, Any]]:
 
 
 def _renamed(name: str, response: str) -> str:
-    """A design row's key ``name`` under ``response`` (peaks renamed, :data:`_PEAK_KEYS`)."""
-    if response == "displacement" or name not in _PEAK_KEYS:
+    """A design row's key ``name`` under ``response`` (peaks renamed,
+    :data:`symimpact.display.DESIGN_PEAK_NAMES`)."""
+    from ..display import DESIGN_PEAK_NAMES
+    from ..forced.responses import response_key
+
+    if response == "displacement" or name not in DESIGN_PEAK_NAMES:
         return name
-    return _PEAK_KEYS[name].format(key=_key(response))
+    return DESIGN_PEAK_NAMES[name].format(key=response_key(response))
 
 
 def _response_json(response: str) -> dict[str, str]:
@@ -248,7 +240,7 @@ def _robust(ns, system, forcing, e_range, omegas, gaps, response: str) -> None:
 
         plot_robust_design(res, ns.plot, title=f"band {shown('omega', omegas[0]):.4g}–"
                            f"{omega_text(omegas[-1], '.4g')}, "
-                           f"rigid, e {es[0]:.3g}–{es[-1]:.3g}")  # fmt: skip
+                           f"rigid, e {es[0]:.3g}–{es[-1]:.3g}", response=response)  # fmt: skip
     if ns.csv:
         rows = [{"gap": r["gap"], "e": e, k("peak_amplitude"): p}
                 for r in res["rows"] for e, p in zip(es, r["peaks"], strict=True)]  # fmt: skip

@@ -46,13 +46,12 @@ def add_parser(sub: Any) -> None:
 
 def response_text(name: str, value: float, spec: str = ".5g", unit: bool = True) -> str:
     """``value`` [SI] of the response ``name`` in its display unit (with it, if ``unit``)."""
-    from ..display import display_unit, shown
-    from ..forced.responses import QUANTITY
+    from ..display import display_unit
+    from ..forced.responses import QUANTITY, shown_response
 
     q = QUANTITY[name]
-    if q is None:
-        return format(value, spec)
-    return format(shown(q, value), spec) + (f" {display_unit(q)}" if unit else "")
+    text = format(shown_response(name, value), spec)
+    return text + (f" {display_unit(q)}" if unit and q is not None else "")
 
 
 def add_band(g: Any) -> None:
@@ -153,7 +152,7 @@ def run(ns) -> None:
     forcing = forcing_of(ns, omega=float(omegas[0]))
     e = contact_of(ns)
     from ..forced.contact_law import is_rigid
-    from ..forced.responses import checked_response
+    from ..forced.responses import checked_response, response_key
 
     response = checked_response(ns.response, forcing, rigid=is_rigid(e))
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps)
@@ -170,7 +169,7 @@ def run(ns) -> None:
         plot_frf(frf, ns.plot, title=f"m/M = {system.m / system.M:.3g}, d = "
                  f"{shown('gap', system.gap):.4g} {display_unit('gap')}, {contact_title(ns, e)}")  # fmt: skip
     what = "amplitude" if response == "displacement" else response
-    key = "amplitude" if response == "displacement" else response.replace("-", "_")
+    key = response_key(response)
     lines = [
         f"Ω {shown('omega', omegas[0]):.6g}–{omega_text(omegas[-1])}: {len(frf.branches)} "
         f"branch(es), "

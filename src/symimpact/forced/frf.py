@@ -49,6 +49,7 @@ from .coverage import FREQUENCIES, Coverage, attractors
 from .forcing import Forcing
 from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
+from .responses import SAMPLES, response_key, steady_response
 from .shooting import shoot, shoot_from_rest
 from .simulation import settling_periods, simulate_forced
 
@@ -121,7 +122,7 @@ class FrequencyResponse:
         out = self._as_dict()
         if self.response == "displacement":
             return out
-        key = self.response.replace("-", "_")
+        key = response_key(self.response)
 
         def renamed(row):
             if isinstance(row, dict):
@@ -459,8 +460,6 @@ def _sweep_runs(
     (:data:`symimpact.forced.responses.RESPONSES`) also that response over the same periods
     (:func:`symimpact.forced.responses.steady_response`; a compliant run then records its state
     at :data:`symimpact.forced.responses.SAMPLES` samples a period)."""
-    from .responses import SAMPLES, steady_response
-
     state = (0.0, 0.0, 0.0, 0.0)
     rows = []
     for omega in omegas:

@@ -214,6 +214,20 @@ def response_unit(name: str) -> str:
     return RESPONSES[name][0]
 
 
+def response_key(name: str) -> str:
+    """The name the response ``name``'s values carry in JSON and CSV: ``amplitude`` for the
+    displacement, else the response's own (``force``, ``relative_displacement``, …)."""
+    return "amplitude" if name == "displacement" else name.replace("-", "_")
+
+
+def shown_response(name: str, value: Any) -> Any:
+    """``value`` [SI] of the response ``name`` in its display unit (a transmissibility as it is)."""
+    from ..display import shown
+
+    quantity = QUANTITY[name]
+    return value if quantity is None else shown(quantity, value)
+
+
 __all__ = [
     "RESPONSES",
     "checked_response",

@@ -31,19 +31,15 @@ LEVELS = (1.0, 5.0, 10.0)  # per cent
 BAND_COLOURS = ["#00204d", "#575d6d", "#a59c74", "#ffea46"]
 
 
-def _outline():
+def _stroke(width: float, colour: str):
+    """A line's outline, so that it is seen on any band of the map."""
     from matplotlib import patheffects
 
-    return patheffects.withStroke(linewidth=2.5, foreground="k")  # a white line on a light band
+    return [patheffects.withStroke(linewidth=width, foreground=colour)]
 
 
-def _halo():
-    from matplotlib import patheffects
-
-    return [patheffects.withStroke(linewidth=3, foreground="w")]  # a line seen on any band
-
-
-HALO = _halo()
+HALO = _stroke(3, "w")  # a black line's white halo
+OUTLINE = _stroke(2.5, "k")  # a white line's black outline, seen on the light bands
 STEPS = 1 + len(MAP_K)
 
 
@@ -86,13 +82,13 @@ def accurate_by_cancellation(err: np.ndarray, levels: tuple[float, ...] = LEVELS
     out = np.zeros(err.shape, dtype=bool)
     below = -1.0  # the first band includes an error of exactly 0
     for level in levels:
-        within = np.abs(err) <= level
-        regions, n = ndimage.label(within, structure=np.ones((3, 3)))
-        ids = np.arange(1, n + 1)
-        positive = ndimage.maximum(err, regions, ids) > 0 if n else np.array([])
-        negative = ndimage.minimum(err, regions, ids) < 0 if n else np.array([])
-        mixed = ids[positive & negative] if n else ids
-        out |= np.isin(regions, mixed) & (np.abs(err) > below)
+        regions, n = ndimage.label(np.abs(err) <= level, structure=np.ones((3, 3)))
+        if n:
+            ids = np.arange(1, n + 1)
+            both = (np.asarray(ndimage.maximum(err, regions, ids)) > 0) & (
+                np.asarray(ndimage.minimum(err, regions, ids)) < 0
+            )
+            out |= np.isin(regions, ids[both]) & (np.abs(err) > below)
         below = level
     return out
 
@@ -133,7 +129,7 @@ def _accuracy_map(s: Section, folder: Path, n: int, tick: Any) -> None:
                     levels=[0.0],
                     colors="w",
                     linewidths=1.2,
-                    path_effects=[_outline()],
+                    path_effects=OUTLINE,
                 )
             ax.contour(v0, m_ratio, err["penetration"], levels=[0.02], colors="k",
                        linewidths=1.0, linestyles="--", path_effects=HALO)  # fmt: skip
@@ -158,7 +154,7 @@ def _accuracy_map(s: Section, folder: Path, n: int, tick: Any) -> None:
     with plt.rc_context({"hatch.color": "w"}):
         fig.legend(
             [Line2D([], [], color="k", lw=1.0, ls="--", path_effects=HALO),
-             Line2D([], [], color="w", lw=1.2, path_effects=[_outline()]),
+             Line2D([], [], color="w", lw=1.2, path_effects=OUTLINE),
              Patch(facecolor=BAND_COLOURS[1], hatch="////")],
             ["Hertz penetration = 2 cm (the fits' range; extrapolated to its right)",
              "error changes sign", "within a tolerance only where the error changes sign"],
@@ -175,8 +171,8 @@ def _accuracy_map(s: Section, folder: Path, n: int, tick: Any) -> None:
             "1 %, 5 %, 10 % and beyond. The solid white line is where the error changes sign; "
             "hatched cells are within their band only because of that crossing (their connected "
             "region within the band's tolerance holds errors of both signs), not because the "
-            "formula holds there — the table counts them apart. The dashed black line (white halo) is where the Hertz "
-            "penetration reaches 2 cm, the range of the cubic and linear fits (to its right the "
+            "formula holds there — the table counts them apart. The dashed black line (white "
+            "halo) is where the Hertz penetration reaches 2 cm, the range of the cubic and linear fits (to its right the "
             f"fits are extrapolated). Grid {n}×{n} per panel, log-spaced.",
         ),
         Table(
