@@ -35,12 +35,10 @@ import numpy as np
 
 from .. import budgets, checks
 from ..errors import MethodNotApplicable
-from ..generated import rigid_impact as ri
 from ..system import ImpactSystem
-from . import _rigid
+from . import _chain, _rigid
 from .contact_law import CompliantContact, checked, is_rigid, simulation_arguments
 from .forcing import Forcing
-from .linearised import acceleration, flight_matrices, saltation_matrix
 from .simulation import (
     TooManyContacts,
     _simulate,
@@ -188,217 +186,28 @@ def rigid_monodromy(
     * A release (s·ẍ turns positive): the vector fields on both sides agree there (ẍ = 0 and
       ẏ = ẋ), so its saltation is the identity.
 
-    ∂P/∂p is carried by the same chain with the parameter's explicit terms at each link
-    (:class:`_ParameterTerms`): each flight's derivative at its fixed start (the generated
+    ∂P/∂p is carried by the same chain with the parameter's explicit terms at each link: each
+    flight's derivative at its fixed start (the generated
     kernels ``forced_*_d_{F0,X_b,Omega,phi}``, compiled: :func:`._rigid.flight_parameter_terms`),
     an impact's through its time (the wall at d/2) and its law (``*_velocity_after_d_e``), the
     chatter's Δ, and in Ω the end of the k periods, T = 2πk/Ω.
+
+    The chain runs compiled (:func:`._chain.rigid_jacobian`, numba): a tangent vector carried
+    over hundreds of periods (the Lyapunov exponent) or a Newton step of the continuation costs
+    little more than the simulation it follows.
     """
-    M, m = system.M, system.m
-    W, phi = forcing.omega, forcing.phase
-
-    def acc(t: float, x: float, v: float, mu: float = M) -> float:
-        return acceleration(system, forcing, W * t + phi, x, v, mu)
-
-    def acc_t(t: float, mu: float = M) -> float:  # ∂ẍ/∂t at fixed x, ẋ
-        return W * acceleration(system, forcing, W * t + phi + 0.5 * math.pi, 0.0, 0.0, mu)
-
-    stick = np.zeros((4, 2))  # (x, ẋ) → (x, ẋ, z, ẏ) inside a sticking phase: δz = 0, δẏ = δẋ
-    stick[0, 0] = stick[1, 1] = stick[3, 1] = 1.0
-    n = len(events)
-    kind = events[:, _rigid.E_KIND] if n else np.zeros(0)
-    # every flight's Φ at once: the one ending at each event, then the last one to t_end (a
-    # release ends a sticking phase, mass M + m; so does t_end after an accumulation)
-    times = np.concatenate([[0.0], events[:, _rigid.E_T] if n else [], [t_end]])
-    ends_stuck = final_stuck or (n > 0 and kind[-1] == _rigid.KIND_ACCUMULATION)
-    masses = np.where(np.append(kind == _rigid.KIND_RELEASE, ends_stuck), M + m, M)
-    phis = flight_matrices(system, np.diff(times), masses)
-    terms = None
-    if parameter is not None:
-        terms = _ParameterTerms(system, forcing, e, parameter, events, start, times, masses)
-    J = np.eye(4) if terms is None else np.eye(4, 5)
-
-    def stuck_at(J2: np.ndarray, side: float) -> np.ndarray:  # (x, ẋ) rows into a sticking phase
-        out = stick @ J2
-        if terms is not None:
-            out[2, 4] = terms.on_wall(side)  # z = s·d/2 on the wall
-        return out
-
-    i = 0
-    while i < n:
-        row = events[i]
-        t, x, v, u = row[_rigid.E_T], row[_rigid.E_X], row[_rigid.E_XD], row[_rigid.E_YD]
-        if kind[i] == _rigid.KIND_RELEASE:
-            J2 = phis[i, :2, :2] @ J[:2]
-            if terms is not None:
-                J2[:, 4] += terms.flights[i, :2]
-            J = stuck_at(J2, row[_rigid.E_SIDE])
-            i += 1
-            continue
-        J = phis[i] @ J  # to just before the impact
-        if terms is not None:
-            J[:, 4] += terms.flights[i]
-        if i + 1 < n and kind[i + 1] == _rigid.KIND_ACCUMULATION:
-            J2 = _accumulation(system, e, row, events[i + 1], phis[i + 1], J, acc, acc_t, terms, i)
-            J = stuck_at(J2, row[_rigid.E_SIDE])
-            i += 2
-            continue
-        J = saltation_matrix(system, e, u - v, acc(t, x, v)) @ J
-        if terms is not None:
-            J[:, 4] += terms.impact(row, acc)
-        i += 1
-    if ends_stuck:
-        J2 = phis[n, :2, :2] @ J[:2]
-        if terms is not None:
-            J2[:, 4] += terms.flights[n, :2]
-        side = events[-1, _rigid.E_SIDE] if n else 0.0
-        J = stuck_at(J2, side)
-    else:
-        J = phis[n] @ J
-        if terms is not None:
-            J[:, 4] += terms.flights[n]
-    if terms is not None:
-        J[:, 4] += terms.end(end_state, ends_stuck, t_end, acc)
-    return J
-
-
-class _ParameterTerms:
-    """The explicit terms of a parameter p (omega, gap, F0, X_b or e) at each link of
-    :func:`rigid_monodromy`'s chain: what the link's result changes by when p changes at a fixed
-    incoming state (and fixed times), so that the chain carries ∂P/∂p beside the monodromy."""
-
-    def __init__(self, system, forcing, e, parameter, events, start, times, masses):
-        if parameter not in ("omega", "gap", "F0", "X_b", "e"):
-            raise ValueError(f"parameter: one of omega, gap, F0, X_b, e, got {parameter!r}")
-        self.system, self.forcing, self.e, self.parameter = system, forcing, e, parameter
-        n = len(events)
-        # each flight from its start: the state after the previous event (E_XD1: after an
-        # impact, the common speed after an accumulation, the speed at a release)
-        xa = np.concatenate([[start[0]], events[:, _rigid.E_X] if n else []])
-        va = np.concatenate([[start[1]], events[:, _rigid.E_XD1] if n else []])
-        self.flights = np.zeros((n + 1, 4))
-        if parameter in ("F0", "X_b", "omega"):
-            f = forcing
-            d = _rigid.flight_parameter_terms(
-                np.ascontiguousarray(times, dtype=float), np.ascontiguousarray(masses, dtype=float),
-                xa, va, float(system.K), float(system.C), f.F0, f.X_b, f.omega, f.phase,
-                ("F0", "X_b", "omega").index(parameter),
-            )  # fmt: skip
-            self.flights[:, 0], self.flights[:, 1], self.flights[:, 2] = d[:, 0], d[:, 1], -d[:, 0]
-
-    def on_wall(self, side: float) -> float:
-        """∂z/∂p on the wall s (a sticking phase): z = s·d/2."""
-        return 0.5 * side if self.parameter == "gap" else 0.0
-
-    def impact_time(self, row) -> float:
-        """∂t/∂p of an impact at a fixed incoming state: the wall s·z = d/2 moves with d, so
-        δt = δd/(2·s·ż) (Eq. F2's impact condition)."""
-        if self.parameter != "gap":
-            return 0.0
-        zdot = row[_rigid.E_YD] - row[_rigid.E_XD]
-        return 0.5 / (row[_rigid.E_SIDE] * zdot)
-
-    def impact_law(self, row) -> np.ndarray:
-        """∂(x, ẋ⁺, z, ẏ⁺)/∂p of the impact law at fixed velocities before it: in e, the
-        generated ``main_velocity_after_d_e`` and ``impact_velocity_after_d_e`` (Eq. F2)."""
-        out = np.zeros(4)
-        if self.parameter == "e":
-            m, M, v, u = self.system.m, self.system.M, row[_rigid.E_XD], row[_rigid.E_YD]
-            out[1] = ri.main_velocity_after_d_e_scalar(m, M, self.e, v, u)
-            out[3] = ri.impact_velocity_after_d_e_scalar(m, M, self.e, v, u)
-        return out
-
-    def impact(self, row, acc) -> np.ndarray:
-        """The parameter column of an impact's saltation: (G·f⁻ − f⁺)·∂t/∂p plus the law's own
-        derivative (G the impact law's Jacobian, f∓ the vector fields before and after)."""
-        out = self.impact_law(row)
-        dt = self.impact_time(row)
-        if dt:
-            m, M, e = self.system.m, self.system.M, self.e
-            t, x, v, u = (row[c] for c in (_rigid.E_T, _rigid.E_X, _rigid.E_XD, _rigid.E_YD))
-            v1, u1 = row[_rigid.E_XD1], row[_rigid.E_YD1]
-            k_main = ri.saltation_main_gain_scalar(m, M, e)
-            k_imp = ri.saltation_impact_gain_scalar(m, M, e)
-            a_pre, a_post = acc(t, x, v), acc(t, x, v1)
-            g_f = np.array([v, (1.0 - k_main) * a_pre, u - v, k_imp * a_pre])
-            f_post = np.array([v1, a_post, u1 - v1, 0.0])
-            out = out + (g_f - f_post) * dt
-        return out
-
-    def acceleration(self, t: float, x: float, v: float, mass: float) -> float:
-        """∂ẍ/∂p at fixed t, x, ẋ: ẍ = (F0 cos θ − K(x − X_b cos θ) − C(ẋ + X_b Ω sin θ))/mass,
-        θ = Ωt + φ (Eq. F1)."""
-        f, K, C = self.forcing, self.system.K, self.system.C
-        th = f.omega * t + f.phase
-        if self.parameter == "F0":
-            return math.cos(th) / mass
-        if self.parameter == "X_b":
-            return (K * math.cos(th) - C * f.omega * math.sin(th)) / mass
-        if self.parameter == "omega":
-            sin, cos = math.sin(th), math.cos(th)
-            return (-(f.F0 + K * f.X_b) * sin * t - C * f.X_b * (sin + f.omega * t * cos)) / mass
-        return 0.0
-
-    def end(self, end_state, stuck: bool, t_end: float, acc) -> np.ndarray:
-        """In Ω, the end of the k periods moves, T = 2πk/Ω: the state's rate there times
-        ∂T/∂Ω = −T/Ω."""
-        if self.parameter != "omega":
-            return np.zeros(4)
-        x, v, zdot = end_state
-        if stuck:
-            a = acc(t_end, x, v, self.system.M + self.system.m)
-            rate = np.array([v, a, 0.0, a])
-        else:
-            rate = np.array([v, acc(t_end, x, v), zdot, 0.0])
-        return rate * (-t_end / self.forcing.omega)
-
-
-def _accumulation(system, e, impact, point, phi, J, acc, acc_t, terms, i) -> np.ndarray:
-    """:func:`rigid_monodromy` through an impact and the accumulation of its chatter: ``J`` the
-    Jacobian to just before the impact, ``phi`` the primary's Φ over the chatter, from the
-    impact to the accumulation point; returned, the Jacobian of (x, ẋ) at the accumulation
-    point t∞ (the sticking phase's directions, see there).  With ``terms`` (a parameter's
-    explicit terms, :class:`_ParameterTerms`) J has a fifth column, carried with them."""
-    M, m, K, C = system.M, system.m, system.K, system.C
-    t0, x0, v, u = (impact[c] for c in (_rigid.E_T, _rigid.E_X, _rigid.E_XD, _rigid.E_YD))
-    s = impact[_rigid.E_SIDE]
-    v0, u0 = impact[_rigid.E_XD1], impact[_rigid.E_YD1]  # after the impact
-    # the impact's time and the state at it (not at fixed time): δt₀ = −δz/ż
-    f_pre = np.array([v, acc(t0, x0, v), u - v, 0.0])
-    dt0 = -J[2] / (u - v)
-    if terms is not None:
-        dt0[4] += terms.impact_time(impact)
-    at_impact = J + np.outer(f_pre, dt0)
-    k = (1.0 + e) * M * m / (M + m)
-    law = np.array([[1, 0, 0, 0], [0, 1 - k / M, 0, k / M], [0, 0, 1, 0], [0, k / m, 0, 1 - k / m]])
-    d_after = law @ at_impact  # rows: δx₀, δẋ₀ (after), δz (0), δẏ₀ (after)
-    if terms is not None:
-        d_after[:, 4] += terms.impact_law(impact)
-    # Δ = 2w/(a(1 − e)), w = −s(ẏ₀ − ẋ₀), a = −s·ẍ(t₀, x₀, ẋ₀)
-    w = -s * (u0 - v0)
-    a = -s * acc(t0, x0, v0)
-    delta = 2.0 * w / (a * (1.0 - e))
-    dw = -s * (d_after[3] - d_after[1])
-    da = -s * (acc_t(t0) * dt0 - K / M * d_after[0] - C / M * d_after[1])
-    if terms is not None:
-        da[4] += -s * terms.acceleration(t0, x0, v0, M)
-    d_delta = 2.0 / (a * (1.0 - e)) * dw - delta / a * da
-    if terms is not None and terms.parameter == "e":
-        d_delta[4] += delta / (1.0 - e)  # Δ's own 1/(1 − e)
-    # the primary alone over Δ from (t₀, x₀, ẋ₀)
-    phi2 = phi[:2, :2]
-    xj, vj = point[_rigid.E_X], point[_rigid.E_XD]
-    t_inf = t0 + delta
-    f_end = np.array([vj, acc(t_inf, xj, vj)])
-    f_start = np.array([v0, acc(t0, x0, v0)])
-    d_j = phi2 @ d_after[:2] + np.outer(f_end, d_delta) + np.outer(f_end - phi2 @ f_start, dt0)
-    if terms is not None:
-        d_j[:, 4] += terms.flights[i + 1, :2]
-    d_vc = (M * d_j[1] + m * d_after[3]) / (M + m)
-    vc = point[_rigid.E_XD1]
-    d_tinf = dt0 + d_delta
-    f_stick = np.array([vc, acc(t_inf, xj, vc, M + m)])
-    return np.vstack([d_j[0], d_vc]) - np.outer(f_stick, d_tinf)
+    if parameter is not None and parameter not in _chain.PARAMETERS:
+        raise ValueError(f"parameter: one of {', '.join(_chain.PARAMETERS)}, got {parameter!r}")
+    which = -1 if parameter is None else _chain.PARAMETERS.index(parameter)
+    p = np.zeros(_rigid.N_PARAMS)
+    p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
+    p[_rigid.P_m], p[_rigid.P_h], p[_rigid.P_e] = system.m, system.gap / 2.0, e
+    p[_rigid.P_F0], p[_rigid.P_XB] = forcing.F0, forcing.X_b
+    p[_rigid.P_W], p[_rigid.P_PHI] = forcing.omega, forcing.phase
+    events = np.ascontiguousarray(np.reshape(events, (-1, _rigid.N_EVENT_COLS)), dtype=float)
+    J = _chain.rigid_jacobian(p, events, float(t_end), bool(final_stuck), which,
+                              np.array(start, dtype=float), np.array(end_state, dtype=float))  # fmt: skip
+    return J if parameter is not None else J[:, :4]
 
 
 #: (x, ẋ, z, ẏ) from (x, ẋ, y, ẏ): z = y − x; and back
