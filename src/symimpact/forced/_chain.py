@@ -6,7 +6,11 @@ module is its numba body, one code path with or without a parameter).
 
 Every entry comes from a generated kernel compiled with numba (the flights' Φ and their
 forcing derivatives, the saltation gains and entries, the impact law's derivative in e); the
-Jacobian is a 4×5 array whose fifth column stays zero without a parameter.
+Jacobian is a 4×5 array whose fifth column stays zero without a parameter.  An impact at zero
+relative speed has no saltation matrix: the Jacobian is then NaN (the caller refuses it).  The
+chain's own functions divide with NumPy's rules (error_model "numpy": ±inf or NaN, never an
+exception); the generated kernels they call are guarded instead, since numba's cache of a
+generated kernel is shared by every module that compiles it.
 """
 
 from __future__ import annotations
@@ -46,12 +50,12 @@ from ._rigid import (
 PARAMETERS = ("F0", "X_b", "omega", "gap", "e")
 _F0, _XB, _OMEGA, _GAP, _E = range(5)
 
-_gain_main = njit(cache=True, error_model="numpy")(_ri.saltation_main_gain_scalar)
-_gain_impact = njit(cache=True, error_model="numpy")(_ri.saltation_impact_gain_scalar)
-_s_main_z = njit(cache=True, error_model="numpy")(_ri.saltation_main_velocity_z_scalar)
-_s_impact_z = njit(cache=True, error_model="numpy")(_ri.saltation_impact_velocity_z_scalar)
-_v_after_d_e = njit(cache=True, error_model="numpy")(_ri.main_velocity_after_d_e_scalar)
-_u_after_d_e = njit(cache=True, error_model="numpy")(_ri.impact_velocity_after_d_e_scalar)
+_gain_main = njit(cache=True)(_ri.saltation_main_gain_scalar)
+_gain_impact = njit(cache=True)(_ri.saltation_impact_gain_scalar)
+_s_main_z = njit(cache=True)(_ri.saltation_main_velocity_z_scalar)
+_s_impact_z = njit(cache=True)(_ri.saltation_impact_velocity_z_scalar)
+_v_after_d_e = njit(cache=True)(_ri.main_velocity_after_d_e_scalar)
+_u_after_d_e = njit(cache=True)(_ri.impact_velocity_after_d_e_scalar)
 
 
 @njit(cache=True, error_model="numpy")
@@ -134,6 +138,8 @@ def _impact(p, row, J, which):
     vector fields before and after)."""
     m, M, C, e = p[P_m], p[P_M], p[P_C], p[P_e]
     t, x, v, u = row[E_T], row[E_X], row[E_XD], row[E_YD]
+    if u == v:  # an impact at zero relative speed has no saltation matrix
+        return np.full(J.shape, np.nan)
     kM, km = _gain_main(m, M, e), _gain_impact(m, M, e)
     a_pre = _accel(p, M, t, x, v)
     S = np.zeros((4, 4))
