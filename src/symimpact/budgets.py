@@ -23,11 +23,13 @@ MAX_NATURAL_PERIODS = 1_000_000
 #: Shooting follows no rigid orbit with more impacts a forcing period that do not accumulate
 #: (a chatter sequence that does is taken to its accumulation point in closed form).
 MAX_IMPACTS_PER_PERIOD = 1000
-#: Shooting follows no compliant orbit with more contacts a forcing period: a chatter of stiff
-#: contacts that does not end (cubic a = 1e20 N/m³) would otherwise integrate the run's whole
-#: budget at every Newton step (measured: frf over 5 frequencies 13 s with 64, 15 s with 256,
-#: over 120 s without a cap); orbits of 66 and 148 contacts a period are followed.
-MAX_CONTACTS_PER_PERIOD = 256
+#: Shooting follows a compliant orbit through as many contacts a forcing period as it has, each
+#: integrated with its variational equations, within this many evaluations of their equations
+#: a period (about 0.1 µs each, so 0.2 s a period: 600 to 1600 contacts of 1300-3400
+#: evaluations each, measured on Hunt–Crossley orbits of 2 to 94 contacts a period): a chatter of
+#: stiff contacts that does not end (cubic a = 1e20 N/m³) would otherwise integrate the run's
+#: whole budget at every Newton step.
+SHOOTING_EVALUATIONS_PER_PERIOD = 2_000_000
 #: Newton's iterations of one shooting.
 MAX_ITER = 30
 #: Continuation points of one branch in one direction.
@@ -41,6 +43,6 @@ def text() -> str:
         f"a simulation at most {MAX_NATURAL_PERIODS:.0e} natural periods of the primary and "
         f"{MAX_EVENTS:.0e} rigid impacts or {MAX_CONTACTS:,} compliant contacts "
         f"({RHS_BUDGET:.0e} evaluations of their equations); shooting at most {MAX_ITER} Newton "
-        f"steps and {MAX_IMPACTS_PER_PERIOD} rigid impacts ({MAX_CONTACTS_PER_PERIOD} compliant "
-        f"contacts) a period; a branch at most {MAX_POINTS} continuation points each way."
+        f"steps and {MAX_IMPACTS_PER_PERIOD} rigid impacts ({SHOOTING_EVALUATIONS_PER_PERIOD:.0e} "
+        f"evaluations of the compliant contacts' equations) a period; a branch at most {MAX_POINTS} continuation points each way."
     )

@@ -525,19 +525,21 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
     return status, events[:n_ev], period_max, ledger, final, sampled, G, work[0]
 
 
-def run(law, q, chi, p, state0, t_end, max_events, samples, variational=False):
+def run(law, q, chi, p, state0, t_end, max_events, samples, variational=False, budget=RHS_BUDGET):
     """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end (a start inside a wall begins with
     its contact phase, which is not logged as an onset).  Returns (status, events, period_max, ledger = (forcing work, C's
     dissipation, contact's dissipation), final = (t, x, ẋ, y, ẏ, 1.0 if it ended in contact),
     sampled states (n·samples + 1, 4): x, ẋ, z = y − x, ẏ at t = k·T/samples, and Ψ, the
     Jacobian of the final (x, ẋ, y, ẏ) with respect to the initial one (identity unless
-    ``variational``)).  ``law``: "cubic", "hertz", "linear" or "hunt-crossley"."""
-    status, events, period_max, ledger, final, sampled, psi, _ = _interrupt.call(
+    ``variational``)), and the evaluations of the equations of motion it took (status
+    TOO_MUCH_WORK past ``budget`` of them).  ``law``: "cubic", "hertz", "linear" or
+    "hunt-crossley"."""
+    status, events, period_max, ledger, final, sampled, psi, work = _interrupt.call(
         _run, CODES[law], q, 0.0 if chi is None else float(chi), p,
         np.asarray(state0, dtype=float), float(t_end), int(max_events), int(samples),
-        bool(variational), float(RHS_BUDGET),
+        bool(variational), float(budget),
     )  # fmt: skip
-    return status, events, period_max, ledger, final, sampled, psi
+    return status, events, period_max, ledger, final, sampled, psi, work
 
 
 def _forget_stale_compilations() -> None:

@@ -21,8 +21,9 @@ together, so the Jacobian is the chain rule of those closed forms (the accumulat
 sticking phase keeps two of the four directions, so two multipliers vanish.  A section that
 falls on a wall (inside a sticking phase) is moved to the middle of the longest free flight and
 the state is mapped back.  With a compliant contact every contact of the period is integrated
-with its variational equations (the cost is linear in them), up to
-:data:`~symimpact.budgets.MAX_CONTACTS_PER_PERIOD` contacts a period.
+with its variational equations (the cost is linear in them: a fixed number of evaluations a
+contact), within :data:`~symimpact.budgets.SHOOTING_EVALUATIONS_PER_PERIOD` evaluations a period
+(no cap on the contacts themselves).
 """
 
 from __future__ import annotations
@@ -41,6 +42,7 @@ from .contact_law import CompliantContact, checked, is_rigid, simulation_argumen
 from .forcing import Forcing
 from .simulation import (
     TooManyContacts,
+    TooMuchContactWork,
     _simulate,
     contact_arguments,
     impact_counts,
@@ -221,15 +223,16 @@ def _compliant_monodromy(system, forcing, contact: CompliantContact, state, peri
     x, v, z, u = state
     _, chi, law = contact_arguments(system, contact.law, None, contact.chi)
     n = period_count("periods", periods)
+    budget = budgets.SHOOTING_EVALUATIONS_PER_PERIOD
     try:
         res, psi = _simulate(system, forcing, contact.law, None, chi, law, [x, v, x + z, u], n,
-                             variational=jacobian,
-                             max_contacts=budgets.MAX_CONTACTS_PER_PERIOD * n)  # fmt: skip
-    except TooManyContacts:
+                             variational=jacobian, max_work=budget * n)  # fmt: skip
+    except TooMuchContactWork:
         raise MethodNotApplicable(
             "shooting",
-            f"more than {budgets.MAX_CONTACTS_PER_PERIOD} contacts a period, each integrated with "
-            "its variational equations: use contact rigid with this contact's restitution",
+            f"the contacts of one period need more than {budget:.0e} evaluations of their "
+            "equations (each contact integrated with its variational equations): use contact "
+            "rigid with this contact's restitution",
         ) from None
     fx, fv, fy, fu = res.final_state
     J = _TO_Z @ psi @ _FROM_Z if jacobian else None

@@ -40,6 +40,10 @@ class TooManyContacts(SymimpactError):
     """A compliant run met more contacts than it was allowed."""
 
 
+class TooMuchContactWork(SymimpactError):
+    """A compliant run's contacts needed more evaluations of their equations than allowed."""
+
+
 MAX_NATURAL_PERIODS = budgets.MAX_NATURAL_PERIODS
 MAX_MULTIPLE = 8
 
@@ -92,6 +96,8 @@ class ForcedResult:
     chi: float | None = None
     #: compliant runs: the state (x, ẋ, z, ẏ) at t = k·T/samples_per_period
     samples: np.ndarray | None = None
+    #: compliant runs: the evaluations of the equations of motion the contacts took
+    contact_evaluations: int = 0
 
     @property
     def impacts(self) -> np.ndarray:
@@ -277,11 +283,14 @@ def contact_arguments(system: ImpactSystem, contact: str, e: Any, chi: Any):
 
 
 def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=CHATTER,
-              samples_per_period=16, variational=False, max_contacts=None):  # fmt: skip
+              samples_per_period=16, variational=False, max_contacts=None,
+              max_work=None):  # fmt: skip
     """The checked run of :func:`simulate_forced` from ``state`` = (x, ẋ, y, ẏ) at t = 0 (a
     compliant run may start inside a wall), and, compliant with ``variational``, the Jacobian Ψ of
     the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced._compliant`);
-    ``max_contacts`` in place of :data:`MAX_CONTACTS`."""
+    ``max_contacts`` in place of :data:`MAX_CONTACTS`; ``max_work`` (evaluations of the
+    contacts' equations) in place of :data:`symimpact.budgets.RHS_BUDGET`, met with
+    :class:`TooMuchContactWork`."""
     _refuse_cancelling_flight(system, forcing, contact)
     h = system.gap / 2.0
     p = np.zeros(_rigid.N_PARAMS)
@@ -300,12 +309,13 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
     samples = None
     psi = np.eye(4)
     potential = potential0 = 0.0
+    work = 0
     if contact == "rigid":
         status, events, n_ev, period_max, ledger, final = _interrupt.call(
             _rigid.run, p, np.array(state), t_end, max_contacts or MAX_EVENTS
         )
     else:
-        status, events, period_max, ledger, final, samples, psi = _compliant.run(
+        status, events, period_max, ledger, final, samples, psi, work = _compliant.run(
             contact,
             law,
             chi,
@@ -315,6 +325,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             max_contacts or MAX_CONTACTS,
             samples_per_period,
             variational,
+            max_work or _compliant.RHS_BUDGET,
         )
         n_ev = len(events)
         z0 = state[2] - state[0]
@@ -338,6 +349,10 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             f"the {contact} contact is too stiff for its orbit's derivatives: a contact's exit "
             "rate falls below the state's precision (its duration is a vanishing share of the "
             "period); use contact rigid with this contact's restitution",
+        )
+    if status == _compliant.TOO_MUCH_WORK and max_work:
+        raise TooMuchContactWork(
+            f"the contacts of {n_periods} periods need more than {max_work:,} evaluations"
         )
     if status == _compliant.TOO_MUCH_WORK:
         raise SymimpactError(
@@ -371,6 +386,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
         contact=contact,
         chi=chi,
         samples=samples,
+        contact_evaluations=int(work),
     )
     return result, psi
 
