@@ -28,6 +28,7 @@ STEPS = (
     "hunt_crossley",
     "slow_flow",
     "hertz_contact",
+    "beam_modes",
 )
 
 

@@ -450,4 +450,41 @@ for k in (1, 2, 5, 10, 100, 1000):
             source="Thornton (1997), e = √(6√3/5)·√(1 − r²/6)·(r/(r + 2√(6/5 − r²/5)))^(1/4), r = v_y/v₀",
         ),
     ),
+    "beam_modes": (
+        Exercise(
+            "A damper a quarter along a simply supported beam",
+            "The first mode's mass referred to ξ = 1/4 instead of the midspan: the point moves "
+            "less, so the mode looks heavier there.",
+            """fM = sp.lambdify((k, xi), mass["simply_supported"], "mpmath")
+for where in (sp.Rational(1, 2), sp.Rational(1, 4)):
+    print(f"xi = {where}: M/(rho A L) = {mp.nstr(fM(found['simply_supported'][0], where), 10)}")""",
+            ask="M/(ρAL) of the simply supported beam's first mode referred to ξ = 1/4.",
+            answer="sp.lambdify((k, xi), mass['simply_supported'], 'mpmath')(found['simply_supported'][0], sp.Rational(1, 4))",
+            stated="1.000000000",
+            source="∫₀¹sin²(πξ)dξ / sin²(π/4) = (1/2)/(1/2)",
+        ),
+        Exercise(
+            "One mode for a static load",
+            "The cantilever's tip under a static force, from its first mode alone: 1/K₁ in units "
+            "of L³/(EI), against the exact 1/3.",
+            """one = (1 / stiff["cantilever"]).subs(xi, 1)
+v = sp.lambdify(k, one, "mpmath")(found["cantilever"][0])
+print(f"first mode: {mp.nstr(v, 10)}, exact 1/3: {mp.nstr(mp.mpf(1) / 3, 10)}, "
+      f"short by {mp.nstr((1 - 3 * v) * 100, 4)} %")""",
+            ask="1/K₁ of the cantilever at its tip, in units of L³/(EI).",
+            answer="sp.lambdify(k, (1 / stiff['cantilever']).subs(xi, 1), 'mpmath')(found['cantilever'][0])",
+            stated="0.3235627",
+            source="4/(β₁L)⁴ with β₁L = 1.87510407 (Blevins, Table 8-1)",
+        ),
+        Exercise(
+            "The third root of the clamped–clamped beam",
+            "The roots of cos k·cosh k = 1 approach (2i + 1)π/2 as cosh grows.",
+            """for i, r in enumerate(found["clamped_clamped"][:4], start=1):
+    print(f"mode {i}: beta L = {mp.nstr(r, 12)}, (2i + 1) pi / 2 = {mp.nstr((2 * i + 1) * mp.pi / 2, 12)}")""",
+            ask="β₃L of the clamped–clamped beam.",
+            answer="found['clamped_clamped'][2]",
+            stated="10.9956078",
+            source="Blevins, Formulas for Natural Frequency and Mode Shape, Table 8-1",
+        ),
+    ),
 }

@@ -21,6 +21,7 @@ from . import (
     hunt_crossley,
     slow_flow,
     hertz_contact,
+    beam_modes,
 )
 
 __all__ = [
@@ -37,4 +38,5 @@ __all__ = [
     "hunt_crossley",
     "slow_flow",
     "hertz_contact",
+    "beam_modes",
 ]

@@ -27,7 +27,7 @@ COMMANDS = _commands()
 
 def test_the_block_holds_every_subcommand():
     assert [c.split()[1] for c in COMMANDS] == [
-        "fit", "ritz", "contact", "contact-duration", "simulate", "simulate", "simulate",
+        "fit", "ritz", "ritz", "contact", "contact-duration", "simulate", "simulate", "simulate",
         "periodic", "periodic", "periodic", "frf", "frf", "frf", "branch", "design", "design",
         "sweep",
         "map",
@@ -56,6 +56,8 @@ def test_readme_command_runs_and_shows_something(command, tmp_path):
     sub = args[1]
     if sub == "fit":
         assert set(json.loads(out)) >= {"a", "b", "k1"}
+    elif sub == "ritz" and "--modes" in args:  # the clamped–clamped beam's modes at midspan
+        assert out.count("node") == 4 and "% short" in out  # modes 2 and 4: nodes
     elif sub == "simulate" and "--force" in args:  # forced: two impacts per period, period 1
         assert "2 impacts per period, periodic with 1 forcing period" in out
         (png,) = [a for a in args if a.endswith(".png")]

@@ -222,7 +222,9 @@ def test_every_octave_kernel_matches_numpy(octave_results):
         _assert_close(name, k, points, got, expected, scale)
     for fp in octave_results[2]:
         files.discard(octave_name("fixed_points", fp[0].name))
-    assert files == {"ritz_BETA_L"}, files  # every other file was run (a constant is not sampled)
+    constants = {"ritz_BETA_L", *(f"beam_modes_BETA_L_{b}" for b in
+                 ("CANTILEVER", "CLAMPED_CLAMPED", "SIMPLY_SUPPORTED"))}  # fmt: skip
+    assert files == constants, files  # every other file was run (a constant is not sampled)
 
 
 def test_every_octave_iteration_matches_numba(octave_results):
@@ -233,9 +235,15 @@ def test_every_octave_iteration_matches_numba(octave_results):
         _assert_fixed_point(name, fp, out[:, 0], out[:, 1], value, steps)
 
 
-def test_octave_constant_is_the_python_constant():
-    from symimpact.generated import ritz
+@pytest.mark.parametrize(
+    ("module", "name"),
+    [("ritz", "BETA_L"), *(("beam_modes", f"BETA_L_{b}") for b in
+                          ("CANTILEVER", "CLAMPED_CLAMPED", "SIMPLY_SUPPORTED"))],
+)  # fmt: skip
+def test_octave_constant_is_the_python_constant(module, name):
+    import importlib
 
+    python = getattr(importlib.import_module(f"symimpact.generated.{module}"), name)
     octave = require_tool("octave-cli")
     folder = ROOT / "generated" / "octave"
     run = subprocess.run(
@@ -245,13 +253,13 @@ def test_octave_constant_is_the_python_constant():
             "--norc",
             "--quiet",
             "--eval",
-            f"addpath('{folder}'); fprintf('%.17g\\n', ritz_BETA_L())",
+            f"addpath('{folder}'); fprintf('%.17g\\n', {module}_{name}())",
         ],
         capture_output=True,
         text=True,
         timeout=120,
     )
-    assert [float(v) for v in run.stdout.split()] == list(ritz.BETA_L)
+    assert [float(v) for v in run.stdout.split()] == list(python)
 
 
 EDGE_PROGRAM = r"""

@@ -3265,6 +3265,165 @@ static void check_hertz_contact_thornton_restitution(void)
     }
 }
 
+/* beam_modes.mode_shape_clamped_clamped: Mode shape φ(ξ) of the clamped–clamped beam [1] */
+static void check_beam_modes_mode_shape_clamped_clamped(void)
+{
+    static const double expected[3] = { 0.18961625685432296, -0.5672212726049561, -1.2669468455929116 };
+    static const double scale[3] = { 0.18961625685432296, 0.5672212726049561, 1.2669468455929116 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_mode_shape_clamped_clamped", i, symimpact_beam_modes_mode_shape_clamped_clamped(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_mode_shape_clamped_clamped_batch(3, a_beta_L, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_mode_shape_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* beam_modes.mass_coefficient_clamped_clamped: Mass M/(ρAL) of a mode of the clamped–clamped beam referred to the point ξ [1] */
+static void check_beam_modes_mass_coefficient_clamped_clamped(void)
+{
+    static const double expected[3] = { 40.27432753214005, 4.984078691354355, 0.3145106405894215 };
+    static const double scale[3] = { 40.27432753214005, 4.984078691354355, 0.3145106405894215 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_mass_coefficient_clamped_clamped", i, symimpact_beam_modes_mass_coefficient_clamped_clamped(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_mass_coefficient_clamped_clamped_batch(3, a_beta_L, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_mass_coefficient_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* beam_modes.stiffness_coefficient_clamped_clamped: Stiffness K·L³/(EI) of a mode of the clamped–clamped beam referred to the point ξ [1] */
+static void check_beam_modes_stiffness_coefficient_clamped_clamped(void)
+{
+    static const double expected[3] = { 640062.5856517714, 6271.291374916642, 2765.7518202332963 };
+    static const double scale[3] = { 640062.5856517714, 6271.291374916642, 2765.7518202332963 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_stiffness_coefficient_clamped_clamped", i, symimpact_beam_modes_stiffness_coefficient_clamped_clamped(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_stiffness_coefficient_clamped_clamped_batch(3, a_beta_L, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_stiffness_coefficient_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* beam_modes.mode_shape_simply_supported: Mode shape φ(ξ) of the simply supported beam [1] */
+static void check_beam_modes_mode_shape_simply_supported(void)
+{
+    static const double expected[3] = { -0.6188264537213173, -0.9971134036307414, -0.2970557492180813 };
+    static const double scale[3] = { 0.6188264537213173, 0.9971134036307414, 0.2970557492180813 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_mode_shape_simply_supported", i, symimpact_beam_modes_mode_shape_simply_supported(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_mode_shape_simply_supported_batch(3, a_beta_L, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_mode_shape_simply_supported_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* beam_modes.mass_coefficient_simply_supported: Mass M/(ρAL) of a mode of the simply supported beam referred to the point ξ [1] */
+static void check_beam_modes_mass_coefficient_simply_supported(void)
+{
+    static const double expected[3] = { 0.06921480435636945, 0.4509085134044331, 5.294577935986437 };
+    static const double scale[3] = { 0.06921480435636945, 0.4509085134044331, 5.294577935986437 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_mass_coefficient_simply_supported", i, symimpact_beam_modes_mass_coefficient_simply_supported(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_mass_coefficient_simply_supported_batch(3, a_beta_L, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_mass_coefficient_simply_supported_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* beam_modes.stiffness_coefficient_simply_supported: Stiffness K·L³/(EI) of a mode of the simply supported beam referred to the point ξ [1] */
+static void check_beam_modes_stiffness_coefficient_simply_supported(void)
+{
+    static const double expected[3] = { 1100.0011510152526, 567.3623644616446, 46559.596636788854 };
+    static const double scale[3] = { 1100.0011510152526, 567.3623644616446, 46559.596636788854 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_stiffness_coefficient_simply_supported", i, symimpact_beam_modes_stiffness_coefficient_simply_supported(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_stiffness_coefficient_simply_supported_batch(3, a_beta_L, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_stiffness_coefficient_simply_supported_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* beam_modes.static_flexibility_cantilever: Static deflection of the cantilever at ξ₀ under a unit force there, in units... [1] */
+static void check_beam_modes_static_flexibility_cantilever(void)
+{
+    static const double expected[3] = { 0.19753201658479574, 0.026483662819419895, 0.12433721983370942 };
+    static const double scale[3] = { 0.19753201658479574, 0.026483662819419895, 0.12433721983370942 };
+    static const double a_xi_0[3] = { 0.839949, 0.429899, 0.719848 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_static_flexibility_cantilever", i, symimpact_beam_modes_static_flexibility_cantilever(a_xi_0[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_static_flexibility_cantilever_batch(3, a_xi_0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_static_flexibility_cantilever_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* beam_modes.static_flexibility_clamped_clamped: Static deflection of the clamped–clamped beam at ξ₀ under a unit force... [1] */
+static void check_beam_modes_static_flexibility_clamped_clamped(void)
+{
+    static const double expected[3] = { 0.0008098650799748584, 0.004907196606758609, 0.002733898168627366 };
+    static const double scale[3] = { 0.0008098650799748584, 0.004907196606758609, 0.002733898168627366 };
+    static const double a_xi_0[3] = { 0.839949, 0.429899, 0.719848 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_static_flexibility_clamped_clamped", i, symimpact_beam_modes_static_flexibility_clamped_clamped(a_xi_0[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_static_flexibility_clamped_clamped_batch(3, a_xi_0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_static_flexibility_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* beam_modes.static_flexibility_simply_supported: Static deflection of the simply supported beam at ξ₀ under a unit force... [1] */
+static void check_beam_modes_static_flexibility_simply_supported(void)
+{
+    static const double expected[3] = { 0.006024227495791071, 0.02002235792389933, 0.013556507056770578 };
+    static const double scale[3] = { 0.006024227495791071, 0.02002235792389933, 0.013556507056770578 };
+    static const double a_xi_0[3] = { 0.839949, 0.429899, 0.719848 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_static_flexibility_simply_supported", i, symimpact_beam_modes_static_flexibility_simply_supported(a_xi_0[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_static_flexibility_simply_supported_batch(3, a_xi_0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_static_flexibility_simply_supported_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* fixed_points.contact_duration (from derive/multiple_scales.py): Contact duration T_CD, Eq. 31 iterated from T⁽⁰⁾ to convergence [s] */
 static void check_fixed_points_contact_duration(void)
 {
@@ -3540,11 +3699,20 @@ int main(void)
     check_hertz_contact_yield_approach();
     check_hertz_contact_speed_for_approach();
     check_hertz_contact_thornton_restitution();
+    check_beam_modes_mode_shape_clamped_clamped();
+    check_beam_modes_mass_coefficient_clamped_clamped();
+    check_beam_modes_stiffness_coefficient_clamped_clamped();
+    check_beam_modes_mode_shape_simply_supported();
+    check_beam_modes_mass_coefficient_simply_supported();
+    check_beam_modes_stiffness_coefficient_simply_supported();
+    check_beam_modes_static_flexibility_cantilever();
+    check_beam_modes_static_flexibility_clamped_clamped();
+    check_beam_modes_static_flexibility_simply_supported();
     check_fixed_points_contact_duration();
     check_fixed_points_contact_duration_newton();
     check_fixed_points_contact_duration_printed();
     check_fixed_points_hunt_crossley_restitution();
     check_fixed_points_hunt_crossley_peak_speed_ratio();
-    printf("symimpact: %ld checks of 146 kernels and 5 iterations, %ld failed\n", checks, failures);
+    printf("symimpact: %ld checks of 155 kernels and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

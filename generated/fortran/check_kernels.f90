@@ -1636,6 +1636,66 @@ program check_kernels
     got = hertz_contact_thornton_restitution([0.453789_dp, 0.00205925_dp, 0.0934464_dp])
     call check("hertz_contact_thornton_restitution", got, expected, scale)
 
+    ! beam_modes.mode_shape_clamped_clamped
+    expected = [0.18961625685432296_dp, -0.5672212726049561_dp, -1.2669468455929116_dp]
+    scale = [0.18961625685432296_dp, 0.5672212726049561_dp, 1.2669468455929116_dp]
+    got = beam_modes_mode_shape_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+[0.33923_dp, 0.778461_dp, 0.617691_dp])
+    call check("beam_modes_mode_shape_clamped_clamped", got, expected, scale)
+
+    ! beam_modes.mass_coefficient_clamped_clamped
+    expected = [40.27432753214005_dp, 4.984078691354355_dp, 0.3145106405894215_dp]
+    scale = [40.27432753214005_dp, 4.984078691354355_dp, 0.3145106405894215_dp]
+    got = beam_modes_mass_coefficient_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+[0.33923_dp, 0.778461_dp, 0.617691_dp])
+    call check("beam_modes_mass_coefficient_clamped_clamped", got, expected, scale)
+
+    ! beam_modes.stiffness_coefficient_clamped_clamped
+    expected = [640062.5856517714_dp, 6271.291374916642_dp, 2765.7518202332963_dp]
+    scale = [640062.5856517714_dp, 6271.291374916642_dp, 2765.7518202332963_dp]
+    got = beam_modes_stiffness_coefficient_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+[0.33923_dp, 0.778461_dp, 0.617691_dp])
+    call check("beam_modes_stiffness_coefficient_clamped_clamped", got, expected, scale)
+
+    ! beam_modes.mode_shape_simply_supported
+    expected = [-0.6188264537213173_dp, -0.9971134036307414_dp, -0.2970557492180813_dp]
+    scale = [0.6188264537213173_dp, 0.9971134036307414_dp, 0.2970557492180813_dp]
+    got = beam_modes_mode_shape_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+[0.33923_dp, 0.778461_dp, 0.617691_dp])
+    call check("beam_modes_mode_shape_simply_supported", got, expected, scale)
+
+    ! beam_modes.mass_coefficient_simply_supported
+    expected = [0.06921480435636945_dp, 0.4509085134044331_dp, 5.294577935986437_dp]
+    scale = [0.06921480435636945_dp, 0.4509085134044331_dp, 5.294577935986437_dp]
+    got = beam_modes_mass_coefficient_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+[0.33923_dp, 0.778461_dp, 0.617691_dp])
+    call check("beam_modes_mass_coefficient_simply_supported", got, expected, scale)
+
+    ! beam_modes.stiffness_coefficient_simply_supported
+    expected = [1100.0011510152526_dp, 567.3623644616446_dp, 46559.596636788854_dp]
+    scale = [1100.0011510152526_dp, 567.3623644616446_dp, 46559.596636788854_dp]
+    got = beam_modes_stiffness_coefficient_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+[0.33923_dp, 0.778461_dp, 0.617691_dp])
+    call check("beam_modes_stiffness_coefficient_simply_supported", got, expected, scale)
+
+    ! beam_modes.static_flexibility_cantilever
+    expected = [0.19753201658479574_dp, 0.026483662819419895_dp, 0.12433721983370942_dp]
+    scale = [0.19753201658479574_dp, 0.026483662819419895_dp, 0.12433721983370942_dp]
+    got = beam_modes_static_flexibility_cantilever([0.839949_dp, 0.429899_dp, 0.719848_dp])
+    call check("beam_modes_static_flexibility_cantilever", got, expected, scale)
+
+    ! beam_modes.static_flexibility_clamped_clamped
+    expected = [0.0008098650799748584_dp, 0.004907196606758609_dp, 0.002733898168627366_dp]
+    scale = [0.0008098650799748584_dp, 0.004907196606758609_dp, 0.002733898168627366_dp]
+    got = beam_modes_static_flexibility_clamped_clamped([0.839949_dp, 0.429899_dp, 0.719848_dp])
+    call check("beam_modes_static_flexibility_clamped_clamped", got, expected, scale)
+
+    ! beam_modes.static_flexibility_simply_supported
+    expected = [0.006024227495791071_dp, 0.02002235792389933_dp, 0.013556507056770578_dp]
+    scale = [0.006024227495791071_dp, 0.02002235792389933_dp, 0.013556507056770578_dp]
+    got = beam_modes_static_flexibility_simply_supported([0.839949_dp, 0.429899_dp, 0.719848_dp])
+    call check("beam_modes_static_flexibility_simply_supported", got, expected, scale)
+
     ! fixed_points.contact_duration
     expected = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
     scale = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
@@ -1698,7 +1758,7 @@ program check_kernels
     call check("fixed_points_hunt_crossley_peak_speed_ratio", got, expected, scale)
     call check_steps("fixed_points_hunt_crossley_peak_speed_ratio", taken, steps)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 146 kernels and 5 iterations, ", &
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 155 kernels and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

@@ -25,6 +25,7 @@ from . import (  # noqa: E402  (after the float64 switch)
     hunt_crossley,
     slow_flow,
     hertz_contact,
+    beam_modes,
 )
 
 __all__ = [
@@ -41,4 +42,5 @@ __all__ = [
     "hunt_crossley",
     "slow_flow",
     "hertz_contact",
+    "beam_modes",
 ]

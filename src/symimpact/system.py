@@ -6,10 +6,9 @@ import math
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
-import numpy as np
-
+from .beams import beam_constants
 from .errors import ParameterError
-from .generated import contact_fits, ritz
+from .generated import contact_fits
 from .units import nonnegative, nonnegative_float, positive, positive_float, si, si_float
 
 CONTACT_LAWS = ("cubic", "hertz", "linear")
@@ -135,16 +134,21 @@ class ImpactSystem:
         gap: Any,
         zeta: Any = 0.0,
         position: Any = None,
+        support: str = "cantilever",
+        mode: int = 1,
         **contact: Any,
     ) -> ImpactSystem:
-        """System whose K, M and C come from a cantilever beam by Ritz (Eq. 1–6).
+        """System whose K, M and C come from one mode of a beam by Ritz (Eq. 1–6; Eq. F6 for the
+        clamped–clamped and simply supported beams, ``support``; ``mode``: which mode).
 
         ``E`` [Pa], ``I`` [m⁴], ``rho`` [kg/m³], ``A`` [m²], ``L`` [m]; the damper sits at
-        ``position`` [m] from the clamp (default: the tip, ``L``); ``zeta`` is the beam's damping
+        ``position`` [m] from the clamp or the left support (default: the cantilever's tip, the
+        other beams' midspan); ``zeta`` is the beam's damping
         ratio, C = 2ζ√(KM) (Eq. 6).  K = (K L³/EI)·EI/L³ and M = (M/ρAL)·ρAL with the first-mode
-        coefficients referred to the damper position.  Other keywords go to the constructor.
+        coefficients referred to the damper position (:func:`symimpact.beams.beam_constants`).
+        Other keywords go to the constructor.
         """
-        K, M = beam_constants(E, I, rho, A, L, position)
+        K, M = beam_constants(E, I, rho, A, L, position, support, mode)
         return cls(M=M, K=K, m=m, gap=gap, zeta=zeta, **contact)
 
     def with_(self, **changes: Any) -> ImpactSystem:
@@ -175,32 +179,6 @@ class ImpactSystem:
     def as_dict(self) -> dict[str, Any]:
         """The parameters as plain SI values (for JSON and tables)."""
         return {f.name: getattr(self, f.name) for f in fields(self)}
-
-
-def beam_constants(
-    E: Any, I: Any, rho: Any, A: Any, L: Any, position: Any = None
-) -> tuple[float, float]:
-    """(K [N/m], M [kg]) of the first Ritz mode referred to the damper position (Eq. 5–6)."""
-    E, I, rho, A, L = (
-        positive_float(n, v) for n, v in zip("E I rho A L".split(), (E, I, rho, A, L), strict=True)
-    )
-    r = L if position is None else positive_float("position", position)
-    if r > L * (1 + 1e-12):
-        raise ParameterError("position", f"{r:g} m lies beyond the beam length L = {L:g} m")
-    xi = min(r / L, 1.0)
-    beta_L = ritz.BETA_L[0]
-    with np.errstate(all="ignore"):
-        K = float(ritz.stiffness_coefficient(beta_L, xi) * np.float64(E) * I / L / L / L)
-        M = float(ritz.mass_coefficient(beta_L, xi) * np.float64(rho) * A * L)
-    for name, value in (("K", K), ("M", M)):
-        if not (math.isfinite(value) and value > 0):
-            where = "beam parameters" if position is None else "position and beam parameters"
-            raise ParameterError(
-                "position" if position is not None and xi < 1e-6 else "beam",
-                f"the {where} give {name} = {value:g}, not a finite positive number "
-                "(the mode shape vanishes at the clamp, or a value is out of range)",
-            )
-    return K, M
 
 
 def table2_system(gap: Any = "9 mm", **changes: Any) -> ImpactSystem:

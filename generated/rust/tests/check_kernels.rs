@@ -1772,6 +1772,114 @@ fn hertz_contact_thornton_restitution() {
 }
 
 #[test]
+fn beam_modes_mode_shape_clamped_clamped() {
+    let expected = [0.18961625685432296, -0.5672212726049561, -1.2669468455929116];
+    let scale = [0.18961625685432296, 0.5672212726049561, 1.2669468455929116];
+    let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::mode_shape_clamped_clamped(p[0], p[1]))
+        .collect();
+    check("beam_modes::mode_shape_clamped_clamped", &got, &expected, &scale);
+}
+
+#[test]
+fn beam_modes_mass_coefficient_clamped_clamped() {
+    let expected = [40.27432753214005, 4.984078691354355, 0.3145106405894215];
+    let scale = [40.27432753214005, 4.984078691354355, 0.3145106405894215];
+    let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::mass_coefficient_clamped_clamped(p[0], p[1]))
+        .collect();
+    check("beam_modes::mass_coefficient_clamped_clamped", &got, &expected, &scale);
+}
+
+#[test]
+fn beam_modes_stiffness_coefficient_clamped_clamped() {
+    let expected = [640062.5856517714, 6271.291374916642, 2765.7518202332963];
+    let scale = [640062.5856517714, 6271.291374916642, 2765.7518202332963];
+    let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::stiffness_coefficient_clamped_clamped(p[0], p[1]))
+        .collect();
+    check("beam_modes::stiffness_coefficient_clamped_clamped", &got, &expected, &scale);
+}
+
+#[test]
+fn beam_modes_mode_shape_simply_supported() {
+    let expected = [-0.6188264537213173, -0.9971134036307414, -0.2970557492180813];
+    let scale = [0.6188264537213173, 0.9971134036307414, 0.2970557492180813];
+    let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::mode_shape_simply_supported(p[0], p[1]))
+        .collect();
+    check("beam_modes::mode_shape_simply_supported", &got, &expected, &scale);
+}
+
+#[test]
+fn beam_modes_mass_coefficient_simply_supported() {
+    let expected = [0.06921480435636945, 0.4509085134044331, 5.294577935986437];
+    let scale = [0.06921480435636945, 0.4509085134044331, 5.294577935986437];
+    let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::mass_coefficient_simply_supported(p[0], p[1]))
+        .collect();
+    check("beam_modes::mass_coefficient_simply_supported", &got, &expected, &scale);
+}
+
+#[test]
+fn beam_modes_stiffness_coefficient_simply_supported() {
+    let expected = [1100.0011510152526, 567.3623644616446, 46559.596636788854];
+    let scale = [1100.0011510152526, 567.3623644616446, 46559.596636788854];
+    let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::stiffness_coefficient_simply_supported(p[0], p[1]))
+        .collect();
+    check("beam_modes::stiffness_coefficient_simply_supported", &got, &expected, &scale);
+}
+
+#[test]
+fn beam_modes_static_flexibility_cantilever() {
+    let expected = [0.19753201658479574, 0.026483662819419895, 0.12433721983370942];
+    let scale = [0.19753201658479574, 0.026483662819419895, 0.12433721983370942];
+    let points: [[f64; 1]; 3] = [[0.839949_f64], [0.429899_f64], [0.719848_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::static_flexibility_cantilever(p[0]))
+        .collect();
+    check("beam_modes::static_flexibility_cantilever", &got, &expected, &scale);
+}
+
+#[test]
+fn beam_modes_static_flexibility_clamped_clamped() {
+    let expected = [0.0008098650799748584, 0.004907196606758609, 0.002733898168627366];
+    let scale = [0.0008098650799748584, 0.004907196606758609, 0.002733898168627366];
+    let points: [[f64; 1]; 3] = [[0.839949_f64], [0.429899_f64], [0.719848_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::static_flexibility_clamped_clamped(p[0]))
+        .collect();
+    check("beam_modes::static_flexibility_clamped_clamped", &got, &expected, &scale);
+}
+
+#[test]
+fn beam_modes_static_flexibility_simply_supported() {
+    let expected = [0.006024227495791071, 0.02002235792389933, 0.013556507056770578];
+    let scale = [0.006024227495791071, 0.02002235792389933, 0.013556507056770578];
+    let points: [[f64; 1]; 3] = [[0.839949_f64], [0.429899_f64], [0.719848_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::static_flexibility_simply_supported(p[0]))
+        .collect();
+    check("beam_modes::static_flexibility_simply_supported", &got, &expected, &scale);
+}
+
+#[test]
 fn fixed_points_contact_duration() {
     let expected = [0.08107108835283472, 0.005133929624330402, 0.5442714064450578];
     let scale = [0.08107108835283472, 0.005133929624330402, 0.5442714064450578];
