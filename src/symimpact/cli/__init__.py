@@ -24,6 +24,7 @@ from . import (
     export,
     fit,
     frf,
+    modes,
     periodic,
     reproduce,
     ritz,
@@ -33,7 +34,7 @@ from . import (
 from .common import Parser, apply_engineer_inputs, apply_materials
 
 #: The subcommands, in the order of ``symimpact --help``.
-SUBCOMMANDS = [reproduce, ritz, fit, contact, contact_duration, simulate, periodic, frf, branch, design,
+SUBCOMMANDS = [reproduce, ritz, modes, fit, contact, contact_duration, simulate, periodic, frf, branch, design,
                export, sweep]  # fmt: skip
 
 #: What runs each subcommand (by name, aliases included).

@@ -1,0 +1,52 @@
+"""``symimpact modes``: a finite-element model's first modes at the damper's degree of freedom
+(issue 36: each mode's mass and stiffness there, the primary a damper at that point sees)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .common import add_output, emit
+
+
+def add_parser(sub: Any) -> None:
+    """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
+    p = sub.add_parser(
+        "modes",
+        help="a finite-element model's first modes at the damper's DOF: mass, stiffness, "
+        "frequency, and how much of the DOF's static flexibility they hold",
+    )
+    p.add_argument("--fe", metavar="FILE", help="one .npz file holding arrays K [N/m] and M [kg]")
+    p.add_argument("--stiffness", metavar="FILE",
+                   help="the stiffness matrix K [N/m] (.mtx, .npy, .csv or a scipy sparse .npz)")  # fmt: skip
+    p.add_argument("--mass", metavar="FILE", help="the mass matrix M [kg], as --stiffness")
+    p.add_argument("--dof", type=int, required=True, metavar="J",
+                   help="the damper's degree of freedom: a 0-based row of K and M")  # fmt: skip
+    p.add_argument("--modes", type=int, default=4, metavar="N", help="modes to list (default 4)")
+    add_output(p)
+
+
+def run(ns) -> None:
+    from ..modal import fe_modes, read_matrices, static_flexibility
+
+    K, M = read_matrices(ns.fe, ns.stiffness, ns.mass)
+    modes = fe_modes(K, M, ns.dof, ns.modes)
+    exact = static_flexibility(K, ns.dof)
+    summed = sum(1.0 / m.K for m in modes if not m.node)
+    out = {"dof": ns.dof, "modes": [m.as_dict() for m in modes], "static_flexibility": exact,
+           "static_flexibility_of_the_modes": summed}  # fmt: skip
+    lines = [
+        f"{'mode':>4}  {'f [Hz]':>11}  {'M at the DOF [kg]':>17}  {'K at the DOF [N/m]':>18}",
+        *(
+            f"{m.number:>4}  {m.frequency:11.5g}  "
+            + (f"{'node':>17}  {'node':>18}" if m.node else f"{m.M:17.6g}  {m.K:18.6g}")
+            for m in modes
+        ),
+        f"static flexibility at DOF {ns.dof}: {exact * 1e3:.6g} mm/N; the sum over these "
+        f"{len(modes)} modes, Σ1/K, {summed * 1e3:.6g} mm/N ({(1 - summed / exact) * 100:.3g} % "
+        "short)",
+    ]
+    emit(ns, out, "\n".join(lines))
+
+
+#: The subcommands this module runs.
+COMMANDS = {"modes": run}

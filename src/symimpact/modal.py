@@ -1,0 +1,210 @@
+"""A structure's modes at the damper's point from a finite-element model: the stiffness and mass
+matrices K and M of the constrained model, read from ``.npz`` (arrays ``K`` and ``M``), Matrix
+Market ``.mtx``, ``.npy`` or CSV files, reduced to their first N modes at an attachment degree of
+freedom (issue 36, a primary given by its finite-element model).
+
+Each mode i is normalised to unit modal mass, φᵢᵀMφᵢ = 1; referred to the attachment DOF j (the
+displacement there is the mode's coordinate) its mass is Mᵢ = 1/φᵢⱼ² and its stiffness
+Kᵢ = ωᵢ²Mᵢ — the same reduction as Step 1 and Step 14 apply to a beam's modes (Eq. 5–6, F6), so
+that one mode is the primary a damper at that DOF sees.  The DOF's static flexibility
+(K⁻¹)ⱼⱼ is the limit of Σᵢ 1/Kᵢ over all modes: how much of it the first N carry says whether
+they describe the point.
+
+The eigenproblem is solved in its flexibility form, M v = μ K v with μ = 1/ω² (a Cholesky
+factor of K), so that the lowest modes keep their relative accuracy whatever the model's
+highest frequency; a sparse model (``.mtx``, or ``.npz`` of scipy sparse matrices) is solved by
+ARPACK in shift-invert mode about zero.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .errors import ParameterError
+
+#: Below this many degrees of freedom a sparse model is solved densely.
+DENSE = 2000
+
+
+@dataclass(frozen=True)
+class FEMode:
+    """One mode of a finite-element model referred to its attachment DOF (SI)."""
+
+    number: int
+    #: natural angular frequency [rad/s]
+    omega: float
+    #: modal mass referred to the DOF, 1/φⱼ² for φ of unit modal mass [kg] (inf at a node)
+    M: float
+    #: modal stiffness referred to the DOF, ω²M [N/m] (inf at a node)
+    K: float
+    #: the unit-modal-mass shape at the DOF [kg^-1/2]
+    shape: float
+
+    @property
+    def frequency(self) -> float:
+        """Natural frequency ω/2π [Hz]."""
+        return self.omega / (2.0 * math.pi)
+
+    @property
+    def node(self) -> bool:
+        """True when the mode does not move the DOF."""
+        return not math.isfinite(self.M)
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"mode": self.number, "omega": self.omega, "frequency": self.frequency,
+                "M": None if self.node else self.M, "K": None if self.node else self.K,
+                "shape": self.shape, "node": self.node}  # fmt: skip
+
+
+def _read_one(name: str, path: Path):
+    """One matrix from ``path`` (.mtx, .npy or .csv)."""
+    suffix = path.suffix.lower()
+    try:
+        if suffix == ".mtx":
+            from scipy.io import mmread
+
+            return mmread(str(path))
+        if suffix == ".npy":
+            return np.load(path, allow_pickle=False)
+        if suffix == ".csv":
+            return np.loadtxt(path, delimiter=",", ndmin=2)
+    except FileNotFoundError:
+        raise ParameterError(name, f"no file {path}") from None
+    except (OSError, ValueError) as exc:
+        raise ParameterError(name, f"{path} is not a readable matrix ({exc})") from None
+    raise ParameterError(name, f"{path}: give a .mtx, .npy or .csv file (or one .npz of K and M)")
+
+
+def read_matrices(fe: Any = None, K: Any = None, M: Any = None) -> tuple[Any, Any]:
+    """(K [N/m], M [kg]) of a finite-element model: from one ``.npz`` file ``fe`` holding arrays
+    ``K`` and ``M`` (dense, or scipy sparse saved by ``scipy.sparse.save_npz`` as ``K.npz`` and
+    ``M.npz`` given as ``K`` and ``M``), or from two files ``K`` and ``M`` (.mtx, .npy, .csv)."""
+    if fe is not None:
+        if K is not None or M is not None:
+            raise ParameterError("fe", "give either one .npz file of K and M or the two files")
+        path = Path(fe)
+        if path.suffix.lower() != ".npz":
+            raise ParameterError("fe", f"{path}: an .npz file holding arrays K and M")
+        try:
+            with np.load(path, allow_pickle=False) as data:
+                if "K" not in data or "M" not in data:
+                    raise ParameterError("fe", f"{path} holds {sorted(data)}, not arrays K and M")
+                return data["K"], data["M"]
+        except FileNotFoundError:
+            raise ParameterError("fe", f"no file {path}") from None
+        except (OSError, ValueError) as exc:
+            raise ParameterError("fe", f"{path} is not a readable .npz file ({exc})") from None
+    if K is None or M is None:
+        raise ParameterError("K" if K is None else "M", "needs both matrices (or one .npz)")
+    out = []
+    for name, value in (("K", K), ("M", M)):
+        path = Path(value)
+        if path.suffix.lower() == ".npz":
+            from scipy import sparse
+
+            try:
+                out.append(sparse.load_npz(path))
+            except (OSError, ValueError) as exc:
+                raise ParameterError(name, f"{path} is not a scipy sparse .npz ({exc})") from None
+        else:
+            out.append(_read_one(name, path))
+    return out[0], out[1]
+
+
+def _checked(name: str, A: Any, n: int | None):
+    from scipy import sparse
+
+    if sparse.issparse(A):
+        A = sparse.csc_matrix(A, dtype=float)
+        data = A.data
+    else:
+        A = np.asarray(A, dtype=float)
+        data = A
+    if A.ndim != 2 or A.shape[0] != A.shape[1]:
+        raise ParameterError(name, f"must be a square matrix, got shape {A.shape}")
+    if n is not None and A.shape[0] != n:
+        raise ParameterError(name, f"is {A.shape[0]}×{A.shape[0]}, K is {n}×{n}")
+    if not np.all(np.isfinite(data)):
+        raise ParameterError(name, "holds a value that is not a finite number")
+    asym = abs(A - A.T).max() if sparse.issparse(A) else np.max(np.abs(A - A.T))
+    if asym > 1e-10 * max(abs(A).max(), 1e-300):
+        raise ParameterError(name, f"is not symmetric (largest |A − Aᵀ| {asym:.3g})")
+    return A
+
+
+def fe_modes(K: Any, M: Any, dof: Any, n: Any = 1) -> list[FEMode]:
+    """The first ``n`` modes of the model (K [N/m], M [kg], constrained: K positive definite)
+    referred to DOF ``dof`` (0-based): ω from K v = ω²M v, Mᵢ = 1/φᵢⱼ² with φᵢ of unit modal
+    mass, Kᵢ = ωᵢ²Mᵢ (the reduction of Eq. 5–6 and F6 applied to the model's modes)."""
+    from scipy import sparse
+    from scipy.linalg import LinAlgError, eigh
+
+    K = _checked("K", K, None)
+    size = K.shape[0]
+    M = _checked("M", M, size)
+    if not isinstance(dof, int | np.integer) or isinstance(dof, bool) or not 0 <= dof < size:
+        raise ParameterError("dof", f"a degree of freedom from 0 to {size - 1}, got {dof!r}")
+    if not isinstance(n, int | np.integer) or isinstance(n, bool) or not 1 <= n <= min(size, 100):
+        raise ParameterError("modes", f"a whole number from 1 to {min(size, 100)}, got {n!r}")
+    try:
+        if sparse.issparse(K) and size > DENSE:
+            from scipy.sparse.linalg import eigsh
+
+            lam, vec = eigsh(K, k=n, M=sparse.csc_matrix(M), sigma=0.0, which="LM")
+            order = np.argsort(lam)
+            lam, vec = lam[order], vec[:, order]
+        else:
+            Kd = K.toarray() if sparse.issparse(K) else K
+            Md = M.toarray() if sparse.issparse(M) else M
+            mu, vec = eigh(Md, Kd, subset_by_index=[size - n, size - 1])
+            lam, vec = 1.0 / mu[::-1], vec[:, ::-1]
+    except (LinAlgError, RuntimeError) as exc:
+        raise ParameterError(
+            "K",
+            "the model is not positive definite (a rigid-body mode, or M singular): constrain "
+            f"it at its supports ({exc})",
+        ) from None
+    if not np.all(lam > 0):
+        raise ParameterError("K", "the model has a mode of zero or negative stiffness")
+    Mv = M @ vec
+    vec = vec / np.sqrt(np.einsum("ij,ij->j", vec, Mv))  # unit modal mass
+    modes = []
+    for i in range(n):
+        phi = float(vec[dof, i])
+        omega = float(math.sqrt(lam[i]))
+        # a node: the DOF's share of the mode's largest displacement below 1e-9
+        if abs(phi) < 1e-9 * float(np.max(np.abs(vec[:, i]))):
+            modes.append(FEMode(i + 1, omega, math.inf, math.inf, phi))
+        else:
+            Mi = 1.0 / phi**2
+            modes.append(FEMode(i + 1, omega, Mi, omega * omega * Mi, phi))
+    return modes
+
+
+def static_flexibility(K: Any, dof: Any) -> float:
+    """(K⁻¹)ⱼⱼ [m/N]: the DOF's deflection under a unit static force there, the limit of Σ 1/Kᵢ
+    over all the model's modes."""
+    from scipy import sparse
+    from scipy.linalg import LinAlgError, solve
+
+    K = _checked("K", K, None)
+    size = K.shape[0]
+    if not isinstance(dof, int | np.integer) or isinstance(dof, bool) or not 0 <= dof < size:
+        raise ParameterError("dof", f"a degree of freedom from 0 to {size - 1}, got {dof!r}")
+    load = np.zeros(size)
+    load[dof] = 1.0
+    try:
+        if sparse.issparse(K):
+            from scipy.sparse.linalg import spsolve
+
+            u = spsolve(K, load)
+        else:
+            u = solve(K, load, assume_a="pos")
+    except LinAlgError:
+        raise ParameterError("K", "is singular: constrain the model at its supports") from None
+    return float(u[dof])
