@@ -20,6 +20,9 @@ response at that point is a sum over modes.  On the board:
 5. The point's static flexibility from the beam's statics (EI w'''' = P δ(ξ − ξ₀), solved in two
    cubic pieces) against the modal sum Σ 1/K_i: it converges as N⁻³, the measure of how many
    modes a point needs.
+6. An impact at the point: each mode (referred to the point) takes the impulse P through its own
+   modal mass, so the beam meets the impact mass as one effective mass, 1/m_eff = Σ 1/Mᵢ; one
+   mode gives Step 9's law.
 """
 
 from __future__ import annotations
@@ -292,6 +295,55 @@ def derive() -> Board:
                 all(6 < r < 10 for r in rates) and all(e[-1] < 1e-5 for e in sums.values()),
                 "error(32)/error(64) = " + ", ".join(mp.nstr(r, 4) for r in rates))  # fmt: skip
 
+    # --- an impact at the point of an N-mode beam ---------------------------------------------
+    # Each modal coordinate qᵢ is referred to the point (its displacement there, so φᵢ = 1 at the
+    # point and x = Σqᵢ): an impulse P at the point changes each q̇ᵢ by P/Mᵢ, the impact mass's
+    # velocity by −P/m.  Written for three modes; the pattern holds for any number.
+    n_modes = 3
+    Ms = sp.symbols(f"M_1:{n_modes + 1}", positive=True)
+    vs = sp.symbols(f"qdot_1:{n_modes + 1}", real=True)
+    m, e = sp.symbols("m", positive=True), sp.Symbol("e", nonnegative=True)
+    u, P = sp.symbols("ydot_minus P", real=True)
+    xdot = sum(vs)
+    after = [v + P / Mi for v, Mi in zip(vs, Ms, strict=True)]
+    newton = sp.Eq((u - P / m) - sum(after), -e * (u - xdot))
+    impulse = w(
+        "point_impulse",
+        sp.factor(sp.solve(newton, P)[0]),
+        "The impulse at the point of a beam of three modes (modal masses Mᵢ referred to the "
+        "point): Newton's law on the point's relative velocity, each modal velocity jumping by "
+        "P/Mᵢ and the impact mass's by −P/m.",
+    )
+    m_eff, zdot = sp.symbols("m_eff zdot_minus", positive=True)
+    mu_eff = m * m_eff / (m + m_eff)
+    general = w(
+        "point_impulse_effective_mass",
+        (1 + e) * mu_eff * zdot,
+        "P = (1 + e)·μ·ż⁻ with μ = m·m_eff/(m + m_eff) and the effective mass at the point "
+        "1/m_eff = Σᵢ 1/Mᵢ (ż⁻ = ẏ⁻ − ẋ⁻, ẋ = Σq̇ᵢ): the beam meets the impact mass as one mass.",
+    )
+    sum_inverse = sum(1 / Mi for Mi in Ms)
+    board.check(
+        "the impulse is (1 + e)·μ_eff·ż⁻ with 1/m_eff = Σ 1/Mᵢ",
+        "F6",
+        sp.simplify(impulse - general.subs({m_eff: 1 / sum_inverse, zdot: u - xdot})) == 0,
+    )
+    energy = sum(Mi * v**2 for Mi, v in zip(Ms, vs, strict=True)) / 2 + m * u**2 / 2
+    energy_after = (sum(Mi * a**2 for Mi, a in zip(Ms, after, strict=True)) / 2
+                    + m * (u - P / m) ** 2 / 2)  # fmt: skip
+    lost = sp.simplify((energy - energy_after).subs(P, impulse))
+    board.check(
+        "energy lost = ½·μ_eff·(1 − e²)·ż⁻², as for two masses (Step 9)",
+        "F6",
+        sp.simplify(lost - (1 - e**2) * mu_eff.subs(m_eff, 1 / sum_inverse) * (u - xdot) ** 2 / 2)
+        == 0,
+    )
+    # one mode: Step 9's law, ẋ⁺ = ẋ⁻ + (1 + e)·μ/M·(ẏ⁻ − ẋ⁻) with μ = mM/(m + M)
+    Mo, xm = sp.symbols("M xdot_minus")
+    one = (xm + general / Mo).subs({m_eff: Mo, zdot: u - xm})
+    step9 = xm + (1 + e) * (m * Mo / (m + Mo)) / Mo * (u - xm)
+    board.check("one mode gives Step 9's impact law", "F6", sp.simplify(one - step9) == 0)
+
     # --- kernels -----------------------------------------------------------------------------
     arg_k = Arg(
         k, "1", "Root βL of the beam's frequency equation (its BETA_L_… constant)", 3.0, 12.0
@@ -311,6 +363,22 @@ def derive() -> Board:
                      returns=f"Stiffness K·L³/(EI) of a mode of the {name} referred to the point ξ",
                      unit="1", equation="F6", lhs=r"\frac{K L^3}{E I}",
                      note="beta_L must be a root of the frequency equation.")  # fmt: skip
+    board.kernel(
+        name="point_impulse",
+        args=(
+            Arg(m, "kg", "Impact mass m", 0.01, 2.0, log=True),
+            Arg(m_eff, "kg", "Effective mass of the beam at the point, 1/Σ(1/Mᵢ)", 0.1, 50.0,
+                log=True),
+            Arg(e, "1", "Coefficient of restitution e", 0.0, 1.0),
+            Arg(zdot, "m/s", "Relative approach velocity ż⁻ = ẏ⁻ − ẋ⁻ at the point", 0.01, 2.0),
+        ),
+        expr=general,
+        returns="Impulse P at the point of an N-mode beam; each modal velocity (mode referred to "
+        "the point) jumps by P/Mᵢ, the impact mass's by −P/m",
+        unit="N s",
+        equation="F6",
+        lhs="P",
+    )  # fmt: skip
     arg_x0 = Arg(x0, "1", "Point ξ₀ = r₀/L of the static force (0 < ξ₀ ≤ 1)", 0.2, 0.9)
     for beam in BEAMS:
         board.kernel(name=f"static_flexibility_{beam}", args=(arg_x0,), expr=flex[beam],

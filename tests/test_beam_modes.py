@@ -184,3 +184,41 @@ def test_a_system_from_a_clamped_beam_is_its_mode_at_the_point():
     assert (s.K, s.M) == (third.K, third.M)
     assert s.omega_n == pytest.approx(10.9956078**2 * math.sqrt(E * I / (RHO * A * L**4)),
                                       rel=1e-8)  # Blevins' β₃L, 9 digits  # fmt: skip
+
+
+@pytest.mark.parametrize("c1", [0.0, 3.0])
+def test_the_point_impulse_is_a_short_contact_integrated(c1):
+    """An impact mass m against the point of a three-mode structure (modal masses 1, 3 and 0.5 kg
+    referred to the point), through a linear contact spring k₁ 1e6 N/m with damping c₁, integrated
+    by scipy (DOP853, rtol 1e-12) with the modal springs left out (the contact lasts about a
+    millisecond): each modal velocity jumps by P/Mᵢ with Step 14's impulse (kernel
+    ``point_impulse``) at the restitution of Step 6's linear contact for m against the effective
+    mass (kernel ``linear_restitution``; 1 without damping).  Bound 1e-9 of P: the integrator's
+    tolerance."""
+    from scipy.integrate import solve_ivp
+    from symimpact.generated import beam_modes as bm
+    from symimpact.generated import closed_forms as cf
+
+    m, Ms, k1 = 0.2, np.array([1.0, 3.0, 0.5]), 1e6
+    m_eff = 1.0 / np.sum(1.0 / Ms)
+    q0, u0 = np.array([0.1, -0.05, 0.02]), -0.5  # the point moves at 0.07 m/s, the mass at −0.5
+
+    def rhs(_t, s):
+        z, q, u = s[0] - np.sum(s[1:4]), s[4:7], s[7]  # s: y, q₁…q₃, q̇₁…q̇₃, ẏ (z = y − x)
+        zdot = u - np.sum(q)
+        force = -(k1 * z + c1 * zdot) if z < 0 else 0.0  # the mass presses on the point from above
+        return [u, *q, *(-force / Ms), force / m]
+
+    def leaves(_t, s):
+        return s[0] - np.sum(s[1:4])
+
+    leaves.terminal, leaves.direction = True, 1
+    start = [0.0, 0.0, 0.0, 0.0, *q0, u0]
+    run = solve_ivp(rhs, (0.0, 1.0), start, method="DOP853", rtol=1e-12, atol=1e-15,
+                    events=leaves, first_step=1e-7)  # fmt: skip
+    end = run.y_events[0][0]
+    zdot0 = np.sum(q0) - u0  # approach speed of the point towards the mass
+    e = 1.0 if c1 == 0 else float(cf.linear_restitution(m, m_eff, k1, c1))
+    P = float(bm.point_impulse(m, m_eff, e, zdot0))
+    assert np.max(np.abs(end[4:7] - (q0 - P / Ms))) < 1e-9 * P / Ms.min()
+    assert end[7] == pytest.approx(u0 + P / m, rel=1e-9)

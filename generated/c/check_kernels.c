@@ -3373,6 +3373,26 @@ static void check_beam_modes_stiffness_coefficient_simply_supported(void)
     }
 }
 
+/* beam_modes.point_impulse: Impulse P at the point of an N-mode beam; each modal velocity (mode referred... [N s] */
+static void check_beam_modes_point_impulse(void)
+{
+    static const double expected[3] = { 0.16525931383138934, 0.17786624161002768, 0.5094716095351737 };
+    static const double scale[3] = { 0.16525931383138934, 0.17786624161002768, 0.5094716095351737 };
+    static const double a_m[3] = { 1.2695, 0.0569798, 0.511492 };
+    static const double a_m_eff[3] = { 0.422959, 40.002, 7.56649 };
+    static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+    static const double a_zdot_minus[3] = { 0.300045, 1.58509, 0.880135 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_point_impulse", i, symimpact_beam_modes_point_impulse(a_m[i], a_m_eff[i], a_e[i], a_zdot_minus[i]), expected[i], scale[i]);
+    }
+    symimpact_beam_modes_point_impulse_batch(3, a_m, a_m_eff, a_e, a_zdot_minus, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_beam_modes_point_impulse_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* beam_modes.static_flexibility_cantilever: Static deflection of the cantilever at ξ₀ under a unit force there, in units... [1] */
 static void check_beam_modes_static_flexibility_cantilever(void)
 {
@@ -3705,6 +3725,7 @@ int main(void)
     check_beam_modes_mode_shape_simply_supported();
     check_beam_modes_mass_coefficient_simply_supported();
     check_beam_modes_stiffness_coefficient_simply_supported();
+    check_beam_modes_point_impulse();
     check_beam_modes_static_flexibility_cantilever();
     check_beam_modes_static_flexibility_clamped_clamped();
     check_beam_modes_static_flexibility_simply_supported();
@@ -3713,6 +3734,6 @@ int main(void)
     check_fixed_points_contact_duration_printed();
     check_fixed_points_hunt_crossley_restitution();
     check_fixed_points_hunt_crossley_peak_speed_ratio();
-    printf("symimpact: %ld checks of 155 kernels and 5 iterations, %ld failed\n", checks, failures);
+    printf("symimpact: %ld checks of 156 kernels and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -5180,6 +5180,20 @@ void symimpact_beam_modes_stiffness_coefficient_simply_supported_batch(size_t n,
     }
 }
 
+/* Eq. F6: P = \frac{m m_{eff} \dot{z}_{minus} \left(e + 1\right)}{m + m_{eff}} */
+double symimpact_beam_modes_point_impulse(double m, double m_eff, double e, double zdot_minus)
+{
+    return m*m_eff*zdot_minus*(e + 1)/(m + m_eff);
+}
+
+void symimpact_beam_modes_point_impulse_batch(size_t n, const double *restrict m, const double *restrict m_eff, const double *restrict e, const double *restrict zdot_minus, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_beam_modes_point_impulse(m[i], m_eff[i], e[i], zdot_minus[i]);
+    }
+}
+
 /* Eq. F6: \frac{w(\xi_0) E I}{P L^3} = \frac{\xi_{0}^{3}}{3} */
 double symimpact_beam_modes_static_flexibility_cantilever(double xi_0)
 {

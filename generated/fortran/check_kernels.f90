@@ -1678,6 +1678,15 @@ program check_kernels
 [0.33923_dp, 0.778461_dp, 0.617691_dp])
     call check("beam_modes_stiffness_coefficient_simply_supported", got, expected, scale)
 
+    ! beam_modes.point_impulse
+    expected = [0.16525931383138934_dp, 0.17786624161002768_dp, 0.5094716095351737_dp]
+    scale = [0.16525931383138934_dp, 0.17786624161002768_dp, 0.5094716095351737_dp]
+    got = beam_modes_point_impulse([1.2695_dp, 0.0569798_dp, 0.511492_dp], &
+[0.422959_dp, 40.002_dp, 7.56649_dp], &
+[0.736068_dp, 0.972136_dp, 0.208204_dp], &
+[0.300045_dp, 1.58509_dp, 0.880135_dp])
+    call check("beam_modes_point_impulse", got, expected, scale)
+
     ! beam_modes.static_flexibility_cantilever
     expected = [0.19753201658479574_dp, 0.026483662819419895_dp, 0.12433721983370942_dp]
     scale = [0.19753201658479574_dp, 0.026483662819419895_dp, 0.12433721983370942_dp]
@@ -1758,7 +1767,7 @@ program check_kernels
     call check("fixed_points_hunt_crossley_peak_speed_ratio", got, expected, scale)
     call check_steps("fixed_points_hunt_crossley_peak_speed_ratio", taken, steps)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 155 kernels and 5 iterations, ", &
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 156 kernels and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

@@ -19,6 +19,7 @@ __all__ = [
     "mode_shape_simply_supported",
     "mass_coefficient_simply_supported",
     "stiffness_coefficient_simply_supported",
+    "point_impulse",
     "static_flexibility_cantilever",
     "static_flexibility_clamped_clamped",
     "static_flexibility_simply_supported",
@@ -104,6 +105,18 @@ def stiffness_coefficient_simply_supported(beta_L, xi):
     ``xi``: Point ξ = r/L along the beam (0 < ξ < 1) [1]
     """
     return (1/2)*beta_L**4*jax.numpy.cos(beta_L)**2/jax.numpy.sin(beta_L*xi)**2
+
+
+@jax.jit
+def point_impulse(m, m_eff, e, zdot_minus):
+    r"""Impulse P at the point of an N-mode beam; each modal velocity (mode referred to the point) jumps by P/Mᵢ, the impact mass's by −P/m [N s], Eq. F6 (derived here, beyond the paper).
+
+    ``m``: Impact mass m [kg]
+    ``m_eff``: Effective mass of the beam at the point, 1/Σ(1/Mᵢ) [kg]
+    ``e``: Coefficient of restitution e [1]
+    ``zdot_minus``: Relative approach velocity ż⁻ = ẏ⁻ − ẋ⁻ at the point [m/s]
+    """
+    return m*m_eff*zdot_minus*(e + 1)/(m + m_eff)
 
 
 @jax.jit

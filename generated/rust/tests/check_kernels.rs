@@ -1844,6 +1844,18 @@ fn beam_modes_stiffness_coefficient_simply_supported() {
 }
 
 #[test]
+fn beam_modes_point_impulse() {
+    let expected = [0.16525931383138934, 0.17786624161002768, 0.5094716095351737];
+    let scale = [0.16525931383138934, 0.17786624161002768, 0.5094716095351737];
+    let points: [[f64; 4]; 3] = [[1.2695_f64, 0.422959_f64, 0.736068_f64, 0.300045_f64], [0.0569798_f64, 40.002_f64, 0.972136_f64, 1.58509_f64], [0.511492_f64, 7.56649_f64, 0.208204_f64, 0.880135_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::beam_modes::point_impulse(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("beam_modes::point_impulse", &got, &expected, &scale);
+}
+
+#[test]
 fn beam_modes_static_flexibility_cantilever() {
     let expected = [0.19753201658479574, 0.026483662819419895, 0.12433721983370942];
     let scale = [0.19753201658479574, 0.026483662819419895, 0.12433721983370942];
