@@ -44,5 +44,6 @@ def text() -> str:
         f"{MAX_EVENTS:.0e} rigid impacts or {MAX_CONTACTS:,} compliant contacts "
         f"({RHS_BUDGET:.0e} evaluations of their equations); shooting at most {MAX_ITER} Newton "
         f"steps and {MAX_IMPACTS_PER_PERIOD} rigid impacts ({SHOOTING_EVALUATIONS_PER_PERIOD:.0e} "
-        f"evaluations of the compliant contacts' equations) a period; a branch at most {MAX_POINTS} continuation points each way."
+        "evaluations of the compliant contacts' equations) a period; a branch at most "
+        f"{MAX_POINTS} continuation points each way."
     )
