@@ -18,10 +18,10 @@ response at that point is a sum over modes.  On the board:
    referred to the damper's point ξ (the displacement there is the mode's coordinate):
    M/(ρAL) = ∫φ²dξ/φ(ξ)², K·L³/(EI) = k⁴·M/(ρAL).
 5. The point's static flexibility from the beam's statics (EI w'''' = P δ(ξ − ξ₀), solved in two
-   cubic pieces) against the modal sum Σ 1/K_i: it converges as N⁻³, the measure of how many
+   cubic pieces) against the modal sum Σ 1/Kᵢ: it converges as N⁻³, the measure of how many
    modes a point needs.
 6. An impact at the point: each mode (referred to the point) takes the impulse P through its own
-   modal mass, so the beam meets the impact mass as one effective mass, 1/m_eff = Σ 1/Mᵢ; one
+   modal mass, so the beam meets the impact mass as one effective mass, 1/m<sub>eff</sub> = Σ 1/Mᵢ; one
    mode gives Step 9's law.
 """
 
@@ -51,6 +51,7 @@ BEAMS = {
 }  # fmt: skip
 #: The derivatives each end holds at zero.
 ENDS = {"clamped": (0, 1), "free": (2, 3), "pinned": (0, 2)}
+SUPERSCRIPT = {2: "²", 4: "⁴", 6: "⁶"}
 NAMES = {"cantilever": "cantilever", "clamped_clamped": "clamped–clamped beam",
          "simply_supported": "simply supported beam"}  # fmt: skip
 
@@ -110,12 +111,12 @@ def derive() -> Board:
         power = sum(ENDS[left]) + sum(ENDS[right])  # each derivative brings a factor k
         det = w(f"determinant_{beam}", sp.simplify(matrix.det() / k**power),
                 f"The {name}: the determinant of its end conditions ({left} at ξ = 0, {right} "
-                f"at ξ = 1), divided by k^{power}.")  # fmt: skip
+                f"at ξ = 1), divided by k{SUPERSCRIPT[power]}.")  # fmt: skip
         freq = w(f"frequency_equation_{beam}", sp.Eq(equation, 0),
                  f"A mode needs a zero determinant: the {name}'s frequency equation.")  # fmt: skip
         ratio = sp.simplify(det / freq.lhs)
         board.check(f"{name}: frequency equation from the end conditions", "F6",
-                    bool(ratio.is_number and ratio != 0), f"determinant = {ratio}·k^{power}·(equation)")  # fmt: skip
+                    bool(ratio.is_number and ratio != 0), f"determinant = {ratio}·k{SUPERSCRIPT[power]}·(equation)")  # fmt: skip
         mode = w(f"mode_shape_{beam}", shapes[beam],
                  f"The {name}'s mode shape, written so that no term exceeds 2 at large k.")  # fmt: skip
         same = sp.simplify((mode - textbook[beam]).rewrite(sp.exp)) == 0
@@ -319,12 +320,13 @@ def derive() -> Board:
     general = w(
         "point_impulse_effective_mass",
         (1 + e) * mu_eff * zdot,
-        "P = (1 + e)·μ·ż⁻ with μ = m·m_eff/(m + m_eff) and the effective mass at the point "
-        "1/m_eff = Σᵢ 1/Mᵢ (ż⁻ = ẏ⁻ − ẋ⁻, ẋ = Σq̇ᵢ): the beam meets the impact mass as one mass.",
+        "P = (1 + e)·μ·ż⁻ with μ = m·m<sub>eff</sub>/(m + m<sub>eff</sub>) and the effective "
+        "mass at the point 1/m<sub>eff</sub> = Σᵢ 1/Mᵢ (ż⁻ = ẏ⁻ − ẋ⁻, ẋ = Σq̇ᵢ): the beam meets "
+        "the impact mass as one mass.",
     )
     sum_inverse = sum(1 / Mi for Mi in Ms)
     board.check(
-        "the impulse is (1 + e)·μ_eff·ż⁻ with 1/m_eff = Σ 1/Mᵢ",
+        "the impulse is (1 + e)·μ·ż⁻, μ the reduced mass of m and the effective mass (Σ 1/Mᵢ)⁻¹",
         "F6",
         sp.simplify(impulse - general.subs({m_eff: 1 / sum_inverse, zdot: u - xdot})) == 0,
     )
@@ -333,7 +335,7 @@ def derive() -> Board:
                     + m * (u - P / m) ** 2 / 2)  # fmt: skip
     lost = sp.simplify((energy - energy_after).subs(P, impulse))
     board.check(
-        "energy lost = ½·μ_eff·(1 − e²)·ż⁻², as for two masses (Step 9)",
+        "energy lost = ½·μ·(1 − e²)·ż⁻², as for two masses (Step 9)",
         "F6",
         sp.simplify(lost - (1 - e**2) * mu_eff.subs(m_eff, 1 / sum_inverse) * (u - xdot) ** 2 / 2)
         == 0,
