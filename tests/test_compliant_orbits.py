@@ -239,6 +239,27 @@ def test_design_with_a_compliant_contact(capsys):
     assert best["peak_amplitude"] == min(r["peak_amplitude"] for r in rows)
 
 
+def _long_run_and_differences(system, f, contact, orbit, scale, periods):
+    """Independent checks of a shot compliant orbit: how far a ``periods``-period simulation from
+    its state ends from it (largest difference over ``scale``), the carried Jacobian J, central
+    differences of the map with steps 1e-5 of ``scale``, and the monodromy's run."""
+    state = np.array(orbit.state)
+    x, v, z, u = orbit.state
+    long = simulate_forced(system, f, contact=contact.law, chi=contact.chi, periods=periods, x0=x,
+                           xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
+    fx, fv, fy, fu = long.final_state
+    returned = np.max(np.abs((np.array([fx, fv, fy - fx, fu]) - state) / scale))
+    _, J, res = monodromy(system, f, contact, state)
+    cols = []
+    for j in range(4):
+        d = np.zeros(4)
+        d[j] = 1e-5 * scale[j]
+        plus = monodromy(system, f, contact, state + d, jacobian=False)[0]
+        minus = monodromy(system, f, contact, state - d, jacobian=False)[0]
+        cols.append((plus - minus) / (2 * d[j]))
+    return returned, J, np.column_stack(cols), res
+
+
 def test_a_chattering_compliant_orbit_of_66_contacts_a_period_is_shot():
     """Hunt–Crossley, K_Hz 1e10 N/m^1.5, χ 2 s/m, at 30.8 rad/s (the resonance): from rest the
     motion settles on a period-1 orbit of 66 contacts a period (chatter on both walls), which
@@ -254,23 +275,10 @@ def test_a_chattering_compliant_orbit_of_66_contacts_a_period_is_shot():
     f = Forcing(F0=2, omega=w)
     orbit = shoot_from_rest(system, f, hc, warmup=400)
     assert orbit.impacts_per_period == 66 and orbit.period_multiple == 1 and orbit.stable
-    state = np.array(orbit.state)
     a = orbit.amplitude
     scale = np.array([a, a * w, 0.01, a * w])
-    x, v, z, u = orbit.state
-    long = simulate_forced(system, f, contact="hunt-crossley", chi=2.0, periods=600, x0=x,
-                           xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
-    fx, fv, fy, fu = long.final_state
-    assert np.max(np.abs((np.array([fx, fv, fy - fx, fu]) - state) / scale)) < 1e-8
-    _, J, _ = monodromy(system, f, hc, state)
-    cols = []
-    for j in range(4):
-        d = np.zeros(4)
-        d[j] = 1e-5 * scale[j]
-        plus = monodromy(system, f, hc, state + d, jacobian=False)[0]
-        minus = monodromy(system, f, hc, state - d, jacobian=False)[0]
-        cols.append((plus - minus) / (2 * d[j]))
-    fd = np.column_stack(cols)
+    returned, J, fd, _ = _long_run_and_differences(system, f, hc, orbit, scale, 600)
+    assert returned < 1e-8
     assert np.max(np.abs((J - fd) * scale[None, :] / scale[:, None])) < 1e-4
     moduli = np.sort(np.abs(np.linalg.eigvals(fd)))[::-1]
     assert np.max(np.abs(moduli - np.array(orbit.multipliers))) < 1e-5
@@ -295,23 +303,10 @@ def test_an_orbit_of_304_contacts_a_period_is_shot_at_a_cost_linear_in_its_conta
     fx, fv, fy, fu = settled.final_state
     orbit = shoot(system, f, hc, (fx, fv, fy - fx, fu))
     assert orbit.impacts_per_period == 304 and orbit.period_multiple == 1 and orbit.stable
-    state = np.array(orbit.state)
     a = orbit.amplitude
     scale = np.array([a, a * w, 0.005, a * w])
-    x, v, z, u = orbit.state
-    long = simulate_forced(system, f, contact="hunt-crossley", chi=2.2, periods=200, x0=x,
-                           xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
-    fx, fv, fy, fu = long.final_state
-    assert np.max(np.abs((np.array([fx, fv, fy - fx, fu]) - state) / scale)) < 1e-8
-    _, J, res = monodromy(system, f, hc, state)
-    cols = []
-    for j in range(4):
-        d = np.zeros(4)
-        d[j] = 1e-5 * scale[j]
-        plus = monodromy(system, f, hc, state + d, jacobian=False)[0]
-        minus = monodromy(system, f, hc, state - d, jacobian=False)[0]
-        cols.append((plus - minus) / (2 * d[j]))
-    fd = np.column_stack(cols)
+    returned, J, fd, res = _long_run_and_differences(system, f, hc, orbit, scale, 200)
+    assert returned < 1e-8
     assert np.max(np.abs((J - fd) * scale[None, :] / scale[:, None])) < 1e-3
     per_contact = res.contact_evaluations / len(res.impacts)
     small = LAWS.with_(k_hz=1e10)
