@@ -29,6 +29,7 @@ STEPS = (
     "slow_flow",
     "hertz_contact",
     "beam_modes",
+    "modal_structure",
 )
 
 

@@ -66,6 +66,25 @@ def roots(beam: str, n: int = N_MODES, dps: int = DIGITS) -> list[mp.mpf]:
                             solver="anderson") for i in range(1, n + 1)]  # fmt: skip
 
 
+#: φ and its derivatives φ⁽ⁿ⁾ on the board: f0 … f4
+F = sp.symbols("f0:5")
+#: N, with dN/dξ = 4k⁴φ² (section 4 of the module text)
+NORM_BRACKET = xi * (k**4 * F[0] ** 2 - 2 * F[1] * F[3] + F[2] ** 2) + 3 * F[0] * F[3] - F[1] * F[2]
+
+
+def norm_boundary(beam: str) -> sp.Expr:
+    """[N]₀¹ for ``beam``, the terms its end conditions zero removed (4k⁴∫φ²dξ at a root)."""
+    (left, right), _, _ = BEAMS[beam]
+    one = NORM_BRACKET.subs(xi, 1).subs({F[i]: 0 for i in ENDS[right]})
+    return sp.expand(one - NORM_BRACKET.subs(xi, 0).subs({F[i]: 0 for i in ENDS[left]}))
+
+
+def norm_at_root(beam: str, shape: sp.Expr) -> sp.Expr:
+    """∫₀¹φ²dξ of ``shape`` (``beam``'s mode shape in k and ξ), valid where k is a root."""
+    values = {F[n]: sp.diff(shape, xi, n).subs(xi, 1) for n in range(4)}
+    return norm_boundary(beam).subs(values) / (4 * k**4)
+
+
 def _mode_shapes() -> dict[str, sp.Expr]:
     """Each beam's mode shape without cancellation at large k (checked against the textbook
     forms on the board)."""
@@ -186,11 +205,7 @@ def derive() -> Board:
                 f"max |∫φᵢφⱼ dξ| = {mp.nstr(off, 2)}")  # fmt: skip
 
     # --- the norm at a root -------------------------------------------------------------------
-    norm_bracket = w(
-        "norm_bracket",
-        xi * (k**4 * f[0] ** 2 - 2 * f[1] * f[3] + f[2] ** 2) + 3 * f[0] * f[3] - f[1] * f[2],
-        "N = ξ(k⁴φ² − 2φ'φ''' + φ''²) + 3φφ''' − φ'φ''.",
-    )
+    norm_bracket = w("norm_bracket", NORM_BRACKET, "N = ξ(k⁴φ² − 2φ'φ''' + φ''²) + 3φφ''' − φ'φ''.")
     dn = sp.diff(norm_bracket, xi) + sum(
         sp.diff(norm_bracket, s) * nxt for s, nxt in itertools.pairwise(f)
     )
@@ -198,12 +213,8 @@ def derive() -> Board:
     board.check("dN/dξ = 4k⁴φ², so 4k⁴∫₀¹φ²dξ = [N]₀¹", "F6",
                 sp.simplify(dn - 4 * k**4 * f[0] ** 2) == 0, f"dN/dξ = {sp.factor(dn)}")  # fmt: skip
     norms = {}
-    for beam, ((left, right), _, _) in BEAMS.items():
-        zero = {f[i]: 0 for i in ENDS[left]}
-        one = {f[i]: 0 for i in ENDS[right]}
-        boundary = sp.expand(
-            norm_bracket.subs(xi, 1).subs(one) - norm_bracket.subs(xi, 0).subs(zero)
-        )
+    for beam in BEAMS:
+        boundary = norm_boundary(beam)
         values = {f[n]: sp.diff(shapes[beam], xi, n).subs(xi, 1) for n in range(4)}
         at_end = {f[n]: sp.Symbol(f"varphi^({n})(1)") for n in range(4)}  # φ⁽ⁿ⁾(1) on the board
         norms[beam] = w(
