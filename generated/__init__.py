@@ -22,6 +22,7 @@ from . import (
     slow_flow,
     hertz_contact,
     beam_modes,
+    modal_structure,
 )
 
 __all__ = [
@@ -39,4 +40,5 @@ __all__ = [
     "slow_flow",
     "hertz_contact",
     "beam_modes",
+    "modal_structure",
 ]

@@ -3444,6 +3444,111 @@ static void check_beam_modes_static_flexibility_simply_supported(void)
     }
 }
 
+/* modal_structure.effective_mass_fraction_cantilever: Share MᵢΓᵢ²/(ρAL) of the cantilever's mass that a mode moves under base excitation [1] */
+static void check_modal_structure_effective_mass_fraction_cantilever(void)
+{
+    static const double expected[3] = { 0.012982162246810664, 0.0001955866257841068, 0.3266905371105036 };
+    static const double scale[3] = { 0.012982162246810664, 0.0001955866257841068, 0.3266905371105036 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_effective_mass_fraction_cantilever", i, symimpact_modal_structure_effective_mass_fraction_cantilever(a_beta_L[i]), expected[i], scale[i]);
+    }
+    symimpact_modal_structure_effective_mass_fraction_cantilever_batch(3, a_beta_L, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_effective_mass_fraction_cantilever_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* modal_structure.base_participation_cantilever: Participation factor Γᵢ of a mode of the cantilever referred to the point ξ... [1] */
+static void check_modal_structure_base_participation_cantilever(void)
+{
+    static const double expected[3] = { 0.017812652668472952, -0.013850710845510723, -0.9908725945868799 };
+    static const double scale[3] = { 0.017812652668472952, 0.013850710845510723, 0.9908725945868799 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_base_participation_cantilever", i, symimpact_modal_structure_base_participation_cantilever(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_modal_structure_base_participation_cantilever_batch(3, a_beta_L, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_base_participation_cantilever_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* modal_structure.effective_mass_fraction_clamped_clamped: Share MᵢΓᵢ²/(ρAL) of the clamped–clamped beam's mass that a mode moves under... [1] */
+static void check_modal_structure_effective_mass_fraction_clamped_clamped(void)
+{
+    static const double expected[3] = { 0.08530436830297411, 0.12149844624989083, 0.13332982218395 };
+    static const double scale[3] = { 0.08530436830297411, 0.12149844624989083, 0.13332982218395 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_effective_mass_fraction_clamped_clamped", i, symimpact_modal_structure_effective_mass_fraction_clamped_clamped(a_beta_L[i]), expected[i], scale[i]);
+    }
+    symimpact_modal_structure_effective_mass_fraction_clamped_clamped_batch(3, a_beta_L, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_effective_mass_fraction_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* modal_structure.base_participation_clamped_clamped: Participation factor Γᵢ of a mode of the clamped–clamped beam referred to... [1] */
+static void check_modal_structure_base_participation_clamped_clamped(void)
+{
+    static const double expected[3] = { 0.046022635686675285, -0.1561323572960023, -0.6510974258911841 };
+    static const double scale[3] = { 0.046022635686675285, 0.1561323572960023, 0.6510974258911841 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_base_participation_clamped_clamped", i, symimpact_modal_structure_base_participation_clamped_clamped(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_modal_structure_base_participation_clamped_clamped_batch(3, a_beta_L, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_base_participation_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* modal_structure.effective_mass_fraction_simply_supported: Share MᵢΓᵢ²/(ρAL) of the simply supported beam's mass that a mode moves... [1] */
+static void check_modal_structure_effective_mass_fraction_simply_supported(void)
+{
+    static const double expected[3] = { 0.17732718536818246, 0.0001773118765340761, 0.08827898664896155 };
+    static const double scale[3] = { 0.17732718536818246, 0.0001773118765340761, 0.08827898664896155 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_effective_mass_fraction_simply_supported", i, symimpact_modal_structure_effective_mass_fraction_simply_supported(a_beta_L[i]), expected[i], scale[i]);
+    }
+    symimpact_modal_structure_effective_mass_fraction_simply_supported_batch(3, a_beta_L, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_effective_mass_fraction_simply_supported_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* modal_structure.base_participation_simply_supported: Participation factor Γᵢ of a mode of the simply supported beam referred to... [1] */
+static void check_modal_structure_base_participation_simply_supported(void)
+{
+    static const double expected[3] = { -1.6006197176457142, -0.019830090465853763, -0.12912579157981768 };
+    static const double scale[3] = { 1.6006197176457142, 0.019830090465853763, 0.12912579157981768 };
+    static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
+    static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_base_participation_simply_supported", i, symimpact_modal_structure_base_participation_simply_supported(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+    }
+    symimpact_modal_structure_base_participation_simply_supported_batch(3, a_beta_L, a_xi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_modal_structure_base_participation_simply_supported_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* fixed_points.contact_duration (from derive/multiple_scales.py): Contact duration T_CD, Eq. 31 iterated from T⁽⁰⁾ to convergence [s] */
 static void check_fixed_points_contact_duration(void)
 {
@@ -3729,11 +3834,17 @@ int main(void)
     check_beam_modes_static_flexibility_cantilever();
     check_beam_modes_static_flexibility_clamped_clamped();
     check_beam_modes_static_flexibility_simply_supported();
+    check_modal_structure_effective_mass_fraction_cantilever();
+    check_modal_structure_base_participation_cantilever();
+    check_modal_structure_effective_mass_fraction_clamped_clamped();
+    check_modal_structure_base_participation_clamped_clamped();
+    check_modal_structure_effective_mass_fraction_simply_supported();
+    check_modal_structure_base_participation_simply_supported();
     check_fixed_points_contact_duration();
     check_fixed_points_contact_duration_newton();
     check_fixed_points_contact_duration_printed();
     check_fixed_points_hunt_crossley_restitution();
     check_fixed_points_hunt_crossley_peak_speed_ratio();
-    printf("symimpact: %ld checks of 156 kernels and 5 iterations, %ld failed\n", checks, failures);
+    printf("symimpact: %ld checks of 162 kernels and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1705,6 +1705,45 @@ program check_kernels
     got = beam_modes_static_flexibility_simply_supported([0.839949_dp, 0.429899_dp, 0.719848_dp])
     call check("beam_modes_static_flexibility_simply_supported", got, expected, scale)
 
+    ! modal_structure.effective_mass_fraction_cantilever
+    expected = [0.012982162246810664_dp, 0.0001955866257841068_dp, 0.3266905371105036_dp]
+    scale = [0.012982162246810664_dp, 0.0001955866257841068_dp, 0.3266905371105036_dp]
+    got = modal_structure_effective_mass_fraction_cantilever([11.2279_dp, 5.95584_dp, 9.68377_dp])
+    call check("modal_structure_effective_mass_fraction_cantilever", got, expected, scale)
+
+    ! modal_structure.base_participation_cantilever
+    expected = [0.017812652668472952_dp, -0.013850710845510723_dp, -0.9908725945868799_dp]
+    scale = [0.017812652668472952_dp, 0.013850710845510723_dp, 0.9908725945868799_dp]
+    got = modal_structure_base_participation_cantilever([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+[0.33923_dp, 0.778461_dp, 0.617691_dp])
+    call check("modal_structure_base_participation_cantilever", got, expected, scale)
+
+    ! modal_structure.effective_mass_fraction_clamped_clamped
+    expected = [0.08530436830297411_dp, 0.12149844624989083_dp, 0.13332982218395_dp]
+    scale = [0.08530436830297411_dp, 0.12149844624989083_dp, 0.13332982218395_dp]
+    got = modal_structure_effective_mass_fraction_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp])
+    call check("modal_structure_effective_mass_fraction_clamped_clamped", got, expected, scale)
+
+    ! modal_structure.base_participation_clamped_clamped
+    expected = [0.046022635686675285_dp, -0.1561323572960023_dp, -0.6510974258911841_dp]
+    scale = [0.046022635686675285_dp, 0.1561323572960023_dp, 0.6510974258911841_dp]
+    got = modal_structure_base_participation_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+[0.33923_dp, 0.778461_dp, 0.617691_dp])
+    call check("modal_structure_base_participation_clamped_clamped", got, expected, scale)
+
+    ! modal_structure.effective_mass_fraction_simply_supported
+    expected = [0.17732718536818246_dp, 0.0001773118765340761_dp, 0.08827898664896155_dp]
+    scale = [0.17732718536818246_dp, 0.0001773118765340761_dp, 0.08827898664896155_dp]
+    got = modal_structure_effective_mass_fraction_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp])
+    call check("modal_structure_effective_mass_fraction_simply_supported", got, expected, scale)
+
+    ! modal_structure.base_participation_simply_supported
+    expected = [-1.6006197176457142_dp, -0.019830090465853763_dp, -0.12912579157981768_dp]
+    scale = [1.6006197176457142_dp, 0.019830090465853763_dp, 0.12912579157981768_dp]
+    got = modal_structure_base_participation_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+[0.33923_dp, 0.778461_dp, 0.617691_dp])
+    call check("modal_structure_base_participation_simply_supported", got, expected, scale)
+
     ! fixed_points.contact_duration
     expected = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
     scale = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
@@ -1767,7 +1806,7 @@ program check_kernels
     call check("fixed_points_hunt_crossley_peak_speed_ratio", got, expected, scale)
     call check_steps("fixed_points_hunt_crossley_peak_speed_ratio", taken, steps)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 156 kernels and 5 iterations, ", &
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 162 kernels and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

@@ -26,6 +26,7 @@ from . import (  # noqa: E402  (after the float64 switch)
     slow_flow,
     hertz_contact,
     beam_modes,
+    modal_structure,
 )
 
 __all__ = [
@@ -43,4 +44,5 @@ __all__ = [
     "slow_flow",
     "hertz_contact",
     "beam_modes",
+    "modal_structure",
 ]

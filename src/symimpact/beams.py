@@ -4,7 +4,10 @@ Euler–Bernoulli beam, each referred to the damper's point, and the point's sta
 The cantilever's modes are Step 1's (paper Eq. 3–6, kernels ``ritz.*``), the other two beams'
 Step 14's (Eq. F6, kernels ``beam_modes.*``); each mode's mass and stiffness are referred to the
 point r along the beam (the displacement there is the mode's coordinate): M = ρAL·∫φ²dξ/φ(ξ)²,
-K = ω²M, ω = (βL)²·√(EI/(ρAL⁴)).  A mode with a node at the point does not move it: its M and K
+K = ω²M, ω = (βL)²·√(EI/(ρAL⁴)).  When the supports move by x<sub>b</sub>, each mode is driven as
+by a base motion Γ·x<sub>b</sub> (Step 15, Eq. F7, kernels ``modal_structure.*``): Γ = φ(ξ)∫φdξ/∫φ²dξ
+referred to the point, and the mode moves the share MΓ²/(ρAL) = (∫φdξ)²/∫φ²dξ of the beam's
+mass (its effective modal mass).  A mode with a node at the point does not move it: its M and K
 are infinite there, and it cannot be the primary of a damper placed at that point.
 """
 
@@ -18,6 +21,7 @@ import numpy as np
 
 from .errors import ParameterError
 from .generated import beam_modes as _bm
+from .generated import modal_structure as _ms
 from .generated import ritz as _ritz
 from .units import positive_float
 
@@ -34,19 +38,28 @@ class Support:
     stiffness: Any
     flexibility: Any
     default_xi: float
+    #: Γ(βL, ξ) referred to the point and the effective-mass share (βL) (Eq. F7)
+    participation: Any
+    mass_share: Any
 
 
 SUPPORTS: dict[str, Support] = {
     "cantilever": Support(_ritz.BETA_L, _ritz.mode_shape, _ritz.mass_coefficient,
-                          _ritz.stiffness_coefficient, _bm.static_flexibility_cantilever, 1.0),
+                          _ritz.stiffness_coefficient, _bm.static_flexibility_cantilever, 1.0,
+                          _ms.base_participation_cantilever,
+                          _ms.effective_mass_fraction_cantilever),
     "clamped-clamped": Support(_bm.BETA_L_CLAMPED_CLAMPED, _bm.mode_shape_clamped_clamped,
                                _bm.mass_coefficient_clamped_clamped,
                                _bm.stiffness_coefficient_clamped_clamped,
-                               _bm.static_flexibility_clamped_clamped, 0.5),
+                               _bm.static_flexibility_clamped_clamped, 0.5,
+                               _ms.base_participation_clamped_clamped,
+                               _ms.effective_mass_fraction_clamped_clamped),
     "simply-supported": Support(_bm.BETA_L_SIMPLY_SUPPORTED, _bm.mode_shape_simply_supported,
                                 _bm.mass_coefficient_simply_supported,
                                 _bm.stiffness_coefficient_simply_supported,
-                                _bm.static_flexibility_simply_supported, 0.5),
+                                _bm.static_flexibility_simply_supported, 0.5,
+                                _ms.base_participation_simply_supported,
+                                _ms.effective_mass_fraction_simply_supported),
 }  # fmt: skip
 #: Modes each support's roots are emitted for.
 MAX_MODES = min(len(s.roots) for s in SUPPORTS.values())
@@ -70,6 +83,11 @@ class BeamMode:
     #: the mode shape at the point, φ(ξ), in the normalisation of its step (∫φ²dξ = 1, or 1/2
     #: for the simply supported beam's sin βLξ)
     shape: float
+    #: participation factor Γ referred to the point: the supports' motion x_b drives the mode as
+    #: a base motion Γ·x_b (Eq. F7) [1] (0 at a node)
+    participation: float = math.nan
+    #: share of the beam's mass the mode moves under base excitation, MΓ²/(ρAL) (Eq. F7) [1]
+    mass_share: float = math.nan
 
     @property
     def frequency(self) -> float:
@@ -84,7 +102,8 @@ class BeamMode:
     def as_dict(self) -> dict[str, Any]:
         return {"mode": self.number, "beta_L": self.beta_L, "omega": self.omega,
                 "frequency": self.frequency, "M": None if self.node else self.M,
-                "K": None if self.node else self.K, "shape": self.shape, "node": self.node}  # fmt: skip
+                "K": None if self.node else self.K, "shape": self.shape, "node": self.node,
+                "participation": self.participation, "mass_share": self.mass_share}  # fmt: skip
 
 
 def _support(support: Any) -> str:
@@ -108,7 +127,8 @@ def beam_modes(support: str, E: Any, I: Any, rho: Any, A: Any, L: Any, position:
     """The first ``n`` modes (at most :data:`MAX_MODES`) of the ``support`` beam (Young's
     modulus ``E`` [Pa], second moment ``I`` [m⁴], density ``rho`` [kg/m³], section ``A`` [m²],
     length ``L`` [m]) referred to the point ``position`` [m from the clamp or the left support]
-    (Eq. 5–6 for the cantilever, Eq. F6 for the clamped–clamped and simply supported beams)."""
+    (Eq. 5–6 for the cantilever, Eq. F6 for the clamped–clamped and simply supported beams),
+    each with its participation factor and effective-mass share (Eq. F7)."""
     support = _support(support)
     E, I, rho, A, L = (positive_float(k, v) for k, v in
                        zip("E I rho A L".split(), (E, I, rho, A, L), strict=True))  # fmt: skip
@@ -122,12 +142,17 @@ def beam_modes(support: str, E: Any, I: Any, rho: Any, A: Any, L: Any, position:
         phi = float(kernels.shape(bl, xi))
         omega = bl * bl * scale
         # the shapes' largest values are of order 1 (≤ 2): a node where φ is below NODE
+        share = float(kernels.mass_share(bl))
         if abs(phi) < NODE:
             M = K = math.inf
+            gamma = 0.0
         else:
             M = float(kernels.mass(bl, xi)) * rho * A * L
             K = float(kernels.stiffness(bl, xi)) * E * I / L**3
-        modes.append(BeamMode(i, float(bl), omega, M, K, phi))
+            gamma = float(kernels.participation(bl, xi))
+        # a symmetric beam's antisymmetric modes: ∫φdξ is zero but for rounding
+        share = 0.0 if share < 1e-14 else share
+        modes.append(BeamMode(i, float(bl), omega, M, K, phi, gamma, share))
     return modes
 
 

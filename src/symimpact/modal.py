@@ -10,6 +10,15 @@ that one mode is the primary a damper at that DOF sees.  The DOF's static flexib
 (K⁻¹)ⱼⱼ is the limit of Σᵢ 1/Kᵢ over all modes: how much of it the first N carry says whether
 they describe the point.
 
+Given the influence vector r (each DOF's displacement when the supports move by one unit: 1 for
+the translations along the motion, 0 for rotations), each mode also gets its participation
+factor referred to the DOF, Γᵢ = φᵢⱼ·φᵢᵀMr (the supports' motion x<sub>b</sub> drives it as a base
+motion Γᵢx<sub>b</sub>, Step 15, Eq. F7), and the share of the model's mass rᵀMr it moves,
+(φᵢᵀMr)²/rᵀMr (its effective modal mass; over all modes the shares sum to 1).  M is the
+constrained model's: mass that a consistent mass matrix couples to the supports themselves
+(their rows and columns, removed with them) is not in the load, an error of the order of one
+element's share of the mass (lumped masses have none).
+
 The eigenproblem is solved in its flexibility form, M v = μ K v with μ = 1/ω² (a Cholesky
 factor of K), so that the lowest modes keep their relative accuracy whatever the model's
 highest frequency; a sparse model (``.mtx``, or ``.npz`` of scipy sparse matrices) is solved by
@@ -44,6 +53,10 @@ class FEMode:
     K: float
     #: the unit-modal-mass shape at the DOF [kg^-1/2]
     shape: float
+    #: participation factor referred to the DOF, Γ = φⱼ·φᵀMr (Eq. F7) [1]; None without r
+    participation: float | None = None
+    #: share of the mass rᵀMr the mode moves under base excitation, (φᵀMr)²/rᵀMr [1]
+    mass_share: float | None = None
 
     @property
     def frequency(self) -> float:
@@ -58,7 +71,8 @@ class FEMode:
     def as_dict(self) -> dict[str, Any]:
         return {"mode": self.number, "omega": self.omega, "frequency": self.frequency,
                 "M": None if self.node else self.M, "K": None if self.node else self.K,
-                "shape": self.shape, "node": self.node}  # fmt: skip
+                "shape": self.shape, "node": self.node, "participation": self.participation,
+                "mass_share": self.mass_share}  # fmt: skip
 
 
 def _read_one(name: str, path: Path):
@@ -137,10 +151,35 @@ def _checked(name: str, A: Any, n: int | None):
     return A
 
 
-def fe_modes(K: Any, M: Any, dof: Any, n: Any = 1) -> list[FEMode]:
+def influence_vector(pattern: Any, size: int) -> np.ndarray:
+    """The influence vector r of a model of ``size`` DOFs from ``pattern``: a sequence (or a
+    comma-separated text) of numbers repeated to fill the DOFs ("1" for a model of
+    translations, "1,0" for a beam's (w, θ) pairs)."""
+    if isinstance(pattern, str):
+        try:
+            values = [float(v) for v in pattern.split(",")]
+        except ValueError:
+            raise ParameterError(
+                "influence", f"numbers separated by commas, got {pattern!r}"
+            ) from None
+    else:
+        values = [float(v) for v in np.ravel(np.asarray(pattern, dtype=float))]
+    if not values or size % len(values) or not all(math.isfinite(v) for v in values):
+        raise ParameterError(
+            "influence", f"{len(values)} finite values do not repeat to fill {size} DOFs"
+        )
+    r = np.tile(np.array(values), size // len(values))
+    if not np.any(r):
+        raise ParameterError("influence", "is zero everywhere: no DOF moves with the supports")
+    return r
+
+
+def fe_modes(K: Any, M: Any, dof: Any, n: Any = 1, influence: Any = None) -> list[FEMode]:
     """The first ``n`` modes of the model (K [N/m], M [kg], constrained: K positive definite)
     referred to DOF ``dof`` (0-based): ω from K v = ω²M v, Mᵢ = 1/φᵢⱼ² with φᵢ of unit modal
-    mass, Kᵢ = ωᵢ²Mᵢ (the reduction of Eq. 5–6 and F6 applied to the model's modes)."""
+    mass, Kᵢ = ωᵢ²Mᵢ (the reduction of Eq. 5–6 and F6 applied to the model's modes); with the
+    ``influence`` vector r (:func:`influence_vector`), Γᵢ = φᵢⱼ·φᵢᵀMr and the share
+    (φᵢᵀMr)²/rᵀMr (Eq. F7)."""
     from scipy import sparse
     from scipy.linalg import LinAlgError, eigh
 
@@ -173,16 +212,24 @@ def fe_modes(K: Any, M: Any, dof: Any, n: Any = 1) -> list[FEMode]:
         raise ParameterError("K", "the model has a mode of zero or negative stiffness")
     Mv = M @ vec
     vec = vec / np.sqrt(np.einsum("ij,ij->j", vec, Mv))  # unit modal mass
+    if influence is not None:
+        r = influence_vector(influence, size)
+        Mr = M @ r
+        loads = vec.T @ Mr  # φᵢᵀMr
+        total = float(r @ Mr)
     modes = []
     for i in range(n):
         phi = float(vec[dof, i])
         omega = float(math.sqrt(lam[i]))
+        gamma = share = None
+        if influence is not None:
+            gamma, share = phi * float(loads[i]), float(loads[i]) ** 2 / total
         # a node: the DOF's share of the mode's largest displacement below 1e-9
         if abs(phi) < 1e-9 * float(np.max(np.abs(vec[:, i]))):
-            modes.append(FEMode(i + 1, omega, math.inf, math.inf, phi))
+            modes.append(FEMode(i + 1, omega, math.inf, math.inf, phi, gamma, share))
         else:
             Mi = 1.0 / phi**2
-            modes.append(FEMode(i + 1, omega, Mi, omega * omega * Mi, phi))
+            modes.append(FEMode(i + 1, omega, Mi, omega * omega * Mi, phi, gamma, share))
     return modes
 
 

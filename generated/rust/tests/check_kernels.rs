@@ -1892,6 +1892,78 @@ fn beam_modes_static_flexibility_simply_supported() {
 }
 
 #[test]
+fn modal_structure_effective_mass_fraction_cantilever() {
+    let expected = [0.012982162246810664, 0.0001955866257841068, 0.3266905371105036];
+    let scale = [0.012982162246810664, 0.0001955866257841068, 0.3266905371105036];
+    let points: [[f64; 1]; 3] = [[11.2279_f64], [5.95584_f64], [9.68377_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::modal_structure::effective_mass_fraction_cantilever(p[0]))
+        .collect();
+    check("modal_structure::effective_mass_fraction_cantilever", &got, &expected, &scale);
+}
+
+#[test]
+fn modal_structure_base_participation_cantilever() {
+    let expected = [0.017812652668472952, -0.013850710845510723, -0.9908725945868799];
+    let scale = [0.017812652668472952, 0.013850710845510723, 0.9908725945868799];
+    let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::modal_structure::base_participation_cantilever(p[0], p[1]))
+        .collect();
+    check("modal_structure::base_participation_cantilever", &got, &expected, &scale);
+}
+
+#[test]
+fn modal_structure_effective_mass_fraction_clamped_clamped() {
+    let expected = [0.08530436830297411, 0.12149844624989083, 0.13332982218395];
+    let scale = [0.08530436830297411, 0.12149844624989083, 0.13332982218395];
+    let points: [[f64; 1]; 3] = [[11.2279_f64], [5.95584_f64], [9.68377_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::modal_structure::effective_mass_fraction_clamped_clamped(p[0]))
+        .collect();
+    check("modal_structure::effective_mass_fraction_clamped_clamped", &got, &expected, &scale);
+}
+
+#[test]
+fn modal_structure_base_participation_clamped_clamped() {
+    let expected = [0.046022635686675285, -0.1561323572960023, -0.6510974258911841];
+    let scale = [0.046022635686675285, 0.1561323572960023, 0.6510974258911841];
+    let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::modal_structure::base_participation_clamped_clamped(p[0], p[1]))
+        .collect();
+    check("modal_structure::base_participation_clamped_clamped", &got, &expected, &scale);
+}
+
+#[test]
+fn modal_structure_effective_mass_fraction_simply_supported() {
+    let expected = [0.17732718536818246, 0.0001773118765340761, 0.08827898664896155];
+    let scale = [0.17732718536818246, 0.0001773118765340761, 0.08827898664896155];
+    let points: [[f64; 1]; 3] = [[11.2279_f64], [5.95584_f64], [9.68377_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::modal_structure::effective_mass_fraction_simply_supported(p[0]))
+        .collect();
+    check("modal_structure::effective_mass_fraction_simply_supported", &got, &expected, &scale);
+}
+
+#[test]
+fn modal_structure_base_participation_simply_supported() {
+    let expected = [-1.6006197176457142, -0.019830090465853763, -0.12912579157981768];
+    let scale = [1.6006197176457142, 0.019830090465853763, 0.12912579157981768];
+    let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::modal_structure::base_participation_simply_supported(p[0], p[1]))
+        .collect();
+    check("modal_structure::base_participation_simply_supported", &got, &expected, &scale);
+}
+
+#[test]
 fn fixed_points_contact_duration() {
     let expected = [0.08107108835283472, 0.005133929624330402, 0.5442714064450578];
     let scale = [0.08107108835283472, 0.005133929624330402, 0.5442714064450578];

@@ -22,6 +22,10 @@ def add_parser(sub: Any) -> None:
     p.add_argument("--dof", type=int, required=True, metavar="J",
                    help="the damper's degree of freedom: a 0-based row of K and M")  # fmt: skip
     p.add_argument("--modes", type=int, default=4, metavar="N", help="modes to list (default 4)")
+    p.add_argument("--influence", metavar="R",
+                   help="each DOF's displacement when the supports move by one unit, repeated to "
+                   "fill the DOFs ('1' for translations, '1,0' for a beam's (w, θ) pairs): lists "
+                   "each mode's participation factor and share of the mass (Eq. F7)")  # fmt: skip
     add_output(p)
 
 
@@ -29,23 +33,33 @@ def run(ns) -> None:
     from ..modal import fe_modes, read_matrices, static_flexibility
 
     K, M = read_matrices(ns.fe, ns.stiffness, ns.mass)
-    modes = fe_modes(K, M, ns.dof, ns.modes)
+    modes = fe_modes(K, M, ns.dof, ns.modes, ns.influence)
     exact = static_flexibility(K, ns.dof)
     summed = sum(1.0 / m.K for m in modes if not m.node)
     out = {"dof": ns.dof, "modes": [m.as_dict() for m in modes], "static_flexibility": exact,
            "static_flexibility_of_the_modes": summed}  # fmt: skip
+    base = ns.influence is not None
     lines = [
-        f"{'mode':>4}  {'f [Hz]':>11}  {'M at the DOF [kg]':>17}  {'K at the DOF [N/m]':>18}",
+        f"{'mode':>4}  {'f [Hz]':>11}  {'M at the DOF [kg]':>17}  {'K at the DOF [N/m]':>18}"
+        + (f"  {'Γ at the DOF':>12}  {'mass share [%]':>14}" if base else ""),
         *(
             f"{m.number:>4}  {m.frequency:11.5g}  "
             + (f"{'node':>17}  {'node':>18}" if m.node else f"{m.M:17.6g}  {m.K:18.6g}")
+            + (f"  {m.participation:12.6g}  {m.mass_share * 100:14.4g}" if base else "")
             for m in modes
         ),
+        *([_moved(modes)] if base else []),
         f"static flexibility at DOF {ns.dof}: {exact * 1e3:.6g} mm/N; the sum over these "
         f"{len(modes)} modes, Σ1/K, {summed * 1e3:.6g} mm/N ({(1 - summed / exact) * 100:.3g} % "
         "short)",
     ]
     emit(ns, out, "\n".join(lines))
+
+
+def _moved(modes) -> str:
+    """The share of the mass the listed modes move under base excitation, in words."""
+    share = sum(m.mass_share for m in modes) * 100
+    return f"these {len(modes)} modes move {share:.4g} % of the mass the supports carry"
 
 
 #: The subcommands this module runs.

@@ -83,15 +83,19 @@ def run(ns) -> None:
             out["static_flexibility_of_the_modes"] = summed
             lines += [
                 f"{'mode':>4}  {'βL':>9}  {'f [Hz]':>11}  {'M at the point [kg]':>19}  "
-                f"{'K at the point [N/m]':>20}",
+                f"{'K at the point [N/m]':>20}  {'Γ at the point':>14}  {'mass share [%]':>14}",
                 *(
                     f"{m.number:>4}  {m.beta_L:9.6f}  {m.frequency:11.5g}  "
                     + (f"{'node':>19}  {'node':>20}" if m.node else f"{m.M:19.6g}  {m.K:20.6g}")
+                    + f"  {m.participation:14.6g}  {m.mass_share * 100:14.4g}"
                     for m in modes
                 ),
                 f"static flexibility at the point {exact * 1e3:.6g} mm/N; the sum over these "
                 f"{len(modes)} modes, Σ1/K, {summed * 1e3:.6g} mm/N "
                 f"({(1 - summed / exact) * 100:.3g} % short)",
+                f"these {len(modes)} modes move {sum(m.mass_share for m in modes) * 100:.4g} % of "
+                "the beam's mass when its supports move (Γ: the supports' motion drives a mode as "
+                "a base motion Γ·x_b, Eq. F7)",
             ]
     units = {"K": "N/m", "M": "kg", "stiffness_coefficient": "(× EI/L³)",
              "mass_coefficient": "(× ρAL)"}  # fmt: skip
