@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from symimpact.errors import MethodNotApplicable
 from symimpact.forced import Forcing
 from symimpact.forced import continuation as cont
 from symimpact.forced.shooting import monodromy, shoot_from_rest
@@ -31,6 +32,24 @@ def _value(parameter: str, e: float, forcing: Forcing) -> float:
             "e": e}[parameter]  # fmt: skip
 
 
+def _orbit(forcing: Forcing, e: float, what):
+    """An orbit shot from a state of the motion from rest, with ``what`` events (impacts,
+    accumulations, releases) a period where given.  At 33 rad/s that motion is chaotic (three
+    impacts a period on average) and Newton from a state of it lands on one of its unstable
+    orbits, two or three impacts a period, or on none, as rounding moves the trajectory: the
+    first warm-up that gives the orbit sought is taken."""
+    for warmup in (300, 200, 400, 800, 1600, 3200):
+        try:
+            orbit = shoot_from_rest(SYSTEM, forcing, e, warmup=warmup)
+        except MethodNotApplicable:
+            continue
+        res = monodromy(SYSTEM, forcing, e, np.array(orbit.state), orbit.period_multiple,
+                        jacobian=False)[2]  # fmt: skip
+        if what is None or tuple(np.bincount(res.events[:, 7].astype(int), minlength=3)) == what:
+            return orbit
+    raise AssertionError("no warm-up gave the orbit sought")
+
+
 @pytest.mark.parametrize(
     ("e", "omega", "what"),
     [
@@ -43,7 +62,7 @@ def _value(parameter: str, e: float, forcing: Forcing) -> float:
 )
 def test_the_carried_parameter_derivative_equals_differences_of_the_map(e, omega, what):
     forcing = Forcing(omega=omega, **FORCING)
-    orbit = shoot_from_rest(SYSTEM, forcing, e)
+    orbit = _orbit(forcing, e, what)
     s, k = np.array(orbit.state), orbit.period_multiple
     for parameter in ("omega", "gap", "F0", "X_b", "e"):
         if parameter == "e" and e == 0.0:

@@ -60,7 +60,7 @@ LYAPUNOV_PERIODS, LYAPUNOV_BLOCKS = 400, 4
 LYAPUNOV_CHUNK = 10
 #: A Lyapunov exponent whose size over a forcing period, abs(λ)·T, is below this is zero: the
 #: motion is quasi-periodic (measured on the README system just past its Neimark–Sacker point:
-#: λT = 0.003, against 1.05 for its chaotic motion at 28.75 rad/s).
+#: λT = 0.003, against about 1 for its chaotic motion at 28.75 rad/s).
 LYAPUNOV_ZERO = 0.01
 
 
