@@ -2,9 +2,11 @@
 kernels at N = 10⁶ points, in each target, against the NumPy kernel in the same run; and the JAX
 kernels' compile time.  One core.  Prints figures and ratios; asserts nothing.
 
-Kernels: a contact duration (``closed_forms.hertz_contact_duration``, Eq. 34), the forced flight
-(``forced_flight.forced_displacement``, Eq. F1) and a saltation entry
-(``rigid_impact.saltation_main_velocity_z``, Step 9).  Points: random over the physical ranges
+Kernels: a contact duration (``closed_forms.hertz_contact_duration``, Eq. 34), the flight's
+transition matrix (the bundle ``forced_flight.forced_transition``, Eq. F1: x, ẋ and the four
+entries of ∂(x, ẋ)/∂(x0, ẋ0) in one call, six values a point) and a saltation entry
+(``rigid_impact.saltation_main_velocity_z``, Step 9).  A bundle's evaluations are its points
+(each gives all its parts); its results are compared as the sum of its parts.  Points: random over the physical ranges
 the derivation declares (its constraints kept), the same points for every target.
 
 - NumPy: the kernel on the arrays.
@@ -17,6 +19,11 @@ the derivation declares (its constraints kept), the same points for every target
   -O2``, the elemental function called on the arrays.  Both read the points from a binary file
   and time themselves (median of the same repeats); their sum of the results is compared with
   NumPy's.
+
+Then the bundles (``forced_flight.forced_state`` and ``forced_transition``: the flight's state and
+its transition matrix, their common subexpressions computed once) against their parts called one
+by one, the same points: NumPy on the arrays, and the ``_scalar`` twins in a numba-compiled loop,
+as the rigid simulation and the shooting chain call them.
 
 Run from the checkout: python -m benchmarks.targets
 """
@@ -44,17 +51,28 @@ ROOT = Path(__file__).resolve().parent.parent
 N = 10**6
 KERNELS = (
     ("closed_forms", "hertz_contact_duration", "contact duration, Eq. 34"),
-    ("forced_flight", "forced_displacement", "forced flight, Eq. F1"),
+    ("forced_flight", "forced_transition", "the flight's transition matrix, a bundle, Eq. F1"),
     ("rigid_impact", "saltation_main_velocity_z", "saltation entry, Step 9"),
 )
 
 
 def declared():
-    """{(module, kernel): the derivation's Kernel} of the three kernels."""
+    """{(module, kernel): the derivation's Kernel} of the three kernels (a bundle's first part,
+    whose arguments and ranges it shares)."""
     out = {}
     for module, name, _ in KERNELS:
-        out[module, name] = next(k for k in board(module).kernels if k.name == name)
+        b = board(module)
+        bundle = next((bu for bu in b.bundles if bu.name == name), None)
+        out[module, name] = bundle.parts[0] if bundle else next(k for k in b.kernels
+                                                                if k.name == name)  # fmt: skip
     return out
+
+
+def parts(module: str, name: str) -> int:
+    """How many values the kernel gives a point (1, or a bundle's parts)."""
+    from importlib import import_module
+
+    return len(import_module(f"symimpact.generated.{module}").BUNDLES.get(name, (None,)))
 
 
 def points(kernel, n, rng) -> list[np.ndarray]:
@@ -87,13 +105,14 @@ def _c_library(folder: Path):
 
 def _c_call(lib, module, name, cols):
     f = getattr(lib, f"symimpact_{module}_{name}_batch")
-    out = np.empty(cols[0].size)
+    k = parts(module, name)
+    out = np.empty(cols[0].size) if k == 1 else np.empty((cols[0].size, k))
     ptr = ctypes.POINTER(ctypes.c_double)
     args = [c.ctypes.data_as(ptr) for c in cols]
 
     def run():
-        f(ctypes.c_size_t(out.size), *args, out.ctypes.data_as(ptr))
-        return out
+        f(ctypes.c_size_t(cols[0].size), *args, out.ctypes.data_as(ptr))
+        return out if k == 1 else out.T  # a bundle: one row of its parts per point
 
     return run
 
@@ -121,7 +140,7 @@ RUST_CASE = """    {{
         for _ in 0..{repeats} {{
             let t0 = Instant::now();
             for i in 0..n {{
-                out[i] = symimpact::{module}::{name}({args});
+                out[i] = symimpact::{module}::{name}({args}){total};
             }}
             times.push(t0.elapsed().as_secs_f64());
         }}
@@ -144,7 +163,9 @@ def _rust(folder: Path, cases) -> dict[str, tuple[list[float], float]] | None:
     )
     body = "\n".join(RUST_CASE.format(path=path, k=len(cols), repeats=REPEATS, module=module,
                                       name=name, args=", ".join(f"a[{j}][i]" for j in
-                                                                range(len(cols))))
+                                                                range(len(cols))),
+                                      total="" if parts(module, name) == 1
+                                      else ".iter().sum::<f64>()")
                      for module, name, cols, path in cases)  # fmt: skip
     (bench / "src" / "main.rs").write_text(RUST_MAIN.format(n=N, body=body))
     env = {**os.environ, "CARGO_TARGET_DIR": str(folder / "target")}
@@ -161,7 +182,7 @@ FORTRAN_CASE = """    allocate(a({n}, {k}))
     close(u)
     do r = 1, {repeats}
         call system_clock(c0, rate)
-        out = {module}_{name}({args})
+{call}
         call system_clock(c1)
         times(r) = real(c1 - c0, dp) / real(rate, dp)
     end do
@@ -176,14 +197,25 @@ def _fortran(folder: Path, cases) -> dict[str, tuple[list[float], float]] | None
     if fc is None:
         return None
     export_kernels("fortran", folder / "f90")
+
+    def call(module, name, cols) -> str:
+        """The elemental function on the arrays, or a bundle's subroutine in a loop, the sum
+        of its parts kept per point."""
+        if parts(module, name) == 1:
+            args = ", ".join(f"a(:, {j + 1})" for j in range(len(cols)))
+            return f"        out = {module}_{name}({args})"
+        args = ", ".join(f"a(i, {j + 1})" for j in range(len(cols)))
+        return (
+            f"        do i = 1, {N}\n            call {module}_{name}({args}, row)\n"
+            f"            out(i) = sum(row(1:{parts(module, name)}))\n        end do"
+        )
+
     body = "".join(FORTRAN_CASE.format(n=N, k=len(cols), path=path, repeats=REPEATS,
-                                       module=module, name=name,
-                                       args=", ".join(f"a(:, {j + 1})" for j in
-                                                      range(len(cols))))
+                                       module=module, name=name, call=call(module, name, cols))
                    for module, name, cols, path in cases)  # fmt: skip
     program = (f"program bench\n    use symimpact\n    implicit none\n"
-               f"    real(dp), allocatable :: a(:, :)\n    real(dp) :: out({N}), times({REPEATS})\n"
-               f"    integer :: u, r\n    integer(8) :: c0, c1, rate\n{body}end program bench\n")  # fmt: skip
+               f"    real(dp), allocatable :: a(:, :)\n    real(dp) :: out({N}), times({REPEATS}), row(16)\n"
+               f"    integer :: u, r, i\n    integer(8) :: c0, c1, rate\n{body}end program bench\n")  # fmt: skip
     (folder / "f90" / "bench.f90").write_text(program)
     for args in (["-c", "symimpact.f90"], ["bench.f90", "symimpact.o", "-o", "bench"]):
         subprocess.run([fc, "-O2", "-ffree-line-length-none", *args], cwd=folder / "f90",
@@ -234,7 +266,7 @@ def main() -> None:
             numpy_kernel = getattr(__import__(f"symimpact.generated.{module}",
                                               fromlist=[name]), name)  # fmt: skip
             tn = timed(lambda f=numpy_kernel, c=cols: f(*c))
-            ref = np.asarray(tn.out)
+            ref = np.asarray(tn.out)  # a bundle: (parts, points)
             print(f"\n{module}.{name} ({label}, {len(cols)} arguments)")
             print(f"  NumPy    {tn.rate(N, 'ev/s')}")
             if lib is not None:
@@ -246,9 +278,9 @@ def main() -> None:
                 f = getattr(getattr(jax_kernels, module), name)
                 dev = [jnp.asarray(c) for c in cols]
                 t0 = time.perf_counter()
-                f(*dev).block_until_ready()  # traced and compiled here
+                jax.block_until_ready(f(*dev))  # traced and compiled here
                 first = time.perf_counter() - t0
-                tj = timed(lambda f=f, dev=dev: f(*dev).block_until_ready())
+                tj = timed(lambda f=f, dev=dev: jax.block_until_ready(f(*dev)))
                 compile_s = first - tj.median
                 diff = np.max(np.abs(np.asarray(tj.out) - ref)) / np.max(np.abs(ref))
                 print(f"  JAX      {tj.rate(N, 'ev/s')}; ratio {tn.median / tj.median:.1f}x; "
@@ -264,6 +296,68 @@ def main() -> None:
                       f"{tn.median / statistics.median(times):.1f}x; sum of the results "
                       f"{rel:.1e} from NumPy's")  # fmt: skip
     print("\ntarget: none (figures); C, Rust and Fortran at -O2/opt-level 3 without -march")
+    bundles(rng)
+
+
+def _numba_loop(functions):
+    """A compiled loop over the points calling each scalar kernel of ``functions`` and summing
+    every output (so that nothing is optimised away)."""
+    from numba import njit
+
+    compiled = tuple(njit(cache=False)(f) for f in functions)
+    if len(compiled) == 1:
+        (f,) = compiled
+
+        @njit(cache=False)
+        def loop(a):
+            total = 0.0
+            for i in range(a.shape[1]):
+                for v in f(a[0, i], a[1, i], a[2, i], a[3, i], a[4, i], a[5, i], a[6, i],
+                           a[7, i], a[8, i], a[9, i]):  # fmt: skip
+                    total += v
+            return total
+
+        return loop
+    source = "\n".join(
+        ["def loop(a):", "    total = 0.0", "    for i in range(a.shape[1]):",
+         *(f"        total += f{j}(a[0, i], a[1, i], a[2, i], a[3, i], a[4, i], a[5, i], "
+           "a[6, i], a[7, i], a[8, i], a[9, i])" for j in range(len(compiled))),
+         "    return total"]
+    )  # fmt: skip
+    scope = {f"f{j}": f for j, f in enumerate(compiled)}
+    exec(source, scope)  # a loop over k part kernels, written out
+    return njit(cache=False)(scope["loop"])
+
+
+def bundles(rng) -> None:
+    """The flight's bundles against their parts one by one (module text)."""
+    from symimpact.generated import forced_flight as ff
+
+    x = next(k for k in board("forced_flight").kernels if k.name == "forced_displacement")
+    cols = points(x, N, rng)
+    stack = np.ascontiguousarray(np.vstack(cols))
+    print("\nbundles against their parts, the same points (forced flight, Eq. F1), one core")
+    for name, parts in (
+        ("forced_state", ("forced_displacement", "forced_velocity")),
+        ("forced_transition", ("forced_displacement", "forced_velocity",
+                               "forced_displacement_d_x0", "forced_displacement_d_xdot0",
+                               "forced_velocity_d_x0", "forced_velocity_d_xdot0")),
+    ):  # fmt: skip
+        whole = getattr(ff, name)
+        tb = timed(lambda c=cols, f=whole: f(*c))
+        tp = timed(lambda c=cols, ps=parts: [getattr(ff, p)(*c) for p in ps])
+        diff = max(float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
+                   for a, b in zip(tb.out, tp.out, strict=True))  # fmt: skip
+        one = _numba_loop((getattr(ff, f"{name}_scalar"),))
+        many = _numba_loop(tuple(getattr(ff, f"{p}_scalar") for p in parts))
+        one(stack[:, :10]), many(stack[:, :10])  # compiled here
+        nb = timed(lambda f=one: f(stack))
+        np_ = timed(lambda f=many: f(stack))
+        print(f"{name} ({len(parts)} parts)")
+        print(f"  NumPy: bundle {tb.rate(N, 'ev/s')}; parts {tp.rate(N, 'ev/s')}; ratio "
+              f"{tp.median / tb.median:.2f}x; max |diff| {diff:.1e} of max |value|")  # fmt: skip
+        print(f"  numba scalar twins: bundle {nb.rate(N, 'ev/s')}; parts {np_.rate(N, 'ev/s')}; "
+              f"ratio {np_.median / nb.median:.2f}x")  # fmt: skip
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@ from sympy.printing.c import C99CodePrinter
 from .board import Board
 from .codegen import (
     _env,
+    bundle_body,
     fixed_point_ast,
     fixed_point_latex,
     kernel_body,
@@ -105,7 +106,15 @@ def items(boards: list[Board]) -> dict:
         constants = [
             {"c": c_name(b.module, c.name), "const": c, "n": len(c.values)} for c in b.constants
         ]
-        modules.append({"board": b, "kernels": kernels, "constants": constants})
+        bundles = []
+        for bu in b.bundles:
+            lines, results, ops = bundle_body(bu, CKernelPrinter, {})
+            bundles.append({"b": bu, "c": c_name(b.module, bu.name), "lines": lines,
+                            "results": results, "ops": ops, "n": len(results),
+                            "parts": [c_name(b.module, k.name) for k in bu.parts],
+                            "unused": _unused(bu.args, *(k.expr for k in bu.parts))})  # fmt: skip
+        modules.append({"board": b, "kernels": kernels, "constants": constants,
+                        "bundles": bundles})  # fmt: skip
     fixed = []
     for b in boards:
         for fp in b.fixed_points:

@@ -154,7 +154,28 @@ def items(boards: list[Board]) -> dict:
                             "declarations": _declaration_lines(p, real, logical),
                             "arglist": ", ".join(names[a.name] for a in k.args)})  # fmt: skip
         constants = [{"f": fortran_name(b.module, c.name), "const": c} for c in b.constants]
-        modules.append({"board": b, "kernels": kernels, "constants": constants})
+        bundles = []
+        for bu in b.bundles:
+            names, exprs = _renamed(bu.args, *(k.expr for k in bu.parts))
+            replacements, reduced = sp.cse([numeric_constants(e) for e in exprs],
+                                           symbols=sp.numbered_symbols(PREFIX),
+                                           order="canonical")  # fmt: skip
+            real, logical = _declarations(replacements)
+            body = []
+            for sym, val in replacements:
+                body += p.wrapped(f"{sym} = {p.one_line(val)}", 8)
+            for j, r in enumerate(reduced, start=1):
+                body += p.wrapped(f"out({j}) = {p.one_line(r)}", 8)
+            name = fortran_name(b.module, bu.name)
+            if name.lower() in seen:
+                raise ValueError(f"{name} and {seen[name.lower()]} are one name in Fortran")
+            seen[name.lower()] = name
+            bundles.append({"b": bu, "f": name, "names": names, "body": body, "n": len(reduced),
+                            "parts": [fortran_name(b.module, k.name) for k in bu.parts],
+                            "declarations": _declaration_lines(p, real, logical),
+                            "arglist": ", ".join(names[a.name] for a in bu.args)})  # fmt: skip
+        modules.append({"board": b, "kernels": kernels, "constants": constants,
+                        "bundles": bundles})  # fmt: skip
     fixed = []
     for b in boards:
         for fp in b.fixed_points:
@@ -196,7 +217,9 @@ def render(boards: list[Board]) -> dict[str, str]:
 
     context = {**items(boards), **project(), **checkpoints.recorded(boards),
                "points": checkpoints.POINTS, "digits": checkpoints.DIGITS,
-               "rtol": checkpoints.RTOL}  # fmt: skip
+               "rtol": checkpoints.RTOL,
+               "widest": max((len(bu.parts) for b in boards for bu in b.bundles), default=1),
+               "f_name": fortran_name}  # fmt: skip
     out = {}
     for name in ("symimpact.f90", "check_kernels.f90", "README.md"):
         template = f"fortran/{name}.j2"

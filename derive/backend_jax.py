@@ -18,7 +18,7 @@ import sympy as sp
 from sympy.printing.numpy import JaxPrinter
 
 from .board import Board
-from .codegen import _env, fixed_point_ast, kernel_body, latex_of
+from .codegen import _env, bundle_body, fixed_point_ast, kernel_body, latex_of
 
 FOLDER = "jax"
 
@@ -55,13 +55,19 @@ def render(boards: list[Board]) -> dict[str, str]:
             lines, result, _ = kernel_body(k, JaxKernelPrinter, {})
             kernels.append({"k": k, "lines": lines, "result": result, "latex": latex_of(k),
                             "argnames": ", ".join(a.name for a in k.args)})  # fmt: skip
+        bundles = []
+        for bu in b.bundles:
+            lines, results, _ = bundle_body(bu, JaxKernelPrinter, {})
+            bundles.append({"b": bu, "lines": lines, "results": results,
+                            "argnames": ", ".join(a.name for a in bu.args)})  # fmt: skip
         fixed = [{"fp": fp, "x": fp.iterate.name, **_iteration(fp, printer),
                   "argnames": "".join(f"{a.name}, " for a in fp.args)}
                  for fp in b.fixed_points]  # fmt: skip
         template = "jax/module.py.j2"
         out[f"{FOLDER}/{b.module}.py"] = _env.get_template(template).render(
-            template=f"derive/templates/{template}", board=b, kernels=kernels, fixed=fixed
-        )
+            template=f"derive/templates/{template}", board=b, kernels=kernels, fixed=fixed,
+            bundles=bundles,
+        )  # fmt: skip
     for name in ("__init__.py", "README.md"):
         template = f"jax/{name}.j2"
         out[f"{FOLDER}/{name}"] = _env.get_template(template).render(

@@ -19,7 +19,14 @@ import sympy as sp
 from sympy.printing.octave import OctaveCodePrinter
 
 from .board import Board
-from .codegen import _env, fixed_point_ast, fixed_point_latex, kernel_body, latex_of
+from .codegen import (
+    _env,
+    bundle_body,
+    fixed_point_ast,
+    fixed_point_latex,
+    kernel_body,
+    latex_of,
+)
 
 FOLDER = "octave"
 MAX_NAME = 63  # namelengthmax of MATLAB and Octave
@@ -124,6 +131,22 @@ def render(boards: list[Board]) -> dict[str, str]:
                 argnames=", ".join(a.name for a in k.args),
                 pick=PICK if any(f"{PICK}(" in text for _, text in [*lines, ("", result)]) else "",
             )
+    for b in boards:
+        for bu in b.bundles:
+            lines, results, ops = bundle_body(bu, OctaveArrayPrinter, {}, prefix="x_")
+            emit(
+                "bundle.m.j2",
+                octave_name(b.module, bu.name),
+                board=b,
+                b=bu,
+                lines=lines,
+                results=results,
+                ops=ops,
+                argnames=", ".join(a.name for a in bu.args),
+                name_of=lambda kernel, m=b.module: octave_name(m, kernel),
+                pick=PICK if any(f"{PICK}(" in text for text in [*(t for _, t in lines), *results])
+                else "",
+            )  # fmt: skip
     for b in boards:
         for fp in b.fixed_points:
             hoisted, loop = fixed_point_ast(fp, prefix="c_")

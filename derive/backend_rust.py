@@ -20,7 +20,7 @@ from sympy.printing.codeprinter import CodePrinter
 from sympy.printing.rust import RustCodePrinter
 
 from .board import Board
-from .codegen import _env, fixed_point_ast, kernel_body, latex_of, project
+from .codegen import _env, bundle_body, fixed_point_ast, kernel_body, latex_of, project
 
 FOLDER = "rust"
 
@@ -115,7 +115,12 @@ def items(boards: list[Board]) -> dict:
             lines, result, _ = kernel_body(k, RustKernelPrinter, {})
             kernels.append({"k": k, "lines": lines, "result": result, "latex": latex_of(k),
                             "unused": _unused(k.args, k.expr)})  # fmt: skip
-        modules.append({"board": b, "kernels": kernels})
+        bundles = []
+        for bu in b.bundles:
+            lines, results, _ = bundle_body(bu, RustKernelPrinter, {})
+            bundles.append({"b": bu, "lines": lines, "results": results,
+                            "unused": _unused(bu.args, *(k.expr for k in bu.parts))})  # fmt: skip
+        modules.append({"board": b, "kernels": kernels, "bundles": bundles})
     fixed = [
         {"fp": fp, "module": b.module, "unused": _unused(fp.args, fp.start, fp.step),
          "x": fp.iterate.name, **_iteration(fp, printer)}

@@ -124,6 +124,25 @@ class Kernel:
 
 
 @dataclass(frozen=True)
+class Bundle:
+    """Kernels of the same arguments emitted as one function that returns all of them, their
+    common subexpressions computed once (``sympy.cse`` over the parts together): a value with
+    its derivatives, or a state with its transition matrix, as a caller wants them together."""
+
+    name: str
+    parts: tuple[Kernel, ...]
+    returns: str
+
+    @property
+    def args(self) -> tuple[Arg, ...]:
+        return self.parts[0].args
+
+    @property
+    def equation(self) -> str:
+        return self.parts[0].equation
+
+
+@dataclass(frozen=True)
 class FixedPoint:
     """A fixed-point iteration to emit as a loop: ``x⁽⁰⁾ = start(args)``,
     ``x⁽ⁱ⁾ = step(x⁽ⁱ⁻¹⁾, args)`` until abs(x⁽ⁱ⁾ − x⁽ⁱ⁻¹⁾) ≤ tol·abs(x⁽ⁱ⁾) or ``max_iter``
@@ -167,6 +186,7 @@ class Board:
         self.kernels: list[Kernel] = []
         self.constants: list[Constant] = []
         self.fixed_points: list[FixedPoint] = []
+        self.bundles: list[Bundle] = []
         self.values: dict[str, Any] = {}
         self._clock = time.perf_counter()
 
@@ -250,6 +270,17 @@ class Board:
                 )
             )
         return out
+
+    def bundle(self, name: str, parts: list[Kernel], returns: str) -> Bundle:
+        """Declare :class:`Bundle` ``name`` of ``parts`` (kernels of this board with the same
+        arguments, in the order the function returns them)."""
+        names = [a.name for a in parts[0].args]
+        for k in parts:
+            if [a.name for a in k.args] != names or not any(k is j for j in self.kernels):
+                raise ValueError(f"{name}: {k.name} is not a kernel of this board with {names}")
+        b = Bundle(name, tuple(parts), returns)
+        self.bundles.append(b)
+        return b
 
     def fixed_point(self, **kwargs: Any) -> FixedPoint:
         f = FixedPoint(**kwargs)

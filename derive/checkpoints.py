@@ -147,11 +147,18 @@ def _once(item, find) -> list[CheckPoint]:
 
 
 def recorded(boards: list[Board]) -> dict:
-    """``{"kernels": [(module, kernel, points)], "iterations": [(module, fp, points)]}``; each
-    kernel's and iteration's points found once per process (:data:`_FOUND`)."""
+    """``{"kernels": [(module, kernel, points)], "iterations": [(module, fp, points)],
+    "bundles": [(module, bundle, [(index, part, points)])]}``; each kernel's and iteration's
+    points found once per process (:data:`_FOUND`)."""
     return {
         "kernels": [(b.module, k, _once(k, kernel_points)) for b in boards for k in b.kernels],
         "iterations": [
             (b.module, fp, _once(fp, iteration_points)) for b in boards for fp in b.fixed_points
+        ],
+        # a bundle is checked part by part, at each part's own points
+        "bundles": [
+            (b.module, bu, [(j, k, _once(k, kernel_points)) for j, k in enumerate(bu.parts)])
+            for b in boards
+            for bu in b.bundles
         ],
     }

@@ -221,6 +221,8 @@ def derive() -> Board:
         constraints=(underdamped,),
     )
     # The durations' sensitivities to every argument (sympy.diff).
-    board.derivatives(hertz, ("m", "M", "k_hz", hertz.args[3].name))
-    board.derivatives(linear, ("m", "M", "k1", "c1"))
+    for k, wrt in ((hertz, ("m", "M", "k_hz", hertz.args[3].name)),
+                   (linear, ("m", "M", "k1", "c1"))):  # fmt: skip
+        board.bundle(f"{k.name}_and_derivatives", [k, *board.derivatives(k, wrt)],
+                     f"{k.returns} and its derivatives in {', '.join(wrt)}")  # fmt: skip
     return board

@@ -13,7 +13,7 @@ import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.pycode import PythonCodePrinter
 
-from .board import Board, FixedPoint, Kernel
+from .board import Board, Bundle, FixedPoint, Kernel
 
 TEMPLATES = Path(__file__).parent / "templates"
 KERNEL_TEMPLATE = "kernels.py.j2"
@@ -120,6 +120,33 @@ def kernel_body(
     return lines, printer.doprint(reduced), ops
 
 
+def bundle_body(
+    bundle: Bundle,
+    printer_class: type = KernelPrinter,
+    settings: dict | None = None,
+    prefix: str = "_x",
+) -> tuple[list[tuple[str, str]], list[str], int]:
+    """:func:`kernel_body` of a :class:`~derive.board.Bundle`: the assignments of the common
+    subexpressions of all its parts, each part's returned expression, and the op count."""
+    replacements, reduced, ops = _once(_bundle_reduced, bundle, prefix)
+    printer = printer_class({"fully_qualified_modules": True} if settings is None else settings)
+    lines = [(str(sym), printer.doprint(val)) for sym, val in replacements]
+    return lines, [printer.doprint(r) for r in reduced], ops
+
+
+def _bundle_reduced(bundle: Bundle, prefix: str) -> tuple[list, list, int]:
+    exprs = [numeric_constants(sp.sympify(k.expr)) for k in bundle.parts]
+    replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="canonical")
+    ops = sum(int(sp.count_ops(val)) for _, val in replacements)
+    return replacements, reduced, ops + sum(int(sp.count_ops(r)) for r in reduced)
+
+
+def bundle_ops(bundle: Bundle) -> tuple[int, int]:
+    """(operations of the bundle, operations of its parts computed one by one)."""
+    return (_once(_bundle_reduced, bundle, "_x")[2],
+            sum(_once(_reduced, k, "_x")[2] for k in bundle.parts))  # fmt: skip
+
+
 #: Results already computed, by function, argument identity and further arguments; each entry
 #: keeps its kernel alive, so an identity is never reused for another.  Every target prints the
 #: same reduced expressions and docstrings: computing them once per process is most of the
@@ -192,9 +219,27 @@ def render_module(board: Board) -> str:
                 "cases": sp.sympify(k.expr).has(sp.Piecewise),
             }
         )
+    bundles = []
+    for b in board.bundles:
+        lines, results, ops = bundle_body(b)
+        scalar_lines, scalar_results, _ = bundle_body(b, ScalarTwinPrinter)
+        bundles.append(
+            {
+                "bundle": b,
+                "lines": lines,
+                "results": results,
+                "scalar_lines": scalar_lines,
+                "scalar_results": scalar_results,
+                "ops": ops,
+                "alone": bundle_ops(b)[1],
+                "argnames": ", ".join(a.name for a in b.args),
+                "cases": any(sp.sympify(k.expr).has(sp.Piecewise) for k in b.parts),
+            }
+        )
     return _env.get_template(KERNEL_TEMPLATE).render(
         board=board,
         kernels=kernels,
+        bundles=bundles,
         total_ops=total_ops,
         template=f"derive/templates/{KERNEL_TEMPLATE}",
     )

@@ -188,8 +188,19 @@ def derive() -> Board:
     # The flight's transition matrix ∂(x, ẋ)/∂(x0, ẋ0), its vector field ∂/∂t and its
     # derivatives in the forcing (F0, X_b, φ): sympy.diff of the two kernels.  Not in M, K, Ω:
     # they decide the resonant case, where differentiating case by case would be wrong.
-    for k in (x_kernel, v_kernel):
-        board.derivatives(k, ("t", "x0", "xdot0", "F0", "X_b", "phi"))
+    slopes = {k.name: board.derivatives(k, ("t", "x0", "xdot0", "F0", "X_b", "phi"))
+              for k in (x_kernel, v_kernel)}  # fmt: skip
+    by_arg = {k.name: {d.derivative_of[1]: d for d in ds} for k, ds in
+              ((x_kernel, slopes[x_kernel.name]), (v_kernel, slopes[v_kernel.name]))}  # fmt: skip
+    board.bundle("forced_state", [x_kernel, v_kernel],
+                 "The primary's displacement and velocity a time t into a flight (x, ẋ)")  # fmt: skip
+    board.bundle(
+        "forced_transition",
+        [x_kernel, v_kernel, *(by_arg[k.name][a] for k in (x_kernel, v_kernel)
+                               for a in ("x0", "xdot0"))],
+        "The state after a flight and its transition matrix: x, ẋ, ∂x/∂x0, ∂x/∂ẋ0, ∂ẋ/∂x0, "
+        "∂ẋ/∂ẋ0",
+    )  # fmt: skip
     # ∂/∂Ω, which the continuation in Ω needs: case by case off the resonant set; on it (C = 0,
     # K = MΩ²) the limit of the undamped general derivative as the natural frequency tends to Ω,
     # as the value's own resonant case is the limit of the general response.

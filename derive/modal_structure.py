@@ -28,7 +28,7 @@ import mpmath as mp
 import sympy as sp
 
 from .beam_modes import BEAMS, NAMES, _mode_shapes, norm_at_root, roots
-from .board import Arg, Board
+from .board import Arg, Board, rounding_scale
 
 #: Modes summed for the effective-mass sum rule of the beams.
 N_SUM = 64
@@ -358,6 +358,8 @@ def derive() -> Board:
             unit="1",
             equation="F7",
             lhs=r"\frac{M_i \Gamma_i^2}{\rho A L}",
+            # away from a root the boundary form of ∫φ² cancels: rounding judged against its terms
+            magnitude=rounding_scale(fractions[beam]),
             note="beta_L must be a root of the frequency equation.",
         )
         board.kernel(
@@ -369,6 +371,7 @@ def derive() -> Board:
             unit="1",
             equation="F7",
             lhs=r"\Gamma_i",
+            magnitude=rounding_scale(participation[beam]),
             note="beta_L must be a root of the frequency equation.",
         )
     return board

@@ -369,7 +369,11 @@ def derive() -> Board:
         equation="F3",
         lhs="r",
     )
-    board.derivatives(residual, ("phi", "e", "d", "m", "F0", "X_b"))
+    board.bundle(
+        "phase_residual_and_derivatives",
+        [residual, *board.derivatives(residual, ("phi", "e", "d", "m", "F0", "X_b"))],
+        "The phase condition's residual and its derivatives in φ, e, d, m, F0, X_b",
+    )
     for k in at_phase_kernels:
         board.derivatives(k, ("phi", "e", "d"))
     return board

@@ -250,8 +250,13 @@ def derive() -> Board:
         )
     )
     # The impact map's Jacobian in the velocities before it and in e (sympy.diff).
-    for k in after:
-        board.derivatives(k, ("e", "xdot_minus", "ydot_minus"))
+    slopes = [board.derivatives(k, ("e", "xdot_minus", "ydot_minus")) for k in after]
+    board.bundle(
+        "velocities_after_and_derivatives",
+        [*after, *slopes[0], *slopes[1]],
+        "Both velocities after a rigid impact and their derivatives in e, ẋ⁻, ẏ⁻ (the impact "
+        "map's Jacobian)",
+    )
     board.kernel(
         name="energy_lost",
         args=args,

@@ -324,7 +324,11 @@ def derive() -> Board:
         constraints=above,
     )
     # the response surface's slopes in every argument (sympy.diff)
-    board.derivatives(surface, tuple(a.name for a in surface.args))
+    board.bundle(
+        "clearance_for_response_and_derivatives",
+        [surface, *board.derivatives(surface, tuple(a.name for a in surface.args))],
+        "The clearance on the response surface and its slopes in every argument",
+    )
     for i, c_ in enumerate(coefficients):
         c_ = c_.subs(whole)
         board.kernel(

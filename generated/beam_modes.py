@@ -42,7 +42,13 @@ __all__ = [
     "static_flexibility_clamped_clamped_scalar",
     "static_flexibility_simply_supported",
     "static_flexibility_simply_supported_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 #: Roots βL of the cantilever's frequency equation, modes 1..8 (mpmath).
 BETA_L_CANTILEVER = (

@@ -31,7 +31,13 @@ __all__ = [
     "linear_fit_k1_scalar",
     "linear_fit_k1_continuous",
     "linear_fit_k1_continuous_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 
 def cubic_fit_a(k_hz, delta_max):

@@ -57,7 +57,29 @@ __all__ = [
     "steady_sine_scalar",
     "linear_amplitude",
     "linear_amplitude_scalar",
+    "forced_state",
+    "forced_state_scalar",
+    "forced_transition",
+    "forced_transition_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+    "forced_state": (
+        "forced_displacement",
+        "forced_velocity",
+    ),
+    "forced_transition": (
+        "forced_displacement",
+        "forced_velocity",
+        "forced_displacement_d_x0",
+        "forced_displacement_d_xdot0",
+        "forced_velocity_d_x0",
+        "forced_velocity_d_xdot0",
+    ),
+}
 
 
 def forced_displacement(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
@@ -1883,3 +1905,295 @@ def linear_amplitude_scalar(M, K, C, F0, X_b, Omega):
     _x0 = Omega**2
     _x1 = C**2*_x0
     return numpy.sqrt(X_b**2*_x1 + (F0 + K*X_b)**2)/numpy.sqrt(_x1 + (K - M*_x0)**2)
+
+
+def forced_state(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""The primary's displacement and velocity a time t into a flight (x, ẋ): `forced_displacement`, `forced_velocity` in one pass.
+
+    Eq. F1 (derived here, beyond the paper).  The parts' common subexpressions are
+    computed once: 122 operations, against 189 for the parts one by one.
+
+    Parameters
+    ----------
+    t : array_like
+        Time since the last event [s].
+    M : array_like
+        Main mass M [kg].
+    K : array_like
+        Main stiffness K [N/m].
+    C : array_like
+        Main damping C (underdamped: C < 2√(KM)) [N s/m].
+    F0 : array_like
+        Force amplitude F0 on the main mass [N].
+    X_b : array_like
+        Base-motion amplitude X_b [m].
+    Omega : array_like
+        Forcing frequency Ω [rad/s].
+    phi : array_like
+        Forcing phase at t = 0, φ [rad].
+    x0 : array_like
+        Main-mass displacement at t = 0 [m].
+    xdot0 : array_like
+        Main-mass velocity at t = 0 [m/s].
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        Main-mass displacement x(t) in forced free flight [m];
+        Main-mass velocity ẋ(t) in forced free flight [m/s];
+        each in the broadcast shape of the arguments.
+    """
+    t, M, K, C, F0, X_b, Omega, phi, x0, xdot0 = broadcast(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0)
+    with numpy.errstate(divide="ignore", invalid="ignore"):
+        _x0 = Omega*t
+        _x1 = _x0 + phi
+        _x2 = numpy.sin(_x1)
+        _x3 = _x0*_x2
+        _x4 = numpy.cos(_x0)
+        _x5 = 2*x0
+        _x6 = numpy.sin(_x0)
+        _x7 = numpy.sin(phi)
+        _x8 = K*X_b
+        _x9 = F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8
+        _x10 = (1/2)/K
+        _x11 = Omega**2
+        _x12 = M*_x11
+        _x13 = numpy.logical_and.reduce((numpy.equal(C, 0),numpy.equal(K, _x12)))
+        _x14 = C**2
+        _x15 = _x11*_x14
+        _x16 = K - _x12
+        _x17 = (_x15 + _x16**2)**(-1.0)
+        _x18 = F0 + _x8
+        _x19 = -C*Omega*X_b*_x16 + C*Omega*_x18
+        _x20 = _x17*_x19
+        _x21 = numpy.cos(_x1)
+        _x22 = _x17*(X_b*_x15 + _x16*_x18)
+        _x23 = M**(-1.0)
+        _x24 = (1/2)*C*_x23
+        _x25 = numpy.exp(-_x24*t)
+        _x26 = numpy.sqrt(K*_x23 - 1/4*_x14/M**2)
+        _x27 = _x26*t
+        _x28 = numpy.cos(_x27)
+        _x29 = numpy.cos(phi)
+        _x30 = -_x20*_x7 - _x22*_x29 + x0
+        _x31 = numpy.sin(_x27)
+        _x32 = -Omega*_x20*_x29 + Omega*_x22*_x7 + _x24*_x30 + xdot0
+        _x33 = _x25*(_x28*_x30 + _x31*_x32/_x26)
+        _x34 = Omega*_x2
+        _x35 = _x11*_x21*t
+        return (
+            shaped(numpy.select([_x13,True], [_x10*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9),_x2*_x20 + _x21*_x22 + _x33], default=numpy.nan), t.shape),
+            shaped(numpy.select([_x13,True], [_x10*(F0*_x34 + F0*_x35 + K*(-Omega*_x5*_x6 + X_b*_x34 + X_b*_x35) - Omega*_x4*_x9),Omega*_x17*_x19*_x21 - _x22*_x34 - _x24*_x33 + _x25*(-_x26*_x30*_x31 + _x28*_x32)], default=numpy.nan), t.shape),
+        )
+
+
+def forced_state_scalar(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    """The primary's displacement and velocity a time t into a flight (x, ẋ): float twin of `forced_state` (Eq. F1)."""
+    t = numpy.float64(t)
+    M = numpy.float64(M)
+    K = numpy.float64(K)
+    C = numpy.float64(C)
+    F0 = numpy.float64(F0)
+    X_b = numpy.float64(X_b)
+    Omega = numpy.float64(Omega)
+    phi = numpy.float64(phi)
+    x0 = numpy.float64(x0)
+    xdot0 = numpy.float64(xdot0)
+    _x0 = Omega*t
+    _x1 = _x0 + phi
+    _x2 = numpy.sin(_x1)
+    _x3 = _x0*_x2
+    _x4 = numpy.cos(_x0)
+    _x5 = 2*x0
+    _x6 = numpy.sin(_x0)
+    _x7 = numpy.sin(phi)
+    _x8 = K*X_b
+    _x9 = F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8
+    _x10 = (1/2)/K
+    _x11 = Omega**2
+    _x12 = M*_x11
+    _x13 = ((C == 0)) and ((K == _x12))
+    _x14 = C**2
+    _x15 = _x11*_x14
+    _x16 = K - _x12
+    _x17 = (_x15 + _x16**2)**(-1.0)
+    _x18 = F0 + _x8
+    _x19 = -C*Omega*X_b*_x16 + C*Omega*_x18
+    _x20 = _x17*_x19
+    _x21 = numpy.cos(_x1)
+    _x22 = _x17*(X_b*_x15 + _x16*_x18)
+    _x23 = M**(-1.0)
+    _x24 = (1/2)*C*_x23
+    _x25 = numpy.exp(-_x24*t)
+    _x26 = numpy.sqrt(K*_x23 - 1/4*_x14/M**2)
+    _x27 = _x26*t
+    _x28 = numpy.cos(_x27)
+    _x29 = numpy.cos(phi)
+    _x30 = -_x20*_x7 - _x22*_x29 + x0
+    _x31 = numpy.sin(_x27)
+    _x32 = -Omega*_x20*_x29 + Omega*_x22*_x7 + _x24*_x30 + xdot0
+    _x33 = _x25*(_x28*_x30 + _x31*_x32/_x26)
+    _x34 = Omega*_x2
+    _x35 = _x11*_x21*t
+    return (
+        ((_x10*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9)) if (_x13) else (_x2*_x20 + _x21*_x22 + _x33)),
+        ((_x10*(F0*_x34 + F0*_x35 + K*(-Omega*_x5*_x6 + X_b*_x34 + X_b*_x35) - Omega*_x4*_x9)) if (_x13) else (Omega*_x17*_x19*_x21 - _x22*_x34 - _x24*_x33 + _x25*(-_x26*_x30*_x31 + _x28*_x32))),
+    )
+
+
+def forced_transition(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""The state after a flight and its transition matrix: x, ẋ, ∂x/∂x0, ∂x/∂ẋ0, ∂ẋ/∂x0, ∂ẋ/∂ẋ0: `forced_displacement`, `forced_velocity`, `forced_displacement_d_x0`, `forced_displacement_d_xdot0`, `forced_velocity_d_x0`, `forced_velocity_d_xdot0` in one pass.
+
+    Eq. F1 (derived here, beyond the paper).  The parts' common subexpressions are
+    computed once: 143 operations, against 306 for the parts one by one.
+
+    Parameters
+    ----------
+    t : array_like
+        Time since the last event [s].
+    M : array_like
+        Main mass M [kg].
+    K : array_like
+        Main stiffness K [N/m].
+    C : array_like
+        Main damping C (underdamped: C < 2√(KM)) [N s/m].
+    F0 : array_like
+        Force amplitude F0 on the main mass [N].
+    X_b : array_like
+        Base-motion amplitude X_b [m].
+    Omega : array_like
+        Forcing frequency Ω [rad/s].
+    phi : array_like
+        Forcing phase at t = 0, φ [rad].
+    x0 : array_like
+        Main-mass displacement at t = 0 [m].
+    xdot0 : array_like
+        Main-mass velocity at t = 0 [m/s].
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        Main-mass displacement x(t) in forced free flight [m];
+        Main-mass velocity ẋ(t) in forced free flight [m/s];
+        ∂/∂x0 of: main-mass displacement x(t) in forced free flight (its partial derivative in main-mass displacement at t = 0) [1];
+        ∂/∂xdot0 of: main-mass displacement x(t) in forced free flight (its partial derivative in main-mass velocity at t = 0) [s];
+        ∂/∂x0 of: main-mass velocity ẋ(t) in forced free flight (its partial derivative in main-mass displacement at t = 0) [1/s];
+        ∂/∂xdot0 of: main-mass velocity ẋ(t) in forced free flight (its partial derivative in main-mass velocity at t = 0) [1];
+        each in the broadcast shape of the arguments.
+    """
+    t, M, K, C, F0, X_b, Omega, phi, x0, xdot0 = broadcast(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0)
+    with numpy.errstate(divide="ignore", invalid="ignore"):
+        _x0 = Omega*t
+        _x1 = _x0 + phi
+        _x2 = numpy.sin(_x1)
+        _x3 = _x0*_x2
+        _x4 = numpy.cos(_x0)
+        _x5 = 2*x0
+        _x6 = numpy.sin(_x0)
+        _x7 = numpy.sin(phi)
+        _x8 = K*X_b
+        _x9 = F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8
+        _x10 = K**(-1.0)
+        _x11 = (1/2)*_x10
+        _x12 = Omega**2
+        _x13 = M*_x12
+        _x14 = numpy.logical_and.reduce((numpy.equal(C, 0),numpy.equal(K, _x13)))
+        _x15 = C**2
+        _x16 = _x12*_x15
+        _x17 = K - _x13
+        _x18 = (_x16 + _x17**2)**(-1.0)
+        _x19 = F0 + _x8
+        _x20 = -C*Omega*X_b*_x17 + C*Omega*_x19
+        _x21 = _x18*_x20
+        _x22 = numpy.cos(_x1)
+        _x23 = _x18*(X_b*_x16 + _x17*_x19)
+        _x24 = M**(-1.0)
+        _x25 = (1/2)*C*_x24
+        _x26 = numpy.exp(-_x25*t)
+        _x27 = numpy.sqrt(K*_x24 - 1/4*_x15/M**2)
+        _x28 = _x27*t
+        _x29 = numpy.cos(_x28)
+        _x30 = numpy.cos(phi)
+        _x31 = -_x21*_x7 - _x23*_x30 + x0
+        _x32 = -Omega*_x21*_x30 + Omega*_x23*_x7 + _x25*_x31 + xdot0
+        _x33 = numpy.sin(_x28)
+        _x34 = _x33/_x27
+        _x35 = _x26*(_x29*_x31 + _x32*_x34)
+        _x36 = Omega*_x2
+        _x37 = _x12*_x22*t
+        _x38 = Omega*_x6
+        _x39 = _x27*_x33
+        _x40 = _x26*(_x25*_x34 + _x29)
+        _x41 = _x26*_x34
+        return (
+            shaped(numpy.select([_x14,True], [_x11*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9),_x2*_x21 + _x22*_x23 + _x35], default=numpy.nan), t.shape),
+            shaped(numpy.select([_x14,True], [_x11*(F0*_x36 + F0*_x37 + K*(X_b*_x36 + X_b*_x37 - _x38*_x5) - Omega*_x4*_x9),Omega*_x18*_x20*_x22 - _x23*_x36 - _x25*_x35 + _x26*(_x29*_x32 - _x31*_x39)], default=numpy.nan), t.shape),
+            shaped(numpy.select([_x14,True], [_x4,_x40], default=numpy.nan), t.shape),
+            shaped(numpy.select([_x14,True], [M*_x10*_x38,_x41], default=numpy.nan), t.shape),
+            shaped(numpy.select([_x14,True], [-_x38,-_x25*_x40 + _x26*(_x25*_x29 - _x39)], default=numpy.nan), t.shape),
+            shaped(numpy.select([_x14,True], [_x10*_x13*_x4,-_x25*_x41 + _x26*_x29], default=numpy.nan), t.shape),
+        )
+
+
+def forced_transition_scalar(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    """The state after a flight and its transition matrix: x, ẋ, ∂x/∂x0, ∂x/∂ẋ0, ∂ẋ/∂x0, ∂ẋ/∂ẋ0: float twin of `forced_transition` (Eq. F1)."""
+    t = numpy.float64(t)
+    M = numpy.float64(M)
+    K = numpy.float64(K)
+    C = numpy.float64(C)
+    F0 = numpy.float64(F0)
+    X_b = numpy.float64(X_b)
+    Omega = numpy.float64(Omega)
+    phi = numpy.float64(phi)
+    x0 = numpy.float64(x0)
+    xdot0 = numpy.float64(xdot0)
+    _x0 = Omega*t
+    _x1 = _x0 + phi
+    _x2 = numpy.sin(_x1)
+    _x3 = _x0*_x2
+    _x4 = numpy.cos(_x0)
+    _x5 = 2*x0
+    _x6 = numpy.sin(_x0)
+    _x7 = numpy.sin(phi)
+    _x8 = K*X_b
+    _x9 = F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8
+    _x10 = K**(-1.0)
+    _x11 = (1/2)*_x10
+    _x12 = Omega**2
+    _x13 = M*_x12
+    _x14 = ((C == 0)) and ((K == _x13))
+    _x15 = C**2
+    _x16 = _x12*_x15
+    _x17 = K - _x13
+    _x18 = (_x16 + _x17**2)**(-1.0)
+    _x19 = F0 + _x8
+    _x20 = -C*Omega*X_b*_x17 + C*Omega*_x19
+    _x21 = _x18*_x20
+    _x22 = numpy.cos(_x1)
+    _x23 = _x18*(X_b*_x16 + _x17*_x19)
+    _x24 = M**(-1.0)
+    _x25 = (1/2)*C*_x24
+    _x26 = numpy.exp(-_x25*t)
+    _x27 = numpy.sqrt(K*_x24 - 1/4*_x15/M**2)
+    _x28 = _x27*t
+    _x29 = numpy.cos(_x28)
+    _x30 = numpy.cos(phi)
+    _x31 = -_x21*_x7 - _x23*_x30 + x0
+    _x32 = -Omega*_x21*_x30 + Omega*_x23*_x7 + _x25*_x31 + xdot0
+    _x33 = numpy.sin(_x28)
+    _x34 = _x33/_x27
+    _x35 = _x26*(_x29*_x31 + _x32*_x34)
+    _x36 = Omega*_x2
+    _x37 = _x12*_x22*t
+    _x38 = Omega*_x6
+    _x39 = _x27*_x33
+    _x40 = _x26*(_x25*_x34 + _x29)
+    _x41 = _x26*_x34
+    return (
+        ((_x11*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9)) if (_x14) else (_x2*_x21 + _x22*_x23 + _x35)),
+        ((_x11*(F0*_x36 + F0*_x37 + K*(X_b*_x36 + X_b*_x37 - _x38*_x5) - Omega*_x4*_x9)) if (_x14) else (Omega*_x18*_x20*_x22 - _x23*_x36 - _x25*_x35 + _x26*(_x29*_x32 - _x31*_x39))),
+        ((_x4) if (_x14) else (_x40)),
+        ((M*_x10*_x38) if (_x14) else (_x41)),
+        ((-_x38) if (_x14) else (-_x25*_x40 + _x26*(_x25*_x29 - _x39))),
+        ((_x10*_x13*_x4) if (_x14) else (-_x25*_x41 + _x26*_x29)),
+    )

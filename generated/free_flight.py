@@ -27,7 +27,13 @@ __all__ = [
     "impact_mass_velocity_scalar",
     "impact_mass_displacement",
     "impact_mass_displacement_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 
 def main_mass_displacement(t, M, K, C, x0, xdot0):

@@ -33,7 +33,13 @@ __all__ = [
     "linear_frequency_squared_out_of_phase_scalar",
     "linear_amplitude_ratio_out_of_phase",
     "linear_amplitude_ratio_out_of_phase_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 
 def amplitude_ratio(K, M, m, omega):

@@ -41,7 +41,13 @@ __all__ = [
     "speed_for_approach_scalar",
     "thornton_restitution",
     "thornton_restitution_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 
 def effective_modulus(E_1, nu_1, E_2, nu_2):

@@ -29,7 +29,13 @@ __all__ = [
     "duration_density_scalar",
     "kelvin_voigt_tensile_fraction",
     "kelvin_voigt_tensile_fraction_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 
 def max_penetration(m, M, K_Hz, chi, v0):

@@ -35,7 +35,13 @@ __all__ = [
     "duffing_amplitude_scalar",
     "frequency_eq20",
     "frequency_eq20_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 
 def duffing_frequency_order1(omega0, epsilon, alpha):

@@ -31,7 +31,13 @@ __all__ = [
     "effective_mass_fraction_simply_supported_scalar",
     "base_participation_simply_supported",
     "base_participation_simply_supported_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 
 def effective_mass_fraction_cantilever(beta_L):

@@ -39,7 +39,13 @@ __all__ = [
     "relative_velocity_printed_scalar",
     "main_mass_displacement_contact_printed",
     "main_mass_displacement_contact_printed_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 
 def contact_duration_map(T, m, a, b, c1, zdot0, ba):

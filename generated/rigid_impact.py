@@ -47,7 +47,25 @@ __all__ = [
     "saltation_main_velocity_z_scalar",
     "saltation_impact_velocity_z",
     "saltation_impact_velocity_z_scalar",
+    "velocities_after_and_derivatives",
+    "velocities_after_and_derivatives_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+    "velocities_after_and_derivatives": (
+        "main_velocity_after",
+        "impact_velocity_after",
+        "main_velocity_after_d_e",
+        "main_velocity_after_d_xdot_minus",
+        "main_velocity_after_d_ydot_minus",
+        "impact_velocity_after_d_e",
+        "impact_velocity_after_d_xdot_minus",
+        "impact_velocity_after_d_ydot_minus",
+    ),
+}
 
 
 def main_velocity_after(m, M, e, xdot_minus, ydot_minus):
@@ -638,3 +656,85 @@ def saltation_impact_velocity_z_scalar(m, M, e, zdot_minus, a_minus):
     zdot_minus = numpy.float64(zdot_minus)
     a_minus = numpy.float64(a_minus)
     return -M*a_minus*(e + 1)/(zdot_minus*(M + m))
+
+
+def velocities_after_and_derivatives(m, M, e, xdot_minus, ydot_minus):
+    r"""Both velocities after a rigid impact and their derivatives in e, ẋ⁻, ẏ⁻ (the impact map's Jacobian): `main_velocity_after`, `impact_velocity_after`, `main_velocity_after_d_e`, `main_velocity_after_d_xdot_minus`, `main_velocity_after_d_ydot_minus`, `impact_velocity_after_d_e`, `impact_velocity_after_d_xdot_minus`, `impact_velocity_after_d_ydot_minus` in one pass.
+
+    Eq. F2 (derived here, beyond the paper).  The parts' common subexpressions are
+    computed once: 17 operations, against 41 for the parts one by one.
+
+    Parameters
+    ----------
+    m : array_like
+        Impact mass m [kg].
+    M : array_like
+        Main mass M [kg].
+    e : array_like
+        Coefficient of restitution e [1].
+    xdot_minus : array_like
+        Main-mass velocity before the impact [m/s].
+    ydot_minus : array_like
+        Impact-mass velocity before the impact [m/s].
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        Main-mass velocity after a rigid impact [m/s];
+        Impact-mass velocity after a rigid impact [m/s];
+        ∂/∂e of: main-mass velocity after a rigid impact (its partial derivative in coefficient of restitution e) [m/s];
+        ∂/∂xdot_minus of: main-mass velocity after a rigid impact (its partial derivative in main-mass velocity before the impact) [1];
+        ∂/∂ydot_minus of: main-mass velocity after a rigid impact (its partial derivative in impact-mass velocity before the impact) [1];
+        ∂/∂e of: impact-mass velocity after a rigid impact (its partial derivative in coefficient of restitution e) [m/s];
+        ∂/∂xdot_minus of: impact-mass velocity after a rigid impact (its partial derivative in main-mass velocity before the impact) [1];
+        ∂/∂ydot_minus of: impact-mass velocity after a rigid impact (its partial derivative in impact-mass velocity before the impact) [1];
+        each in the broadcast shape of the arguments.
+    """
+    m, M, e, xdot_minus, ydot_minus = broadcast(m, M, e, xdot_minus, ydot_minus)
+    _x0 = e + 1
+    _x1 = xdot_minus - ydot_minus
+    _x2 = (M + m)**(-1.0)
+    _x3 = _x2*m
+    _x4 = _x1*_x3
+    _x5 = M*_x2
+    _x6 = _x1*_x5
+    _x7 = _x0*_x3
+    _x8 = _x0*_x5
+    return (
+        shaped(-_x0*_x4 + xdot_minus, m.shape),
+        shaped(_x0*_x6 + ydot_minus, m.shape),
+        shaped(-_x4, m.shape),
+        shaped(1 - _x7, m.shape),
+        shaped(_x7, m.shape),
+        shaped(_x6, m.shape),
+        shaped(_x8, m.shape),
+        shaped(1 - _x8, m.shape),
+    )
+
+
+def velocities_after_and_derivatives_scalar(m, M, e, xdot_minus, ydot_minus):
+    """Both velocities after a rigid impact and their derivatives in e, ẋ⁻, ẏ⁻ (the impact map's Jacobian): float twin of `velocities_after_and_derivatives` (Eq. F2)."""
+    m = numpy.float64(m)
+    M = numpy.float64(M)
+    e = numpy.float64(e)
+    xdot_minus = numpy.float64(xdot_minus)
+    ydot_minus = numpy.float64(ydot_minus)
+    _x0 = e + 1
+    _x1 = xdot_minus - ydot_minus
+    _x2 = (M + m)**(-1.0)
+    _x3 = _x2*m
+    _x4 = _x1*_x3
+    _x5 = M*_x2
+    _x6 = _x1*_x5
+    _x7 = _x0*_x3
+    _x8 = _x0*_x5
+    return (
+        -_x0*_x4 + xdot_minus,
+        _x0*_x6 + ydot_minus,
+        -_x4,
+        1 - _x7,
+        _x7,
+        _x6,
+        _x8,
+        1 - _x8,
+    )

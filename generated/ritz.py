@@ -32,7 +32,13 @@ __all__ = [
     "tip_stiffness_printed_scalar",
     "tip_mass",
     "tip_mass_scalar",
+    "BUNDLES",
 ]
+
+#: The bundles of this module: each returns its parts' values in this order, their common
+#: subexpressions computed once.
+BUNDLES = {
+}
 
 #: Roots β_i·L of cos(βL)·cosh(βL) + 1 = 0, modes 1..8 (mpmath, 60 digits).
 BETA_L = (

@@ -47,6 +47,8 @@ def _kernels():
         for fn_name in mod.__all__:
             if fn_name.endswith("_scalar") or not callable(getattr(mod, fn_name)):
                 continue
+            if fn_name in mod.BUNDLES:  # tuples of kernels: tests/test_bundles.py
+                continue
             yield pytest.param(name, fn_name, id=f"{name}.{fn_name}")
 
 

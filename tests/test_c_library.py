@@ -63,25 +63,28 @@ def built(tmp_path_factory):
     return build, prefix
 
 
-def _counts() -> tuple[int, int]:
-    """(kernels, iterations) the header declares."""
+def _counts() -> tuple[int, int, int, int]:
+    """(kernels, iterations, bundles, the bundles' parts) the header declares."""
     header = (C / "symimpact.h").read_text(encoding="utf-8")
-    batches = re.findall(r"^void (symimpact_\w+)_batch\(", header, flags=re.M)
-    iterations = [b for b in batches if b.startswith("symimpact_fixed_points_")]
-    return len(batches) - len(iterations), len(iterations)
+    singles = re.findall(r"^double (symimpact_\w+)\(", header, flags=re.M)
+    iterations = [b for b in singles if b.startswith("symimpact_fixed_points_")]
+    bundles = re.findall(r"^void (symimpact_\w+)\(double", header, flags=re.M)
+    parts = re.findall(r"^ \*   \[\d+\] symimpact_\w+$", header, flags=re.M)
+    return len(singles) - len(iterations), len(iterations), len(bundles), len(parts)
 
 
 def test_ctest_runs_the_check_program_on_both_libraries_and_every_kernel_passes(built):
     build, _ = built
     run = _run(require_tool("ctest"), "--test-dir", build, "--output-on-failure")
     assert "100% tests passed, 0 tests failed out of 2" in run.stdout
-    kernels, iterations = _counts()
+    kernels, iterations, bundles, parts = _counts()
+    assert bundles >= 7 and parts > 2 * bundles
     out = _run(build / "check_kernels_static").stdout
-    # three points a kernel, each through the function and its _batch twin; an iteration's
-    # value and step count twice over
-    checks = 3 * (2 * kernels + 4 * iterations)
-    assert out.strip() == (f"symimpact: {checks} checks of {kernels} kernels and {iterations} "
-                           "iterations, 0 failed")  # fmt: skip
+    # three points a kernel, and a bundle's part, each through the function and its _batch
+    # twin; an iteration's value and step count twice over
+    checks = 3 * (2 * kernels + 4 * iterations + 2 * parts)
+    assert out.strip() == (f"symimpact: {checks} checks of {kernels} kernels, {bundles} bundles "
+                           f"and {iterations} iterations, 0 failed")  # fmt: skip
 
 
 def test_install_tree_holds_both_libraries_the_header_and_both_package_files(built):

@@ -38,10 +38,13 @@ def test_the_module_compiles_cleanly_and_every_recorded_point_passes(tmp_path):
     source = (ROOT / "generated" / "fortran" / "symimpact.f90").read_text(encoding="utf-8")
     kernels = len(re.findall(r"^    pure elemental function (?!symimpact_log1p)", source, re.M))
     iterations = len(re.findall(r"^    pure elemental subroutine ", source, re.M))
-    assert kernels > 90 and iterations == 5
-    checks = 3 * kernels + 6 * iterations  # an iteration: its value and its step count
-    assert run.stdout.strip() == (f"symimpact: {checks} checks of {kernels} kernels and "
-                                  f"{iterations} iterations, 0 failed")  # fmt: skip
+    bundles = len(re.findall(r"^    pure subroutine ", source, re.M))
+    parts = len(re.findall(r"^    !   \(\d+\) \w+$", source, re.M))
+    assert kernels > 90 and iterations == 5 and bundles >= 7 and parts > 2 * bundles
+    # an iteration: its value and its step count; a bundle: each part at its three points
+    checks = 3 * kernels + 6 * iterations + 3 * parts
+    assert run.stdout.strip() == (f"symimpact: {checks} checks of {kernels} kernels, {bundles} "
+                                  f"bundles and {iterations} iterations, 0 failed")  # fmt: skip
 
 
 def test_the_check_program_fails_on_a_kernel_off_by_1e_9(tmp_path):

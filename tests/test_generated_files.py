@@ -104,7 +104,15 @@ def test_every_kernel_documents_its_equation_and_units():
         module = importlib.import_module(f"symimpact.generated.{step}")
         for name in module.__all__:
             obj = getattr(module, name)
-            if callable(obj) and name.endswith("_scalar"):
+            bundle = name.removesuffix("_scalar") in module.BUNDLES
+            if callable(obj) and bundle:
+                # a bundle names each of its parts, which document their formulas
+                doc = obj.__doc__
+                parts = module.BUNDLES[name.removesuffix("_scalar")]
+                assert "(Eq. " in doc or "Eq." in doc, name
+                if not name.endswith("_scalar"):
+                    assert all(f"`{p}`" in doc for p in parts) and "[" in doc, name
+            elif callable(obj) and name.endswith("_scalar"):
                 # the float twin names its vectorised kernel, the equation and the unit
                 doc = obj.__doc__
                 twin = name.removesuffix("_scalar")

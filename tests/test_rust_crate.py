@@ -35,10 +35,13 @@ def crate(tmp_path_factory):
     return base / "crate", base / "target"
 
 
-def _counts() -> tuple[int, int]:
+def _counts() -> tuple[int, int, int]:
+    """(kernels, iterations, the bundles' parts) the crate defines."""
     text = (ROOT / "generated" / "rust" / "src" / "lib.rs").read_text(encoding="utf-8")
     fixed = text[text.index("pub mod fixed_points") :]
-    return text.count("    pub fn ") - fixed.count("    pub fn "), fixed.count("    pub fn ")
+    parts = [int(n) for n in re.findall(r"^    pub fn \w+\([^)]*\) -> \[f64; (\d+)\]", text, re.M)]
+    kernels = text.count("    pub fn ") - fixed.count("    pub fn ") - len(parts)
+    return kernels, fixed.count("    pub fn "), sum(parts)
 
 
 def test_the_crate_builds_without_a_warning_and_every_recorded_point_passes(crate):
@@ -48,11 +51,12 @@ def test_the_crate_builds_without_a_warning_and_every_recorded_point_passes(crat
     assert "warning" not in build.stderr, build.stderr
     run = _cargo(folder, target, "test")
     assert run.returncode == 0, run.stdout + run.stderr
-    kernels, iterations = _counts()
-    assert kernels > 90 and iterations == 5
+    kernels, iterations, parts = _counts()
+    assert kernels > 90 and iterations == 5 and parts > 16
     results = re.findall(r"test result: ok\. (\d+) passed; 0 failed", run.stdout)
-    # the unit tests (none), the integration test (a test per kernel and iteration), the doctest
-    assert [int(n) for n in results] == [0, kernels + iterations, 1], run.stdout
+    # the unit tests (none), the integration test (a test per kernel, iteration and part of a
+    # bundle), the doctest
+    assert [int(n) for n in results] == [0, kernels + iterations + parts, 1], run.stdout
 
 
 def test_the_crate_test_fails_on_a_kernel_off_by_1e_9(crate, tmp_path):

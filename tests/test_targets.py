@@ -193,6 +193,14 @@ def octave_results(cases, fixed_cases, tmp_path_factory):
 
     for step, k, points, *_ in cases:
         lines += call(octave_name(step, k.name), points, ["r"], [], "%.17g")
+    # a bundle at the points of its first part, every output written
+    first = {(step, k.name): points for step, k, points, *_ in cases}
+    for step in STEPS:
+        module = importlib.import_module(f"symimpact.generated.{step}")
+        for name, parts in module.BUNDLES.items():
+            outs = [f"r{j + 1}" for j in range(len(parts))]
+            lines += call(octave_name(step, name), first[step, parts[0]], outs, [],
+                          " ".join(["%.17g"] * len(parts)))  # fmt: skip
     for fp, points, *_ in fixed:
         extra = [repr(fp.tol), str(fp.max_iter)]
         lines += call(octave_name("fixed_points", fp.name), points, ["r", "s"], extra, "%.17g %d")
@@ -222,6 +230,23 @@ def test_every_octave_kernel_matches_numpy(octave_results):
         _assert_close(name, k, points, got, expected, scale)
     for fp in octave_results[2]:
         files.discard(octave_name("fixed_points", fp[0].name))
+    # each output of a bundle against its part's case, whose points the bundle was run at
+    by_name = {(step, k.name): (k, points, expected, scale)
+               for step, k, points, expected, scale in cases}  # fmt: skip
+    for step in STEPS:
+        module = importlib.import_module(f"symimpact.generated.{step}")
+        for name, parts in module.BUNDLES.items():
+            files.discard(octave_name(step, name))
+            got = _read(work / f"{octave_name(step, name)}.out")
+            first = by_name[step, parts[0]][1]
+            for j, part in enumerate(parts):
+                k, points, _, _ = by_name[step, part]
+                expected = np.asarray(getattr(module, part)(*first.T), dtype=float)
+                symbols = [a.symbol for a in k.args]
+                magnitude = np.abs(sp.lambdify(symbols, k.magnitude or 0, "numpy")(*first.T))
+                scale = np.abs(expected) + np.broadcast_to(magnitude, expected.shape)
+                _assert_close(f"{octave_name(step, name)}[{j}]", k, first, got[:, j], expected,
+                              scale)  # fmt: skip
     constants = {"ritz_BETA_L", *(f"beam_modes_BETA_L_{b}" for b in
                  ("CANTILEVER", "CLAMPED_CLAMPED", "SIMPLY_SUPPORTED"))}  # fmt: skip
     assert files == constants, files  # every other file was run (a constant is not sampled)

@@ -3448,7 +3448,7 @@ static void check_beam_modes_static_flexibility_simply_supported(void)
 static void check_modal_structure_effective_mass_fraction_cantilever(void)
 {
     static const double expected[3] = { 0.012982162246810664, 0.0001955866257841068, 0.3266905371105036 };
-    static const double scale[3] = { 0.012982162246810664, 0.0001955866257841068, 0.3266905371105036 };
+    static const double scale[3] = { 0.05921436223430662, 0.16379149311904365, 0.3888370587710199 };
     static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
     double out[3];
     int i;
@@ -3465,7 +3465,7 @@ static void check_modal_structure_effective_mass_fraction_cantilever(void)
 static void check_modal_structure_base_participation_cantilever(void)
 {
     static const double expected[3] = { 0.017812652668472952, -0.013850710845510723, -0.9908725945868799 };
-    static const double scale[3] = { 0.017812652668472952, 0.013850710845510723, 0.9908725945868799 };
+    static const double scale[3] = { 0.23534655451600126, 0.5293995789569295, 1.2466517781212454 };
     static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
     static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
     double out[3];
@@ -3483,7 +3483,7 @@ static void check_modal_structure_base_participation_cantilever(void)
 static void check_modal_structure_effective_mass_fraction_clamped_clamped(void)
 {
     static const double expected[3] = { 0.08530436830297411, 0.12149844624989083, 0.13332982218395 };
-    static const double scale[3] = { 0.08530436830297411, 0.12149844624989083, 0.13332982218395 };
+    static const double scale[3] = { 0.1315365683231712, 0.2850987220939511, 0.19547634480875473 };
     static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
     double out[3];
     int i;
@@ -3500,7 +3500,7 @@ static void check_modal_structure_effective_mass_fraction_clamped_clamped(void)
 static void check_modal_structure_base_participation_clamped_clamped(void)
 {
     static const double expected[3] = { 0.046022635686675285, -0.1561323572960023, -0.6510974258911841 };
-    static const double scale[3] = { 0.046022635686675285, 0.1561323572960023, 0.6510974258911841 };
+    static const double scale[3] = { 0.26355641081175707, 0.6716693657760677, 0.9068765330589181 };
     static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
     static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
     double out[3];
@@ -3518,7 +3518,7 @@ static void check_modal_structure_base_participation_clamped_clamped(void)
 static void check_modal_structure_effective_mass_fraction_simply_supported(void)
 {
     static const double expected[3] = { 0.17732718536818246, 0.0001773118765340761, 0.08827898664896155 };
-    static const double scale[3] = { 0.17732718536818246, 0.0001773118765340761, 0.08827898664896155 };
+    static const double scale[3] = { 0.24078614020317363, 0.22570711595552398, 0.17358920531467975 };
     static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
     double out[3];
     int i;
@@ -3535,7 +3535,7 @@ static void check_modal_structure_effective_mass_fraction_simply_supported(void)
 static void check_modal_structure_base_participation_simply_supported(void)
 {
     static const double expected[3] = { -1.6006197176457142, -0.019830090465853763, -0.12912579157981768 };
-    static const double scale[3] = { 1.6006197176457142, 0.019830090465853763, 0.12912579157981768 };
+    static const double scale[3] = { 1.956875117141613, 0.6914398046287594, 0.5421880596840787 };
     static const double a_beta_L[3] = { 11.2279, 5.95584, 9.68377 };
     static const double a_xi[3] = { 0.33923, 0.778461, 0.617691 };
     double out[3];
@@ -3673,6 +3673,899 @@ static void check_fixed_points_hunt_crossley_peak_speed_ratio(void)
     for (i = 0; i < 3; ++i) {
         check("symimpact_fixed_points_hunt_crossley_peak_speed_ratio_batch", i, out[i], expected[i], scale[i]);
         check_steps("symimpact_fixed_points_hunt_crossley_peak_speed_ratio_batch", i, taken[i], steps[i]);
+    }
+}
+
+
+/* closed_forms.hertz_contact_duration_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_closed_forms_hertz_contact_duration_and_derivatives(void)
+{
+    double out[5];
+    double rows[5 * 3];
+    int i;
+    {
+        static const double expected[3] = { 0.00484261680843532, 0.00013456345784133297, 0.38326922517706524 };
+        static const double scale[3] = { 0.00484261680843532, 0.00013456345784133297, 0.38326922517706524 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_zdot0[3] = { 0.00382829, 1.46558, 0.0561068 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_hertz_contact_duration_and_derivatives(a_m[i], a_M[i], a_k_hz[i], a_zdot0[i], out);
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k_hz, a_zdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch[0]", i, rows[5 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 5.153446524992846e-05, 0.0006977758674392841, 0.13030198693386175 };
+        static const double scale[3] = { 0.0013204900920463203, 0.0013983052410817774, 0.3035495298897656 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_zdot0[3] = { 0.00382829, 1.46558, 0.0561068 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_hertz_contact_duration_and_derivatives(a_m[i], a_M[i], a_k_hz[i], a_zdot0[i], out);
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k_hz, a_zdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch[1]", i, rows[5 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.007189917841357623, 2.7164153866971025e-09, 0.003538550764729489 };
+        static const double scale[3] = { 0.01559725684426171, 2.758939033982669e-06, 0.050022657551501044 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_zdot0[3] = { 0.00382829, 1.46558, 0.0561068 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_hertz_contact_duration_and_derivatives(a_m[i], a_M[i], a_k_hz[i], a_zdot0[i], out);
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k_hz, a_zdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch[2]", i, rows[5 * i + 2], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -4.5975665132776225e-11, -9.588782342253083e-15, -0.00020498804640122438 };
+        static const double scale[3] = { 9.195133026555245e-11, 1.9177564684506166e-14, 0.00040997609280244877 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_zdot0[3] = { 0.00382829, 1.46558, 0.0561068 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_hertz_contact_duration_and_derivatives(a_m[i], a_M[i], a_k_hz[i], a_zdot0[i], out);
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives[3]", i, out[3], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k_hz, a_zdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch[3]", i, rows[5 * i + 3], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.25299111657869805, -1.8363167870922495e-05, -1.3662130977958653 };
+        static const double scale[3] = { 0.5059822331573961, 3.672633574184499e-05, 2.7324261955917306 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_zdot0[3] = { 0.00382829, 1.46558, 0.0561068 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_hertz_contact_duration_and_derivatives(a_m[i], a_M[i], a_k_hz[i], a_zdot0[i], out);
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives[4]", i, out[4], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k_hz, a_zdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch[4]", i, rows[5 * i + 4], expected[i], scale[i]);
+        }
+    }
+}
+
+/* closed_forms.linear_contact_duration_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_closed_forms_linear_contact_duration_and_derivatives(void)
+{
+    double out[5];
+    double rows[5 * 3];
+    int i;
+    {
+        static const double expected[3] = { 0.002943472051133231, 0.0003338269810588997, 0.21959034339392178 };
+        static const double scale[3] = { 0.002943472051133231, 0.0003338269810588997, 0.21959034339392178 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k1[3] = { 260860, 6.80481e+06, 177.51 };
+        static const double a_c1[3] = { 0.0728757, 0.395751, 0.218627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_linear_contact_duration_and_derivatives(a_m[i], a_M[i], a_k1[i], a_c1[i], out);
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_linear_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k1, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives_batch[0]", i, rows[5 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 3.915503248612775e-05, 0.0021638154739013604, 0.09331181216020386 };
+        static const double scale[3] = { 0.0010032865698384687, 0.004336170270628969, 0.21741630961415576 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k1[3] = { 260860, 6.80481e+06, 177.51 };
+        static const double a_c1[3] = { 0.0728757, 0.395751, 0.218627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_linear_contact_duration_and_derivatives(a_m[i], a_M[i], a_k1[i], a_c1[i], out);
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_linear_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k1, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives_batch[1]", i, rows[5 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.005462780399207461, 8.42365281110899e-09, 0.0025340257048066337 };
+        static const double scale[3] = { 0.011850537785473271, 8.55552196394022e-06, 0.035832545348669385 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k1[3] = { 260860, 6.80481e+06, 177.51 };
+        static const double a_c1[3] = { 0.0728757, 0.395751, 0.218627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_linear_contact_duration_and_derivatives(a_m[i], a_M[i], a_k1[i], a_c1[i], out);
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_linear_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k1, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives_batch[2]", i, rows[5 * i + 2], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -5.6418617583305524e-09, -2.4528752901135204e-11, -0.0006185775187455155 };
+        static const double scale[3] = { 1.1283723516661105e-08, 4.905750580227041e-11, 0.001237155037491031 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k1[3] = { 260860, 6.80481e+06, 177.51 };
+        static const double a_c1[3] = { 0.0728757, 0.395751, 0.218627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_linear_contact_duration_and_derivatives(a_m[i], a_M[i], a_k1[i], a_c1[i], out);
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives[3]", i, out[3], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_linear_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k1, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives_batch[3]", i, rows[5 * i + 3], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 8.977338817540039e-10, 6.316963942168118e-11, 7.797440897580077e-05 };
+        static const double scale[3] = { 1.7954677635080078e-09, 1.2633927884336237e-10, 0.00015594881795160154 };
+        static const double a_m[3] = { 2.93383, 0.0769866, 1.0101 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_k1[3] = { 260860, 6.80481e+06, 177.51 };
+        static const double a_c1[3] = { 0.0728757, 0.395751, 0.218627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_closed_forms_linear_contact_duration_and_derivatives(a_m[i], a_M[i], a_k1[i], a_c1[i], out);
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives[4]", i, out[4], expected[i], scale[i]);
+        }
+        symimpact_closed_forms_linear_contact_duration_and_derivatives_batch(3, a_m, a_M, a_k1, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_closed_forms_linear_contact_duration_and_derivatives_batch[4]", i, rows[5 * i + 4], expected[i], scale[i]);
+        }
+    }
+}
+
+/* forced_flight.forced_state: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_forced_flight_forced_state(void)
+{
+    double out[2];
+    double rows[2 * 3];
+    int i;
+    {
+        static const double expected[3] = { -0.009085818420394019, 0.002296240029039171, 0.008072171428258494 };
+        static const double scale[3] = { 0.024897176826398196, 0.020015269793457812, 0.08085558775975273 };
+        static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+        static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+        static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+        static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+        static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_forced_state(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_forced_state[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_forced_state_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_forced_state_batch[0]", i, rows[2 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -3.582469517580021, 0.22535741998218997, 0.30639423474236777 };
+        static const double scale[3] = { 7.610919080044438, 2.8945912398666196, 0.6151571015106887 };
+        static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+        static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+        static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+        static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+        static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_forced_state(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_forced_state[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_forced_state_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_forced_state_batch[1]", i, rows[2 * i + 1], expected[i], scale[i]);
+        }
+    }
+}
+
+/* forced_flight.forced_transition: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_forced_flight_forced_transition(void)
+{
+    double out[6];
+    double rows[6 * 3];
+    int i;
+    {
+        static const double expected[3] = { -0.009085818420394019, 0.002296240029039171, 0.008072171428258494 };
+        static const double scale[3] = { 0.024897176826398196, 0.020015269793457812, 0.08085558775975273 };
+        static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+        static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+        static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+        static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+        static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_forced_transition(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_forced_transition[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_forced_transition_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_forced_transition_batch[0]", i, rows[6 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -3.582469517580021, 0.22535741998218997, 0.30639423474236777 };
+        static const double scale[3] = { 7.610919080044438, 2.8945912398666196, 0.6151571015106887 };
+        static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+        static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+        static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+        static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+        static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_forced_transition(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_forced_transition[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_forced_transition_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_forced_transition_batch[1]", i, rows[6 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.2277967187579221, -0.03630523276621419, 0.9842293577643402 };
+        static const double scale[3] = { 1.0793116850624607, 1.0343308426353268, 1.9709491315946521 };
+        static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+        static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+        static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+        static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+        static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_forced_transition(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_forced_transition[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_forced_transition_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_forced_transition_batch[2]", i, rows[6 * i + 2], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.001867844218883491, 0.007313775801781447, 0.0014271484693960178 };
+        static const double scale[3] = { 0.0038064797406801047, 0.014632401698058854, 0.2338624222836518 };
+        static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+        static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+        static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+        static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+        static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_forced_transition(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_forced_transition[3]", i, out[3], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_forced_transition_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_forced_transition_batch[3]", i, rows[6 * i + 3], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 360.2125427530413, -136.00238915690514, -0.025589593276717587 };
+        static const double scale[3] = { 734.2270130793975, 272.1010410173936, 4.214351032496912 };
+        static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+        static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+        static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+        static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+        static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_forced_transition(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_forced_transition[4]", i, out[4], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_forced_transition_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_forced_transition_batch[4]", i, rows[6 * i + 4], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.22812553448044887, -0.036349741027029044, 0.9841988158422643 };
+        static const double scale[3] = { 1.0796405007849874, 1.0343753508961417, 1.9709185896725763 };
+        static const double a_t[3] = { 1.82843, 0.656854, 1.48528 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_F0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_X_b[3] = { -0.00788897, 0.00422205, -0.00366692 };
+        static const double a_Omega[3] = { 74.0145, 173.234, 405.462 };
+        static const double a_phi[3] = { 2.26106, -1.77787, 0.48319 };
+        static const double a_x0[3] = { -0.00408337, -0.00816674, 0.00774989 };
+        static const double a_xdot0[3] = { 0.77033, -0.459341, 0.310989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_forced_transition(a_t[i], a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_forced_transition[5]", i, out[5], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_forced_transition_batch(3, a_t, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_forced_transition_batch[5]", i, rows[6 * i + 5], expected[i], scale[i]);
+        }
+    }
+}
+
+/* rigid_impact.velocities_after_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_rigid_impact_velocities_after_and_derivatives(void)
+{
+    double out[8];
+    double rows[8 * 3];
+    int i;
+    {
+        static const double expected[3] = { 0.8987997928799252, 0.5823619296499037, -0.12467366836834094 };
+        static const double scale[3] = { 2.240546792879925, 1.8988679296499038, 0.35041666836834096 };
+        static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+        static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+        static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_rigid_impact_velocities_after_and_derivatives(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i], out);
+            check("symimpact_rigid_impact_velocities_after_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_rigid_impact_velocities_after_and_derivatives_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_rigid_impact_velocities_after_and_derivatives_batch[0]", i, rows[8 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.08881723791607479, 1.8621848064659037, -0.12992894553234094 };
+        static const double scale[3] = { 1.4305642379160748, 3.178690806465904, 0.35567194553234094 };
+        static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+        static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+        static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_rigid_impact_velocities_after_and_derivatives(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i], out);
+            check("symimpact_rigid_impact_velocities_after_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_rigid_impact_velocities_after_and_derivatives_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_rigid_impact_velocities_after_and_derivatives_batch[1]", i, rows[8 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.9258259428086487, -0.0003260780950686189, 0.0006773124668177276 };
+        static const double scale[3] = { 1.8516518856172974, 0.0006521561901372377, 0.006734859639942183 };
+        static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+        static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+        static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_rigid_impact_velocities_after_and_derivatives(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i], out);
+            check("symimpact_rigid_impact_velocities_after_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_rigid_impact_velocities_after_and_derivatives_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_rigid_impact_velocities_after_and_derivatives_batch[2]", i, rows[8 * i + 2], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.19791346124114692, 0.9995115325337702, 0.9675792705653878 };
+        static const double scale[3] = { 2.3958269224822937, 2.0, 2.0 };
+        static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+        static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+        static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_rigid_impact_velocities_after_and_derivatives(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i], out);
+            check("symimpact_rigid_impact_velocities_after_and_derivatives[3]", i, out[3], expected[i], scale[i]);
+        }
+        symimpact_rigid_impact_velocities_after_and_derivatives_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_rigid_impact_velocities_after_and_derivatives_batch[3]", i, rows[8 * i + 3], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 1.1979134612411468, 0.0004884674662297367, 0.03242072943461219 };
+        static const double scale[3] = { 2.3958269224822937, 0.0009769349324594734, 0.06484145886922438 };
+        static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+        static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+        static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_rigid_impact_velocities_after_and_derivatives(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i], out);
+            check("symimpact_rigid_impact_velocities_after_and_derivatives[4]", i, out[4], expected[i], scale[i]);
+        }
+        symimpact_rigid_impact_velocities_after_and_derivatives_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_rigid_impact_velocities_after_and_derivatives_batch[4]", i, rows[8 * i + 4], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.41592105719135125, 1.3161799219049313, -0.02456368753318226 };
+        static const double scale[3] = { 0.8318421143827025, 2.6323598438098625, 0.2442491403600578 };
+        static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+        static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+        static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_rigid_impact_velocities_after_and_derivatives(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i], out);
+            check("symimpact_rigid_impact_velocities_after_and_derivatives[5]", i, out[5], expected[i], scale[i]);
+        }
+        symimpact_rigid_impact_velocities_after_and_derivatives_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_rigid_impact_velocities_after_and_derivatives_batch[5]", i, rows[8 * i + 5], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.538154538758853, 1.9716475325337703, 1.175783270565388 };
+        static const double scale[3] = { 1.076309077517706, 3.9432950650675407, 2.351566541130776 };
+        static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+        static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+        static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_rigid_impact_velocities_after_and_derivatives(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i], out);
+            check("symimpact_rigid_impact_velocities_after_and_derivatives[6]", i, out[6], expected[i], scale[i]);
+        }
+        symimpact_rigid_impact_velocities_after_and_derivatives_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_rigid_impact_velocities_after_and_derivatives_batch[6]", i, rows[8 * i + 6], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.461845461241147, -0.9716475325337702, -0.1757832705653878 };
+        static const double scale[3] = { 2.0, 3.9432950650675407, 2.351566541130776 };
+        static const double a_m[3] = { 0.552892, 0.00966677, 0.169014 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_e[3] = { 0.736068, 0.972136, 0.208204 };
+        static const double a_xdot_minus[3] = { -0.708497, 0.583005, -0.125492 };
+        static const double a_ydot_minus[3] = { 0.63325, -0.733501, -0.100251 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_rigid_impact_velocities_after_and_derivatives(a_m[i], a_M[i], a_e[i], a_xdot_minus[i], a_ydot_minus[i], out);
+            check("symimpact_rigid_impact_velocities_after_and_derivatives[7]", i, out[7], expected[i], scale[i]);
+        }
+        symimpact_rigid_impact_velocities_after_and_derivatives_batch(3, a_m, a_M, a_e, a_xdot_minus, a_ydot_minus, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_rigid_impact_velocities_after_and_derivatives_batch[7]", i, rows[8 * i + 7], expected[i], scale[i]);
+        }
+    }
+}
+
+/* periodic_orbit.phase_residual_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_periodic_orbit_phase_residual_and_derivatives(void)
+{
+    double out[7];
+    double rows[7 * 3];
+    int i;
+    {
+        static const double expected[3] = { 0.0012034644155894218, 0.011224841892893645, -1.290319088743204e-07 };
+        static const double scale[3] = { 0.01539678364265028, 0.17294075261329953, 5.715294801898301e-07 };
+        static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+        static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+        static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+        static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+        static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+        static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+        static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+        static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+        static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_periodic_orbit_phase_residual_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], out);
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_periodic_orbit_phase_residual_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives_batch[0]", i, rows[7 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.0011779373061544648, 0.0069121197809340965, -8.428577153256806e-08 };
+        static const double scale[3] = { 0.020888493172773644, 2.471313652092032, 6.166974511500441e-07 };
+        static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+        static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+        static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+        static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+        static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+        static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+        static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+        static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+        static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_periodic_orbit_phase_residual_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], out);
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_periodic_orbit_phase_residual_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives_batch[1]", i, rows[7 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.00018090449663344063, 0.02111567861172046, 2.615100132156169e-09 };
+        static const double scale[3] = { 0.01106398621828408, 2.2048111693539223, 5.138169185933974e-07 };
+        static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+        static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+        static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+        static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+        static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+        static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+        static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+        static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+        static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_periodic_orbit_phase_residual_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], out);
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_periodic_orbit_phase_residual_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives_batch[2]", i, rows[7 * i + 2], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.0009249279922699639, -0.813520334467653, -7.196738762399061e-05 };
+        static const double scale[3] = { 0.30975603356702497, 2.082074820287281, 0.00036311489617053404 };
+        static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+        static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+        static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+        static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+        static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+        static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+        static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+        static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+        static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_periodic_orbit_phase_residual_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], out);
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives[3]", i, out[3], expected[i], scale[i]);
+        }
+        symimpact_periodic_orbit_phase_residual_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives_batch[3]", i, rows[7 * i + 3], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.00022909607061149273, -0.007586401008704871, -2.2156238568002612e-08 };
+        static const double scale[3] = { 0.0007489781691765737, 0.03492074822151698, 1.0218096153371363e-07 };
+        static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+        static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+        static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+        static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+        static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+        static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+        static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+        static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+        static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_periodic_orbit_phase_residual_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], out);
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives[4]", i, out[4], expected[i], scale[i]);
+        }
+        symimpact_periodic_orbit_phase_residual_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives_batch[4]", i, rows[7 * i + 4], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.0002001405962600689, -4.1282603323015064e-05, -2.9572869996261017e-09 };
+        static const double scale[3] = { 0.0034623042132394064, 0.005574571815200737, 2.3265723421457293e-08 };
+        static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+        static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+        static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+        static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+        static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+        static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+        static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+        static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+        static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_periodic_orbit_phase_residual_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], out);
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives[5]", i, out[5], expected[i], scale[i]);
+        }
+        symimpact_periodic_orbit_phase_residual_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives_batch[5]", i, rows[7 * i + 5], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.09903545075783521, -3.221616554347606, -3.63066282713426e-05 };
+        static const double scale[3] = { 1.7260600737880165, 435.03187012719485, 0.0002856036433680527 };
+        static const double a_M[3] = { 13.4728, 0.907579, 6.1138 };
+        static const double a_K[3] = { 496.767, 78037.8, 12259.1 };
+        static const double a_C[3] = { 0.368034, 0.486068, 0.104102 };
+        static const double a_m[3] = { 0.0021646, 0.066263, 0.0101423 };
+        static const double a_e[3] = { 0.816625, 0.13325, 0.449874 };
+        static const double a_d[3] = { 0.000192699, 0.00830318, 0.000715549 };
+        static const double a_F0[3] = { 2.46211, 4.92423, 7.38634 };
+        static const double a_X_b[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_Omega[3] = { 5.40518, 1.68679, 157.918 };
+        static const double a_phi[3] = { 2.42654, -1.44692, 0.979615 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_periodic_orbit_phase_residual_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_d[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], out);
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives[6]", i, out[6], expected[i], scale[i]);
+        }
+        symimpact_periodic_orbit_phase_residual_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_d, a_F0, a_X_b, a_Omega, a_phi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_periodic_orbit_phase_residual_and_derivatives_batch[6]", i, rows[7 * i + 6], expected[i], scale[i]);
+        }
+    }
+}
+
+/* slow_flow.clearance_for_response_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_slow_flow_clearance_for_response_and_derivatives(void)
+{
+    double out[10];
+    double rows[10 * 3];
+    int i;
+    {
+        static const double expected[3] = { 0.00011628059619344335, 0.0005203145803725032, 0.000382467303687025 };
+        static const double scale[3] = { 0.00011628059619344335, 0.0005203145803725032, 0.000382467303687025 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[0]", i, rows[10 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -8.645067569238502e-06, 4.7673681068122075e-05, -0.0010375408524110898 };
+        static const double scale[3] = { 1.7332960661064765e-05, 0.000148814035535072, 0.0023248435931612654 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[1]", i, rows[10 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -4.245479647523432e-08, -2.2015113414877292e-08, 1.6141701878732862e-07 };
+        static const double scale[3] = { 1.0162871512524641e-07, 2.1053276409487083e-07, 3.2861974288071283e-07 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[2]", i, rows[10 * i + 2], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 1.0501950590555848e-07, -6.698433777535246e-10, 4.5710375733521933e-07 };
+        static const double scale[3] = { 2.100965668911972e-07, 2.0612935725739602e-09, 9.517565021610194e-07 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[3]", i, out[3], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[3]", i, rows[10 * i + 3], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -2.1229830331942447e-05, 3.729119563796722e-05, -0.0009269382908180645 };
+        static const double scale[3] = { 8.842943705669158e-05, 8.470911913751996e-05, 0.0016765346590463775 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[4]", i, out[4], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[4]", i, rows[10 * i + 4], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -1.4718303745420558e-08, 1.0838163476448268e-07, -1.1292427223066737e-07 };
+        static const double scale[3] = { 3.280461137909563e-07, 1.351615884437346e-06, 2.4495601676300704e-06 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[5]", i, out[5], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[5]", i, rows[10 * i + 5], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -1.7438361607326342e-05, 5.988683475899715e-06, 1.3949657533409853e-05 };
+        static const double scale[3] = { 4.127611499936895e-05, 1.248287512131932e-05, 2.7899315066819705e-05 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[6]", i, out[6], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[6]", i, rows[10 * i + 6], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.008647101622553796, 0.0734158735698532, 0.02687478745479328 };
+        static const double scale[3] = { 0.020504611819891515, 0.15302882234066767, 0.05374957490958656 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[7]", i, out[7], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[7]", i, rows[10 * i + 7], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -1.736834263569008e-06, 2.1758814183652573e-05, -4.126642826847206e-06 };
+        static const double scale[3] = { 3.484330272302455e-06, 6.789647412452392e-05, 9.241821990218337e-06 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[8]", i, out[8], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[8]", i, rows[10 * i + 8], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.00024540155185923525, -1.2236490681613105e-05, -4.244074182258537e-05 };
+        static const double scale[3] = { 0.000986267936067523, 0.00013462585814466184, 0.00021565872858590661 };
+        static const double a_M[3] = { 13.4728, 6.1138, 0.411849 };
+        static const double a_K[3] = { 496.767, 12259.1, 1925.79 };
+        static const double a_C[3] = { 0.368034, 0.104102, 0.222136 };
+        static const double a_m[3] = { 0.0021646, 0.0101423, 0.00155238 };
+        static const double a_e[3] = { 0.816625, 0.449874, 0.766499 };
+        static const double a_F0[3] = { -7.88897, -3.66692, 8.4441 };
+        static const double a_X_b[3] = { 0.00246211, 0.00738634, 0.00984845 };
+        static const double a_Omega[3] = { 134.152, 26.8255, 207.771 };
+        static const double a_xi[3] = { 0.473717, 42.5222, 9.00845 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_slow_flow_clearance_for_response_and_derivatives(a_M[i], a_K[i], a_C[i], a_m[i], a_e[i], a_F0[i], a_X_b[i], a_Omega[i], a_xi[i], out);
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives[9]", i, out[9], expected[i], scale[i]);
+        }
+        symimpact_slow_flow_clearance_for_response_and_derivatives_batch(3, a_M, a_K, a_C, a_m, a_e, a_F0, a_X_b, a_Omega, a_xi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_slow_flow_clearance_for_response_and_derivatives_batch[9]", i, rows[10 * i + 9], expected[i], scale[i]);
+        }
     }
 }
 
@@ -3845,6 +4738,13 @@ int main(void)
     check_fixed_points_contact_duration_printed();
     check_fixed_points_hunt_crossley_restitution();
     check_fixed_points_hunt_crossley_peak_speed_ratio();
-    printf("symimpact: %ld checks of 162 kernels and 5 iterations, %ld failed\n", checks, failures);
+    check_closed_forms_hertz_contact_duration_and_derivatives();
+    check_closed_forms_linear_contact_duration_and_derivatives();
+    check_forced_flight_forced_state();
+    check_forced_flight_forced_transition();
+    check_rigid_impact_velocities_after_and_derivatives();
+    check_periodic_orbit_phase_residual_and_derivatives();
+    check_slow_flow_clearance_for_response_and_derivatives();
+    printf("symimpact: %ld checks of 162 kernels, 7 bundles and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -882,6 +882,65 @@ void symimpact_closed_forms_linear_contact_duration_d_c1_batch(size_t n, const d
     }
 }
 
+/* Hertz contact duration and its derivatives in m, M, k_hz, zdot0 (symimpact_closed_forms_hertz_contact_duration, symimpact_closed_forms_hertz_contact_duration_d_impact_mass, symimpact_closed_forms_hertz_contact_duration_d_main_mass, symimpact_closed_forms_hertz_contact_duration_d_k_hz, symimpact_closed_forms_hertz_contact_duration_d_zdot0) */
+void symimpact_closed_forms_hertz_contact_duration_and_derivatives(double m, double M, double k_hz, double zdot0, double *restrict out)
+{
+    const double _x0 = pow(5, 2.0/5.0);
+    const double _x1 = sqrt(3.141592653589793);
+    const double _x2 = pow(M, 2.0/5.0);
+    const double _x3 = pow(zdot0, -1.0/5.0);
+    const double _x4 = 4*k_hz;
+    const double _x5 = M*_x4 + _x4*m;
+    const double _x6 = pow(_x5, -2.0/5.0);
+    const double _x7 = pow(m, 2.0/5.0);
+    const double _x8 = 1.6605652005106006*_x7;
+    const double _x9 = _x0*_x1*_x2*_x3/pow(_x5, 7.0/5.0);
+    const double _x10 = 2.6569043208169614*_x7*_x9*k_hz;
+    out[0] = _x0*_x1*_x2*_x3*_x6*_x8;
+    out[1] = 0.6642260802042403*_x0*_x1*_x2*_x3*_x6/pow(m, 3.0/5.0) - _x10;
+    out[2] = -_x10 + 0.6642260802042403*_x0*_x1*_x3*_x6*_x7/pow(M, 3.0/5.0);
+    out[3] = _x8*_x9*(-8.0/5.0*M - 8.0/5.0*m);
+    out[4] = -0.33211304010212017*_x0*_x1*_x2*_x6*_x7/pow(zdot0, 6.0/5.0);
+}
+
+void symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k_hz, const double *restrict zdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_closed_forms_hertz_contact_duration_and_derivatives(m[i], M[i], k_hz[i], zdot0[i], out + 5 * i);
+    }
+}
+
+/* Linear damped contact duration and its derivatives in m, M, k1, c1 (symimpact_closed_forms_linear_contact_duration, symimpact_closed_forms_linear_contact_duration_d_impact_mass, symimpact_closed_forms_linear_contact_duration_d_main_mass, symimpact_closed_forms_linear_contact_duration_d_k1, symimpact_closed_forms_linear_contact_duration_d_c1) */
+void symimpact_closed_forms_linear_contact_duration_and_derivatives(double m, double M, double k1, double c1, double *restrict out)
+{
+    const double _x0 = M + m;
+    const double _x1 = 1.0/M;
+    const double _x2 = 1.0/m;
+    const double _x3 = _x1*_x2*k1;
+    const double _x4 = pow(c1, 2);
+    const double _x5 = pow(M, -2);
+    const double _x6 = pow(m, -2);
+    const double _x7 = (1.0/4.0)*pow(_x0, 2);
+    const double _x8 = _x0*_x3 - _x4*_x5*_x6*_x7;
+    const double _x9 = _x4*_x7;
+    const double _x10 = (1.0/2.0)*_x3 - 1.0/8.0*_x4*_x5*_x6*(2*M + 2*m);
+    const double _x11 = 3.141592653589793/pow(_x8, 3.0/2.0);
+    out[0] = 3.141592653589793/sqrt(_x8);
+    out[1] = _x11*((1.0/2.0)*_x0*_x1*_x6*k1 - _x10 - _x5*_x9/pow(m, 3));
+    out[2] = _x11*((1.0/2.0)*_x0*_x2*_x5*k1 - _x10 - _x6*_x9/pow(M, 3));
+    out[3] = -1.0/2.0*_x0*_x1*_x11*_x2;
+    out[4] = _x11*_x5*_x6*_x7*c1;
+}
+
+void symimpact_closed_forms_linear_contact_duration_and_derivatives_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k1, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_closed_forms_linear_contact_duration_and_derivatives(m[i], M[i], k1[i], c1[i], out + 5 * i);
+    }
+}
+
 /* ---- free_flight: Free flight between impacts (paper Eq. 7) ---- */
 
 /* Eq. 7: x(t) = \left(x_{0} \cos{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)} + \frac{\left(\frac{C x_{0}}{2 M} + \dot{x}_{0}\right) \sin{\left(t \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \right)}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}}\right) e^{- \frac{C t}{2 M}} */
@@ -1696,6 +1755,158 @@ void symimpact_forced_flight_linear_amplitude_batch(size_t n, const double *rest
     }
 }
 
+/* The primary's displacement and velocity a time t into a flight (x, ẋ) (symimpact_forced_flight_forced_displacement, symimpact_forced_flight_forced_velocity) */
+void symimpact_forced_flight_forced_state(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0, double *restrict out)
+{
+    const double _x0 = Omega*t;
+    const double _x1 = _x0 + phi;
+    const double _x2 = sin(_x1);
+    const double _x3 = _x0*_x2;
+    const double _x4 = cos(_x0);
+    const double _x5 = 2*x0;
+    const double _x6 = sin(_x0);
+    const double _x7 = sin(phi);
+    const double _x8 = K*X_b;
+    const double _x9 = F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8;
+    const double _x10 = (1.0/2.0)/K;
+    const double _x11 = pow(Omega, 2);
+    const double _x12 = M*_x11;
+    const double _x13 = C == 0 && K == _x12;
+    const double _x14 = pow(C, 2);
+    const double _x15 = _x11*_x14;
+    const double _x16 = K - _x12;
+    const double _x17 = 1.0/(_x15 + pow(_x16, 2));
+    const double _x18 = F0 + _x8;
+    const double _x19 = -C*Omega*X_b*_x16 + C*Omega*_x18;
+    const double _x20 = _x17*_x19;
+    const double _x21 = cos(_x1);
+    const double _x22 = _x17*(X_b*_x15 + _x16*_x18);
+    const double _x23 = 1.0/M;
+    const double _x24 = (1.0/2.0)*C*_x23;
+    const double _x25 = exp(-_x24*t);
+    const double _x26 = sqrt(K*_x23 - 1.0/4.0*_x14/pow(M, 2));
+    const double _x27 = _x26*t;
+    const double _x28 = cos(_x27);
+    const double _x29 = cos(phi);
+    const double _x30 = -_x20*_x7 - _x22*_x29 + x0;
+    const double _x31 = sin(_x27);
+    const double _x32 = -Omega*_x20*_x29 + Omega*_x22*_x7 + _x24*_x30 + xdot0;
+    const double _x33 = _x25*(_x28*_x30 + _x31*_x32/_x26);
+    const double _x34 = Omega*_x2;
+    const double _x35 = _x11*_x21*t;
+    out[0] = ((_x13) ? (
+   _x10*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9)
+)
+: (
+   _x2*_x20 + _x21*_x22 + _x33
+));
+    out[1] = ((_x13) ? (
+   _x10*(F0*_x34 + F0*_x35 + K*(-Omega*_x5*_x6 + X_b*_x34 + X_b*_x35) - Omega*_x4*_x9)
+)
+: (
+   Omega*_x17*_x19*_x21 - _x22*_x34 - _x24*_x33 + _x25*(-_x26*_x30*_x31 + _x28*_x32)
+));
+}
+
+void symimpact_forced_flight_forced_state_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_forced_flight_forced_state(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i], out + 2 * i);
+    }
+}
+
+/* The state after a flight and its transition matrix: x, ẋ, ∂x/∂x0, ∂x/∂ẋ0, ∂ẋ/∂x0, ∂ẋ/∂ẋ0 (symimpact_forced_flight_forced_displacement, symimpact_forced_flight_forced_velocity, symimpact_forced_flight_forced_displacement_d_x0, symimpact_forced_flight_forced_displacement_d_xdot0, symimpact_forced_flight_forced_velocity_d_x0, symimpact_forced_flight_forced_velocity_d_xdot0) */
+void symimpact_forced_flight_forced_transition(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0, double *restrict out)
+{
+    const double _x0 = Omega*t;
+    const double _x1 = _x0 + phi;
+    const double _x2 = sin(_x1);
+    const double _x3 = _x0*_x2;
+    const double _x4 = cos(_x0);
+    const double _x5 = 2*x0;
+    const double _x6 = sin(_x0);
+    const double _x7 = sin(phi);
+    const double _x8 = K*X_b;
+    const double _x9 = F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8;
+    const double _x10 = 1.0/K;
+    const double _x11 = (1.0/2.0)*_x10;
+    const double _x12 = pow(Omega, 2);
+    const double _x13 = M*_x12;
+    const double _x14 = C == 0 && K == _x13;
+    const double _x15 = pow(C, 2);
+    const double _x16 = _x12*_x15;
+    const double _x17 = K - _x13;
+    const double _x18 = 1.0/(_x16 + pow(_x17, 2));
+    const double _x19 = F0 + _x8;
+    const double _x20 = -C*Omega*X_b*_x17 + C*Omega*_x19;
+    const double _x21 = _x18*_x20;
+    const double _x22 = cos(_x1);
+    const double _x23 = _x18*(X_b*_x16 + _x17*_x19);
+    const double _x24 = 1.0/M;
+    const double _x25 = (1.0/2.0)*C*_x24;
+    const double _x26 = exp(-_x25*t);
+    const double _x27 = sqrt(K*_x24 - 1.0/4.0*_x15/pow(M, 2));
+    const double _x28 = _x27*t;
+    const double _x29 = cos(_x28);
+    const double _x30 = cos(phi);
+    const double _x31 = -_x21*_x7 - _x23*_x30 + x0;
+    const double _x32 = -Omega*_x21*_x30 + Omega*_x23*_x7 + _x25*_x31 + xdot0;
+    const double _x33 = sin(_x28);
+    const double _x34 = _x33/_x27;
+    const double _x35 = _x26*(_x29*_x31 + _x32*_x34);
+    const double _x36 = Omega*_x2;
+    const double _x37 = _x12*_x22*t;
+    const double _x38 = Omega*_x6;
+    const double _x39 = _x27*_x33;
+    const double _x40 = _x26*(_x25*_x34 + _x29);
+    const double _x41 = _x26*_x34;
+    out[0] = ((_x14) ? (
+   _x11*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9)
+)
+: (
+   _x2*_x21 + _x22*_x23 + _x35
+));
+    out[1] = ((_x14) ? (
+   _x11*(F0*_x36 + F0*_x37 + K*(X_b*_x36 + X_b*_x37 - _x38*_x5) - Omega*_x4*_x9)
+)
+: (
+   Omega*_x18*_x20*_x22 - _x23*_x36 - _x25*_x35 + _x26*(_x29*_x32 - _x31*_x39)
+));
+    out[2] = ((_x14) ? (
+   _x4
+)
+: (
+   _x40
+));
+    out[3] = ((_x14) ? (
+   M*_x10*_x38
+)
+: (
+   _x41
+));
+    out[4] = ((_x14) ? (
+   -_x38
+)
+: (
+   -_x25*_x40 + _x26*(_x25*_x29 - _x39)
+));
+    out[5] = ((_x14) ? (
+   _x10*_x13*_x4
+)
+: (
+   -_x25*_x41 + _x26*_x29
+));
+}
+
+void symimpact_forced_flight_forced_transition_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_forced_flight_forced_transition(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i], out + 6 * i);
+    }
+}
+
 /* ---- rigid_impact: The rigid impact law (Eq. F2 (derived here, beyond the paper)) ---- */
 
 /* Eq. F2: \dot{x}^+ = - \frac{m \left(e + 1\right) \left(\dot{x}_{minus} - \dot{y}_{minus}\right)}{M + m} + \dot{x}_{minus} */
@@ -1902,6 +2113,36 @@ void symimpact_rigid_impact_saltation_impact_velocity_z_batch(size_t n, const do
     size_t i;
     for (i = 0; i < n; ++i) {
         out[i] = symimpact_rigid_impact_saltation_impact_velocity_z(m[i], M[i], e[i], zdot_minus[i], a_minus[i]);
+    }
+}
+
+/* Both velocities after a rigid impact and their derivatives in e, ẋ⁻, ẏ⁻ (the impact map's Jacobian) (symimpact_rigid_impact_main_velocity_after, symimpact_rigid_impact_impact_velocity_after, symimpact_rigid_impact_main_velocity_after_d_e, symimpact_rigid_impact_main_velocity_after_d_xdot_minus, symimpact_rigid_impact_main_velocity_after_d_ydot_minus, symimpact_rigid_impact_impact_velocity_after_d_e, symimpact_rigid_impact_impact_velocity_after_d_xdot_minus, symimpact_rigid_impact_impact_velocity_after_d_ydot_minus) */
+void symimpact_rigid_impact_velocities_after_and_derivatives(double m, double M, double e, double xdot_minus, double ydot_minus, double *restrict out)
+{
+    const double _x0 = e + 1;
+    const double _x1 = xdot_minus - ydot_minus;
+    const double _x2 = 1.0/(M + m);
+    const double _x3 = _x2*m;
+    const double _x4 = _x1*_x3;
+    const double _x5 = M*_x2;
+    const double _x6 = _x1*_x5;
+    const double _x7 = _x0*_x3;
+    const double _x8 = _x0*_x5;
+    out[0] = -_x0*_x4 + xdot_minus;
+    out[1] = _x0*_x6 + ydot_minus;
+    out[2] = -_x4;
+    out[3] = 1 - _x7;
+    out[4] = _x7;
+    out[5] = _x6;
+    out[6] = _x8;
+    out[7] = 1 - _x8;
+}
+
+void symimpact_rigid_impact_velocities_after_and_derivatives_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict e, const double *restrict xdot_minus, const double *restrict ydot_minus, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_rigid_impact_velocities_after_and_derivatives(m[i], M[i], e[i], xdot_minus[i], ydot_minus[i], out + 8 * i);
     }
 }
 
@@ -4176,6 +4417,246 @@ void symimpact_periodic_orbit_impact_mass_velocity_after_d_d_batch(size_t n, con
     }
 }
 
+/* The phase condition's residual and its derivatives in φ, e, d, m, F0, X_b (symimpact_periodic_orbit_phase_residual, symimpact_periodic_orbit_phase_residual_d_phi, symimpact_periodic_orbit_phase_residual_d_e, symimpact_periodic_orbit_phase_residual_d_d, symimpact_periodic_orbit_phase_residual_d_impact_mass, symimpact_periodic_orbit_phase_residual_d_F0, symimpact_periodic_orbit_phase_residual_d_X_b) */
+void symimpact_periodic_orbit_phase_residual_and_derivatives(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi, double *restrict out)
+{
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = 1.0/_x0;
+    const double _x2 = _x1*d;
+    const double _x3 = _x2*e;
+    const double _x4 = 1.0/M;
+    const double _x5 = _x4*m;
+    const double _x6 = 2*_x2;
+    const double _x7 = _x5*_x6;
+    const double _x8 = 1.0/Omega;
+    const double _x9 = 3.141592653589793*_x8;
+    const double _x10 = (1.0/2.0)*_x9;
+    const double _x11 = C*_x4;
+    const double _x12 = exp(-_x10*_x11);
+    const double _x13 = pow(C, 2);
+    const double _x14 = sqrt(K*_x4 - 1.0/4.0*_x13/pow(M, 2));
+    const double _x15 = _x14*_x9;
+    const double _x16 = cos(_x15);
+    const double _x17 = (1.0/2.0)*_x11;
+    const double _x18 = sin(_x15);
+    const double _x19 = 1.0/_x14;
+    const double _x20 = _x18*_x19;
+    const double _x21 = _x17*_x20;
+    const double _x22 = _x16 + _x21;
+    const double _x23 = _x12*_x22;
+    const double _x24 = _x2*_x23;
+    const double _x25 = 2*_x5;
+    const double _x26 = _x12*_x16;
+    const double _x27 = _x12*_x21;
+    const double _x28 = _x26 - _x27;
+    const double _x29 = _x2*_x28;
+    const double _x30 = _x28*_x3;
+    const double _x31 = _x23*_x29;
+    const double _x32 = _x23*_x30;
+    const double _x33 = -_x12*(-_x14*_x18 + _x16*_x17) + _x17*_x23;
+    const double _x34 = -_x33;
+    const double _x35 = _x12*_x20;
+    const double _x36 = _x34*_x35;
+    const double _x37 = _x2*_x36;
+    const double _x38 = _x3*_x36;
+    const double _x39 = sin(phi);
+    const double _x40 = sqrt(K);
+    const double _x41 = pow(M, -1.0/2.0);
+    const double _x42 = _x40*_x41;
+    const double _x43 = _x10*(Omega - _x42);
+    const double _x44 = cos(_x43);
+    const double _x45 = 1.0/(Omega + _x42);
+    const double _x46 = (((_x43 != 0) ? (
+   sin(_x43)/_x43
+)
+: (
+   1
+)));
+    const double _x47 = _x45*_x46;
+    const double _x48 = 3.141592653589793*_x47;
+    const double _x49 = _x44*_x48;
+    const double _x50 = pow(M, -3.0/2.0);
+    const double _x51 = _x40*_x50;
+    const double _x52 = C*_x49*_x51;
+    const double _x53 = F0 + K*X_b;
+    const double _x54 = sin(_x43);
+    const double _x55 = _x4*_x54;
+    const double _x56 = _x48*_x55;
+    const double _x57 = C == 0;
+    const double _x58 = _x0*_x13;
+    const double _x59 = K - M*_x0;
+    const double _x60 = 1.0/(_x58 + pow(_x59, 2));
+    const double _x61 = X_b*_x58 + _x53*_x59;
+    const double _x62 = _x60*_x61;
+    const double _x63 = -_x26 + _x27 - 1;
+    const double _x64 = Omega*_x63;
+    const double _x65 = C*Omega;
+    const double _x66 = _x59*_x65;
+    const double _x67 = C*Omega*_x53 - X_b*_x66;
+    const double _x68 = ((_x57) ? (
+   X_b*_x52 - _x53*_x56
+)
+: (
+   _x33*_x60*_x67 - _x62*_x64
+));
+    const double _x69 = pow(Omega, -3);
+    const double _x70 = 3.141592653589793*_x69;
+    const double _x71 = _x68*_x70;
+    const double _x72 = _x1*e;
+    const double _x73 = _x48*_x54;
+    const double _x74 = _x11*_x73;
+    const double _x75 = _x41*_x49/_x40;
+    const double _x76 = Omega*_x35;
+    const double _x77 = -_x23 - 1;
+    const double _x78 = _x60*_x67;
+    const double _x79 = ((_x57) ? (
+   -X_b*_x74 - _x53*_x75
+)
+: (
+   _x62*_x76 + _x77*_x78
+));
+    const double _x80 = 2*_x79;
+    const double _x81 = _x71*e;
+    const double _x82 = _x34*_x70;
+    const double _x83 = _x79*_x82;
+    const double _x84 = _x28*_x72;
+    const double _x85 = 4*_x1;
+    const double _x86 = _x5*_x85;
+    const double _x87 = 4*_x79;
+    const double _x88 = _x5*_x84;
+    const double _x89 = 2*_x72;
+    const double _x90 = _x35*_x89;
+    const double _x91 = _x35*_x68;
+    const double _x92 = 4*_x72;
+    const double _x93 = _x5*_x92;
+    const double _x94 = 2*_x1;
+    const double _x95 = _x1*_x28;
+    const double _x96 = _x35*_x94;
+    const double _x97 = -_x68*_x96 + _x79*_x94 + _x80*_x95;
+    const double _x98 = _x23*_x71 + _x23*_x81 + _x68*_x90 + _x71 - _x72*_x80 + _x79*_x86 - _x80*_x84 + _x81 - _x83*e - _x83 - _x87*_x88 + _x91*_x93 + _x97;
+    const double _x99 = cos(phi);
+    const double _x100 = _x56*_x65;
+    const double _x101 = _x47*_x9;
+    const double _x102 = _x101*_x44;
+    const double _x103 = _x102*_x51;
+    const double _x104 = ((_x57) ? (
+   -X_b*_x100 - _x103*_x53
+)
+: (
+   _x33*_x62 + _x64*_x78
+));
+    const double _x105 = _x104*_x70;
+    const double _x106 = _x65*_x75;
+    const double _x107 = ((_x57) ? (
+   -X_b*_x106 + 3.141592653589793*_x4*_x45*_x46*_x53*_x54*_x8
+)
+: (
+   _x60*_x61*_x77 - _x76*_x78
+));
+    const double _x108 = 2*_x107;
+    const double _x109 = _x105*e;
+    const double _x110 = _x107*_x82;
+    const double _x111 = 4*_x107;
+    const double _x112 = _x104*_x35;
+    const double _x113 = -_x104*_x96 + _x107*_x94 + _x108*_x95;
+    const double _x114 = _x105*_x23 + _x105 + _x107*_x86 - _x108*_x72 - _x108*_x84 + _x109*_x23 + _x109 - _x110*e - _x110 - _x111*_x88 + _x112*_x89 + _x112*_x93 + _x113;
+    const double _x115 = _x5*_x95;
+    const double _x116 = _x5*_x94;
+    const double _x117 = _x36*_x72;
+    const double _x118 = 2*_x4;
+    const double _x119 = _x4*_x85;
+    const double _x120 = _x4*_x84;
+    const double _x121 = _x4*_x92;
+    const double _x122 = _x59*_x60;
+    const double _x123 = _x60*_x65;
+    const double _x124 = ((_x57) ? (
+   -_x75
+)
+: (
+   _x122*_x76 + _x123*_x77
+));
+    const double _x125 = 2*_x124;
+    const double _x126 = 4*_x88;
+    const double _x127 = ((_x57) ? (
+   -_x56
+)
+: (
+   -_x122*_x64 + _x123*_x33
+));
+    const double _x128 = _x127*_x70;
+    const double _x129 = _x128*e;
+    const double _x130 = _x124*_x82;
+    const double _x131 = _x35*_x93;
+    const double _x132 = C*_x0*_x60;
+    const double _x133 = ((_x57) ? (
+   _x101*_x55
+)
+: (
+   -_x132*_x35 + _x59*_x60*_x77
+));
+    const double _x134 = 2*_x133;
+    const double _x135 = ((_x57) ? (
+   -_x103
+)
+: (
+   _x122*_x33 + _x132*_x63
+));
+    const double _x136 = _x135*_x70;
+    const double _x137 = _x136*e;
+    const double _x138 = _x133*_x82;
+    const double _x139 = K*_x59 + _x58;
+    const double _x140 = _x139*_x60;
+    const double _x141 = K*_x65 - _x66;
+    const double _x142 = _x141*_x60;
+    const double _x143 = ((_x57) ? (
+   -_x42*_x49 - _x74
+)
+: (
+   _x140*_x76 + _x142*_x77
+));
+    const double _x144 = 2*_x143;
+    const double _x145 = ((_x57) ? (
+   -K*_x4*_x73 + _x52
+)
+: (
+   -_x140*_x64 + _x141*_x33*_x60
+));
+    const double _x146 = _x145*_x70;
+    const double _x147 = _x146*e;
+    const double _x148 = _x143*_x82;
+    const double _x149 = ((_x57) ? (
+   3.141592653589793*K*_x4*_x45*_x46*_x54*_x8 - _x106
+)
+: (
+   _x139*_x60*_x77 - _x142*_x76
+));
+    const double _x150 = 2*_x149;
+    const double _x151 = ((_x57) ? (
+   -pow(K, 3.0/2.0)*_x102*_x50 - _x100
+)
+: (
+   _x140*_x33 + _x142*_x64
+));
+    const double _x152 = _x151*_x70;
+    const double _x153 = _x152*e;
+    const double _x154 = _x149*_x82;
+    out[0] = _x114*_x99 - _x2 + _x23*_x3 - _x24*_x25 - _x24 + _x25*_x30 + _x25*_x32 - _x25*_x38 - _x29 + _x3 + _x30 - _x31 + _x32 + _x37 - _x38 + _x39*_x98 - _x7;
+    out[1] = -_x114*_x39 + _x98*_x99;
+    out[2] = _x2 + _x24 + _x25*_x29 + _x25*_x31 + _x29 + _x31 - _x36*_x7 - _x37 + _x39*(4*_x1*_x12*_x18*_x19*_x4*_x68*m - _x115*_x87 + 3.141592653589793*_x12*_x22*_x68*_x69 + 3.141592653589793*_x68*_x69 - _x83 - _x97) + _x99*(4*_x1*_x104*_x12*_x18*_x19*_x4*m + 3.141592653589793*_x104*_x12*_x22*_x69 + 3.141592653589793*_x104*_x69 - _x110 - _x111*_x115 - _x113);
+    out[3] = _x1*_x12*_x18*_x19*_x34 + 2*_x1*_x12*_x22*_x28*_x4*e*m + _x1*_x12*_x22*_x28*e + _x1*_x12*_x22*e - _x1*_x23 + 2*_x1*_x28*_x4*e*m + _x1*_x28*e + _x1*e - _x1 - _x116*_x23 - _x116 - _x117*_x25 - _x117 - _x23*_x95 - _x95;
+    out[4] = -_x118*_x24 + _x118*_x30 + _x118*_x32 - _x118*_x38 + _x39*(_x119*_x79 - _x120*_x87 + _x121*_x91) - _x4*_x6 + _x99*(_x107*_x119 - _x111*_x120 + _x112*_x121);
+    out[5] = _x39*(-_x124*_x126 + _x124*_x86 + _x124*_x94 - _x125*_x72 - _x125*_x84 + _x125*_x95 + _x127*_x131 + _x127*_x90 - _x127*_x96 + _x128*_x23 + _x128 + _x129*_x23 + _x129 - _x130*e - _x130) + _x99*(-_x126*_x133 + _x131*_x135 + _x133*_x86 + _x133*_x94 - _x134*_x72 - _x134*_x84 + _x134*_x95 + _x135*_x90 - _x135*_x96 + _x136*_x23 + _x136 + _x137*_x23 + _x137 - _x138*e - _x138);
+    out[6] = _x39*(-_x126*_x143 + _x131*_x145 + _x143*_x86 + _x143*_x94 - _x144*_x72 - _x144*_x84 + _x144*_x95 + _x145*_x90 - _x145*_x96 + _x146*_x23 + _x146 + _x147*_x23 + _x147 - _x148*e - _x148) + _x99*(-_x126*_x149 + _x131*_x151 + _x149*_x86 + _x149*_x94 - _x150*_x72 - _x150*_x84 + _x150*_x95 + _x151*_x90 - _x151*_x96 + _x152*_x23 + _x152 + _x153*_x23 + _x153 - _x154*e - _x154);
+}
+
+void symimpact_periodic_orbit_phase_residual_and_derivatives_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_periodic_orbit_phase_residual_and_derivatives(M[i], K[i], C[i], m[i], e[i], d[i], F0[i], X_b[i], Omega[i], phi[i], out + 7 * i);
+    }
+}
+
 /* ---- hunt_crossley: The Hunt–Crossley contact: exact restitution (Eq. F4 (derived here, beyond the paper)) ---- */
 
 /* Eq. F4: \delta_{max} = \frac{2^{\frac{3}{5}} \cdot 5^{\frac{2}{5}} M^{\frac{2}{5}} m^{\frac{2}{5}} v_{0}^{\frac{4}{5}} \left(\begin{cases} \left(\frac{\chi^{12} v_{0}^{12}}{14} - \frac{\chi^{11} v_{0}^{11}}{13} + \frac{\chi^{10} v_{0}^{10}}{12} - \frac{\chi^{9} v_{0}^{9}}{11} + \frac{\chi^{8} v_{0}^{8}}{10} - \frac{\chi^{7} v_{0}^{7}}{9} + \frac{\chi^{6} v_{0}^{6}}{8} - \frac{\chi^{5} v_{0}^{5}}{7} + \frac{\chi^{4} v_{0}^{4}}{6} - \frac{\chi^{3} v_{0}^{3}}{5} + \frac{\chi^{2} v_{0}^{2}}{4} - \frac{\chi v_{0}}{3} + \frac{1}{2}\right)^{\frac{2}{5}} & \text{for}\: \chi v_{0} < \frac{1}{20} \\\frac{\left(\chi v_{0} - \operatorname{log1p}{\left(\chi v_{0} \right)}\right)^{\frac{2}{5}}}{\max\left(\frac{1}{400}, \chi^{2} v_{0}^{2}\right)^{\frac{2}{5}}} & \text{otherwise} \end{cases}\right)}{2 K_{Hz}^{\frac{2}{5}} \left(M + m\right)^{\frac{2}{5}}} */
@@ -4878,6 +5359,101 @@ void symimpact_slow_flow_backbone_clearance_batch(size_t n, const double *restri
     size_t i;
     for (i = 0; i < n; ++i) {
         out[i] = symimpact_slow_flow_backbone_clearance(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], xi[i]);
+    }
+}
+
+/* The clearance on the response surface and its slopes in every argument (symimpact_slow_flow_clearance_for_response, symimpact_slow_flow_clearance_for_response_d_main_mass, symimpact_slow_flow_clearance_for_response_d_K, symimpact_slow_flow_clearance_for_response_d_C, symimpact_slow_flow_clearance_for_response_d_impact_mass, symimpact_slow_flow_clearance_for_response_d_e, symimpact_slow_flow_clearance_for_response_d_F0, symimpact_slow_flow_clearance_for_response_d_X_b, symimpact_slow_flow_clearance_for_response_d_Omega, symimpact_slow_flow_clearance_for_response_d_xi) */
+void symimpact_slow_flow_clearance_for_response_and_derivatives(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi, double *restrict out)
+{
+    const double _x0 = pow(xi, 2);
+    const double _x1 = C*_x0;
+    const double _x2 = pow(3.141592653589793, -3);
+    const double _x3 = e + 1;
+    const double _x4 = 1.0/_x3;
+    const double _x5 = pow(Omega, 2);
+    const double _x6 = _x5*m;
+    const double _x7 = _x2*_x4*_x6;
+    const double _x8 = pow(3.141592653589793, -2);
+    const double _x9 = pow(_x3, -2);
+    const double _x10 = _x8*_x9;
+    const double _x11 = e - 1;
+    const double _x12 = pow(_x11, 2);
+    const double _x13 = 4*_x12;
+    const double _x14 = _x10*_x13;
+    const double _x15 = _x14 + 1;
+    const double _x16 = pow(_x15, -2);
+    const double _x17 = sqrt(_x0*_x14 + _x0 - _x14);
+    const double _x18 = _x17 + 1;
+    const double _x19 = pow(_x18, 2);
+    const double _x20 = _x16*_x19;
+    const double _x21 = _x20*_x7;
+    const double _x22 = 16*_x11;
+    const double _x23 = Omega*_x1 - _x21*_x22;
+    const double _x24 = K - M*_x5;
+    const double _x25 = 1.0/_x15;
+    const double _x26 = _x18*_x25;
+    const double _x27 = _x6*_x8;
+    const double _x28 = _x26*_x27;
+    const double _x29 = _x18*_x25 - 1;
+    const double _x30 = 8*_x29;
+    const double _x31 = _x0*_x24 - _x28*_x30;
+    const double _x32 = pow(_x23, 2) + pow(_x31, 2);
+    const double _x33 = pow(_x32, -1.0/2.0);
+    const double _x34 = F0 + K*X_b;
+    const double _x35 = pow(X_b, 2);
+    const double _x36 = pow(C, 2);
+    const double _x37 = _x36*_x5;
+    const double _x38 = sqrt(pow(_x34, 2) + _x35*_x37);
+    const double _x39 = 2*_x38;
+    const double _x40 = _x33*_x39;
+    const double _x41 = _x39/pow(_x32, 3.0/2.0);
+    const double _x42 = _x41*pow(xi, 3);
+    const double _x43 = _x31*_x42;
+    const double _x44 = 2*_x33*xi/_x38;
+    const double _x45 = _x34*_x44;
+    const double _x46 = _x35*_x44;
+    const double _x47 = _x2*_x20*_x4;
+    const double _x48 = _x26*_x8;
+    const double _x49 = _x41*xi;
+    const double _x50 = pow(_x3, -3);
+    const double _x51 = _x50*_x8;
+    const double _x52 = _x12*_x51;
+    const double _x53 = 2*e - 2;
+    const double _x54 = _x10*_x53;
+    const double _x55 = -_x0*_x13*_x51 + 2*_x0*_x53*_x8*_x9 + 4*_x12*_x50*_x8 - 2*_x54;
+    const double _x56 = 1.0/_x17;
+    const double _x57 = _x16*_x18;
+    const double _x58 = _x56*_x57;
+    const double _x59 = 64*_x11;
+    const double _x60 = _x59*_x7;
+    const double _x61 = (1.0/2.0)*_x23;
+    const double _x62 = _x57*(8*_x52 - 4*_x54);
+    const double _x63 = 16*_x27;
+    const double _x64 = _x29*_x63;
+    const double _x65 = _x25*_x56;
+    const double _x66 = _x55*_x65;
+    const double _x67 = (1.0/2.0)*_x31;
+    const double _x68 = Omega*m;
+    const double _x69 = 4*xi;
+    const double _x70 = _x10*_x12*_x69 + xi;
+    const double _x71 = _x58*_x70;
+    out[0] = _x40*xi;
+    out[1] = _x43*_x5;
+    out[2] = X_b*_x45 - _x43;
+    out[3] = C*_x46*_x5 - Omega*_x23*_x42;
+    out[4] = _x49*(_x22*_x23*_x47*_x5 + _x30*_x31*_x48*_x5);
+    out[5] = _x49*(-_x61*(32*_x11*_x16*_x19*_x2*_x5*_x9*m - 32*_x11*_x19*_x7*(16*_x52 - 8*_x54)/pow(_x15, 3) - 32*_x21 - _x55*_x58*_x60) - _x67*(-16*_x28*(_x62 + _x66) - _x62*_x64 - _x64*_x66));
+    out[6] = _x45;
+    out[7] = _x44*(K*_x34 + X_b*_x37);
+    out[8] = Omega*_x36*_x46 + _x49*(-_x61*(2*_x1 - _x47*_x59*_x68) - _x67*(-4*M*Omega*_x0 - 32*_x29*_x48*_x68));
+    out[9] = _x40 + _x49*(-_x61*(C*Omega*_x69 - _x60*_x71) - _x67*(4*_x24*xi - _x63*_x71 - _x64*_x65*_x70));
+}
+
+void symimpact_slow_flow_clearance_for_response_and_derivatives_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_slow_flow_clearance_for_response_and_derivatives(M[i], K[i], C[i], m[i], e[i], F0[i], X_b[i], Omega[i], xi[i], out + 10 * i);
     }
 }
 

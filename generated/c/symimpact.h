@@ -482,6 +482,30 @@ void symimpact_closed_forms_linear_contact_duration_d_k1_batch(size_t n, const d
 double symimpact_closed_forms_linear_contact_duration_d_c1(double m, double M, double k1, double c1);
 void symimpact_closed_forms_linear_contact_duration_d_c1_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k1, const double *restrict c1, double *restrict out);
 
+/* Hertz contact duration and its derivatives in m, M, k_hz, zdot0, paper Eq. 34: writes out[0..4] =
+ *   [0] symimpact_closed_forms_hertz_contact_duration
+ *   [1] symimpact_closed_forms_hertz_contact_duration_d_impact_mass
+ *   [2] symimpact_closed_forms_hertz_contact_duration_d_main_mass
+ *   [3] symimpact_closed_forms_hertz_contact_duration_d_k_hz
+ *   [4] symimpact_closed_forms_hertz_contact_duration_d_zdot0
+ * their common subexpressions computed once (68 operations).  The _batch twin writes
+ * out[5*i + j] for point i (n rows of 5).
+ */
+void symimpact_closed_forms_hertz_contact_duration_and_derivatives(double m, double M, double k_hz, double zdot0, double *restrict out);
+void symimpact_closed_forms_hertz_contact_duration_and_derivatives_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k_hz, const double *restrict zdot0, double *restrict out);
+
+/* Linear damped contact duration and its derivatives in m, M, k1, c1, paper Eq. 35: writes out[0..4] =
+ *   [0] symimpact_closed_forms_linear_contact_duration
+ *   [1] symimpact_closed_forms_linear_contact_duration_d_impact_mass
+ *   [2] symimpact_closed_forms_linear_contact_duration_d_main_mass
+ *   [3] symimpact_closed_forms_linear_contact_duration_d_k1
+ *   [4] symimpact_closed_forms_linear_contact_duration_d_c1
+ * their common subexpressions computed once (62 operations).  The _batch twin writes
+ * out[5*i + j] for point i (n rows of 5).
+ */
+void symimpact_closed_forms_linear_contact_duration_and_derivatives(double m, double M, double k1, double c1, double *restrict out);
+void symimpact_closed_forms_linear_contact_duration_and_derivatives_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict k1, const double *restrict c1, double *restrict out);
+
 /* ---- free_flight: Free flight between impacts (paper Eq. 7) ---- */
 
 /* Main-mass displacement x(t) in free flight [m], paper Eq. 7.
@@ -796,6 +820,28 @@ void symimpact_forced_flight_steady_sine_batch(size_t n, const double *restrict 
 double symimpact_forced_flight_linear_amplitude(double M, double K, double C, double F0, double X_b, double Omega);
 void symimpact_forced_flight_linear_amplitude_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, double *restrict out);
 
+/* The primary's displacement and velocity a time t into a flight (x, ẋ), Eq. F1 (derived here, beyond the paper): writes out[0..1] =
+ *   [0] symimpact_forced_flight_forced_displacement
+ *   [1] symimpact_forced_flight_forced_velocity
+ * their common subexpressions computed once (122 operations).  The _batch twin writes
+ * out[2*i + j] for point i (n rows of 2).
+ */
+void symimpact_forced_flight_forced_state(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0, double *restrict out);
+void symimpact_forced_flight_forced_state_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out);
+
+/* The state after a flight and its transition matrix: x, ẋ, ∂x/∂x0, ∂x/∂ẋ0, ∂ẋ/∂x0, ∂ẋ/∂ẋ0, Eq. F1 (derived here, beyond the paper): writes out[0..5] =
+ *   [0] symimpact_forced_flight_forced_displacement
+ *   [1] symimpact_forced_flight_forced_velocity
+ *   [2] symimpact_forced_flight_forced_displacement_d_x0
+ *   [3] symimpact_forced_flight_forced_displacement_d_xdot0
+ *   [4] symimpact_forced_flight_forced_velocity_d_x0
+ *   [5] symimpact_forced_flight_forced_velocity_d_xdot0
+ * their common subexpressions computed once (143 operations).  The _batch twin writes
+ * out[6*i + j] for point i (n rows of 6).
+ */
+void symimpact_forced_flight_forced_transition(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0, double *restrict out);
+void symimpact_forced_flight_forced_transition_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out);
+
 /* ---- rigid_impact: The rigid impact law (Eq. F2 (derived here, beyond the paper)) ---- */
 
 /* Main-mass velocity after a rigid impact [m/s], Eq. F2 (derived here, beyond the paper).
@@ -933,6 +979,21 @@ void symimpact_rigid_impact_saltation_main_velocity_z_batch(size_t n, const doub
  */
 double symimpact_rigid_impact_saltation_impact_velocity_z(double m, double M, double e, double zdot_minus, double a_minus);
 void symimpact_rigid_impact_saltation_impact_velocity_z_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict e, const double *restrict zdot_minus, const double *restrict a_minus, double *restrict out);
+
+/* Both velocities after a rigid impact and their derivatives in e, ẋ⁻, ẏ⁻ (the impact map's Jacobian), Eq. F2 (derived here, beyond the paper): writes out[0..7] =
+ *   [0] symimpact_rigid_impact_main_velocity_after
+ *   [1] symimpact_rigid_impact_impact_velocity_after
+ *   [2] symimpact_rigid_impact_main_velocity_after_d_e
+ *   [3] symimpact_rigid_impact_main_velocity_after_d_xdot_minus
+ *   [4] symimpact_rigid_impact_main_velocity_after_d_ydot_minus
+ *   [5] symimpact_rigid_impact_impact_velocity_after_d_e
+ *   [6] symimpact_rigid_impact_impact_velocity_after_d_xdot_minus
+ *   [7] symimpact_rigid_impact_impact_velocity_after_d_ydot_minus
+ * their common subexpressions computed once (17 operations).  The _batch twin writes
+ * out[8*i + j] for point i (n rows of 8).
+ */
+void symimpact_rigid_impact_velocities_after_and_derivatives(double m, double M, double e, double xdot_minus, double ydot_minus, double *restrict out);
+void symimpact_rigid_impact_velocities_after_and_derivatives_batch(size_t n, const double *restrict m, const double *restrict M, const double *restrict e, const double *restrict xdot_minus, const double *restrict ydot_minus, double *restrict out);
 
 /* ---- periodic_orbit: The symmetric two-impact periodic motion (Eq. F3 (derived here, beyond the paper)) ---- */
 
@@ -1263,6 +1324,20 @@ void symimpact_periodic_orbit_impact_mass_velocity_after_d_e_batch(size_t n, con
 double symimpact_periodic_orbit_impact_mass_velocity_after_d_d(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi);
 void symimpact_periodic_orbit_impact_mass_velocity_after_d_d_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out);
 
+/* The phase condition's residual and its derivatives in φ, e, d, m, F0, X_b, Eq. F3 (derived here, beyond the paper): writes out[0..6] =
+ *   [0] symimpact_periodic_orbit_phase_residual
+ *   [1] symimpact_periodic_orbit_phase_residual_d_phi
+ *   [2] symimpact_periodic_orbit_phase_residual_d_e
+ *   [3] symimpact_periodic_orbit_phase_residual_d_d
+ *   [4] symimpact_periodic_orbit_phase_residual_d_impact_mass
+ *   [5] symimpact_periodic_orbit_phase_residual_d_F0
+ *   [6] symimpact_periodic_orbit_phase_residual_d_X_b
+ * their common subexpressions computed once (578 operations).  The _batch twin writes
+ * out[7*i + j] for point i (n rows of 7).
+ */
+void symimpact_periodic_orbit_phase_residual_and_derivatives(double M, double K, double C, double m, double e, double d, double F0, double X_b, double Omega, double phi, double *restrict out);
+void symimpact_periodic_orbit_phase_residual_and_derivatives_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict d, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, double *restrict out);
+
 /* ---- hunt_crossley: The Hunt–Crossley contact: exact restitution (Eq. F4 (derived here, beyond the paper)) ---- */
 
 /* Largest penetration of the Hunt–Crossley contact (n = 3/2) [m], Eq. F4 (derived here, beyond the paper).
@@ -1575,6 +1650,23 @@ void symimpact_slow_flow_backbone_frequency_batch(size_t n, const double *restri
  */
 double symimpact_slow_flow_backbone_clearance(double M, double K, double C, double m, double e, double F0, double X_b, double xi);
 void symimpact_slow_flow_backbone_clearance_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict xi, double *restrict out);
+
+/* The clearance on the response surface and its slopes in every argument, Eq. F5 (derived here, beyond the paper): writes out[0..9] =
+ *   [0] symimpact_slow_flow_clearance_for_response
+ *   [1] symimpact_slow_flow_clearance_for_response_d_main_mass
+ *   [2] symimpact_slow_flow_clearance_for_response_d_K
+ *   [3] symimpact_slow_flow_clearance_for_response_d_C
+ *   [4] symimpact_slow_flow_clearance_for_response_d_impact_mass
+ *   [5] symimpact_slow_flow_clearance_for_response_d_e
+ *   [6] symimpact_slow_flow_clearance_for_response_d_F0
+ *   [7] symimpact_slow_flow_clearance_for_response_d_X_b
+ *   [8] symimpact_slow_flow_clearance_for_response_d_Omega
+ *   [9] symimpact_slow_flow_clearance_for_response_d_xi
+ * their common subexpressions computed once (214 operations).  The _batch twin writes
+ * out[10*i + j] for point i (n rows of 10).
+ */
+void symimpact_slow_flow_clearance_for_response_and_derivatives(double M, double K, double C, double m, double e, double F0, double X_b, double Omega, double xi, double *restrict out);
+void symimpact_slow_flow_clearance_for_response_and_derivatives_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict m, const double *restrict e, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict xi, double *restrict out);
 
 /* ---- hertz_contact: The contact from materials and geometry (Eq. F5 (derived here, beyond the paper)) ---- */
 

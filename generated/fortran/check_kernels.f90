@@ -14,6 +14,7 @@ program check_kernels
     integer :: checks = 0, failures = 0
     real(dp) :: got(3), expected(3), scale(3)
     integer :: steps(3), taken(3)
+    real(dp) :: row(10)
 
     ! ritz.mode_shape
     expected = [1.0470274064449843_dp, 1.480627866819879_dp, -1.3462357191217087_dp]
@@ -1707,39 +1708,39 @@ program check_kernels
 
     ! modal_structure.effective_mass_fraction_cantilever
     expected = [0.012982162246810664_dp, 0.0001955866257841068_dp, 0.3266905371105036_dp]
-    scale = [0.012982162246810664_dp, 0.0001955866257841068_dp, 0.3266905371105036_dp]
+    scale = [0.05921436223430662_dp, 0.16379149311904365_dp, 0.3888370587710199_dp]
     got = modal_structure_effective_mass_fraction_cantilever([11.2279_dp, 5.95584_dp, 9.68377_dp])
     call check("modal_structure_effective_mass_fraction_cantilever", got, expected, scale)
 
     ! modal_structure.base_participation_cantilever
     expected = [0.017812652668472952_dp, -0.013850710845510723_dp, -0.9908725945868799_dp]
-    scale = [0.017812652668472952_dp, 0.013850710845510723_dp, 0.9908725945868799_dp]
+    scale = [0.23534655451600126_dp, 0.5293995789569295_dp, 1.2466517781212454_dp]
     got = modal_structure_base_participation_cantilever([11.2279_dp, 5.95584_dp, 9.68377_dp], &
 [0.33923_dp, 0.778461_dp, 0.617691_dp])
     call check("modal_structure_base_participation_cantilever", got, expected, scale)
 
     ! modal_structure.effective_mass_fraction_clamped_clamped
     expected = [0.08530436830297411_dp, 0.12149844624989083_dp, 0.13332982218395_dp]
-    scale = [0.08530436830297411_dp, 0.12149844624989083_dp, 0.13332982218395_dp]
+    scale = [0.1315365683231712_dp, 0.2850987220939511_dp, 0.19547634480875473_dp]
     got = modal_structure_effective_mass_fraction_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp])
     call check("modal_structure_effective_mass_fraction_clamped_clamped", got, expected, scale)
 
     ! modal_structure.base_participation_clamped_clamped
     expected = [0.046022635686675285_dp, -0.1561323572960023_dp, -0.6510974258911841_dp]
-    scale = [0.046022635686675285_dp, 0.1561323572960023_dp, 0.6510974258911841_dp]
+    scale = [0.26355641081175707_dp, 0.6716693657760677_dp, 0.9068765330589181_dp]
     got = modal_structure_base_participation_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp], &
 [0.33923_dp, 0.778461_dp, 0.617691_dp])
     call check("modal_structure_base_participation_clamped_clamped", got, expected, scale)
 
     ! modal_structure.effective_mass_fraction_simply_supported
     expected = [0.17732718536818246_dp, 0.0001773118765340761_dp, 0.08827898664896155_dp]
-    scale = [0.17732718536818246_dp, 0.0001773118765340761_dp, 0.08827898664896155_dp]
+    scale = [0.24078614020317363_dp, 0.22570711595552398_dp, 0.17358920531467975_dp]
     got = modal_structure_effective_mass_fraction_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp])
     call check("modal_structure_effective_mass_fraction_simply_supported", got, expected, scale)
 
     ! modal_structure.base_participation_simply_supported
     expected = [-1.6006197176457142_dp, -0.019830090465853763_dp, -0.12912579157981768_dp]
-    scale = [1.6006197176457142_dp, 0.019830090465853763_dp, 0.12912579157981768_dp]
+    scale = [1.956875117141613_dp, 0.6914398046287594_dp, 0.5421880596840787_dp]
     got = modal_structure_base_participation_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp], &
 [0.33923_dp, 0.778461_dp, 0.617691_dp])
     call check("modal_structure_base_participation_simply_supported", got, expected, scale)
@@ -1806,7 +1807,684 @@ program check_kernels
     call check("fixed_points_hunt_crossley_peak_speed_ratio", got, expected, scale)
     call check_steps("fixed_points_hunt_crossley_peak_speed_ratio", taken, steps)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 162 kernels and 5 iterations, ", &
+    ! closed_forms.hertz_contact_duration_and_derivatives, part 1 (hertz_contact_duration), at its own points
+    expected = [0.00484261680843532_dp, 0.00013456345784133297_dp, 0.38326922517706524_dp]
+    scale = [0.00484261680843532_dp, 0.00013456345784133297_dp, 0.38326922517706524_dp]
+    call closed_forms_hertz_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 4.2132e+07_dp, 0.00382829_dp, &
+row)
+    got(1) = row(1)
+    call closed_forms_hertz_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 5.61337e+09_dp, 1.46558_dp, &
+row)
+    got(2) = row(1)
+    call closed_forms_hertz_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 747.886_dp, 0.0561068_dp, &
+row)
+    got(3) = row(1)
+    call check("closed_forms_hertz_contact_duration_and_derivatives(1)", got, expected, scale)
+
+    ! closed_forms.hertz_contact_duration_and_derivatives, part 2 (hertz_contact_duration_d_impact_mass), at its own points
+    expected = [5.153446524992846e-05_dp, 0.0006977758674392841_dp, 0.13030198693386175_dp]
+    scale = [0.0013204900920463203_dp, 0.0013983052410817774_dp, 0.3035495298897656_dp]
+    call closed_forms_hertz_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 4.2132e+07_dp, 0.00382829_dp, &
+row)
+    got(1) = row(2)
+    call closed_forms_hertz_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 5.61337e+09_dp, 1.46558_dp, &
+row)
+    got(2) = row(2)
+    call closed_forms_hertz_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 747.886_dp, 0.0561068_dp, &
+row)
+    got(3) = row(2)
+    call check("closed_forms_hertz_contact_duration_and_derivatives(2)", got, expected, scale)
+
+    ! closed_forms.hertz_contact_duration_and_derivatives, part 3 (hertz_contact_duration_d_main_mass), at its own points
+    expected = [0.007189917841357623_dp, 2.7164153866971025e-09_dp, 0.003538550764729489_dp]
+    scale = [0.01559725684426171_dp, 2.758939033982669e-06_dp, 0.050022657551501044_dp]
+    call closed_forms_hertz_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 4.2132e+07_dp, 0.00382829_dp, &
+row)
+    got(1) = row(3)
+    call closed_forms_hertz_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 5.61337e+09_dp, 1.46558_dp, &
+row)
+    got(2) = row(3)
+    call closed_forms_hertz_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 747.886_dp, 0.0561068_dp, &
+row)
+    got(3) = row(3)
+    call check("closed_forms_hertz_contact_duration_and_derivatives(3)", got, expected, scale)
+
+    ! closed_forms.hertz_contact_duration_and_derivatives, part 4 (hertz_contact_duration_d_k_hz), at its own points
+    expected = [-4.5975665132776225e-11_dp, -9.588782342253083e-15_dp, -0.00020498804640122438_dp]
+    scale = [9.195133026555245e-11_dp, 1.9177564684506166e-14_dp, 0.00040997609280244877_dp]
+    call closed_forms_hertz_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 4.2132e+07_dp, 0.00382829_dp, &
+row)
+    got(1) = row(4)
+    call closed_forms_hertz_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 5.61337e+09_dp, 1.46558_dp, &
+row)
+    got(2) = row(4)
+    call closed_forms_hertz_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 747.886_dp, 0.0561068_dp, &
+row)
+    got(3) = row(4)
+    call check("closed_forms_hertz_contact_duration_and_derivatives(4)", got, expected, scale)
+
+    ! closed_forms.hertz_contact_duration_and_derivatives, part 5 (hertz_contact_duration_d_zdot0), at its own points
+    expected = [-0.25299111657869805_dp, -1.8363167870922495e-05_dp, -1.3662130977958653_dp]
+    scale = [0.5059822331573961_dp, 3.672633574184499e-05_dp, 2.7324261955917306_dp]
+    call closed_forms_hertz_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 4.2132e+07_dp, 0.00382829_dp, &
+row)
+    got(1) = row(5)
+    call closed_forms_hertz_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 5.61337e+09_dp, 1.46558_dp, &
+row)
+    got(2) = row(5)
+    call closed_forms_hertz_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 747.886_dp, 0.0561068_dp, &
+row)
+    got(3) = row(5)
+    call check("closed_forms_hertz_contact_duration_and_derivatives(5)", got, expected, scale)
+
+    ! closed_forms.linear_contact_duration_and_derivatives, part 1 (linear_contact_duration), at its own points
+    expected = [0.002943472051133231_dp, 0.0003338269810588997_dp, 0.21959034339392178_dp]
+    scale = [0.002943472051133231_dp, 0.0003338269810588997_dp, 0.21959034339392178_dp]
+    call closed_forms_linear_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 260860.0_dp, 0.0728757_dp, &
+row)
+    got(1) = row(1)
+    call closed_forms_linear_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 6.80481e+06_dp, 0.395751_dp, &
+row)
+    got(2) = row(1)
+    call closed_forms_linear_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 177.51_dp, 0.218627_dp, &
+row)
+    got(3) = row(1)
+    call check("closed_forms_linear_contact_duration_and_derivatives(1)", got, expected, scale)
+
+    ! closed_forms.linear_contact_duration_and_derivatives, part 2 (linear_contact_duration_d_impact_mass), at its own points
+    expected = [3.915503248612775e-05_dp, 0.0021638154739013604_dp, 0.09331181216020386_dp]
+    scale = [0.0010032865698384687_dp, 0.004336170270628969_dp, 0.21741630961415576_dp]
+    call closed_forms_linear_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 260860.0_dp, 0.0728757_dp, &
+row)
+    got(1) = row(2)
+    call closed_forms_linear_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 6.80481e+06_dp, 0.395751_dp, &
+row)
+    got(2) = row(2)
+    call closed_forms_linear_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 177.51_dp, 0.218627_dp, &
+row)
+    got(3) = row(2)
+    call check("closed_forms_linear_contact_duration_and_derivatives(2)", got, expected, scale)
+
+    ! closed_forms.linear_contact_duration_and_derivatives, part 3 (linear_contact_duration_d_main_mass), at its own points
+    expected = [0.005462780399207461_dp, 8.42365281110899e-09_dp, 0.0025340257048066337_dp]
+    scale = [0.011850537785473271_dp, 8.55552196394022e-06_dp, 0.035832545348669385_dp]
+    call closed_forms_linear_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 260860.0_dp, 0.0728757_dp, &
+row)
+    got(1) = row(3)
+    call closed_forms_linear_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 6.80481e+06_dp, 0.395751_dp, &
+row)
+    got(2) = row(3)
+    call closed_forms_linear_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 177.51_dp, 0.218627_dp, &
+row)
+    got(3) = row(3)
+    call check("closed_forms_linear_contact_duration_and_derivatives(3)", got, expected, scale)
+
+    ! closed_forms.linear_contact_duration_and_derivatives, part 4 (linear_contact_duration_d_k1), at its own points
+    expected = [-5.6418617583305524e-09_dp, -2.4528752901135204e-11_dp, -0.0006185775187455155_dp]
+    scale = [1.1283723516661105e-08_dp, 4.905750580227041e-11_dp, 0.001237155037491031_dp]
+    call closed_forms_linear_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 260860.0_dp, 0.0728757_dp, &
+row)
+    got(1) = row(4)
+    call closed_forms_linear_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 6.80481e+06_dp, 0.395751_dp, &
+row)
+    got(2) = row(4)
+    call closed_forms_linear_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 177.51_dp, 0.218627_dp, &
+row)
+    got(3) = row(4)
+    call check("closed_forms_linear_contact_duration_and_derivatives(4)", got, expected, scale)
+
+    ! closed_forms.linear_contact_duration_and_derivatives, part 5 (linear_contact_duration_d_c1), at its own points
+    expected = [8.977338817540039e-10_dp, 6.316963942168118e-11_dp, 7.797440897580077e-05_dp]
+    scale = [1.7954677635080078e-09_dp, 1.2633927884336237e-10_dp, 0.00015594881795160154_dp]
+    call closed_forms_linear_contact_duration_and_derivatives(2.93383_dp, 0.248383_dp, 260860.0_dp, 0.0728757_dp, &
+row)
+    got(1) = row(5)
+    call closed_forms_linear_contact_duration_and_derivatives(0.0769866_dp, 39.0189_dp, 6.80481e+06_dp, 0.395751_dp, &
+row)
+    got(2) = row(5)
+    call closed_forms_linear_contact_duration_and_derivatives(1.0101_dp, 6.12953_dp, 177.51_dp, 0.218627_dp, &
+row)
+    got(3) = row(5)
+    call check("closed_forms_linear_contact_duration_and_derivatives(5)", got, expected, scale)
+
+    ! forced_flight.forced_state, part 1 (forced_displacement), at its own points
+    expected = [-0.009085818420394019_dp, 0.002296240029039171_dp, 0.008072171428258494_dp]
+    scale = [0.024897176826398196_dp, 0.020015269793457812_dp, 0.08085558775975273_dp]
+    call forced_flight_forced_state(1.82843_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -0.00788897_dp, 74.0145_dp, 2.26106_dp, &
+-0.00408337_dp, 0.77033_dp, row)
+    got(1) = row(1)
+    call forced_flight_forced_state(0.656854_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 0.00422205_dp, 173.234_dp, -1.77787_dp, &
+-0.00816674_dp, -0.459341_dp, row)
+    got(2) = row(1)
+    call forced_flight_forced_state(1.48528_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -0.00366692_dp, 405.462_dp, 0.48319_dp, &
+0.00774989_dp, 0.310989_dp, row)
+    got(3) = row(1)
+    call check("forced_flight_forced_state(1)", got, expected, scale)
+
+    ! forced_flight.forced_state, part 2 (forced_velocity), at its own points
+    expected = [-3.582469517580021_dp, 0.22535741998218997_dp, 0.30639423474236777_dp]
+    scale = [7.610919080044438_dp, 2.8945912398666196_dp, 0.6151571015106887_dp]
+    call forced_flight_forced_state(1.82843_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -0.00788897_dp, 74.0145_dp, 2.26106_dp, &
+-0.00408337_dp, 0.77033_dp, row)
+    got(1) = row(2)
+    call forced_flight_forced_state(0.656854_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 0.00422205_dp, 173.234_dp, -1.77787_dp, &
+-0.00816674_dp, -0.459341_dp, row)
+    got(2) = row(2)
+    call forced_flight_forced_state(1.48528_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -0.00366692_dp, 405.462_dp, 0.48319_dp, &
+0.00774989_dp, 0.310989_dp, row)
+    got(3) = row(2)
+    call check("forced_flight_forced_state(2)", got, expected, scale)
+
+    ! forced_flight.forced_transition, part 1 (forced_displacement), at its own points
+    expected = [-0.009085818420394019_dp, 0.002296240029039171_dp, 0.008072171428258494_dp]
+    scale = [0.024897176826398196_dp, 0.020015269793457812_dp, 0.08085558775975273_dp]
+    call forced_flight_forced_transition(1.82843_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -0.00788897_dp, 74.0145_dp, 2.26106_dp, &
+-0.00408337_dp, 0.77033_dp, row)
+    got(1) = row(1)
+    call forced_flight_forced_transition(0.656854_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 0.00422205_dp, 173.234_dp, -1.77787_dp, &
+-0.00816674_dp, -0.459341_dp, row)
+    got(2) = row(1)
+    call forced_flight_forced_transition(1.48528_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -0.00366692_dp, 405.462_dp, 0.48319_dp, &
+0.00774989_dp, 0.310989_dp, row)
+    got(3) = row(1)
+    call check("forced_flight_forced_transition(1)", got, expected, scale)
+
+    ! forced_flight.forced_transition, part 2 (forced_velocity), at its own points
+    expected = [-3.582469517580021_dp, 0.22535741998218997_dp, 0.30639423474236777_dp]
+    scale = [7.610919080044438_dp, 2.8945912398666196_dp, 0.6151571015106887_dp]
+    call forced_flight_forced_transition(1.82843_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -0.00788897_dp, 74.0145_dp, 2.26106_dp, &
+-0.00408337_dp, 0.77033_dp, row)
+    got(1) = row(2)
+    call forced_flight_forced_transition(0.656854_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 0.00422205_dp, 173.234_dp, -1.77787_dp, &
+-0.00816674_dp, -0.459341_dp, row)
+    got(2) = row(2)
+    call forced_flight_forced_transition(1.48528_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -0.00366692_dp, 405.462_dp, 0.48319_dp, &
+0.00774989_dp, 0.310989_dp, row)
+    got(3) = row(2)
+    call check("forced_flight_forced_transition(2)", got, expected, scale)
+
+    ! forced_flight.forced_transition, part 3 (forced_displacement_d_x0), at its own points
+    expected = [0.2277967187579221_dp, -0.03630523276621419_dp, 0.9842293577643402_dp]
+    scale = [1.0793116850624607_dp, 1.0343308426353268_dp, 1.9709491315946521_dp]
+    call forced_flight_forced_transition(1.82843_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -0.00788897_dp, 74.0145_dp, 2.26106_dp, &
+-0.00408337_dp, 0.77033_dp, row)
+    got(1) = row(3)
+    call forced_flight_forced_transition(0.656854_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 0.00422205_dp, 173.234_dp, -1.77787_dp, &
+-0.00816674_dp, -0.459341_dp, row)
+    got(2) = row(3)
+    call forced_flight_forced_transition(1.48528_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -0.00366692_dp, 405.462_dp, 0.48319_dp, &
+0.00774989_dp, 0.310989_dp, row)
+    got(3) = row(3)
+    call check("forced_flight_forced_transition(3)", got, expected, scale)
+
+    ! forced_flight.forced_transition, part 4 (forced_displacement_d_xdot0), at its own points
+    expected = [-0.001867844218883491_dp, 0.007313775801781447_dp, 0.0014271484693960178_dp]
+    scale = [0.0038064797406801047_dp, 0.014632401698058854_dp, 0.2338624222836518_dp]
+    call forced_flight_forced_transition(1.82843_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -0.00788897_dp, 74.0145_dp, 2.26106_dp, &
+-0.00408337_dp, 0.77033_dp, row)
+    got(1) = row(4)
+    call forced_flight_forced_transition(0.656854_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 0.00422205_dp, 173.234_dp, -1.77787_dp, &
+-0.00816674_dp, -0.459341_dp, row)
+    got(2) = row(4)
+    call forced_flight_forced_transition(1.48528_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -0.00366692_dp, 405.462_dp, 0.48319_dp, &
+0.00774989_dp, 0.310989_dp, row)
+    got(3) = row(4)
+    call check("forced_flight_forced_transition(4)", got, expected, scale)
+
+    ! forced_flight.forced_transition, part 5 (forced_velocity_d_x0), at its own points
+    expected = [360.2125427530413_dp, -136.00238915690514_dp, -0.025589593276717587_dp]
+    scale = [734.2270130793975_dp, 272.1010410173936_dp, 4.214351032496912_dp]
+    call forced_flight_forced_transition(1.82843_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -0.00788897_dp, 74.0145_dp, 2.26106_dp, &
+-0.00408337_dp, 0.77033_dp, row)
+    got(1) = row(5)
+    call forced_flight_forced_transition(0.656854_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 0.00422205_dp, 173.234_dp, -1.77787_dp, &
+-0.00816674_dp, -0.459341_dp, row)
+    got(2) = row(5)
+    call forced_flight_forced_transition(1.48528_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -0.00366692_dp, 405.462_dp, 0.48319_dp, &
+0.00774989_dp, 0.310989_dp, row)
+    got(3) = row(5)
+    call check("forced_flight_forced_transition(5)", got, expected, scale)
+
+    ! forced_flight.forced_transition, part 6 (forced_velocity_d_xdot0), at its own points
+    expected = [0.22812553448044887_dp, -0.036349741027029044_dp, 0.9841988158422643_dp]
+    scale = [1.0796405007849874_dp, 1.0343753508961417_dp, 1.9709185896725763_dp]
+    call forced_flight_forced_transition(1.82843_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -0.00788897_dp, 74.0145_dp, 2.26106_dp, &
+-0.00408337_dp, 0.77033_dp, row)
+    got(1) = row(6)
+    call forced_flight_forced_transition(0.656854_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 0.00422205_dp, 173.234_dp, -1.77787_dp, &
+-0.00816674_dp, -0.459341_dp, row)
+    got(2) = row(6)
+    call forced_flight_forced_transition(1.48528_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -0.00366692_dp, 405.462_dp, 0.48319_dp, &
+0.00774989_dp, 0.310989_dp, row)
+    got(3) = row(6)
+    call check("forced_flight_forced_transition(6)", got, expected, scale)
+
+    ! rigid_impact.velocities_after_and_derivatives, part 1 (main_velocity_after), at its own points
+    expected = [0.8987997928799252_dp, 0.5823619296499037_dp, -0.12467366836834094_dp]
+    scale = [2.240546792879925_dp, 1.8988679296499038_dp, 0.35041666836834096_dp]
+    call rigid_impact_velocities_after_and_derivatives(0.552892_dp, 0.248383_dp, 0.736068_dp, -0.708497_dp, &
+0.63325_dp, row)
+    got(1) = row(1)
+    call rigid_impact_velocities_after_and_derivatives(0.00966677_dp, 39.0189_dp, 0.972136_dp, 0.583005_dp, &
+-0.733501_dp, row)
+    got(2) = row(1)
+    call rigid_impact_velocities_after_and_derivatives(0.169014_dp, 6.12953_dp, 0.208204_dp, -0.125492_dp, &
+-0.100251_dp, row)
+    got(3) = row(1)
+    call check("rigid_impact_velocities_after_and_derivatives(1)", got, expected, scale)
+
+    ! rigid_impact.velocities_after_and_derivatives, part 2 (impact_velocity_after), at its own points
+    expected = [-0.08881723791607479_dp, 1.8621848064659037_dp, -0.12992894553234094_dp]
+    scale = [1.4305642379160748_dp, 3.178690806465904_dp, 0.35567194553234094_dp]
+    call rigid_impact_velocities_after_and_derivatives(0.552892_dp, 0.248383_dp, 0.736068_dp, -0.708497_dp, &
+0.63325_dp, row)
+    got(1) = row(2)
+    call rigid_impact_velocities_after_and_derivatives(0.00966677_dp, 39.0189_dp, 0.972136_dp, 0.583005_dp, &
+-0.733501_dp, row)
+    got(2) = row(2)
+    call rigid_impact_velocities_after_and_derivatives(0.169014_dp, 6.12953_dp, 0.208204_dp, -0.125492_dp, &
+-0.100251_dp, row)
+    got(3) = row(2)
+    call check("rigid_impact_velocities_after_and_derivatives(2)", got, expected, scale)
+
+    ! rigid_impact.velocities_after_and_derivatives, part 3 (main_velocity_after_d_e), at its own points
+    expected = [0.9258259428086487_dp, -0.0003260780950686189_dp, 0.0006773124668177276_dp]
+    scale = [1.8516518856172974_dp, 0.0006521561901372377_dp, 0.006734859639942183_dp]
+    call rigid_impact_velocities_after_and_derivatives(0.552892_dp, 0.248383_dp, 0.736068_dp, -0.708497_dp, &
+0.63325_dp, row)
+    got(1) = row(3)
+    call rigid_impact_velocities_after_and_derivatives(0.00966677_dp, 39.0189_dp, 0.972136_dp, 0.583005_dp, &
+-0.733501_dp, row)
+    got(2) = row(3)
+    call rigid_impact_velocities_after_and_derivatives(0.169014_dp, 6.12953_dp, 0.208204_dp, -0.125492_dp, &
+-0.100251_dp, row)
+    got(3) = row(3)
+    call check("rigid_impact_velocities_after_and_derivatives(3)", got, expected, scale)
+
+    ! rigid_impact.velocities_after_and_derivatives, part 4 (main_velocity_after_d_xdot_minus), at its own points
+    expected = [-0.19791346124114692_dp, 0.9995115325337702_dp, 0.9675792705653878_dp]
+    scale = [2.3958269224822937_dp, 2.0_dp, 2.0_dp]
+    call rigid_impact_velocities_after_and_derivatives(0.552892_dp, 0.248383_dp, 0.736068_dp, -0.708497_dp, &
+0.63325_dp, row)
+    got(1) = row(4)
+    call rigid_impact_velocities_after_and_derivatives(0.00966677_dp, 39.0189_dp, 0.972136_dp, 0.583005_dp, &
+-0.733501_dp, row)
+    got(2) = row(4)
+    call rigid_impact_velocities_after_and_derivatives(0.169014_dp, 6.12953_dp, 0.208204_dp, -0.125492_dp, &
+-0.100251_dp, row)
+    got(3) = row(4)
+    call check("rigid_impact_velocities_after_and_derivatives(4)", got, expected, scale)
+
+    ! rigid_impact.velocities_after_and_derivatives, part 5 (main_velocity_after_d_ydot_minus), at its own points
+    expected = [1.1979134612411468_dp, 0.0004884674662297367_dp, 0.03242072943461219_dp]
+    scale = [2.3958269224822937_dp, 0.0009769349324594734_dp, 0.06484145886922438_dp]
+    call rigid_impact_velocities_after_and_derivatives(0.552892_dp, 0.248383_dp, 0.736068_dp, -0.708497_dp, &
+0.63325_dp, row)
+    got(1) = row(5)
+    call rigid_impact_velocities_after_and_derivatives(0.00966677_dp, 39.0189_dp, 0.972136_dp, 0.583005_dp, &
+-0.733501_dp, row)
+    got(2) = row(5)
+    call rigid_impact_velocities_after_and_derivatives(0.169014_dp, 6.12953_dp, 0.208204_dp, -0.125492_dp, &
+-0.100251_dp, row)
+    got(3) = row(5)
+    call check("rigid_impact_velocities_after_and_derivatives(5)", got, expected, scale)
+
+    ! rigid_impact.velocities_after_and_derivatives, part 6 (impact_velocity_after_d_e), at its own points
+    expected = [-0.41592105719135125_dp, 1.3161799219049313_dp, -0.02456368753318226_dp]
+    scale = [0.8318421143827025_dp, 2.6323598438098625_dp, 0.2442491403600578_dp]
+    call rigid_impact_velocities_after_and_derivatives(0.552892_dp, 0.248383_dp, 0.736068_dp, -0.708497_dp, &
+0.63325_dp, row)
+    got(1) = row(6)
+    call rigid_impact_velocities_after_and_derivatives(0.00966677_dp, 39.0189_dp, 0.972136_dp, 0.583005_dp, &
+-0.733501_dp, row)
+    got(2) = row(6)
+    call rigid_impact_velocities_after_and_derivatives(0.169014_dp, 6.12953_dp, 0.208204_dp, -0.125492_dp, &
+-0.100251_dp, row)
+    got(3) = row(6)
+    call check("rigid_impact_velocities_after_and_derivatives(6)", got, expected, scale)
+
+    ! rigid_impact.velocities_after_and_derivatives, part 7 (impact_velocity_after_d_xdot_minus), at its own points
+    expected = [0.538154538758853_dp, 1.9716475325337703_dp, 1.175783270565388_dp]
+    scale = [1.076309077517706_dp, 3.9432950650675407_dp, 2.351566541130776_dp]
+    call rigid_impact_velocities_after_and_derivatives(0.552892_dp, 0.248383_dp, 0.736068_dp, -0.708497_dp, &
+0.63325_dp, row)
+    got(1) = row(7)
+    call rigid_impact_velocities_after_and_derivatives(0.00966677_dp, 39.0189_dp, 0.972136_dp, 0.583005_dp, &
+-0.733501_dp, row)
+    got(2) = row(7)
+    call rigid_impact_velocities_after_and_derivatives(0.169014_dp, 6.12953_dp, 0.208204_dp, -0.125492_dp, &
+-0.100251_dp, row)
+    got(3) = row(7)
+    call check("rigid_impact_velocities_after_and_derivatives(7)", got, expected, scale)
+
+    ! rigid_impact.velocities_after_and_derivatives, part 8 (impact_velocity_after_d_ydot_minus), at its own points
+    expected = [0.461845461241147_dp, -0.9716475325337702_dp, -0.1757832705653878_dp]
+    scale = [2.0_dp, 3.9432950650675407_dp, 2.351566541130776_dp]
+    call rigid_impact_velocities_after_and_derivatives(0.552892_dp, 0.248383_dp, 0.736068_dp, -0.708497_dp, &
+0.63325_dp, row)
+    got(1) = row(8)
+    call rigid_impact_velocities_after_and_derivatives(0.00966677_dp, 39.0189_dp, 0.972136_dp, 0.583005_dp, &
+-0.733501_dp, row)
+    got(2) = row(8)
+    call rigid_impact_velocities_after_and_derivatives(0.169014_dp, 6.12953_dp, 0.208204_dp, -0.125492_dp, &
+-0.100251_dp, row)
+    got(3) = row(8)
+    call check("rigid_impact_velocities_after_and_derivatives(8)", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_and_derivatives, part 1 (phase_residual), at its own points
+    expected = [0.0012034644155894218_dp, 0.011224841892893645_dp, -1.290319088743204e-07_dp]
+    scale = [0.01539678364265028_dp, 0.17294075261329953_dp, 5.715294801898301e-07_dp]
+    call periodic_orbit_phase_residual_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, 0.000192699_dp, 2.46211_dp, 0.00717798_dp, &
+5.40518_dp, 2.42654_dp, row)
+    got(1) = row(1)
+    call periodic_orbit_phase_residual_and_derivatives(0.907579_dp, 78037.8_dp, 0.486068_dp, 0.066263_dp, &
+0.13325_dp, 0.00830318_dp, 4.92423_dp, -0.00564404_dp, &
+1.68679_dp, -1.44692_dp, row)
+    got(2) = row(1)
+    call periodic_orbit_phase_residual_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, 0.000715549_dp, 7.38634_dp, 0.00153394_dp, &
+157.918_dp, 0.979615_dp, row)
+    got(3) = row(1)
+    call check("periodic_orbit_phase_residual_and_derivatives(1)", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_and_derivatives, part 2 (phase_residual_d_phi), at its own points
+    expected = [-0.0011779373061544648_dp, 0.0069121197809340965_dp, -8.428577153256806e-08_dp]
+    scale = [0.020888493172773644_dp, 2.471313652092032_dp, 6.166974511500441e-07_dp]
+    call periodic_orbit_phase_residual_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, 0.000192699_dp, 2.46211_dp, 0.00717798_dp, &
+5.40518_dp, 2.42654_dp, row)
+    got(1) = row(2)
+    call periodic_orbit_phase_residual_and_derivatives(0.907579_dp, 78037.8_dp, 0.486068_dp, 0.066263_dp, &
+0.13325_dp, 0.00830318_dp, 4.92423_dp, -0.00564404_dp, &
+1.68679_dp, -1.44692_dp, row)
+    got(2) = row(2)
+    call periodic_orbit_phase_residual_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, 0.000715549_dp, 7.38634_dp, 0.00153394_dp, &
+157.918_dp, 0.979615_dp, row)
+    got(3) = row(2)
+    call check("periodic_orbit_phase_residual_and_derivatives(2)", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_and_derivatives, part 3 (phase_residual_d_e), at its own points
+    expected = [0.00018090449663344063_dp, 0.02111567861172046_dp, 2.615100132156169e-09_dp]
+    scale = [0.01106398621828408_dp, 2.2048111693539223_dp, 5.138169185933974e-07_dp]
+    call periodic_orbit_phase_residual_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, 0.000192699_dp, 2.46211_dp, 0.00717798_dp, &
+5.40518_dp, 2.42654_dp, row)
+    got(1) = row(3)
+    call periodic_orbit_phase_residual_and_derivatives(0.907579_dp, 78037.8_dp, 0.486068_dp, 0.066263_dp, &
+0.13325_dp, 0.00830318_dp, 4.92423_dp, -0.00564404_dp, &
+1.68679_dp, -1.44692_dp, row)
+    got(2) = row(3)
+    call periodic_orbit_phase_residual_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, 0.000715549_dp, 7.38634_dp, 0.00153394_dp, &
+157.918_dp, 0.979615_dp, row)
+    got(3) = row(3)
+    call check("periodic_orbit_phase_residual_and_derivatives(3)", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_and_derivatives, part 4 (phase_residual_d_d), at its own points
+    expected = [-0.0009249279922699639_dp, -0.813520334467653_dp, -7.196738762399061e-05_dp]
+    scale = [0.30975603356702497_dp, 2.082074820287281_dp, 0.00036311489617053404_dp]
+    call periodic_orbit_phase_residual_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, 0.000192699_dp, 2.46211_dp, 0.00717798_dp, &
+5.40518_dp, 2.42654_dp, row)
+    got(1) = row(4)
+    call periodic_orbit_phase_residual_and_derivatives(0.907579_dp, 78037.8_dp, 0.486068_dp, 0.066263_dp, &
+0.13325_dp, 0.00830318_dp, 4.92423_dp, -0.00564404_dp, &
+1.68679_dp, -1.44692_dp, row)
+    got(2) = row(4)
+    call periodic_orbit_phase_residual_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, 0.000715549_dp, 7.38634_dp, 0.00153394_dp, &
+157.918_dp, 0.979615_dp, row)
+    got(3) = row(4)
+    call check("periodic_orbit_phase_residual_and_derivatives(4)", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_and_derivatives, part 5 (phase_residual_d_impact_mass), at its own points
+    expected = [-0.00022909607061149273_dp, -0.007586401008704871_dp, -2.2156238568002612e-08_dp]
+    scale = [0.0007489781691765737_dp, 0.03492074822151698_dp, 1.0218096153371363e-07_dp]
+    call periodic_orbit_phase_residual_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, 0.000192699_dp, 2.46211_dp, 0.00717798_dp, &
+5.40518_dp, 2.42654_dp, row)
+    got(1) = row(5)
+    call periodic_orbit_phase_residual_and_derivatives(0.907579_dp, 78037.8_dp, 0.486068_dp, 0.066263_dp, &
+0.13325_dp, 0.00830318_dp, 4.92423_dp, -0.00564404_dp, &
+1.68679_dp, -1.44692_dp, row)
+    got(2) = row(5)
+    call periodic_orbit_phase_residual_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, 0.000715549_dp, 7.38634_dp, 0.00153394_dp, &
+157.918_dp, 0.979615_dp, row)
+    got(3) = row(5)
+    call check("periodic_orbit_phase_residual_and_derivatives(5)", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_and_derivatives, part 6 (phase_residual_d_F0), at its own points
+    expected = [0.0002001405962600689_dp, -4.1282603323015064e-05_dp, -2.9572869996261017e-09_dp]
+    scale = [0.0034623042132394064_dp, 0.005574571815200737_dp, 2.3265723421457293e-08_dp]
+    call periodic_orbit_phase_residual_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, 0.000192699_dp, 2.46211_dp, 0.00717798_dp, &
+5.40518_dp, 2.42654_dp, row)
+    got(1) = row(6)
+    call periodic_orbit_phase_residual_and_derivatives(0.907579_dp, 78037.8_dp, 0.486068_dp, 0.066263_dp, &
+0.13325_dp, 0.00830318_dp, 4.92423_dp, -0.00564404_dp, &
+1.68679_dp, -1.44692_dp, row)
+    got(2) = row(6)
+    call periodic_orbit_phase_residual_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, 0.000715549_dp, 7.38634_dp, 0.00153394_dp, &
+157.918_dp, 0.979615_dp, row)
+    got(3) = row(6)
+    call check("periodic_orbit_phase_residual_and_derivatives(6)", got, expected, scale)
+
+    ! periodic_orbit.phase_residual_and_derivatives, part 7 (phase_residual_d_X_b), at its own points
+    expected = [0.09903545075783521_dp, -3.221616554347606_dp, -3.63066282713426e-05_dp]
+    scale = [1.7260600737880165_dp, 435.03187012719485_dp, 0.0002856036433680527_dp]
+    call periodic_orbit_phase_residual_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, 0.000192699_dp, 2.46211_dp, 0.00717798_dp, &
+5.40518_dp, 2.42654_dp, row)
+    got(1) = row(7)
+    call periodic_orbit_phase_residual_and_derivatives(0.907579_dp, 78037.8_dp, 0.486068_dp, 0.066263_dp, &
+0.13325_dp, 0.00830318_dp, 4.92423_dp, -0.00564404_dp, &
+1.68679_dp, -1.44692_dp, row)
+    got(2) = row(7)
+    call periodic_orbit_phase_residual_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, 0.000715549_dp, 7.38634_dp, 0.00153394_dp, &
+157.918_dp, 0.979615_dp, row)
+    got(3) = row(7)
+    call check("periodic_orbit_phase_residual_and_derivatives(7)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 1 (clearance_for_response), at its own points
+    expected = [0.00011628059619344335_dp, 0.0005203145803725032_dp, 0.000382467303687025_dp]
+    scale = [0.00011628059619344335_dp, 0.0005203145803725032_dp, 0.000382467303687025_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(1)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(1)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(1)
+    call check("slow_flow_clearance_for_response_and_derivatives(1)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 2 (clearance_for_response_d_main_mass), at its own points
+    expected = [-8.645067569238502e-06_dp, 4.7673681068122075e-05_dp, -0.0010375408524110898_dp]
+    scale = [1.7332960661064765e-05_dp, 0.000148814035535072_dp, 0.0023248435931612654_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(2)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(2)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(2)
+    call check("slow_flow_clearance_for_response_and_derivatives(2)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 3 (clearance_for_response_d_K), at its own points
+    expected = [-4.245479647523432e-08_dp, -2.2015113414877292e-08_dp, 1.6141701878732862e-07_dp]
+    scale = [1.0162871512524641e-07_dp, 2.1053276409487083e-07_dp, 3.2861974288071283e-07_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(3)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(3)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(3)
+    call check("slow_flow_clearance_for_response_and_derivatives(3)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 4 (clearance_for_response_d_C), at its own points
+    expected = [1.0501950590555848e-07_dp, -6.698433777535246e-10_dp, 4.5710375733521933e-07_dp]
+    scale = [2.100965668911972e-07_dp, 2.0612935725739602e-09_dp, 9.517565021610194e-07_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(4)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(4)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(4)
+    call check("slow_flow_clearance_for_response_and_derivatives(4)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 5 (clearance_for_response_d_impact_mass), at its own points
+    expected = [-2.1229830331942447e-05_dp, 3.729119563796722e-05_dp, -0.0009269382908180645_dp]
+    scale = [8.842943705669158e-05_dp, 8.470911913751996e-05_dp, 0.0016765346590463775_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(5)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(5)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(5)
+    call check("slow_flow_clearance_for_response_and_derivatives(5)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 6 (clearance_for_response_d_e), at its own points
+    expected = [-1.4718303745420558e-08_dp, 1.0838163476448268e-07_dp, -1.1292427223066737e-07_dp]
+    scale = [3.280461137909563e-07_dp, 1.351615884437346e-06_dp, 2.4495601676300704e-06_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(6)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(6)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(6)
+    call check("slow_flow_clearance_for_response_and_derivatives(6)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 7 (clearance_for_response_d_F0), at its own points
+    expected = [-1.7438361607326342e-05_dp, 5.988683475899715e-06_dp, 1.3949657533409853e-05_dp]
+    scale = [4.127611499936895e-05_dp, 1.248287512131932e-05_dp, 2.7899315066819705e-05_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(7)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(7)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(7)
+    call check("slow_flow_clearance_for_response_and_derivatives(7)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 8 (clearance_for_response_d_X_b), at its own points
+    expected = [-0.008647101622553796_dp, 0.0734158735698532_dp, 0.02687478745479328_dp]
+    scale = [0.020504611819891515_dp, 0.15302882234066767_dp, 0.05374957490958656_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(8)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(8)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(8)
+    call check("slow_flow_clearance_for_response_and_derivatives(8)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 9 (clearance_for_response_d_Omega), at its own points
+    expected = [-1.736834263569008e-06_dp, 2.1758814183652573e-05_dp, -4.126642826847206e-06_dp]
+    scale = [3.484330272302455e-06_dp, 6.789647412452392e-05_dp, 9.241821990218337e-06_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(9)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(9)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(9)
+    call check("slow_flow_clearance_for_response_and_derivatives(9)", got, expected, scale)
+
+    ! slow_flow.clearance_for_response_and_derivatives, part 10 (clearance_for_response_d_xi), at its own points
+    expected = [-0.00024540155185923525_dp, -1.2236490681613105e-05_dp, -4.244074182258537e-05_dp]
+    scale = [0.000986267936067523_dp, 0.00013462585814466184_dp, 0.00021565872858590661_dp]
+    call slow_flow_clearance_for_response_and_derivatives(13.4728_dp, 496.767_dp, 0.368034_dp, 0.0021646_dp, &
+0.816625_dp, -7.88897_dp, 0.00246211_dp, 134.152_dp, &
+0.473717_dp, row)
+    got(1) = row(10)
+    call slow_flow_clearance_for_response_and_derivatives(6.1138_dp, 12259.1_dp, 0.104102_dp, 0.0101423_dp, &
+0.449874_dp, -3.66692_dp, 0.00738634_dp, 26.8255_dp, &
+42.5222_dp, row)
+    got(2) = row(10)
+    call slow_flow_clearance_for_response_and_derivatives(0.411849_dp, 1925.79_dp, 0.222136_dp, 0.00155238_dp, &
+0.766499_dp, 8.4441_dp, 0.00984845_dp, 207.771_dp, &
+9.00845_dp, row)
+    got(3) = row(10)
+    call check("slow_flow_clearance_for_response_and_derivatives(10)", got, expected, scale)
+
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 162 kernels, 7 bundles and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

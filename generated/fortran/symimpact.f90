@@ -64,6 +64,8 @@ module symimpact
     public :: closed_forms_linear_contact_duration_d_main_mass
     public :: closed_forms_linear_contact_duration_d_k1
     public :: closed_forms_linear_contact_duration_d_c1
+    public :: closed_forms_hertz_contact_duration_and_derivatives
+    public :: closed_forms_linear_contact_duration_and_derivatives
     public :: free_flight_main_mass_displacement
     public :: free_flight_main_mass_velocity
     public :: free_flight_impact_mass_velocity
@@ -87,6 +89,8 @@ module symimpact
     public :: forced_flight_steady_cosine
     public :: forced_flight_steady_sine
     public :: forced_flight_linear_amplitude
+    public :: forced_flight_forced_state
+    public :: forced_flight_forced_transition
     public :: rigid_impact_main_velocity_after
     public :: rigid_impact_impact_velocity_after
     public :: rigid_impact_main_velocity_after_d_e
@@ -101,6 +105,7 @@ module symimpact
     public :: rigid_impact_saltation_impact_gain
     public :: rigid_impact_saltation_main_velocity_z
     public :: rigid_impact_saltation_impact_velocity_z
+    public :: rigid_impact_velocities_after_and_derivatives
     public :: periodic_orbit_phase_cos_coefficient
     public :: periodic_orbit_phase_sin_coefficient
     public :: periodic_orbit_phase_right_side
@@ -123,6 +128,7 @@ module symimpact
     public :: periodic_orbit_impact_mass_velocity_after_d_phi
     public :: periodic_orbit_impact_mass_velocity_after_d_e
     public :: periodic_orbit_impact_mass_velocity_after_d_d
+    public :: periodic_orbit_phase_residual_and_derivatives
     public :: hunt_crossley_max_penetration
     public :: hunt_crossley_penetration_at_speed
     public :: hunt_crossley_force_at_speed
@@ -149,6 +155,7 @@ module symimpact
     public :: slow_flow_response_quartic_0
     public :: slow_flow_backbone_frequency
     public :: slow_flow_backbone_clearance
+    public :: slow_flow_clearance_for_response_and_derivatives
     public :: hertz_contact_effective_modulus
     public :: hertz_contact_effective_radius
     public :: hertz_contact_hertz_stiffness
@@ -1079,6 +1086,81 @@ contains
       k1/(M_*m))**((3.0_dp /2.0_dp))
     end function closed_forms_linear_contact_duration_d_c1
 
+    ! Hertz contact duration and its derivatives in m, M, k_hz, zdot0, paper Eq. 34: out(1:5) =
+    !   (1) closed_forms_hertz_contact_duration
+    !   (2) closed_forms_hertz_contact_duration_d_impact_mass
+    !   (3) closed_forms_hertz_contact_duration_d_main_mass
+    !   (4) closed_forms_hertz_contact_duration_d_k_hz
+    !   (5) closed_forms_hertz_contact_duration_d_zdot0
+    ! their common subexpressions computed once.
+    !   m: Impact mass m [kg]
+    !   M_: Main mass M [kg]
+    !   k_hz: Hertz contact stiffness K_Hz [N/m^1.5]
+    !   zdot0: Relative approach speed Ż₀ [m/s]
+    pure subroutine closed_forms_hertz_contact_duration_and_derivatives(m, M_, k_hz, zdot0, out)
+        real(dp), intent(in) :: m, M_, k_hz, zdot0
+        real(dp), intent(out) :: out(5)
+        real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
+      cse_7, cse_8, cse_9, cse_10
+        cse_0 = 5.0_dp**((2.0_dp/5.0_dp))
+        cse_1 = sqrt(3.141592653589793_dp)
+        cse_2 = M_**((2.0_dp/5.0_dp))
+        cse_3 = zdot0**((-1.0_dp/5.0_dp))
+        cse_4 = 4.0_dp*k_hz
+        cse_5 = M_*cse_4 + cse_4*m
+        cse_6 = cse_5**((-2.0_dp/5.0_dp))
+        cse_7 = m**((2.0_dp/5.0_dp))
+        cse_8 = 1.6605652005106006_dp*cse_7
+        cse_9 = cse_0*cse_1*cse_2*cse_3/cse_5**((7.0_dp/5.0_dp))
+        cse_10 = 2.6569043208169614_dp*cse_7*cse_9*k_hz
+        out(1) = cse_0*cse_1*cse_2*cse_3*cse_6*cse_8
+        out(2) = 0.6642260802042403_dp*cse_0*cse_1*cse_2*cse_3*cse_6/m** &
+      ((3.0_dp/5.0_dp )) - cse_10
+        out(3) = -cse_10 + 0.6642260802042403_dp*cse_0*cse_1*cse_3*cse_6 &
+      *cse_7/M_**(( 3.0_dp/5.0_dp))
+        out(4) = cse_8*cse_9*(-(8.0_dp/5.0_dp)*M_ - (8.0_dp/5.0_dp)*m)
+        out(5) = -0.33211304010212017_dp*cse_0*cse_1*cse_2*cse_6*cse_7/ &
+      zdot0**((6.0_dp/ 5.0_dp))
+    end subroutine closed_forms_hertz_contact_duration_and_derivatives
+
+    ! Linear damped contact duration and its derivatives in m, M, k1, c1, paper Eq. 35: out(1:5) =
+    !   (1) closed_forms_linear_contact_duration
+    !   (2) closed_forms_linear_contact_duration_d_impact_mass
+    !   (3) closed_forms_linear_contact_duration_d_main_mass
+    !   (4) closed_forms_linear_contact_duration_d_k1
+    !   (5) closed_forms_linear_contact_duration_d_c1
+    ! their common subexpressions computed once.
+    !   m: Impact mass m [kg]
+    !   M_: Main mass M [kg]
+    !   k1: Linear contact stiffness k₁ [N/m]
+    !   c1: Contact damping c₁ (below critical) [N s/m]
+    pure subroutine closed_forms_linear_contact_duration_and_derivatives(m, M_, k1, c1, out)
+        real(dp), intent(in) :: m, M_, k1, c1
+        real(dp), intent(out) :: out(5)
+        real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
+      cse_7, cse_8, cse_9, cse_10, cse_11
+        cse_0 = M_ + m
+        cse_1 = 1.0_dp/M_
+        cse_2 = 1.0_dp/m
+        cse_3 = cse_1*cse_2*k1
+        cse_4 = c1**2
+        cse_5 = M_**(-2)
+        cse_6 = m**(-2)
+        cse_7 = ((1.0_dp/4.0_dp))*cse_0**2
+        cse_8 = cse_0*cse_3 - cse_4*cse_5*cse_6*cse_7
+        cse_9 = cse_4*cse_7
+        cse_10 = ((1.0_dp/2.0_dp))*cse_3 - (1.0_dp/8.0_dp)*cse_4*cse_5* &
+      cse_6*(2.0_dp*M_ + 2.0_dp*m)
+        cse_11 = 3.141592653589793_dp/cse_8**((3.0_dp/2.0_dp))
+        out(1) = 3.141592653589793_dp/sqrt(cse_8)
+        out(2) = cse_11*(((1.0_dp/2.0_dp))*cse_0*cse_1*cse_6*k1 - cse_10 &
+      - cse_5*cse_9/m **3)
+        out(3) = cse_11*(((1.0_dp/2.0_dp))*cse_0*cse_2*cse_5*k1 - cse_10 &
+      - cse_6*cse_9/M_ **3)
+        out(4) = -(1.0_dp/2.0_dp)*cse_0*cse_1*cse_11*cse_2
+        out(5) = c1*cse_11*cse_5*cse_6*cse_7
+    end subroutine closed_forms_linear_contact_duration_and_derivatives
+
     ! ---- free_flight: Free flight between impacts (paper Eq. 7) ----
 
     ! Main-mass displacement x(t) in free flight [m], paper Eq. 7.
@@ -1933,6 +2015,159 @@ contains
       - M*cse_0)**2)
     end function forced_flight_linear_amplitude
 
+    ! The primary's displacement and velocity a time t into a flight (x, ẋ), Eq. F1 (derived here, beyond the paper): out(1:2) =
+    !   (1) forced_flight_forced_displacement
+    !   (2) forced_flight_forced_velocity
+    ! their common subexpressions computed once.
+    !   t: Time since the last event [s]
+    !   M: Main mass M [kg]
+    !   K: Main stiffness K [N/m]
+    !   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    !   F0: Force amplitude F0 on the main mass [N]
+    !   X_b: Base-motion amplitude X_b [m]
+    !   Omega: Forcing frequency Ω [rad/s]
+    !   phi: Forcing phase at t = 0, φ [rad]
+    !   x0: Main-mass displacement at t = 0 [m]
+    !   xdot0: Main-mass velocity at t = 0 [m/s]
+    pure subroutine forced_flight_forced_state(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0, out)
+        real(dp), intent(in) :: t, M, K, C, F0, X_b, Omega, phi, x0, xdot0
+        real(dp), intent(out) :: out(2)
+        real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
+      cse_7, cse_8, cse_9, cse_10, cse_11, cse_12, cse_14, cse_15, &
+      cse_16, cse_17, cse_18, cse_19, cse_20, cse_21, cse_22, cse_23, &
+      cse_24, cse_25, cse_26, cse_27, cse_28, cse_29, cse_30, cse_31, &
+      cse_32, cse_33, cse_34, cse_35
+        logical :: cse_13
+        cse_0 = Omega*t
+        cse_1 = cse_0 + phi
+        cse_2 = sin(cse_1)
+        cse_3 = cse_0*cse_2
+        cse_4 = cos(cse_0)
+        cse_5 = 2.0_dp*x0
+        cse_6 = sin(cse_0)
+        cse_7 = sin(phi)
+        cse_8 = K*X_b
+        cse_9 = F0*cse_7 - 2.0_dp*M*Omega*xdot0 + cse_7*cse_8
+        cse_10 = ((1.0_dp/2.0_dp))/K
+        cse_11 = Omega**2
+        cse_12 = M*cse_11
+        cse_13 = C == 0.0_dp .and. K == cse_12
+        cse_14 = C**2
+        cse_15 = cse_11*cse_14
+        cse_16 = K - cse_12
+        cse_17 = 1.0_dp/(cse_15 + cse_16**2)
+        cse_18 = F0 + cse_8
+        cse_19 = -C*Omega*X_b*cse_16 + C*Omega*cse_18
+        cse_20 = cse_17*cse_19
+        cse_21 = cos(cse_1)
+        cse_22 = cse_17*(X_b*cse_15 + cse_16*cse_18)
+        cse_23 = 1.0_dp/M
+        cse_24 = ((1.0_dp/2.0_dp))*C*cse_23
+        cse_25 = exp(-cse_24*t)
+        cse_26 = sqrt(K*cse_23 - (1.0_dp/4.0_dp)*cse_14/M**2)
+        cse_27 = cse_26*t
+        cse_28 = cos(cse_27)
+        cse_29 = cos(phi)
+        cse_30 = -cse_20*cse_7 - cse_22*cse_29 + x0
+        cse_31 = sin(cse_27)
+        cse_32 = -Omega*cse_20*cse_29 + Omega*cse_22*cse_7 + cse_24* &
+      cse_30 + xdot0
+        cse_33 = cse_25*(cse_28*cse_30 + cse_31*cse_32/cse_26)
+        cse_34 = Omega*cse_2
+        cse_35 = cse_11*cse_21*t
+        out(1) = merge(cse_10*(F0*cse_3 + K*(X_b*cse_3 + cse_4*cse_5) - &
+      cse_6*cse_9), cse_2*cse_20 + cse_21*cse_22 + cse_33, cse_13)
+        out(2) = merge(cse_10*(F0*cse_34 + F0*cse_35 + K*(-Omega*cse_5* &
+      cse_6 + X_b*cse_34 + X_b*cse_35) - Omega*cse_4*cse_9), Omega* &
+      cse_17*cse_19*cse_21 - cse_22*cse_34 - cse_24*cse_33 + cse_25*( &
+      -cse_26*cse_30*cse_31 + cse_28*cse_32), cse_13)
+    end subroutine forced_flight_forced_state
+
+    ! The state after a flight and its transition matrix: x, ẋ, ∂x/∂x0, ∂x/∂ẋ0, ∂ẋ/∂x0, ∂ẋ/∂ẋ0, Eq. F1 (derived here, beyond the paper): out(1:6) =
+    !   (1) forced_flight_forced_displacement
+    !   (2) forced_flight_forced_velocity
+    !   (3) forced_flight_forced_displacement_d_x0
+    !   (4) forced_flight_forced_displacement_d_xdot0
+    !   (5) forced_flight_forced_velocity_d_x0
+    !   (6) forced_flight_forced_velocity_d_xdot0
+    ! their common subexpressions computed once.
+    !   t: Time since the last event [s]
+    !   M: Main mass M [kg]
+    !   K: Main stiffness K [N/m]
+    !   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    !   F0: Force amplitude F0 on the main mass [N]
+    !   X_b: Base-motion amplitude X_b [m]
+    !   Omega: Forcing frequency Ω [rad/s]
+    !   phi: Forcing phase at t = 0, φ [rad]
+    !   x0: Main-mass displacement at t = 0 [m]
+    !   xdot0: Main-mass velocity at t = 0 [m/s]
+    pure subroutine forced_flight_forced_transition(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0, out)
+        real(dp), intent(in) :: t, M, K, C, F0, X_b, Omega, phi, x0, xdot0
+        real(dp), intent(out) :: out(6)
+        real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
+      cse_7, cse_8, cse_9, cse_10, cse_11, cse_12, cse_13, cse_15, &
+      cse_16, cse_17, cse_18, cse_19, cse_20, cse_21, cse_22, cse_23, &
+      cse_24, cse_25, cse_26, cse_27, cse_28, cse_29, cse_30, cse_31, &
+      cse_32, cse_33, cse_34, cse_35, cse_36, cse_37, cse_38, cse_39, &
+      cse_40, cse_41
+        logical :: cse_14
+        cse_0 = Omega*t
+        cse_1 = cse_0 + phi
+        cse_2 = sin(cse_1)
+        cse_3 = cse_0*cse_2
+        cse_4 = cos(cse_0)
+        cse_5 = 2.0_dp*x0
+        cse_6 = sin(cse_0)
+        cse_7 = sin(phi)
+        cse_8 = K*X_b
+        cse_9 = F0*cse_7 - 2.0_dp*M*Omega*xdot0 + cse_7*cse_8
+        cse_10 = 1.0_dp/K
+        cse_11 = ((1.0_dp/2.0_dp))*cse_10
+        cse_12 = Omega**2
+        cse_13 = M*cse_12
+        cse_14 = C == 0.0_dp .and. K == cse_13
+        cse_15 = C**2
+        cse_16 = cse_12*cse_15
+        cse_17 = K - cse_13
+        cse_18 = 1.0_dp/(cse_16 + cse_17**2)
+        cse_19 = F0 + cse_8
+        cse_20 = -C*Omega*X_b*cse_17 + C*Omega*cse_19
+        cse_21 = cse_18*cse_20
+        cse_22 = cos(cse_1)
+        cse_23 = cse_18*(X_b*cse_16 + cse_17*cse_19)
+        cse_24 = 1.0_dp/M
+        cse_25 = ((1.0_dp/2.0_dp))*C*cse_24
+        cse_26 = exp(-cse_25*t)
+        cse_27 = sqrt(K*cse_24 - (1.0_dp/4.0_dp)*cse_15/M**2)
+        cse_28 = cse_27*t
+        cse_29 = cos(cse_28)
+        cse_30 = cos(phi)
+        cse_31 = -cse_21*cse_7 - cse_23*cse_30 + x0
+        cse_32 = -Omega*cse_21*cse_30 + Omega*cse_23*cse_7 + cse_25* &
+      cse_31 + xdot0
+        cse_33 = sin(cse_28)
+        cse_34 = cse_33/cse_27
+        cse_35 = cse_26*(cse_29*cse_31 + cse_32*cse_34)
+        cse_36 = Omega*cse_2
+        cse_37 = cse_12*cse_22*t
+        cse_38 = Omega*cse_6
+        cse_39 = cse_27*cse_33
+        cse_40 = cse_26*(cse_25*cse_34 + cse_29)
+        cse_41 = cse_26*cse_34
+        out(1) = merge(cse_11*(F0*cse_3 + K*(X_b*cse_3 + cse_4*cse_5) - &
+      cse_6*cse_9), cse_2*cse_21 + cse_22*cse_23 + cse_35, cse_14)
+        out(2) = merge(cse_11*(F0*cse_36 + F0*cse_37 + K*(X_b*cse_36 + &
+      X_b*cse_37 - cse_38*cse_5) - Omega*cse_4*cse_9), Omega*cse_18* &
+      cse_20*cse_22 - cse_23*cse_36 - cse_25*cse_35 + cse_26*(cse_29* &
+      cse_32 - cse_31* cse_39), cse_14)
+        out(3) = merge(cse_4, cse_40, cse_14)
+        out(4) = merge(M*cse_10*cse_38, cse_41, cse_14)
+        out(5) = merge(-cse_38, -cse_25*cse_40 + cse_26*(cse_25*cse_29 - &
+      cse_39), cse_14)
+        out(6) = merge(cse_10*cse_13*cse_4, -cse_25*cse_41 + cse_26* &
+      cse_29, cse_14)
+    end subroutine forced_flight_forced_transition
+
     ! ---- rigid_impact: The rigid impact law (Eq. F2 (derived here, beyond the paper)) ----
 
     ! Main-mass velocity after a rigid impact [m/s], Eq. F2 (derived here, beyond the paper).
@@ -2105,6 +2340,45 @@ contains
         real(dp) :: f_result
         f_result = -M_*a_minus*(e + 1.0_dp)/(zdot_minus*(M_ + m))
     end function rigid_impact_saltation_impact_velocity_z
+
+    ! Both velocities after a rigid impact and their derivatives in e, ẋ⁻, ẏ⁻ (the impact map's Jacobian), Eq. F2 (derived here, beyond the paper): out(1:8) =
+    !   (1) rigid_impact_main_velocity_after
+    !   (2) rigid_impact_impact_velocity_after
+    !   (3) rigid_impact_main_velocity_after_d_e
+    !   (4) rigid_impact_main_velocity_after_d_xdot_minus
+    !   (5) rigid_impact_main_velocity_after_d_ydot_minus
+    !   (6) rigid_impact_impact_velocity_after_d_e
+    !   (7) rigid_impact_impact_velocity_after_d_xdot_minus
+    !   (8) rigid_impact_impact_velocity_after_d_ydot_minus
+    ! their common subexpressions computed once.
+    !   m: Impact mass m [kg]
+    !   M_: Main mass M [kg]
+    !   e: Coefficient of restitution e [1]
+    !   xdot_minus: Main-mass velocity before the impact [m/s]
+    !   ydot_minus: Impact-mass velocity before the impact [m/s]
+    pure subroutine rigid_impact_velocities_after_and_derivatives(m, M_, e, xdot_minus, ydot_minus, out)
+        real(dp), intent(in) :: m, M_, e, xdot_minus, ydot_minus
+        real(dp), intent(out) :: out(8)
+        real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
+      cse_7, cse_8
+        cse_0 = e + 1.0_dp
+        cse_1 = xdot_minus - ydot_minus
+        cse_2 = 1.0_dp/(M_ + m)
+        cse_3 = cse_2*m
+        cse_4 = cse_1*cse_3
+        cse_5 = M_*cse_2
+        cse_6 = cse_1*cse_5
+        cse_7 = cse_0*cse_3
+        cse_8 = cse_0*cse_5
+        out(1) = -cse_0*cse_4 + xdot_minus
+        out(2) = cse_0*cse_6 + ydot_minus
+        out(3) = -cse_4
+        out(4) = 1.0_dp - cse_7
+        out(5) = cse_7
+        out(6) = cse_6
+        out(7) = cse_8
+        out(8) = 1.0_dp - cse_8
+    end subroutine rigid_impact_velocities_after_and_derivatives
 
     ! ---- periodic_orbit: The symmetric two-impact periodic motion (Eq. F3 (derived here, beyond the paper)) ----
 
@@ -4580,6 +4854,266 @@ contains
       + cse_26**2*cse_4/Omega **6)
     end function periodic_orbit_impact_mass_velocity_after_d_d
 
+    ! The phase condition's residual and its derivatives in φ, e, d, m, F0, X_b, Eq. F3 (derived here, beyond the paper): out(1:7) =
+    !   (1) periodic_orbit_phase_residual
+    !   (2) periodic_orbit_phase_residual_d_phi
+    !   (3) periodic_orbit_phase_residual_d_e
+    !   (4) periodic_orbit_phase_residual_d_d
+    !   (5) periodic_orbit_phase_residual_d_impact_mass
+    !   (6) periodic_orbit_phase_residual_d_F0
+    !   (7) periodic_orbit_phase_residual_d_X_b
+    ! their common subexpressions computed once.
+    !   M_: Main mass M [kg]
+    !   K: Main stiffness K [N/m]
+    !   C: Main damping C (underdamped) [N s/m]
+    !   m: Impact mass m [kg]
+    !   e: Coefficient of restitution e [1]
+    !   d: Total clearance d [m]
+    !   F0: Force amplitude F0 on the main mass [N]
+    !   X_b: Base-motion amplitude X_b [m]
+    !   Omega: Forcing frequency Ω [rad/s]
+    !   phi: Forcing phase at the first impact φ [rad]
+    pure subroutine periodic_orbit_phase_residual_and_derivatives(M_, K, C, m, e, d, F0, X_b, Omega, phi, out)
+        real(dp), intent(in) :: M_, K, C, m, e, d, F0, X_b, Omega, phi
+        real(dp), intent(out) :: out(7)
+        real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
+      cse_7, cse_8, cse_9, cse_10, cse_11, cse_12, cse_13, cse_14, &
+      cse_15, cse_16, cse_17, cse_18, cse_19, cse_20, cse_21, cse_22, &
+      cse_23, cse_24, cse_25, cse_26, cse_27, cse_28, cse_29, cse_30, &
+      cse_31, cse_32, cse_33, cse_34, cse_35, cse_36, cse_37, cse_38, &
+      cse_39, cse_40, cse_41, cse_42, cse_43, cse_44, cse_45, cse_46, &
+      cse_47, cse_48, cse_49, cse_50, cse_51, cse_52, cse_53, cse_54, &
+      cse_55, cse_56, cse_58, cse_59, cse_60, cse_61, cse_62, cse_63, &
+      cse_64, cse_65, cse_66, cse_67, cse_68, cse_69, cse_70, cse_71, &
+      cse_72, cse_73, cse_74, cse_75, cse_76, cse_77, cse_78, cse_79, &
+      cse_80, cse_81, cse_82, cse_83, cse_84, cse_85, cse_86, cse_87, &
+      cse_88, cse_89, cse_90, cse_91, cse_92, cse_93, cse_94, cse_95, &
+      cse_96, cse_97, cse_98, cse_99, cse_100, cse_101, cse_102, &
+      cse_103, cse_104, cse_105, cse_106, cse_107, cse_108, cse_109, &
+      cse_110, cse_111, cse_112, cse_113, cse_114, cse_115, cse_116, &
+      cse_117, cse_118, cse_119, cse_120, cse_121, cse_122, cse_123, &
+      cse_124, cse_125, cse_126, cse_127, cse_128, cse_129, cse_130, &
+      cse_131, cse_132, cse_133, cse_134, cse_135, cse_136, cse_137, &
+      cse_138, cse_139, cse_140, cse_141, cse_142, cse_143, cse_144, &
+      cse_145, cse_146, cse_147, cse_148, cse_149, cse_150, cse_151, &
+      cse_152, cse_153, cse_154
+        logical :: cse_57
+        cse_0 = Omega**2
+        cse_1 = 1.0_dp/cse_0
+        cse_2 = cse_1*d
+        cse_3 = cse_2*e
+        cse_4 = 1.0_dp/M_
+        cse_5 = cse_4*m
+        cse_6 = 2.0_dp*cse_2
+        cse_7 = cse_5*cse_6
+        cse_8 = 1.0_dp/Omega
+        cse_9 = 3.141592653589793_dp*cse_8
+        cse_10 = ((1.0_dp/2.0_dp))*cse_9
+        cse_11 = C*cse_4
+        cse_12 = exp(-cse_10*cse_11)
+        cse_13 = C**2
+        cse_14 = sqrt(K*cse_4 - (1.0_dp/4.0_dp)*cse_13/M_**2)
+        cse_15 = cse_14*cse_9
+        cse_16 = cos(cse_15)
+        cse_17 = ((1.0_dp/2.0_dp))*cse_11
+        cse_18 = sin(cse_15)
+        cse_19 = 1.0_dp/cse_14
+        cse_20 = cse_18*cse_19
+        cse_21 = cse_17*cse_20
+        cse_22 = cse_16 + cse_21
+        cse_23 = cse_12*cse_22
+        cse_24 = cse_2*cse_23
+        cse_25 = 2.0_dp*cse_5
+        cse_26 = cse_12*cse_16
+        cse_27 = cse_12*cse_21
+        cse_28 = cse_26 - cse_27
+        cse_29 = cse_2*cse_28
+        cse_30 = cse_28*cse_3
+        cse_31 = cse_23*cse_29
+        cse_32 = cse_23*cse_30
+        cse_33 = -cse_12*(-cse_14*cse_18 + cse_16*cse_17) + cse_17* &
+      cse_23
+        cse_34 = -cse_33
+        cse_35 = cse_12*cse_20
+        cse_36 = cse_34*cse_35
+        cse_37 = cse_2*cse_36
+        cse_38 = cse_3*cse_36
+        cse_39 = sin(phi)
+        cse_40 = sqrt(K)
+        cse_41 = M_**((-1.0_dp/2.0_dp))
+        cse_42 = cse_40*cse_41
+        cse_43 = cse_10*(Omega - cse_42)
+        cse_44 = cos(cse_43)
+        cse_45 = 1.0_dp/(Omega + cse_42)
+        cse_46 = merge(sin(cse_43)/cse_43, 1.0_dp, cse_43 /= 0.0_dp)
+        cse_47 = cse_45*cse_46
+        cse_48 = 3.141592653589793_dp*cse_47
+        cse_49 = cse_44*cse_48
+        cse_50 = M_**((-3.0_dp/2.0_dp))
+        cse_51 = cse_40*cse_50
+        cse_52 = C*cse_49*cse_51
+        cse_53 = F0 + K*X_b
+        cse_54 = sin(cse_43)
+        cse_55 = cse_4*cse_54
+        cse_56 = cse_48*cse_55
+        cse_57 = C == 0.0_dp
+        cse_58 = cse_0*cse_13
+        cse_59 = K - M_*cse_0
+        cse_60 = 1.0_dp/(cse_58 + cse_59**2)
+        cse_61 = X_b*cse_58 + cse_53*cse_59
+        cse_62 = cse_60*cse_61
+        cse_63 = -cse_26 + cse_27 - 1.0_dp
+        cse_64 = Omega*cse_63
+        cse_65 = C*Omega
+        cse_66 = cse_59*cse_65
+        cse_67 = C*Omega*cse_53 - X_b*cse_66
+        cse_68 = merge(X_b*cse_52 - cse_53*cse_56, cse_33*cse_60*cse_67 &
+      - cse_62*cse_64, cse_57)
+        cse_69 = Omega**(-3)
+        cse_70 = 3.141592653589793_dp*cse_69
+        cse_71 = cse_68*cse_70
+        cse_72 = cse_1*e
+        cse_73 = cse_48*cse_54
+        cse_74 = cse_11*cse_73
+        cse_75 = cse_41*cse_49/cse_40
+        cse_76 = Omega*cse_35
+        cse_77 = -cse_23 - 1.0_dp
+        cse_78 = cse_60*cse_67
+        cse_79 = merge(-X_b*cse_74 - cse_53*cse_75, cse_62*cse_76 + &
+      cse_77*cse_78, cse_57 )
+        cse_80 = 2.0_dp*cse_79
+        cse_81 = cse_71*e
+        cse_82 = cse_34*cse_70
+        cse_83 = cse_79*cse_82
+        cse_84 = cse_28*cse_72
+        cse_85 = 4.0_dp*cse_1
+        cse_86 = cse_5*cse_85
+        cse_87 = 4.0_dp*cse_79
+        cse_88 = cse_5*cse_84
+        cse_89 = 2.0_dp*cse_72
+        cse_90 = cse_35*cse_89
+        cse_91 = cse_35*cse_68
+        cse_92 = 4.0_dp*cse_72
+        cse_93 = cse_5*cse_92
+        cse_94 = 2.0_dp*cse_1
+        cse_95 = cse_1*cse_28
+        cse_96 = cse_35*cse_94
+        cse_97 = -cse_68*cse_96 + cse_79*cse_94 + cse_80*cse_95
+        cse_98 = cse_23*cse_71 + cse_23*cse_81 + cse_68*cse_90 + cse_71 &
+      - cse_72*cse_80 + cse_79*cse_86 - cse_80*cse_84 + cse_81 - cse_83 &
+      *e - cse_83 - cse_87*cse_88 + cse_91*cse_93 + cse_97
+        cse_99 = cos(phi)
+        cse_100 = cse_56*cse_65
+        cse_101 = cse_47*cse_9
+        cse_102 = cse_101*cse_44
+        cse_103 = cse_102*cse_51
+        cse_104 = merge(-X_b*cse_100 - cse_103*cse_53, cse_33*cse_62 + &
+      cse_64*cse_78, cse_57)
+        cse_105 = cse_104*cse_70
+        cse_106 = cse_65*cse_75
+        cse_107 = merge(-X_b*cse_106 + 3.141592653589793_dp*cse_4*cse_45 &
+      *cse_46*cse_53* cse_54*cse_8, cse_60*cse_61*cse_77 - cse_76* &
+      cse_78, cse_57)
+        cse_108 = 2.0_dp*cse_107
+        cse_109 = cse_105*e
+        cse_110 = cse_107*cse_82
+        cse_111 = 4.0_dp*cse_107
+        cse_112 = cse_104*cse_35
+        cse_113 = -cse_104*cse_96 + cse_107*cse_94 + cse_108*cse_95
+        cse_114 = cse_105*cse_23 + cse_105 + cse_107*cse_86 - cse_108* &
+      cse_72 - cse_108* cse_84 + cse_109*cse_23 + cse_109 - cse_110*e - &
+      cse_110 - cse_111 *cse_88 + cse_112*cse_89 + cse_112*cse_93 + &
+      cse_113
+        cse_115 = cse_5*cse_95
+        cse_116 = cse_5*cse_94
+        cse_117 = cse_36*cse_72
+        cse_118 = 2.0_dp*cse_4
+        cse_119 = cse_4*cse_85
+        cse_120 = cse_4*cse_84
+        cse_121 = cse_4*cse_92
+        cse_122 = cse_59*cse_60
+        cse_123 = cse_60*cse_65
+        cse_124 = merge(-cse_75, cse_122*cse_76 + cse_123*cse_77, cse_57 &
+      )
+        cse_125 = 2.0_dp*cse_124
+        cse_126 = 4.0_dp*cse_88
+        cse_127 = merge(-cse_56, -cse_122*cse_64 + cse_123*cse_33, &
+      cse_57)
+        cse_128 = cse_127*cse_70
+        cse_129 = cse_128*e
+        cse_130 = cse_124*cse_82
+        cse_131 = cse_35*cse_93
+        cse_132 = C*cse_0*cse_60
+        cse_133 = merge(cse_101*cse_55, -cse_132*cse_35 + cse_59*cse_60* &
+      cse_77, cse_57)
+        cse_134 = 2.0_dp*cse_133
+        cse_135 = merge(-cse_103, cse_122*cse_33 + cse_132*cse_63, &
+      cse_57)
+        cse_136 = cse_135*cse_70
+        cse_137 = cse_136*e
+        cse_138 = cse_133*cse_82
+        cse_139 = K*cse_59 + cse_58
+        cse_140 = cse_139*cse_60
+        cse_141 = K*cse_65 - cse_66
+        cse_142 = cse_141*cse_60
+        cse_143 = merge(-cse_42*cse_49 - cse_74, cse_140*cse_76 + &
+      cse_142*cse_77, cse_57)
+        cse_144 = 2.0_dp*cse_143
+        cse_145 = merge(-K*cse_4*cse_73 + cse_52, -cse_140*cse_64 + &
+      cse_141*cse_33*cse_60, cse_57)
+        cse_146 = cse_145*cse_70
+        cse_147 = cse_146*e
+        cse_148 = cse_143*cse_82
+        cse_149 = merge(3.141592653589793_dp*K*cse_4*cse_45*cse_46* &
+      cse_54*cse_8 - cse_106, cse_139*cse_60*cse_77 - cse_142*cse_76, &
+      cse_57)
+        cse_150 = 2.0_dp*cse_149
+        cse_151 = merge(-K**((3.0_dp/2.0_dp))*cse_102*cse_50 - cse_100, &
+      cse_140*cse_33 + cse_142*cse_64, cse_57)
+        cse_152 = cse_151*cse_70
+        cse_153 = cse_152*e
+        cse_154 = cse_149*cse_82
+        out(1) = cse_114*cse_99 - cse_2 + cse_23*cse_3 - cse_24*cse_25 - &
+      cse_24 + cse_25* cse_30 + cse_25*cse_32 - cse_25*cse_38 - cse_29 &
+      + cse_3 + cse_30 - cse_31 + cse_32 + cse_37 - cse_38 + cse_39* &
+      cse_98 - cse_7
+        out(2) = -cse_114*cse_39 + cse_98*cse_99
+        out(3) = cse_2 + cse_24 + cse_25*cse_29 + cse_25*cse_31 + cse_29 &
+      + cse_31 - cse_36*cse_7 - cse_37 + cse_39*(4.0_dp*cse_1*cse_12* &
+      cse_18*cse_19 *cse_4*cse_68*m - cse_115*cse_87 + &
+      3.141592653589793_dp*cse_12* cse_22*cse_68*cse_69 + &
+      3.141592653589793_dp*cse_68*cse_69 - cse_83 - cse_97) + cse_99*( &
+      4.0_dp*cse_1*cse_104*cse_12*cse_18* cse_19*cse_4*m + &
+      3.141592653589793_dp*cse_104*cse_12*cse_22* cse_69 + &
+      3.141592653589793_dp*cse_104*cse_69 - cse_110 - cse_111* cse_115 &
+      - cse_113)
+        out(4) = cse_1*cse_12*cse_18*cse_19*cse_34 + 2.0_dp*cse_1*cse_12 &
+      *cse_22*cse_28* cse_4*e*m + cse_1*cse_12*cse_22*cse_28*e + cse_1* &
+      cse_12*cse_22*e - cse_1*cse_23 + 2.0_dp*cse_1*cse_28*cse_4*e*m + &
+      cse_1*cse_28*e + cse_1*e - cse_1 - cse_116*cse_23 - cse_116 - &
+      cse_117*cse_25 - cse_117 - cse_23*cse_95 - cse_95
+        out(5) = -cse_118*cse_24 + cse_118*cse_30 + cse_118*cse_32 - &
+      cse_118*cse_38 + cse_39*(cse_119*cse_79 - cse_120*cse_87 + &
+      cse_121*cse_91) - cse_4 *cse_6 + cse_99*(cse_107*cse_119 - &
+      cse_111*cse_120 + cse_112* cse_121)
+        out(6) = cse_39*(-cse_124*cse_126 + cse_124*cse_86 + cse_124* &
+      cse_94 - cse_125* cse_72 - cse_125*cse_84 + cse_125*cse_95 + &
+      cse_127*cse_131 + cse_127*cse_90 - cse_127*cse_96 + cse_128* &
+      cse_23 + cse_128 + cse_129*cse_23 + cse_129 - cse_130*e - cse_130 &
+      ) + cse_99*( -cse_126*cse_133 + cse_131*cse_135 + cse_133*cse_86 &
+      + cse_133* cse_94 - cse_134*cse_72 - cse_134*cse_84 + cse_134* &
+      cse_95 + cse_135*cse_90 - cse_135*cse_96 + cse_136*cse_23 + &
+      cse_136 + cse_137*cse_23 + cse_137 - cse_138*e - cse_138)
+        out(7) = cse_39*(-cse_126*cse_143 + cse_131*cse_145 + cse_143* &
+      cse_86 + cse_143* cse_94 - cse_144*cse_72 - cse_144*cse_84 + &
+      cse_144*cse_95 + cse_145*cse_90 - cse_145*cse_96 + cse_146*cse_23 &
+      + cse_146 + cse_147*cse_23 + cse_147 - cse_148*e - cse_148) + &
+      cse_99*( -cse_126*cse_149 + cse_131*cse_151 + cse_149*cse_86 + &
+      cse_149* cse_94 - cse_150*cse_72 - cse_150*cse_84 + cse_150* &
+      cse_95 + cse_151*cse_90 - cse_151*cse_96 + cse_152*cse_23 + &
+      cse_152 + cse_153*cse_23 + cse_153 - cse_154*e - cse_154)
+    end subroutine periodic_orbit_phase_residual_and_derivatives
+
     ! ---- hunt_crossley: The Hunt–Crossley contact: exact restitution (Eq. F4 (derived here, beyond the paper)) ----
 
     ! Largest penetration of the Hunt–Crossley contact (n = 3/2) [m], Eq. F4 (derived here, beyond the paper).
@@ -5395,6 +5929,134 @@ contains
       )**2)/( 3.141592653589793_dp*C*sqrt(K)*sqrt(cse_10)*xi**3 - &
       16.0_dp*cse_1 *cse_11*cse_3*cse_9*m/(3.141592653589793_dp*cse_4))
     end function slow_flow_backbone_clearance
+
+    ! The clearance on the response surface and its slopes in every argument, Eq. F5 (derived here, beyond the paper): out(1:10) =
+    !   (1) slow_flow_clearance_for_response
+    !   (2) slow_flow_clearance_for_response_d_main_mass
+    !   (3) slow_flow_clearance_for_response_d_K
+    !   (4) slow_flow_clearance_for_response_d_C
+    !   (5) slow_flow_clearance_for_response_d_impact_mass
+    !   (6) slow_flow_clearance_for_response_d_e
+    !   (7) slow_flow_clearance_for_response_d_F0
+    !   (8) slow_flow_clearance_for_response_d_X_b
+    !   (9) slow_flow_clearance_for_response_d_Omega
+    !   (10) slow_flow_clearance_for_response_d_xi
+    ! their common subexpressions computed once.
+    !   M_: Main mass M [kg]
+    !   K: Main stiffness K [N/m]
+    !   C: Main damping C (underdamped) [N s/m]
+    !   m: Impact mass m [kg]
+    !   e: Coefficient of restitution e [1]
+    !   F0: Force amplitude F0 on the main mass [N]
+    !   X_b: Base-motion amplitude X_b [m]
+    !   Omega: Forcing frequency Ω [rad/s]
+    !   xi: Primary amplitude over half the clearance ξ [1]
+    pure subroutine slow_flow_clearance_for_response_and_derivatives(M_, K, C, m, e, F0, X_b, Omega, xi, out)
+        real(dp), intent(in) :: M_, K, C, m, e, F0, X_b, Omega, xi
+        real(dp), intent(out) :: out(10)
+        real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
+      cse_7, cse_8, cse_9, cse_10, cse_11, cse_12, cse_13, cse_14, &
+      cse_15, cse_16, cse_17, cse_18, cse_19, cse_20, cse_21, cse_22, &
+      cse_23, cse_24, cse_25, cse_26, cse_27, cse_28, cse_29, cse_30, &
+      cse_31, cse_32, cse_33, cse_34, cse_35, cse_36, cse_37, cse_38, &
+      cse_39, cse_40, cse_41, cse_42, cse_43, cse_44, cse_45, cse_46, &
+      cse_47, cse_48, cse_49, cse_50, cse_51, cse_52, cse_53, cse_54, &
+      cse_55, cse_56, cse_57, cse_58, cse_59, cse_60, cse_61, cse_62, &
+      cse_63, cse_64, cse_65, cse_66, cse_67, cse_68, cse_69, cse_70, &
+      cse_71
+        cse_0 = xi**2
+        cse_1 = C*cse_0
+        cse_2 = 3.141592653589793_dp**(-3)
+        cse_3 = e + 1.0_dp
+        cse_4 = 1.0_dp/cse_3
+        cse_5 = Omega**2
+        cse_6 = cse_5*m
+        cse_7 = cse_2*cse_4*cse_6
+        cse_8 = 3.141592653589793_dp**(-2)
+        cse_9 = cse_3**(-2)
+        cse_10 = cse_8*cse_9
+        cse_11 = e - 1.0_dp
+        cse_12 = cse_11**2
+        cse_13 = 4.0_dp*cse_12
+        cse_14 = cse_10*cse_13
+        cse_15 = cse_14 + 1.0_dp
+        cse_16 = cse_15**(-2)
+        cse_17 = sqrt(cse_0*cse_14 + cse_0 - cse_14)
+        cse_18 = cse_17 + 1.0_dp
+        cse_19 = cse_18**2
+        cse_20 = cse_16*cse_19
+        cse_21 = cse_20*cse_7
+        cse_22 = 16.0_dp*cse_11
+        cse_23 = Omega*cse_1 - cse_21*cse_22
+        cse_24 = K - M_*cse_5
+        cse_25 = 1.0_dp/cse_15
+        cse_26 = cse_18*cse_25
+        cse_27 = cse_6*cse_8
+        cse_28 = cse_26*cse_27
+        cse_29 = cse_18*cse_25 - 1.0_dp
+        cse_30 = 8.0_dp*cse_29
+        cse_31 = cse_0*cse_24 - cse_28*cse_30
+        cse_32 = cse_23**2 + cse_31**2
+        cse_33 = cse_32**((-1.0_dp/2.0_dp))
+        cse_34 = F0 + K*X_b
+        cse_35 = X_b**2
+        cse_36 = C**2
+        cse_37 = cse_36*cse_5
+        cse_38 = sqrt(cse_34**2 + cse_35*cse_37)
+        cse_39 = 2.0_dp*cse_38
+        cse_40 = cse_33*cse_39
+        cse_41 = cse_39/cse_32**((3.0_dp/2.0_dp))
+        cse_42 = cse_41*xi**3
+        cse_43 = cse_31*cse_42
+        cse_44 = 2.0_dp*cse_33*xi/cse_38
+        cse_45 = cse_34*cse_44
+        cse_46 = cse_35*cse_44
+        cse_47 = cse_2*cse_20*cse_4
+        cse_48 = cse_26*cse_8
+        cse_49 = cse_41*xi
+        cse_50 = cse_3**(-3)
+        cse_51 = cse_50*cse_8
+        cse_52 = cse_12*cse_51
+        cse_53 = 2.0_dp*e - 2.0_dp
+        cse_54 = cse_10*cse_53
+        cse_55 = -cse_0*cse_13*cse_51 + 2.0_dp*cse_0*cse_53*cse_8*cse_9 &
+      + 4.0_dp*cse_12* cse_50*cse_8 - 2.0_dp*cse_54
+        cse_56 = 1.0_dp/cse_17
+        cse_57 = cse_16*cse_18
+        cse_58 = cse_56*cse_57
+        cse_59 = 64.0_dp*cse_11
+        cse_60 = cse_59*cse_7
+        cse_61 = ((1.0_dp/2.0_dp))*cse_23
+        cse_62 = cse_57*(8.0_dp*cse_52 - 4.0_dp*cse_54)
+        cse_63 = 16.0_dp*cse_27
+        cse_64 = cse_29*cse_63
+        cse_65 = cse_25*cse_56
+        cse_66 = cse_55*cse_65
+        cse_67 = ((1.0_dp/2.0_dp))*cse_31
+        cse_68 = Omega*m
+        cse_69 = 4.0_dp*xi
+        cse_70 = cse_10*cse_12*cse_69 + xi
+        cse_71 = cse_58*cse_70
+        out(1) = cse_40*xi
+        out(2) = cse_43*cse_5
+        out(3) = X_b*cse_45 - cse_43
+        out(4) = C*cse_46*cse_5 - Omega*cse_23*cse_42
+        out(5) = cse_49*(cse_22*cse_23*cse_47*cse_5 + cse_30*cse_31* &
+      cse_48*cse_5)
+        out(6) = cse_49*(-cse_61*(32.0_dp*cse_11*cse_16*cse_19*cse_2* &
+      cse_5*cse_9*m - 32.0_dp*cse_11*cse_19*cse_7*(16.0_dp*cse_52 - &
+      8.0_dp*cse_54)/ cse_15**3 - 32.0_dp*cse_21 - cse_55*cse_58*cse_60 &
+      ) - cse_67*( -16.0_dp*cse_28*(cse_62 + cse_66) - cse_62*cse_64 - &
+      cse_64*cse_66 ))
+        out(7) = cse_45
+        out(8) = cse_44*(K*cse_34 + X_b*cse_37)
+        out(9) = Omega*cse_36*cse_46 + cse_49*(-cse_61*(2.0_dp*cse_1 - &
+      cse_47*cse_59* cse_68) - cse_67*(-4.0_dp*M_*Omega*cse_0 - 32.0_dp &
+      *cse_29*cse_48* cse_68))
+        out(10) = cse_40 + cse_49*(-cse_61*(C*Omega*cse_69 - cse_60* &
+      cse_71) - cse_67*( 4.0_dp*cse_24*xi - cse_63*cse_71 - cse_64* &
+      cse_65*cse_70))
+    end subroutine slow_flow_clearance_for_response_and_derivatives
 
     ! ---- hertz_contact: The contact from materials and geometry (Eq. F5 (derived here, beyond the paper)) ----
 

@@ -26,6 +26,8 @@ __all__ = [
     "linear_contact_duration_d_main_mass",
     "linear_contact_duration_d_k1",
     "linear_contact_duration_d_c1",
+    "hertz_contact_duration_and_derivatives",
+    "linear_contact_duration_and_derivatives",
 ]
 
 
@@ -220,3 +222,60 @@ def linear_contact_duration_d_c1(m, M, k1, c1):
     _x0 = M + m
     _x1 = (1/4)*_x0**2/(M**2*m**2)
     return jax.numpy.pi*_x1*c1/(-_x1*c1**2 + _x0*k1/(M*m))**(3/2)
+
+
+@jax.jit
+def hertz_contact_duration_and_derivatives(m, M, k_hz, zdot0):
+    r"""Hertz contact duration and its derivatives in m, M, k_hz, zdot0, paper Eq. 34: the tuple
+    (``hertz_contact_duration``, ``hertz_contact_duration_d_impact_mass``, ``hertz_contact_duration_d_main_mass``, ``hertz_contact_duration_d_k_hz``, ``hertz_contact_duration_d_zdot0``), their common subexpressions computed once.
+    """
+    _x0 = 5**(2/5)
+    _x1 = jax.numpy.sqrt(jax.numpy.pi)
+    _x2 = M**(2/5)
+    _x3 = zdot0**(-1/5)
+    _x4 = 4*k_hz
+    _x5 = M*_x4 + _x4*m
+    _x6 = _x5**(-2/5)
+    _x7 = m**(2/5)
+    _x8 = 1.6605652005106006*_x7
+    _x9 = _x0*_x1*_x2*_x3/_x5**(7/5)
+    _x10 = 2.6569043208169614*_x7*_x9*k_hz
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            _x0*_x1*_x2*_x3*_x6*_x8,
+            0.6642260802042403*_x0*_x1*_x2*_x3*_x6/m**(3/5) - _x10,
+            -_x10 + 0.6642260802042403*_x0*_x1*_x3*_x6*_x7/M**(3/5),
+            _x8*_x9*(-8/5*M - 8/5*m),
+            -0.33211304010212017*_x0*_x1*_x2*_x6*_x7/zdot0**(6/5),
+            m, M, k_hz, zdot0,
+        )[:5]
+    )
+
+
+@jax.jit
+def linear_contact_duration_and_derivatives(m, M, k1, c1):
+    r"""Linear damped contact duration and its derivatives in m, M, k1, c1, paper Eq. 35: the tuple
+    (``linear_contact_duration``, ``linear_contact_duration_d_impact_mass``, ``linear_contact_duration_d_main_mass``, ``linear_contact_duration_d_k1``, ``linear_contact_duration_d_c1``), their common subexpressions computed once.
+    """
+    _x0 = M + m
+    _x1 = M**(-1.0)
+    _x2 = m**(-1.0)
+    _x3 = _x1*_x2*k1
+    _x4 = c1**2
+    _x5 = M**(-2.0)
+    _x6 = m**(-2.0)
+    _x7 = (1/4)*_x0**2
+    _x8 = _x0*_x3 - _x4*_x5*_x6*_x7
+    _x9 = _x4*_x7
+    _x10 = (1/2)*_x3 - 1/8*_x4*_x5*_x6*(2*M + 2*m)
+    _x11 = jax.numpy.pi/_x8**(3/2)
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            jax.numpy.pi/jax.numpy.sqrt(_x8),
+            _x11*((1/2)*_x0*_x1*_x6*k1 - _x10 - _x5*_x9/m**3),
+            _x11*((1/2)*_x0*_x2*_x5*k1 - _x10 - _x6*_x9/M**3),
+            -1/2*_x0*_x1*_x11*_x2,
+            _x11*_x5*_x6*_x7*c1,
+            m, M, k1, c1,
+        )[:5]
+    )

@@ -32,6 +32,8 @@ __all__ = [
     "steady_cosine",
     "steady_sine",
     "linear_amplitude",
+    "forced_state",
+    "forced_transition",
 ]
 
 
@@ -714,3 +716,113 @@ def linear_amplitude(M, K, C, F0, X_b, Omega):
     _x0 = Omega**2
     _x1 = C**2*_x0
     return jax.numpy.sqrt(X_b**2*_x1 + (F0 + K*X_b)**2)/jax.numpy.sqrt(_x1 + (K - M*_x0)**2)
+
+
+@jax.jit
+def forced_state(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""The primary's displacement and velocity a time t into a flight (x, ẋ), Eq. F1 (derived here, beyond the paper): the tuple
+    (``forced_displacement``, ``forced_velocity``), their common subexpressions computed once.
+    """
+    _x0 = Omega*t
+    _x1 = _x0 + phi
+    _x2 = jax.numpy.sin(_x1)
+    _x3 = _x0*_x2
+    _x4 = jax.numpy.cos(_x0)
+    _x5 = 2*x0
+    _x6 = jax.numpy.sin(_x0)
+    _x7 = jax.numpy.sin(phi)
+    _x8 = K*X_b
+    _x9 = F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8
+    _x10 = (1/2)/K
+    _x11 = Omega**2
+    _x12 = M*_x11
+    _x13 = jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x12)]), axis=0)
+    _x14 = C**2
+    _x15 = _x11*_x14
+    _x16 = K - _x12
+    _x17 = (_x15 + _x16**2)**(-1.0)
+    _x18 = F0 + _x8
+    _x19 = -C*Omega*X_b*_x16 + C*Omega*_x18
+    _x20 = _x17*_x19
+    _x21 = jax.numpy.cos(_x1)
+    _x22 = _x17*(X_b*_x15 + _x16*_x18)
+    _x23 = M**(-1.0)
+    _x24 = (1/2)*C*_x23
+    _x25 = jax.numpy.exp(-_x24*t)
+    _x26 = jax.numpy.sqrt(K*_x23 - 1/4*_x14/M**2)
+    _x27 = _x26*t
+    _x28 = jax.numpy.cos(_x27)
+    _x29 = jax.numpy.cos(phi)
+    _x30 = -_x20*_x7 - _x22*_x29 + x0
+    _x31 = jax.numpy.sin(_x27)
+    _x32 = -Omega*_x20*_x29 + Omega*_x22*_x7 + _x24*_x30 + xdot0
+    _x33 = _x25*(_x28*_x30 + _x31*_x32/_x26)
+    _x34 = Omega*_x2
+    _x35 = _x11*_x21*t
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            jax.numpy.select([_x13,True], [_x10*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9),_x2*_x20 + _x21*_x22 + _x33], default=jax.numpy.nan),
+            jax.numpy.select([_x13,True], [_x10*(F0*_x34 + F0*_x35 + K*(-Omega*_x5*_x6 + X_b*_x34 + X_b*_x35) - Omega*_x4*_x9),Omega*_x17*_x19*_x21 - _x22*_x34 - _x24*_x33 + _x25*(-_x26*_x30*_x31 + _x28*_x32)], default=jax.numpy.nan),
+            t, M, K, C, F0, X_b, Omega, phi, x0, xdot0,
+        )[:2]
+    )
+
+
+@jax.jit
+def forced_transition(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""The state after a flight and its transition matrix: x, ẋ, ∂x/∂x0, ∂x/∂ẋ0, ∂ẋ/∂x0, ∂ẋ/∂ẋ0, Eq. F1 (derived here, beyond the paper): the tuple
+    (``forced_displacement``, ``forced_velocity``, ``forced_displacement_d_x0``, ``forced_displacement_d_xdot0``, ``forced_velocity_d_x0``, ``forced_velocity_d_xdot0``), their common subexpressions computed once.
+    """
+    _x0 = Omega*t
+    _x1 = _x0 + phi
+    _x2 = jax.numpy.sin(_x1)
+    _x3 = _x0*_x2
+    _x4 = jax.numpy.cos(_x0)
+    _x5 = 2*x0
+    _x6 = jax.numpy.sin(_x0)
+    _x7 = jax.numpy.sin(phi)
+    _x8 = K*X_b
+    _x9 = F0*_x7 - 2*M*Omega*xdot0 + _x7*_x8
+    _x10 = K**(-1.0)
+    _x11 = (1/2)*_x10
+    _x12 = Omega**2
+    _x13 = M*_x12
+    _x14 = jax.numpy.all(jax.numpy.asarray([jax.numpy.equal(C, 0),jax.numpy.equal(K, _x13)]), axis=0)
+    _x15 = C**2
+    _x16 = _x12*_x15
+    _x17 = K - _x13
+    _x18 = (_x16 + _x17**2)**(-1.0)
+    _x19 = F0 + _x8
+    _x20 = -C*Omega*X_b*_x17 + C*Omega*_x19
+    _x21 = _x18*_x20
+    _x22 = jax.numpy.cos(_x1)
+    _x23 = _x18*(X_b*_x16 + _x17*_x19)
+    _x24 = M**(-1.0)
+    _x25 = (1/2)*C*_x24
+    _x26 = jax.numpy.exp(-_x25*t)
+    _x27 = jax.numpy.sqrt(K*_x24 - 1/4*_x15/M**2)
+    _x28 = _x27*t
+    _x29 = jax.numpy.cos(_x28)
+    _x30 = jax.numpy.cos(phi)
+    _x31 = -_x21*_x7 - _x23*_x30 + x0
+    _x32 = -Omega*_x21*_x30 + Omega*_x23*_x7 + _x25*_x31 + xdot0
+    _x33 = jax.numpy.sin(_x28)
+    _x34 = _x33/_x27
+    _x35 = _x26*(_x29*_x31 + _x32*_x34)
+    _x36 = Omega*_x2
+    _x37 = _x12*_x22*t
+    _x38 = Omega*_x6
+    _x39 = _x27*_x33
+    _x40 = _x26*(_x25*_x34 + _x29)
+    _x41 = _x26*_x34
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            jax.numpy.select([_x14,True], [_x11*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9),_x2*_x21 + _x22*_x23 + _x35], default=jax.numpy.nan),
+            jax.numpy.select([_x14,True], [_x11*(F0*_x36 + F0*_x37 + K*(X_b*_x36 + X_b*_x37 - _x38*_x5) - Omega*_x4*_x9),Omega*_x18*_x20*_x22 - _x23*_x36 - _x25*_x35 + _x26*(_x29*_x32 - _x31*_x39)], default=jax.numpy.nan),
+            jax.numpy.select([_x14,True], [_x4,_x40], default=jax.numpy.nan),
+            jax.numpy.select([_x14,True], [M*_x10*_x38,_x41], default=jax.numpy.nan),
+            jax.numpy.select([_x14,True], [-_x38,-_x25*_x40 + _x26*(_x25*_x29 - _x39)], default=jax.numpy.nan),
+            jax.numpy.select([_x14,True], [_x10*_x13*_x4,-_x25*_x41 + _x26*_x29], default=jax.numpy.nan),
+            t, M, K, C, F0, X_b, Omega, phi, x0, xdot0,
+        )[:6]
+    )

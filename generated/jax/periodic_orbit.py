@@ -35,6 +35,7 @@ __all__ = [
     "impact_mass_velocity_after_d_phi",
     "impact_mass_velocity_after_d_e",
     "impact_mass_velocity_after_d_d",
+    "phase_residual_and_derivatives",
 ]
 
 
@@ -1953,3 +1954,177 @@ def impact_mass_velocity_after_d_d(M, K, C, m, e, d, F0, X_b, Omega, phi):
     _x35 = _x34*_x4
     _x36 = 2*m
     return (_x0*_x27*_x31*(_x13*_x22 - _x21 - _x28 + _x29 + _x3*_x7) + _x27*_x33*(-_x13*_x24 - _x24 + _x29 + _x32) - _x0*_x26*(-_x14 + _x16 + _x3*_x9)/Omega**5)/(_x31**2*_x35 + _x33**2*_x34 + _x35*(M*_x10*_x15*_x3*_x8 + M*_x12*_x22*_x3*e + M*_x12*_x3*e - M*_x13 + M*_x22*e + M*e - M + 2*_x12*_x22*_x3*e*m - _x13*_x23 - _x13*_x36 - _x19*_x28 + 2*_x22*e*m - _x23 - _x32*_x36 - _x36)**2 + _x26**2*_x4/Omega**6)
+
+
+@jax.jit
+def phase_residual_and_derivatives(M, K, C, m, e, d, F0, X_b, Omega, phi):
+    r"""The phase condition's residual and its derivatives in φ, e, d, m, F0, X_b, Eq. F3 (derived here, beyond the paper): the tuple
+    (``phase_residual``, ``phase_residual_d_phi``, ``phase_residual_d_e``, ``phase_residual_d_d``, ``phase_residual_d_impact_mass``, ``phase_residual_d_F0``, ``phase_residual_d_X_b``), their common subexpressions computed once.
+    """
+    _x0 = Omega**2
+    _x1 = _x0**(-1.0)
+    _x2 = _x1*d
+    _x3 = _x2*e
+    _x4 = M**(-1.0)
+    _x5 = _x4*m
+    _x6 = 2*_x2
+    _x7 = _x5*_x6
+    _x8 = Omega**(-1.0)
+    _x9 = jax.numpy.pi*_x8
+    _x10 = (1/2)*_x9
+    _x11 = C*_x4
+    _x12 = jax.numpy.exp(-_x10*_x11)
+    _x13 = C**2
+    _x14 = jax.numpy.sqrt(K*_x4 - 1/4*_x13/M**2)
+    _x15 = _x14*_x9
+    _x16 = jax.numpy.cos(_x15)
+    _x17 = (1/2)*_x11
+    _x18 = jax.numpy.sin(_x15)
+    _x19 = _x14**(-1.0)
+    _x20 = _x18*_x19
+    _x21 = _x17*_x20
+    _x22 = _x16 + _x21
+    _x23 = _x12*_x22
+    _x24 = _x2*_x23
+    _x25 = 2*_x5
+    _x26 = _x12*_x16
+    _x27 = _x12*_x21
+    _x28 = _x26 - _x27
+    _x29 = _x2*_x28
+    _x30 = _x28*_x3
+    _x31 = _x23*_x29
+    _x32 = _x23*_x30
+    _x33 = -_x12*(-_x14*_x18 + _x16*_x17) + _x17*_x23
+    _x34 = -_x33
+    _x35 = _x12*_x20
+    _x36 = _x34*_x35
+    _x37 = _x2*_x36
+    _x38 = _x3*_x36
+    _x39 = jax.numpy.sin(phi)
+    _x40 = jax.numpy.sqrt(K)
+    _x41 = 1/jax.numpy.sqrt(M)
+    _x42 = _x40*_x41
+    _x43 = _x10*(Omega - _x42)
+    _x44 = jax.numpy.cos(_x43)
+    _x45 = (Omega + _x42)**(-1.0)
+    _x46 = jax.numpy.sinc(_x43/jax.numpy.pi)
+    _x47 = _x45*_x46
+    _x48 = jax.numpy.pi*_x47
+    _x49 = _x44*_x48
+    _x50 = M**(-3/2)
+    _x51 = _x40*_x50
+    _x52 = C*_x49*_x51
+    _x53 = F0 + K*X_b
+    _x54 = jax.numpy.sin(_x43)
+    _x55 = _x4*_x54
+    _x56 = _x48*_x55
+    _x57 = jax.numpy.equal(C, 0)
+    _x58 = _x0*_x13
+    _x59 = K - M*_x0
+    _x60 = (_x58 + _x59**2)**(-1.0)
+    _x61 = X_b*_x58 + _x53*_x59
+    _x62 = _x60*_x61
+    _x63 = -_x26 + _x27 - 1
+    _x64 = Omega*_x63
+    _x65 = C*Omega
+    _x66 = _x59*_x65
+    _x67 = C*Omega*_x53 - X_b*_x66
+    _x68 = jax.numpy.select([_x57,True], [X_b*_x52 - _x53*_x56,_x33*_x60*_x67 - _x62*_x64], default=jax.numpy.nan)
+    _x69 = Omega**(-3.0)
+    _x70 = jax.numpy.pi*_x69
+    _x71 = _x68*_x70
+    _x72 = _x1*e
+    _x73 = _x48*_x54
+    _x74 = _x11*_x73
+    _x75 = _x41*_x49/_x40
+    _x76 = Omega*_x35
+    _x77 = -_x23 - 1
+    _x78 = _x60*_x67
+    _x79 = jax.numpy.select([_x57,True], [-X_b*_x74 - _x53*_x75,_x62*_x76 + _x77*_x78], default=jax.numpy.nan)
+    _x80 = 2*_x79
+    _x81 = _x71*e
+    _x82 = _x34*_x70
+    _x83 = _x79*_x82
+    _x84 = _x28*_x72
+    _x85 = 4*_x1
+    _x86 = _x5*_x85
+    _x87 = 4*_x79
+    _x88 = _x5*_x84
+    _x89 = 2*_x72
+    _x90 = _x35*_x89
+    _x91 = _x35*_x68
+    _x92 = 4*_x72
+    _x93 = _x5*_x92
+    _x94 = 2*_x1
+    _x95 = _x1*_x28
+    _x96 = _x35*_x94
+    _x97 = -_x68*_x96 + _x79*_x94 + _x80*_x95
+    _x98 = _x23*_x71 + _x23*_x81 + _x68*_x90 + _x71 - _x72*_x80 + _x79*_x86 - _x80*_x84 + _x81 - _x83*e - _x83 - _x87*_x88 + _x91*_x93 + _x97
+    _x99 = jax.numpy.cos(phi)
+    _x100 = _x56*_x65
+    _x101 = _x47*_x9
+    _x102 = _x101*_x44
+    _x103 = _x102*_x51
+    _x104 = jax.numpy.select([_x57,True], [-X_b*_x100 - _x103*_x53,_x33*_x62 + _x64*_x78], default=jax.numpy.nan)
+    _x105 = _x104*_x70
+    _x106 = _x65*_x75
+    _x107 = jax.numpy.select([_x57,True], [-X_b*_x106 + jax.numpy.pi*_x4*_x45*_x46*_x53*_x54*_x8,_x60*_x61*_x77 - _x76*_x78], default=jax.numpy.nan)
+    _x108 = 2*_x107
+    _x109 = _x105*e
+    _x110 = _x107*_x82
+    _x111 = 4*_x107
+    _x112 = _x104*_x35
+    _x113 = -_x104*_x96 + _x107*_x94 + _x108*_x95
+    _x114 = _x105*_x23 + _x105 + _x107*_x86 - _x108*_x72 - _x108*_x84 + _x109*_x23 + _x109 - _x110*e - _x110 - _x111*_x88 + _x112*_x89 + _x112*_x93 + _x113
+    _x115 = _x5*_x95
+    _x116 = _x5*_x94
+    _x117 = _x36*_x72
+    _x118 = 2*_x4
+    _x119 = _x4*_x85
+    _x120 = _x4*_x84
+    _x121 = _x4*_x92
+    _x122 = _x59*_x60
+    _x123 = _x60*_x65
+    _x124 = jax.numpy.select([_x57,True], [-_x75,_x122*_x76 + _x123*_x77], default=jax.numpy.nan)
+    _x125 = 2*_x124
+    _x126 = 4*_x88
+    _x127 = jax.numpy.select([_x57,True], [-_x56,-_x122*_x64 + _x123*_x33], default=jax.numpy.nan)
+    _x128 = _x127*_x70
+    _x129 = _x128*e
+    _x130 = _x124*_x82
+    _x131 = _x35*_x93
+    _x132 = C*_x0*_x60
+    _x133 = jax.numpy.select([_x57,True], [_x101*_x55,-_x132*_x35 + _x59*_x60*_x77], default=jax.numpy.nan)
+    _x134 = 2*_x133
+    _x135 = jax.numpy.select([_x57,True], [-_x103,_x122*_x33 + _x132*_x63], default=jax.numpy.nan)
+    _x136 = _x135*_x70
+    _x137 = _x136*e
+    _x138 = _x133*_x82
+    _x139 = K*_x59 + _x58
+    _x140 = _x139*_x60
+    _x141 = K*_x65 - _x66
+    _x142 = _x141*_x60
+    _x143 = jax.numpy.select([_x57,True], [-_x42*_x49 - _x74,_x140*_x76 + _x142*_x77], default=jax.numpy.nan)
+    _x144 = 2*_x143
+    _x145 = jax.numpy.select([_x57,True], [-K*_x4*_x73 + _x52,-_x140*_x64 + _x141*_x33*_x60], default=jax.numpy.nan)
+    _x146 = _x145*_x70
+    _x147 = _x146*e
+    _x148 = _x143*_x82
+    _x149 = jax.numpy.select([_x57,True], [jax.numpy.pi*K*_x4*_x45*_x46*_x54*_x8 - _x106,_x139*_x60*_x77 - _x142*_x76], default=jax.numpy.nan)
+    _x150 = 2*_x149
+    _x151 = jax.numpy.select([_x57,True], [-K**(3/2)*_x102*_x50 - _x100,_x140*_x33 + _x142*_x64], default=jax.numpy.nan)
+    _x152 = _x151*_x70
+    _x153 = _x152*e
+    _x154 = _x149*_x82
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            _x114*_x99 - _x2 + _x23*_x3 - _x24*_x25 - _x24 + _x25*_x30 + _x25*_x32 - _x25*_x38 - _x29 + _x3 + _x30 - _x31 + _x32 + _x37 - _x38 + _x39*_x98 - _x7,
+            -_x114*_x39 + _x98*_x99,
+            _x2 + _x24 + _x25*_x29 + _x25*_x31 + _x29 + _x31 - _x36*_x7 - _x37 + _x39*(4*_x1*_x12*_x18*_x19*_x4*_x68*m - _x115*_x87 + jax.numpy.pi*_x12*_x22*_x68*_x69 + jax.numpy.pi*_x68*_x69 - _x83 - _x97) + _x99*(4*_x1*_x104*_x12*_x18*_x19*_x4*m + jax.numpy.pi*_x104*_x12*_x22*_x69 + jax.numpy.pi*_x104*_x69 - _x110 - _x111*_x115 - _x113),
+            _x1*_x12*_x18*_x19*_x34 + 2*_x1*_x12*_x22*_x28*_x4*e*m + _x1*_x12*_x22*_x28*e + _x1*_x12*_x22*e - _x1*_x23 + 2*_x1*_x28*_x4*e*m + _x1*_x28*e + _x1*e - _x1 - _x116*_x23 - _x116 - _x117*_x25 - _x117 - _x23*_x95 - _x95,
+            -_x118*_x24 + _x118*_x30 + _x118*_x32 - _x118*_x38 + _x39*(_x119*_x79 - _x120*_x87 + _x121*_x91) - _x4*_x6 + _x99*(_x107*_x119 - _x111*_x120 + _x112*_x121),
+            _x39*(-_x124*_x126 + _x124*_x86 + _x124*_x94 - _x125*_x72 - _x125*_x84 + _x125*_x95 + _x127*_x131 + _x127*_x90 - _x127*_x96 + _x128*_x23 + _x128 + _x129*_x23 + _x129 - _x130*e - _x130) + _x99*(-_x126*_x133 + _x131*_x135 + _x133*_x86 + _x133*_x94 - _x134*_x72 - _x134*_x84 + _x134*_x95 + _x135*_x90 - _x135*_x96 + _x136*_x23 + _x136 + _x137*_x23 + _x137 - _x138*e - _x138),
+            _x39*(-_x126*_x143 + _x131*_x145 + _x143*_x86 + _x143*_x94 - _x144*_x72 - _x144*_x84 + _x144*_x95 + _x145*_x90 - _x145*_x96 + _x146*_x23 + _x146 + _x147*_x23 + _x147 - _x148*e - _x148) + _x99*(-_x126*_x149 + _x131*_x151 + _x149*_x86 + _x149*_x94 - _x150*_x72 - _x150*_x84 + _x150*_x95 + _x151*_x90 - _x151*_x96 + _x152*_x23 + _x152 + _x153*_x23 + _x153 - _x154*e - _x154),
+            M, K, C, m, e, d, F0, X_b, Omega, phi,
+        )[:7]
+    )

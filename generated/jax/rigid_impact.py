@@ -27,6 +27,7 @@ __all__ = [
     "saltation_impact_gain",
     "saltation_main_velocity_z",
     "saltation_impact_velocity_z",
+    "velocities_after_and_derivatives",
 ]
 
 
@@ -207,3 +208,32 @@ def saltation_impact_velocity_z(m, M, e, zdot_minus, a_minus):
     ``a_minus``: Main-mass acceleration just before the impact [m/s^2]
     """
     return -M*a_minus*(e + 1)/(zdot_minus*(M + m))
+
+
+@jax.jit
+def velocities_after_and_derivatives(m, M, e, xdot_minus, ydot_minus):
+    r"""Both velocities after a rigid impact and their derivatives in e, ẋ⁻, ẏ⁻ (the impact map's Jacobian), Eq. F2 (derived here, beyond the paper): the tuple
+    (``main_velocity_after``, ``impact_velocity_after``, ``main_velocity_after_d_e``, ``main_velocity_after_d_xdot_minus``, ``main_velocity_after_d_ydot_minus``, ``impact_velocity_after_d_e``, ``impact_velocity_after_d_xdot_minus``, ``impact_velocity_after_d_ydot_minus``), their common subexpressions computed once.
+    """
+    _x0 = e + 1
+    _x1 = xdot_minus - ydot_minus
+    _x2 = (M + m)**(-1.0)
+    _x3 = _x2*m
+    _x4 = _x1*_x3
+    _x5 = M*_x2
+    _x6 = _x1*_x5
+    _x7 = _x0*_x3
+    _x8 = _x0*_x5
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            -_x0*_x4 + xdot_minus,
+            _x0*_x6 + ydot_minus,
+            -_x4,
+            1 - _x7,
+            _x7,
+            _x6,
+            _x8,
+            1 - _x8,
+            m, M, e, xdot_minus, ydot_minus,
+        )[:8]
+    )

@@ -34,6 +34,7 @@ __all__ = [
     "response_quartic_0",
     "backbone_frequency",
     "backbone_clearance",
+    "clearance_for_response_and_derivatives",
 ]
 
 
@@ -588,3 +589,97 @@ def backbone_clearance(M, K, C, m, e, F0, X_b, xi):
     _x10 = (M*_x2 + _x8*_x9 - _x7*_x8/_x6)**(-1.0)
     _x11 = K*_x10
     return 2*xi*jax.numpy.sqrt(C**2*X_b**2*_x11*_x2 + (F0 + K*X_b)**2)/(jax.numpy.pi*C*jax.numpy.sqrt(K)*jax.numpy.sqrt(_x10)*xi**3 - 16*_x1*_x11*_x3*_x9*m/(jax.numpy.pi*_x4))
+
+
+@jax.jit
+def clearance_for_response_and_derivatives(M, K, C, m, e, F0, X_b, Omega, xi):
+    r"""The clearance on the response surface and its slopes in every argument, Eq. F5 (derived here, beyond the paper): the tuple
+    (``clearance_for_response``, ``clearance_for_response_d_main_mass``, ``clearance_for_response_d_K``, ``clearance_for_response_d_C``, ``clearance_for_response_d_impact_mass``, ``clearance_for_response_d_e``, ``clearance_for_response_d_F0``, ``clearance_for_response_d_X_b``, ``clearance_for_response_d_Omega``, ``clearance_for_response_d_xi``), their common subexpressions computed once.
+    """
+    _x0 = xi**2
+    _x1 = C*_x0
+    _x2 = jax.numpy.pi**(-3.0)
+    _x3 = e + 1
+    _x4 = _x3**(-1.0)
+    _x5 = Omega**2
+    _x6 = _x5*m
+    _x7 = _x2*_x4*_x6
+    _x8 = jax.numpy.pi**(-2.0)
+    _x9 = _x3**(-2.0)
+    _x10 = _x8*_x9
+    _x11 = e - 1
+    _x12 = _x11**2
+    _x13 = 4*_x12
+    _x14 = _x10*_x13
+    _x15 = _x14 + 1
+    _x16 = _x15**(-2.0)
+    _x17 = jax.numpy.sqrt(_x0*_x14 + _x0 - _x14)
+    _x18 = _x17 + 1
+    _x19 = _x18**2
+    _x20 = _x16*_x19
+    _x21 = _x20*_x7
+    _x22 = 16*_x11
+    _x23 = Omega*_x1 - _x21*_x22
+    _x24 = K - M*_x5
+    _x25 = _x15**(-1.0)
+    _x26 = _x18*_x25
+    _x27 = _x6*_x8
+    _x28 = _x26*_x27
+    _x29 = _x18*_x25 - 1
+    _x30 = 8*_x29
+    _x31 = _x0*_x24 - _x28*_x30
+    _x32 = _x23**2 + _x31**2
+    _x33 = 1/jax.numpy.sqrt(_x32)
+    _x34 = F0 + K*X_b
+    _x35 = X_b**2
+    _x36 = C**2
+    _x37 = _x36*_x5
+    _x38 = jax.numpy.sqrt(_x34**2 + _x35*_x37)
+    _x39 = 2*_x38
+    _x40 = _x33*_x39
+    _x41 = _x39/_x32**(3/2)
+    _x42 = _x41*xi**3
+    _x43 = _x31*_x42
+    _x44 = 2*_x33*xi/_x38
+    _x45 = _x34*_x44
+    _x46 = _x35*_x44
+    _x47 = _x2*_x20*_x4
+    _x48 = _x26*_x8
+    _x49 = _x41*xi
+    _x50 = _x3**(-3.0)
+    _x51 = _x50*_x8
+    _x52 = _x12*_x51
+    _x53 = 2*e - 2
+    _x54 = _x10*_x53
+    _x55 = -_x0*_x13*_x51 + 2*_x0*_x53*_x8*_x9 + 4*_x12*_x50*_x8 - 2*_x54
+    _x56 = _x17**(-1.0)
+    _x57 = _x16*_x18
+    _x58 = _x56*_x57
+    _x59 = 64*_x11
+    _x60 = _x59*_x7
+    _x61 = (1/2)*_x23
+    _x62 = _x57*(8*_x52 - 4*_x54)
+    _x63 = 16*_x27
+    _x64 = _x29*_x63
+    _x65 = _x25*_x56
+    _x66 = _x55*_x65
+    _x67 = (1/2)*_x31
+    _x68 = Omega*m
+    _x69 = 4*xi
+    _x70 = _x10*_x12*_x69 + xi
+    _x71 = _x58*_x70
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            _x40*xi,
+            _x43*_x5,
+            X_b*_x45 - _x43,
+            C*_x46*_x5 - Omega*_x23*_x42,
+            _x49*(_x22*_x23*_x47*_x5 + _x30*_x31*_x48*_x5),
+            _x49*(-_x61*(32*_x11*_x16*_x19*_x2*_x5*_x9*m - 32*_x11*_x19*_x7*(16*_x52 - 8*_x54)/_x15**3 - 32*_x21 - _x55*_x58*_x60) - _x67*(-16*_x28*(_x62 + _x66) - _x62*_x64 - _x64*_x66)),
+            _x45,
+            _x44*(K*_x34 + X_b*_x37),
+            Omega*_x36*_x46 + _x49*(-_x61*(2*_x1 - _x47*_x59*_x68) - _x67*(-4*M*Omega*_x0 - 32*_x29*_x48*_x68)),
+            _x40 + _x49*(-_x61*(C*Omega*_x69 - _x60*_x71) - _x67*(4*_x24*xi - _x63*_x71 - _x64*_x65*_x70)),
+            M, K, C, m, e, F0, X_b, Omega, xi,
+        )[:10]
+    )

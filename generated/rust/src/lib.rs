@@ -739,6 +739,67 @@ pub mod closed_forms {
         let _x1 = (1_f64/4.0)*(_x0).powi(2)/((M).powi(2)*(m).powi(2));
         3.141592653589793_f64*_x1*c1/(-_x1*(c1).powi(2) + _x0*k1/(M*m)).powf(3_f64/2.0)
     }
+
+    /// Hertz contact duration and its derivatives in m, M, k_hz, zdot0, paper Eq. 34: the array
+    /// [`hertz_contact_duration`, `hertz_contact_duration_d_impact_mass`, `hertz_contact_duration_d_main_mass`, `hertz_contact_duration_d_k_hz`, `hertz_contact_duration_d_zdot0`],
+    /// their common subexpressions computed once.
+    ///
+    /// * `m`: Impact mass m [kg]
+    /// * `M`: Main mass M [kg]
+    /// * `k_hz`: Hertz contact stiffness K_Hz [N/m^1.5]
+    /// * `zdot0`: Relative approach speed Ż₀ [m/s]
+    #[inline]
+    pub fn hertz_contact_duration_and_derivatives(m: f64, M: f64, k_hz: f64, zdot0: f64) -> [f64; 5] {
+        let _x0 = (5_f64).powf(2_f64/5.0);
+        let _x1 = (3.141592653589793_f64).sqrt();
+        let _x2 = (M).powf(2_f64/5.0);
+        let _x3 = (zdot0).powf(-1_f64/5.0);
+        let _x4 = 4_f64*k_hz;
+        let _x5 = M*_x4 + _x4*m;
+        let _x6 = (_x5).powf(-2_f64/5.0);
+        let _x7 = (m).powf(2_f64/5.0);
+        let _x8 = 1.6605652005106006_f64*_x7;
+        let _x9 = _x0*_x1*_x2*_x3/(_x5).powf(7_f64/5.0);
+        let _x10 = 2.6569043208169614_f64*_x7*_x9*k_hz;
+        [
+            _x0*_x1*_x2*_x3*_x6*_x8,
+            0.6642260802042403_f64*_x0*_x1*_x2*_x3*_x6/(m).powf(3_f64/5.0) - _x10,
+            -_x10 + 0.6642260802042403_f64*_x0*_x1*_x3*_x6*_x7/(M).powf(3_f64/5.0),
+            _x8*_x9*(-8_f64/5.0*M - 8_f64/5.0*m),
+            -0.33211304010212017_f64*_x0*_x1*_x2*_x6*_x7/(zdot0).powf(6_f64/5.0),
+        ]
+    }
+
+    /// Linear damped contact duration and its derivatives in m, M, k1, c1, paper Eq. 35: the array
+    /// [`linear_contact_duration`, `linear_contact_duration_d_impact_mass`, `linear_contact_duration_d_main_mass`, `linear_contact_duration_d_k1`, `linear_contact_duration_d_c1`],
+    /// their common subexpressions computed once.
+    ///
+    /// * `m`: Impact mass m [kg]
+    /// * `M`: Main mass M [kg]
+    /// * `k1`: Linear contact stiffness k₁ [N/m]
+    /// * `c1`: Contact damping c₁ (below critical) [N s/m]
+    #[inline]
+    pub fn linear_contact_duration_and_derivatives(m: f64, M: f64, k1: f64, c1: f64) -> [f64; 5] {
+        let _x0 = M + m;
+        let _x1 = (M).recip();
+        let _x2 = (m).recip();
+        let _x3 = _x1*_x2*k1;
+        let _x4 = (c1).powi(2);
+        let _x5 = (M).powi(-2);
+        let _x6 = (m).powi(-2);
+        let _x7 = (1_f64/4.0)*(_x0).powi(2);
+        let _x8 = _x0*_x3 - _x4*_x5*_x6*_x7;
+        let _x9 = _x4*_x7;
+        let _x10 = (1_f64/2.0)*_x3 - 1_f64/8.0*_x4*_x5*_x6*(2_f64*M + 2_f64*m);
+        let _x11 = 3.141592653589793_f64/(_x8).powf(3_f64/2.0);
+        [
+            3.141592653589793_f64/(_x8).sqrt(),
+            _x11*((1_f64/2.0)*_x0*_x1*_x6*k1 - _x10 - _x5*_x9/(m).powi(3)),
+            _x11*((1_f64/2.0)*_x0*_x2*_x5*k1 - _x10 - _x6*_x9/(M).powi(3)),
+            -1_f64/2.0*_x0*_x1*_x11*_x2,
+            _x11*_x5*_x6*_x7*c1,
+        ]
+    }
 }
 
 /// Free flight between impacts (paper Eq. 7).
@@ -1575,6 +1636,164 @@ pub mod forced_flight {
         let _x1 = (C).powi(2)*_x0;
         ((X_b).powi(2)*_x1 + (F0 + K*X_b).powi(2)).sqrt()/(_x1 + (K - M*_x0).powi(2)).sqrt()
     }
+
+    /// The primary's displacement and velocity a time t into a flight (x, ẋ), Eq. F1 (derived here, beyond the paper): the array
+    /// [`forced_displacement`, `forced_velocity`],
+    /// their common subexpressions computed once.
+    ///
+    /// * `t`: Time since the last event [s]
+    /// * `M`: Main mass M [kg]
+    /// * `K`: Main stiffness K [N/m]
+    /// * `C`: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    /// * `F0`: Force amplitude F0 on the main mass [N]
+    /// * `X_b`: Base-motion amplitude X_b [m]
+    /// * `Omega`: Forcing frequency Ω [rad/s]
+    /// * `phi`: Forcing phase at t = 0, φ [rad]
+    /// * `x0`: Main-mass displacement at t = 0 [m]
+    /// * `xdot0`: Main-mass velocity at t = 0 [m/s]
+    #[inline]
+    pub fn forced_state(t: f64, M: f64, K: f64, C: f64, F0: f64, X_b: f64, Omega: f64, phi: f64, x0: f64, xdot0: f64) -> [f64; 2] {
+        let _x0 = Omega*t;
+        let _x1 = _x0 + phi;
+        let _x2 = _x1.sin();
+        let _x3 = _x0*_x2;
+        let _x4 = _x0.cos();
+        let _x5 = 2_f64*x0;
+        let _x6 = _x0.sin();
+        let _x7 = phi.sin();
+        let _x8 = K*X_b;
+        let _x9 = F0*_x7 - 2_f64*M*Omega*xdot0 + _x7*_x8;
+        let _x10 = (1_f64/2.0)/K;
+        let _x11 = (Omega).powi(2);
+        let _x12 = M*_x11;
+        let _x13 = C == 0.0_f64 && K == _x12;
+        let _x14 = (C).powi(2);
+        let _x15 = _x11*_x14;
+        let _x16 = K - _x12;
+        let _x17 = (_x15 + (_x16).powi(2)).recip();
+        let _x18 = F0 + _x8;
+        let _x19 = -C*Omega*X_b*_x16 + C*Omega*_x18;
+        let _x20 = _x17*_x19;
+        let _x21 = _x1.cos();
+        let _x22 = _x17*(X_b*_x15 + _x16*_x18);
+        let _x23 = (M).recip();
+        let _x24 = (1_f64/2.0)*C*_x23;
+        let _x25 = (-_x24*t).exp();
+        let _x26 = (K*_x23 - 1_f64/4.0*_x14/(M).powi(2)).sqrt();
+        let _x27 = _x26*t;
+        let _x28 = _x27.cos();
+        let _x29 = phi.cos();
+        let _x30 = -_x20*_x7 - _x22*_x29 + x0;
+        let _x31 = _x27.sin();
+        let _x32 = -Omega*_x20*_x29 + Omega*_x22*_x7 + _x24*_x30 + xdot0;
+        let _x33 = _x25*(_x28*_x30 + _x31*_x32/_x26);
+        let _x34 = Omega*_x2;
+        let _x35 = _x11*_x21*t;
+        [
+            if (_x13) {
+    _x10*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9)
+} else {
+    _x2*_x20 + _x21*_x22 + _x33
+},
+            if (_x13) {
+    _x10*(F0*_x34 + F0*_x35 + K*(-Omega*_x5*_x6 + X_b*_x34 + X_b*_x35) - Omega*_x4*_x9)
+} else {
+    Omega*_x17*_x19*_x21 - _x22*_x34 - _x24*_x33 + _x25*(-_x26*_x30*_x31 + _x28*_x32)
+},
+        ]
+    }
+
+    /// The state after a flight and its transition matrix: x, ẋ, ∂x/∂x0, ∂x/∂ẋ0, ∂ẋ/∂x0, ∂ẋ/∂ẋ0, Eq. F1 (derived here, beyond the paper): the array
+    /// [`forced_displacement`, `forced_velocity`, `forced_displacement_d_x0`, `forced_displacement_d_xdot0`, `forced_velocity_d_x0`, `forced_velocity_d_xdot0`],
+    /// their common subexpressions computed once.
+    ///
+    /// * `t`: Time since the last event [s]
+    /// * `M`: Main mass M [kg]
+    /// * `K`: Main stiffness K [N/m]
+    /// * `C`: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    /// * `F0`: Force amplitude F0 on the main mass [N]
+    /// * `X_b`: Base-motion amplitude X_b [m]
+    /// * `Omega`: Forcing frequency Ω [rad/s]
+    /// * `phi`: Forcing phase at t = 0, φ [rad]
+    /// * `x0`: Main-mass displacement at t = 0 [m]
+    /// * `xdot0`: Main-mass velocity at t = 0 [m/s]
+    #[inline]
+    pub fn forced_transition(t: f64, M: f64, K: f64, C: f64, F0: f64, X_b: f64, Omega: f64, phi: f64, x0: f64, xdot0: f64) -> [f64; 6] {
+        let _x0 = Omega*t;
+        let _x1 = _x0 + phi;
+        let _x2 = _x1.sin();
+        let _x3 = _x0*_x2;
+        let _x4 = _x0.cos();
+        let _x5 = 2_f64*x0;
+        let _x6 = _x0.sin();
+        let _x7 = phi.sin();
+        let _x8 = K*X_b;
+        let _x9 = F0*_x7 - 2_f64*M*Omega*xdot0 + _x7*_x8;
+        let _x10 = (K).recip();
+        let _x11 = (1_f64/2.0)*_x10;
+        let _x12 = (Omega).powi(2);
+        let _x13 = M*_x12;
+        let _x14 = C == 0.0_f64 && K == _x13;
+        let _x15 = (C).powi(2);
+        let _x16 = _x12*_x15;
+        let _x17 = K - _x13;
+        let _x18 = (_x16 + (_x17).powi(2)).recip();
+        let _x19 = F0 + _x8;
+        let _x20 = -C*Omega*X_b*_x17 + C*Omega*_x19;
+        let _x21 = _x18*_x20;
+        let _x22 = _x1.cos();
+        let _x23 = _x18*(X_b*_x16 + _x17*_x19);
+        let _x24 = (M).recip();
+        let _x25 = (1_f64/2.0)*C*_x24;
+        let _x26 = (-_x25*t).exp();
+        let _x27 = (K*_x24 - 1_f64/4.0*_x15/(M).powi(2)).sqrt();
+        let _x28 = _x27*t;
+        let _x29 = _x28.cos();
+        let _x30 = phi.cos();
+        let _x31 = -_x21*_x7 - _x23*_x30 + x0;
+        let _x32 = -Omega*_x21*_x30 + Omega*_x23*_x7 + _x25*_x31 + xdot0;
+        let _x33 = _x28.sin();
+        let _x34 = _x33/_x27;
+        let _x35 = _x26*(_x29*_x31 + _x32*_x34);
+        let _x36 = Omega*_x2;
+        let _x37 = _x12*_x22*t;
+        let _x38 = Omega*_x6;
+        let _x39 = _x27*_x33;
+        let _x40 = _x26*(_x25*_x34 + _x29);
+        let _x41 = _x26*_x34;
+        [
+            if (_x14) {
+    _x11*(F0*_x3 + K*(X_b*_x3 + _x4*_x5) - _x6*_x9)
+} else {
+    _x2*_x21 + _x22*_x23 + _x35
+},
+            if (_x14) {
+    _x11*(F0*_x36 + F0*_x37 + K*(X_b*_x36 + X_b*_x37 - _x38*_x5) - Omega*_x4*_x9)
+} else {
+    Omega*_x18*_x20*_x22 - _x23*_x36 - _x25*_x35 + _x26*(_x29*_x32 - _x31*_x39)
+},
+            if (_x14) {
+    _x4
+} else {
+    _x40
+},
+            if (_x14) {
+    M*_x10*_x38
+} else {
+    _x41
+},
+            if (_x14) {
+    -_x38
+} else {
+    -_x25*_x40 + _x26*(_x25*_x29 - _x39)
+},
+            if (_x14) {
+    _x10*_x13*_x4
+} else {
+    -_x25*_x41 + _x26*_x29
+},
+        ]
+    }
 }
 
 /// The rigid impact law (Eq. F2 (derived here, beyond the paper)).
@@ -1753,6 +1972,38 @@ pub mod rigid_impact {
     #[inline]
     pub fn saltation_impact_velocity_z(m: f64, M: f64, e: f64, zdot_minus: f64, a_minus: f64) -> f64 {
         -M*a_minus*(e + 1_f64)/(zdot_minus*(M + m))
+    }
+
+    /// Both velocities after a rigid impact and their derivatives in e, ẋ⁻, ẏ⁻ (the impact map's Jacobian), Eq. F2 (derived here, beyond the paper): the array
+    /// [`main_velocity_after`, `impact_velocity_after`, `main_velocity_after_d_e`, `main_velocity_after_d_xdot_minus`, `main_velocity_after_d_ydot_minus`, `impact_velocity_after_d_e`, `impact_velocity_after_d_xdot_minus`, `impact_velocity_after_d_ydot_minus`],
+    /// their common subexpressions computed once.
+    ///
+    /// * `m`: Impact mass m [kg]
+    /// * `M`: Main mass M [kg]
+    /// * `e`: Coefficient of restitution e [1]
+    /// * `xdot_minus`: Main-mass velocity before the impact [m/s]
+    /// * `ydot_minus`: Impact-mass velocity before the impact [m/s]
+    #[inline]
+    pub fn velocities_after_and_derivatives(m: f64, M: f64, e: f64, xdot_minus: f64, ydot_minus: f64) -> [f64; 8] {
+        let _x0 = e + 1_f64;
+        let _x1 = xdot_minus - ydot_minus;
+        let _x2 = (M + m).recip();
+        let _x3 = _x2*m;
+        let _x4 = _x1*_x3;
+        let _x5 = M*_x2;
+        let _x6 = _x1*_x5;
+        let _x7 = _x0*_x3;
+        let _x8 = _x0*_x5;
+        [
+            -_x0*_x4 + xdot_minus,
+            _x0*_x6 + ydot_minus,
+            -_x4,
+            1_f64 - _x7,
+            _x7,
+            _x6,
+            _x8,
+            1_f64 - _x8,
+        ]
     }
 }
 
@@ -4009,6 +4260,240 @@ pub mod periodic_orbit {
         let _x36 = 2_f64*m;
         (_x0*_x27*_x31*(_x13*_x22 - _x21 - _x28 + _x29 + _x3*_x7) + _x27*_x33*(-_x13*_x24 - _x24 + _x29 + _x32) - _x0*_x26*(-_x14 + _x16 + _x3*_x9)/(Omega).powi(5))/((_x31).powi(2)*_x35 + (_x33).powi(2)*_x34 + _x35*(M*_x10*_x15*_x3*_x8 + M*_x12*_x22*_x3*e + M*_x12*_x3*e - M*_x13 + M*_x22*e + M*e - M + 2_f64*_x12*_x22*_x3*e*m - _x13*_x23 - _x13*_x36 - _x19*_x28 + 2_f64*_x22*e*m - _x23 - _x32*_x36 - _x36).powi(2) + (_x26).powi(2)*_x4/(Omega).powi(6))
     }
+
+    /// The phase condition's residual and its derivatives in φ, e, d, m, F0, X_b, Eq. F3 (derived here, beyond the paper): the array
+    /// [`phase_residual`, `phase_residual_d_phi`, `phase_residual_d_e`, `phase_residual_d_d`, `phase_residual_d_impact_mass`, `phase_residual_d_F0`, `phase_residual_d_X_b`],
+    /// their common subexpressions computed once.
+    ///
+    /// * `M`: Main mass M [kg]
+    /// * `K`: Main stiffness K [N/m]
+    /// * `C`: Main damping C (underdamped) [N s/m]
+    /// * `m`: Impact mass m [kg]
+    /// * `e`: Coefficient of restitution e [1]
+    /// * `d`: Total clearance d [m]
+    /// * `F0`: Force amplitude F0 on the main mass [N]
+    /// * `X_b`: Base-motion amplitude X_b [m]
+    /// * `Omega`: Forcing frequency Ω [rad/s]
+    /// * `phi`: Forcing phase at the first impact φ [rad]
+    #[inline]
+    pub fn phase_residual_and_derivatives(M: f64, K: f64, C: f64, m: f64, e: f64, d: f64, F0: f64, X_b: f64, Omega: f64, phi: f64) -> [f64; 7] {
+        let _x0 = (Omega).powi(2);
+        let _x1 = (_x0).recip();
+        let _x2 = _x1*d;
+        let _x3 = _x2*e;
+        let _x4 = (M).recip();
+        let _x5 = _x4*m;
+        let _x6 = 2_f64*_x2;
+        let _x7 = _x5*_x6;
+        let _x8 = (Omega).recip();
+        let _x9 = 3.141592653589793_f64*_x8;
+        let _x10 = (1_f64/2.0)*_x9;
+        let _x11 = C*_x4;
+        let _x12 = (-_x10*_x11).exp();
+        let _x13 = (C).powi(2);
+        let _x14 = (K*_x4 - 1_f64/4.0*_x13/(M).powi(2)).sqrt();
+        let _x15 = _x14*_x9;
+        let _x16 = _x15.cos();
+        let _x17 = (1_f64/2.0)*_x11;
+        let _x18 = _x15.sin();
+        let _x19 = (_x14).recip();
+        let _x20 = _x18*_x19;
+        let _x21 = _x17*_x20;
+        let _x22 = _x16 + _x21;
+        let _x23 = _x12*_x22;
+        let _x24 = _x2*_x23;
+        let _x25 = 2_f64*_x5;
+        let _x26 = _x12*_x16;
+        let _x27 = _x12*_x21;
+        let _x28 = _x26 - _x27;
+        let _x29 = _x2*_x28;
+        let _x30 = _x28*_x3;
+        let _x31 = _x23*_x29;
+        let _x32 = _x23*_x30;
+        let _x33 = -_x12*(-_x14*_x18 + _x16*_x17) + _x17*_x23;
+        let _x34 = -_x33;
+        let _x35 = _x12*_x20;
+        let _x36 = _x34*_x35;
+        let _x37 = _x2*_x36;
+        let _x38 = _x3*_x36;
+        let _x39 = phi.sin();
+        let _x40 = (K).sqrt();
+        let _x41 = (M).sqrt().recip();
+        let _x42 = _x40*_x41;
+        let _x43 = _x10*(Omega - _x42);
+        let _x44 = _x43.cos();
+        let _x45 = (Omega + _x42).recip();
+        let _x46 = if (_x43 != 0.0_f64) {
+    _x43.sin()/_x43
+} else {
+    1.0_f64
+};
+        let _x47 = _x45*_x46;
+        let _x48 = 3.141592653589793_f64*_x47;
+        let _x49 = _x44*_x48;
+        let _x50 = (M).powf(-3_f64/2.0);
+        let _x51 = _x40*_x50;
+        let _x52 = C*_x49*_x51;
+        let _x53 = F0 + K*X_b;
+        let _x54 = _x43.sin();
+        let _x55 = _x4*_x54;
+        let _x56 = _x48*_x55;
+        let _x57 = C == 0.0_f64;
+        let _x58 = _x0*_x13;
+        let _x59 = K - M*_x0;
+        let _x60 = (_x58 + (_x59).powi(2)).recip();
+        let _x61 = X_b*_x58 + _x53*_x59;
+        let _x62 = _x60*_x61;
+        let _x63 = -_x26 + _x27 - 1_f64;
+        let _x64 = Omega*_x63;
+        let _x65 = C*Omega;
+        let _x66 = _x59*_x65;
+        let _x67 = C*Omega*_x53 - X_b*_x66;
+        let _x68 = if (_x57) {
+    X_b*_x52 - _x53*_x56
+} else {
+    _x33*_x60*_x67 - _x62*_x64
+};
+        let _x69 = (Omega).powi(-3);
+        let _x70 = 3.141592653589793_f64*_x69;
+        let _x71 = _x68*_x70;
+        let _x72 = _x1*e;
+        let _x73 = _x48*_x54;
+        let _x74 = _x11*_x73;
+        let _x75 = _x41*_x49/_x40;
+        let _x76 = Omega*_x35;
+        let _x77 = -_x23 - 1_f64;
+        let _x78 = _x60*_x67;
+        let _x79 = if (_x57) {
+    -X_b*_x74 - _x53*_x75
+} else {
+    _x62*_x76 + _x77*_x78
+};
+        let _x80 = 2_f64*_x79;
+        let _x81 = _x71*e;
+        let _x82 = _x34*_x70;
+        let _x83 = _x79*_x82;
+        let _x84 = _x28*_x72;
+        let _x85 = 4_f64*_x1;
+        let _x86 = _x5*_x85;
+        let _x87 = 4_f64*_x79;
+        let _x88 = _x5*_x84;
+        let _x89 = 2_f64*_x72;
+        let _x90 = _x35*_x89;
+        let _x91 = _x35*_x68;
+        let _x92 = 4_f64*_x72;
+        let _x93 = _x5*_x92;
+        let _x94 = 2_f64*_x1;
+        let _x95 = _x1*_x28;
+        let _x96 = _x35*_x94;
+        let _x97 = -_x68*_x96 + _x79*_x94 + _x80*_x95;
+        let _x98 = _x23*_x71 + _x23*_x81 + _x68*_x90 + _x71 - _x72*_x80 + _x79*_x86 - _x80*_x84 + _x81 - _x83*e - _x83 - _x87*_x88 + _x91*_x93 + _x97;
+        let _x99 = phi.cos();
+        let _x100 = _x56*_x65;
+        let _x101 = _x47*_x9;
+        let _x102 = _x101*_x44;
+        let _x103 = _x102*_x51;
+        let _x104 = if (_x57) {
+    -X_b*_x100 - _x103*_x53
+} else {
+    _x33*_x62 + _x64*_x78
+};
+        let _x105 = _x104*_x70;
+        let _x106 = _x65*_x75;
+        let _x107 = if (_x57) {
+    -X_b*_x106 + 3.141592653589793_f64*_x4*_x45*_x46*_x53*_x54*_x8
+} else {
+    _x60*_x61*_x77 - _x76*_x78
+};
+        let _x108 = 2_f64*_x107;
+        let _x109 = _x105*e;
+        let _x110 = _x107*_x82;
+        let _x111 = 4_f64*_x107;
+        let _x112 = _x104*_x35;
+        let _x113 = -_x104*_x96 + _x107*_x94 + _x108*_x95;
+        let _x114 = _x105*_x23 + _x105 + _x107*_x86 - _x108*_x72 - _x108*_x84 + _x109*_x23 + _x109 - _x110*e - _x110 - _x111*_x88 + _x112*_x89 + _x112*_x93 + _x113;
+        let _x115 = _x5*_x95;
+        let _x116 = _x5*_x94;
+        let _x117 = _x36*_x72;
+        let _x118 = 2_f64*_x4;
+        let _x119 = _x4*_x85;
+        let _x120 = _x4*_x84;
+        let _x121 = _x4*_x92;
+        let _x122 = _x59*_x60;
+        let _x123 = _x60*_x65;
+        let _x124 = if (_x57) {
+    -_x75
+} else {
+    _x122*_x76 + _x123*_x77
+};
+        let _x125 = 2_f64*_x124;
+        let _x126 = 4_f64*_x88;
+        let _x127 = if (_x57) {
+    -_x56
+} else {
+    -_x122*_x64 + _x123*_x33
+};
+        let _x128 = _x127*_x70;
+        let _x129 = _x128*e;
+        let _x130 = _x124*_x82;
+        let _x131 = _x35*_x93;
+        let _x132 = C*_x0*_x60;
+        let _x133 = if (_x57) {
+    _x101*_x55
+} else {
+    -_x132*_x35 + _x59*_x60*_x77
+};
+        let _x134 = 2_f64*_x133;
+        let _x135 = if (_x57) {
+    -_x103
+} else {
+    _x122*_x33 + _x132*_x63
+};
+        let _x136 = _x135*_x70;
+        let _x137 = _x136*e;
+        let _x138 = _x133*_x82;
+        let _x139 = K*_x59 + _x58;
+        let _x140 = _x139*_x60;
+        let _x141 = K*_x65 - _x66;
+        let _x142 = _x141*_x60;
+        let _x143 = if (_x57) {
+    -_x42*_x49 - _x74
+} else {
+    _x140*_x76 + _x142*_x77
+};
+        let _x144 = 2_f64*_x143;
+        let _x145 = if (_x57) {
+    -K*_x4*_x73 + _x52
+} else {
+    -_x140*_x64 + _x141*_x33*_x60
+};
+        let _x146 = _x145*_x70;
+        let _x147 = _x146*e;
+        let _x148 = _x143*_x82;
+        let _x149 = if (_x57) {
+    3.141592653589793_f64*K*_x4*_x45*_x46*_x54*_x8 - _x106
+} else {
+    _x139*_x60*_x77 - _x142*_x76
+};
+        let _x150 = 2_f64*_x149;
+        let _x151 = if (_x57) {
+    -(K).powf(3_f64/2.0)*_x102*_x50 - _x100
+} else {
+    _x140*_x33 + _x142*_x64
+};
+        let _x152 = _x151*_x70;
+        let _x153 = _x152*e;
+        let _x154 = _x149*_x82;
+        [
+            _x114*_x99 - _x2 + _x23*_x3 - _x24*_x25 - _x24 + _x25*_x30 + _x25*_x32 - _x25*_x38 - _x29 + _x3 + _x30 - _x31 + _x32 + _x37 - _x38 + _x39*_x98 - _x7,
+            -_x114*_x39 + _x98*_x99,
+            _x2 + _x24 + _x25*_x29 + _x25*_x31 + _x29 + _x31 - _x36*_x7 - _x37 + _x39*(4_f64*_x1*_x12*_x18*_x19*_x4*_x68*m - _x115*_x87 + 3.141592653589793_f64*_x12*_x22*_x68*_x69 + 3.141592653589793_f64*_x68*_x69 - _x83 - _x97) + _x99*(4_f64*_x1*_x104*_x12*_x18*_x19*_x4*m + 3.141592653589793_f64*_x104*_x12*_x22*_x69 + 3.141592653589793_f64*_x104*_x69 - _x110 - _x111*_x115 - _x113),
+            _x1*_x12*_x18*_x19*_x34 + 2_f64*_x1*_x12*_x22*_x28*_x4*e*m + _x1*_x12*_x22*_x28*e + _x1*_x12*_x22*e - _x1*_x23 + 2_f64*_x1*_x28*_x4*e*m + _x1*_x28*e + _x1*e - _x1 - _x116*_x23 - _x116 - _x117*_x25 - _x117 - _x23*_x95 - _x95,
+            -_x118*_x24 + _x118*_x30 + _x118*_x32 - _x118*_x38 + _x39*(_x119*_x79 - _x120*_x87 + _x121*_x91) - _x4*_x6 + _x99*(_x107*_x119 - _x111*_x120 + _x112*_x121),
+            _x39*(-_x124*_x126 + _x124*_x86 + _x124*_x94 - _x125*_x72 - _x125*_x84 + _x125*_x95 + _x127*_x131 + _x127*_x90 - _x127*_x96 + _x128*_x23 + _x128 + _x129*_x23 + _x129 - _x130*e - _x130) + _x99*(-_x126*_x133 + _x131*_x135 + _x133*_x86 + _x133*_x94 - _x134*_x72 - _x134*_x84 + _x134*_x95 + _x135*_x90 - _x135*_x96 + _x136*_x23 + _x136 + _x137*_x23 + _x137 - _x138*e - _x138),
+            _x39*(-_x126*_x143 + _x131*_x145 + _x143*_x86 + _x143*_x94 - _x144*_x72 - _x144*_x84 + _x144*_x95 + _x145*_x90 - _x145*_x96 + _x146*_x23 + _x146 + _x147*_x23 + _x147 - _x148*e - _x148) + _x99*(-_x126*_x149 + _x131*_x151 + _x149*_x86 + _x149*_x94 - _x150*_x72 - _x150*_x84 + _x150*_x95 + _x151*_x90 - _x151*_x96 + _x152*_x23 + _x152 + _x153*_x23 + _x153 - _x154*e - _x154),
+        ]
+    }
 }
 
 /// The Hunt–Crossley contact: exact restitution (Eq. F4 (derived here, beyond the paper)).
@@ -4706,6 +5191,107 @@ pub mod slow_flow {
         let _x10 = (M*_x2 + _x8*_x9 - _x7*_x8/_x6).recip();
         let _x11 = K*_x10;
         2_f64*xi*((C).powi(2)*(X_b).powi(2)*_x11*_x2 + (F0 + K*X_b).powi(2)).sqrt()/(3.141592653589793_f64*C*(K).sqrt()*(_x10).sqrt()*(xi).powi(3) - 16_f64*_x1*_x11*_x3*_x9*m/(3.141592653589793_f64*_x4))
+    }
+
+    /// The clearance on the response surface and its slopes in every argument, Eq. F5 (derived here, beyond the paper): the array
+    /// [`clearance_for_response`, `clearance_for_response_d_main_mass`, `clearance_for_response_d_K`, `clearance_for_response_d_C`, `clearance_for_response_d_impact_mass`, `clearance_for_response_d_e`, `clearance_for_response_d_F0`, `clearance_for_response_d_X_b`, `clearance_for_response_d_Omega`, `clearance_for_response_d_xi`],
+    /// their common subexpressions computed once.
+    ///
+    /// * `M`: Main mass M [kg]
+    /// * `K`: Main stiffness K [N/m]
+    /// * `C`: Main damping C (underdamped) [N s/m]
+    /// * `m`: Impact mass m [kg]
+    /// * `e`: Coefficient of restitution e [1]
+    /// * `F0`: Force amplitude F0 on the main mass [N]
+    /// * `X_b`: Base-motion amplitude X_b [m]
+    /// * `Omega`: Forcing frequency Ω [rad/s]
+    /// * `xi`: Primary amplitude over half the clearance ξ [1]
+    #[inline]
+    pub fn clearance_for_response_and_derivatives(M: f64, K: f64, C: f64, m: f64, e: f64, F0: f64, X_b: f64, Omega: f64, xi: f64) -> [f64; 10] {
+        let _x0 = (xi).powi(2);
+        let _x1 = C*_x0;
+        let _x2 = (3.141592653589793_f64).powi(-3);
+        let _x3 = e + 1_f64;
+        let _x4 = (_x3).recip();
+        let _x5 = (Omega).powi(2);
+        let _x6 = _x5*m;
+        let _x7 = _x2*_x4*_x6;
+        let _x8 = (3.141592653589793_f64).powi(-2);
+        let _x9 = (_x3).powi(-2);
+        let _x10 = _x8*_x9;
+        let _x11 = e - 1_f64;
+        let _x12 = (_x11).powi(2);
+        let _x13 = 4_f64*_x12;
+        let _x14 = _x10*_x13;
+        let _x15 = _x14 + 1_f64;
+        let _x16 = (_x15).powi(-2);
+        let _x17 = (_x0*_x14 + _x0 - _x14).sqrt();
+        let _x18 = _x17 + 1_f64;
+        let _x19 = (_x18).powi(2);
+        let _x20 = _x16*_x19;
+        let _x21 = _x20*_x7;
+        let _x22 = 16_f64*_x11;
+        let _x23 = Omega*_x1 - _x21*_x22;
+        let _x24 = K - M*_x5;
+        let _x25 = (_x15).recip();
+        let _x26 = _x18*_x25;
+        let _x27 = _x6*_x8;
+        let _x28 = _x26*_x27;
+        let _x29 = _x18*_x25 - 1_f64;
+        let _x30 = 8_f64*_x29;
+        let _x31 = _x0*_x24 - _x28*_x30;
+        let _x32 = (_x23).powi(2) + (_x31).powi(2);
+        let _x33 = (_x32).sqrt().recip();
+        let _x34 = F0 + K*X_b;
+        let _x35 = (X_b).powi(2);
+        let _x36 = (C).powi(2);
+        let _x37 = _x36*_x5;
+        let _x38 = ((_x34).powi(2) + _x35*_x37).sqrt();
+        let _x39 = 2_f64*_x38;
+        let _x40 = _x33*_x39;
+        let _x41 = _x39/(_x32).powf(3_f64/2.0);
+        let _x42 = _x41*(xi).powi(3);
+        let _x43 = _x31*_x42;
+        let _x44 = 2_f64*_x33*xi/_x38;
+        let _x45 = _x34*_x44;
+        let _x46 = _x35*_x44;
+        let _x47 = _x2*_x20*_x4;
+        let _x48 = _x26*_x8;
+        let _x49 = _x41*xi;
+        let _x50 = (_x3).powi(-3);
+        let _x51 = _x50*_x8;
+        let _x52 = _x12*_x51;
+        let _x53 = 2_f64*e - 2_f64;
+        let _x54 = _x10*_x53;
+        let _x55 = -_x0*_x13*_x51 + 2_f64*_x0*_x53*_x8*_x9 + 4_f64*_x12*_x50*_x8 - 2_f64*_x54;
+        let _x56 = (_x17).recip();
+        let _x57 = _x16*_x18;
+        let _x58 = _x56*_x57;
+        let _x59 = 64_f64*_x11;
+        let _x60 = _x59*_x7;
+        let _x61 = (1_f64/2.0)*_x23;
+        let _x62 = _x57*(8_f64*_x52 - 4_f64*_x54);
+        let _x63 = 16_f64*_x27;
+        let _x64 = _x29*_x63;
+        let _x65 = _x25*_x56;
+        let _x66 = _x55*_x65;
+        let _x67 = (1_f64/2.0)*_x31;
+        let _x68 = Omega*m;
+        let _x69 = 4_f64*xi;
+        let _x70 = _x10*_x12*_x69 + xi;
+        let _x71 = _x58*_x70;
+        [
+            _x40*xi,
+            _x43*_x5,
+            X_b*_x45 - _x43,
+            C*_x46*_x5 - Omega*_x23*_x42,
+            _x49*(_x22*_x23*_x47*_x5 + _x30*_x31*_x48*_x5),
+            _x49*(-_x61*(32_f64*_x11*_x16*_x19*_x2*_x5*_x9*m - 32_f64*_x11*_x19*_x7*(16_f64*_x52 - 8_f64*_x54)/(_x15).powi(3) - 32_f64*_x21 - _x55*_x58*_x60) - _x67*(-16_f64*_x28*(_x62 + _x66) - _x62*_x64 - _x64*_x66)),
+            _x45,
+            _x44*(K*_x34 + X_b*_x37),
+            Omega*_x36*_x46 + _x49*(-_x61*(2_f64*_x1 - _x47*_x59*_x68) - _x67*(-4_f64*M*Omega*_x0 - 32_f64*_x29*_x48*_x68)),
+            _x40 + _x49*(-_x61*(C*Omega*_x69 - _x60*_x71) - _x67*(4_f64*_x24*xi - _x63*_x71 - _x64*_x65*_x70)),
+        ]
     }
 }
 

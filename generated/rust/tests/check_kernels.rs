@@ -1894,7 +1894,7 @@ fn beam_modes_static_flexibility_simply_supported() {
 #[test]
 fn modal_structure_effective_mass_fraction_cantilever() {
     let expected = [0.012982162246810664, 0.0001955866257841068, 0.3266905371105036];
-    let scale = [0.012982162246810664, 0.0001955866257841068, 0.3266905371105036];
+    let scale = [0.05921436223430662, 0.16379149311904365, 0.3888370587710199];
     let points: [[f64; 1]; 3] = [[11.2279_f64], [5.95584_f64], [9.68377_f64]];
     let got: Vec<f64> = points
         .iter()
@@ -1906,7 +1906,7 @@ fn modal_structure_effective_mass_fraction_cantilever() {
 #[test]
 fn modal_structure_base_participation_cantilever() {
     let expected = [0.017812652668472952, -0.013850710845510723, -0.9908725945868799];
-    let scale = [0.017812652668472952, 0.013850710845510723, 0.9908725945868799];
+    let scale = [0.23534655451600126, 0.5293995789569295, 1.2466517781212454];
     let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
     let got: Vec<f64> = points
         .iter()
@@ -1918,7 +1918,7 @@ fn modal_structure_base_participation_cantilever() {
 #[test]
 fn modal_structure_effective_mass_fraction_clamped_clamped() {
     let expected = [0.08530436830297411, 0.12149844624989083, 0.13332982218395];
-    let scale = [0.08530436830297411, 0.12149844624989083, 0.13332982218395];
+    let scale = [0.1315365683231712, 0.2850987220939511, 0.19547634480875473];
     let points: [[f64; 1]; 3] = [[11.2279_f64], [5.95584_f64], [9.68377_f64]];
     let got: Vec<f64> = points
         .iter()
@@ -1930,7 +1930,7 @@ fn modal_structure_effective_mass_fraction_clamped_clamped() {
 #[test]
 fn modal_structure_base_participation_clamped_clamped() {
     let expected = [0.046022635686675285, -0.1561323572960023, -0.6510974258911841];
-    let scale = [0.046022635686675285, 0.1561323572960023, 0.6510974258911841];
+    let scale = [0.26355641081175707, 0.6716693657760677, 0.9068765330589181];
     let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
     let got: Vec<f64> = points
         .iter()
@@ -1942,7 +1942,7 @@ fn modal_structure_base_participation_clamped_clamped() {
 #[test]
 fn modal_structure_effective_mass_fraction_simply_supported() {
     let expected = [0.17732718536818246, 0.0001773118765340761, 0.08827898664896155];
-    let scale = [0.17732718536818246, 0.0001773118765340761, 0.08827898664896155];
+    let scale = [0.24078614020317363, 0.22570711595552398, 0.17358920531467975];
     let points: [[f64; 1]; 3] = [[11.2279_f64], [5.95584_f64], [9.68377_f64]];
     let got: Vec<f64> = points
         .iter()
@@ -1954,13 +1954,529 @@ fn modal_structure_effective_mass_fraction_simply_supported() {
 #[test]
 fn modal_structure_base_participation_simply_supported() {
     let expected = [-1.6006197176457142, -0.019830090465853763, -0.12912579157981768];
-    let scale = [1.6006197176457142, 0.019830090465853763, 0.12912579157981768];
+    let scale = [1.956875117141613, 0.6914398046287594, 0.5421880596840787];
     let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
     let got: Vec<f64> = points
         .iter()
         .map(|p| symimpact::modal_structure::base_participation_simply_supported(p[0], p[1]))
         .collect();
     check("modal_structure::base_participation_simply_supported", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_hertz_contact_duration_and_derivatives_0() {
+    let expected = [0.00484261680843532, 0.00013456345784133297, 0.38326922517706524];
+    let scale = [0.00484261680843532, 0.00013456345784133297, 0.38326922517706524];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 4.2132e+07_f64, 0.00382829_f64], [0.0769866_f64, 39.0189_f64, 5.61337e+09_f64, 1.46558_f64], [1.0101_f64, 6.12953_f64, 747.886_f64, 0.0561068_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::hertz_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[0])
+        .collect();
+    check("closed_forms::hertz_contact_duration_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_hertz_contact_duration_and_derivatives_1() {
+    let expected = [5.153446524992846e-05, 0.0006977758674392841, 0.13030198693386175];
+    let scale = [0.0013204900920463203, 0.0013983052410817774, 0.3035495298897656];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 4.2132e+07_f64, 0.00382829_f64], [0.0769866_f64, 39.0189_f64, 5.61337e+09_f64, 1.46558_f64], [1.0101_f64, 6.12953_f64, 747.886_f64, 0.0561068_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::hertz_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[1])
+        .collect();
+    check("closed_forms::hertz_contact_duration_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_hertz_contact_duration_and_derivatives_2() {
+    let expected = [0.007189917841357623, 2.7164153866971025e-09, 0.003538550764729489];
+    let scale = [0.01559725684426171, 2.758939033982669e-06, 0.050022657551501044];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 4.2132e+07_f64, 0.00382829_f64], [0.0769866_f64, 39.0189_f64, 5.61337e+09_f64, 1.46558_f64], [1.0101_f64, 6.12953_f64, 747.886_f64, 0.0561068_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::hertz_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[2])
+        .collect();
+    check("closed_forms::hertz_contact_duration_and_derivatives[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_hertz_contact_duration_and_derivatives_3() {
+    let expected = [-4.5975665132776225e-11, -9.588782342253083e-15, -0.00020498804640122438];
+    let scale = [9.195133026555245e-11, 1.9177564684506166e-14, 0.00040997609280244877];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 4.2132e+07_f64, 0.00382829_f64], [0.0769866_f64, 39.0189_f64, 5.61337e+09_f64, 1.46558_f64], [1.0101_f64, 6.12953_f64, 747.886_f64, 0.0561068_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::hertz_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[3])
+        .collect();
+    check("closed_forms::hertz_contact_duration_and_derivatives[3]", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_hertz_contact_duration_and_derivatives_4() {
+    let expected = [-0.25299111657869805, -1.8363167870922495e-05, -1.3662130977958653];
+    let scale = [0.5059822331573961, 3.672633574184499e-05, 2.7324261955917306];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 4.2132e+07_f64, 0.00382829_f64], [0.0769866_f64, 39.0189_f64, 5.61337e+09_f64, 1.46558_f64], [1.0101_f64, 6.12953_f64, 747.886_f64, 0.0561068_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::hertz_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[4])
+        .collect();
+    check("closed_forms::hertz_contact_duration_and_derivatives[4]", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_linear_contact_duration_and_derivatives_0() {
+    let expected = [0.002943472051133231, 0.0003338269810588997, 0.21959034339392178];
+    let scale = [0.002943472051133231, 0.0003338269810588997, 0.21959034339392178];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 260860_f64, 0.0728757_f64], [0.0769866_f64, 39.0189_f64, 6.80481e+06_f64, 0.395751_f64], [1.0101_f64, 6.12953_f64, 177.51_f64, 0.218627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::linear_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[0])
+        .collect();
+    check("closed_forms::linear_contact_duration_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_linear_contact_duration_and_derivatives_1() {
+    let expected = [3.915503248612775e-05, 0.0021638154739013604, 0.09331181216020386];
+    let scale = [0.0010032865698384687, 0.004336170270628969, 0.21741630961415576];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 260860_f64, 0.0728757_f64], [0.0769866_f64, 39.0189_f64, 6.80481e+06_f64, 0.395751_f64], [1.0101_f64, 6.12953_f64, 177.51_f64, 0.218627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::linear_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[1])
+        .collect();
+    check("closed_forms::linear_contact_duration_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_linear_contact_duration_and_derivatives_2() {
+    let expected = [0.005462780399207461, 8.42365281110899e-09, 0.0025340257048066337];
+    let scale = [0.011850537785473271, 8.55552196394022e-06, 0.035832545348669385];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 260860_f64, 0.0728757_f64], [0.0769866_f64, 39.0189_f64, 6.80481e+06_f64, 0.395751_f64], [1.0101_f64, 6.12953_f64, 177.51_f64, 0.218627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::linear_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[2])
+        .collect();
+    check("closed_forms::linear_contact_duration_and_derivatives[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_linear_contact_duration_and_derivatives_3() {
+    let expected = [-5.6418617583305524e-09, -2.4528752901135204e-11, -0.0006185775187455155];
+    let scale = [1.1283723516661105e-08, 4.905750580227041e-11, 0.001237155037491031];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 260860_f64, 0.0728757_f64], [0.0769866_f64, 39.0189_f64, 6.80481e+06_f64, 0.395751_f64], [1.0101_f64, 6.12953_f64, 177.51_f64, 0.218627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::linear_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[3])
+        .collect();
+    check("closed_forms::linear_contact_duration_and_derivatives[3]", &got, &expected, &scale);
+}
+
+#[test]
+fn closed_forms_linear_contact_duration_and_derivatives_4() {
+    let expected = [8.977338817540039e-10, 6.316963942168118e-11, 7.797440897580077e-05];
+    let scale = [1.7954677635080078e-09, 1.2633927884336237e-10, 0.00015594881795160154];
+    let points: [[f64; 4]; 3] = [[2.93383_f64, 0.248383_f64, 260860_f64, 0.0728757_f64], [0.0769866_f64, 39.0189_f64, 6.80481e+06_f64, 0.395751_f64], [1.0101_f64, 6.12953_f64, 177.51_f64, 0.218627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::closed_forms::linear_contact_duration_and_derivatives(p[0], p[1], p[2], p[3])[4])
+        .collect();
+    check("closed_forms::linear_contact_duration_and_derivatives[4]", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_state_0() {
+    let expected = [-0.009085818420394019, 0.002296240029039171, 0.008072171428258494];
+    let scale = [0.024897176826398196, 0.020015269793457812, 0.08085558775975273];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_state(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[0])
+        .collect();
+    check("forced_flight::forced_state[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_state_1() {
+    let expected = [-3.582469517580021, 0.22535741998218997, 0.30639423474236777];
+    let scale = [7.610919080044438, 2.8945912398666196, 0.6151571015106887];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_state(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[1])
+        .collect();
+    check("forced_flight::forced_state[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_transition_0() {
+    let expected = [-0.009085818420394019, 0.002296240029039171, 0.008072171428258494];
+    let scale = [0.024897176826398196, 0.020015269793457812, 0.08085558775975273];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_transition(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[0])
+        .collect();
+    check("forced_flight::forced_transition[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_transition_1() {
+    let expected = [-3.582469517580021, 0.22535741998218997, 0.30639423474236777];
+    let scale = [7.610919080044438, 2.8945912398666196, 0.6151571015106887];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_transition(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[1])
+        .collect();
+    check("forced_flight::forced_transition[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_transition_2() {
+    let expected = [0.2277967187579221, -0.03630523276621419, 0.9842293577643402];
+    let scale = [1.0793116850624607, 1.0343308426353268, 1.9709491315946521];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_transition(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[2])
+        .collect();
+    check("forced_flight::forced_transition[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_transition_3() {
+    let expected = [-0.001867844218883491, 0.007313775801781447, 0.0014271484693960178];
+    let scale = [0.0038064797406801047, 0.014632401698058854, 0.2338624222836518];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_transition(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[3])
+        .collect();
+    check("forced_flight::forced_transition[3]", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_transition_4() {
+    let expected = [360.2125427530413, -136.00238915690514, -0.025589593276717587];
+    let scale = [734.2270130793975, 272.1010410173936, 4.214351032496912];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_transition(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[4])
+        .collect();
+    check("forced_flight::forced_transition[4]", &got, &expected, &scale);
+}
+
+#[test]
+fn forced_flight_forced_transition_5() {
+    let expected = [0.22812553448044887, -0.036349741027029044, 0.9841988158422643];
+    let scale = [1.0796405007849874, 1.0343753508961417, 1.9709185896725763];
+    let points: [[f64; 10]; 3] = [[1.82843_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -0.00788897_f64, 74.0145_f64, 2.26106_f64, -0.00408337_f64, 0.77033_f64], [0.656854_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 0.00422205_f64, 173.234_f64, -1.77787_f64, -0.00816674_f64, -0.459341_f64], [1.48528_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -0.00366692_f64, 405.462_f64, 0.48319_f64, 0.00774989_f64, 0.310989_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::forced_flight::forced_transition(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[5])
+        .collect();
+    check("forced_flight::forced_transition[5]", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_velocities_after_and_derivatives_0() {
+    let expected = [0.8987997928799252, 0.5823619296499037, -0.12467366836834094];
+    let scale = [2.240546792879925, 1.8988679296499038, 0.35041666836834096];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::velocities_after_and_derivatives(p[0], p[1], p[2], p[3], p[4])[0])
+        .collect();
+    check("rigid_impact::velocities_after_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_velocities_after_and_derivatives_1() {
+    let expected = [-0.08881723791607479, 1.8621848064659037, -0.12992894553234094];
+    let scale = [1.4305642379160748, 3.178690806465904, 0.35567194553234094];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::velocities_after_and_derivatives(p[0], p[1], p[2], p[3], p[4])[1])
+        .collect();
+    check("rigid_impact::velocities_after_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_velocities_after_and_derivatives_2() {
+    let expected = [0.9258259428086487, -0.0003260780950686189, 0.0006773124668177276];
+    let scale = [1.8516518856172974, 0.0006521561901372377, 0.006734859639942183];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::velocities_after_and_derivatives(p[0], p[1], p[2], p[3], p[4])[2])
+        .collect();
+    check("rigid_impact::velocities_after_and_derivatives[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_velocities_after_and_derivatives_3() {
+    let expected = [-0.19791346124114692, 0.9995115325337702, 0.9675792705653878];
+    let scale = [2.3958269224822937, 2.0, 2.0];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::velocities_after_and_derivatives(p[0], p[1], p[2], p[3], p[4])[3])
+        .collect();
+    check("rigid_impact::velocities_after_and_derivatives[3]", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_velocities_after_and_derivatives_4() {
+    let expected = [1.1979134612411468, 0.0004884674662297367, 0.03242072943461219];
+    let scale = [2.3958269224822937, 0.0009769349324594734, 0.06484145886922438];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::velocities_after_and_derivatives(p[0], p[1], p[2], p[3], p[4])[4])
+        .collect();
+    check("rigid_impact::velocities_after_and_derivatives[4]", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_velocities_after_and_derivatives_5() {
+    let expected = [-0.41592105719135125, 1.3161799219049313, -0.02456368753318226];
+    let scale = [0.8318421143827025, 2.6323598438098625, 0.2442491403600578];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::velocities_after_and_derivatives(p[0], p[1], p[2], p[3], p[4])[5])
+        .collect();
+    check("rigid_impact::velocities_after_and_derivatives[5]", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_velocities_after_and_derivatives_6() {
+    let expected = [0.538154538758853, 1.9716475325337703, 1.175783270565388];
+    let scale = [1.076309077517706, 3.9432950650675407, 2.351566541130776];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::velocities_after_and_derivatives(p[0], p[1], p[2], p[3], p[4])[6])
+        .collect();
+    check("rigid_impact::velocities_after_and_derivatives[6]", &got, &expected, &scale);
+}
+
+#[test]
+fn rigid_impact_velocities_after_and_derivatives_7() {
+    let expected = [0.461845461241147, -0.9716475325337702, -0.1757832705653878];
+    let scale = [2.0, 3.9432950650675407, 2.351566541130776];
+    let points: [[f64; 5]; 3] = [[0.552892_f64, 0.248383_f64, 0.736068_f64, -0.708497_f64, 0.63325_f64], [0.00966677_f64, 39.0189_f64, 0.972136_f64, 0.583005_f64, -0.733501_f64], [0.169014_f64, 6.12953_f64, 0.208204_f64, -0.125492_f64, -0.100251_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::rigid_impact::velocities_after_and_derivatives(p[0], p[1], p[2], p[3], p[4])[7])
+        .collect();
+    check("rigid_impact::velocities_after_and_derivatives[7]", &got, &expected, &scale);
+}
+
+#[test]
+fn periodic_orbit_phase_residual_and_derivatives_0() {
+    let expected = [0.0012034644155894218, 0.011224841892893645, -1.290319088743204e-07];
+    let scale = [0.01539678364265028, 0.17294075261329953, 5.715294801898301e-07];
+    let points: [[f64; 10]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, 0.000192699_f64, 2.46211_f64, 0.00717798_f64, 5.40518_f64, 2.42654_f64], [0.907579_f64, 78037.8_f64, 0.486068_f64, 0.066263_f64, 0.13325_f64, 0.00830318_f64, 4.92423_f64, -0.00564404_f64, 1.68679_f64, -1.44692_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, 0.000715549_f64, 7.38634_f64, 0.00153394_f64, 157.918_f64, 0.979615_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::periodic_orbit::phase_residual_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[0])
+        .collect();
+    check("periodic_orbit::phase_residual_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn periodic_orbit_phase_residual_and_derivatives_1() {
+    let expected = [-0.0011779373061544648, 0.0069121197809340965, -8.428577153256806e-08];
+    let scale = [0.020888493172773644, 2.471313652092032, 6.166974511500441e-07];
+    let points: [[f64; 10]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, 0.000192699_f64, 2.46211_f64, 0.00717798_f64, 5.40518_f64, 2.42654_f64], [0.907579_f64, 78037.8_f64, 0.486068_f64, 0.066263_f64, 0.13325_f64, 0.00830318_f64, 4.92423_f64, -0.00564404_f64, 1.68679_f64, -1.44692_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, 0.000715549_f64, 7.38634_f64, 0.00153394_f64, 157.918_f64, 0.979615_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::periodic_orbit::phase_residual_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[1])
+        .collect();
+    check("periodic_orbit::phase_residual_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn periodic_orbit_phase_residual_and_derivatives_2() {
+    let expected = [0.00018090449663344063, 0.02111567861172046, 2.615100132156169e-09];
+    let scale = [0.01106398621828408, 2.2048111693539223, 5.138169185933974e-07];
+    let points: [[f64; 10]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, 0.000192699_f64, 2.46211_f64, 0.00717798_f64, 5.40518_f64, 2.42654_f64], [0.907579_f64, 78037.8_f64, 0.486068_f64, 0.066263_f64, 0.13325_f64, 0.00830318_f64, 4.92423_f64, -0.00564404_f64, 1.68679_f64, -1.44692_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, 0.000715549_f64, 7.38634_f64, 0.00153394_f64, 157.918_f64, 0.979615_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::periodic_orbit::phase_residual_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[2])
+        .collect();
+    check("periodic_orbit::phase_residual_and_derivatives[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn periodic_orbit_phase_residual_and_derivatives_3() {
+    let expected = [-0.0009249279922699639, -0.813520334467653, -7.196738762399061e-05];
+    let scale = [0.30975603356702497, 2.082074820287281, 0.00036311489617053404];
+    let points: [[f64; 10]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, 0.000192699_f64, 2.46211_f64, 0.00717798_f64, 5.40518_f64, 2.42654_f64], [0.907579_f64, 78037.8_f64, 0.486068_f64, 0.066263_f64, 0.13325_f64, 0.00830318_f64, 4.92423_f64, -0.00564404_f64, 1.68679_f64, -1.44692_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, 0.000715549_f64, 7.38634_f64, 0.00153394_f64, 157.918_f64, 0.979615_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::periodic_orbit::phase_residual_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[3])
+        .collect();
+    check("periodic_orbit::phase_residual_and_derivatives[3]", &got, &expected, &scale);
+}
+
+#[test]
+fn periodic_orbit_phase_residual_and_derivatives_4() {
+    let expected = [-0.00022909607061149273, -0.007586401008704871, -2.2156238568002612e-08];
+    let scale = [0.0007489781691765737, 0.03492074822151698, 1.0218096153371363e-07];
+    let points: [[f64; 10]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, 0.000192699_f64, 2.46211_f64, 0.00717798_f64, 5.40518_f64, 2.42654_f64], [0.907579_f64, 78037.8_f64, 0.486068_f64, 0.066263_f64, 0.13325_f64, 0.00830318_f64, 4.92423_f64, -0.00564404_f64, 1.68679_f64, -1.44692_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, 0.000715549_f64, 7.38634_f64, 0.00153394_f64, 157.918_f64, 0.979615_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::periodic_orbit::phase_residual_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[4])
+        .collect();
+    check("periodic_orbit::phase_residual_and_derivatives[4]", &got, &expected, &scale);
+}
+
+#[test]
+fn periodic_orbit_phase_residual_and_derivatives_5() {
+    let expected = [0.0002001405962600689, -4.1282603323015064e-05, -2.9572869996261017e-09];
+    let scale = [0.0034623042132394064, 0.005574571815200737, 2.3265723421457293e-08];
+    let points: [[f64; 10]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, 0.000192699_f64, 2.46211_f64, 0.00717798_f64, 5.40518_f64, 2.42654_f64], [0.907579_f64, 78037.8_f64, 0.486068_f64, 0.066263_f64, 0.13325_f64, 0.00830318_f64, 4.92423_f64, -0.00564404_f64, 1.68679_f64, -1.44692_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, 0.000715549_f64, 7.38634_f64, 0.00153394_f64, 157.918_f64, 0.979615_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::periodic_orbit::phase_residual_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[5])
+        .collect();
+    check("periodic_orbit::phase_residual_and_derivatives[5]", &got, &expected, &scale);
+}
+
+#[test]
+fn periodic_orbit_phase_residual_and_derivatives_6() {
+    let expected = [0.09903545075783521, -3.221616554347606, -3.63066282713426e-05];
+    let scale = [1.7260600737880165, 435.03187012719485, 0.0002856036433680527];
+    let points: [[f64; 10]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, 0.000192699_f64, 2.46211_f64, 0.00717798_f64, 5.40518_f64, 2.42654_f64], [0.907579_f64, 78037.8_f64, 0.486068_f64, 0.066263_f64, 0.13325_f64, 0.00830318_f64, 4.92423_f64, -0.00564404_f64, 1.68679_f64, -1.44692_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, 0.000715549_f64, 7.38634_f64, 0.00153394_f64, 157.918_f64, 0.979615_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::periodic_orbit::phase_residual_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9])[6])
+        .collect();
+    check("periodic_orbit::phase_residual_and_derivatives[6]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_0() {
+    let expected = [0.00011628059619344335, 0.0005203145803725032, 0.000382467303687025];
+    let scale = [0.00011628059619344335, 0.0005203145803725032, 0.000382467303687025];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[0])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_1() {
+    let expected = [-8.645067569238502e-06, 4.7673681068122075e-05, -0.0010375408524110898];
+    let scale = [1.7332960661064765e-05, 0.000148814035535072, 0.0023248435931612654];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[1])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_2() {
+    let expected = [-4.245479647523432e-08, -2.2015113414877292e-08, 1.6141701878732862e-07];
+    let scale = [1.0162871512524641e-07, 2.1053276409487083e-07, 3.2861974288071283e-07];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[2])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_3() {
+    let expected = [1.0501950590555848e-07, -6.698433777535246e-10, 4.5710375733521933e-07];
+    let scale = [2.100965668911972e-07, 2.0612935725739602e-09, 9.517565021610194e-07];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[3])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[3]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_4() {
+    let expected = [-2.1229830331942447e-05, 3.729119563796722e-05, -0.0009269382908180645];
+    let scale = [8.842943705669158e-05, 8.470911913751996e-05, 0.0016765346590463775];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[4])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[4]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_5() {
+    let expected = [-1.4718303745420558e-08, 1.0838163476448268e-07, -1.1292427223066737e-07];
+    let scale = [3.280461137909563e-07, 1.351615884437346e-06, 2.4495601676300704e-06];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[5])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[5]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_6() {
+    let expected = [-1.7438361607326342e-05, 5.988683475899715e-06, 1.3949657533409853e-05];
+    let scale = [4.127611499936895e-05, 1.248287512131932e-05, 2.7899315066819705e-05];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[6])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[6]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_7() {
+    let expected = [-0.008647101622553796, 0.0734158735698532, 0.02687478745479328];
+    let scale = [0.020504611819891515, 0.15302882234066767, 0.05374957490958656];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[7])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[7]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_8() {
+    let expected = [-1.736834263569008e-06, 2.1758814183652573e-05, -4.126642826847206e-06];
+    let scale = [3.484330272302455e-06, 6.789647412452392e-05, 9.241821990218337e-06];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[8])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[8]", &got, &expected, &scale);
+}
+
+#[test]
+fn slow_flow_clearance_for_response_and_derivatives_9() {
+    let expected = [-0.00024540155185923525, -1.2236490681613105e-05, -4.244074182258537e-05];
+    let scale = [0.000986267936067523, 0.00013462585814466184, 0.00021565872858590661];
+    let points: [[f64; 9]; 3] = [[13.4728_f64, 496.767_f64, 0.368034_f64, 0.0021646_f64, 0.816625_f64, -7.88897_f64, 0.00246211_f64, 134.152_f64, 0.473717_f64], [6.1138_f64, 12259.1_f64, 0.104102_f64, 0.0101423_f64, 0.449874_f64, -3.66692_f64, 0.00738634_f64, 26.8255_f64, 42.5222_f64], [0.411849_f64, 1925.79_f64, 0.222136_f64, 0.00155238_f64, 0.766499_f64, 8.4441_f64, 0.00984845_f64, 207.771_f64, 9.00845_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[9])
+        .collect();
+    check("slow_flow::clearance_for_response_and_derivatives[9]", &got, &expected, &scale);
 }
 
 #[test]

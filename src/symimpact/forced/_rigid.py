@@ -54,11 +54,8 @@ OK, TOO_MANY_EVENTS = 0, 1
 
 _xf = njit(cache=True)(_fl.forced_displacement_scalar)
 _vf = njit(cache=True)(_fl.forced_velocity_scalar)
-# the flight's transition matrix: the generated derivatives of x(t), ẋ(t) in x0, ẋ0
-_xf_x0 = njit(cache=True)(_fl.forced_displacement_d_x0_scalar)
-_xf_v0 = njit(cache=True)(_fl.forced_displacement_d_xdot0_scalar)
-_vf_x0 = njit(cache=True)(_fl.forced_velocity_d_x0_scalar)
-_vf_v0 = njit(cache=True)(_fl.forced_velocity_d_xdot0_scalar)
+# the flight's transition matrix: the generated derivatives of x(t), ẋ(t) in x0, ẋ0, bundled
+_transition = njit(cache=True)(_fl.forced_transition_scalar)
 # and its derivatives in the forcing, for the map's ∂P/∂p
 _xf_F0 = njit(cache=True)(_fl.forced_displacement_d_F0_scalar)
 _vf_F0 = njit(cache=True)(_fl.forced_velocity_d_F0_scalar)
@@ -92,17 +89,15 @@ def _state(p, mass, t0, x0, v0, tau):
 @njit(cache=True)
 def flight_matrices(taus, masses, K, C):
     """Φ(τ) of flights (Step 8, Eq. F1: ∂(x, ẋ)/∂(x0, ẋ0), the generated derivative kernels
-    ``forced_displacement_d_x0`` … ``forced_velocity_d_xdot0``, which the forcing does not
-    enter; z = y − x moves by τ·ẏ − (x(τ) − x0), ẏ constant), one 4×4 per flight of ``taus``
+    ``forced_displacement_d_x0`` … ``forced_velocity_d_xdot0`` in their bundle
+    ``forced_transition``, which the forcing does not enter; z = y − x moves by τ·ẏ − (x(τ) − x0), ẏ constant), one 4×4 per flight of ``taus``
     [s] with its moving mass ``masses`` [kg]: the Jacobians of the shooting chain."""
     out = np.zeros((taus.shape[0], 4, 4))
     for i in range(taus.shape[0]):
         tau, mass = taus[i], masses[i]
-        p11 = _xf_x0(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
-        p12 = _xf_v0(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+        _, _, p11, p12, p21, p22 = _transition(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
         out[i, 0, 0], out[i, 0, 1] = p11, p12
-        out[i, 1, 0] = _vf_x0(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
-        out[i, 1, 1] = _vf_v0(tau, mass, K, C, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+        out[i, 1, 0], out[i, 1, 1] = p21, p22
         out[i, 2, 0], out[i, 2, 1], out[i, 2, 2], out[i, 2, 3] = 1.0 - p11, -p12, 1.0, tau
         out[i, 3, 3] = 1.0
     return out
