@@ -487,4 +487,32 @@ print(f"first mode: {mp.nstr(v, 10)}, exact 1/3: {mp.nstr(mp.mpf(1) / 3, 10)}, "
             source="Blevins, Formulas for Natural Frequency and Mode Shape, Table 8-1",
         ),
     ),
+    "modal_structure": (
+        Exercise(
+            "Rayleigh damping between its two frequencies",
+            "C = αM + βK set to ζ = 0.02 at ω₁ = 10 and ω₂ = 100 rad/s: in between, at the "
+            "geometric mean √(ω₁ω₂), a mode is damped less.",
+            """given = {z_: sp.Rational(2, 100), wa: 10, wb: 100}
+a_, b_ = alpha_v.subs(given), beta_v.subs(given)
+middle = sp.sqrt(10 * 100)
+print(f"alpha = {sp.N(a_, 8)} 1/s, beta = {sp.N(b_, 8)} s")
+print(f"zeta at sqrt(w1 w2) = {sp.N(zeta_i.subs({al: a_, be: b_, wi: middle}), 10)}")""",
+            ask="ζ of a mode at √(ω₁ω₂) ≈ 31.62 rad/s.",
+            answer="zeta_i.subs({al: alpha_v.subs({z_: sp.Rational(2, 100), wa: 10, wb: 100}), be: beta_v.subs({z_: sp.Rational(2, 100), wa: 10, wb: 100}), wi: sp.sqrt(1000)})",
+            stated="0.01149919",
+            source="2ζ√(ω₁ω₂)/(ω₁ + ω₂), the Rayleigh ratio at the geometric mean",
+        ),
+        Exercise(
+            "The cantilever's second mode at the tip under base motion",
+            "Referred to the tip, the second mode is driven by the base with Γ₂, of the "
+            "opposite sign to Γ₁: it moves the tip against the first.",
+            """gamma = sp.lambdify(k, participation["cantilever"].subs(xi, 1), "mpmath")
+for i, r in enumerate(roots("cantilever", 3), start=1):
+    print(f"mode {i}: Gamma at the tip = {mp.nstr(gamma(r), 10)}")""",
+            ask="Γ₂ of the cantilever referred to its tip.",
+            answer="sp.lambdify(k, participation['cantilever'].subs(xi, 1), 'mpmath')(roots('cantilever', 2)[1])",
+            stated="-0.8678718",
+            source="φ₂(1)∫φ₂dξ/∫φ₂²dξ by mpmath quadrature of the shape",
+        ),
+    ),
 }

@@ -29,6 +29,7 @@ import sympy as sp
 
 from .beam_modes import BEAMS, NAMES, _mode_shapes, norm_at_root, roots
 from .board import Arg, Board, rounding_scale
+from .forced_flight import derive as forced_flight_step
 
 #: Modes summed for the effective-mass sum rule of the beams.
 N_SUM = 64
@@ -99,9 +100,7 @@ def derive() -> Board:
 
     # the check: a three-degree-of-freedom chain's steady response at its top, by modes with Step
     # 8's steady coefficients, against the complex frequency response of the full equations
-    from .forced_flight import derive as step8
-
-    b8 = step8()
+    b8 = forced_flight_step()
     A8, B8 = b8.values["steady_cosine"], b8.values["steady_sine"]
     P8, Q8 = b8.values["P"], b8.values["Q"]
     sym8 = {
