@@ -184,15 +184,15 @@ def derive() -> Board:
         fractions[beam] = w(
             f"effective_mass_fraction_{beam}",
             area**2 / norm,
-            f"The {NAMES[beam]}: the share MᵢΓᵢ²/(ρAL) = (∫φ dξ)²/∫φ² dξ of the beam's mass "
-            "that the mode moves when the supports move (base excitation).",
+            f"The {NAMES[beam]}: the share MᵢΓᵢ²/(ρAL) = I²/N of the beam's mass that the mode "
+            "moves when the supports move (base excitation), I = ∫φ dξ and N = ∫φ² dξ.",
             "F7",
         )
         participation[beam] = w(
             f"base_participation_{beam}",
             phi * area / norm,
             f"The {NAMES[beam]}: Γᵢ of the mode referred to the point ξ (qᵢ the displacement "
-            "there): Γᵢ = φ(ξ)∫φ dξ/∫φ² dξ.",
+            "there): Γᵢ = φ(ξ)·I/N.",
             "F7",
         )
         with mp.workdps(30):
@@ -322,9 +322,25 @@ def derive() -> Board:
             for j in range(2 * n + 2)
         ),
     )
-    w("modal_saltation", S, "The saltation matrix of an impact at a point of a two-mode "
-      "structure, state (q₁, q₂, q̇₁, q̇₂, z, ẏ), z = y − Σφᵢqᵢ, aᵢ each mode's acceleration "
-      "before the impact; any number of modes follows the same pattern.", "F7")  # fmt: skip
+    # the entries that carry the impact's move in time, written as a teacher would: k₁, kₘ and
+    # the point's acceleration A = Σφⱼaⱼ named
+    k1s, kms, A_s, zs = sp.symbols("k_1 k_m A zdot")
+    point_acc = sum(p * a for p, a in zip(ps, acc, strict=True))
+    w(
+        "modal_saltation_velocity_z",
+        S[n, 2 * n],
+        "Row q̇₁, column z of the saltation matrix of an impact at a point of a two-mode structure "
+        "(state q₁, q₂, q̇₁, q̇₂, z = y − Σφᵢqᵢ, ẏ): a perturbation of z moves the impact in time, "
+        "and mode 1's velocity after it by this much per metre; A = Σφⱼaⱼ is the point's "
+        "acceleration before the impact, k₁ = (1 + e)μφ₁/M₁ the mode's gain.",
+        "F7",
+        shown=k1s * (A_s / zs - Cs[0] / Ms[0]),
+        names={k1s: gains[0], A_s: point_acc, zs: zrate},
+    )
+    w("modal_saltation_impact_velocity_z", S[2 * n + 1, 2 * n],
+      "Row ẏ, column z, the same for the impact mass (kₘ = (1 + e)μ/m); any number of modes "
+      "follows the pattern of the check above.", "F7",
+      shown=-kms * A_s / zs, names={kms: k_m, A_s: point_acc, zs: zrate})  # fmt: skip
     # one mode with φ = 1: Step 9's matrix
     M_, C_, am_ = sp.symbols("M C a_minus", real=True)
     one = S.subs({ps[1]: 0}).subs({ps[0]: 1, Ms[0]: M_, Cs[0]: C_, acc[0]: am_})
@@ -349,7 +365,7 @@ def derive() -> Board:
     arg_xi = Arg(xi, "1", "Point ξ = r/L along the beam (0 < ξ < 1)", 0.2, 0.8)
     for beam in BEAMS:
         board.kernel(
-            name=f"effective_mass_fraction_{beam}",
+            name=f"mass_share_{beam}",
             args=(arg_k,),
             expr=fractions[beam],
             returns=f"Share MᵢΓᵢ²/(ρAL) of the {NAMES[beam]}'s mass that a mode moves under base "
@@ -362,7 +378,7 @@ def derive() -> Board:
             note="beta_L must be a root of the frequency equation.",
         )
         board.kernel(
-            name=f"base_participation_{beam}",
+            name=f"participation_{beam}",
             args=(arg_k, arg_xi),
             expr=participation[beam],
             returns=f"Participation factor Γᵢ of a mode of the {NAMES[beam]} referred to the "

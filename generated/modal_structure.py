@@ -19,18 +19,18 @@ import numpy
 from ._broadcast import broadcast, shaped
 
 __all__ = [
-    "effective_mass_fraction_cantilever",
-    "effective_mass_fraction_cantilever_scalar",
-    "base_participation_cantilever",
-    "base_participation_cantilever_scalar",
-    "effective_mass_fraction_clamped_clamped",
-    "effective_mass_fraction_clamped_clamped_scalar",
-    "base_participation_clamped_clamped",
-    "base_participation_clamped_clamped_scalar",
-    "effective_mass_fraction_simply_supported",
-    "effective_mass_fraction_simply_supported_scalar",
-    "base_participation_simply_supported",
-    "base_participation_simply_supported_scalar",
+    "mass_share_cantilever",
+    "mass_share_cantilever_scalar",
+    "participation_cantilever",
+    "participation_cantilever_scalar",
+    "mass_share_clamped_clamped",
+    "mass_share_clamped_clamped_scalar",
+    "participation_clamped_clamped",
+    "participation_clamped_clamped_scalar",
+    "mass_share_simply_supported",
+    "mass_share_simply_supported_scalar",
+    "participation_simply_supported",
+    "participation_simply_supported_scalar",
     "BUNDLES",
 ]
 
@@ -40,7 +40,7 @@ BUNDLES = {
 }
 
 
-def effective_mass_fraction_cantilever(beta_L):
+def mass_share_cantilever(beta_L):
     r"""Share MᵢΓᵢ²/(ρAL) of the cantilever's mass that a mode moves under base excitation [1].
 
     Eq. F7 (derived here, beyond the paper).
@@ -78,8 +78,8 @@ def effective_mass_fraction_cantilever(beta_L):
     return shaped(4*(-_x0*_x8 + _x1*_x6*_x9*numpy.sin(_x10) - _x1*_x8 + _x1 + _x11*_x6*_x7 + _x11 + _x6 + _x7)**2*numpy.exp(-2*beta_L)/(_x2**2*beta_L**2*(-_x0*(_x5 + 1) + _x1*_x5 + _x3 + _x4)**2), beta_L.shape)
 
 
-def effective_mass_fraction_cantilever_scalar(beta_L):
-    """Share MᵢΓᵢ²/(ρAL) of the cantilever's mass that a mode moves under base excitation [1]: float twin of `effective_mass_fraction_cantilever` (Eq. F7)."""
+def mass_share_cantilever_scalar(beta_L):
+    """Share MᵢΓᵢ²/(ρAL) of the cantilever's mass that a mode moves under base excitation [1]: float twin of `mass_share_cantilever` (Eq. F7)."""
     beta_L = numpy.float64(beta_L)
     _x0 = numpy.cos(beta_L)
     _x1 = numpy.cosh(beta_L)
@@ -96,7 +96,7 @@ def effective_mass_fraction_cantilever_scalar(beta_L):
     return 4*(-_x0*_x8 + _x1*_x6*_x9*numpy.sin(_x10) - _x1*_x8 + _x1 + _x11*_x6*_x7 + _x11 + _x6 + _x7)**2*numpy.exp(-2*beta_L)/(_x2**2*beta_L**2*(-_x0*(_x5 + 1) + _x1*_x5 + _x3 + _x4)**2)
 
 
-def base_participation_cantilever(beta_L, xi):
+def participation_cantilever(beta_L, xi):
     r"""Participation factor Γᵢ of a mode of the cantilever referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1].
 
     Eq. F7 (derived here, beyond the paper).
@@ -138,8 +138,8 @@ def base_participation_cantilever(beta_L, xi):
     return shaped(-4*_x0*_x3*(_x11*numpy.cosh(_x13) - _x12*numpy.cos(_x13) + numpy.sin(_x13) + numpy.exp(-_x13))*(-_x1*_x6 + _x2*_x4*_x7*numpy.sin(_x8) - _x2*_x6 + _x2 + _x4*_x5*_x9 + _x4 + _x5 + _x9)/(beta_L*(_x0 - _x1*_x12 + _x10 + _x11*_x2)**2), beta_L.shape)
 
 
-def base_participation_cantilever_scalar(beta_L, xi):
-    """Participation factor Γᵢ of a mode of the cantilever referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1]: float twin of `base_participation_cantilever` (Eq. F7)."""
+def participation_cantilever_scalar(beta_L, xi):
+    """Participation factor Γᵢ of a mode of the cantilever referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1]: float twin of `participation_cantilever` (Eq. F7)."""
     beta_L = numpy.float64(beta_L)
     xi = numpy.float64(xi)
     _x0 = numpy.exp(-beta_L)
@@ -159,7 +159,7 @@ def base_participation_cantilever_scalar(beta_L, xi):
     return -4*_x0*_x3*(_x11*numpy.cosh(_x13) - _x12*numpy.cos(_x13) + numpy.sin(_x13) + numpy.exp(-_x13))*(-_x1*_x6 + _x2*_x4*_x7*numpy.sin(_x8) - _x2*_x6 + _x2 + _x4*_x5*_x9 + _x4 + _x5 + _x9)/(beta_L*(_x0 - _x1*_x12 + _x10 + _x11*_x2)**2)
 
 
-def effective_mass_fraction_clamped_clamped(beta_L):
+def mass_share_clamped_clamped(beta_L):
     r"""Share MᵢΓᵢ²/(ρAL) of the clamped–clamped beam's mass that a mode moves under base excitation [1].
 
     Eq. F7 (derived here, beyond the paper).
@@ -197,8 +197,8 @@ def effective_mass_fraction_clamped_clamped(beta_L):
     return shaped(4*(_x1*_x7*_x9*numpy.sin(_x10) - _x1*_x8 + _x1 - _x11*_x6*_x7 + _x11 + _x3*_x8 + _x6 - _x7 - 2)**2*numpy.exp(-2*beta_L)/(_x2**2*beta_L**2*(-_x0*(1 - _x5) + _x1*_x5 + _x3 + _x4)**2), beta_L.shape)
 
 
-def effective_mass_fraction_clamped_clamped_scalar(beta_L):
-    """Share MᵢΓᵢ²/(ρAL) of the clamped–clamped beam's mass that a mode moves under base excitation [1]: float twin of `effective_mass_fraction_clamped_clamped` (Eq. F7)."""
+def mass_share_clamped_clamped_scalar(beta_L):
+    """Share MᵢΓᵢ²/(ρAL) of the clamped–clamped beam's mass that a mode moves under base excitation [1]: float twin of `mass_share_clamped_clamped` (Eq. F7)."""
     beta_L = numpy.float64(beta_L)
     _x0 = numpy.sin(beta_L)
     _x1 = numpy.sinh(beta_L)
@@ -215,7 +215,7 @@ def effective_mass_fraction_clamped_clamped_scalar(beta_L):
     return 4*(_x1*_x7*_x9*numpy.sin(_x10) - _x1*_x8 + _x1 - _x11*_x6*_x7 + _x11 + _x3*_x8 + _x6 - _x7 - 2)**2*numpy.exp(-2*beta_L)/(_x2**2*beta_L**2*(-_x0*(1 - _x5) + _x1*_x5 + _x3 + _x4)**2)
 
 
-def base_participation_clamped_clamped(beta_L, xi):
+def participation_clamped_clamped(beta_L, xi):
     r"""Participation factor Γᵢ of a mode of the clamped–clamped beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1].
 
     Eq. F7 (derived here, beyond the paper).
@@ -259,8 +259,8 @@ def base_participation_clamped_clamped(beta_L, xi):
     return shaped(4*_x0*_x4*(_x15*numpy.sinh(_x14) + (1 - _x15)*numpy.sin(_x14) - numpy.cos(_x14) + numpy.exp(-_x14))*(-_x10*_x2 + _x10*_x5 + _x11*_x2*_x9*numpy.sin(_x12) - _x13*_x8*_x9 + _x13 + _x2 + _x8 - _x9 - 2)/(beta_L*(_x0 - _x1*(1 - _x7) + _x2*_x7 + _x5)**2), beta_L.shape)
 
 
-def base_participation_clamped_clamped_scalar(beta_L, xi):
-    """Participation factor Γᵢ of a mode of the clamped–clamped beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1]: float twin of `base_participation_clamped_clamped` (Eq. F7)."""
+def participation_clamped_clamped_scalar(beta_L, xi):
+    """Participation factor Γᵢ of a mode of the clamped–clamped beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1]: float twin of `participation_clamped_clamped` (Eq. F7)."""
     beta_L = numpy.float64(beta_L)
     xi = numpy.float64(xi)
     _x0 = numpy.exp(-beta_L)
@@ -282,7 +282,7 @@ def base_participation_clamped_clamped_scalar(beta_L, xi):
     return 4*_x0*_x4*(_x15*numpy.sinh(_x14) + (1 - _x15)*numpy.sin(_x14) - numpy.cos(_x14) + numpy.exp(-_x14))*(-_x10*_x2 + _x10*_x5 + _x11*_x2*_x9*numpy.sin(_x12) - _x13*_x8*_x9 + _x13 + _x2 + _x8 - _x9 - 2)/(beta_L*(_x0 - _x1*(1 - _x7) + _x2*_x7 + _x5)**2)
 
 
-def effective_mass_fraction_simply_supported(beta_L):
+def mass_share_simply_supported(beta_L):
     r"""Share MᵢΓᵢ²/(ρAL) of the simply supported beam's mass that a mode moves under base excitation [1].
 
     Eq. F7 (derived here, beyond the paper).
@@ -309,14 +309,14 @@ def effective_mass_fraction_simply_supported(beta_L):
     return shaped(2*(1 - _x0)**2/(_x0**2*beta_L**2), beta_L.shape)
 
 
-def effective_mass_fraction_simply_supported_scalar(beta_L):
-    """Share MᵢΓᵢ²/(ρAL) of the simply supported beam's mass that a mode moves under base excitation [1]: float twin of `effective_mass_fraction_simply_supported` (Eq. F7)."""
+def mass_share_simply_supported_scalar(beta_L):
+    """Share MᵢΓᵢ²/(ρAL) of the simply supported beam's mass that a mode moves under base excitation [1]: float twin of `mass_share_simply_supported` (Eq. F7)."""
     beta_L = numpy.float64(beta_L)
     _x0 = numpy.cos(beta_L)
     return 2*(1 - _x0)**2/(_x0**2*beta_L**2)
 
 
-def base_participation_simply_supported(beta_L, xi):
+def participation_simply_supported(beta_L, xi):
     r"""Participation factor Γᵢ of a mode of the simply supported beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1].
 
     Eq. F7 (derived here, beyond the paper).
@@ -345,8 +345,8 @@ def base_participation_simply_supported(beta_L, xi):
     return shaped(2*(1 - _x0)*numpy.sin(beta_L*xi)/(_x0**2*beta_L), beta_L.shape)
 
 
-def base_participation_simply_supported_scalar(beta_L, xi):
-    """Participation factor Γᵢ of a mode of the simply supported beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1]: float twin of `base_participation_simply_supported` (Eq. F7)."""
+def participation_simply_supported_scalar(beta_L, xi):
+    """Participation factor Γᵢ of a mode of the simply supported beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1]: float twin of `participation_simply_supported` (Eq. F7)."""
     beta_L = numpy.float64(beta_L)
     xi = numpy.float64(xi)
     _x0 = numpy.cos(beta_L)

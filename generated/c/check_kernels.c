@@ -3444,8 +3444,8 @@ static void check_beam_modes_static_flexibility_simply_supported(void)
     }
 }
 
-/* modal_structure.effective_mass_fraction_cantilever: Share MᵢΓᵢ²/(ρAL) of the cantilever's mass that a mode moves under base excitation [1] */
-static void check_modal_structure_effective_mass_fraction_cantilever(void)
+/* modal_structure.mass_share_cantilever: Share MᵢΓᵢ²/(ρAL) of the cantilever's mass that a mode moves under base excitation [1] */
+static void check_modal_structure_mass_share_cantilever(void)
 {
     static const double expected[3] = { 0.012982162246810664, 0.0001955866257841068, 0.3266905371105036 };
     static const double scale[3] = { 0.05921436223430662, 0.16379149311904365, 0.3888370587710199 };
@@ -3453,16 +3453,16 @@ static void check_modal_structure_effective_mass_fraction_cantilever(void)
     double out[3];
     int i;
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_effective_mass_fraction_cantilever", i, symimpact_modal_structure_effective_mass_fraction_cantilever(a_beta_L[i]), expected[i], scale[i]);
+        check("symimpact_modal_structure_mass_share_cantilever", i, symimpact_modal_structure_mass_share_cantilever(a_beta_L[i]), expected[i], scale[i]);
     }
-    symimpact_modal_structure_effective_mass_fraction_cantilever_batch(3, a_beta_L, out);
+    symimpact_modal_structure_mass_share_cantilever_batch(3, a_beta_L, out);
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_effective_mass_fraction_cantilever_batch", i, out[i], expected[i], scale[i]);
+        check("symimpact_modal_structure_mass_share_cantilever_batch", i, out[i], expected[i], scale[i]);
     }
 }
 
-/* modal_structure.base_participation_cantilever: Participation factor Γᵢ of a mode of the cantilever referred to the point ξ... [1] */
-static void check_modal_structure_base_participation_cantilever(void)
+/* modal_structure.participation_cantilever: Participation factor Γᵢ of a mode of the cantilever referred to the point ξ... [1] */
+static void check_modal_structure_participation_cantilever(void)
 {
     static const double expected[3] = { 0.017812652668472952, -0.013850710845510723, -0.9908725945868799 };
     static const double scale[3] = { 0.23534655451600126, 0.5293995789569295, 1.2466517781212454 };
@@ -3471,16 +3471,16 @@ static void check_modal_structure_base_participation_cantilever(void)
     double out[3];
     int i;
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_base_participation_cantilever", i, symimpact_modal_structure_base_participation_cantilever(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+        check("symimpact_modal_structure_participation_cantilever", i, symimpact_modal_structure_participation_cantilever(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
     }
-    symimpact_modal_structure_base_participation_cantilever_batch(3, a_beta_L, a_xi, out);
+    symimpact_modal_structure_participation_cantilever_batch(3, a_beta_L, a_xi, out);
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_base_participation_cantilever_batch", i, out[i], expected[i], scale[i]);
+        check("symimpact_modal_structure_participation_cantilever_batch", i, out[i], expected[i], scale[i]);
     }
 }
 
-/* modal_structure.effective_mass_fraction_clamped_clamped: Share MᵢΓᵢ²/(ρAL) of the clamped–clamped beam's mass that a mode moves under... [1] */
-static void check_modal_structure_effective_mass_fraction_clamped_clamped(void)
+/* modal_structure.mass_share_clamped_clamped: Share MᵢΓᵢ²/(ρAL) of the clamped–clamped beam's mass that a mode moves under... [1] */
+static void check_modal_structure_mass_share_clamped_clamped(void)
 {
     static const double expected[3] = { 0.08530436830297411, 0.12149844624989083, 0.13332982218395 };
     static const double scale[3] = { 0.1315365683231712, 0.2850987220939511, 0.19547634480875473 };
@@ -3488,16 +3488,16 @@ static void check_modal_structure_effective_mass_fraction_clamped_clamped(void)
     double out[3];
     int i;
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_effective_mass_fraction_clamped_clamped", i, symimpact_modal_structure_effective_mass_fraction_clamped_clamped(a_beta_L[i]), expected[i], scale[i]);
+        check("symimpact_modal_structure_mass_share_clamped_clamped", i, symimpact_modal_structure_mass_share_clamped_clamped(a_beta_L[i]), expected[i], scale[i]);
     }
-    symimpact_modal_structure_effective_mass_fraction_clamped_clamped_batch(3, a_beta_L, out);
+    symimpact_modal_structure_mass_share_clamped_clamped_batch(3, a_beta_L, out);
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_effective_mass_fraction_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
+        check("symimpact_modal_structure_mass_share_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
     }
 }
 
-/* modal_structure.base_participation_clamped_clamped: Participation factor Γᵢ of a mode of the clamped–clamped beam referred to... [1] */
-static void check_modal_structure_base_participation_clamped_clamped(void)
+/* modal_structure.participation_clamped_clamped: Participation factor Γᵢ of a mode of the clamped–clamped beam referred to... [1] */
+static void check_modal_structure_participation_clamped_clamped(void)
 {
     static const double expected[3] = { 0.046022635686675285, -0.1561323572960023, -0.6510974258911841 };
     static const double scale[3] = { 0.26355641081175707, 0.6716693657760677, 0.9068765330589181 };
@@ -3506,16 +3506,16 @@ static void check_modal_structure_base_participation_clamped_clamped(void)
     double out[3];
     int i;
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_base_participation_clamped_clamped", i, symimpact_modal_structure_base_participation_clamped_clamped(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+        check("symimpact_modal_structure_participation_clamped_clamped", i, symimpact_modal_structure_participation_clamped_clamped(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
     }
-    symimpact_modal_structure_base_participation_clamped_clamped_batch(3, a_beta_L, a_xi, out);
+    symimpact_modal_structure_participation_clamped_clamped_batch(3, a_beta_L, a_xi, out);
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_base_participation_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
+        check("symimpact_modal_structure_participation_clamped_clamped_batch", i, out[i], expected[i], scale[i]);
     }
 }
 
-/* modal_structure.effective_mass_fraction_simply_supported: Share MᵢΓᵢ²/(ρAL) of the simply supported beam's mass that a mode moves... [1] */
-static void check_modal_structure_effective_mass_fraction_simply_supported(void)
+/* modal_structure.mass_share_simply_supported: Share MᵢΓᵢ²/(ρAL) of the simply supported beam's mass that a mode moves... [1] */
+static void check_modal_structure_mass_share_simply_supported(void)
 {
     static const double expected[3] = { 0.17732718536818246, 0.0001773118765340761, 0.08827898664896155 };
     static const double scale[3] = { 0.24078614020317363, 0.22570711595552398, 0.17358920531467975 };
@@ -3523,16 +3523,16 @@ static void check_modal_structure_effective_mass_fraction_simply_supported(void)
     double out[3];
     int i;
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_effective_mass_fraction_simply_supported", i, symimpact_modal_structure_effective_mass_fraction_simply_supported(a_beta_L[i]), expected[i], scale[i]);
+        check("symimpact_modal_structure_mass_share_simply_supported", i, symimpact_modal_structure_mass_share_simply_supported(a_beta_L[i]), expected[i], scale[i]);
     }
-    symimpact_modal_structure_effective_mass_fraction_simply_supported_batch(3, a_beta_L, out);
+    symimpact_modal_structure_mass_share_simply_supported_batch(3, a_beta_L, out);
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_effective_mass_fraction_simply_supported_batch", i, out[i], expected[i], scale[i]);
+        check("symimpact_modal_structure_mass_share_simply_supported_batch", i, out[i], expected[i], scale[i]);
     }
 }
 
-/* modal_structure.base_participation_simply_supported: Participation factor Γᵢ of a mode of the simply supported beam referred to... [1] */
-static void check_modal_structure_base_participation_simply_supported(void)
+/* modal_structure.participation_simply_supported: Participation factor Γᵢ of a mode of the simply supported beam referred to... [1] */
+static void check_modal_structure_participation_simply_supported(void)
 {
     static const double expected[3] = { -1.6006197176457142, -0.019830090465853763, -0.12912579157981768 };
     static const double scale[3] = { 1.956875117141613, 0.6914398046287594, 0.5421880596840787 };
@@ -3541,11 +3541,11 @@ static void check_modal_structure_base_participation_simply_supported(void)
     double out[3];
     int i;
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_base_participation_simply_supported", i, symimpact_modal_structure_base_participation_simply_supported(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
+        check("symimpact_modal_structure_participation_simply_supported", i, symimpact_modal_structure_participation_simply_supported(a_beta_L[i], a_xi[i]), expected[i], scale[i]);
     }
-    symimpact_modal_structure_base_participation_simply_supported_batch(3, a_beta_L, a_xi, out);
+    symimpact_modal_structure_participation_simply_supported_batch(3, a_beta_L, a_xi, out);
     for (i = 0; i < 3; ++i) {
-        check("symimpact_modal_structure_base_participation_simply_supported_batch", i, out[i], expected[i], scale[i]);
+        check("symimpact_modal_structure_participation_simply_supported_batch", i, out[i], expected[i], scale[i]);
     }
 }
 
@@ -4727,12 +4727,12 @@ int main(void)
     check_beam_modes_static_flexibility_cantilever();
     check_beam_modes_static_flexibility_clamped_clamped();
     check_beam_modes_static_flexibility_simply_supported();
-    check_modal_structure_effective_mass_fraction_cantilever();
-    check_modal_structure_base_participation_cantilever();
-    check_modal_structure_effective_mass_fraction_clamped_clamped();
-    check_modal_structure_base_participation_clamped_clamped();
-    check_modal_structure_effective_mass_fraction_simply_supported();
-    check_modal_structure_base_participation_simply_supported();
+    check_modal_structure_mass_share_cantilever();
+    check_modal_structure_participation_cantilever();
+    check_modal_structure_mass_share_clamped_clamped();
+    check_modal_structure_participation_clamped_clamped();
+    check_modal_structure_mass_share_simply_supported();
+    check_modal_structure_participation_simply_supported();
     check_fixed_points_contact_duration();
     check_fixed_points_contact_duration_newton();
     check_fixed_points_contact_duration_printed();

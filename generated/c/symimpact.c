@@ -5815,7 +5815,7 @@ void symimpact_beam_modes_static_flexibility_simply_supported_batch(size_t n, co
 /* ---- modal_structure: A structure of several modes (Eq. F7 (derived here, beyond the paper)) ---- */
 
 /* Eq. F7: \frac{M_i \Gamma_i^2}{\rho A L} = \frac{4 \left(\sqrt{2} e^{\beta_{L}} \sin{\left(\beta_{L} + \frac{\pi}{4} \right)} \cosh{\left(\beta_{L} \right)} - 2 e^{\beta_{L}} \cos{\left(\beta_{L} \right)} + \sqrt{2} e^{\beta_{L}} \cos{\left(\beta_{L} + \frac{\pi}{4} \right)} \sinh{\left(\beta_{L} \right)} - 2 e^{\beta_{L}} \cosh{\left(\beta_{L} \right)} + e^{\beta_{L}} + \sqrt{2} \cos{\left(\beta_{L} + \frac{\pi}{4} \right)} + \sinh{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}\right)^{2} e^{- 2 \beta_{L}}}{\beta_{L}^{2} \left(\cos{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}\right)^{2} \left(- \left(1 + \frac{\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} - e^{- \beta_{L}}}{\cos{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}}\right) \cos{\left(\beta_{L} \right)} + \sin{\left(\beta_{L} \right)} + e^{- \beta_{L}} + \frac{\left(\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} - e^{- \beta_{L}}\right) \cosh{\left(\beta_{L} \right)}}{\cos{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}}\right)^{2}} */
-double symimpact_modal_structure_effective_mass_fraction_cantilever(double beta_L)
+double symimpact_modal_structure_mass_share_cantilever(double beta_L)
 {
     const double _x0 = cos(beta_L);
     const double _x1 = cosh(beta_L);
@@ -5832,16 +5832,16 @@ double symimpact_modal_structure_effective_mass_fraction_cantilever(double beta_
     return 4*pow(-_x0*_x8 + _x1*_x6*_x9*sin(_x10) - _x1*_x8 + _x1 + _x11*_x6*_x7 + _x11 + _x6 + _x7, 2)*exp(-2*beta_L)/(pow(_x2, 2)*pow(beta_L, 2)*pow(-_x0*(_x5 + 1) + _x1*_x5 + _x3 + _x4, 2));
 }
 
-void symimpact_modal_structure_effective_mass_fraction_cantilever_batch(size_t n, const double *restrict beta_L, double *restrict out)
+void symimpact_modal_structure_mass_share_cantilever_batch(size_t n, const double *restrict beta_L, double *restrict out)
 {
     size_t i;
     for (i = 0; i < n; ++i) {
-        out[i] = symimpact_modal_structure_effective_mass_fraction_cantilever(beta_L[i]);
+        out[i] = symimpact_modal_structure_mass_share_cantilever(beta_L[i]);
     }
 }
 
 /* Eq. F7: \Gamma_i = - \frac{4 \left(- \left(1 + \frac{\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} - e^{- \beta_{L}}}{\cos{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}}\right) \cos{\left(\beta_{L} \xi \right)} + \sin{\left(\beta_{L} \xi \right)} + e^{- \beta_{L} \xi} + \frac{\left(\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} - e^{- \beta_{L}}\right) \cosh{\left(\beta_{L} \xi \right)}}{\cos{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}}\right) \left(\sqrt{2} e^{\beta_{L}} \sin{\left(\beta_{L} + \frac{\pi}{4} \right)} \cosh{\left(\beta_{L} \right)} - 2 e^{\beta_{L}} \cos{\left(\beta_{L} \right)} + \sqrt{2} e^{\beta_{L}} \cos{\left(\beta_{L} + \frac{\pi}{4} \right)} \sinh{\left(\beta_{L} \right)} - 2 e^{\beta_{L}} \cosh{\left(\beta_{L} \right)} + e^{\beta_{L}} + \sqrt{2} \cos{\left(\beta_{L} + \frac{\pi}{4} \right)} + \sinh{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}\right) e^{- \beta_{L}}}{\beta_{L} \left(\cos{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}\right) \left(- \left(1 + \frac{\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} - e^{- \beta_{L}}}{\cos{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}}\right) \cos{\left(\beta_{L} \right)} + \sin{\left(\beta_{L} \right)} + e^{- \beta_{L}} + \frac{\left(\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} - e^{- \beta_{L}}\right) \cosh{\left(\beta_{L} \right)}}{\cos{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)}}\right)^{2}} */
-double symimpact_modal_structure_base_participation_cantilever(double beta_L, double xi)
+double symimpact_modal_structure_participation_cantilever(double beta_L, double xi)
 {
     const double _x0 = exp(-beta_L);
     const double _x1 = cos(beta_L);
@@ -5860,16 +5860,16 @@ double symimpact_modal_structure_base_participation_cantilever(double beta_L, do
     return -4*_x0*_x3*(_x11*cosh(_x13) - _x12*cos(_x13) + sin(_x13) + exp(-_x13))*(-_x1*_x6 + _x2*_x4*_x7*sin(_x8) - _x2*_x6 + _x2 + _x4*_x5*_x9 + _x4 + _x5 + _x9)/(beta_L*pow(_x0 - _x1*_x12 + _x10 + _x11*_x2, 2));
 }
 
-void symimpact_modal_structure_base_participation_cantilever_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out)
+void symimpact_modal_structure_participation_cantilever_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out)
 {
     size_t i;
     for (i = 0; i < n; ++i) {
-        out[i] = symimpact_modal_structure_base_participation_cantilever(beta_L[i], xi[i]);
+        out[i] = symimpact_modal_structure_participation_cantilever(beta_L[i], xi[i]);
     }
 }
 
 /* Eq. F7: \frac{M_i \Gamma_i^2}{\rho A L} = \frac{4 \left(\sqrt{2} e^{\beta_{L}} \sin{\left(\beta_{L} + \frac{\pi}{4} \right)} \sinh{\left(\beta_{L} \right)} + 2 e^{\beta_{L}} \cos{\left(\beta_{L} \right)} - \sqrt{2} e^{\beta_{L}} \cos{\left(\beta_{L} + \frac{\pi}{4} \right)} \cosh{\left(\beta_{L} \right)} - 2 e^{\beta_{L}} \sinh{\left(\beta_{L} \right)} - e^{\beta_{L}} + \sqrt{2} \cos{\left(\beta_{L} + \frac{\pi}{4} \right)} + \sinh{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)} - 2\right)^{2} e^{- 2 \beta_{L}}}{\beta_{L}^{2} \left(\sin{\left(\beta_{L} \right)} - \sinh{\left(\beta_{L} \right)}\right)^{2} \left(- \left(1 - \frac{\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} + e^{- \beta_{L}}}{\sin{\left(\beta_{L} \right)} - \sinh{\left(\beta_{L} \right)}}\right) \sin{\left(\beta_{L} \right)} + \cos{\left(\beta_{L} \right)} + e^{- \beta_{L}} + \frac{\left(\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} + e^{- \beta_{L}}\right) \sinh{\left(\beta_{L} \right)}}{\sin{\left(\beta_{L} \right)} - \sinh{\left(\beta_{L} \right)}}\right)^{2}} */
-double symimpact_modal_structure_effective_mass_fraction_clamped_clamped(double beta_L)
+double symimpact_modal_structure_mass_share_clamped_clamped(double beta_L)
 {
     const double _x0 = sin(beta_L);
     const double _x1 = sinh(beta_L);
@@ -5886,16 +5886,16 @@ double symimpact_modal_structure_effective_mass_fraction_clamped_clamped(double 
     return 4*pow(_x1*_x7*_x9*sin(_x10) - _x1*_x8 + _x1 - _x11*_x6*_x7 + _x11 + _x3*_x8 + _x6 - _x7 - 2, 2)*exp(-2*beta_L)/(pow(_x2, 2)*pow(beta_L, 2)*pow(-_x0*(1 - _x5) + _x1*_x5 + _x3 + _x4, 2));
 }
 
-void symimpact_modal_structure_effective_mass_fraction_clamped_clamped_batch(size_t n, const double *restrict beta_L, double *restrict out)
+void symimpact_modal_structure_mass_share_clamped_clamped_batch(size_t n, const double *restrict beta_L, double *restrict out)
 {
     size_t i;
     for (i = 0; i < n; ++i) {
-        out[i] = symimpact_modal_structure_effective_mass_fraction_clamped_clamped(beta_L[i]);
+        out[i] = symimpact_modal_structure_mass_share_clamped_clamped(beta_L[i]);
     }
 }
 
 /* Eq. F7: \Gamma_i = \frac{4 \left(\left(1 - \frac{- \sin{\left(\beta_{L} \right)} + \cos{\left(\beta_{L} \right)} - e^{- \beta_{L}}}{- \sin{\left(\beta_{L} \right)} + \sinh{\left(\beta_{L} \right)}}\right) \sin{\left(\beta_{L} \xi \right)} - \cos{\left(\beta_{L} \xi \right)} + e^{- \beta_{L} \xi} + \frac{\left(- \sin{\left(\beta_{L} \right)} + \cos{\left(\beta_{L} \right)} - e^{- \beta_{L}}\right) \sinh{\left(\beta_{L} \xi \right)}}{- \sin{\left(\beta_{L} \right)} + \sinh{\left(\beta_{L} \right)}}\right) \left(\sqrt{2} e^{\beta_{L}} \sin{\left(\beta_{L} + \frac{\pi}{4} \right)} \sinh{\left(\beta_{L} \right)} + 2 e^{\beta_{L}} \cos{\left(\beta_{L} \right)} - \sqrt{2} e^{\beta_{L}} \cos{\left(\beta_{L} + \frac{\pi}{4} \right)} \cosh{\left(\beta_{L} \right)} - 2 e^{\beta_{L}} \sinh{\left(\beta_{L} \right)} - e^{\beta_{L}} + \sqrt{2} \cos{\left(\beta_{L} + \frac{\pi}{4} \right)} + \sinh{\left(\beta_{L} \right)} + \cosh{\left(\beta_{L} \right)} - 2\right) e^{- \beta_{L}}}{\beta_{L} \left(\sin{\left(\beta_{L} \right)} - \sinh{\left(\beta_{L} \right)}\right) \left(- \left(1 - \frac{\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} + e^{- \beta_{L}}}{\sin{\left(\beta_{L} \right)} - \sinh{\left(\beta_{L} \right)}}\right) \sin{\left(\beta_{L} \right)} + \cos{\left(\beta_{L} \right)} + e^{- \beta_{L}} + \frac{\left(\sin{\left(\beta_{L} \right)} - \cos{\left(\beta_{L} \right)} + e^{- \beta_{L}}\right) \sinh{\left(\beta_{L} \right)}}{\sin{\left(\beta_{L} \right)} - \sinh{\left(\beta_{L} \right)}}\right)^{2}} */
-double symimpact_modal_structure_base_participation_clamped_clamped(double beta_L, double xi)
+double symimpact_modal_structure_participation_clamped_clamped(double beta_L, double xi)
 {
     const double _x0 = exp(-beta_L);
     const double _x1 = sin(beta_L);
@@ -5916,41 +5916,41 @@ double symimpact_modal_structure_base_participation_clamped_clamped(double beta_
     return 4*_x0*_x4*(_x15*sinh(_x14) + (1 - _x15)*sin(_x14) - cos(_x14) + exp(-_x14))*(-_x10*_x2 + _x10*_x5 + _x11*_x2*_x9*sin(_x12) - _x13*_x8*_x9 + _x13 + _x2 + _x8 - _x9 - 2)/(beta_L*pow(_x0 - _x1*(1 - _x7) + _x2*_x7 + _x5, 2));
 }
 
-void symimpact_modal_structure_base_participation_clamped_clamped_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out)
+void symimpact_modal_structure_participation_clamped_clamped_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out)
 {
     size_t i;
     for (i = 0; i < n; ++i) {
-        out[i] = symimpact_modal_structure_base_participation_clamped_clamped(beta_L[i], xi[i]);
+        out[i] = symimpact_modal_structure_participation_clamped_clamped(beta_L[i], xi[i]);
     }
 }
 
 /* Eq. F7: \frac{M_i \Gamma_i^2}{\rho A L} = \frac{2 \left(1 - \cos{\left(\beta_{L} \right)}\right)^{2}}{\beta_{L}^{2} \cos^{2}{\left(\beta_{L} \right)}} */
-double symimpact_modal_structure_effective_mass_fraction_simply_supported(double beta_L)
+double symimpact_modal_structure_mass_share_simply_supported(double beta_L)
 {
     const double _x0 = cos(beta_L);
     return 2*pow(1 - _x0, 2)/(pow(_x0, 2)*pow(beta_L, 2));
 }
 
-void symimpact_modal_structure_effective_mass_fraction_simply_supported_batch(size_t n, const double *restrict beta_L, double *restrict out)
+void symimpact_modal_structure_mass_share_simply_supported_batch(size_t n, const double *restrict beta_L, double *restrict out)
 {
     size_t i;
     for (i = 0; i < n; ++i) {
-        out[i] = symimpact_modal_structure_effective_mass_fraction_simply_supported(beta_L[i]);
+        out[i] = symimpact_modal_structure_mass_share_simply_supported(beta_L[i]);
     }
 }
 
 /* Eq. F7: \Gamma_i = \frac{2 \left(1 - \cos{\left(\beta_{L} \right)}\right) \sin{\left(\beta_{L} \xi \right)}}{\beta_{L} \cos^{2}{\left(\beta_{L} \right)}} */
-double symimpact_modal_structure_base_participation_simply_supported(double beta_L, double xi)
+double symimpact_modal_structure_participation_simply_supported(double beta_L, double xi)
 {
     const double _x0 = cos(beta_L);
     return 2*(1 - _x0)*sin(beta_L*xi)/(pow(_x0, 2)*beta_L);
 }
 
-void symimpact_modal_structure_base_participation_simply_supported_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out)
+void symimpact_modal_structure_participation_simply_supported_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out)
 {
     size_t i;
     for (i = 0; i < n; ++i) {
-        out[i] = symimpact_modal_structure_base_participation_simply_supported(beta_L[i], xi[i]);
+        out[i] = symimpact_modal_structure_participation_simply_supported(beta_L[i], xi[i]);
     }
 }
 

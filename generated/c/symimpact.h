@@ -1842,41 +1842,41 @@ void symimpact_beam_modes_static_flexibility_simply_supported_batch(size_t n, co
 /* Share MᵢΓᵢ²/(ρAL) of the cantilever's mass that a mode moves under base excitation [1], Eq. F7 (derived here, beyond the paper).
  *   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
  */
-double symimpact_modal_structure_effective_mass_fraction_cantilever(double beta_L);
-void symimpact_modal_structure_effective_mass_fraction_cantilever_batch(size_t n, const double *restrict beta_L, double *restrict out);
+double symimpact_modal_structure_mass_share_cantilever(double beta_L);
+void symimpact_modal_structure_mass_share_cantilever_batch(size_t n, const double *restrict beta_L, double *restrict out);
 
 /* Participation factor Γᵢ of a mode of the cantilever referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1], Eq. F7 (derived here, beyond the paper).
  *   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
  *   xi: Point ξ = r/L along the beam (0 < ξ < 1) [1]
  */
-double symimpact_modal_structure_base_participation_cantilever(double beta_L, double xi);
-void symimpact_modal_structure_base_participation_cantilever_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out);
+double symimpact_modal_structure_participation_cantilever(double beta_L, double xi);
+void symimpact_modal_structure_participation_cantilever_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out);
 
 /* Share MᵢΓᵢ²/(ρAL) of the clamped–clamped beam's mass that a mode moves under base excitation [1], Eq. F7 (derived here, beyond the paper).
  *   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
  */
-double symimpact_modal_structure_effective_mass_fraction_clamped_clamped(double beta_L);
-void symimpact_modal_structure_effective_mass_fraction_clamped_clamped_batch(size_t n, const double *restrict beta_L, double *restrict out);
+double symimpact_modal_structure_mass_share_clamped_clamped(double beta_L);
+void symimpact_modal_structure_mass_share_clamped_clamped_batch(size_t n, const double *restrict beta_L, double *restrict out);
 
 /* Participation factor Γᵢ of a mode of the clamped–clamped beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1], Eq. F7 (derived here, beyond the paper).
  *   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
  *   xi: Point ξ = r/L along the beam (0 < ξ < 1) [1]
  */
-double symimpact_modal_structure_base_participation_clamped_clamped(double beta_L, double xi);
-void symimpact_modal_structure_base_participation_clamped_clamped_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out);
+double symimpact_modal_structure_participation_clamped_clamped(double beta_L, double xi);
+void symimpact_modal_structure_participation_clamped_clamped_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out);
 
 /* Share MᵢΓᵢ²/(ρAL) of the simply supported beam's mass that a mode moves under base excitation [1], Eq. F7 (derived here, beyond the paper).
  *   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
  */
-double symimpact_modal_structure_effective_mass_fraction_simply_supported(double beta_L);
-void symimpact_modal_structure_effective_mass_fraction_simply_supported_batch(size_t n, const double *restrict beta_L, double *restrict out);
+double symimpact_modal_structure_mass_share_simply_supported(double beta_L);
+void symimpact_modal_structure_mass_share_simply_supported_batch(size_t n, const double *restrict beta_L, double *restrict out);
 
 /* Participation factor Γᵢ of a mode of the simply supported beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1], Eq. F7 (derived here, beyond the paper).
  *   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
  *   xi: Point ξ = r/L along the beam (0 < ξ < 1) [1]
  */
-double symimpact_modal_structure_base_participation_simply_supported(double beta_L, double xi);
-void symimpact_modal_structure_base_participation_simply_supported_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out);
+double symimpact_modal_structure_participation_simply_supported(double beta_L, double xi);
+void symimpact_modal_structure_participation_simply_supported_batch(size_t n, const double *restrict beta_L, const double *restrict xi, double *restrict out);
 
 /* ---- fixed_points: iterations as loops ---- */
 

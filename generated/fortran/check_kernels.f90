@@ -1706,44 +1706,44 @@ program check_kernels
     got = beam_modes_static_flexibility_simply_supported([0.839949_dp, 0.429899_dp, 0.719848_dp])
     call check("beam_modes_static_flexibility_simply_supported", got, expected, scale)
 
-    ! modal_structure.effective_mass_fraction_cantilever
+    ! modal_structure.mass_share_cantilever
     expected = [0.012982162246810664_dp, 0.0001955866257841068_dp, 0.3266905371105036_dp]
     scale = [0.05921436223430662_dp, 0.16379149311904365_dp, 0.3888370587710199_dp]
-    got = modal_structure_effective_mass_fraction_cantilever([11.2279_dp, 5.95584_dp, 9.68377_dp])
-    call check("modal_structure_effective_mass_fraction_cantilever", got, expected, scale)
+    got = modal_structure_mass_share_cantilever([11.2279_dp, 5.95584_dp, 9.68377_dp])
+    call check("modal_structure_mass_share_cantilever", got, expected, scale)
 
-    ! modal_structure.base_participation_cantilever
+    ! modal_structure.participation_cantilever
     expected = [0.017812652668472952_dp, -0.013850710845510723_dp, -0.9908725945868799_dp]
     scale = [0.23534655451600126_dp, 0.5293995789569295_dp, 1.2466517781212454_dp]
-    got = modal_structure_base_participation_cantilever([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+    got = modal_structure_participation_cantilever([11.2279_dp, 5.95584_dp, 9.68377_dp], &
 [0.33923_dp, 0.778461_dp, 0.617691_dp])
-    call check("modal_structure_base_participation_cantilever", got, expected, scale)
+    call check("modal_structure_participation_cantilever", got, expected, scale)
 
-    ! modal_structure.effective_mass_fraction_clamped_clamped
+    ! modal_structure.mass_share_clamped_clamped
     expected = [0.08530436830297411_dp, 0.12149844624989083_dp, 0.13332982218395_dp]
     scale = [0.1315365683231712_dp, 0.2850987220939511_dp, 0.19547634480875473_dp]
-    got = modal_structure_effective_mass_fraction_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp])
-    call check("modal_structure_effective_mass_fraction_clamped_clamped", got, expected, scale)
+    got = modal_structure_mass_share_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp])
+    call check("modal_structure_mass_share_clamped_clamped", got, expected, scale)
 
-    ! modal_structure.base_participation_clamped_clamped
+    ! modal_structure.participation_clamped_clamped
     expected = [0.046022635686675285_dp, -0.1561323572960023_dp, -0.6510974258911841_dp]
     scale = [0.26355641081175707_dp, 0.6716693657760677_dp, 0.9068765330589181_dp]
-    got = modal_structure_base_participation_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+    got = modal_structure_participation_clamped_clamped([11.2279_dp, 5.95584_dp, 9.68377_dp], &
 [0.33923_dp, 0.778461_dp, 0.617691_dp])
-    call check("modal_structure_base_participation_clamped_clamped", got, expected, scale)
+    call check("modal_structure_participation_clamped_clamped", got, expected, scale)
 
-    ! modal_structure.effective_mass_fraction_simply_supported
+    ! modal_structure.mass_share_simply_supported
     expected = [0.17732718536818246_dp, 0.0001773118765340761_dp, 0.08827898664896155_dp]
     scale = [0.24078614020317363_dp, 0.22570711595552398_dp, 0.17358920531467975_dp]
-    got = modal_structure_effective_mass_fraction_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp])
-    call check("modal_structure_effective_mass_fraction_simply_supported", got, expected, scale)
+    got = modal_structure_mass_share_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp])
+    call check("modal_structure_mass_share_simply_supported", got, expected, scale)
 
-    ! modal_structure.base_participation_simply_supported
+    ! modal_structure.participation_simply_supported
     expected = [-1.6006197176457142_dp, -0.019830090465853763_dp, -0.12912579157981768_dp]
     scale = [1.956875117141613_dp, 0.6914398046287594_dp, 0.5421880596840787_dp]
-    got = modal_structure_base_participation_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp], &
+    got = modal_structure_participation_simply_supported([11.2279_dp, 5.95584_dp, 9.68377_dp], &
 [0.33923_dp, 0.778461_dp, 0.617691_dp])
-    call check("modal_structure_base_participation_simply_supported", got, expected, scale)
+    call check("modal_structure_participation_simply_supported", got, expected, scale)
 
     ! fixed_points.contact_duration
     expected = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]

@@ -180,12 +180,12 @@ module symimpact
     public :: beam_modes_static_flexibility_cantilever
     public :: beam_modes_static_flexibility_clamped_clamped
     public :: beam_modes_static_flexibility_simply_supported
-    public :: modal_structure_effective_mass_fraction_cantilever
-    public :: modal_structure_base_participation_cantilever
-    public :: modal_structure_effective_mass_fraction_clamped_clamped
-    public :: modal_structure_base_participation_clamped_clamped
-    public :: modal_structure_effective_mass_fraction_simply_supported
-    public :: modal_structure_base_participation_simply_supported
+    public :: modal_structure_mass_share_cantilever
+    public :: modal_structure_participation_cantilever
+    public :: modal_structure_mass_share_clamped_clamped
+    public :: modal_structure_participation_clamped_clamped
+    public :: modal_structure_mass_share_simply_supported
+    public :: modal_structure_participation_simply_supported
     public :: fixed_points_contact_duration
     public :: fixed_points_contact_duration_newton
     public :: fixed_points_contact_duration_printed
@@ -6315,7 +6315,7 @@ contains
 
     ! Share MᵢΓᵢ²/(ρAL) of the cantilever's mass that a mode moves under base excitation [1], Eq. F7 (derived here, beyond the paper).
     !   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
-    pure elemental function modal_structure_effective_mass_fraction_cantilever(beta_L) result(f_result)
+    pure elemental function modal_structure_mass_share_cantilever(beta_L) result(f_result)
         real(dp), intent(in) :: beta_L
         real(dp) :: f_result
         real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
@@ -6336,12 +6336,12 @@ contains
       - cse_1*cse_8 + cse_1 + cse_11*cse_6*cse_7 + cse_11 + cse_6 + &
       cse_7)**2*exp( -2.0_dp*beta_L)/(beta_L**2*cse_2**2*(-cse_0*(cse_5 &
       + 1.0_dp) + cse_1*cse_5 + cse_3 + cse_4)**2)
-    end function modal_structure_effective_mass_fraction_cantilever
+    end function modal_structure_mass_share_cantilever
 
     ! Participation factor Γᵢ of a mode of the cantilever referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1], Eq. F7 (derived here, beyond the paper).
     !   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
     !   xi: Point ξ = r/L along the beam (0 < ξ < 1) [1]
-    pure elemental function modal_structure_base_participation_cantilever(beta_L, xi) result(f_result)
+    pure elemental function modal_structure_participation_cantilever(beta_L, xi) result(f_result)
         real(dp), intent(in) :: beta_L, xi
         real(dp) :: f_result
         real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
@@ -6365,11 +6365,11 @@ contains
       cse_4*cse_7*sin( cse_8) - cse_2*cse_6 + cse_2 + cse_4*cse_5*cse_9 &
       + cse_4 + cse_5 + cse_9)/(beta_L*(cse_0 - cse_1*cse_12 + cse_10 + &
       cse_11*cse_2)** 2)
-    end function modal_structure_base_participation_cantilever
+    end function modal_structure_participation_cantilever
 
     ! Share MᵢΓᵢ²/(ρAL) of the clamped–clamped beam's mass that a mode moves under base excitation [1], Eq. F7 (derived here, beyond the paper).
     !   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
-    pure elemental function modal_structure_effective_mass_fraction_clamped_clamped(beta_L) result(f_result)
+    pure elemental function modal_structure_mass_share_clamped_clamped(beta_L) result(f_result)
         real(dp), intent(in) :: beta_L
         real(dp) :: f_result
         real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
@@ -6390,12 +6390,12 @@ contains
       cse_1 - cse_11* cse_6*cse_7 + cse_11 + cse_3*cse_8 + cse_6 - &
       cse_7 - 2.0_dp)**2* exp(-2.0_dp*beta_L)/(beta_L**2*cse_2**2*( &
       -cse_0*(1.0_dp - cse_5) + cse_1*cse_5 + cse_3 + cse_4)**2)
-    end function modal_structure_effective_mass_fraction_clamped_clamped
+    end function modal_structure_mass_share_clamped_clamped
 
     ! Participation factor Γᵢ of a mode of the clamped–clamped beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1], Eq. F7 (derived here, beyond the paper).
     !   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
     !   xi: Point ξ = r/L along the beam (0 < ξ < 1) [1]
-    pure elemental function modal_structure_base_participation_clamped_clamped(beta_L, xi) result(f_result)
+    pure elemental function modal_structure_participation_clamped_clamped(beta_L, xi) result(f_result)
         real(dp), intent(in) :: beta_L, xi
         real(dp) :: f_result
         real(dp) :: cse_0, cse_1, cse_2, cse_3, cse_4, cse_5, cse_6, &
@@ -6422,29 +6422,29 @@ contains
       + cse_10*cse_5 + cse_11*cse_2*cse_9*sin(cse_12) - cse_13*cse_8* &
       cse_9 + cse_13 + cse_2 + cse_8 - cse_9 - 2.0_dp)/(beta_L*(cse_0 - &
       cse_1*(1.0_dp - cse_7) + cse_2*cse_7 + cse_5)**2)
-    end function modal_structure_base_participation_clamped_clamped
+    end function modal_structure_participation_clamped_clamped
 
     ! Share MᵢΓᵢ²/(ρAL) of the simply supported beam's mass that a mode moves under base excitation [1], Eq. F7 (derived here, beyond the paper).
     !   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
-    pure elemental function modal_structure_effective_mass_fraction_simply_supported(beta_L) result(f_result)
+    pure elemental function modal_structure_mass_share_simply_supported(beta_L) result(f_result)
         real(dp), intent(in) :: beta_L
         real(dp) :: f_result
         real(dp) :: cse_0
         cse_0 = cos(beta_L)
         f_result = 2.0_dp*(1.0_dp - cse_0)**2/(beta_L**2*cse_0**2)
-    end function modal_structure_effective_mass_fraction_simply_supported
+    end function modal_structure_mass_share_simply_supported
 
     ! Participation factor Γᵢ of a mode of the simply supported beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1], Eq. F7 (derived here, beyond the paper).
     !   beta_L: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
     !   xi: Point ξ = r/L along the beam (0 < ξ < 1) [1]
-    pure elemental function modal_structure_base_participation_simply_supported(beta_L, xi) result(f_result)
+    pure elemental function modal_structure_participation_simply_supported(beta_L, xi) result(f_result)
         real(dp), intent(in) :: beta_L, xi
         real(dp) :: f_result
         real(dp) :: cse_0
         cse_0 = cos(beta_L)
         f_result = 2.0_dp*(1.0_dp - cse_0)*sin(beta_L*xi)/(beta_L*cse_0 &
       **2)
-    end function modal_structure_base_participation_simply_supported
+    end function modal_structure_participation_simply_supported
 
     ! ---- fixed_points: the iterations of Eq. 31 as loops ----
     ! x(0) = start, x(i) = step(x(i-1)) until |x(i) - x(i-1)| <= tol*|x(i)| or max_iter steps;

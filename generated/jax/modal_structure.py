@@ -13,17 +13,17 @@ import jax
 import jax.numpy
 
 __all__ = [
-    "effective_mass_fraction_cantilever",
-    "base_participation_cantilever",
-    "effective_mass_fraction_clamped_clamped",
-    "base_participation_clamped_clamped",
-    "effective_mass_fraction_simply_supported",
-    "base_participation_simply_supported",
+    "mass_share_cantilever",
+    "participation_cantilever",
+    "mass_share_clamped_clamped",
+    "participation_clamped_clamped",
+    "mass_share_simply_supported",
+    "participation_simply_supported",
 ]
 
 
 @jax.jit
-def effective_mass_fraction_cantilever(beta_L):
+def mass_share_cantilever(beta_L):
     r"""Share MᵢΓᵢ²/(ρAL) of the cantilever's mass that a mode moves under base excitation [1], Eq. F7 (derived here, beyond the paper).
 
     ``beta_L``: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
@@ -44,7 +44,7 @@ def effective_mass_fraction_cantilever(beta_L):
 
 
 @jax.jit
-def base_participation_cantilever(beta_L, xi):
+def participation_cantilever(beta_L, xi):
     r"""Participation factor Γᵢ of a mode of the cantilever referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1], Eq. F7 (derived here, beyond the paper).
 
     ``beta_L``: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
@@ -68,7 +68,7 @@ def base_participation_cantilever(beta_L, xi):
 
 
 @jax.jit
-def effective_mass_fraction_clamped_clamped(beta_L):
+def mass_share_clamped_clamped(beta_L):
     r"""Share MᵢΓᵢ²/(ρAL) of the clamped–clamped beam's mass that a mode moves under base excitation [1], Eq. F7 (derived here, beyond the paper).
 
     ``beta_L``: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
@@ -89,7 +89,7 @@ def effective_mass_fraction_clamped_clamped(beta_L):
 
 
 @jax.jit
-def base_participation_clamped_clamped(beta_L, xi):
+def participation_clamped_clamped(beta_L, xi):
     r"""Participation factor Γᵢ of a mode of the clamped–clamped beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1], Eq. F7 (derived here, beyond the paper).
 
     ``beta_L``: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
@@ -115,7 +115,7 @@ def base_participation_clamped_clamped(beta_L, xi):
 
 
 @jax.jit
-def effective_mass_fraction_simply_supported(beta_L):
+def mass_share_simply_supported(beta_L):
     r"""Share MᵢΓᵢ²/(ρAL) of the simply supported beam's mass that a mode moves under base excitation [1], Eq. F7 (derived here, beyond the paper).
 
     ``beta_L``: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
@@ -125,7 +125,7 @@ def effective_mass_fraction_simply_supported(beta_L):
 
 
 @jax.jit
-def base_participation_simply_supported(beta_L, xi):
+def participation_simply_supported(beta_L, xi):
     r"""Participation factor Γᵢ of a mode of the simply supported beam referred to the point ξ (its base-motion amplitude is Γᵢ·X_b) [1], Eq. F7 (derived here, beyond the paper).
 
     ``beta_L``: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]

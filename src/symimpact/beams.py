@@ -46,20 +46,20 @@ class Support:
 SUPPORTS: dict[str, Support] = {
     "cantilever": Support(_ritz.BETA_L, _ritz.mode_shape, _ritz.mass_coefficient,
                           _ritz.stiffness_coefficient, _bm.static_flexibility_cantilever, 1.0,
-                          _ms.base_participation_cantilever,
-                          _ms.effective_mass_fraction_cantilever),
+                          _ms.participation_cantilever,
+                          _ms.mass_share_cantilever),
     "clamped-clamped": Support(_bm.BETA_L_CLAMPED_CLAMPED, _bm.mode_shape_clamped_clamped,
                                _bm.mass_coefficient_clamped_clamped,
                                _bm.stiffness_coefficient_clamped_clamped,
                                _bm.static_flexibility_clamped_clamped, 0.5,
-                               _ms.base_participation_clamped_clamped,
-                               _ms.effective_mass_fraction_clamped_clamped),
+                               _ms.participation_clamped_clamped,
+                               _ms.mass_share_clamped_clamped),
     "simply-supported": Support(_bm.BETA_L_SIMPLY_SUPPORTED, _bm.mode_shape_simply_supported,
                                 _bm.mass_coefficient_simply_supported,
                                 _bm.stiffness_coefficient_simply_supported,
                                 _bm.static_flexibility_simply_supported, 0.5,
-                                _ms.base_participation_simply_supported,
-                                _ms.effective_mass_fraction_simply_supported),
+                                _ms.participation_simply_supported,
+                                _ms.mass_share_simply_supported),
 }  # fmt: skip
 #: Modes each support's roots are emitted for.
 MAX_MODES = min(len(s.roots) for s in SUPPORTS.values())

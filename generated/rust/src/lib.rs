@@ -5532,7 +5532,7 @@ pub mod modal_structure {
     ///
     /// * `beta_L`: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
     #[inline]
-    pub fn effective_mass_fraction_cantilever(beta_L: f64) -> f64 {
+    pub fn mass_share_cantilever(beta_L: f64) -> f64 {
         let _x0 = beta_L.cos();
         let _x1 = beta_L.cosh();
         let _x2 = _x0 + _x1;
@@ -5553,7 +5553,7 @@ pub mod modal_structure {
     /// * `beta_L`: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
     /// * `xi`: Point ξ = r/L along the beam (0 < ξ < 1) [1]
     #[inline]
-    pub fn base_participation_cantilever(beta_L: f64, xi: f64) -> f64 {
+    pub fn participation_cantilever(beta_L: f64, xi: f64) -> f64 {
         let _x0 = (-beta_L).exp();
         let _x1 = beta_L.cos();
         let _x2 = beta_L.cosh();
@@ -5575,7 +5575,7 @@ pub mod modal_structure {
     ///
     /// * `beta_L`: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
     #[inline]
-    pub fn effective_mass_fraction_clamped_clamped(beta_L: f64) -> f64 {
+    pub fn mass_share_clamped_clamped(beta_L: f64) -> f64 {
         let _x0 = beta_L.sin();
         let _x1 = beta_L.sinh();
         let _x2 = _x0 - _x1;
@@ -5596,7 +5596,7 @@ pub mod modal_structure {
     /// * `beta_L`: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
     /// * `xi`: Point ξ = r/L along the beam (0 < ξ < 1) [1]
     #[inline]
-    pub fn base_participation_clamped_clamped(beta_L: f64, xi: f64) -> f64 {
+    pub fn participation_clamped_clamped(beta_L: f64, xi: f64) -> f64 {
         let _x0 = (-beta_L).exp();
         let _x1 = beta_L.sin();
         let _x2 = beta_L.sinh();
@@ -5620,7 +5620,7 @@ pub mod modal_structure {
     ///
     /// * `beta_L`: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
     #[inline]
-    pub fn effective_mass_fraction_simply_supported(beta_L: f64) -> f64 {
+    pub fn mass_share_simply_supported(beta_L: f64) -> f64 {
         let _x0 = beta_L.cos();
         2_f64*(1_f64 - _x0).powi(2)/((_x0).powi(2)*(beta_L).powi(2))
     }
@@ -5630,7 +5630,7 @@ pub mod modal_structure {
     /// * `beta_L`: Root βL of the beam's frequency equation (its BETA_L_… constant) [1]
     /// * `xi`: Point ξ = r/L along the beam (0 < ξ < 1) [1]
     #[inline]
-    pub fn base_participation_simply_supported(beta_L: f64, xi: f64) -> f64 {
+    pub fn participation_simply_supported(beta_L: f64, xi: f64) -> f64 {
         let _x0 = beta_L.cos();
         2_f64*(1_f64 - _x0)*(beta_L*xi).sin()/((_x0).powi(2)*beta_L)
     }

@@ -1892,75 +1892,75 @@ fn beam_modes_static_flexibility_simply_supported() {
 }
 
 #[test]
-fn modal_structure_effective_mass_fraction_cantilever() {
+fn modal_structure_mass_share_cantilever() {
     let expected = [0.012982162246810664, 0.0001955866257841068, 0.3266905371105036];
     let scale = [0.05921436223430662, 0.16379149311904365, 0.3888370587710199];
     let points: [[f64; 1]; 3] = [[11.2279_f64], [5.95584_f64], [9.68377_f64]];
     let got: Vec<f64> = points
         .iter()
-        .map(|p| symimpact::modal_structure::effective_mass_fraction_cantilever(p[0]))
+        .map(|p| symimpact::modal_structure::mass_share_cantilever(p[0]))
         .collect();
-    check("modal_structure::effective_mass_fraction_cantilever", &got, &expected, &scale);
+    check("modal_structure::mass_share_cantilever", &got, &expected, &scale);
 }
 
 #[test]
-fn modal_structure_base_participation_cantilever() {
+fn modal_structure_participation_cantilever() {
     let expected = [0.017812652668472952, -0.013850710845510723, -0.9908725945868799];
     let scale = [0.23534655451600126, 0.5293995789569295, 1.2466517781212454];
     let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
     let got: Vec<f64> = points
         .iter()
-        .map(|p| symimpact::modal_structure::base_participation_cantilever(p[0], p[1]))
+        .map(|p| symimpact::modal_structure::participation_cantilever(p[0], p[1]))
         .collect();
-    check("modal_structure::base_participation_cantilever", &got, &expected, &scale);
+    check("modal_structure::participation_cantilever", &got, &expected, &scale);
 }
 
 #[test]
-fn modal_structure_effective_mass_fraction_clamped_clamped() {
+fn modal_structure_mass_share_clamped_clamped() {
     let expected = [0.08530436830297411, 0.12149844624989083, 0.13332982218395];
     let scale = [0.1315365683231712, 0.2850987220939511, 0.19547634480875473];
     let points: [[f64; 1]; 3] = [[11.2279_f64], [5.95584_f64], [9.68377_f64]];
     let got: Vec<f64> = points
         .iter()
-        .map(|p| symimpact::modal_structure::effective_mass_fraction_clamped_clamped(p[0]))
+        .map(|p| symimpact::modal_structure::mass_share_clamped_clamped(p[0]))
         .collect();
-    check("modal_structure::effective_mass_fraction_clamped_clamped", &got, &expected, &scale);
+    check("modal_structure::mass_share_clamped_clamped", &got, &expected, &scale);
 }
 
 #[test]
-fn modal_structure_base_participation_clamped_clamped() {
+fn modal_structure_participation_clamped_clamped() {
     let expected = [0.046022635686675285, -0.1561323572960023, -0.6510974258911841];
     let scale = [0.26355641081175707, 0.6716693657760677, 0.9068765330589181];
     let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
     let got: Vec<f64> = points
         .iter()
-        .map(|p| symimpact::modal_structure::base_participation_clamped_clamped(p[0], p[1]))
+        .map(|p| symimpact::modal_structure::participation_clamped_clamped(p[0], p[1]))
         .collect();
-    check("modal_structure::base_participation_clamped_clamped", &got, &expected, &scale);
+    check("modal_structure::participation_clamped_clamped", &got, &expected, &scale);
 }
 
 #[test]
-fn modal_structure_effective_mass_fraction_simply_supported() {
+fn modal_structure_mass_share_simply_supported() {
     let expected = [0.17732718536818246, 0.0001773118765340761, 0.08827898664896155];
     let scale = [0.24078614020317363, 0.22570711595552398, 0.17358920531467975];
     let points: [[f64; 1]; 3] = [[11.2279_f64], [5.95584_f64], [9.68377_f64]];
     let got: Vec<f64> = points
         .iter()
-        .map(|p| symimpact::modal_structure::effective_mass_fraction_simply_supported(p[0]))
+        .map(|p| symimpact::modal_structure::mass_share_simply_supported(p[0]))
         .collect();
-    check("modal_structure::effective_mass_fraction_simply_supported", &got, &expected, &scale);
+    check("modal_structure::mass_share_simply_supported", &got, &expected, &scale);
 }
 
 #[test]
-fn modal_structure_base_participation_simply_supported() {
+fn modal_structure_participation_simply_supported() {
     let expected = [-1.6006197176457142, -0.019830090465853763, -0.12912579157981768];
     let scale = [1.956875117141613, 0.6914398046287594, 0.5421880596840787];
     let points: [[f64; 2]; 3] = [[11.2279_f64, 0.33923_f64], [5.95584_f64, 0.778461_f64], [9.68377_f64, 0.617691_f64]];
     let got: Vec<f64> = points
         .iter()
-        .map(|p| symimpact::modal_structure::base_participation_simply_supported(p[0], p[1]))
+        .map(|p| symimpact::modal_structure::participation_simply_supported(p[0], p[1]))
         .collect();
-    check("modal_structure::base_participation_simply_supported", &got, &expected, &scale);
+    check("modal_structure::participation_simply_supported", &got, &expected, &scale);
 }
 
 #[test]
