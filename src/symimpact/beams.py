@@ -4,8 +4,8 @@ Euler–Bernoulli beam, each referred to the damper's point, and the point's sta
 The cantilever's modes are Step 1's (paper Eq. 3–6, kernels ``ritz.*``), the other two beams'
 Step 14's (Eq. F6, kernels ``beam_modes.*``); each mode's mass and stiffness are referred to the
 point r along the beam (the displacement there is the mode's coordinate): M = ρAL·∫φ²dξ/φ(ξ)²,
-K = ω²M, ω = (βL)²·√(EI/(ρAL⁴)).  When the supports move by x<sub>b</sub>, each mode is driven as
-by a base motion Γ·x<sub>b</sub> (Step 15, Eq. F7, kernels ``modal_structure.*``): Γ = φ(ξ)∫φdξ/∫φ²dξ
+K = ω²M, ω = (βL)²·√(EI/(ρAL⁴)).  When the supports move by x_b, each mode is driven as
+by a base motion Γ·x_b (Step 15, Eq. F7, kernels ``modal_structure.*``): Γ = φ(ξ)∫φdξ/∫φ²dξ
 referred to the point, and the mode moves the share MΓ²/(ρAL) = (∫φdξ)²/∫φ²dξ of the beam's
 mass (its effective modal mass).  A mode with a node at the point does not move it: its M and K
 are infinite there, and it cannot be the primary of a damper placed at that point.

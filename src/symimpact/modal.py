@@ -12,8 +12,8 @@ they describe the point.
 
 Given the influence vector r (each DOF's displacement when the supports move by one unit: 1 for
 the translations along the motion, 0 for rotations), each mode also gets its participation
-factor referred to the DOF, Γᵢ = φᵢⱼ·φᵢᵀMr (the supports' motion x<sub>b</sub> drives it as a base
-motion Γᵢx<sub>b</sub>, Step 15, Eq. F7), and the share of the model's mass rᵀMr it moves,
+factor referred to the DOF, Γᵢ = φᵢⱼ·φᵢᵀMr (the supports' motion x_b drives it as a base
+motion Γᵢx_b, Step 15, Eq. F7), and the share of the model's mass rᵀMr it moves,
 (φᵢᵀMr)²/rᵀMr (its effective modal mass; over all modes the shares sum to 1).  M is the
 constrained model's: mass that a consistent mass matrix couples to the supports themselves
 (their rows and columns, removed with them) is not in the load, an error of the order of one
