@@ -161,3 +161,47 @@ def integrate_whole_system(force, system, forcing, state, t_end):
         elif sol.status == 1:
             side = 0
     return u, contacts
+
+
+# --- a beam in Hermite elements, for the beam steps' independent checks -------------------------
+#: a steel strip 1 m long, 50 mm × 10 mm
+E, RHO, L = 210e9, 7850.0, 1.0
+B, H = 0.05, 0.01
+I, A = B * H**3 / 12, B * H
+#: the supports' constrained (w, θ) degrees of freedom at the two ends
+#: ("free": none, the whole model, as the supports' own rows are needed for base motion)
+ENDS = {"cantilever": ((0, 1), ()), "clamped-clamped": ((0, 1), (0, 1)),
+        "simply-supported": ((0,), (0,)), "free": ((), ())}  # fmt: skip
+N_EL = 200
+
+
+def hermite_beam(support: str):
+    """(K, M, kept DOFs) of the strip in N_EL Hermite cubic elements with consistent mass, DOFs
+    (w, θ) per node, the ``support``'s end DOFs removed: an independent model of the beams of
+    Steps 1, 14 and 15 that shares no formula with their derivations."""
+    h = L / N_EL
+    k = (
+        E
+        * I
+        / h**3
+        * np.array(
+            [
+                [12, 6 * h, -12, 6 * h],
+                [6 * h, 4 * h * h, -6 * h, 2 * h * h],
+                [-12, -6 * h, 12, -6 * h],
+                [6 * h, 2 * h * h, -6 * h, 4 * h * h],
+            ]
+        )
+    )
+    m = RHO * A * h / 420 * np.array([[156, 22 * h, 54, -13 * h], [22 * h, 4 * h * h, 13 * h, -3 * h * h],
+                                      [54, 13 * h, 156, -22 * h], [-13 * h, -3 * h * h, -22 * h, 4 * h * h]])  # fmt: skip
+    n = 2 * (N_EL + 1)
+    K, M = np.zeros((n, n)), np.zeros((n, n))
+    for e in range(N_EL):
+        s = slice(2 * e, 2 * e + 4)
+        K[s, s] += k
+        M[s, s] += m
+    left, right = ENDS[support]
+    fixed = [d for d in left] + [n - 2 + d for d in right]
+    kept = [d for d in range(n) if d not in fixed]
+    return K[np.ix_(kept, kept)], M[np.ix_(kept, kept)], kept

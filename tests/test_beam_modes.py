@@ -16,51 +16,15 @@ from scipy.linalg import eigh, solve
 from symimpact.beams import beam_constants, beam_modes, static_flexibility
 from symimpact.cli import main
 from symimpact.errors import ParameterError
+from tests.helpers import N_EL, RHO, A, E, I, L
+from tests.helpers import hermite_beam as _fe
 
-# a steel strip 1 m long, 50 mm × 10 mm
-E, RHO, L = 210e9, 7850.0, 1.0
-B, H = 0.05, 0.01
-I, A = B * H**3 / 12, B * H
 #: Blevins, Table 8-1, to the digits printed there
 BLEVINS = {
     "cantilever": (1.87510407, 4.69409113, 7.85475744, 10.99554073),
     "clamped-clamped": (4.73004074, 7.85320462, 10.9956078, 14.1371655),
     "simply-supported": (math.pi, 2 * math.pi, 3 * math.pi, 4 * math.pi),
 }
-#: the supports' constrained (w, θ) degrees of freedom at the two ends
-ENDS = {"cantilever": ((0, 1), ()), "clamped-clamped": ((0, 1), (0, 1)),
-        "simply-supported": ((0,), (0,))}  # fmt: skip
-N_EL = 200
-
-
-def _fe(support: str):
-    """(K, M, kept DOFs) of the beam in N_EL Hermite elements: DOFs (w, θ) per node."""
-    h = L / N_EL
-    k = (
-        E
-        * I
-        / h**3
-        * np.array(
-            [
-                [12, 6 * h, -12, 6 * h],
-                [6 * h, 4 * h * h, -6 * h, 2 * h * h],
-                [-12, -6 * h, 12, -6 * h],
-                [6 * h, 2 * h * h, -6 * h, 4 * h * h],
-            ]
-        )
-    )
-    m = RHO * A * h / 420 * np.array([[156, 22 * h, 54, -13 * h], [22 * h, 4 * h * h, 13 * h, -3 * h * h],
-                                      [54, 13 * h, 156, -22 * h], [-13 * h, -3 * h * h, -22 * h, 4 * h * h]])  # fmt: skip
-    n = 2 * (N_EL + 1)
-    K, M = np.zeros((n, n)), np.zeros((n, n))
-    for e in range(N_EL):
-        s = slice(2 * e, 2 * e + 4)
-        K[s, s] += k
-        M[s, s] += m
-    left, right = ENDS[support]
-    fixed = [d for d in left] + [n - 2 + d for d in right]
-    kept = [d for d in range(n) if d not in fixed]
-    return K[np.ix_(kept, kept)], M[np.ix_(kept, kept)], kept
 
 
 @pytest.mark.parametrize("support", list(BLEVINS))

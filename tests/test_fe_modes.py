@@ -1,7 +1,7 @@
 """A finite-element model's modes at the damper's DOF (symimpact.modal, ``symimpact modes``;
 issue 36, a primary given by its finite-element model): the Hermite beam model of
-tests/test_beam_modes.py, written to .npz, Matrix Market and CSV files, reduced and compared with
-Step 14's derived modes of the same beam, which share no code with the reduction."""
+tests/helpers.py, written to .npz, Matrix Market and CSV files, reduced and compared with Step
+14's derived modes of the same beam, which share no code with the reduction."""
 
 from __future__ import annotations
 
@@ -10,13 +10,14 @@ import json
 import numpy as np
 import pytest
 from scipy import io, sparse
-from test_beam_modes import N_EL, RHO, A, E, I, L, _fe
 
 from symimpact.beams import beam_modes
 from symimpact.beams import static_flexibility as beam_flexibility
 from symimpact.cli import main
 from symimpact.errors import ParameterError
 from symimpact.modal import fe_modes, read_matrices, static_flexibility
+from tests.helpers import N_EL, RHO, A, E, I, L
+from tests.helpers import hermite_beam as _fe
 
 
 def _files(tmp_path, K, M):

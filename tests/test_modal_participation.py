@@ -12,12 +12,13 @@ import numpy as np
 import pytest
 from scipy.linalg import eigh
 from symimpact.generated import forced_flight as ff
-from test_beam_modes import N_EL, RHO, A, E, I, L, _fe
 
 from symimpact.beams import beam_modes
 from symimpact.cli import main
 from symimpact.errors import ParameterError
 from symimpact.modal import fe_modes, influence_vector
+from tests.helpers import N_EL, RHO, A, E, I, L
+from tests.helpers import hermite_beam as _fe
 
 
 @pytest.mark.parametrize("support", ["cantilever", "clamped-clamped", "simply-supported"])
@@ -29,7 +30,7 @@ def test_beam_participation_and_mass_share_match_hermite_elements(support):
     total is ρAL.  The elements converge as h⁴ in the frequencies and the shares, so 200 of them
     leave about 1e-9 on the first four modes; 1e-7 is that with a margin for the fourth mode."""
     K, M, kept = _fe(support)
-    _, Mf = _fe_full()
+    _, Mf, _ = _fe("free")
     xi = 1.0 if support == "cantilever" else 0.3  # off-centre: no mode has a node there
     dof = kept.index(2 * round(xi * N_EL))
     r = np.array([1.0 if d % 2 == 0 else 0.0 for d in range(Mf.shape[0])])
@@ -47,19 +48,6 @@ def test_beam_participation_and_mass_share_match_hermite_elements(support):
     if support == "cantilever":
         assert derived[0].participation == pytest.approx(1.566, abs=5e-4)
         assert derived[0].mass_share == pytest.approx(0.613, abs=5e-4)
-
-
-def _fe_full():
-    """The unconstrained element model's K and M (the constrained one with every DOF kept)."""
-    import test_beam_modes as tb
-
-    saved = tb.ENDS
-    tb.ENDS = {"free": ((), ())}
-    try:
-        K, M, _ = tb._fe("free")
-    finally:
-        tb.ENDS = saved
-    return K, M
 
 
 def test_two_mass_chain_shares_are_the_golden_ratio_closed_form():
