@@ -299,34 +299,31 @@ def main() -> None:
     bundles(rng)
 
 
-def _numba_loop(functions):
-    """A compiled loop over the points calling each scalar kernel of ``functions`` and summing
-    every output (so that nothing is optimised away)."""
+def _numba_loop(f, outputs: int):
+    """A compiled loop over the points (columns of a 10-row array) calling the scalar kernel
+    ``f`` and summing its ``outputs`` values (so that nothing is optimised away)."""
     from numba import njit
 
-    compiled = tuple(njit(cache=False)(f) for f in functions)
-    if len(compiled) == 1:
-        (f,) = compiled
+    g = njit(cache=False)(f)
 
-        @njit(cache=False)
-        def loop(a):
-            total = 0.0
-            for i in range(a.shape[1]):
-                for v in f(a[0, i], a[1, i], a[2, i], a[3, i], a[4, i], a[5, i], a[6, i],
-                           a[7, i], a[8, i], a[9, i]):  # fmt: skip
-                    total += v
-            return total
+    @njit(cache=False)
+    def one(a):
+        total = 0.0
+        for i in range(a.shape[1]):
+            total += g(a[0, i], a[1, i], a[2, i], a[3, i], a[4, i], a[5, i], a[6, i], a[7, i],
+                       a[8, i], a[9, i])  # fmt: skip
+        return total
 
-        return loop
-    source = "\n".join(
-        ["def loop(a):", "    total = 0.0", "    for i in range(a.shape[1]):",
-         *(f"        total += f{j}(a[0, i], a[1, i], a[2, i], a[3, i], a[4, i], a[5, i], "
-           "a[6, i], a[7, i], a[8, i], a[9, i])" for j in range(len(compiled))),
-         "    return total"]
-    )  # fmt: skip
-    scope = {f"f{j}": f for j, f in enumerate(compiled)}
-    exec(source, scope)  # a loop over k part kernels, written out
-    return njit(cache=False)(scope["loop"])
+    @njit(cache=False)
+    def many(a):
+        total = 0.0
+        for i in range(a.shape[1]):
+            for v in g(a[0, i], a[1, i], a[2, i], a[3, i], a[4, i], a[5, i], a[6, i], a[7, i],
+                       a[8, i], a[9, i]):  # fmt: skip
+                total += v
+        return total
+
+    return one if outputs == 1 else many
 
 
 def bundles(rng) -> None:
@@ -348,11 +345,13 @@ def bundles(rng) -> None:
         tp = timed(lambda c=cols, ps=parts: [getattr(ff, p)(*c) for p in ps])
         diff = max(float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
                    for a, b in zip(tb.out, tp.out, strict=True))  # fmt: skip
-        one = _numba_loop((getattr(ff, f"{name}_scalar"),))
-        many = _numba_loop(tuple(getattr(ff, f"{p}_scalar") for p in parts))
-        one(stack[:, :10]), many(stack[:, :10])  # compiled here
-        nb = timed(lambda f=one: f(stack))
-        np_ = timed(lambda f=many: f(stack))
+        # the bundle in one loop; its parts one by one, a loop each, as separate calls would be
+        whole_loop = _numba_loop(getattr(ff, f"{name}_scalar"), len(parts))
+        part_loops = [_numba_loop(getattr(ff, f"{p}_scalar"), 1) for p in parts]
+        for f in (whole_loop, *part_loops):
+            f(stack[:, :10])  # compiled here
+        nb = timed(lambda f=whole_loop: f(stack))
+        np_ = timed(lambda fs=part_loops: [f(stack) for f in fs])
         print(f"{name} ({len(parts)} parts)")
         print(f"  NumPy: bundle {tb.rate(N, 'ev/s')}; parts {tp.rate(N, 'ev/s')}; ratio "
               f"{tp.median / tb.median:.2f}x; max |diff| {diff:.1e} of max |value|")  # fmt: skip

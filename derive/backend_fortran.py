@@ -129,6 +129,19 @@ def _declaration_lines(p: FortranKernelPrinter, real, logical) -> list[str]:
     return lines + (p.wrapped(f"logical :: {', '.join(logical)}", 8) if logical else [])
 
 
+def _cse_body(p: FortranKernelPrinter, exprs, targets) -> tuple[list[str], list[str]]:
+    """(declaration lines, body lines) computing ``exprs`` into ``targets`` (Fortran names),
+    their common subexpressions eliminated once over all of them."""
+    replacements, reduced = sp.cse([numeric_constants(e) for e in exprs],
+                                   symbols=sp.numbered_symbols(PREFIX), order="canonical")  # fmt: skip
+    body = []
+    for sym, val in replacements:
+        body += p.wrapped(f"{sym} = {p.one_line(val)}", 8)
+    for target, r in zip(targets, reduced, strict=True):
+        body += p.wrapped(f"{target} = {p.one_line(r)}", 8)
+    return _declaration_lines(p, *_declarations(replacements)), body
+
+
 def items(boards: list[Board]) -> dict:
     """Template context of the module."""
     p = FortranKernelPrinter()
@@ -137,42 +150,28 @@ def items(boards: list[Board]) -> dict:
     for b in boards:
         kernels = []
         for k in b.kernels:
-            names, (expr,) = _renamed(k.args, k.expr)
-            replacements, (reduced,) = sp.cse([numeric_constants(expr)],
-                                              symbols=sp.numbered_symbols(PREFIX),
-                                              order="canonical")  # fmt: skip
-            real, logical = _declarations(replacements)
-            body = []
-            for sym, val in replacements:
-                body += p.wrapped(f"{sym} = {p.one_line(val)}", 8)
-            body += p.wrapped(f"{RESULT} = {p.one_line(reduced)}", 8)
+            names, exprs = _renamed(k.args, k.expr)
+            declarations, body = _cse_body(p, exprs, [RESULT])
             name = fortran_name(b.module, k.name)
             if name.lower() in seen:
                 raise ValueError(f"{name} and {seen[name.lower()]} are one name in Fortran")
             seen[name.lower()] = name
             kernels.append({"k": k, "f": name, "names": names, "body": body,
-                            "declarations": _declaration_lines(p, real, logical),
+                            "declarations": declarations,
                             "arglist": ", ".join(names[a.name] for a in k.args)})  # fmt: skip
         constants = [{"f": fortran_name(b.module, c.name), "const": c} for c in b.constants]
         bundles = []
         for bu in b.bundles:
             names, exprs = _renamed(bu.args, *(k.expr for k in bu.parts))
-            replacements, reduced = sp.cse([numeric_constants(e) for e in exprs],
-                                           symbols=sp.numbered_symbols(PREFIX),
-                                           order="canonical")  # fmt: skip
-            real, logical = _declarations(replacements)
-            body = []
-            for sym, val in replacements:
-                body += p.wrapped(f"{sym} = {p.one_line(val)}", 8)
-            for j, r in enumerate(reduced, start=1):
-                body += p.wrapped(f"out({j}) = {p.one_line(r)}", 8)
+            outs = [f"out({j})" for j in range(1, len(exprs) + 1)]
+            declarations, body = _cse_body(p, exprs, outs)
             name = fortran_name(b.module, bu.name)
             if name.lower() in seen:
                 raise ValueError(f"{name} and {seen[name.lower()]} are one name in Fortran")
             seen[name.lower()] = name
-            bundles.append({"b": bu, "f": name, "names": names, "body": body, "n": len(reduced),
+            bundles.append({"b": bu, "f": name, "names": names, "body": body, "n": len(outs),
                             "parts": [fortran_name(b.module, k.name) for k in bu.parts],
-                            "declarations": _declaration_lines(p, real, logical),
+                            "declarations": declarations,
                             "arglist": ", ".join(names[a.name] for a in bu.args)})  # fmt: skip
         modules.append({"board": b, "kernels": kernels, "constants": constants,
                         "bundles": bundles})  # fmt: skip

@@ -135,10 +135,7 @@ def bundle_body(
 
 
 def _bundle_reduced(bundle: Bundle, prefix: str) -> tuple[list, list, int]:
-    exprs = [numeric_constants(sp.sympify(k.expr)) for k in bundle.parts]
-    replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="canonical")
-    ops = sum(int(sp.count_ops(val)) for _, val in replacements)
-    return replacements, reduced, ops + sum(int(sp.count_ops(r)) for r in reduced)
+    return _cse([k.expr for k in bundle.parts], prefix)
 
 
 def bundle_ops(bundle: Bundle) -> tuple[int, int]:
@@ -165,12 +162,17 @@ def _once(func, item, *rest):
 def _reduced(kernel: Kernel, prefix: str) -> tuple[list, sp.Expr, int]:
     """The kernel's expression with special-function constants evaluated, CSE-reduced (the
     subexpressions named ``prefix0``, ``prefix1``, ...), and its operation count."""
-    expr = numeric_constants(sp.sympify(kernel.expr))
-    replacements, (reduced,) = sp.cse(
-        [expr], symbols=sp.numbered_symbols(prefix), order="canonical"
-    )
-    ops = sum(int(sp.count_ops(val)) for _, val in replacements) + int(sp.count_ops(reduced))
+    replacements, (reduced,), ops = _cse([kernel.expr], prefix)
     return replacements, reduced, ops
+
+
+def _cse(exprs, prefix: str) -> tuple[list, list, int]:
+    """``sympy.cse`` of ``exprs`` together (special-function constants evaluated first, the
+    subexpressions named ``prefix0``, ``prefix1``, ...) and the operation count of the result."""
+    exprs = [numeric_constants(sp.sympify(e)) for e in exprs]
+    replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="canonical")
+    ops = sum(int(sp.count_ops(val)) for _, val in replacements)
+    return replacements, reduced, ops + sum(int(sp.count_ops(r)) for r in reduced)
 
 
 #: A derivative's formula written out longer than this (LaTeX characters) is no help to a reader
