@@ -154,7 +154,9 @@ def test_sweep_jumps_sit_where_the_motion_they_leave_ends(curve):
     (its ratio between neighbours differs from the primary alone's by more than 10 %) from a
     motion the curve traces, that motion ends within one sweep step: a located end of the
     branch's stable run (a fold, grazing, branch point, period doubling or Neimark–Sacker point),
-    or the located grazing of the motion without impacts (X(Ω) = d/2).  Here at least three
+    the branch's own end (where the corrector could not go on: the branch turns or meets
+    another orbit within the smallest step, as at a fold it cannot round, 31.99 rad/s here), or
+    the located grazing of the motion without impacts (X(Ω) = d/2).  Here at least three
     jumps leave a traced motion: both sweeps start from rest on the motion without impacts and
     jump where it grazes (up near 28.3 rad/s, down near 34.6); the up sweep leaves a period-1
     branch at its Neimark–Sacker point near 33.67 rad/s.  Jumps between motions the curve does
@@ -165,7 +167,7 @@ def test_sweep_jumps_sit_where_the_motion_they_leave_ends(curve):
     base = _linear_amplitude(ISSUE, f0, w)
     ends: dict = {}
     for i, b in enumerate(curve.branches):
-        located = [f.omega for f in b.bifurcations]
+        located = [f.omega for f in b.bifurcations] + [b.points[0].omega, b.points[-1].omega]
         for p, q in itertools.pairwise(b.points):
             if p.stable != q.stable:
                 located.append(0.5 * (p.omega + q.omega))

@@ -22,7 +22,9 @@ complex pair through the unit circle a *Neimark–Sacker* point; each is located
 Brent's method on its test function (the tangent's parameter component, det(monodromy + I), the pair's
 modulus − 1).  Where the set of impacts changes (an impact appears or vanishes: a *grazing*)
 the grazing is located and the branch goes on with the new impacts where an impacting orbit
-continues it; a chatter sequence that accumulates counts as one impact event, so a branch is
+continues it.  A located change is a grazing only where the orbit there touches a wall (a
+flight turns at it, or an impact's speed vanishes, :data:`GRAZING_MARGIN`); elsewhere Newton
+from the predictor merely left the branch, which ends there saying so; a chatter sequence that accumulates counts as one impact event, so a branch is
 followed into and through chatter and sticking (rigid impacts, :func:`.shooting.rigid_monodromy`);
 where the motion stops impacting or the corrector fails, the branch ends there and says why.
 
@@ -49,6 +51,7 @@ from scipy.optimize import brentq
 from .. import budgets, checks
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
+from . import _rigid
 from .contact_law import checked, is_rigid
 from .forcing import Forcing
 from .shooting import (
@@ -60,7 +63,7 @@ from .shooting import (
     monodromy,
     shoot,
 )
-from .simulation import impact_counts
+from .simulation import impact_counts, state_at
 
 #: Newton's corrector stops below this change of the scaled unknowns, or below the map's own
 #: noise amplified by the conditioning of the extended Jacobian, cond·NOISE, where that is larger
@@ -305,32 +308,35 @@ GRAZE = "graze"
 
 
 def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float | None = None):
-    """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from y_pred; None when it fails, GRAZE when an
-    iterate impacts other than ``count`` times per period."""
+    """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from y_pred; None when it fails, GRAZE when it
+    lands on an orbit that impacts other than ``count`` times per period, or fails after an
+    iterate did (the map's impacts changed on the way: an iterate that wanders across a grazing
+    and comes back to an orbit with ``count`` impacts is the orbit)."""
     y = y_pred.copy()
+    wandered = False
     for _ in range(MAX_NEWTON):
         try:
             r, J, mono, res = problem.evaluate(y)
         except SymimpactError:  # no impacts, a zero-speed impact, a state through a wall
-            return None
+            return GRAZE if wandered else None
         if count is not None and _events(res, problem.periods) != count:
-            return GRAZE
+            wandered = True
         A = np.vstack([J, t])
         b = np.concatenate([-r, [-(t @ (y - y_pred))]])
         try:
             dy = np.linalg.solve(A, b)
         except np.linalg.LinAlgError:
-            return None
+            return GRAZE if wandered else None
         y = y + dy
         if np.max(np.abs(dy)) < max(TOL, problem.noise * np.linalg.cond(A)):
             try:
                 r, J, mono, res = problem.evaluate(y)
             except SymimpactError:
-                return None
+                return GRAZE if wandered else None
             if count is not None and _events(res, problem.periods) != count:
                 return GRAZE
             return y, J, mono, res
-    return None
+    return GRAZE if wandered else None
 
 
 def _events(res, periods: int) -> float:
@@ -438,8 +444,19 @@ def continue_orbit(
             point = _point(problem, y, mono, res)
         attempt = _correct(problem, y + ds * t, t, point.impact_events_per_period)
         if attempt is GRAZE:
+            located = _grazing(problem, y, t, ds, point)
+            lo, at_lo = located[1], located[3]
+            if (at_lo is not None and is_rigid(problem.e)
+                    and _wall_margin(problem, at_lo[3]) > GRAZING_MARGIN):  # fmt: skip
+                # no wall is touched where the corrector stops landing with the old impacts:
+                # Newton from the predictor leaves the branch there (the branch turns sharply,
+                # or another orbit is near), which is no grazing
+                branch.stopped = (f"the corrector failed at {problem.where(located[0].value)} "
+                                  "(no impact grazes there: the branch turns or meets another "
+                                  "orbit within the step)")  # fmt: skip
+                return branch
             crossings += 1
-            crossed = _cross(problem, y, t, ds, point, branch, crossings <= MAX_CROSSINGS)
+            crossed = _cross(problem, y, t, ds, point, branch, located, crossings <= MAX_CROSSINGS)
             if crossed is None:
                 branch.stopped = f"grazing at {problem.where(branch.bifurcations[-1].value)}"
                 if crossings > MAX_CROSSINGS:
@@ -887,24 +904,67 @@ def _si_state(problem: _Problem, y: np.ndarray) -> tuple[float, float, float, fl
     return tuple(float(c) for c in y[:4] * problem.scale)
 
 
-def _grazing(problem, y, t, ds, before: BranchPoint) -> tuple[Bifurcation, float]:
+def _grazing(problem, y, t, ds, before: BranchPoint):
     """Where the impact count changes between y and ds along t: bisection on the step length
     (the count is a step function of it) to 1e-6 of ds (ds moves Ω by at most 2 % of the band,
-    so 2e-8 of the band); the last orbit with the old count, and the step length beyond which
-    the count has changed."""
+    so 2e-8 of the band).  Returns the grazing (the last orbit with the old count), the step
+    lengths lo and hi of the final bracket, and the corrected orbit at lo, (y, J, monodromy,
+    simulation), None where no step with the old count was corrected."""
     lo, hi = 0.0, ds
-    last = before
+    last, at_lo = before, None
     while hi - lo > 1e-6 * ds:
         mid = 0.5 * (lo + hi)
         got = _correct(problem, y + mid * t, t, before.impact_events_per_period)
         if got is None or got is GRAZE:
             hi = mid
             continue
-        last = _point(problem, got[0], got[2], got[3])
+        last, at_lo = _point(problem, got[0], got[2], got[3]), got
         lo = mid
     found = Bifurcation("grazing", last.omega, last.amplitude, last.value, last.state,
                         last.phase, impacts_before=before.impact_events_per_period)  # fmt: skip
-    return found, hi
+    return found, lo, hi, at_lo
+
+
+#: A located change of the impacts is a grazing where the orbit found there touches a wall: a
+#: flight turns within this fraction of d/2 of a wall, or an impact's relative speed is within
+#: this fraction of the fastest's.  The bisection's bracket (1e-6 of a step) leaves ≤ 3e-7 of
+#: either at the grazings of the README's curves; where Newton from the predictor merely left
+#: a curved branch, they stay ≥ 9e-5 (measured on the same curves).
+GRAZING_MARGIN = 1e-5
+
+
+def _wall_margin(problem: _Problem, res) -> float:
+    """How far the rigid-impact orbit of the simulation ``res`` (one run of the problem's k
+    periods) is from touching a wall: the smaller of (d/2 − abs(z))/(d/2) at the flights'
+    turning points of z = y − x (ż = 0, located by Brent's method between samples at 1/512 of
+    a period where ż changes sign away from the walls) and the slowest impact's relative speed
+    over the fastest's.  0 where the orbit chatters or sticks (the accumulation of impacts
+    touches with speed zero)."""
+    ev = res.events
+    kinds = ev[:, _rigid.E_KIND]
+    if np.any(kinds != _rigid.KIND_IMPACT):
+        return 0.0
+    h = problem.system.gap / 2.0
+    speeds = np.abs(ev[:, _rigid.E_VREL])
+    margin = float(speeds.min() / speeds.max()) if len(speeds) else math.inf
+    period = res.forcing.period * problem.periods
+    ts = np.linspace(0.0, period, 512 * problem.periods + 1)
+    s = state_at(res, ts)
+    zdot = s[:, 3] - s[:, 1]
+    free = np.abs(s[:, 2]) < h * (1.0 - 1e-9)
+    # a sign change of ż with no event between the samples: a turning point in flight
+    between = np.searchsorted(ev[:, _rigid.E_T], ts)
+    for i in np.nonzero((zdot[:-1] * zdot[1:] < 0) & free[:-1] & free[1:]
+                        & (between[:-1] == between[1:]))[0]:  # fmt: skip
+
+        def rate(t):
+            r = state_at(res, np.array([t]))[0]
+            return r[3] - r[1]
+
+        turn = brentq(rate, ts[i], ts[i + 1], xtol=1e-14 * period)
+        z = state_at(res, np.array([turn]))[0, 2]
+        margin = min(margin, (h - abs(z)) / h)
+    return margin
 
 
 #: At most this many grazings are crossed in one direction of a continuation: near the onset of
@@ -913,13 +973,13 @@ def _grazing(problem, y, t, ds, before: BranchPoint) -> tuple[Bifurcation, float
 MAX_CROSSINGS = 3
 
 
-def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, go_on: bool = True):
-    """Continuation through a grazing: the grazing located (and listed on ``branch``), the orbit
-    just beyond it with its new impacts (Newton from a little past the located step, the count
-    free), whose tangent is oriented along t.  Returns (y, t, monodromy, simulation, point) on
+def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, located, go_on: bool = True):
+    """Continuation through a grazing: the grazing ``located`` by :func:`_grazing` (listed on
+    ``branch``), the orbit just beyond it with its new impacts (Newton from a little past the
+    located step, the count free), whose tangent is oriented along t.  Returns (y, t, monodromy, simulation, point) on
     the other side, or None where no impacting orbit continues it (the impact mass stops
     impacting, or Newton's steps fail there)."""
-    found, hi = _grazing(problem, y, t, ds, before)
+    found, _, hi, _ = located
     branch.bifurcations.append(found)
     if not go_on:
         return None
