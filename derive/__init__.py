@@ -30,6 +30,7 @@ STEPS = (
     "hertz_contact",
     "beam_modes",
     "modal_structure",
+    "sampled_load",
 )
 
 

@@ -515,4 +515,31 @@ for i, r in enumerate(roots("cantilever", 3), start=1):
             source="φ₂(1)∫φ₂dξ/∫φ₂²dξ by mpmath quadrature of the shape",
         ),
     ),
+    "sampled_load": (
+        Exercise(
+            "A load applied suddenly",
+            "A constant load p₀ switched on at τ = 0 on the undamped primary at rest: the "
+            "response overshoots the static deflection p₀/K and swings about it.",
+            """sudden = x_t.subs({C: 0, x0: 0, xd0: 0, pd: 0})
+for where in (sp.pi / (2 * wn), sp.pi / wn):
+    print(f"tau = {where}: x K / p0 = {sp.simplify(sudden.subs(t, where) * K / p0)}")""",
+            ask="The largest x·K/p₀ of the suddenly applied load (at τ = π/ωₙ).",
+            answer="sp.simplify(x_t.subs({C: 0, x0: 0, xd0: 0, pd: 0}).subs(t, sp.pi / wn) * K / p0)",
+            stated="2.000000000",
+            source="the dynamic load factor of a step load, 2 (Chopra, Dynamics of Structures, §4.3)",
+        ),
+        Exercise(
+            "How far a damped primary lags a ramp",
+            "Under a slowly rising load p = ṗτ the decay dies out and x follows the static "
+            "deflection ṗτ/K late by a fixed time: the offset −Cṗ/K² is ṗ/K times −C/K.",
+            """given = {M: 1, K: 1000, C: sp.Rational(1, 2)}
+lag = -particular.subs({p0: 0, t: 0}) / (pd / K)
+print("lag C/K =", lag.subs(given), "s; 2 zeta / omega_n =",
+      sp.N((2 * (C / (2 * sp.sqrt(K * M))) / wn).subs(given), 10), "s")""",
+            ask="The lag (s) behind a ramp of M 1 kg, K 1000 N/m, C 0.5 N s/m.",
+            answer="(-particular.subs({p0: 0, t: 0}) / (pd / K)).subs({M: 1, K: 1000, C: sp.Rational(1, 2)})",
+            stated="0.0005000000000",
+            source="2ζ/ωₙ, the steady lag of a damped oscillator behind a ramp load",
+        ),
+    ),
 }

@@ -23,6 +23,7 @@ from . import (
     hertz_contact,
     beam_modes,
     modal_structure,
+    sampled_load,
 )
 
 __all__ = [
@@ -41,4 +42,5 @@ __all__ = [
     "hertz_contact",
     "beam_modes",
     "modal_structure",
+    "sampled_load",
 ]

@@ -3549,6 +3549,54 @@ static void check_modal_structure_participation_simply_supported(void)
     }
 }
 
+/* sampled_load.ramp_displacement: Main-mass displacement x(τ) under a load linear in τ [m] */
+static void check_sampled_load_ramp_displacement(void)
+{
+    static const double expected[3] = { -0.0020906756631880095, 0.002895913637630997, 0.01371118250067614 };
+    static const double scale[3] = { 0.007698873584870476, 0.012001869484291017, 1.1106327453094595 };
+    static const double a_t[3] = { 0.0914214, 0.0328427, 0.0742641 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_p0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_pdot[3] = { -788.897, 422.205, -366.692 };
+    static const double a_x0[3] = { 0.00246211, 0.00492423, 0.00738634 };
+    static const double a_xdot0[3] = { 0.717798, -0.564404, 0.153394 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_sampled_load_ramp_displacement", i, symimpact_sampled_load_ramp_displacement(a_t[i], a_M[i], a_K[i], a_C[i], a_p0[i], a_pdot[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_sampled_load_ramp_displacement_batch(3, a_t, a_M, a_K, a_C, a_p0, a_pdot, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_sampled_load_ramp_displacement_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* sampled_load.ramp_velocity: Main-mass velocity ẋ(τ) under a load linear in τ [m/s] */
+static void check_sampled_load_ramp_velocity(void)
+{
+    static const double expected[3] = { -1.2254490058645053, 0.7859480474356725, -0.03949544705111999 };
+    static const double scale[3] = { 2.985468208638928, 2.024277626918221, 6.916089497861022 };
+    static const double a_t[3] = { 0.0914214, 0.0328427, 0.0742641 };
+    static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+    static const double a_K[3] = { 47900.5, 725571, 109.906 };
+    static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+    static const double a_p0[3] = { 6.3325, -7.33501, -1.00251 };
+    static const double a_pdot[3] = { -788.897, 422.205, -366.692 };
+    static const double a_x0[3] = { 0.00246211, 0.00492423, 0.00738634 };
+    static const double a_xdot0[3] = { 0.717798, -0.564404, 0.153394 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_sampled_load_ramp_velocity", i, symimpact_sampled_load_ramp_velocity(a_t[i], a_M[i], a_K[i], a_C[i], a_p0[i], a_pdot[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_sampled_load_ramp_velocity_batch(3, a_t, a_M, a_K, a_C, a_p0, a_pdot, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_sampled_load_ramp_velocity_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* fixed_points.contact_duration (from derive/multiple_scales.py): Contact duration T_CD, Eq. 31 iterated from T⁽⁰⁾ to convergence [s] */
 static void check_fixed_points_contact_duration(void)
 {
@@ -4569,6 +4617,54 @@ static void check_slow_flow_clearance_for_response_and_derivatives(void)
     }
 }
 
+/* sampled_load.ramp_state: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_sampled_load_ramp_state(void)
+{
+    double out[2];
+    double rows[2 * 3];
+    int i;
+    {
+        static const double expected[3] = { -0.0020906756631880095, 0.002895913637630997, 0.01371118250067614 };
+        static const double scale[3] = { 0.007698873584870476, 0.012001869484291017, 1.1106327453094595 };
+        static const double a_t[3] = { 0.0914214, 0.0328427, 0.0742641 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_p0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_pdot[3] = { -788.897, 422.205, -366.692 };
+        static const double a_x0[3] = { 0.00246211, 0.00492423, 0.00738634 };
+        static const double a_xdot0[3] = { 0.717798, -0.564404, 0.153394 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_sampled_load_ramp_state(a_t[i], a_M[i], a_K[i], a_C[i], a_p0[i], a_pdot[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_sampled_load_ramp_state[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_sampled_load_ramp_state_batch(3, a_t, a_M, a_K, a_C, a_p0, a_pdot, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_sampled_load_ramp_state_batch[0]", i, rows[2 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -1.2254490058645053, 0.7859480474356725, -0.03949544705111999 };
+        static const double scale[3] = { 2.985468208638928, 2.024277626918221, 6.916089497861022 };
+        static const double a_t[3] = { 0.0914214, 0.0328427, 0.0742641 };
+        static const double a_M[3] = { 0.248383, 39.0189, 6.12953 };
+        static const double a_K[3] = { 47900.5, 725571, 109.906 };
+        static const double a_C[3] = { 0.0437254, 0.237451, 0.131176 };
+        static const double a_p0[3] = { 6.3325, -7.33501, -1.00251 };
+        static const double a_pdot[3] = { -788.897, 422.205, -366.692 };
+        static const double a_x0[3] = { 0.00246211, 0.00492423, 0.00738634 };
+        static const double a_xdot0[3] = { 0.717798, -0.564404, 0.153394 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_sampled_load_ramp_state(a_t[i], a_M[i], a_K[i], a_C[i], a_p0[i], a_pdot[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_sampled_load_ramp_state[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_sampled_load_ramp_state_batch(3, a_t, a_M, a_K, a_C, a_p0, a_pdot, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_sampled_load_ramp_state_batch[1]", i, rows[2 * i + 1], expected[i], scale[i]);
+        }
+    }
+}
+
 int main(void)
 {
     check_ritz_mode_shape();
@@ -4733,6 +4829,8 @@ int main(void)
     check_modal_structure_participation_clamped_clamped();
     check_modal_structure_mass_share_simply_supported();
     check_modal_structure_participation_simply_supported();
+    check_sampled_load_ramp_displacement();
+    check_sampled_load_ramp_velocity();
     check_fixed_points_contact_duration();
     check_fixed_points_contact_duration_newton();
     check_fixed_points_contact_duration_printed();
@@ -4745,6 +4843,7 @@ int main(void)
     check_rigid_impact_velocities_after_and_derivatives();
     check_periodic_orbit_phase_residual_and_derivatives();
     check_slow_flow_clearance_for_response_and_derivatives();
-    printf("symimpact: %ld checks of 162 kernels, 7 bundles and 5 iterations, %ld failed\n", checks, failures);
+    check_sampled_load_ramp_state();
+    printf("symimpact: %ld checks of 164 kernels, 8 bundles and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1745,6 +1745,32 @@ program check_kernels
 [0.33923_dp, 0.778461_dp, 0.617691_dp])
     call check("modal_structure_participation_simply_supported", got, expected, scale)
 
+    ! sampled_load.ramp_displacement
+    expected = [-0.0020906756631880095_dp, 0.002895913637630997_dp, 0.01371118250067614_dp]
+    scale = [0.007698873584870476_dp, 0.012001869484291017_dp, 1.1106327453094595_dp]
+    got = sampled_load_ramp_displacement([0.0914214_dp, 0.0328427_dp, 0.0742641_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-788.897_dp, 422.205_dp, -366.692_dp], &
+[0.00246211_dp, 0.00492423_dp, 0.00738634_dp], &
+[0.717798_dp, -0.564404_dp, 0.153394_dp])
+    call check("sampled_load_ramp_displacement", got, expected, scale)
+
+    ! sampled_load.ramp_velocity
+    expected = [-1.2254490058645053_dp, 0.7859480474356725_dp, -0.03949544705111999_dp]
+    scale = [2.985468208638928_dp, 2.024277626918221_dp, 6.916089497861022_dp]
+    got = sampled_load_ramp_velocity([0.0914214_dp, 0.0328427_dp, 0.0742641_dp], &
+[0.248383_dp, 39.0189_dp, 6.12953_dp], &
+[47900.5_dp, 725571.0_dp, 109.906_dp], &
+[0.0437254_dp, 0.237451_dp, 0.131176_dp], &
+[6.3325_dp, -7.33501_dp, -1.00251_dp], &
+[-788.897_dp, 422.205_dp, -366.692_dp], &
+[0.00246211_dp, 0.00492423_dp, 0.00738634_dp], &
+[0.717798_dp, -0.564404_dp, 0.153394_dp])
+    call check("sampled_load_ramp_velocity", got, expected, scale)
+
     ! fixed_points.contact_duration
     expected = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
     scale = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
@@ -2484,7 +2510,41 @@ row)
     got(3) = row(10)
     call check("slow_flow_clearance_for_response_and_derivatives(10)", got, expected, scale)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 162 kernels, 7 bundles and 5 iterations, ", &
+    ! sampled_load.ramp_state, part 1 (ramp_displacement), at its own points
+    expected = [-0.0020906756631880095_dp, 0.002895913637630997_dp, 0.01371118250067614_dp]
+    scale = [0.007698873584870476_dp, 0.012001869484291017_dp, 1.1106327453094595_dp]
+    call sampled_load_ramp_state(0.0914214_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -788.897_dp, 0.00246211_dp, 0.717798_dp, &
+row)
+    got(1) = row(1)
+    call sampled_load_ramp_state(0.0328427_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 422.205_dp, 0.00492423_dp, -0.564404_dp, &
+row)
+    got(2) = row(1)
+    call sampled_load_ramp_state(0.0742641_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -366.692_dp, 0.00738634_dp, 0.153394_dp, &
+row)
+    got(3) = row(1)
+    call check("sampled_load_ramp_state(1)", got, expected, scale)
+
+    ! sampled_load.ramp_state, part 2 (ramp_velocity), at its own points
+    expected = [-1.2254490058645053_dp, 0.7859480474356725_dp, -0.03949544705111999_dp]
+    scale = [2.985468208638928_dp, 2.024277626918221_dp, 6.916089497861022_dp]
+    call sampled_load_ramp_state(0.0914214_dp, 0.248383_dp, 47900.5_dp, 0.0437254_dp, &
+6.3325_dp, -788.897_dp, 0.00246211_dp, 0.717798_dp, &
+row)
+    got(1) = row(2)
+    call sampled_load_ramp_state(0.0328427_dp, 39.0189_dp, 725571.0_dp, 0.237451_dp, &
+-7.33501_dp, 422.205_dp, 0.00492423_dp, -0.564404_dp, &
+row)
+    got(2) = row(2)
+    call sampled_load_ramp_state(0.0742641_dp, 6.12953_dp, 109.906_dp, 0.131176_dp, &
+-1.00251_dp, -366.692_dp, 0.00738634_dp, 0.153394_dp, &
+row)
+    got(3) = row(2)
+    call check("sampled_load_ramp_state(2)", got, expected, scale)
+
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 164 kernels, 8 bundles and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

@@ -27,6 +27,7 @@ from . import (  # noqa: E402  (after the float64 switch)
     hertz_contact,
     beam_modes,
     modal_structure,
+    sampled_load,
 )
 
 __all__ = [
@@ -45,4 +46,5 @@ __all__ = [
     "hertz_contact",
     "beam_modes",
     "modal_structure",
+    "sampled_load",
 ]

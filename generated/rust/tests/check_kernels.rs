@@ -1964,6 +1964,30 @@ fn modal_structure_participation_simply_supported() {
 }
 
 #[test]
+fn sampled_load_ramp_displacement() {
+    let expected = [-0.0020906756631880095, 0.002895913637630997, 0.01371118250067614];
+    let scale = [0.007698873584870476, 0.012001869484291017, 1.1106327453094595];
+    let points: [[f64; 8]; 3] = [[0.0914214_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -788.897_f64, 0.00246211_f64, 0.717798_f64], [0.0328427_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 422.205_f64, 0.00492423_f64, -0.564404_f64], [0.0742641_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -366.692_f64, 0.00738634_f64, 0.153394_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::sampled_load::ramp_displacement(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]))
+        .collect();
+    check("sampled_load::ramp_displacement", &got, &expected, &scale);
+}
+
+#[test]
+fn sampled_load_ramp_velocity() {
+    let expected = [-1.2254490058645053, 0.7859480474356725, -0.03949544705111999];
+    let scale = [2.985468208638928, 2.024277626918221, 6.916089497861022];
+    let points: [[f64; 8]; 3] = [[0.0914214_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -788.897_f64, 0.00246211_f64, 0.717798_f64], [0.0328427_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 422.205_f64, 0.00492423_f64, -0.564404_f64], [0.0742641_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -366.692_f64, 0.00738634_f64, 0.153394_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::sampled_load::ramp_velocity(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]))
+        .collect();
+    check("sampled_load::ramp_velocity", &got, &expected, &scale);
+}
+
+#[test]
 fn closed_forms_hertz_contact_duration_and_derivatives_0() {
     let expected = [0.00484261680843532, 0.00013456345784133297, 0.38326922517706524];
     let scale = [0.00484261680843532, 0.00013456345784133297, 0.38326922517706524];
@@ -2477,6 +2501,30 @@ fn slow_flow_clearance_for_response_and_derivatives_9() {
         .map(|p| symimpact::slow_flow::clearance_for_response_and_derivatives(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8])[9])
         .collect();
     check("slow_flow::clearance_for_response_and_derivatives[9]", &got, &expected, &scale);
+}
+
+#[test]
+fn sampled_load_ramp_state_0() {
+    let expected = [-0.0020906756631880095, 0.002895913637630997, 0.01371118250067614];
+    let scale = [0.007698873584870476, 0.012001869484291017, 1.1106327453094595];
+    let points: [[f64; 8]; 3] = [[0.0914214_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -788.897_f64, 0.00246211_f64, 0.717798_f64], [0.0328427_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 422.205_f64, 0.00492423_f64, -0.564404_f64], [0.0742641_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -366.692_f64, 0.00738634_f64, 0.153394_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::sampled_load::ramp_state(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7])[0])
+        .collect();
+    check("sampled_load::ramp_state[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn sampled_load_ramp_state_1() {
+    let expected = [-1.2254490058645053, 0.7859480474356725, -0.03949544705111999];
+    let scale = [2.985468208638928, 2.024277626918221, 6.916089497861022];
+    let points: [[f64; 8]; 3] = [[0.0914214_f64, 0.248383_f64, 47900.5_f64, 0.0437254_f64, 6.3325_f64, -788.897_f64, 0.00246211_f64, 0.717798_f64], [0.0328427_f64, 39.0189_f64, 725571_f64, 0.237451_f64, -7.33501_f64, 422.205_f64, 0.00492423_f64, -0.564404_f64], [0.0742641_f64, 6.12953_f64, 109.906_f64, 0.131176_f64, -1.00251_f64, -366.692_f64, 0.00738634_f64, 0.153394_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::sampled_load::ramp_state(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7])[1])
+        .collect();
+    check("sampled_load::ramp_state[1]", &got, &expected, &scale);
 }
 
 #[test]

@@ -19,12 +19,18 @@
   doublings, Neimark–Sacker points and grazings located.
 - :func:`slow_flow_responses`, :func:`backbone`, :func:`best_clearance`: the 1:1 slow flow of a
   vibro-impact absorber (Eq. F5), for a light impact mass.
+- :class:`Record`, :func:`random_record`, :func:`shock_record`, :func:`sweep_record`: loads
+  beyond a sine as sampled records (random of a PSD, shocks, sine sweeps; a force or a base
+  acceleration), and :func:`primary_response`, :func:`srs`: the primary's exact response to a
+  record (Eq. F8, Step 16) and a record's shock-response spectrum.
 """
 
 from .contact_law import CompliantContact
 from .continuation import Bifurcation, Branch, BranchPoint, continue_orbit, trace_branch
 from .forcing import Forcing
+from .loads import Record, random_record, shock_record, sweep_record
 from .periodic import PeriodicOrbit, periodic_orbits
+from .record_flight import RecordResponse, primary_response, srs
 from .rigid_limit import RigidLimitRow, rigid_limit
 from .shooting import ShootingOrbit, monodromy, shoot, shoot_from_rest
 from .simulation import ForcedResult, Steady, simulate_forced, steady_state
@@ -47,6 +53,8 @@ __all__ = [
     "ForcedResult",
     "Forcing",
     "PeriodicOrbit",
+    "Record",
+    "RecordResponse",
     "RigidLimitRow",
     "ShootingOrbit",
     "SlowFlowResponse",
@@ -56,11 +64,16 @@ __all__ = [
     "continue_orbit",
     "monodromy",
     "periodic_orbits",
+    "primary_response",
+    "random_record",
     "rigid_limit",
+    "shock_record",
     "shoot",
     "shoot_from_rest",
     "simulate_forced",
     "slow_flow_responses",
+    "srs",
     "steady_state",
+    "sweep_record",
     "trace_branch",
 ]

@@ -1,0 +1,202 @@
+"""Loads that machines and buildings see, as sampled records: band-limited random vibration of a
+given one-sided PSD, shocks (half-sine, haversine, terminal-peak sawtooth) and sine sweeps
+(linear or logarithmic).  Step 16 (Eq. F8) makes the primary's flight exact for a record joined
+by straight lines between its samples (:mod:`symimpact.forced.record_flight`).
+
+A record is a force on the main mass [N] or a base acceleration [m/s²] (``kind``), sampled every
+``dt`` from t = 0.  Random records are drawn by the spectral representation: cosines at the
+frequencies k/T of the record's duration T inside the band, amplitudes √(2·S(fₖ)/T) (so that
+their variance is the PSD's integral over the band, Σ S(fₖ)·Δf with Δf = 1/T), phases uniform on
+[0, 2π) from NumPy's PCG64 generator seeded by ``seed`` — the same seed gives the same record on
+any machine.  With many cosines the values are Gaussian (central limit); the record is periodic
+with period T.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .. import checks
+from ..errors import ParameterError
+from ..units import positive_float, si_float
+
+#: What a record's values are: a force on the main mass [N] or the base's acceleration [m/s²].
+KINDS = {"force": "N", "base-acceleration": "m/s^2"}
+#: Samples a period at the band's top frequency at least: linear interpolation between samples
+#: then keeps a cosine's amplitude to (π/10)²/6 ≈ 1.6 % at worst, far less below the top.
+SAMPLES_PER_PERIOD = 10
+#: The largest record accepted, in samples.
+MAX_SAMPLES = 50_000_000
+
+
+@dataclass(frozen=True)
+class Record:
+    """A sampled load: ``values`` at t = 0, dt, 2dt, … [N or m/s², see ``kind``]."""
+
+    values: np.ndarray
+    dt: float
+    kind: str = "force"
+
+    @property
+    def times(self) -> np.ndarray:
+        """The sample times [s]."""
+        return self.dt * np.arange(len(self.values))
+
+    @property
+    def duration(self) -> float:
+        """From the first sample to the last [s]."""
+        return self.dt * (len(self.values) - 1)
+
+    @property
+    def unit(self) -> str:
+        """The values' SI unit."""
+        return KINDS[self.kind]
+
+
+def _kind(kind: Any) -> str:
+    return checks.choice("kind", kind, tuple(KINDS))
+
+
+def _samples(duration: float, dt: float) -> int:
+    n = round(duration / dt)
+    if abs(n * dt - duration) > 1e-9 * duration:
+        raise ParameterError("dt", f"must divide the duration {duration:g} s, got {dt:g} s")
+    if n + 1 > MAX_SAMPLES:
+        raise ParameterError("dt", f"gives {n + 1:,} samples, more than {MAX_SAMPLES:,}")
+    return n
+
+
+def random_record(
+    psd: float | Callable[[np.ndarray], np.ndarray],
+    band: tuple[Any, Any],
+    duration: Any,
+    dt: Any,
+    seed: int,
+    kind: str = "force",
+) -> Record:
+    """A band-limited random record of the one-sided PSD ``psd`` [unit²/Hz]: a constant S₀ (flat
+    between the band's edges) or a function of frequency [Hz]; ``band`` (f₁, f₂) [Hz],
+    ``duration`` T [s], ``dt`` [s] (at least :data:`SAMPLES_PER_PERIOD` samples a period at f₂),
+    ``seed`` a whole number.  The spectral representation (module docstring): values
+    Σ √(2S(fₖ)/T) cos(2πfₖt + φₖ) over fₖ = k/T in the band, summed exactly at the samples by
+    one inverse real FFT.  Its mean square is Σ S(fₖ)/T, the PSD's integral over the band as a
+    sum of width 1/T."""
+    kind = _kind(kind)
+    f1, f2 = checks.bounds("band", band)
+    if f1 < 0:
+        raise ParameterError("band", f"must be frequencies ≥ 0 Hz, got {f1:g}")
+    T = positive_float("duration", duration, "s")
+    dt = positive_float("dt", dt, "s")
+    seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
+    if dt * f2 * SAMPLES_PER_PERIOD > 1.0 + 1e-12:
+        raise ParameterError(
+            "dt",
+            f"must resolve the band's top, {f2:g} Hz, with {SAMPLES_PER_PERIOD} samples a period "
+            f"(dt ≤ {1 / (SAMPLES_PER_PERIOD * f2):.4g} s), got {dt:g} s",
+        )
+    n = _samples(T, dt)
+    k = np.arange(math.ceil(f1 * T - 1e-9), math.floor(f2 * T + 1e-9) + 1)
+    k = k[k > 0]
+    if len(k) == 0:
+        raise ParameterError("duration", "holds no frequency k/T inside the band; make it longer")
+    f = k / T
+    if callable(psd):
+        S = np.asarray(psd(f), dtype=float)
+        if S.shape != f.shape or not np.all(np.isfinite(S)) or np.any(S < 0):
+            raise ParameterError("psd", "must give a finite value ≥ 0 at every frequency")
+    else:
+        S = np.full(f.shape, si_float("psd", psd))
+        if S[0] < 0:
+            raise ParameterError("psd", f"must be ≥ 0, got {S[0]:g}")
+    phases = np.random.default_rng(seed).uniform(0.0, 2.0 * np.pi, len(k))
+    amplitudes = np.sqrt(2.0 * S / T)
+    # irfft of X over n samples: x_j = (1/n)·Σ (X_k e^{2πi kj/n} + c.c.), so X_k = n/2·A e^{iφ}
+    spectrum = np.zeros(n // 2 + 1, dtype=complex)  # k ≤ f₂T ≤ n/10: inside it
+    spectrum[k] = 0.5 * n * amplitudes * np.exp(1j * phases)
+    values = np.fft.irfft(spectrum, n)
+    return Record(np.append(values, values[0]), dt, kind)  # periodic: the end is the start
+
+
+#: Shock pulse shapes: value over the pulse as a function of s = t / duration in [0, 1].
+SHAPES: dict[str, Callable[[np.ndarray], np.ndarray]] = {
+    "half-sine": lambda s: np.sin(np.pi * s),
+    "haversine": lambda s: 0.5 * (1.0 - np.cos(2.0 * np.pi * s)),
+    "sawtooth": lambda s: s,  # terminal peak: rises linearly, drops to zero at the end
+}
+
+
+def shock_record(
+    shape: str, peak: Any, pulse: Any, duration: Any, dt: Any, kind: str = "force"
+) -> Record:
+    """A shock: ``shape`` ("half-sine", "haversine" or "sawtooth", the terminal-peak sawtooth)
+    of height ``peak`` [N or m/s²] lasting ``pulse`` [s] from t = 0, then zero up to
+    ``duration`` [s] (the free vibration after the pulse: the residual response), sampled
+    every ``dt`` [s] (at least 20 samples in the pulse).  The sawtooth's drop is a sample wide."""
+    kind = _kind(kind)
+    checks.choice("shape", shape, tuple(SHAPES))
+    height = si_float("peak", peak)
+    td = positive_float("pulse", pulse, "s")
+    T = positive_float("duration", duration, "s")
+    dt = positive_float("dt", dt, "s")
+    if T < td:
+        raise ParameterError("duration", f"must cover the pulse, {td:g} s, got {T:g} s")
+    if td / dt < 20 - 1e-9:
+        raise ParameterError("dt", f"must put at least 20 samples in the pulse, got {td / dt:.3g}")
+    n = _samples(T, dt)
+    t = dt * np.arange(n + 1)
+    s = t / td
+    inside = s <= 1.0 + 1e-12
+    values = np.where(inside, height * SHAPES[shape](np.clip(s, 0.0, 1.0)), 0.0)
+    return Record(values, dt, kind)
+
+
+def sweep_record(
+    amplitude: Any, f_start: Any, f_end: Any, rate: Any, dt: Any, law: str = "linear",
+    kind: str = "force",
+) -> Record:  # fmt: skip
+    """A sine sweep of ``amplitude`` [N or m/s²] from ``f_start`` to ``f_end`` [Hz] (up or down),
+    ``law`` "linear" (``rate`` in Hz/s, f = f₀ + rate·t) or "log" (``rate`` in octaves a minute,
+    f = f₀·2^(rate·t/60)), phase 2π∫f dt from zero; sampled every ``dt`` [s] (at least
+    :data:`SAMPLES_PER_PERIOD` samples a period at the highest frequency)."""
+    kind = _kind(kind)
+    checks.choice("law", law, ("linear", "log"))
+    A = si_float("amplitude", amplitude)
+    fa = positive_float("f_start", f_start, "Hz")
+    fb = positive_float("f_end", f_end, "Hz")
+    r = positive_float("rate", rate)
+    dt = positive_float("dt", dt, "s")
+    if fa == fb:
+        raise ParameterError("f_end", "must differ from f_start")
+    if dt * max(fa, fb) * SAMPLES_PER_PERIOD > 1.0 + 1e-12:
+        raise ParameterError(
+            "dt", f"must give {SAMPLES_PER_PERIOD} samples a period at {max(fa, fb):g} Hz"
+        )
+    sign = 1.0 if fb > fa else -1.0
+    if law == "linear":
+        T = abs(fb - fa) / r
+        n = math.ceil(T / dt)
+        t = dt * np.arange(n + 1)
+        phase = 2.0 * np.pi * (fa * t + 0.5 * sign * r * t**2)
+    else:
+        c = sign * r / 60.0 * math.log(2.0)  # f = fa·e^{ct}
+        T = math.log(fb / fa) / c
+        n = math.ceil(T / dt)
+        t = dt * np.arange(n + 1)
+        phase = 2.0 * np.pi * fa * np.expm1(c * t) / c
+    if n + 1 > MAX_SAMPLES:
+        raise ParameterError("dt", f"gives {n + 1:,} samples, more than {MAX_SAMPLES:,}")
+    return Record(A * np.sin(phase), dt, kind)
+
+
+def sweep_frequency(record_times: np.ndarray, f_start: float, f_end: float, rate: float,
+                    law: str = "linear") -> np.ndarray:  # fmt: skip
+    """The instantaneous frequency [Hz] of :func:`sweep_record`'s sweep at ``record_times`` [s]."""
+    sign = 1.0 if f_end > f_start else -1.0
+    if law == "linear":
+        return f_start + sign * rate * record_times
+    return f_start * np.exp(sign * rate / 60.0 * math.log(2.0) * record_times)
