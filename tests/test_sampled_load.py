@@ -84,7 +84,7 @@ def test_the_random_record_has_its_psd_and_is_reproducible():
     outside = (f > 45) | ((f >= 1) & (f <= 3))  # (the lowest bins hold each segment's mean)
     assert np.all(np.abs(P[inside] / S0 - 1) < 0.25)
     assert np.max(P[outside]) < 1e-3 * S0
-    again = random_record(S0, (5.0, 40.0), T, dt, seed=11)
+    again = random_record(S0, ("5 Hz", "2400 rpm"), T, dt, seed=11)  # the same band
     assert np.array_equal(again.values, rec.values)
     other = random_record(S0, (5.0, 40.0), T, dt, seed=12)
     assert not np.allclose(other.values, rec.values)
@@ -151,6 +151,8 @@ def test_the_sweep_passes_through_its_frequencies():
     [
         (lambda: random_record(1.0, (5.0, 40.0), 10.0, 0.01, 1), "dt"),
         (lambda: random_record(1.0, (40.0, 5.0), 10.0, 0.001, 1), "band"),
+        (lambda: random_record(1.0, (-1.0, 5.0), 10.0, 0.001, 1), "band"),
+        (lambda: random_record(1.0, "5:40", 10.0, 0.001, 1), "band"),
         (lambda: random_record(-1.0, (5.0, 40.0), 10.0, 0.001, 1), "psd"),
         (lambda: random_record(1.0, (5.0, 40.0), 10.0, 0.001, 1.5), "seed"),
         (lambda: random_record(1.0, (5.0, 40.0), 10.0, 0.001, 1, kind="torque"), "kind"),

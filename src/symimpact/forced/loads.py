@@ -71,6 +71,22 @@ def _samples(duration: float, dt: float) -> int:
     return n
 
 
+def _band(band: Any) -> tuple[float, float]:
+    """(f₁, f₂) [Hz] with 0 ≤ f₁ < f₂: numbers in Hz, or quantities of any frequency unit."""
+    if band is None or isinstance(band, (str, bytes, dict)):
+        raise ParameterError("band", f"must be (f1, f2) in Hz, got {band!r}")
+    try:
+        parts = list(band)
+    except TypeError:
+        raise ParameterError("band", f"must be (f1, f2) in Hz, got {band!r}") from None
+    if len(parts) != 2:
+        raise ParameterError("band", f"must be (f1, f2) in Hz, got {len(parts)} values")
+    f1, f2 = (si_float("band", f, "Hz") for f in parts)
+    if not 0 <= f1 < f2:
+        raise ParameterError("band", f"must have 0 ≤ f1 < f2, got {f1:g}, {f2:g} Hz")
+    return f1, f2
+
+
 def random_record(
     psd: float | Callable[[np.ndarray], np.ndarray],
     band: tuple[Any, Any],
@@ -87,9 +103,7 @@ def random_record(
     one inverse real FFT.  Its mean square is Σ S(fₖ)/T, the PSD's integral over the band as a
     sum of width 1/T."""
     kind = _kind(kind)
-    f1, f2 = checks.bounds("band", band)
-    if f1 < 0:
-        raise ParameterError("band", f"must be frequencies ≥ 0 Hz, got {f1:g}")
+    f1, f2 = _band(band)
     T = positive_float("duration", duration, "s")
     dt = positive_float("dt", dt, "s")
     seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
