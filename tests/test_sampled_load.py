@@ -9,6 +9,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 from symimpact.generated import sampled_load as sl
 
@@ -167,3 +169,36 @@ def test_bad_loads_are_refused_naming_the_parameter(call, name):
     with pytest.raises(ParameterError) as err:
         call()
     assert err.value.parameter == name
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    M=st.floats(0.1, 20.0),
+    fn=st.floats(0.5, 50.0),
+    zeta=st.floats(0.0, 0.2),
+    p0=st.floats(-10.0, 10.0),
+    pd=st.floats(-200.0, 200.0),
+    x0=st.floats(-0.01, 0.01),
+    v0=st.floats(-0.5, 0.5),
+    t1=st.floats(0.0, 0.05),
+    t2=st.floats(0.0, 0.05),
+)
+def test_two_flights_make_one_and_the_flight_is_linear(M, fn, zeta, p0, pd, x0, v0, t1, t2):
+    """The flight is a flow: τ₁ then τ₂ (the load carried on, p₀ + ṗτ₁) is τ₁ + τ₂ at once;
+    and it is linear in (p₀, ṗ, x₀, ẋ₀) jointly: the flight of a sum is the sum of the flights.
+    Both to 1e-12 of the motion's scale: a few roundings of terms of that size (the closed form
+    adds the line and a decay that cancel no more than that)."""
+    w = 2 * math.pi * fn
+    K, C = M * w * w, 2 * zeta * M * w
+    state = sl.ramp_state_scalar
+    mid = state(t1, M, K, C, p0, pd, x0, v0)
+    two = state(t2, M, K, C, p0 + pd * t1, pd, *mid)
+    one = state(t1 + t2, M, K, C, p0, pd, x0, v0)
+    T = t1 + t2
+    scale = abs(x0) + abs(v0) / w + (abs(p0) + abs(pd) * T + C * abs(pd) / K) / K
+    assert abs(two[0] - one[0]) <= 1e-12 * scale
+    assert abs(two[1] - one[1]) <= 1e-12 * scale * w
+    a = state(T, M, K, C, p0, 0.0, x0, 0.0)
+    b = state(T, M, K, C, 0.0, pd, 0.0, v0)
+    assert abs(a[0] + b[0] - one[0]) <= 1e-12 * scale
+    assert abs(a[1] + b[1] - one[1]) <= 1e-12 * scale * w
