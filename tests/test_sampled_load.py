@@ -125,7 +125,7 @@ def test_a_half_sine_srs_has_its_textbook_asymptotes():
     → A, within 2 % at 20/τ with ζ 5 %); far below it the pulse is an impulse of velocity change
     ΔV = 2Aτ/π and the peak is ωₙ·ΔV (undamped, within 2 % at 0.02/τ)."""
     A, tau = 100.0, 0.01
-    rec = shock_record("half-sine", A, tau, 60.0, 1e-4 / 2, kind="base-acceleration")
+    rec = shock_record("half-sine", A, tau, 60.0, 2e-5, kind="base-acceleration")
     hi = srs(rec, [20 / tau], zeta=0.05)[0]
     assert hi == pytest.approx(A, rel=0.02)
     f_lo = 0.02 / tau
@@ -163,6 +163,10 @@ def test_the_sweep_passes_through_its_frequencies():
         (lambda: shock_record("half-sine", 1.0, 0.01, 0.001, 1e-5), "duration"),
         (lambda: sweep_record(1.0, 5.0, 5.0, 1.0, 1e-3), "f_end"),
         (lambda: srs(shock_record("half-sine", 1.0, 0.01, 1.0, 1e-4), [10.0]), "record"),
+        (
+            lambda: srs(shock_record("half-sine", 1, 0.01, 1, 1e-4, "base-acceleration"), [1e3]),
+            "frequencies",
+        ),
     ],
 )
 def test_bad_loads_are_refused_naming_the_parameter(call, name):

@@ -78,7 +78,8 @@ def srs(record: Record, frequencies: Any, zeta: Any = 0.05) -> np.ndarray:
     frequency [Hz] of ``frequencies``, the largest absolute acceleration [m/s²] of an oscillator
     of damping ratio ``zeta`` (default 5 %, the usual Q = 10) on the base, from rest, over the
     record (maximax: during the pulse and after it, as long as the record runs).  The peak is
-    read at the samples; Eq. F8 makes each sample exact."""
+    read at the samples, each exact by Eq. F8; between two of them an oscillation at f can rise
+    by up to (2πf·dt)²/8 of its size, so frequencies above 0.3/(2π·dt) (1.1 %) are refused."""
     if record.kind != "base-acceleration":
         raise ParameterError("record", "an SRS is of a base acceleration record")
     f = checks.numbers("frequencies", frequencies)
@@ -87,6 +88,13 @@ def srs(record: Record, frequencies: Any, zeta: Any = 0.05) -> np.ndarray:
         raise ParameterError("zeta", "must be below 1 (underdamped)")
     if np.any(f <= 0):
         raise ParameterError("frequencies", "must be above 0 Hz")
+    top = 0.3 / (2.0 * math.pi * record.dt)
+    if np.max(f) > top:
+        raise ParameterError(
+            "frequencies",
+            f"reach {np.max(f):g} Hz, where samples every {record.dt:g} s miss a peak by more "
+            f"than 1 %: at most {top:.4g} Hz, or a finer record",
+        )
     out = np.empty(len(f))
     a = np.ascontiguousarray(record.values, dtype=float)
     for j, fn in enumerate(f):
