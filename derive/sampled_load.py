@@ -42,7 +42,7 @@ def derive() -> Board:
         sp.Eq(M * x(t).diff(t, 2) + C * x(t).diff(t) + K * x(t), load),
         "The primary on one interval of a record joined by straight lines: the load p₀ at the "
         "interval's start, its slope ṗ = (p₁ − p₀)/Δt.  A base-acceleration record gives "
-        "p = F − M·ẍ_b for the displacement relative to the base.",
+        "p = F − M·ẍ<sub>b</sub> for the displacement relative to the base.",
         "F8",
     )
 
