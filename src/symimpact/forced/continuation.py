@@ -24,7 +24,8 @@ modulus − 1).  Where the set of impacts changes (an impact appears or vanishes
 the grazing is located and the branch goes on with the new impacts where an impacting orbit
 continues it.  A located change is a grazing only where the orbit there touches a wall (a
 flight turns at it, or an impact's speed vanishes, :data:`GRAZING_MARGIN`); elsewhere Newton
-from the predictor merely left the branch, which ends there saying so; a chatter sequence that accumulates counts as one impact event, so a branch is
+from the predictor merely left the branch, which ends there saying so.  A chatter sequence that
+accumulates counts as one impact event, so a branch is
 followed into and through chatter and sticking (rigid impacts, :func:`.shooting.rigid_monodromy`);
 where the motion stops impacting or the corrector fails, the branch ends there and says why.
 
@@ -445,7 +446,7 @@ def continue_orbit(
         attempt = _correct(problem, y + ds * t, t, point.impact_events_per_period)
         if attempt is GRAZE:
             located = _grazing(problem, y, t, ds, point)
-            lo, at_lo = located[1], located[3]
+            at_lo = located[3]
             if (at_lo is not None and is_rigid(problem.e)
                     and _wall_margin(problem, at_lo[3]) > GRAZING_MARGIN):  # fmt: skip
                 # no wall is touched where the corrector stops landing with the old impacts:
@@ -937,8 +938,8 @@ def _wall_margin(problem: _Problem, res) -> float:
     """How far the rigid-impact orbit of the simulation ``res`` (one run of the problem's k
     periods) is from touching a wall: the smaller of (d/2 − abs(z))/(d/2) at the flights'
     turning points of z = y − x (ż = 0, bisected between samples at 1/512 of a period where ż
-    changes sign away from the walls) and the slowest impact's relative speed
-    over the fastest's.  0 where the orbit chatters or sticks (the accumulation of impacts
+    changes sign away from the walls) and the slowest impact's relative speed over the
+    fastest's.  0 where the orbit chatters or sticks (the accumulation of impacts
     touches with speed zero)."""
     ev = res.events
     kinds = ev[:, _rigid.E_KIND]
@@ -978,9 +979,9 @@ MAX_CROSSINGS = 3
 def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, located, go_on: bool = True):
     """Continuation through a grazing: the grazing ``located`` by :func:`_grazing` (listed on
     ``branch``), the orbit just beyond it with its new impacts (Newton from a little past the
-    located step, the count free), whose tangent is oriented along t.  Returns (y, t, monodromy, simulation, point) on
-    the other side, or None where no impacting orbit continues it (the impact mass stops
-    impacting, or Newton's steps fail there)."""
+    located step, the count free), whose tangent is oriented along t.  Returns (y, t,
+    monodromy, simulation, point) on the other side, or None where no impacting orbit
+    continues it (the impact mass stops impacting, or Newton's steps fail there)."""
     found, _, hi, _ = located
     branch.bifurcations.append(found)
     if not go_on:
