@@ -20,6 +20,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .board import Arg, Board
+from .free_flight import free_decay
 
 
 def derive() -> Board:
@@ -103,7 +104,7 @@ def derive() -> Board:
 
     def decay(a, b):
         """Free decay from x = a, ẋ = b (Step 7)."""
-        return sp.exp(-sigma * t) * (a * sp.cos(wd * t) + (b + sigma * a) / wd * sp.sin(wd * t))
+        return free_decay(a, b, t, M, K, C)
 
     xs0, vs0 = steady.subs(t, 0), steady.diff(t).subs(t, 0)
     general = w(

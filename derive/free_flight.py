@@ -14,6 +14,15 @@ import sympy as sp
 from .board import Arg, Board
 
 
+def free_decay(a, b, t, M, K, C):
+    """Step 7's free decay of the primary from x = a, ẋ = b a time t later:
+    e^(−σt)(a cos ω_d t + (b + σa)/ω_d · sin ω_d t), σ = C/(2M), ω_d = √(K/M − C²/(4M²)) (ζ < 1).
+    The later steps correct an initial state with it."""
+    sigma = C / (2 * M)
+    wd = sp.sqrt(K / M - C**2 / (4 * M**2))
+    return sp.exp(-sigma * t) * (a * sp.cos(wd * t) + (b + sigma * a) / wd * sp.sin(wd * t))
+
+
 def derive() -> Board:
     board = Board("free_flight", "Free flight between impacts", "7")
     w = board.write

@@ -37,6 +37,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .board import Arg, Board
+from .free_flight import free_decay
 
 
 def _rounding_scale(expr: sp.Expr) -> sp.Expr:
@@ -59,12 +60,10 @@ def derive() -> Board:
     f11, f12, f21, f22 = sp.symbols("Phi_11 Phi_12 Phi_21 Phi_22", real=True)
 
     tau = w("half_period", sp.pi / W, r"Half the forcing period, τ = π/Ω.", "F3")
-    # --- the free decay over τ: its fundamental matrix -----------------------------------------
-    sigma = C / (2 * M)
-    wd = sp.sqrt(K / M - C**2 / (4 * M**2))
 
+    # --- the free decay over τ: its fundamental matrix -----------------------------------------
     def decay(a, b):
-        return sp.exp(-sigma * t) * (a * sp.cos(wd * t) + (b + sigma * a) / wd * sp.sin(wd * t))
+        return free_decay(a, b, t, M, K, C)
 
     Phi = sp.Matrix(
         [

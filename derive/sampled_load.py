@@ -24,6 +24,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .board import Arg, Board
+from .free_flight import free_decay
 
 
 def derive() -> Board:
@@ -69,9 +70,7 @@ def derive() -> Board:
 
     def decay(x_start, v_start, time=t):
         """Free decay from x = x_start, ẋ = v_start (Step 7)."""
-        return sp.exp(-sigma * time) * (
-            x_start * sp.cos(wd * time) + (v_start + sigma * x_start) / wd * sp.sin(wd * time)
-        )
+        return free_decay(x_start, v_start, time, M, K, C)
 
     xp0, vp0 = particular.subs(t, 0), particular.diff(t).subs(t, 0)
     x_t = w(
