@@ -93,8 +93,9 @@ def numbers(name: str, value: Any) -> np.ndarray:
         raise ParameterError(name, f"must be a sequence of numbers, got {value!r}") from None
 
 
-def bounds(name: str, value: Any) -> tuple[float, float]:
-    """(low, high): two finite numbers with low < high."""
+def bounds(name: str, value: Any, unit: str | None = None) -> tuple[float, float]:
+    """(low, high): two finite numbers with low < high (quantities read in ``unit`` where it is
+    given, :func:`symimpact.units.si_float`)."""
     if value is None or isinstance(value, (str, bytes, dict)):
         raise ParameterError(name, f"must be (low, high), got {value!r}")
     try:
@@ -103,7 +104,7 @@ def bounds(name: str, value: Any) -> tuple[float, float]:
         raise ParameterError(name, f"must be (low, high), got {value!r}") from None
     if len(parts) != 2:
         raise ParameterError(name, f"must be (low, high), got {len(parts)} values")
-    lo, hi = (si_float(name, p) for p in parts)
+    lo, hi = (si_float(name, p, unit) for p in parts)
     if not lo < hi:
         raise ParameterError(name, f"must have low < high, got {lo:g}, {hi:g}")
     return lo, hi

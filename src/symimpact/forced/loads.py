@@ -73,17 +73,9 @@ def _samples(duration: float, dt: float) -> int:
 
 def _band(band: Any) -> tuple[float, float]:
     """(f₁, f₂) [Hz] with 0 ≤ f₁ < f₂: numbers in Hz, or quantities of any frequency unit."""
-    if band is None or isinstance(band, (str, bytes, dict)):
-        raise ParameterError("band", f"must be (f1, f2) in Hz, got {band!r}")
-    try:
-        parts = list(band)
-    except TypeError:
-        raise ParameterError("band", f"must be (f1, f2) in Hz, got {band!r}") from None
-    if len(parts) != 2:
-        raise ParameterError("band", f"must be (f1, f2) in Hz, got {len(parts)} values")
-    f1, f2 = (si_float("band", f, "Hz") for f in parts)
-    if not 0 <= f1 < f2:
-        raise ParameterError("band", f"must have 0 ≤ f1 < f2, got {f1:g}, {f2:g} Hz")
+    f1, f2 = checks.bounds("band", band, "Hz")
+    if f1 < 0:
+        raise ParameterError("band", f"must be frequencies ≥ 0 Hz, got {f1:g}")
     return f1, f2
 
 
