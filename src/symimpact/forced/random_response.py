@@ -1,0 +1,216 @@
+"""Random vibration of the primary with its impact damper: the statistics designers report.
+
+Each realisation is one record of :func:`symimpact.forced.loads.random_record` (the spectral
+representation, its own seed), run with the damper (:func:`damper_response`) and without it
+(:func:`primary_response`, Eq. F8 alone) on the *same* record, so the reduction is a paired
+comparison.  Statistics are taken after ``settle`` seconds (the start-up transient left out).
+
+- RMS of the main mass's displacement (relative to the base under a base acceleration), velocity,
+  absolute acceleration between impacts and force into the base, the mean over realisations with
+  a 95 % confidence interval from Student's t on the realisations' values (they are independent:
+  independent phases);
+- the reduction 1 − RMS/RMS_alone, per realisation, with its interval likewise;
+- the displacement's PSD by Welch's method (Hann windows of ``segment`` seconds, half overlap;
+  the resolution 1/segment Hz), averaged over realisations, with and without the damper.
+
+The seed of realisation i is drawn from ``numpy.random.SeedSequence([seed, i])``: the same seed
+gives the same records whatever the order in which realisations are run.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from scipy import signal, stats
+
+from .. import checks
+from ..errors import ParameterError
+from ..system import ImpactSystem
+from ..units import positive_float
+from .loads import random_record
+from .record_flight import primary_response
+from .record_response import damper_response
+from .simulation import CHATTER
+
+#: The responses whose statistics are reported (attribute names of the responses).
+KEYS = ("displacement", "velocity", "acceleration", "base_force")
+#: Their SI units.
+UNITS = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2", "base_force": "N"}
+#: The settling time's default: the primary's free decay to 1e-3 of its amplitude, ln(1000)/(ζω_n).
+SETTLE_DECAY = 1e-3
+
+
+def realisation_seed(seed: int, i: int) -> int:
+    """The seed of realisation ``i`` of an ensemble seeded by ``seed`` (independent of the order
+    and the executor that runs them)."""
+    return int(np.random.SeedSequence([seed, i]).generate_state(1, np.uint64)[0]) >> 1
+
+
+def default_settle(system: ImpactSystem) -> float:
+    """ln(1/SETTLE_DECAY)/(ζω_n) [s]: the primary alone forgets its start to 1e-3 by then."""
+    if system.zeta <= 0:
+        raise ParameterError("settle", "an undamped primary never settles: give --settle")
+    return math.log(1.0 / SETTLE_DECAY) / (system.zeta * system.omega_n)
+
+
+@dataclass(frozen=True)
+class RandomStatistics:
+    """Statistics of an ensemble of random-vibration runs (SI; see the module docstring).
+
+    ``rms``, ``baseline_rms``: {key: mean over realisations}; ``rms_ci95``, ``reduction_ci95``:
+    {key: (lo, hi)}; ``reduction``: {key: mean of 1 − rms/baseline}; ``per_realisation``:
+    {key: array of each realisation's RMS}, likewise ``baseline_per_realisation``;
+    ``psd_frequency`` [Hz], ``psd`` and ``baseline_psd`` [m²/Hz] of the displacement;
+    ``impacts_per_second``: the mean rate of impacts."""
+
+    rms: dict[str, float]
+    rms_ci95: dict[str, tuple[float, float]]
+    baseline_rms: dict[str, float]
+    reduction: dict[str, float]
+    reduction_ci95: dict[str, tuple[float, float]]
+    per_realisation: dict[str, np.ndarray]
+    baseline_per_realisation: dict[str, np.ndarray]
+    psd_frequency: np.ndarray
+    psd: np.ndarray
+    baseline_psd: np.ndarray
+    psd_resolution: float
+    impacts_per_second: float
+    realisations: int
+    seed: int
+    settle: float
+    duration: float
+
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON of ``symimpact random --json`` (SI)."""
+        return {
+            "rms": dict(self.rms),
+            "rms_ci95": {k: list(v) for k, v in self.rms_ci95.items()},
+            "baseline_rms": dict(self.baseline_rms),
+            "reduction": dict(self.reduction),
+            "reduction_ci95": {k: list(v) for k, v in self.reduction_ci95.items()},
+            "impacts_per_second": self.impacts_per_second,
+            "psd_resolution": self.psd_resolution,
+            "realisations": self.realisations,
+            "seed": self.seed,
+            "settle": self.settle,
+            "duration": self.duration,
+        }
+
+
+def _interval(values: np.ndarray) -> tuple[float, float]:
+    """95 % confidence interval of the mean of independent ``values`` (Student's t)."""
+    n = len(values)
+    mean = float(np.mean(values))
+    if n < 2:
+        return (math.nan, math.nan)
+    half = float(stats.t.ppf(0.975, n - 1) * np.std(values, ddof=1) / math.sqrt(n))
+    return (mean - half, mean + half)
+
+
+def realisation(
+    system: ImpactSystem,
+    psd: float | Callable[[np.ndarray], np.ndarray],
+    band: tuple[Any, Any],
+    duration: float,
+    dt: float,
+    seed: int,
+    i: int,
+    *,
+    e: float,
+    settle: float,
+    kind: str = "force",
+    segment: float | None = None,
+    chatter: float = CHATTER,
+) -> dict[str, Any]:
+    """One realisation: {"rms": {key: value}, "baseline": {key: value}, "impacts": n,
+    "psd": (f, with, without)} over the record after ``settle``."""
+    n_settle = math.ceil(settle / dt - 1e-9)  # the settling time, to the sample at or after it
+    record = random_record(psd, band, (n_settle + round(duration / dt)) * dt, dt,
+                           realisation_seed(seed, i), kind)  # fmt: skip
+    ours = damper_response(system, record, e=e, chatter=chatter)
+    alone = primary_response(system, record)
+    keep = np.arange(len(record.values)) >= n_settle
+    out: dict[str, Any] = {"rms": {}, "baseline": {}}
+    for key in KEYS:
+        out["rms"][key] = float(np.sqrt(np.mean(getattr(ours, key)[keep] ** 2)))
+        out["baseline"][key] = float(np.sqrt(np.mean(getattr(alone, key)[keep] ** 2)))
+    out["impacts"] = int(np.sum(ours.impact_times >= n_settle * dt))
+    nper = max(8, round((segment or duration / 8) / dt))
+    f, p_with = signal.welch(ours.displacement[keep], fs=1.0 / dt, nperseg=min(nper, keep.sum()))
+    _, p_alone = signal.welch(alone.displacement[keep], fs=1.0 / dt, nperseg=min(nper, keep.sum()))
+    out["psd"] = (f, p_with, p_alone)
+    return out
+
+
+def random_statistics(
+    system: ImpactSystem,
+    psd: float | Callable[[np.ndarray], np.ndarray],
+    band: tuple[Any, Any],
+    duration: Any,
+    dt: Any,
+    *,
+    e: Any,
+    realisations: Any = 8,
+    seed: Any = 0,
+    settle: Any = None,
+    kind: str = "force",
+    segment: Any = None,
+    chatter: Any = CHATTER,
+) -> RandomStatistics:
+    """Statistics of ``realisations`` runs of ``duration`` [s] each (after ``settle`` [s], by
+    default :func:`default_settle`) under band-limited random loads of one-sided PSD ``psd``
+    [N²/Hz for a force, (m/s²)²/Hz for a base acceleration] over ``band`` (f₁, f₂) [Hz], sampled
+    every ``dt`` [s]; rigid impacts with ``e`` (Eq. F2), the flight Eq. F8.  ``segment`` [s]:
+    Welch's segment length (default an eighth of ``duration``)."""
+    checks.instance("system", system, ImpactSystem, "an ImpactSystem")
+    T = positive_float("duration", duration, "s")
+    dt = positive_float("dt", dt, "s")
+    n = checks.whole_number("realisations", realisations, 1, 1_000_000)
+    seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
+    e = checks.bounded("e", e, 0.0, 1.0)
+    settle = (
+        default_settle(system)
+        if settle is None
+        else checks.bounded("settle", settle, 0.0, unit="s")
+    )
+    seg = None if segment is None else positive_float("segment", segment, "s")
+    if seg is not None and seg > T:
+        raise ParameterError("segment", f"must fit in the duration, {T:g} s, got {seg:g} s")
+    runs = [
+        realisation(system, psd, band, T, dt, seed, i, e=e, settle=settle, kind=kind,
+                    segment=seg, chatter=chatter)
+        for i in range(n)
+    ]  # fmt: skip
+    return combine(runs, seed=seed, settle=settle, duration=T)
+
+
+def combine(
+    runs: list[dict[str, Any]], *, seed: int, settle: float, duration: float
+) -> RandomStatistics:
+    """The ensemble's statistics from its realisations (:func:`realisation`'s dicts)."""
+    per = {k: np.array([r["rms"][k] for r in runs]) for k in KEYS}
+    base = {k: np.array([r["baseline"][k] for r in runs]) for k in KEYS}
+    reduction = {k: 1.0 - per[k] / base[k] for k in KEYS}
+    f = runs[0]["psd"][0]
+    return RandomStatistics(
+        rms={k: float(np.mean(per[k])) for k in KEYS},
+        rms_ci95={k: _interval(per[k]) for k in KEYS},
+        baseline_rms={k: float(np.mean(base[k])) for k in KEYS},
+        reduction={k: float(np.mean(reduction[k])) for k in KEYS},
+        reduction_ci95={k: _interval(reduction[k]) for k in KEYS},
+        per_realisation=per,
+        baseline_per_realisation=base,
+        psd_frequency=f,
+        psd=np.mean([r["psd"][1] for r in runs], axis=0),
+        baseline_psd=np.mean([r["psd"][2] for r in runs], axis=0),
+        psd_resolution=float(f[1] - f[0]) if len(f) > 1 else math.nan,
+        impacts_per_second=float(np.mean([r["impacts"] for r in runs]) / duration),
+        realisations=len(runs),
+        seed=seed,
+        settle=settle,
+        duration=duration,
+    )
