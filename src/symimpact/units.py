@@ -20,6 +20,9 @@ import numpy as np
 from .errors import ParameterError
 
 #: SI unit of every named parameter (what a plain number means).
+#: The unit of a one-sided acceleration PSD; "g^2/Hz" in it is standard gravity squared per hertz.
+ACCELERATION_PSD = "(m/s^2)^2/Hz"
+
 SI_UNITS: dict[str, str] = {
     "M": "kg",
     "m": "kg",
@@ -375,6 +378,9 @@ def si(name: str, value: Any, unit: str | None = None) -> Any:
         number, unit_text = split_quantity(name, value)
         if unit_text in ("g", "gn", "g0") and unit == "m/s^2":  # an acceleration: not grams
             unit_text = "standard_gravity"
+        elif unit == ACCELERATION_PSD:  # g²/Hz, as vibration specifications write it
+            unit_text = re.sub(r"(?<![A-Za-z_])(gn|g0|g)(?![A-Za-z_0-9])", "standard_gravity",
+                               unit_text.replace("²", "^2"))  # fmt: skip
         # a bare number written as text means SI; a unit is read by pint, without the number
         value = _unit_to_si(name, value, number, unit_text, unit) if unit_text else number
     elif hasattr(value, "dimensionality"):

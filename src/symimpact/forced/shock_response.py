@@ -1,0 +1,138 @@
+"""Shocks on the primary with its impact damper: the figures designers report.
+
+*Shock.*  The peak displacement of the main mass with and without the damper, and the
+shock-response spectrum of the main mass's motion (maximax absolute acceleration of small
+single-degree-of-freedom oscillators of damping ratio ζ mounted on it: the shock an equipment on
+the structure feels) with and without the damper.  With impacts the main mass's velocity jumps, so
+its acceleration holds impulses; the oscillators are therefore driven through their spring and
+damper by the mass's displacement and velocity, W'' + 2ζω(W' − ẋ_b) + ω²(W − x_b) = 0, which hold
+no impulses: the load ω²x_b + 2ζωẋ_b joined by straight lines between samples, Eq. F8 exact on
+each interval, the absolute acceleration −ω²(W − x_b) − 2ζω(W' − ẋ_b) read at the samples.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .. import checks
+from ..errors import ParameterError
+from ..system import ImpactSystem
+from .loads import Record
+from .record_flight import _march, primary_response
+from .record_response import damper_response
+from .simulation import CHATTER
+
+#: The SRS's oscillators: damping ratio 5 % (Q = 10), the usual one in shock specifications.
+SRS_ZETA = 0.05
+#: An oscillation at f rises between two samples by up to (2πf·dt)²/8 of its size: above
+#: 2πf·dt = 0.3 that is more than 1.1 %, and such frequencies are refused.
+SRS_TOP = 0.3
+
+
+def base_motion(record: Record) -> tuple[np.ndarray, np.ndarray]:
+    """(x_b, ẋ_b) [m, m/s] at the samples of a base-acceleration record, from rest at t = 0:
+    the acceleration's straight lines integrated exactly, ẋ_b += dt(a₀ + a₁)/2,
+    x_b += dt·ẋ_b + dt²(2a₀ + a₁)/6."""
+    a, dt = record.values, record.dt
+    dv = 0.5 * dt * (a[:-1] + a[1:])
+    v = np.concatenate(([0.0], np.cumsum(dv)))
+    dx = dt * v[:-1] + dt * dt * (2.0 * a[:-1] + a[1:]) / 6.0
+    return np.concatenate(([0.0], np.cumsum(dx))), v
+
+
+def motion_srs(
+    displacement: np.ndarray, velocity: np.ndarray, dt: float, frequencies: Any,
+    zeta: Any = SRS_ZETA,
+) -> np.ndarray:  # fmt: skip
+    """Maximax absolute acceleration [m/s²] of oscillators at ``frequencies`` [Hz] (damping
+    ratio ``zeta``) on a base moving with ``displacement`` [m] and ``velocity`` [m/s] sampled
+    every ``dt`` [s], from relative rest (module docstring; Eq. F8 with the load
+    ω²x_b + 2ζωẋ_b)."""
+    f = checks.numbers("frequencies", frequencies)
+    z = checks.bounded("zeta", zeta, 0.0, 1.0)
+    if z >= 1.0:
+        raise ParameterError("zeta", "must be below 1 (underdamped)")
+    if np.any(f <= 0):
+        raise ParameterError("frequencies", "must be above 0 Hz")
+    top = SRS_TOP / (2.0 * math.pi * dt)
+    if np.max(f) > top:
+        raise ParameterError(
+            "frequencies",
+            f"reach {np.max(f):g} Hz, where samples every {dt:g} s miss a peak by more than 1 %: "
+            f"at most {top:.4g} Hz, or a finer record",
+        )
+    xb = np.ascontiguousarray(displacement, dtype=float)
+    vb = np.ascontiguousarray(velocity, dtype=float)
+    out = np.empty(len(f))
+    for j, fn in enumerate(f):
+        w = 2.0 * math.pi * fn
+        load = w * w * xb + 2.0 * z * w * vb
+        W, Wd = _march(1.0, w * w, 2.0 * z * w, load, dt, xb[0], vb[0])
+        out[j] = np.max(np.abs(w * w * (W - xb) + 2.0 * z * w * (Wd - vb)))
+    return out
+
+
+@dataclass(frozen=True)
+class ShockResult:
+    """A shock on the primary with and without its damper (SI): ``peak`` and ``baseline_peak``
+    the largest |x| [m] (relative to the base under a base acceleration), ``peak_acceleration``
+    and ``baseline_peak_acceleration`` the largest absolute acceleration between impacts
+    [m/s²], ``frequency`` [Hz], ``srs`` and ``baseline_srs`` [m/s²] (module docstring),
+    ``impacts`` the number of impacts."""
+
+    peak: float
+    baseline_peak: float
+    peak_acceleration: float
+    baseline_peak_acceleration: float
+    frequency: np.ndarray
+    srs: np.ndarray
+    baseline_srs: np.ndarray
+    impacts: int
+    zeta: float
+
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON of ``symimpact shock --json`` (SI)."""
+        return {
+            "peak": self.peak,
+            "baseline_peak": self.baseline_peak,
+            "peak_acceleration": self.peak_acceleration,
+            "baseline_peak_acceleration": self.baseline_peak_acceleration,
+            "impacts": self.impacts,
+            "srs_zeta": self.zeta,
+            "srs": [
+                {"frequency": float(f), "response": float(a), "baseline": float(b)}
+                for f, a, b in zip(self.frequency, self.srs, self.baseline_srs, strict=True)
+            ],
+        }
+
+
+def shock_response(
+    system: ImpactSystem, record: Record, *, e: Any, frequencies: Any,
+    zeta: Any = SRS_ZETA, chatter: Any = CHATTER,
+) -> ShockResult:  # fmt: skip
+    """``record`` (a shock of :func:`~symimpact.forced.loads.shock_record`, or any record) on
+    ``system`` with rigid impacts of restitution ``e`` (Eq. F2, flight Eq. F8) and on the
+    primary alone; the SRS of the main mass's absolute motion at ``frequencies`` [Hz]."""
+    ours = damper_response(system, record, e=e, chatter=chatter)
+    alone = primary_response(system, record)
+    if record.kind == "base-acceleration":
+        xb, vb = base_motion(record)
+    else:
+        xb = vb = np.zeros(len(record.values))
+    srs = motion_srs(ours.displacement + xb, ours.velocity + vb, record.dt, frequencies, zeta)
+    base = motion_srs(alone.displacement + xb, alone.velocity + vb, record.dt, frequencies, zeta)
+    return ShockResult(
+        peak=float(np.max(np.abs(ours.displacement))),
+        baseline_peak=float(np.max(np.abs(alone.displacement))),
+        peak_acceleration=float(np.max(np.abs(ours.acceleration))),
+        baseline_peak_acceleration=float(np.max(np.abs(alone.acceleration))),
+        frequency=checks.numbers("frequencies", frequencies),
+        srs=srs,
+        baseline_srs=base,
+        impacts=len(ours.impact_times),
+        zeta=float(zeta),
+    )
