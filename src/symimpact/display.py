@@ -53,6 +53,15 @@ OUTPUT_SI_UNITS = {
     "nominal_peak": "m",
     "worst_e": "dimensionless",
     "e": "dimensionless",
+    # random, shock and sweep-sine (symimpact.cli.loads)
+    "frequency": "Hz",
+    "displacement_psd": "m^2/Hz",
+    "baseline_displacement_psd": "m^2/Hz",
+    "srs": "m/s^2",
+    "baseline_srs": "m/s^2",
+    "envelope": "m",
+    "baseline_envelope": "m",
+    "direction": "dimensionless",
 }
 
 #: A design row's keys that hold a peak of the primary's response, and their names when the

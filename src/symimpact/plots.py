@@ -453,3 +453,70 @@ def plot_map(
     atomic_savefig(fig, path)
     plt.close(fig)
     return optimum
+
+
+def plot_random(stats: Any, path: str | os.PathLike) -> None:
+    """The displacement's PSD with and without the damper (Welch, averaged over realisations;
+    symimpact.forced.random_response), the RMS values and the reduction in the title."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    f = stats.psd_frequency
+    keep = f > 0
+    ax.semilogy(f[keep], stats.baseline_psd[keep] * 1e6, lw=1, color="grey", label="primary alone")
+    ax.semilogy(f[keep], stats.psd[keep] * 1e6, lw=1.2, color="C0", label="with the impact damper")
+    top = max(stats.psd[keep].max(), stats.baseline_psd[keep].max()) * 1e6
+    ax.set_ylim(top * 1e-10, top * 3)  # ten decades: the band and the impacts' broadband
+    ax.set_xlabel("frequency [Hz]")
+    ax.set_ylabel("displacement PSD [mm²/Hz]")
+    lo, hi = stats.reduction_ci95["displacement"]
+    ax.set_title(
+        f"RMS {stats.rms['displacement'] * 1e3:.3g} mm (alone {stats.baseline_rms['displacement'] * 1e3:.3g}"
+        f" mm): reduction {100 * stats.reduction['displacement']:.0f} % "
+        f"(95 %: {100 * lo:.0f}–{100 * hi:.0f} %), {stats.realisations} realisations; "
+        f"resolution {stats.psd_resolution:.2g} Hz",
+        fontsize=9,
+    )
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
+
+
+def plot_shock(shock: Any, path: str | os.PathLike) -> None:
+    """The shock-response spectrum of the main mass's motion with and without the damper
+    (symimpact.forced.shock_response), in g, log-log."""
+    plt = _pyplot()
+    g = 9.80665
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    ax.loglog(shock.frequency, shock.baseline_srs / g, color="grey", label="primary alone")
+    ax.loglog(shock.frequency, shock.srs / g, color="C0", label="with the impact damper")
+    ax.set_xlabel("natural frequency of the equipment [Hz]")
+    ax.set_ylabel(f"SRS, maximax absolute acceleration [g] (ζ = {shock.zeta:g})")
+    ax.set_title(
+        f"peak displacement {shock.peak * 1e3:.3g} mm (alone {shock.baseline_peak * 1e3:.3g} mm), "
+        f"{shock.impacts} impacts",
+        fontsize=9,
+    )
+    ax.legend(fontsize=8)
+    ax.grid(True, which="both", lw=0.3)
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
+
+
+def plot_sine_sweep(sweep: Any, path: str | os.PathLike) -> None:
+    """The displacement's envelope against the instantaneous frequency, up and down, with and
+    without the damper (symimpact.forced.sweep_response)."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for d, name, ls in ((sweep.up, "up", "-"), (sweep.down, "down", "--")):
+        ax.plot(d["frequency"], d["baseline"] * 1e3, ls, color="grey", lw=0.9,
+                label=f"primary alone, {name}")  # fmt: skip
+        ax.plot(d["frequency"], d["envelope"] * 1e3, ls, color="C0", lw=1.2,
+                label=f"with the impact damper, {name}")  # fmt: skip
+    ax.set_xlabel("instantaneous frequency [Hz]")
+    ax.set_ylabel("largest |x| over each period [mm]")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)

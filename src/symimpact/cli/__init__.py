@@ -24,6 +24,7 @@ from . import (
     export,
     fit,
     frf,
+    loads,
     modes,
     periodic,
     reproduce,
@@ -35,7 +36,7 @@ from .common import Parser, apply_engineer_inputs, apply_materials
 
 #: The subcommands, in the order of ``symimpact --help``.
 SUBCOMMANDS = [reproduce, ritz, modes, fit, contact, contact_duration, simulate, periodic, frf, branch, design,
-               export, sweep]  # fmt: skip
+               loads, export, sweep]  # fmt: skip
 
 #: What runs each subcommand (by name, aliases included).
 COMMANDS = {name: run for module in SUBCOMMANDS for name, run in module.COMMANDS.items()}

@@ -1,0 +1,357 @@
+"""``symimpact random``, ``symimpact shock``, ``symimpact sweep-sine``: the primary with its impact
+damper (rigid impacts, Eq. F2) under the loads machines and buildings see, each compared with
+the primary alone on the same load; the flight between impacts is exact for the sampled load
+(Step 16, Eq. F8)."""
+
+from __future__ import annotations
+
+import csv
+import math
+import re
+from typing import Any
+
+import numpy as np
+
+from .common import add_output, add_system, emit, system_from, write_csv
+
+G = 9.80665  # standard gravity [m/s²], for the text only (inputs go through pint)
+
+
+def _load_options(g: Any, what: str, force: str, base: str) -> None:
+    g.add_argument(f"--force-{what}", dest="force_load", default=None, metavar="Q",
+                   help=f"{force} on the main mass")  # fmt: skip
+    g.add_argument(f"--base-{what}", dest="base_load", default=None, metavar="Q",
+                   help=f"{base} of the base under the primary")  # fmt: skip
+
+
+def _common(p: Any) -> None:
+    add_system(p, contact=False)
+    g = p.add_argument_group("impacts and sampling")
+    g.add_argument("--e", default=None, metavar="E", required=True,
+                   help="Newton's coefficient of restitution of the rigid impacts, 0 ≤ e ≤ 1 "
+                   "(Eq. F2)")  # fmt: skip
+    g.add_argument("--dt", default=None, metavar="Q",
+                   help="the record's sample interval [s]; default: 20 samples a period at the "
+                   "highest frequency of the load")  # fmt: skip
+
+
+def add_parser(sub: Any) -> None:
+    """Add the three subcommands' parsers to ``sub`` (the parsers' subparsers action)."""
+    p = sub.add_parser(
+        "random",
+        help="band-limited random vibration: RMS with 95 %% intervals over realisations, the "
+        "reduction against the primary alone, the displacement's PSD (Welch)",
+    )
+    _common(p)
+    g = p.add_argument_group("the load: a one-sided PSD, flat over --band (or a table)")
+    _load_options(g, "psd", 'force PSD [N²/Hz], e.g. "0.02 N^2/Hz"',
+                  'acceleration PSD [(m/s²)²/Hz], e.g. "0.01 g^2/Hz"')  # fmt: skip
+    g.add_argument("--psd-file", default=None, metavar="FILE.csv",
+                   help="a PSD table instead: columns 'frequency [Hz]' and 'psd [N^2/Hz]' (a "
+                   "force) or 'psd [g^2/Hz]' / 'psd [(m/s^2)^2/Hz]' (a base acceleration), joined "
+                   "by straight lines, zero outside; --band gives the band simulated")  # fmt: skip
+    g.add_argument("--band", required=True, metavar="F1:F2",
+                   help='the band [Hz], e.g. "1:50" or "1 Hz:50 Hz"')  # fmt: skip
+    g.add_argument(
+        "--duration",
+        default="100 s",
+        metavar="Q",
+        help="the time each realisation is kept for statistics; default 100 s",
+    )
+    g.add_argument(
+        "--realisations", default="8", metavar="N", help="independent records; default 8"
+    )
+    g.add_argument(
+        "--seed",
+        default="0",
+        metavar="S",
+        help="the ensemble's seed (realisation i: SeedSequence([S, i])); default 0",
+    )
+    g.add_argument("--settle", default=None, metavar="Q",
+                   help="the start left out of the statistics; default the primary's decay to "
+                   "1e-3, ln(1000)/(ζω_n)")  # fmt: skip
+    g.add_argument(
+        "--segment",
+        default=None,
+        metavar="Q",
+        help="Welch's segment [s] (resolution 1/segment Hz); default duration/8",
+    )
+    add_output(p, plot=True)
+
+    p = sub.add_parser(
+        "shock",
+        help="a shock pulse: peak displacement and the shock-response spectrum of the main "
+        "mass's motion, with and without the damper",
+    )
+    _common(p)
+    g = p.add_argument_group("the pulse")
+    _load_options(g, "peak", "the pulse height [N]", 'the pulse height [m/s²], e.g. "50 g"')
+    g.add_argument("--shape", default="half-sine", choices=("half-sine", "haversine", "sawtooth"),
+                   help="pulse shape (sawtooth: terminal peak); default half-sine")  # fmt: skip
+    g.add_argument("--pulse", required=True, metavar="Q", help='its duration, e.g. "11 ms"')
+    g.add_argument(
+        "--duration",
+        default=None,
+        metavar="Q",
+        help="the run, pulse included; default 20 natural periods of the primary",
+    )
+    g.add_argument(
+        "--srs-range",
+        default=None,
+        metavar="F1:F2",
+        help="the SRS's frequencies [Hz]; default 0.1 to 10 times the primary's",
+    )
+    g.add_argument(
+        "--srs-points", default="40", metavar="N", help="SRS frequencies, log-spaced; default 40"
+    )
+    g.add_argument(
+        "--srs-zeta",
+        default="0.05",
+        metavar="Z",
+        help="the SRS oscillators' damping ratio; default 0.05 (Q = 10)",
+    )
+    add_output(p, plot=True)
+
+    p = sub.add_parser(
+        "sweep-sine",
+        help="a sine sweep up and down through a band: the displacement's envelope against the "
+        "instantaneous frequency, with and without the damper",
+    )
+    _common(p)
+    g = p.add_argument_group("the sweep")
+    _load_options(
+        g, "amplitude", "force amplitude [N]", 'acceleration amplitude [m/s²], e.g. "0.5 g"'
+    )
+    g.add_argument("--band", required=True, metavar="F1:F2", help="from and to [Hz]")
+    g.add_argument(
+        "--rate", required=True, metavar="R", help="Hz/s (linear) or octaves a minute (--law log)"
+    )
+    g.add_argument("--law", default="linear", choices=("linear", "log"), help="default linear")
+    add_output(p, plot=True)
+
+
+def band_from(name: str, text: str) -> tuple[float, float]:
+    """(f₁, f₂) [Hz] from "f1:f2" with a unit on either or both ends (Hz when none)."""
+    from ..checks import bounds
+    from ..errors import ParameterError
+    from ..units import split_quantity
+
+    parts = [t.strip() for t in str(text).split(":")]
+    if len(parts) != 2 or not all(parts):
+        raise ParameterError(name, f"must be f1:f2, got {text!r}")
+    units = [split_quantity(name, t)[1] for t in parts]
+    if units[1] and not units[0]:
+        parts[0] = f"{parts[0]} {units[1]}"
+    return bounds(name, parts, "Hz")
+
+
+def _kind(ns) -> tuple[str, str]:
+    """("force" | "base-acceleration", the value's text) from --force-X / --base-X."""
+    from ..errors import ParameterError
+
+    if (ns.force_load is None) == (ns.base_load is None):
+        flag = {"random": "psd", "shock": "peak", "sweep-sine": "amplitude"}[ns.command]
+        raise ParameterError(
+            f"force-{flag}", f"give the load once: --force-{flag} or --base-{flag}"
+        )
+    if ns.force_load is not None:
+        return "force", ns.force_load
+    return "base-acceleration", ns.base_load
+
+
+def _height(ns, kind: str, text: str) -> float:
+    """The pulse height or sweep amplitude in SI: [N] on the mass, [m/s²] of the base ("g" is
+    standard gravity)."""
+    from ..units import si_float
+
+    what = {"shock": "peak", "sweep-sine": "amplitude"}[ns.command]
+    if kind == "force":
+        return si_float(f"force-{what}", text, "N")
+    return si_float(f"base-{what}", text, "m/s^2")
+
+
+def _sampling(ns, total: float, default_dt: float) -> float:
+    """The sample interval: --dt as given (the record refuses one that does not divide the
+    duration), else the default made to divide ``total`` [s] (at most the default)."""
+    from ..units import positive_float
+
+    if ns.dt is not None:
+        return positive_float("dt", ns.dt, "s")
+    return total / max(1, math.ceil(total / default_dt - 1e-9))
+
+
+def count(name: str, text: str, low: int, high: int) -> int:
+    """A whole number typed on the command line, in [low, high]."""
+    from ..checks import whole_number
+    from ..errors import ParameterError
+
+    try:
+        value = int(str(text).strip())
+    except ValueError:
+        raise ParameterError(name, f"must be a whole number, got {text!r}") from None
+    return whole_number(name, value, low, high)
+
+
+def psd_table(path: str):
+    """(function of f [Hz] → PSD [SI], kind) from a CSV table (see ``--psd-file``)."""
+    from ..errors import ParameterError
+    from ..units import ACCELERATION_PSD, si_float
+
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.reader(f))
+    except OSError as err:
+        raise ParameterError("psd-file", f"cannot read {path!r}: {err.strerror}") from None
+    if len(rows) < 3 or len(rows[0]) != 2:
+        raise ParameterError("psd-file", "needs a header of two columns and at least two rows")
+    units = [re.search(r"\[(.+)\]", h) for h in rows[0]]
+    if not all(units):
+        raise ParameterError("psd-file", "each column's header must give its unit in brackets, "
+                             "e.g. 'frequency [Hz]', 'psd [g^2/Hz]'")  # fmt: skip
+    f_unit, s_unit = (u.group(1).strip() for u in units)
+    try:
+        values = np.array([[float(a), float(b)] for a, b in rows[1:] if a.strip()])
+    except ValueError:
+        raise ParameterError("psd-file", "holds a value that is not a number") from None
+    f = values[:, 0] * si_float("psd-file", f"1 {f_unit}", "Hz")
+    try:
+        scale, kind = si_float("psd-file", f"1 {s_unit}", "N^2/Hz"), "force"
+    except ParameterError:
+        scale, kind = si_float("psd-file", f"1 {s_unit}", ACCELERATION_PSD), "base-acceleration"
+    s = values[:, 1] * scale
+    if np.any(np.diff(f) <= 0):
+        raise ParameterError("psd-file", "frequencies must increase from row to row")
+    if np.any(s < 0) or not np.all(np.isfinite(s)):
+        raise ParameterError("psd-file", "a PSD must be finite and ≥ 0")
+    return (lambda x: np.interp(x, f, s, left=0.0, right=0.0)), kind
+
+
+def run_random(ns) -> None:
+    """``symimpact random``."""
+    from ..errors import ParameterError
+    from ..forced.loads import SAMPLES_PER_PERIOD
+    from ..forced.random_response import UNITS, random_statistics
+    from ..units import ACCELERATION_PSD, positive_float, si_float
+
+    system = system_from(ns)
+    f1, f2 = band_from("band", ns.band)
+    if ns.psd_file is not None:
+        if ns.force_load is not None or ns.base_load is not None:
+            raise ParameterError(
+                "psd-file", "give the PSD once: --psd-file, --force-psd or --base-psd"
+            )
+        psd, kind = psd_table(ns.psd_file)
+    else:
+        kind, text = _kind(ns)
+        psd = si_float("force-psd" if kind == "force" else "base-psd", text,
+                       "N^2/Hz" if kind == "force" else ACCELERATION_PSD)  # fmt: skip
+        if psd < 0:
+            raise ParameterError("force-psd" if kind == "force" else "base-psd", "must be ≥ 0")
+    T = positive_float("duration", ns.duration, "s")
+    dt = _sampling(ns, T, 1.0 / (2 * SAMPLES_PER_PERIOD * f2))
+    st = random_statistics(system, psd, (f1, f2), T, dt, e=ns.e,
+                           realisations=count("realisations", ns.realisations, 1, 1_000_000),
+                           seed=count("seed", ns.seed, 0, 2**63 - 1), settle=ns.settle, kind=kind,
+                           segment=ns.segment)  # fmt: skip
+    if ns.csv:
+        write_csv(ns.csv, "csv", [
+            {"frequency": f, "displacement_psd": a, "baseline_displacement_psd": b}
+            for f, a, b in zip(st.psd_frequency, st.psd, st.baseline_psd, strict=True)
+        ])  # fmt: skip
+    if ns.plot:
+        from ..plots import plot_random
+
+        plot_random(st, ns.plot)
+    scale = {"displacement": (1e3, "mm"), "velocity": (1e3, "mm/s"),
+             "acceleration": (1 / G, "g"), "base_force": (1.0, "N")}  # fmt: skip
+    lines = [f"{st.realisations} realisations of {st.duration:g} s after {st.settle:.3g} s, "
+             f"seed {st.seed}, {st.impacts_per_second:.3g} impacts/s"]  # fmt: skip
+    for key in UNITS:
+        k, u = scale[key]
+        lo, hi = st.rms_ci95[key]
+        rlo, rhi = st.reduction_ci95[key]
+        lines.append(
+            f"RMS {key.replace('_', ' ')}: {st.rms[key] * k:.4g} {u} (95 %: {lo * k:.4g}–"
+            f"{hi * k:.4g}), alone {st.baseline_rms[key] * k:.4g} {u}: reduction "
+            f"{100 * st.reduction[key]:.1f} % ({100 * rlo:.1f}–{100 * rhi:.1f} %)"
+        )
+    lines.append(f"PSD resolution {st.psd_resolution:.3g} Hz (Welch, Hann, half overlap)")
+    emit(ns, st.as_dict(), "\n".join(lines))
+
+
+def run_shock(ns) -> None:
+    """``symimpact shock``."""
+    from ..forced.loads import shock_record
+    from ..forced.shock_response import shock_response
+    from ..units import positive_float
+
+    system = system_from(ns)
+    kind, text = _kind(ns)
+    td = positive_float("pulse", ns.pulse, "s")
+    fn = system.omega_n / (2 * math.pi)
+    if ns.duration is None:
+        total = max(20.0 / fn, td)
+        total = td / 200.0 * math.ceil(total / (td / 200.0))  # whole default steps
+    else:
+        total = positive_float("duration", ns.duration, "s")
+    dt = _sampling(ns, total, td / 200.0)
+    record = shock_record(ns.shape, _height(ns, kind, text), td, total, dt, kind)
+    lo, hi = (0.1 * fn, 10.0 * fn) if ns.srs_range is None else band_from("srs-range", ns.srs_range)
+    n = count("srs-points", ns.srs_points, 2, 10_000)
+    out = shock_response(system, record, e=ns.e, frequencies=np.geomspace(lo, hi, n),
+                         zeta=ns.srs_zeta)  # fmt: skip
+    if ns.csv:
+        write_csv(ns.csv, "csv", [
+            {"frequency": f, "srs": a, "baseline_srs": b}
+            for f, a, b in zip(out.frequency, out.srs, out.baseline_srs, strict=True)
+        ])  # fmt: skip
+    if ns.plot:
+        from ..plots import plot_shock
+
+        plot_shock(out, ns.plot)
+    i = int(np.argmax(out.baseline_srs))
+    text_out = (
+        f"peak displacement {out.peak * 1e3:.4g} mm with the damper, {out.baseline_peak * 1e3:.4g}"
+        f" mm alone ({out.impacts} impacts); peak acceleration {out.peak_acceleration / G:.4g} g, "
+        f"alone {out.baseline_peak_acceleration / G:.4g} g (between impacts)\n"
+        f"SRS (ζ {out.zeta:g}) at {out.frequency[i]:.4g} Hz, the primary's largest: "
+        f"{out.srs[i] / G:.4g} g with the damper, {out.baseline_srs[i] / G:.4g} g alone"
+    )
+    emit(ns, out.as_dict(), text_out)
+
+
+def run_sweep(ns) -> None:
+    """``symimpact sweep-sine``."""
+    from ..forced.loads import SAMPLES_PER_PERIOD
+    from ..forced.sweep_response import sweep_response
+
+    system = system_from(ns)
+    kind, text = _kind(ns)
+    f1, f2 = band_from("band", ns.band)
+    dt = _sampling(ns, 1.0, 1.0 / (2 * SAMPLES_PER_PERIOD * f2))  # (a sweep ends where it ends)
+    out = sweep_response(
+        system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=ns.e, law=ns.law, kind=kind
+    )
+    if ns.csv:
+        rows = []
+        for name, d in (("up", out.up), ("down", out.down)):
+            rows += [
+                {"direction": name, "frequency": f, "envelope": a, "baseline_envelope": b}
+                for f, a, b in zip(d["frequency"], d["envelope"], d["baseline"], strict=True)
+            ]
+        write_csv(ns.csv, "csv", rows)
+    if ns.plot:
+        from ..plots import plot_sine_sweep
+
+        plot_sine_sweep(out, ns.plot)
+    d = out.as_dict()
+    lines = [
+        f"{name}: peak {d[name]['peak'] * 1e3:.4g} mm at {d[name]['peak_frequency']:.4g} Hz; "
+        f"alone {d[name]['baseline_peak'] * 1e3:.4g} mm at "
+        f"{d[name]['baseline_peak_frequency']:.4g} Hz"
+        for name in ("up", "down")
+    ]
+    emit(ns, d, "\n".join(lines))
+
+
+COMMANDS = {"random": run_random, "shock": run_shock, "sweep-sine": run_sweep}

@@ -1,0 +1,118 @@
+"""``symimpact random``, ``shock`` and ``sweep-sine``: the JSON is the API's result for the same
+load (units converted at the boundary: g²/Hz, g, ms), the CSV has its units in the headers, and
+bad input is refused in one line naming the parameter (exit 2)."""
+
+from __future__ import annotations
+
+import csv
+import json
+
+import numpy as np
+import pytest
+
+from symimpact.cli import main
+from symimpact.forced.loads import shock_record
+from symimpact.forced.random_response import random_statistics
+from symimpact.forced.shock_response import shock_response
+from symimpact.system import ImpactSystem
+
+SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm", "--e", "0.6"]
+API = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+G = 9.80665
+
+
+def _json(capsys, argv):
+    assert main(argv) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_random_json_is_the_api_with_g2_per_hz_converted(capsys, tmp_path):
+    """0.002 g²/Hz is 0.002·9.80665² (m/s²)²/Hz; the JSON's keys are the issue's contract."""
+    argv = ["random", *SYSTEM, "--base-psd", "0.002 g^2/Hz", "--band", "1 Hz:40 Hz",
+            "--duration", "20 s", "--realisations", "3", "--seed", "9", "--settle", "5 s",
+            "--json", "--csv", str(tmp_path / "psd.csv")]  # fmt: skip
+    out = _json(capsys, argv)
+    api = random_statistics(API, 0.002 * G**2, (1, 40), 20.0, 1 / 800, e=0.6, realisations=3,
+                            seed=9, settle=5.0, kind="base-acceleration")  # fmt: skip
+    assert set(out) >= {"rms", "rms_ci95", "baseline_rms", "reduction", "realisations", "seed"}
+    for key in ("displacement", "velocity", "acceleration", "base_force"):
+        assert out["rms"][key] == api.rms[key]
+        assert out["baseline_rms"][key] == api.baseline_rms[key]
+        assert out["rms_ci95"][key] == list(api.rms_ci95[key])
+    assert out["realisations"] == 3 and out["seed"] == 9
+    with open(tmp_path / "psd.csv") as f:
+        header = next(csv.reader(f))
+    assert header == ["frequency [Hz]", "displacement_psd [m^2/Hz]",
+                      "baseline_displacement_psd [m^2/Hz]"]  # fmt: skip
+
+
+def test_a_psd_table_is_read_with_its_units(capsys, tmp_path):
+    """A flat table in g²/Hz gives the flat PSD's statistics (linear interpolation of a constant
+    is the constant)."""
+    table = tmp_path / "spec.csv"
+    table.write_text("frequency [Hz],psd [g^2/Hz]\n0.5,0.002\n50,0.002\n")
+    common = [*SYSTEM, "--band", "1:40", "--duration", "10", "--realisations", "2", "--settle",
+              "2", "--json"]  # fmt: skip
+    a = _json(capsys, ["random", *common, "--psd-file", str(table)])
+    b = _json(capsys, ["random", *common, "--base-psd", "0.002 g^2/Hz"])
+    assert a["rms"] == pytest.approx(b["rms"], rel=1e-12)
+
+
+def test_shock_json_is_the_api_with_g_and_ms(capsys):
+    argv = ["shock", *SYSTEM, "--base-peak", "20 g", "--pulse", "11 ms", "--duration", "1 s",
+            "--srs-range", "1:50", "--srs-points", "5", "--json"]  # fmt: skip
+    out = _json(capsys, argv)
+    dt = 1.0 / np.ceil(1.0 / (0.011 / 200))  # 200 samples in the pulse, dividing the 1 s run
+    record = shock_record("half-sine", 20 * G, 0.011, 1.0, dt, "base-acceleration")
+    api = shock_response(API, record, e=0.6, frequencies=np.geomspace(1, 50, 5))
+    # pint's "20 g" and 20·9.80665 may differ in the last bit, which the run carries along
+    close = {"rel": 1e-12, "abs": 0}
+    assert out["peak"] == pytest.approx(api.peak, **close)
+    assert out["baseline_peak"] == pytest.approx(api.baseline_peak, **close)
+    assert [r["frequency"] for r in out["srs"]] == list(api.frequency)
+    assert [r["response"] for r in out["srs"]] == pytest.approx(list(api.srs), **close)
+    assert [r["baseline"] for r in out["srs"]] == pytest.approx(list(api.baseline_srs), **close)
+
+
+def test_sweep_sine_runs_up_and_down(capsys, tmp_path):
+    plot = tmp_path / "sweep.png"
+    out = _json(capsys, ["sweep-sine", *SYSTEM, "--force-amplitude", "2 N", "--band", "4:6",
+                         "--rate", "0.2", "--json", "--plot", str(plot)])  # fmt: skip
+    for name in ("up", "down"):
+        env = out[name]["envelope"]
+        assert len(env) > 20
+        assert out[name]["peak"] == max(r["envelope"] for r in env)
+    assert plot.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize(
+    "argv, name",
+    [
+        (["random", "--band", "1:40", "--force-psd", "-1 N^2/Hz"], "force-psd"),
+        (["random", "--band", "1:40", "--force-psd", "1 N^2/Hz", "--base-psd", "1 g^2/Hz"],
+         "force-psd"),
+        (["random", "--band", "40:1", "--force-psd", "1"], "band"),
+        (["random", "--band", "1:40", "--force-psd", "1", "--realisations", "two"],
+         "realisations"),
+        (["random", "--band", "1:40", "--base-psd", "1 N^2/Hz"], "base-psd"),
+        (["shock", "--force-peak", "20 kg", "--pulse", "11 ms"], "force-peak"),
+        (["shock", "--force-peak", "20", "--pulse", "1 s", "--duration", "0.5 s"], "duration"),
+        (["sweep-sine", "--force-amplitude", "2", "--band", "4:6", "--rate", "0"], "rate"),
+    ],
+)  # fmt: skip
+def test_bad_input_is_one_line_naming_the_parameter(capsys, argv, name):
+    assert main([argv[0], *SYSTEM, *argv[1:]]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"{name}:" in err[0]
+
+
+def test_a_bad_psd_table_is_refused(capsys, tmp_path):
+    for text, why in (("frequency,psd\n1,2\n3,4\n", "unit"),
+                      ("frequency [Hz],psd [g^2/Hz]\n5,1\n1,1\n", "increase"),
+                      ("frequency [Hz],psd [g^2/Hz]\n1,-1\n5,1\n", "≥ 0")):  # fmt: skip
+        table = tmp_path / "t.csv"
+        table.write_text(text)
+        argv = ["random", *SYSTEM, "--band", "1:40", "--psd-file", str(table)]
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert "psd-file:" in err and why in err
