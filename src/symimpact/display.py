@@ -62,6 +62,17 @@ OUTPUT_SI_UNITS = {
     "envelope": "m",
     "baseline_envelope": "m",
     "direction": "dimensionless",
+    # an ensemble's rows (symimpact.maps.ensemble)
+    "realisation": "dimensionless",
+    "rms_displacement": "m",
+    "rms_velocity": "m/s",
+    "rms_acceleration": "m/s^2",
+    "rms_base_force": "N",
+    "baseline_rms_displacement": "m",
+    "baseline_rms_velocity": "m/s",
+    "baseline_rms_acceleration": "m/s^2",
+    "baseline_rms_base_force": "N",
+    "impacts": "dimensionless",
 }
 
 #: A design row's keys that hold a peak of the primary's response, and their names when the

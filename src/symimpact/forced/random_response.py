@@ -125,9 +125,10 @@ def realisation(
     kind: str = "force",
     segment: float | None = None,
     chatter: float = CHATTER,
+    welch: bool = True,
 ) -> dict[str, Any]:
     """One realisation: {"rms": {key: value}, "baseline": {key: value}, "impacts": n,
-    "psd": (f, with, without)} over the record after ``settle``."""
+    "psd": (f, with, without)} over the record after ``settle`` (no "psd" without ``welch``)."""
     n_settle = math.ceil(settle / dt - 1e-9)  # the settling time, to the sample at or after it
     record = random_record(psd, band, (n_settle + round(duration / dt)) * dt, dt,
                            realisation_seed(seed, i), kind)  # fmt: skip
@@ -139,6 +140,8 @@ def realisation(
         out["rms"][key] = float(np.sqrt(np.mean(getattr(ours, key)[keep] ** 2)))
         out["baseline"][key] = float(np.sqrt(np.mean(getattr(alone, key)[keep] ** 2)))
     out["impacts"] = int(np.sum(ours.impact_times >= n_settle * dt))
+    if not welch:
+        return out
     nper = max(8, round((segment or duration / 8) / dt))
     f, p_with = signal.welch(ours.displacement[keep], fs=1.0 / dt, nperseg=min(nper, keep.sum()))
     _, p_alone = signal.welch(alone.displacement[keep], fs=1.0 / dt, nperseg=min(nper, keep.sum()))
@@ -195,7 +198,8 @@ def combine(
     per = {k: np.array([r["rms"][k] for r in runs]) for k in KEYS}
     base = {k: np.array([r["baseline"][k] for r in runs]) for k in KEYS}
     reduction = {k: 1.0 - per[k] / base[k] for k in KEYS}
-    f = runs[0]["psd"][0]
+    spectra = [r["psd"] for r in runs if "psd" in r]
+    f = spectra[0][0] if spectra else np.zeros(0)
     return RandomStatistics(
         rms={k: float(np.mean(per[k])) for k in KEYS},
         rms_ci95={k: _interval(per[k]) for k in KEYS},
@@ -205,8 +209,8 @@ def combine(
         per_realisation=per,
         baseline_per_realisation=base,
         psd_frequency=f,
-        psd=np.mean([r["psd"][1] for r in runs], axis=0),
-        baseline_psd=np.mean([r["psd"][2] for r in runs], axis=0),
+        psd=np.mean([p[1] for p in spectra], axis=0) if spectra else np.zeros(0),
+        baseline_psd=np.mean([p[2] for p in spectra], axis=0) if spectra else np.zeros(0),
         psd_resolution=float(f[1] - f[0]) if len(f) > 1 else math.nan,
         impacts_per_second=float(np.mean([r["impacts"] for r in runs]) / duration),
         realisations=len(runs),
