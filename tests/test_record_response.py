@@ -141,3 +141,21 @@ def test_bad_input_is_refused_in_one_line():
         damper_response(SYSTEM, record, e=0.5, y0=0.5)
     with pytest.raises(ParameterError, match="record"):
         damper_response(SYSTEM, np.zeros(4), e=0.5)
+
+
+def test_a_release_at_a_tangency_does_not_loop():
+    """The report's system (e = 0.16) under base noise: in one record the stuck pair's s·ẍ_abs
+    touches zero at 19.77 s and a release by rounding alone was undone at once by an impact at
+    zero speed, 20 million times without time moving on.  The release now needs the wall to pull
+    by more than 1e-12 of the pair's acceleration scale; the record runs through, its ledger
+    closed."""
+    from symimpact.forced.random_response import default_settle, realisation_seed
+
+    system = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, contact="linear", k1=122.7)
+    n = int(np.ceil(default_settle(system) / 0.005 - 1e-9)) + 20000
+    record = random_record(0.01, (0.1, 10.0), n * 0.005, 0.005, realisation_seed(2026, 4),
+                           "base-acceleration")  # fmt: skip
+    ours = damper_response(system, record, e=0.1594, max_events=200_000)
+    assert 100 < len(ours.impact_times) < 20_000
+    assert ours.stuck.any()
+    assert ours.ledger["residual"] < 1e-10

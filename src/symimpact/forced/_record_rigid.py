@@ -25,8 +25,9 @@ separation speed w so small that the flights' sum Δ = 2w/(a(1 − e)) is at mos
 natural period, the run jumps to the accumulation point, where the masses move on together
 (momentum conserved; the relative kinetic energy is the impacts' loss); the pair M + m then
 follows Eq. F8 while the wall's force on the impact mass stays compressive (s·ẍ_abs ≤ 0, ẍ_abs the
-absolute acceleration), released where s·ẍ_abs turns positive (certified as above with
-|d²ẍ_abs/dτ²| ≤ ω_n⁴R of the pair).
+absolute acceleration), released where s·ẍ_abs turns positive — by more than 1e-12 of the pair's
+acceleration scale, so that a tangency touched by rounding does not release and re-stick the pair
+for ever (certified as above with |d²ẍ_abs/dτ²| ≤ ω_n⁴R of the pair).
 
 *Energy ledger.*  E = ½Mẋ² + ½Kx² + ½mẏ² (velocities relative to the base) changes by the load's
 work — ∫p·ẋ dt for a force p, −∫a_b·(Mẋ + mẏ) dt for a base acceleration (the inertial load in
@@ -58,6 +59,9 @@ E_T, E_SIDE, E_VREL, E_LOST, E_KIND = range(5)
 N_EVENT_COLS = 5
 KIND_IMPACT, KIND_ACCUMULATION, KIND_RELEASE = 0, 1, 2
 OK, TOO_MANY_EVENTS = 0, 1
+#: A stuck pair is released where the wall would pull by more than this fraction of the pair's
+#: acceleration scale (ω_n²R + |a_b|): rounding alone releases nothing.
+RELEASE = 1e-12
 
 _ramp = njit(cache=True)(_sl.ramp_state_scalar)
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
@@ -187,7 +191,10 @@ def _release(p, side, mu, p0, pd, g0, gd, x0, v0, L):
     R, wn = _decay(mu, K, C, p0, pd, x0, v0)
     B = wn**4 * R * (1.0 + 1e-9) + 1e-300
     scale = wn * wn * R + abs(g0) + abs(gd) * L + 1e-300
-    fa = _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, 0.0)
+    # the wall must pull by more than rounding: at a tangency (s·ẍ_abs touching zero) a release
+    # by rounding alone would be undone by an impact at zero speed at once, for ever
+    tol = RELEASE * scale
+    fa = _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, 0.0) - tol
     if fa > 0.0:
         return 0.0
     hmax = min(L, 2.0 * math.pi / wn / 16.0)
@@ -196,7 +203,7 @@ def _release(p, side, mu, p0, pd, g0, gd, x0, v0, L):
     while tau < L:
         H = min(H, L - tau)
         tb = tau + H
-        fb = _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, tb)
+        fb = _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, tb) - tol
         if max(fa, fb) + B * H * H / 8.0 < 0.0:
             tau, fa = tb, fb
             H = min(2.0 * H, hmax)
@@ -209,7 +216,7 @@ def _release(p, side, mu, p0, pd, g0, gd, x0, v0, L):
             kept = 0
             for _ in range(200):
                 tm = secant_point(lo, hi, flo, fhi)
-                fm = _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, tm)
+                fm = _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, tm) - tol
                 if fm > 0.0:
                     hi, fhi = tm, fm
                     if kept == 1:

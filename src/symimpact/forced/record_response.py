@@ -136,4 +136,3 @@ def damper_response(
             "residual": abs(e1 - e0 - work + dissipated + lost) / scale,
         },
     )
-
