@@ -116,3 +116,17 @@ def test_a_bad_psd_table_is_refused(capsys, tmp_path):
         assert main(argv) == 2
         err = capsys.readouterr().err
         assert "psd-file:" in err and why in err
+
+
+def test_random_as_a_map_is_the_in_process_ensemble(capsys, tmp_path):
+    """--executor/--out run the realisations as map runs: the same RMS values (the seed fixes
+    each record), one row per realisation in the file, and no PSD (--plot refused)."""
+    common = [*SYSTEM, "--force-psd", "0.02 N^2/Hz", "--band", "0.2:50", "--duration", "20",
+              "--realisations", "4", "--settle", "5", "--json"]  # fmt: skip
+    direct = _json(capsys, ["random", *common])
+    out = tmp_path / "ensemble.csv"
+    mapped = _json(capsys, ["random", *common, "--executor", "serial", "--out", str(out)])
+    assert mapped["rms"] == direct["rms"] and mapped["rms_ci95"] == direct["rms_ci95"]
+    assert len(out.read_text().splitlines()) == 1 + 4
+    assert main(["random", *common, "--executor", "serial", "--plot", str(tmp_path / "p.png")]) == 2
+    assert "plot:" in capsys.readouterr().err

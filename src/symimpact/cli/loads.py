@@ -8,6 +8,7 @@ from __future__ import annotations
 import csv
 import math
 import re
+import sys
 from typing import Any
 
 import numpy as np
@@ -76,6 +77,17 @@ def add_parser(sub: Any) -> None:
         metavar="Q",
         help="Welch's segment [s] (resolution 1/segment Hz); default duration/8",
     )
+    g = p.add_argument_group("an ensemble as a map (RMS and reduction; no PSD)")
+    g.add_argument("--executor", choices=("serial", "processes", "dask"), default=None,
+                   help="run the realisations as map runs: serially, on local processes or on "
+                   "Dask (with --scheduler); the same seed gives the same rows on each")  # fmt: skip
+    g.add_argument("--workers", type=int, default=None, help="processes; default all cores")
+    g.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run on this Dask scheduler (tcp://host:8786)")  # fmt: skip
+    g.add_argument("--out", metavar="FILE",
+                   help="stream one row per realisation to FILE.csv or FILE.parquet; the same "
+                   "command after an interruption runs only the missing realisations")  # fmt: skip
+    g.add_argument("--force", action="store_true", help="replace an existing --out file")
     add_output(p, plot=True)
 
     p = sub.add_parser(
@@ -194,6 +206,17 @@ def count(name: str, text: str, low: int, high: int) -> int:
 
 def psd_table(path: str):
     """(function of f [Hz] → PSD [SI], kind) from a CSV table (see ``--psd-file``)."""
+    f, s, kind = _psd_file(path)
+    return (lambda x: np.interp(x, f, s, left=0.0, right=0.0)), kind
+
+
+def psd_points(path: str) -> tuple[np.ndarray, np.ndarray]:
+    """(frequencies [Hz], PSD [SI]) of a CSV table (see ``--psd-file``)."""
+    f, s, _ = _psd_file(path)
+    return f, s
+
+
+def _psd_file(path: str):
     from ..errors import ParameterError
     from ..units import ACCELERATION_PSD, si_float
 
@@ -223,7 +246,7 @@ def psd_table(path: str):
         raise ParameterError("psd-file", "frequencies must increase from row to row")
     if np.any(s < 0) or not np.all(np.isfinite(s)):
         raise ParameterError("psd-file", "a PSD must be finite and ≥ 0")
-    return (lambda x: np.interp(x, f, s, left=0.0, right=0.0)), kind
+    return f, s, kind
 
 
 def run_random(ns) -> None:
@@ -249,10 +272,25 @@ def run_random(ns) -> None:
             raise ParameterError("force-psd" if kind == "force" else "base-psd", "must be ≥ 0")
     T = positive_float("duration", ns.duration, "s")
     dt = _sampling(ns, T, 1.0 / (2 * SAMPLES_PER_PERIOD * f2))
-    st = random_statistics(system, psd, (f1, f2), T, dt, e=ns.e,
-                           realisations=count("realisations", ns.realisations, 1, 1_000_000),
-                           seed=count("seed", ns.seed, 0, 2**63 - 1), settle=ns.settle, kind=kind,
-                           segment=ns.segment)  # fmt: skip
+    n = count("realisations", ns.realisations, 1, 100_000_000)
+    seed = count("seed", ns.seed, 0, 2**63 - 1)
+    as_map = any(v is not None for v in (ns.executor, ns.workers, ns.scheduler, ns.out))
+    if as_map:
+        from ..maps.ensemble import random_ensemble
+
+        if ns.plot or ns.csv or ns.segment is not None:
+            flag = "plot" if ns.plot else ("csv" if ns.csv else "segment")
+            raise ParameterError(flag, "an ensemble run as a map keeps the RMS values, not the "
+                                 "PSD; drop --executor/--workers/--scheduler/--out for it")  # fmt: skip
+        if ns.psd_file is not None:
+            psd = psd_points(ns.psd_file)
+        st, _ = random_ensemble(system, psd, (f1, f2), T, dt, e=ns.e, realisations=n, seed=seed,
+                                settle=ns.settle, kind=kind, executor=ns.executor,
+                                workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
+                                force=ns.force, progress=sys.stderr.isatty())  # fmt: skip
+    else:
+        st = random_statistics(system, psd, (f1, f2), T, dt, e=ns.e, realisations=n, seed=seed,
+                               settle=ns.settle, kind=kind, segment=ns.segment)  # fmt: skip
     if ns.csv:
         write_csv(ns.csv, "csv", [
             {"frequency": f, "displacement_psd": a, "baseline_displacement_psd": b}
@@ -275,7 +313,10 @@ def run_random(ns) -> None:
             f"{hi * k:.4g}), alone {st.baseline_rms[key] * k:.4g} {u}: reduction "
             f"{100 * st.reduction[key]:.1f} % ({100 * rlo:.1f}–{100 * rhi:.1f} %)"
         )
-    lines.append(f"PSD resolution {st.psd_resolution:.3g} Hz (Welch, Hann, half overlap)")
+    if not as_map:
+        lines.append(f"PSD resolution {st.psd_resolution:.3g} Hz (Welch, Hann, half overlap)")
+    elif ns.out:
+        lines.append(f"wrote {ns.out} ({st.realisations} realisations)")
     emit(ns, st.as_dict(), "\n".join(lines))
 
 
