@@ -29,7 +29,7 @@ def test_the_block_holds_every_subcommand():
     assert [c.split()[1] for c in COMMANDS] == [
         "fit", "ritz", "ritz", "contact", "contact-duration", "simulate", "simulate", "simulate",
         "periodic", "periodic", "periodic", "frf", "frf", "frf", "branch", "design", "design",
-        "sweep",
+        "random", "shock", "sweep-sine", "sweep",
         "map",
     ]  # fmt: skip
 
@@ -94,6 +94,21 @@ def test_readme_command_runs_and_shows_something(command, tmp_path):
         assert impacts > 0 and "DI —" not in out
         assert (tmp_path / "sim.png").stat().st_size > 10_000
         assert len((tmp_path / "sim.csv").read_text().splitlines()) > 100
+    elif sub == "random":  # inelastic impacts: a reduction whose interval excludes zero
+        lo = float(re.search(r"RMS displacement: .* reduction [\d.]+ % \(([-\d.]+)–", out)[1])
+        assert lo > 0 and (tmp_path / "psd.png").stat().st_size > 10_000
+    elif sub == "shock":
+        assert re.search(
+            r"peak displacement [\d.]+ mm with the damper, [\d.]+ mm alone \(\d+ impacts", out
+        )
+        assert (tmp_path / "srs.png").stat().st_size > 10_000
+    elif sub == "sweep-sine":  # the run-up peaks below the primary alone's, both ways
+        peaks = [float(v) for v in re.findall(r"peak ([\d.]+) mm", out)]
+        alone = [float(v) for v in re.findall(r"alone ([\d.]+) mm", out)]
+        assert len(peaks) == len(alone) == 2 and all(
+            p < a for p, a in zip(peaks, alone, strict=True)
+        )
+        assert (tmp_path / "run-up.png").stat().st_size > 10_000
     elif sub in ("sweep", "map"):
         assert "in range" in out
         png = tmp_path / ("sweep.png" if sub == "sweep" else "heat.png")
