@@ -22,6 +22,7 @@ from . import (
     map_throughput,
     million_map,
     parameter_derivative,
+    random_loads,
     startup,
     stepper_peers,
     targets,
@@ -40,6 +41,7 @@ SUITE = (
         "8. the continuation's ∂P/∂p: the chain's derivative kernels against differences",
         parameter_derivative.main,
     ),
+    ("9. random vibration with the damper: realisations per second, Dask scaling", random_loads.main),
 )
 
 
