@@ -41,7 +41,10 @@ SUITE = (
         "8. the continuation's ∂P/∂p: the chain's derivative kernels against differences",
         parameter_derivative.main,
     ),
-    ("9. random vibration with the damper: realisations per second, Dask scaling", random_loads.main),
+    (
+        "9. random vibration with the damper: realisations per second, Dask scaling",
+        random_loads.main,
+    ),
 )
 
 

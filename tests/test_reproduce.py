@@ -65,10 +65,10 @@ def report(tmp_path_factory):
 def test_every_stage_reaches_its_planned_steps_and_the_design_map_moves_per_design(report):
     from symimpact.report import forced_stage
 
-    assert [b.desc.split(" ")[0] for b in _BARS] == ["contact", "free", "beyond", "forced"]
+    assert [b.desc.split(" ")[0] for b in _BARS] == ["contact", "free", "beyond", "forced", "loads"]
     for bar in _BARS:
         assert sum(bar.updates) == bar.total, bar.desc
-    forced = _BARS[-1]
+    forced = _BARS[-2]
     designs = len(forced_stage._design_gaps(True)) * len(forced_stage.MASS_RATIOS_QUICK)
     assert forced.total == 1 + 2 * len(forced_stage.GAPS_MM) + designs
     # one update per design or per group of designs finished together, never one for the map
@@ -93,7 +93,7 @@ def test_every_figure_is_a_valid_nonempty_png(report):
     assert {"fig2_force_laws", "fig3a_amplitude_ratio", "fig3b_iterations", "fig4_response_9mm",
             "fig5_relative_motion", "fig6_six_gaps", "fig7_gap_sweep", "accuracy_map",
             "lindstedt_orders", "gap_classes", "forced_frc", "forced_frc_compliant",
-            "forced_design_map"} <= names  # fmt: skip
+            "forced_design_map", "loads_random_psd", "loads_shock_srs"} <= names  # fmt: skip
     for f in figures:
         png = path / f"{f.name}.png"
         w, h = _png_size(png)

@@ -3,7 +3,7 @@
 :func:`reproduce` runs the stages (:mod:`.contact_stage`: Fig. 2, 3a, 3b and Table 1;
 :mod:`.vibration_stage`: Table 2, Fig. 4–7 and Table 3; :mod:`.beyond_stage`: accuracy map and
 Lindstedt order study; :mod:`.forced_stage`: the forced response, frequency-response curves and
-the clearance design map), each behind a progress bar, and writes ``index.html``, ``report.md``,
+the clearance design map; :mod:`.loads_stage`: random and shock loads), each behind a progress bar, and writes ``index.html``, ``report.md``,
 one PNG per figure and one CSV per table into a temporary folder that is renamed to the target
 only when everything succeeded (:func:`symimpact.io.staged_folder`).
 """
@@ -30,13 +30,14 @@ TITLE = (
 
 def _stages(quick: bool = False) -> list[tuple[str, int, Callable[..., Section]]]:
     """(description, progress steps, builder) of each stage, in order."""
-    from . import beyond_stage, contact_stage, forced_stage, vibration_stage
+    from . import beyond_stage, contact_stage, forced_stage, loads_stage, vibration_stage
 
     return [
         ("contact (Fig. 2, 3, Table 1)", contact_stage.STEPS, contact_stage.section),
         ("free vibration (Fig. 4–7, Table 3)", vibration_stage.STEPS, vibration_stage.section),
         ("beyond (accuracy map, Lindstedt)", beyond_stage.STEPS, beyond_stage.section),
         ("forced (curves, design map)", forced_stage.steps(quick), forced_stage.section),
+        ("loads (random, shock)", loads_stage.STEPS, loads_stage.section),
     ]
 
 
