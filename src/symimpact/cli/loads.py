@@ -51,6 +51,10 @@ def add_parser(sub: Any) -> None:
                    help="a PSD table instead: columns 'frequency [Hz]' and 'psd [N^2/Hz]' (a "
                    "force) or 'psd [g^2/Hz]' / 'psd [(m/s^2)^2/Hz]' (a base acceleration), joined "
                    "by straight lines, zero outside; --band gives the band simulated")  # fmt: skip
+    g.add_argument("--kanai-tajimi", default=None, metavar="FG:ZG",
+                   help="with --base-psd: shape it as Kanai and Tajimi's ground motion, a layer of "
+                   'natural frequency FG [Hz] and damping ratio ZG (e.g. "2.5:0.6"); the level '
+                   "is the white noise under the layer")  # fmt: skip
     g.add_argument("--band", required=True, metavar="F1:F2",
                    help='the band [Hz], e.g. "1:50" or "1 Hz:50 Hz"')  # fmt: skip
     g.add_argument(
@@ -100,7 +104,11 @@ def add_parser(sub: Any) -> None:
     _load_options(g, "peak", "the pulse height [N]", 'the pulse height [m/s²], e.g. "50 g"')
     g.add_argument("--shape", default="half-sine", choices=("half-sine", "haversine", "sawtooth"),
                    help="pulse shape (sawtooth: terminal peak); default half-sine")  # fmt: skip
-    g.add_argument("--pulse", required=True, metavar="Q", help='its duration, e.g. "11 ms"')
+    g.add_argument("--pulse", default=None, metavar="Q", help='its duration, e.g. "11 ms"')
+    g.add_argument("--record-file", default=None, metavar="FILE.csv",
+                   help="a recorded shock instead of a pulse: columns 'time [s]' and the value "
+                   "with its unit ('acceleration [g]' on the base, 'force [N]' on the mass), "
+                   "equally spaced from t = 0")  # fmt: skip
     g.add_argument(
         "--duration",
         default=None,
@@ -259,6 +267,9 @@ def run_random(ns) -> None:
     system = system_from(ns)
     f1, f2 = band_from("band", ns.band)
     if ns.psd_file is not None:
+        if ns.kanai_tajimi is not None:
+            raise ParameterError("kanai-tajimi", "shapes --base-psd's level; a --psd-file is its "
+                                 "own shape")  # fmt: skip
         if ns.force_load is not None or ns.base_load is not None:
             raise ParameterError(
                 "psd-file", "give the PSD once: --psd-file, --force-psd or --base-psd"
@@ -270,6 +281,17 @@ def run_random(ns) -> None:
                        "N^2/Hz" if kind == "force" else ACCELERATION_PSD)  # fmt: skip
         if psd < 0:
             raise ParameterError("force-psd" if kind == "force" else "base-psd", "must be ≥ 0")
+        if ns.kanai_tajimi is not None:
+            from ..forced.loads import kanai_tajimi
+
+            if kind != "base-acceleration":
+                raise ParameterError(
+                    "kanai-tajimi", "shapes a ground acceleration: give --base-psd"
+                )
+            parts = str(ns.kanai_tajimi).split(":")
+            if len(parts) != 2:
+                raise ParameterError("kanai-tajimi", f"must be FG:ZG, got {ns.kanai_tajimi!r}")
+            psd = kanai_tajimi(psd, parts[0].strip(), parts[1].strip())
     T = positive_float("duration", ns.duration, "s")
     dt = _sampling(ns, T, 1.0 / (2 * SAMPLES_PER_PERIOD * f2))
     n = count("realisations", ns.realisations, 1, 100_000_000)
@@ -327,16 +349,31 @@ def run_shock(ns) -> None:
     from ..units import positive_float
 
     system = system_from(ns)
-    kind, text = _kind(ns)
-    td = positive_float("pulse", ns.pulse, "s")
     fn = system.omega_n / (2 * math.pi)
-    if ns.duration is None:
-        total = max(20.0 / fn, td)
-        total = td / 200.0 * math.ceil(total / (td / 200.0))  # whole default steps
+    if ns.record_file is not None:
+        from ..errors import ParameterError
+        from ..forced.loads import read_record
+
+        given = [f"--{k.replace('_', '-')}" for k in ("pulse", "duration", "dt") if getattr(ns, k)]
+        if ns.force_load is not None or ns.base_load is not None or given:
+            raise ParameterError("record-file", "the record gives the load, its length and its "
+                                 "samples: drop --force-peak/--base-peak, --pulse, --duration and "
+                                 "--dt")  # fmt: skip
+        record = read_record(ns.record_file)
     else:
-        total = positive_float("duration", ns.duration, "s")
-    dt = _sampling(ns, total, td / 200.0)
-    record = shock_record(ns.shape, _height(ns, kind, text), td, total, dt, kind)
+        from ..errors import ParameterError
+
+        kind, text = _kind(ns)
+        if ns.pulse is None:
+            raise ParameterError("pulse", "give the pulse's duration (or --record-file)")
+        td = positive_float("pulse", ns.pulse, "s")
+        if ns.duration is None:
+            total = max(20.0 / fn, td)
+            total = td / 200.0 * math.ceil(total / (td / 200.0))  # whole default steps
+        else:
+            total = positive_float("duration", ns.duration, "s")
+        dt = _sampling(ns, total, td / 200.0)
+        record = shock_record(ns.shape, _height(ns, kind, text), td, total, dt, kind)
     lo, hi = (0.1 * fn, 10.0 * fn) if ns.srs_range is None else band_from("srs-range", ns.srs_range)
     n = count("srs-points", ns.srs_points, 2, 10_000)
     out = shock_response(system, record, e=ns.e, frequencies=np.geomspace(lo, hi, n),

@@ -206,3 +206,82 @@ def sweep_frequency(record_times: np.ndarray, f_start: float, f_end: float, rate
     if law == "linear":
         return f_start + sign * rate * record_times
     return f_start * np.exp(sign * rate / 60.0 * math.log(2.0) * record_times)
+
+
+@dataclass(frozen=True)
+class KanaiTajimi:
+    """The Kanai–Tajimi PSD of ground acceleration [(m/s²)²/Hz], called with frequencies [Hz]:
+    white noise of level ``s0`` filtered by a ground layer of natural frequency ``f_g`` [Hz] and
+    damping ratio ``zeta_g``, S(f) = s0·(1 + 4ζ²r²)/((1 − r²)² + 4ζ²r²) with r = f/f_g (the
+    absolute acceleration of the layer's oscillator under white noise at its base).  Build it
+    with :func:`kanai_tajimi`, which checks the values."""
+
+    s0: float
+    f_g: float
+    zeta_g: float
+
+    def __call__(self, f: np.ndarray) -> np.ndarray:
+        r2 = (np.asarray(f, dtype=float) / self.f_g) ** 2
+        z2 = 4.0 * self.zeta_g * self.zeta_g
+        return self.s0 * (1.0 + z2 * r2) / ((1.0 - r2) ** 2 + z2 * r2)
+
+
+def kanai_tajimi(s0: Any, f_g: Any, zeta_g: Any) -> KanaiTajimi:
+    """:class:`KanaiTajimi` of level ``s0`` [(m/s²)²/Hz], ground frequency ``f_g`` [Hz] and
+    damping ratio ``zeta_g`` (> 0), checked."""
+    s0 = si_float("psd", s0)
+    if s0 < 0:
+        raise ParameterError("psd", f"must be ≥ 0, got {s0:g}")
+    fg = positive_float("f_g", f_g, "Hz")
+    zg = checks.bounded("zeta_g", zeta_g, 0.0, None)
+    if zg <= 0:
+        raise ParameterError("zeta_g", "must be above 0")
+    return KanaiTajimi(s0, fg, zg)
+
+
+def read_record(path: str | Any, kind: str | None = None) -> Record:
+    """A recorded time history from a CSV file of two columns, time and value, each header with
+    its unit in brackets ("time [s]", "acceleration [g]" or "force [N]"): a force [N] or a base
+    acceleration [m/s², "g" standard gravity], told by the unit (or ``kind``).  The samples must
+    start at t = 0 and be equally spaced (to 1e-6 of the interval), as Eq. F8's recurrence
+    takes them."""
+    import csv
+    import re
+
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.reader(f))
+    except OSError as err:
+        raise ParameterError("record", f"cannot read {str(path)!r}: {err.strerror}") from None
+    if len(rows) < 3 or len(rows[0]) != 2:
+        raise ParameterError("record", "needs a header of two columns and at least two samples")
+    units = [re.search(r"\[(.+)\]", h) for h in rows[0]]
+    if not all(units):
+        raise ParameterError("record", "each column's header must give its unit in brackets, "
+                             "e.g. 'time [s]', 'acceleration [g]'")  # fmt: skip
+    t_unit, v_unit = (u.group(1).strip() for u in units)
+    try:
+        data = np.array([[float(a), float(b)] for a, b in rows[1:] if a.strip()])
+    except ValueError:
+        raise ParameterError("record", "holds a value that is not a number") from None
+    if not np.all(np.isfinite(data)):
+        raise ParameterError("record", "holds a value that is not finite")
+    t = data[:, 0] * si_float("record", f"1 {t_unit}", "s")
+    if kind is None:
+        try:
+            scale, kind = si_float("record", f"1 {v_unit}", "N"), "force"
+        except ParameterError:
+            scale, kind = si_float("record", f"1 {v_unit}", "m/s^2"), "base-acceleration"
+    else:
+        kind = _kind(kind)
+        scale = si_float("record", f"1 {v_unit}", KINDS[kind])
+    dts = np.diff(t)
+    if np.any(dts <= 0):
+        raise ParameterError("record", "time must increase from row to row")
+    if abs(t[0]) > 1e-9 * dts[0]:
+        raise ParameterError("record", f"must start at t = 0, starts at {t[0]:g} s")
+    dt = float(np.mean(dts))
+    if np.max(np.abs(dts - dt)) > 1e-6 * dt:
+        raise ParameterError("record", f"samples must be equally spaced; intervals from "
+                             f"{dts.min():g} to {dts.max():g} s")  # fmt: skip
+    return Record(data[:, 1] * scale, dt, kind)

@@ -37,7 +37,7 @@ ENSEMBLE_OUTPUTS = (*(f"rms_{k}" for k in KEYS), *(f"baseline_rms_{k}" for k in 
 @dataclass(frozen=True)
 class _EnsembleBase:
     system: ImpactSystem
-    psd: float | tuple[tuple[float, ...], tuple[float, ...]]  # a constant, or a table (f, S)
+    psd: Any  # a constant, a table (f, S) or a picklable callable (e.g. loads.KanaiTajimi)
     band: tuple[float, float]
     duration: float
     dt: float
@@ -49,6 +49,8 @@ class _EnsembleBase:
 
 
 def _psd(base: _EnsembleBase) -> float | Callable[[np.ndarray], np.ndarray]:
+    if callable(base.psd):
+        return base.psd
     if isinstance(base.psd, tuple):
         f, s = (np.array(a) for a in base.psd)
         return lambda x: np.interp(x, f, s, left=0.0, right=0.0)
@@ -105,8 +107,9 @@ def random_ensemble(
     progress: bool | Callable[[int, int], None] = False,
 ) -> tuple[RandomStatistics, Any]:
     """(statistics, table of rows) of ``realisations`` random-vibration runs as a map (module
-    text); ``psd`` a constant one-sided PSD [N²/Hz or (m/s²)²/Hz] or a table (frequencies [Hz],
-    values), the other arguments as :func:`symimpact.forced.random_response.random_statistics`;
+    text); ``psd`` a constant one-sided PSD [N²/Hz or (m/s²)²/Hz], a table (frequencies [Hz],
+    values) or a picklable function of frequency (:class:`~symimpact.forced.loads.KanaiTajimi`),
+    the other arguments as :func:`symimpact.forced.random_response.random_statistics`;
     ``executor``, ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
     :func:`symimpact.maps.parameter_map` (``out``: a resumable CSV or Parquet file)."""
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
@@ -126,6 +129,8 @@ def random_ensemble(
         if len(f) != len(s) or len(f) < 2 or np.any(np.diff(f) <= 0) or min(s) < 0:
             raise ParameterError("psd", "a table needs increasing frequencies and values ≥ 0")
         table_psd: Any = (f, s)
+    elif callable(psd):
+        table_psd = psd  # run in the workers as it is: it must pickle (a module-level class)
     else:
         table_psd = checks.bounded("psd", psd, 0.0)
     base = _EnsembleBase(system, table_psd, (lo, hi), T, dt, seed, e, settle, kind,
