@@ -47,7 +47,10 @@ def test_a_record_read_from_csv_is_the_record_it_was_written_from(tmp_path):
     record = shock_record("half-sine", 20 * G, 0.011, 0.2, 1e-4, "base-acceleration")
     path = tmp_path / "shock.csv"
     lines = ["time [ms],acceleration [g]"]
-    lines += [f"{float(t) * 1e3!r},{float(a) / G!r}" for t, a in zip(record.times, record.values, strict=True)]
+    lines += [
+        f"{float(t) * 1e3!r},{float(a) / G!r}"
+        for t, a in zip(record.times, record.values, strict=True)
+    ]
     path.write_text("\n".join(lines) + "\n")
     back = read_record(path)
     assert back.kind == "base-acceleration"
