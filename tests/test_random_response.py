@@ -117,3 +117,37 @@ def test_bad_input_is_refused_in_one_line():
         random_statistics(SYSTEM, S0, BAND, 20.0, 0.002, e=0.6, segment=30.0)
     with pytest.raises(ParameterError, match="settle"):
         random_statistics(SYSTEM.with_(C=0.0), S0, BAND, 20.0, 0.002, e=0.6)
+
+
+def test_the_peak_distribution_out_of_reach_is_vanmarckes():
+    """The largest |x| of each realisation over its RMS (the peak factor), the primary alone:
+    its mean against Vanmarcke's first-passage approximation for a stationary Gaussian process
+    (1975; ν₀ and the bandwidth δ from the response's spectral moments, δₑ = δ^1.2), for the
+    double barrier |x| = rσ (crossed at the rate 2ν₀),
+    P(peak < rσ) = exp(−2ν₀T e^(−r²/2) (1 − e^(−√(π/2) δₑ r))/(1 − e^(−r²/2))).  The formula is
+    good to a few per cent for such narrow-band responses (over seven seeds the means fell 3 %
+    below to 0.7 % above it), and 32 realisations know the mean to about 1.5 %: within 6 %.
+    Davenport's (no clumping of peaks) lies well above."""
+    st = random_statistics(SYSTEM.with_(gap=1e3), S0, BAND, 200.0, 0.002, e=0.6,
+                           realisations=32, seed=3)  # fmt: skip
+    factor = st.baseline_peak["displacement"] / st.baseline_per_realisation["displacement"]
+    fn = np.sqrt(1000.0) / (2 * np.pi)
+
+    def h2(f):
+        w = 2 * np.pi * f
+        return S0 / ((1000.0 - w * w) ** 2 + (0.5 * w) ** 2)
+
+    lam = [integrate.quad(lambda f, k=k: (2 * np.pi * f) ** k * h2(f), *BAND, points=[fn],
+                          limit=400)[0] for k in (0, 1, 2)]  # fmt: skip
+    delta_e = np.sqrt(1 - lam[1] ** 2 / (lam[0] * lam[2])) ** 1.2
+    nu_t = 2 * np.sqrt(lam[2] / lam[0]) / (2 * np.pi) * 200.0  # both barriers
+    r = np.linspace(1e-3, 10.0, 20_001)
+    below = np.exp(-nu_t * np.exp(-r * r / 2) * (1 - np.exp(-np.sqrt(np.pi / 2) * delta_e * r))
+                   / (1 - np.exp(-r * r / 2)))  # fmt: skip
+    vanmarcke = np.trapezoid(1 - below, r)
+    assert abs(np.mean(factor) / vanmarcke - 1) < 0.06
+    davenport = np.sqrt(2 * np.log(nu_t)) + 0.5772 / np.sqrt(2 * np.log(nu_t))
+    assert np.mean(factor) < davenport - 0.15
+    assert st.as_dict()["baseline_peak"]["displacement"]["max"] == np.max(
+        st.baseline_peak["displacement"]
+    )

@@ -65,7 +65,9 @@ class RandomStatistics:
     {key: (lo, hi)}; ``reduction``: {key: mean of 1 − rms/baseline}; ``per_realisation``:
     {key: array of each realisation's RMS}, likewise ``baseline_per_realisation``;
     ``psd_frequency`` [Hz], ``psd`` and ``baseline_psd`` [m²/Hz] of the displacement;
-    ``impacts_per_second``: the mean rate of impacts."""
+    ``impacts_per_second``: the mean rate of impacts; ``peak``, ``baseline_peak``: {key: the
+    largest |value| of each realisation (at the samples, after ``settle``)}, whose spread over
+    the realisations is the peak's distribution over records of this duration."""
 
     rms: dict[str, float]
     rms_ci95: dict[str, tuple[float, float]]
@@ -79,6 +81,8 @@ class RandomStatistics:
     baseline_psd: np.ndarray
     psd_resolution: float
     impacts_per_second: float
+    peak: dict[str, np.ndarray]
+    baseline_peak: dict[str, np.ndarray]
     realisations: int
     seed: int
     settle: float
@@ -93,6 +97,22 @@ class RandomStatistics:
             "reduction": dict(self.reduction),
             "reduction_ci95": {k: list(v) for k, v in self.reduction_ci95.items()},
             "impacts_per_second": self.impacts_per_second,
+            "peak": {
+                k: {
+                    "mean": float(np.mean(v)),
+                    "median": float(np.median(v)),
+                    "max": float(np.max(v)),
+                }
+                for k, v in self.peak.items()
+            },
+            "baseline_peak": {
+                k: {
+                    "mean": float(np.mean(v)),
+                    "median": float(np.median(v)),
+                    "max": float(np.max(v)),
+                }
+                for k, v in self.baseline_peak.items()
+            },
             "psd_resolution": self.psd_resolution,
             "realisations": self.realisations,
             "seed": self.seed,
@@ -135,9 +155,11 @@ def realisation(
     ours = damper_response(system, record, e=e, chatter=chatter)
     alone = primary_response(system, record)
     keep = np.arange(len(record.values)) >= n_settle
-    out: dict[str, Any] = {"rms": {}, "baseline": {}}
+    out: dict[str, Any] = {"rms": {}, "baseline": {}, "peak": {}, "baseline_peak": {}}
     for key in KEYS:
         out["rms"][key] = float(np.sqrt(np.mean(getattr(ours, key)[keep] ** 2)))
+        out["peak"][key] = float(np.max(np.abs(getattr(ours, key)[keep])))
+        out["baseline_peak"][key] = float(np.max(np.abs(getattr(alone, key)[keep])))
         out["baseline"][key] = float(np.sqrt(np.mean(getattr(alone, key)[keep] ** 2)))
     out["impacts"] = int(np.sum(ours.impact_times >= n_settle * dt))
     if not welch:
@@ -213,6 +235,10 @@ def combine(
         baseline_psd=np.mean([p[2] for p in spectra], axis=0) if spectra else np.zeros(0),
         psd_resolution=float(f[1] - f[0]) if len(f) > 1 else math.nan,
         impacts_per_second=float(np.mean([r["impacts"] for r in runs]) / duration),
+        peak={k: np.array([r.get("peak", {}).get(k, math.nan) for r in runs]) for k in KEYS},
+        baseline_peak={
+            k: np.array([r.get("baseline_peak", {}).get(k, math.nan) for r in runs]) for k in KEYS
+        },
         realisations=len(runs),
         seed=seed,
         settle=settle,
