@@ -5,9 +5,7 @@ the primary alone on the same load; the flight between impacts is exact for the 
 
 from __future__ import annotations
 
-import csv
 import math
-import re
 import sys
 from typing import Any
 
@@ -226,24 +224,10 @@ def psd_points(path: str) -> tuple[np.ndarray, np.ndarray]:
 
 def _psd_file(path: str):
     from ..errors import ParameterError
+    from ..forced.loads import unit_columns
     from ..units import ACCELERATION_PSD, si_float
 
-    try:
-        with open(path, newline="") as f:
-            rows = list(csv.reader(f))
-    except OSError as err:
-        raise ParameterError("psd-file", f"cannot read {path!r}: {err.strerror}") from None
-    if len(rows) < 3 or len(rows[0]) != 2:
-        raise ParameterError("psd-file", "needs a header of two columns and at least two rows")
-    units = [re.search(r"\[(.+)\]", h) for h in rows[0]]
-    if not all(units):
-        raise ParameterError("psd-file", "each column's header must give its unit in brackets, "
-                             "e.g. 'frequency [Hz]', 'psd [g^2/Hz]'")  # fmt: skip
-    f_unit, s_unit = (u.group(1).strip() for u in units)
-    try:
-        values = np.array([[float(a), float(b)] for a, b in rows[1:] if a.strip()])
-    except ValueError:
-        raise ParameterError("psd-file", "holds a value that is not a number") from None
+    (f_unit, s_unit), values = unit_columns(path, "psd-file", ("frequency [Hz]", "psd [g^2/Hz]"))
     f = values[:, 0] * si_float("psd-file", f"1 {f_unit}", "Hz")
     try:
         scale, kind = si_float("psd-file", f"1 {s_unit}", "N^2/Hz"), "force"

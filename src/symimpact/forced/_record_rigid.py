@@ -120,6 +120,38 @@ def _wall_safe(h, side, mu, K, C, p0, pd, g0, gd, x0, v0, z0, u0, A, J, Q):
 
 
 @njit(cache=True)
+def _value(which, p, side, mu, p0, pd, g0, gd, x0, v0, z0, u0, level, s):
+    """s into the piece: side·z − level (``which`` 0: the gap to the wall ``side``) or the stuck
+    pair's side·ẍ_abs − level (``which`` 1: the pull the wall would need)."""
+    if which == 0:
+        return side * _z(mu, p[P_K], p[P_C], p0, pd, g0, gd, x0, v0, z0, u0, s) - level
+    return _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, s) - level
+
+
+@njit(cache=True)
+def _first_root(which, p, side, mu, p0, pd, g0, gd, x0, v0, z0, u0, level, lo, hi, flo, fhi):
+    """Where :func:`_value` reaches 0 in (lo, hi], bracketed by flo < 0 ≤ fhi: Illinois regula
+    falsi to 4e-16 of the time (the bracket's end on the reached side is returned)."""
+    kept = 0
+    for _ in range(200):
+        tm = secant_point(lo, hi, flo, fhi)
+        fm = _value(which, p, side, mu, p0, pd, g0, gd, x0, v0, z0, u0, level, tm)
+        if fm >= 0.0:
+            hi, fhi = tm, fm
+            if kept == 1:
+                flo *= 0.5
+            kept = 1
+        else:
+            lo, flo = tm, fm
+            if kept == -1:
+                fhi *= 0.5
+            kept = -1
+        if hi - lo <= 4e-16 * hi:
+            break
+    return hi
+
+
+@njit(cache=True)
 def _next_impact(p, mu, p0, pd, g0, gd, x0, v0, z0, u0, side0, L):
     """(s, side): the first s in (0, L] with abs(z) = d/2 in the piece, and its wall; (L, 0) when
     there is none.  ``side0`` is the wall the piece starts on (0: none)."""
@@ -150,26 +182,9 @@ def _next_impact(p, mu, p0, pd, g0, gd, x0, v0, z0, u0, side0, L):
             continue
         if abs(zb) >= h:
             s = 1.0 if zb > 0 else -1.0
-            lo, hi = tau, tb
-            flo = min(s * za - h, 0.0)
-            fhi = s * zb - h
-            kept = 0
-            for _ in range(200):
-                tm = secant_point(lo, hi, flo, fhi)
-                fm = s * _z(mu, K, C, p0, pd, g0, gd, x0, v0, z0, u0, tm) - h
-                if fm >= 0.0:
-                    hi, fhi = tm, fm
-                    if kept == 1:
-                        flo *= 0.5
-                    kept = 1
-                else:
-                    lo, flo = tm, fm
-                    if kept == -1:
-                        fhi *= 0.5
-                    kept = -1
-                if hi - lo <= 4e-16 * hi:
-                    break
-            return hi, int(s)
+            hit = _first_root(0, p, s, mu, p0, pd, g0, gd, x0, v0, z0, u0, h, tau, tb,
+                              min(s * za - h, 0.0), s * zb - h)  # fmt: skip
+            return hit, int(s)
         tau, za = tb, zb  # an excursion below 1e-20 of the clearance
         H = hmax
     return L, 0
@@ -212,24 +227,8 @@ def _release(p, side, mu, p0, pd, g0, gd, x0, v0, L):
             H *= 0.5
             continue
         if fb > 0.0:
-            lo, hi, flo, fhi = tau, tb, min(fa, -1e-300), fb
-            kept = 0
-            for _ in range(200):
-                tm = secant_point(lo, hi, flo, fhi)
-                fm = _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, tm) - tol
-                if fm > 0.0:
-                    hi, fhi = tm, fm
-                    if kept == 1:
-                        flo *= 0.5
-                    kept = 1
-                else:
-                    lo, flo = tm, fm
-                    if kept == -1:
-                        fhi *= 0.5
-                    kept = -1
-                if hi - lo <= 4e-16 * hi:
-                    break
-            return hi
+            return _first_root(1, p, side, mu, p0, pd, g0, gd, x0, v0, 0.0, 0.0, tol, tau, tb,
+                               min(fa, -1e-300), fb)  # fmt: skip
         tau, fa = tb, fb  # a pull below 1e-20 of the pair's acceleration scale
         H = hmax
     return L

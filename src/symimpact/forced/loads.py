@@ -239,12 +239,11 @@ def kanai_tajimi(s0: Any, f_g: Any, zeta_g: Any) -> KanaiTajimi:
     return KanaiTajimi(s0, fg, zg)
 
 
-def read_record(path: str | Any, kind: str | None = None) -> Record:
-    """A recorded time history from a CSV file of two columns, time and value, each header with
-    its unit in brackets ("time [s]", "acceleration [g]" or "force [N]"): a force [N] or a base
-    acceleration [m/s², "g" standard gravity], told by the unit (or ``kind``).  The samples must
-    start at t = 0 and be equally spaced (to 1e-6 of the interval), as Eq. F8's recurrence
-    takes them."""
+def unit_columns(
+    path: Any, name: str, example: tuple[str, str]
+) -> tuple[tuple[str, str], np.ndarray]:
+    """((unit, unit), rows) of a CSV file of two numeric columns whose headers give their units
+    in brackets (``example``: two such headers, for the refusal); refused naming ``name``."""
     import csv
     import re
 
@@ -252,20 +251,29 @@ def read_record(path: str | Any, kind: str | None = None) -> Record:
         with open(path, newline="") as f:
             rows = list(csv.reader(f))
     except OSError as err:
-        raise ParameterError("record", f"cannot read {str(path)!r}: {err.strerror}") from None
+        raise ParameterError(name, f"cannot read {str(path)!r}: {err.strerror}") from None
     if len(rows) < 3 or len(rows[0]) != 2:
-        raise ParameterError("record", "needs a header of two columns and at least two samples")
+        raise ParameterError(name, "needs a header of two columns and at least two rows")
     units = [re.search(r"\[(.+)\]", h) for h in rows[0]]
     if not all(units):
-        raise ParameterError("record", "each column's header must give its unit in brackets, "
-                             "e.g. 'time [s]', 'acceleration [g]'")  # fmt: skip
-    t_unit, v_unit = (u.group(1).strip() for u in units)
+        raise ParameterError(name, "each column's header must give its unit in brackets, "
+                             f"e.g. '{example[0]}', '{example[1]}'")  # fmt: skip
     try:
         data = np.array([[float(a), float(b)] for a, b in rows[1:] if a.strip()])
     except ValueError:
-        raise ParameterError("record", "holds a value that is not a number") from None
+        raise ParameterError(name, "holds a value that is not a number") from None
     if not np.all(np.isfinite(data)):
-        raise ParameterError("record", "holds a value that is not finite")
+        raise ParameterError(name, "holds a value that is not finite")
+    return (units[0].group(1).strip(), units[1].group(1).strip()), data
+
+
+def read_record(path: str | Any, kind: str | None = None) -> Record:
+    """A recorded time history from a CSV file of two columns, time and value, each header with
+    its unit in brackets ("time [s]", "acceleration [g]" or "force [N]"): a force [N] or a base
+    acceleration [m/s², "g" standard gravity], told by the unit (or ``kind``).  The samples must
+    start at t = 0 and be equally spaced (to 1e-6 of the interval), as Eq. F8's recurrence
+    takes them."""
+    (t_unit, v_unit), data = unit_columns(path, "record", ("time [s]", "acceleration [g]"))
     t = data[:, 0] * si_float("record", f"1 {t_unit}", "s")
     if kind is None:
         try:
