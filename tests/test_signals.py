@@ -3,7 +3,7 @@
 SIGINT inside a compiled run was a segmentation fault, or exit 70 with "SystemError ... returned
 a result with an exception set"), never an internal error.
 
-Slow (about six minutes): the README's test command leaves it out; CI runs it in its second step
+Slow (about seven minutes): the README's test command leaves it out; CI runs it in its second step
 (``python -m pytest -m slow``).  The moments are drawn from a generator seeded by the command's
 name, so a failure names a reproducible moment; they start after the interpreter's own start-up
 (0.15 s to ``main`` on the reference machine, where a signal meets Python's default handler
@@ -83,6 +83,38 @@ COMMANDS = {
             "--gaps",
             "19 mm,21 mm",
             "--no-refine",
+        ],
+    ),
+    # random vibration (issue 37): 500 realisations in-process, each a compiled run and SciPy's
+    # Welch between them
+    "random": (
+        [
+            "random",
+            *SYS[:10],
+            "--e",
+            "0.6",
+            "--force-psd",
+            "0.02 N^2/Hz",
+            "--band",
+            "0.2:50",
+            "--duration",
+            "100",
+            "--realisations",
+            "500",
+        ],
+        [
+            "random",
+            *SYS[:10],
+            "--e",
+            "0.6",
+            "--force-psd",
+            "0.02 N^2/Hz",
+            "--band",
+            "0.2:50",
+            "--duration",
+            "10",
+            "--realisations",
+            "1",
         ],
     ),
 }
