@@ -66,7 +66,7 @@ class RandomStatistics:
     {key: array of each realisation's RMS}, likewise ``baseline_per_realisation``;
     ``psd_frequency`` [Hz], ``psd`` and ``baseline_psd`` [m²/Hz] of the displacement;
     ``impacts_per_second``: the mean rate of impacts; ``peak``, ``baseline_peak``: {key: the
-    largest |value| of each realisation (at the samples, after ``settle``)}, whose spread over
+    largest abs(value) of each realisation (at the samples, after ``settle``)}, whose spread over
     the realisations is the peak's distribution over records of this duration."""
 
     rms: dict[str, float]

@@ -79,7 +79,7 @@ def motion_srs(
 @dataclass(frozen=True)
 class ShockResult:
     """A shock on the primary with and without its damper (SI): ``peak`` and ``baseline_peak``
-    the largest |x| [m] (relative to the base under a base acceleration), ``peak_acceleration``
+    the largest abs(x) [m] (relative to the base under a base acceleration), ``peak_acceleration``
     and ``baseline_peak_acceleration`` the largest absolute acceleration between impacts
     [m/s²], ``frequency`` [Hz], ``srs`` and ``baseline_srs`` [m/s²] (module docstring),
     ``impacts`` the number of impacts."""

@@ -1,5 +1,5 @@
 """Sine sweeps through the band on the primary with its impact damper: the envelope of the
-displacement against the sweep's instantaneous frequency (the largest |x| over each of its
+displacement against the sweep's instantaneous frequency (the largest abs(x) over each of its
 periods), swept up and down, with and without the damper — the run-up a machine makes through
 its resonance, beside the steady curve of ``frf``.  Each sweep is a record of
 :func:`symimpact.forced.loads.sweep_record`; the response is exact for it (Eq. F8 on each
@@ -24,7 +24,7 @@ from .simulation import CHATTER
 def envelope(
     displacement: np.ndarray, frequency: np.ndarray, dt: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """(instantaneous frequency [Hz], largest |x| [m]) over each period of a sweep whose
+    """(instantaneous frequency [Hz], largest abs(x) [m]) over each period of a sweep whose
     instantaneous frequency at the samples is ``frequency``: the periods follow one another,
     each 1/f long at its start."""
     starts = [0]
@@ -46,7 +46,7 @@ def envelope(
 @dataclass(frozen=True)
 class SweepResult:
     """Envelopes of a sweep up and down (SI): for each direction, the instantaneous frequency
-    [Hz] at the middle of each period and the largest |x| [m] over it with and without the
+    [Hz] at the middle of each period and the largest abs(x) [m] over it with and without the
     damper; ``peak``/``baseline_peak`` the largest of each direction."""
 
     up: dict[str, np.ndarray]
