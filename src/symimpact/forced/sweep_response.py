@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from ..system import ImpactSystem
+from ..units import positive_float
 from .loads import sweep_frequency, sweep_record
 from .record_flight import primary_response
 from .record_response import damper_response
@@ -75,26 +76,18 @@ def sweep_response(
 ) -> SweepResult:  # fmt: skip
     """Sweeps of ``amplitude`` [N, or m/s² for a base acceleration] from ``f_low`` to ``f_high``
     [Hz] and back down (two runs from rest), ``rate`` in Hz/s (``law`` "linear") or octaves a
-    minute ("log"), sampled every ``dt`` [s]; rigid impacts with ``e``."""
+    minute ("log"), sampled every ``dt`` [s]; rigid impacts with ``e`` (Eq. F2; the flight
+    Eq. F8 on each interval of the record)."""
+    f_low = positive_float("f_low", f_low, "Hz")
+    f_high = positive_float("f_high", f_high, "Hz")
+    rate = positive_float("rate", rate)
     out = {}
     for name, (fa, fb) in (("up", (f_low, f_high)), ("down", (f_high, f_low))):
         record = sweep_record(amplitude, fa, fb, rate, dt, law, kind)
-        freq = sweep_frequency(record.times, _hz(fa), _hz(fb), _rate(rate), law)
+        freq = sweep_frequency(record.times, fa, fb, rate, law)
         ours = damper_response(system, record, e=e, chatter=chatter)
         alone = primary_response(system, record)
         f, a = envelope(ours.displacement, freq, record.dt)
         _, b = envelope(alone.displacement, freq, record.dt)
         out[name] = {"frequency": f, "envelope": a, "baseline": b}
     return SweepResult(out["up"], out["down"])
-
-
-def _hz(value: Any) -> float:
-    from ..units import positive_float
-
-    return positive_float("f", value, "Hz")
-
-
-def _rate(value: Any) -> float:
-    from ..units import positive_float
-
-    return positive_float("rate", value)
