@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import sys
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -210,7 +211,7 @@ def count(name: str, text: str, low: int, high: int) -> int:
     return whole_number(name, value, low, high)
 
 
-def psd_table(path: str):
+def psd_table(path: str) -> tuple[Callable[[np.ndarray], np.ndarray], str]:
     """(function of f [Hz] → PSD [SI], kind) from a CSV table (see ``--psd-file``)."""
     f, s, kind = _psd_file(path)
     return (lambda x: np.interp(x, f, s, left=0.0, right=0.0)), kind

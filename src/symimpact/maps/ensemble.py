@@ -73,7 +73,7 @@ def _ensemble_chunk(payload: tuple[_EnsembleBase, tuple[str, ...], list[int], np
     return rows
 
 
-def ensemble_table(rows: list[dict[str, Any]], names: Any = ("realisation",)):
+def ensemble_table(rows: list[dict[str, Any]], names: Any = ("realisation",)) -> Any:
     """Ensemble rows as a DataFrame, in run order, with fixed columns and dtypes."""
     import pandas as pd
 
