@@ -33,6 +33,12 @@ def _simulate(*contact: str, periods: int) -> tuple[list[str], list[str]]:
     return [*line, str(periods)], [*line, "3"]
 
 
+def _random(duration: int, realisations: int) -> list[str]:
+    """symimpact random on SYS's system (its force replaced by a flat force PSD)."""
+    return ["random", *SYS[:10], "--e", "0.6", "--force-psd", "0.02 N^2/Hz", "--band", "0.2:50",
+            "--duration", str(duration), "--realisations", str(realisations)]  # fmt: skip
+
+
 #: (command line, a short run of the same code path that compiles it first).  Each full run lasts
 #: 5–60 s on the 2-core reference machine (6 s and more), longer than the latest moment drawn.
 COMMANDS = {
@@ -87,36 +93,7 @@ COMMANDS = {
     ),
     # random vibration (issue 37): 500 realisations in-process, each a compiled run and SciPy's
     # Welch between them
-    "random": (
-        [
-            "random",
-            *SYS[:10],
-            "--e",
-            "0.6",
-            "--force-psd",
-            "0.02 N^2/Hz",
-            "--band",
-            "0.2:50",
-            "--duration",
-            "100",
-            "--realisations",
-            "500",
-        ],
-        [
-            "random",
-            *SYS[:10],
-            "--e",
-            "0.6",
-            "--force-psd",
-            "0.02 N^2/Hz",
-            "--band",
-            "0.2:50",
-            "--duration",
-            "10",
-            "--realisations",
-            "1",
-        ],
-    ),
+    "random": (_random(duration=100, realisations=500), _random(duration=10, realisations=1)),
 }
 #: Moments per command.
 MOMENTS = 20

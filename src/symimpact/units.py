@@ -380,7 +380,7 @@ def si(name: str, value: Any, unit: str | None = None) -> Any:
             unit_text = "standard_gravity"
         elif unit == ACCELERATION_PSD:  # g²/Hz, as vibration specifications write it
             unit_text = re.sub(r"(?<![A-Za-z_])(gn|g0|g)(?![A-Za-z_0-9])", "standard_gravity",
-                               unit_text.replace("²", "^2"))  # fmt: skip
+                               unit_text)  # fmt: skip
         # a bare number written as text means SI; a unit is read by pint, without the number
         value = _unit_to_si(name, value, number, unit_text, unit) if unit_text else number
     elif hasattr(value, "dimensionality"):

@@ -387,11 +387,13 @@ def run_sweep(ns) -> None:
     """``symimpact sweep-sine``."""
     from ..forced.loads import SAMPLES_PER_PERIOD
     from ..forced.sweep_response import sweep_response
+    from ..units import positive_float
 
     system = system_from(ns)
     kind, text = _kind(ns)
     f1, f2 = band_from("band", ns.band)
-    dt = _sampling(ns, 1.0, 1.0 / (2 * SAMPLES_PER_PERIOD * f2))  # (a sweep ends where it ends)
+    # a sweep's length follows from its band and rate: --dt as given, or 20 samples a period
+    dt = positive_float("dt", ns.dt, "s") if ns.dt else 1.0 / (2 * SAMPLES_PER_PERIOD * f2)
     out = sweep_response(
         system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=ns.e, law=ns.law, kind=kind
     )

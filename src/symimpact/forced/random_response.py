@@ -97,28 +97,20 @@ class RandomStatistics:
             "reduction": dict(self.reduction),
             "reduction_ci95": {k: list(v) for k, v in self.reduction_ci95.items()},
             "impacts_per_second": self.impacts_per_second,
-            "peak": {
-                k: {
-                    "mean": float(np.mean(v)),
-                    "median": float(np.median(v)),
-                    "max": float(np.max(v)),
-                }
-                for k, v in self.peak.items()
-            },
-            "baseline_peak": {
-                k: {
-                    "mean": float(np.mean(v)),
-                    "median": float(np.median(v)),
-                    "max": float(np.max(v)),
-                }
-                for k, v in self.baseline_peak.items()
-            },
+            "peak": {k: _spread(v) for k, v in self.peak.items()},
+            "baseline_peak": {k: _spread(v) for k, v in self.baseline_peak.items()},
             "psd_resolution": self.psd_resolution,
             "realisations": self.realisations,
             "seed": self.seed,
             "settle": self.settle,
             "duration": self.duration,
         }
+
+
+def _spread(values: np.ndarray) -> dict[str, float]:
+    """Mean, median and largest of the realisations' ``values`` (a peak's distribution)."""
+    return {"mean": float(np.mean(values)), "median": float(np.median(values)),
+            "max": float(np.max(values))}  # fmt: skip
 
 
 def _interval(values: np.ndarray) -> tuple[float, float]:
