@@ -37,3 +37,14 @@ def pytest_configure(config: pytest.Config) -> None:
 @pytest.fixture(scope="session")
 def boards():
     return {step: board(step) for step in STEPS}
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """Under pytest-xdist (``-n 2``, as the README runs the tests), keep what shares a costly
+    fixture on one worker: every module that reads the derivation boards on one (the sixteen steps
+    are derived once, minutes, not once per worker), and each other module on one (its
+    module-scoped fixtures, such as a report or a continuation, are computed once)."""
+    with_boards = {item.module.__name__ for item in items if "boards" in item.fixturenames}
+    for item in items:
+        name = item.module.__name__
+        item.add_marker(pytest.mark.xdist_group("boards" if name in with_boards else name))
