@@ -180,7 +180,7 @@ def test_lanes_give_the_scalar_loops_bits(boards, name, tol, max_iter):
 def test_where_newton_and_the_iteration_part(boards):
     """Every figure of the docs paragraph "Where Newton and the iteration reach different fixed
     points" (docs/kernels.md), recomputed from the same 2·10⁶ seeded points; the paragraph must
-    state exactly these figures."""
+    state these figures (two counts within 20 points, below)."""
     import re
     from pathlib import Path
 
@@ -205,8 +205,7 @@ def test_where_newton_and_the_iteration_part(boards):
     figures = [
         f"{n:,} points",
         "seed 20261122",
-        f"converge at {both.sum():,} of the points",
-        f"differ at {part.sum():,} of those ({100 * part.sum() / both.sum():.2f} %)",
+        f"({100 * part.sum() / both.sum():.2f} %)",
         f"within {ceil(residual * 1e15, 1):.1f}e-15 of itself",
         f"κ = 3a·Ż₀²·(T/π)²/(4b) ≥ {floor(kappa[part].min(), 0):.0f}",
         f"the median κ is {np.median(kappa[both]):.2g}",
@@ -218,6 +217,13 @@ def test_where_newton_and_the_iteration_part(boards):
     text = re.sub(r"\s+", " ", doc.read_text())
     missing = [f for f in figures if f not in text]
     assert not missing, missing
+    # The two counts are stated as one CPU gave them: points whose iteration ends on its last
+    # allowed step flip with the last bit of libm's pow and sqrt (3 of the 2·10⁶ points between an
+    # Intel Xeon and an AMD EPYC). They must hold within 1e-5 of the points (20).
+    stated = re.search(r"converge at ([\d,]+) of the points\. They differ at ([\d,]+) of", text)
+    assert stated, "the paragraph no longer states the two counts"
+    for count, computed in zip(stated.groups(), (both.sum(), part.sum()), strict=True):
+        assert abs(int(count.replace(",", "")) - int(computed)) <= 1e-5 * n, (count, computed)
 
 
 def test_the_kernel_page_example_runs_on_the_impact_mode():
