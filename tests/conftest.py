@@ -39,6 +39,7 @@ def boards():
     return {step: board(step) for step in STEPS}
 
 
+@pytest.hookimpl(tryfirst=True)  # before pytest-xdist's own hook reads the groups
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     """Under pytest-xdist (``-n 2``, as the README runs the tests), keep what shares a costly
     fixture on one worker: every module that reads the derivation boards on one (the sixteen steps
