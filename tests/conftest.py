@@ -17,7 +17,7 @@ from __future__ import annotations
 import pytest
 from hypothesis import settings
 
-from derive import STEPS, board
+from derive import cache
 
 settings.register_profile("ci", derandomize=True, database=None, print_blob=True)
 settings.register_profile("explore", derandomize=False, database=None, print_blob=True)
@@ -36,7 +36,9 @@ def pytest_configure(config: pytest.Config) -> None:
 
 @pytest.fixture(scope="session")
 def boards():
-    return {step: board(step) for step in STEPS}
+    """{step: Board}: read back when this derivation code was derived before in the checkout (by
+    ``python -m derive``, ``--check`` or the docs build; derive/cache.py), derived otherwise."""
+    return cache.boards()
 
 
 @pytest.hookimpl(tryfirst=True)  # before pytest-xdist's own hook reads the groups

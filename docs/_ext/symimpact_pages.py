@@ -71,9 +71,17 @@ def _cell(text: str) -> str:
 
 
 @functools.cache
+def _boards() -> dict:
+    """Every step's board, derived once per build, or read back from what the last derivation of
+    this same code kept (derive/cache.py)."""
+    from derive import cache
+
+    return cache.boards()
+
+
 def _board(step: str):
-    """The board of one derivation step, derived once per build."""
-    return importlib.import_module(f"derive.{step}").derive()
+    """The board of one derivation step."""
+    return _boards()[step]
 
 
 def derivation_page(step: str) -> str:
