@@ -43,7 +43,7 @@ def boards():
 
 @pytest.hookimpl(tryfirst=True)  # before pytest-xdist's own hook reads the groups
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
-    """Under pytest-xdist (``-n 2``, as the README runs the tests), keep what shares a costly
+    """Under pytest-xdist (``-n auto``, as the README runs the tests), keep what shares a costly
     fixture on one worker: every module that reads the derivation boards on one (the sixteen steps
     are derived once, minutes, not once per worker), and each other module on one (its
     module-scoped fixtures, such as a report or a continuation, are computed once)."""
