@@ -82,6 +82,9 @@ def test_sweep_sine_runs_up_and_down(capsys, tmp_path):
         env = out[name]["envelope"]
         assert len(env) > 20
         assert out[name]["peak"] == max(r["envelope"] for r in env)
+    # the steady curve of frf beside it: its located peak is no sample's
+    steady = out["steady"]
+    assert steady["stable"] and steady["peak"] >= max(r["amplitude"] for r in steady["stable"])
     assert plot.stat().st_size > 10_000
 
 

@@ -8,6 +8,7 @@ import pytest
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, simulate_forced
 from symimpact.forced.loads import shock_record
+from symimpact.forced.periodic import periodic_orbits
 from symimpact.forced.record_flight import srs
 from symimpact.forced.shock_response import base_motion, motion_srs, shock_response
 from symimpact.forced.sweep_response import sweep_response
@@ -95,3 +96,25 @@ def test_bad_shock_and_sweep_input_is_refused():
         sweep_response(SYSTEM, 2.0, 5.0, 6.5, 0.0, 0.002, e=0.6)
     with pytest.raises(ParameterError, match="duration"):
         shock_record("half-sine", 50.0, 0.011, 0.005, 1e-4)
+
+
+def test_the_steady_curve_beside_a_sweep_holds_the_closed_form_orbits():
+    """The steady curve drawn beside a sweep (sweep-sine's JSON "steady"): its stable orbit at
+    its highest frequency is the symmetric two-impact orbit of the closed form (Step 10, solved
+    there without shooting or continuation); the linear curve under a base acceleration A_b is
+    the closed form of x − x_b, M·A_b/abs(K − MΩ² + iCΩ)."""
+    out = sweep_response(SYSTEM, 2.0, 5.5, 6.5, 0.2, 0.002, e=0.6, steady=True).as_dict()
+    stable = out["steady"]["stable"]
+    top = max(r["frequency"] for r in stable)
+    here = [r["amplitude"] for r in stable if r["frequency"] == top]
+    closed = [o.amplitude for o in periodic_orbits(SYSTEM, Forcing(F0=2.0, freq=top), 0.6)
+              if o.admissible and o.stable]  # fmt: skip
+    # the branch's orbit is shot to ~1e-12 of the state; the closed form solves for its phase
+    assert min(abs(a / c - 1) for a in here for c in closed) < 1e-9
+    base = sweep_response(SYSTEM, 0.2 * 9.80665, 4.0, 6.5, 0.2, 0.002, e=0.6,
+                          kind="base-acceleration", steady=True).steady  # fmt: skip
+    w = 2 * np.pi * base.linear[:, 0]
+    linear = 0.2 * 9.80665 / np.abs(1000.0 - w**2 + 0.5j * w)
+    # the same complex quotient evaluated two ways: rounding only
+    np.testing.assert_allclose(base.linear[:, 1], linear, rtol=1e-12)
+    assert base.peak is not None and base.peak < np.max(linear)

@@ -506,17 +506,33 @@ def plot_shock(shock: Any, path: str | os.PathLike) -> None:
 
 def plot_sine_sweep(sweep: Any, path: str | os.PathLike) -> None:
     """The displacement's envelope against the instantaneous frequency, up and down, with and
-    without the damper (symimpact.forced.sweep_response)."""
+    without the damper (symimpact.forced.sweep_response), and, when the run computed it, the
+    steady curve of ``frf`` at the same amplitude beside them: the stable orbits of each
+    continued branch (black), the motion without impacts (thick grey) and the primary alone's
+    steady response (dotted)."""
+    import numpy as np
+
     plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(8, 4.5))
+    fig, ax = plt.subplots(figsize=(9, 4.8))
     for d, name, ls in ((sweep.up, "up", "-"), (sweep.down, "down", "--")):
         ax.plot(d["frequency"], d["baseline"] * 1e3, ls, color="grey", lw=0.9,
-                label=f"primary alone, {name}")  # fmt: skip
+                label=f"primary alone, sweep {name}")  # fmt: skip
         ax.plot(d["frequency"], d["envelope"] * 1e3, ls, color="C0", lw=1.2,
-                label=f"with the impact damper, {name}")  # fmt: skip
+                label=f"with the impact damper, sweep {name}")  # fmt: skip
+    c = getattr(sweep, "steady", None)
+    if c is not None:
+        ax.plot(c.linear[:, 0], c.linear[:, 1] * 1e3, ":", color="0.3", lw=1.0,
+                label="primary alone, steady")  # fmt: skip
+        if len(c.no_impact):
+            ax.plot(c.no_impact[:, 0], c.no_impact[:, 1] * 1e3, color="0.6", lw=4, alpha=0.45,
+                    solid_capstyle="butt", label="steady, no impact")  # fmt: skip
+        for k, b in enumerate(np.unique(c.stable[:, 2])):
+            rows = c.stable[c.stable[:, 2] == b]
+            ax.plot(rows[:, 0], rows[:, 1] * 1e3, ".", color="k", ms=3,
+                    label=None if k else "steady stable orbits (frf)")  # fmt: skip
     ax.set_xlabel("instantaneous frequency [Hz]")
     ax.set_ylabel("largest |x| over each period [mm]")
-    ax.legend(fontsize=8)
+    legend_beside(ax)
     fig.tight_layout()
     atomic_savefig(fig, path)
     plt.close(fig)

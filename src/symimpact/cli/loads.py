@@ -146,6 +146,11 @@ def add_parser(sub: Any) -> None:
         "--rate", required=True, metavar="R", help="Hz/s (linear) or octaves a minute (--law log)"
     )
     g.add_argument("--law", default="linear", choices=("linear", "log"), help="default linear")
+    g.add_argument(
+        "--no-steady", action="store_true",
+        help="leave out the steady curve of frf at the sweep's amplitude (drawn and in the JSON "
+        "by default: the continued branches' stable orbits over the band)",
+    )  # fmt: skip
     add_output(p, plot=True)
 
 
@@ -394,9 +399,8 @@ def run_sweep(ns) -> None:
     f1, f2 = band_from("band", ns.band)
     # a sweep's length follows from its band and rate: --dt as given, or 20 samples a period
     dt = positive_float("dt", ns.dt, "s") if ns.dt else 1.0 / (2 * SAMPLES_PER_PERIOD * f2)
-    out = sweep_response(
-        system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=ns.e, law=ns.law, kind=kind
-    )
+    out = sweep_response(system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=ns.e,
+                         law=ns.law, kind=kind, steady=not ns.no_steady)  # fmt: skip
     if ns.csv:
         rows = []
         for name, d in (("up", out.up), ("down", out.down)):
@@ -416,6 +420,14 @@ def run_sweep(ns) -> None:
         f"{d[name]['baseline_peak_frequency']:.4g} Hz"
         for name in ("up", "down")
     ]
+    if out.steady is not None:
+        c = out.steady
+        lines.append(
+            "steady (frf): no stable orbit over the band"
+            if c.peak is None
+            else f"steady (frf): largest stable amplitude {c.peak * 1e3:.4g} mm at "
+            f"{c.peak_frequency:.4g} Hz"
+        )
     emit(ns, d, "\n".join(lines))
 
 

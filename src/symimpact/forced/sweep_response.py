@@ -1,9 +1,10 @@
 """Sine sweeps through the band on the primary with its impact damper: the envelope of the
 displacement against the sweep's instantaneous frequency (the largest abs(x) over each of its
 periods), swept up and down, with and without the damper — the run-up a machine makes through
-its resonance, beside the steady curve of ``frf``.  Each sweep is a record of
-:func:`symimpact.forced.loads.sweep_record`; the response is exact for it (Eq. F8 on each
-interval, Eq. F2 at each impact).
+its resonance, beside the steady curve of ``frf`` (:func:`steady_curve`: the continued branches'
+stable orbits and the motion without impacts, and the linear curve without the damper, at the
+sweep's amplitude).  Each sweep is a record of :func:`symimpact.forced.loads.sweep_record`; the
+response is exact for it (Eq. F8 on each interval, Eq. F2 at each impact).
 """
 
 from __future__ import annotations
@@ -16,9 +17,13 @@ import numpy as np
 
 from ..system import ImpactSystem
 from ..units import positive_float
+from .forcing import Forcing
+from .frf import frequency_response
 from .loads import sweep_frequency, sweep_record
 from .record_flight import primary_response
 from .record_response import damper_response
+from .response_curve import response_curve
+from .responses import linear_response
 from .simulation import CHATTER
 
 
@@ -44,14 +49,84 @@ def envelope(
     return np.array(centres), np.array(peaks)
 
 
+#: frequencies of the steady curve over the sweep's band (the continuation steps between them;
+#: the curve's peak is located between them, not sampled)
+STEADY_POINTS = 41
+#: frequencies of the primary alone's steady curve (closed form) over the band
+LINEAR_POINTS = 801
+
+
+@dataclass(frozen=True)
+class SteadyCurve:
+    """The steady response at the sweep's amplitude (SI, frequencies in Hz): ``stable``, rows
+    (frequency, max abs(x), branch index) of the continued branches' stable orbits; ``unstable``
+    the same for the unstable ones; ``no_impact`` rows (frequency, max abs(x)) of the motion
+    without impacts where it exists; ``linear`` rows (frequency, max abs(x)) of the primary
+    alone; ``peak``/``peak_frequency``: the located largest stable amplitude (None where the
+    band holds none)."""
+
+    stable: np.ndarray
+    unstable: np.ndarray
+    no_impact: np.ndarray
+    linear: np.ndarray
+    peak: float | None
+    peak_frequency: float | None
+
+
+def steady_curve(
+    system: ImpactSystem, amplitude: Any, f_low: float, f_high: float, *, e: Any,
+    kind: str = "force", points: int = STEADY_POINTS,
+) -> SteadyCurve:  # fmt: skip
+    """The curve of ``frf`` (:func:`symimpact.forced.frf.frequency_response`, without its
+    brute-force sweeps: the sweep drawn beside it is the brute force) for a harmonic load of the
+    sweep's ``amplitude`` — a force F0 [N] on the main mass, or a base acceleration A_b [m/s²]
+    that stays constant over the band (X_b = A_b/Ω²), the amplitude then of x − x_b as in the
+    sweep — at ``points`` frequencies from ``f_low`` to ``f_high`` [Hz]; rigid impacts with ``e``
+    (Eq. F2)."""
+    lo, hi = sorted((f_low, f_high))
+    omegas = 2.0 * np.pi * np.linspace(lo, hi, points)
+    forcing = (
+        Forcing(F0=amplitude, omega=omegas[0])
+        if kind == "force"
+        else Forcing(A_b=amplitude, omega=omegas[0])
+    )
+    frf = frequency_response(system, forcing, e, omegas, sweeps=False)
+    if kind != "force":  # a record's x under a base acceleration is relative to the base
+        frf = response_curve(frf, "relative-displacement", system, forcing, e)
+    rows: dict[bool, list[tuple[float, float, int]]] = {True: [], False: []}
+    for i, b in enumerate(frf.branches):
+        for p in b.points:
+            rows[bool(p.stable)].append((p.omega / (2.0 * np.pi), p.amplitude, i))
+    # the linear curve in closed form (Eq. F1's steady part) on a fine grid: a lightly damped
+    # resonance is narrower than the continuation's frequency step
+    fine = 2.0 * np.pi * np.linspace(lo, hi, LINEAR_POINTS)
+    linear = linear_response(frf.response, system, forcing, fine)
+    base = frf.baseline
+    f = base[:, 0] / (2.0 * np.pi)
+    inside = np.zeros(len(f), dtype=bool)
+    for a, b in frf.no_impact:
+        inside |= (base[:, 0] >= a) & (base[:, 0] <= b)
+    peak = frf.peak
+    return SteadyCurve(
+        stable=np.array(rows[True]).reshape(-1, 3),
+        unstable=np.array(rows[False]).reshape(-1, 3),
+        no_impact=np.column_stack([f[inside], base[inside, 1]]),
+        linear=np.column_stack([fine / (2.0 * np.pi), linear]),
+        peak=None if peak is None else float(peak.amplitude),
+        peak_frequency=None if peak is None else float(peak.omega / (2.0 * np.pi)),
+    )
+
+
 @dataclass(frozen=True)
 class SweepResult:
     """Envelopes of a sweep up and down (SI): for each direction, the instantaneous frequency
     [Hz] at the middle of each period and the largest abs(x) [m] over it with and without the
-    damper; ``peak``/``baseline_peak`` the largest of each direction."""
+    damper; ``peak``/``baseline_peak`` the largest of each direction; ``steady`` the steady
+    curve at the sweep's amplitude (:func:`steady_curve`), or None."""
 
     up: dict[str, np.ndarray]
     down: dict[str, np.ndarray]
+    steady: SteadyCurve | None = None
 
     def as_dict(self) -> dict[str, Any]:
         """The JSON of ``symimpact sweep-sine --json`` (SI)."""
@@ -67,17 +142,32 @@ class SweepResult:
                     for f, a, b in zip(d["frequency"], d["envelope"], d["baseline"], strict=True)
                 ],
             }
+        if self.steady is not None:
+            c = self.steady
+            out["steady"] = {
+                "peak": c.peak,
+                "peak_frequency": c.peak_frequency,
+                "stable": [
+                    {"frequency": float(f), "amplitude": float(a), "branch": int(b)}
+                    for f, a, b in c.stable
+                ],
+                "no_impact": [
+                    {"frequency": float(f), "amplitude": float(a)} for f, a in c.no_impact
+                ],
+            }
         return out
 
 
 def sweep_response(
     system: ImpactSystem, amplitude: Any, f_low: Any, f_high: Any, rate: Any, dt: Any, *,
     e: Any, law: str = "linear", kind: str = "force", chatter: Any = CHATTER,
+    steady: bool = False,
 ) -> SweepResult:  # fmt: skip
     """Sweeps of ``amplitude`` [N, or m/s² for a base acceleration] from ``f_low`` to ``f_high``
     [Hz] and back down (two runs from rest), ``rate`` in Hz/s (``law`` "linear") or octaves a
     minute ("log"), sampled every ``dt`` [s]; rigid impacts with ``e`` (Eq. F2; the flight
-    Eq. F8 on each interval of the record)."""
+    Eq. F8 on each interval of the record); with ``steady``, the steady curve of ``frf`` at the
+    same amplitude over the band beside them (:func:`steady_curve`)."""
     f_low = positive_float("f_low", f_low, "Hz")
     f_high = positive_float("f_high", f_high, "Hz")
     rate = positive_float("rate", rate)
@@ -90,4 +180,5 @@ def sweep_response(
         f, a = envelope(ours.displacement, freq, record.dt)
         _, b = envelope(alone.displacement, freq, record.dt)
         out[name] = {"frequency": f, "envelope": a, "baseline": b}
-    return SweepResult(out["up"], out["down"])
+    curve = steady_curve(system, amplitude, f_low, f_high, e=e, kind=kind) if steady else None
+    return SweepResult(out["up"], out["down"], curve)
