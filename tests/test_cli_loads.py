@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from symimpact.cli import main
+from symimpact.forced.contact_law import CompliantContact
 from symimpact.forced.loads import shock_record
 from symimpact.forced.random_response import random_statistics
 from symimpact.forced.shock_response import shock_response
@@ -72,6 +73,28 @@ def test_shock_json_is_the_api_with_g_and_ms(capsys):
     assert [r["frequency"] for r in out["srs"]] == list(api.frequency)
     assert [r["response"] for r in out["srs"]] == pytest.approx(list(api.srs), **close)
     assert [r["baseline"] for r in out["srs"]] == pytest.approx(list(api.baseline_srs), **close)
+
+
+@pytest.mark.parametrize(
+    ("contact", "law"),
+    [(["--contact", "linear", "--k1", "1e5", "--c1", "2"], CompliantContact("linear")),
+     (["--contact", "hunt-crossley", "--k-hz", "1e6", "--chi", "0.5"],
+      CompliantContact("hunt-crossley", 0.5))],
+)  # fmt: skip
+def test_shock_with_a_compliant_contact_is_the_api(capsys, contact, law):
+    system = [*SYSTEM[:-2], *contact]  # (--e left out: the law sets its own restitution)
+    argv = ["shock", *system, "--force-peak", "60 N", "--pulse", "20 ms", "--duration", "1 s",
+            "--srs-range", "1:50", "--srs-points", "5", "--json"]  # fmt: skip
+    out = _json(capsys, argv)
+    api_system = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02,
+                              **({"contact": "linear", "k1": 1e5, "c1": 2.0}
+                                 if law.law == "linear" else {"contact": "hertz", "k_hz": 1e6}))  # fmt: skip
+    dt = 1.0 / np.ceil(1.0 / (0.02 / 200))
+    record = shock_record("half-sine", 60.0, 0.02, 1.0, dt, "force")
+    api = shock_response(api_system, record, e=law, frequencies=np.geomspace(1, 50, 5))
+    assert out["impacts"] == api.impacts > 0
+    assert out["peak"] == pytest.approx(api.peak, rel=1e-15)
+    assert [r["response"] for r in out["srs"]] == pytest.approx(list(api.srs), rel=1e-15)
 
 
 def test_sweep_sine_runs_up_and_down(capsys, tmp_path):

@@ -1,7 +1,7 @@
 """``symimpact random``, ``symimpact shock``, ``symimpact sweep-sine``: the primary with its impact
-damper (rigid impacts, Eq. F2) under the loads machines and buildings see, each compared with
-the primary alone on the same load; the flight between impacts is exact for the sampled load
-(Step 16, Eq. F8)."""
+damper (rigid impacts, Eq. F2, or a compliant contact: Eq. 8, 9, 35, F4) under the loads machines
+and buildings see, each compared with the primary alone on the same load; the flight between
+impacts is exact for the sampled load (Step 16, Eq. F8)."""
 
 from __future__ import annotations
 
@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from .common import add_output, add_system, emit, system_from, write_csv
+from .frf import contact_of
 
 G = 9.80665  # standard gravity [m/s²], for the text only (inputs go through pint)
 
@@ -25,14 +26,21 @@ def _load_options(g: Any, what: str, force: str, base: str) -> None:
 
 
 def _common(p: Any) -> None:
-    add_system(p, contact=False)
+    add_system(p, extra_laws=("rigid", "hunt-crossley"), contact_default="rigid")
     g = p.add_argument_group("impacts and sampling")
-    g.add_argument("--e", default=None, metavar="E", required=True,
-                   help="Newton's coefficient of restitution of the rigid impacts, 0 ≤ e ≤ 1 "
-                   "(Eq. F2)")  # fmt: skip
+    g.add_argument("--e", default=None, metavar="E",
+                   help="Newton's coefficient of restitution of --contact rigid (the default), "
+                   "0 ≤ e ≤ 1 (Eq. F2)")  # fmt: skip
+    g.add_argument("--chi", default=None, metavar="Q",
+                   help="Hunt–Crossley damping χ [s/m] of --contact hunt-crossley (Eq. F4)")  # fmt: skip
     g.add_argument("--dt", default=None, metavar="Q",
                    help="the record's sample interval [s]; default: 20 samples a period at the "
                    "highest frequency of the load")  # fmt: skip
+
+
+def _events(ns) -> str:
+    """What the run counts: impacts (rigid) or contacts (a compliant law; their onsets)."""
+    return "impacts" if ns.contact == "rigid" else "contacts"
 
 
 def add_parser(sub: Any) -> None:
@@ -255,6 +263,7 @@ def run_random(ns) -> None:
     from ..units import ACCELERATION_PSD, positive_float, si_float
 
     system = system_from(ns)
+    e = contact_of(ns)
     f1, f2 = band_from("band", ns.band)
     if ns.psd_file is not None:
         if ns.kanai_tajimi is not None:
@@ -296,12 +305,12 @@ def run_random(ns) -> None:
                                  "PSD; drop --executor/--workers/--scheduler/--out for it")  # fmt: skip
         if ns.psd_file is not None:
             psd = psd_points(ns.psd_file)
-        st, _ = random_ensemble(system, psd, (f1, f2), T, dt, e=ns.e, realisations=n, seed=seed,
+        st, _ = random_ensemble(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
                                 settle=ns.settle, kind=kind, executor=ns.executor,
                                 workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
                                 force=ns.force, progress=sys.stderr.isatty())  # fmt: skip
     else:
-        st = random_statistics(system, psd, (f1, f2), T, dt, e=ns.e, realisations=n, seed=seed,
+        st = random_statistics(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
                                settle=ns.settle, kind=kind, segment=ns.segment)  # fmt: skip
     if ns.csv:
         write_csv(ns.csv, "csv", [
@@ -315,7 +324,7 @@ def run_random(ns) -> None:
     scale = {"displacement": (1e3, "mm"), "velocity": (1e3, "mm/s"),
              "acceleration": (1 / G, "g"), "base_force": (1.0, "N")}  # fmt: skip
     lines = [f"{st.realisations} realisations of {st.duration:g} s after {st.settle:.3g} s, "
-             f"seed {st.seed}, {st.impacts_per_second:.3g} impacts/s"]  # fmt: skip
+             f"seed {st.seed}, {st.impacts_per_second:.3g} {_events(ns)}/s"]  # fmt: skip
     for key in UNITS:
         k, u = scale[key]
         lo, hi = st.rms_ci95[key]
@@ -339,6 +348,7 @@ def run_shock(ns) -> None:
     from ..units import positive_float
 
     system = system_from(ns)
+    e = contact_of(ns)
     fn = system.omega_n / (2 * math.pi)
     if ns.record_file is not None:
         from ..errors import ParameterError
@@ -366,7 +376,7 @@ def run_shock(ns) -> None:
         record = shock_record(ns.shape, _height(ns, kind, text), td, total, dt, kind)
     lo, hi = (0.1 * fn, 10.0 * fn) if ns.srs_range is None else band_from("srs-range", ns.srs_range)
     n = count("srs-points", ns.srs_points, 2, 10_000)
-    out = shock_response(system, record, e=ns.e, frequencies=np.geomspace(lo, hi, n),
+    out = shock_response(system, record, e=e, frequencies=np.geomspace(lo, hi, n),
                          zeta=ns.srs_zeta)  # fmt: skip
     if ns.csv:
         write_csv(ns.csv, "csv", [
@@ -380,8 +390,9 @@ def run_shock(ns) -> None:
     i = int(np.argmax(out.baseline_srs))
     text_out = (
         f"peak displacement {out.peak * 1e3:.4g} mm with the damper, {out.baseline_peak * 1e3:.4g}"
-        f" mm alone ({out.impacts} impacts); peak acceleration {out.peak_acceleration / G:.4g} g, "
-        f"alone {out.baseline_peak_acceleration / G:.4g} g (between impacts)\n"
+        f" mm alone ({out.impacts} {_events(ns)}); peak acceleration "
+        f"{out.peak_acceleration / G:.4g} g, alone {out.baseline_peak_acceleration / G:.4g} g "
+        f"({'between impacts' if ns.contact == 'rigid' else 'at the samples'})\n"
         f"SRS (ζ {out.zeta:g}) at {out.frequency[i]:.4g} Hz, the primary's largest: "
         f"{out.srs[i] / G:.4g} g with the damper, {out.baseline_srs[i] / G:.4g} g alone"
     )
@@ -395,11 +406,12 @@ def run_sweep(ns) -> None:
     from ..units import positive_float
 
     system = system_from(ns)
+    e = contact_of(ns)
     kind, text = _kind(ns)
     f1, f2 = band_from("band", ns.band)
     # a sweep's length follows from its band and rate: --dt as given, or 20 samples a period
     dt = positive_float("dt", ns.dt, "s") if ns.dt else 1.0 / (2 * SAMPLES_PER_PERIOD * f2)
-    out = sweep_response(system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=ns.e,
+    out = sweep_response(system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=e,
                          law=ns.law, kind=kind, steady=not ns.no_steady)  # fmt: skip
     if ns.csv:
         rows = []

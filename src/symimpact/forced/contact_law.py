@@ -54,11 +54,24 @@ def checked(system: Any, forcing: Any, e: Any, rigid_only: str | None = None):
     instance("forcing", forcing, Forcing, "a Forcing")
     if rigid_only and not is_rigid(e):
         raise ParameterError("e", f"{rigid_only} is for rigid impacts: give Newton's e")
-    if is_rigid(e):
-        e = nonnegative_float("e", e)
-        if e > 1.0:
-            raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
-    return system, forcing, e
+    return system, forcing, restitution_or_law(e)
+
+
+def restitution_or_law(e: Any) -> Any:
+    """``e`` checked: a :class:`CompliantContact` as it is, else Newton's restitution in [0, 1]
+    (Eq. F2) as a float."""
+    if not is_rigid(e):
+        return e
+    e = nonnegative_float("e", e)
+    if e > 1.0:
+        raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+    return e
+
+
+def contact_setting(e: Any) -> Any:
+    """``e`` as a settings value of a stored map: the restitution, or the law's name with its
+    χ (:meth:`CompliantContact.as_dict`)."""
+    return e if is_rigid(e) else e.as_dict()
 
 
 def is_rigid(e: Any) -> bool:

@@ -31,6 +31,7 @@ from .. import checks
 from ..errors import ParameterError
 from ..system import ImpactSystem
 from ..units import positive_float
+from .contact_law import restitution_or_law
 from .loads import random_record
 from .record_flight import primary_response
 from .record_response import damper_response
@@ -132,7 +133,7 @@ def realisation(
     seed: int,
     i: int,
     *,
-    e: float,
+    e: Any,
     settle: float,
     kind: str = "force",
     segment: float | None = None,
@@ -181,14 +182,15 @@ def random_statistics(
     """Statistics of ``realisations`` runs of ``duration`` [s] each (after ``settle`` [s], by
     default :func:`default_settle`) under band-limited random loads of one-sided PSD ``psd``
     [N²/Hz for a force, (m/s²)²/Hz for a base acceleration] over ``band`` (f₁, f₂) [Hz], sampled
-    every ``dt`` [s]; rigid impacts with ``e`` (Eq. F2), the flight Eq. F8.  ``segment`` [s]:
+    every ``dt`` [s]; rigid impacts with ``e`` (Eq. F2), or the compliant law ``e`` names (a
+    :class:`~symimpact.forced.contact_law.CompliantContact`), the flight Eq. F8.  ``segment`` [s]:
     Welch's segment length (default an eighth of ``duration``)."""
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
     T = positive_float("duration", duration, "s")
     dt = positive_float("dt", dt, "s")
     n = checks.whole_number("realisations", realisations, 1, 1_000_000)
     seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
-    e = checks.bounded("e", e, 0.0, 1.0)
+    e = restitution_or_law(e)
     settle = (
         default_settle(system)
         if settle is None

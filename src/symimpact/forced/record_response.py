@@ -1,7 +1,9 @@
 """The primary with its impact damper under a sampled load — random vibration, a shock, a sine
 sweep (:mod:`symimpact.forced.loads`) — with rigid impacts: Step 16's exact flight (Eq. F8) on
 each interval of the record, Step 9's impact law (Eq. F2) at each impact, chatter accumulated and
-sticking followed as in the harmonic simulation (:mod:`symimpact.forced._record_rigid`).
+sticking followed as in the harmonic simulation (:mod:`symimpact.forced._record_rigid`); or with
+a compliant contact (cubic, Hertz, linear, Hunt–Crossley: Eq. 8, 9, 35, F4), whose contact
+phases are integrated with the record's load (:mod:`symimpact.forced._record_compliant`).
 
 The response is returned at the record's samples; the impacts, as events, at their own times.
 """
@@ -16,9 +18,12 @@ import numpy as np
 from .. import _interrupt, checks
 from ..errors import ParameterError, SymimpactError
 from ..system import ImpactSystem
+from . import _compliant as _cp
+from . import _record_compliant as _rc
 from . import _record_rigid as _rr
+from .contact_law import simulation_arguments
 from .loads import Record
-from .simulation import CHATTER
+from .simulation import CHATTER, contact_arguments
 
 
 @dataclass(frozen=True)
@@ -70,17 +75,23 @@ def damper_response(
     Between impacts Eq. F8 on each interval of the record (the flight under a load joined by
     straight lines between its samples, exact); ``chatter``: a sequence of impacts on one wall
     whose flights would sum to at most this fraction of a natural period is taken to its
-    accumulation point and the masses then stick (see :mod:`symimpact.forced._record_rigid`)."""
+    accumulation point and the masses then stick (see :mod:`symimpact.forced._record_rigid`).
+    ``e`` a :class:`~symimpact.forced.contact_law.CompliantContact` in place of a restitution:
+    the compliant law of Eq. 8, 9, 35 (the system's parameters and c1) or F4 (χ), each contact
+    phase integrated with the record's load (:mod:`symimpact.forced._record_compliant`), the
+    contacts' dissipation in the ledger's ``lost_in_impacts``; y0 may then start inside a wall."""
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
     checks.instance("record", record, Record, "a Record (symimpact.forced.loads)")
-    e = checks.bounded("e", e, 0.0, 1.0)
+    args = simulation_arguments(e)
+    contact = args["contact"]
+    e, chi, law = contact_arguments(system, contact, args.get("e"), args.get("chi"))
     state = [
         checks.bounded(n, v, unit=u)
         for n, v, u in (("x0", x0, "m"), ("xdot0", xdot0, "m/s"), ("y0", y0, "m"),
                         ("ydot0", ydot0, "m/s"))
     ]  # fmt: skip
     h = system.gap / 2.0
-    if abs(state[2] - state[0]) > h * (1.0 + 1e-12):
+    if contact == "rigid" and abs(state[2] - state[0]) > h * (1.0 + 1e-12):
         raise ParameterError(
             "y0", f"puts the impact mass outside the clearance (|y0 − x0| > {h:g} m)"
         )
@@ -90,12 +101,29 @@ def damper_response(
         raise ParameterError("record", "needs at least two samples")
     M, m, K, C = system.M, system.m, system.K, system.C
     base = record.kind == "base-acceleration"
-    p = np.array([M, m, K, C, h, e, chatter, 1.0 if base else 0.0])
+    p = np.array([M, m, K, C, h, 1.0 if e is None else e, chatter, 1.0 if base else 0.0])
     q = np.ascontiguousarray(record.values, dtype=float)
     s0 = np.array([state[0], state[1], state[2] - state[0], state[3]])
-    status, out, stuck, events, n_ev, ledger, done = _interrupt.call(
-        _rr.run, p, q, record.dt, s0, max_events
-    )
+    potential = [0.0, 0.0]  # the contact's elastic energy at the start and the end
+    if contact == "rigid":
+        status, out, stuck, events, n_ev, ledger, done = _interrupt.call(
+            _rr.run, p, q, record.dt, s0, max_events
+        )
+    else:
+        status, out, events, n_ev, ledger, done, _ = _interrupt.call(
+            _rc.run, _cp.CODES[contact], law, 0.0 if chi is None else float(chi), p, q,
+            record.dt, s0, max_events,
+        )  # fmt: skip
+        if status in (_rc.TOO_MANY_STEPS, _rc.STEP_UNDERFLOW):
+            raise SymimpactError(
+                f"a contact near t = {record.dt * (done - 1):g} s took more Runge–Kutta steps "
+                "than allowed (a contact far stiffer than the motion's time scale)"
+            )
+        stuck = np.zeros(len(q))
+        for k, row in ((0, out[0]), (1, out[len(q) - 1])):
+            delta = abs(row[2]) - h
+            if delta > 0.0:
+                potential[k] = _cp.contact_potential(contact, law, delta)
     if status == _rr.TOO_MANY_EVENTS:
         raise TooManyImpacts(
             f"more than {max_events:,} impacts and releases by t = {record.dt * (done - 1):g} s; "
@@ -106,6 +134,12 @@ def damper_response(
     mass = np.where(stuck, M + m, M)
     force = K * x + C * v
     acceleration = -force / mass if base else (q - force) / mass
+    if contact != "rigid":  # at samples inside a contact its force acts on the primary too
+        code, c = _cp.CODES[contact], 0.0 if chi is None else float(chi)
+        for i in np.flatnonzero(np.abs(z) > h):
+            side = 1.0 if z[i] > 0 else -1.0
+            F = _cp._force(code, law, c, side * z[i] - h, side * (u[i] - v[i]))[0]
+            acceleration[i] += side * F / M
     ev = events[:n_ev]
     hit = ev[:, _rr.E_KIND] == _rr.KIND_IMPACT
 
@@ -113,7 +147,7 @@ def damper_response(
         return 0.5 * M * v[i] ** 2 + 0.5 * K * x[i] ** 2 + 0.5 * m * u[i] ** 2
 
     work, dissipated, lost = (float(a) for a in ledger)
-    e0, e1 = energy(0), energy(len(q) - 1)
+    e0, e1 = energy(0) + potential[0], energy(len(q) - 1) + potential[1]
     scale = max(e0, e1, abs(work), dissipated, lost, 1e-300)
     return DamperRecordResponse(
         times=record.times,

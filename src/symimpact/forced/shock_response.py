@@ -115,7 +115,8 @@ def shock_response(
     zeta: Any = SRS_ZETA, chatter: Any = CHATTER,
 ) -> ShockResult:  # fmt: skip
     """``record`` (a shock of :func:`~symimpact.forced.loads.shock_record`, or any record) on
-    ``system`` with rigid impacts of restitution ``e`` (Eq. F2, flight Eq. F8) and on the
+    ``system`` with rigid impacts of restitution ``e`` (Eq. F2, flight Eq. F8; or the compliant
+    law of a :class:`~symimpact.forced.contact_law.CompliantContact`) and on the
     primary alone; the SRS of the main mass's absolute motion at ``frequencies`` [Hz]."""
     ours = damper_response(system, record, e=e, chatter=chatter)
     alone = primary_response(system, record)

@@ -166,7 +166,8 @@ def sweep_response(
     """Sweeps of ``amplitude`` [N, or m/s² for a base acceleration] from ``f_low`` to ``f_high``
     [Hz] and back down (two runs from rest), ``rate`` in Hz/s (``law`` "linear") or octaves a
     minute ("log"), sampled every ``dt`` [s]; rigid impacts with ``e`` (Eq. F2; the flight
-    Eq. F8 on each interval of the record); with ``steady``, the steady curve of ``frf`` at the
+    Eq. F8 on each interval of the record), or the compliant law of a
+    :class:`~symimpact.forced.contact_law.CompliantContact`; with ``steady``, the steady curve of ``frf`` at the
     same amplitude over the band beside them (:func:`steady_curve`)."""
     f_low = positive_float("f_low", f_low, "Hz")
     f_high = positive_float("f_high", f_high, "Hz")

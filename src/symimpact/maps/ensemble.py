@@ -22,6 +22,7 @@ import numpy as np
 
 from .. import checks
 from ..errors import ParameterError
+from ..forced.contact_law import contact_setting, restitution_or_law
 from ..forced.random_response import KEYS, RandomStatistics, combine, default_settle, realisation
 from ..forced.simulation import CHATTER
 from ..system import ImpactSystem
@@ -42,7 +43,7 @@ class _EnsembleBase:
     duration: float
     dt: float
     seed: int
-    e: float
+    e: Any  # a restitution, or a CompliantContact
     settle: float
     kind: str
     chatter: float
@@ -115,7 +116,7 @@ def random_ensemble(
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
     n = checks.whole_number("realisations", realisations, 1, 100_000_000)
     seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
-    e = checks.bounded("e", e, 0.0, 1.0)
+    e = restitution_or_law(e)
     T = positive_float("duration", duration, "s")
     dt = positive_float("dt", dt, "s")
     settle = (
@@ -142,7 +143,7 @@ def random_ensemble(
     store = None
     if out is not None:
         settings = {"psd": str(table_psd), "band": f"{lo!r}:{hi!r}", "duration": T, "dt": dt,
-                    "seed": seed, "e": e, "settle": settle, "kind": kind,
+                    "seed": seed, "e": contact_setting(e), "settle": settle, "kind": kind,
                     "chatter": base.chatter}  # fmt: skip
         store = MapStore(out, system=system, points=points, settings=settings, force=force,
                          outputs=ENSEMBLE_OUTPUTS, table=ensemble_table)  # fmt: skip
