@@ -1,7 +1,8 @@
 """Every generated kernel against a 50-digit mpmath evaluation of its SymPy expression.
 
-200 random physical points per kernel (seeded; each argument uniform or log-uniform on the range
-its derivation declares, points violating the kernel's constraints redrawn).  Each ``_scalar`` twin
+200 random physical points per kernel, 50 for the heavy Step 10 in the slow set (seeded; each
+argument uniform or log-uniform on the range its derivation declares, points violating the
+kernel's constraints redrawn).  Each ``_scalar`` twin
 (``math`` module, for numba) is checked at the same points.  Tolerance: 1e-12 relative; for
 oscillating results the bound is 1e-12·(|value| + amplitude), because near a zero crossing the
 float64 rounding of the phase dominates any relative measure.
@@ -24,8 +25,10 @@ N_POINTS = 200
 
 
 #: Step 10's kernels (the four conditions' minors and weighted Cramer solutions, 12-14 k
-#: operations each) take 90 s in mpmath at 200 points on 2 cores: they run in the slow set.
+#: operations each) took 90 s in mpmath at 200 points on one machine and over 5 minutes on
+#: another: they run in the slow set, at HEAVY_POINTS points
 HEAVY = {"periodic_orbit"}
+HEAVY_POINTS = 50
 
 
 @pytest.mark.parametrize(
@@ -39,9 +42,10 @@ def test_kernels_match_mpmath(boards, step):
         symbols = [a.symbol for a in kernel.args]
         reference = sp.lambdify(symbols, kernel.expr, "mpmath")
         scale = sp.lambdify(symbols, kernel.magnitude or 0, "mpmath")
-        points = physical_points(kernel, rng, N_POINTS)
+        n = HEAVY_POINTS if step in HEAVY else N_POINTS
+        points = physical_points(kernel, rng, n)
         got = getattr(module, kernel.name)(*points.T)  # vectorised call: one array per argument
-        assert got.shape == (N_POINTS,)
+        assert got.shape == (n,)
         scalar = getattr(module, f"{kernel.name}_scalar")  # the math-module twin, point by point
         got_scalar = [scalar(*map(float, p)) for p in points]
         with mp.workdps(50):
