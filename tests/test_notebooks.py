@@ -46,8 +46,13 @@ def _outputs_text(cell) -> str:
     return "\n".join(out)
 
 
-# Writing the notebooks (a derivation run) and executing them take about three minutes on a
-# 2-core machine: in the slow set, which CI runs as its second step (issue 35, item 7).
+# Writing the notebooks (a derivation run) and executing them take several minutes on a 2-core
+# machine (Step 16's notebook alone ran past 600 s beside other work): in the slow set, which CI
+# runs as its second step (issue 35, item 7).  A cell may take CELL_LIMIT seconds: a cell is a
+# derivation, slow on a busy machine; the limit is there to end a hang.
+CELL_LIMIT = 1800
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("step", derive.STEPS)
 def test_notebook_runs_and_rederives_its_step(notebooks, step, tmp_path, monkeypatch):
@@ -63,7 +68,7 @@ def test_notebook_runs_and_rederives_its_step(notebooks, step, tmp_path, monkeyp
     nb.cells.append(nbformat.v4.new_code_cell(
         f"print('SOLUTIONS', [str(complex(sp.N(sp.sympify(v), 20))) for v in [{values}]])"))  # fmt: skip
     t0 = time.perf_counter()
-    nbclient.NotebookClient(nb, timeout=600, kernel_name="python3",
+    nbclient.NotebookClient(nb, timeout=CELL_LIMIT, kernel_name="python3",
                             resources={"metadata": {"path": str(tmp_path)}}).execute()  # fmt: skip
     seconds = time.perf_counter() - t0
     solutions = _outputs_text(nb.cells.pop()).split("SOLUTIONS", 1)[1]
