@@ -265,6 +265,9 @@ def run(code, q, chi, p, rec, dt, state0, max_events, watch):
             x, v, z = xn, vn, zn
             if hit == 0:
                 side0 = 0
+                if abs(z) >= h:  # within the search's 1e-20 of the clearance: on the wall
+                    side0 = 1 if z > 0 else -1
+                    z = side0 * h
                 break
             if n_ev + 1 > max_events:
                 status = TOO_MANY_EVENTS
