@@ -26,6 +26,13 @@ settings.load_profile("ci")
 
 
 def pytest_configure(config: pytest.Config) -> None:
+    if not hasattr(config, "workerinput"):  # the main process, before any xdist worker starts
+        # The generalised ufuncs of generated/fixed_points.py compile when imported and write
+        # numba's on-disk cache.  Two workers doing so at once in a fresh checkout can leave
+        # one with a cache the other half wrote: a segmentation fault at its next call (seen
+        # once in tests/test_fixed_points.py; numba issue 10128).  Compiled here first, the
+        # workers only read the cache.
+        import symimpact.generated.fixed_points  # noqa: F401
     if config.getoption("hypothesis_profile", None):
         return  # the plugin loads the profile named on the command line
     if config.getoption("hypothesis_seed", None) is not None:
