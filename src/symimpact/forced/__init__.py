@@ -8,8 +8,8 @@
   admissibility and stability.
 - :func:`rigid_limit`: compliant contacts stiffened with their damping set from e, against the
   rigid orbit they converge to.
-- :func:`shoot`, :func:`shoot_from_rest`, :func:`monodromy`: periodic orbits by Newton's method
-  on the stroboscopic map, with the monodromy carried through flights and rigid impacts
+- :func:`shoot`, :func:`shoot_from_rest`, :func:`settled_state`, :func:`monodromy`: periodic
+  orbits by Newton's method on the stroboscopic map, with the monodromy carried through flights and rigid impacts
   (saltation matrices) or through compliant contacts (variational equations, the located onsets
   and exits differentiated), and their Floquet multipliers.
 - :class:`CompliantContact`: a compliant law given in place of the restitution e to shooting,
@@ -32,7 +32,7 @@ from .loads import Record, random_record, shock_record, sweep_record
 from .periodic import PeriodicOrbit, periodic_orbits
 from .record_flight import RecordResponse, primary_response, srs
 from .rigid_limit import RigidLimitRow, rigid_limit
-from .shooting import ShootingOrbit, monodromy, shoot, shoot_from_rest
+from .shooting import ShootingOrbit, monodromy, settled_state, shoot, shoot_from_rest
 from .simulation import ForcedResult, Steady, simulate_forced, steady_state
 from .slow_flow import (
     Backbone,
@@ -67,6 +67,7 @@ __all__ = [
     "primary_response",
     "random_record",
     "rigid_limit",
+    "settled_state",
     "shock_record",
     "shoot",
     "shoot_from_rest",

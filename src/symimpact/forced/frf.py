@@ -7,7 +7,7 @@ several kinds of starting point, so that coexisting motions are found:
 
 - the closed-form symmetric two-impact orbits (Eq. F3) that are admissible, at frequencies spread
   over the band (rigid impacts only);
-- the orbits brute-force runs from rest settle near (:func:`symimpact.forced.shoot_from_rest`),
+- the orbits brute-force runs from rest settle near (:func:`symimpact.forced.settled_state`),
   of one and two forcing periods;
 - the periodic attractors of a multi-start brute force at frequencies fixed by the band's ends
   (:mod:`symimpact.forced.coverage`), which also measures the share of them the branches trace;
@@ -50,7 +50,7 @@ from .forcing import Forcing
 from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
 from .responses import SAMPLES, response_key, steady_response
-from .shooting import shoot, shoot_from_rest
+from .shooting import settled_state, shoot
 from .simulation import settling_periods, simulate_forced
 
 #: Periods kept for each brute-force sweep point's steady state; before them the run lasts until
@@ -286,10 +286,15 @@ def frequency_response(
         for o in periodic_orbits(system, f, e) if is_rigid(e) else ():
             if o.admissible:
                 follow("closed form", 1, *_section_state(o, float(omega), h, system, forcing))
+        # one run from rest; its end shot as an orbit of one and of two periods
+        try:
+            rest, law = settled_state(system, f, e, warmup=settling_periods(system, f, 20, 300))
+        except SymimpactError as exc:
+            failures.setdefault(f"from rest: {exc}", []).append(omega)
+            continue
         for k in (1, 2):
             try:
-                shot = shoot_from_rest(system, f, e, warmup=settling_periods(system, f, 20, 300),
-                                       periods=k)  # fmt: skip
+                shot = shoot(system, f, law, rest, periods=k)
             except SymimpactError as exc:
                 failures.setdefault(f"{k} period(s) from rest: {exc}", []).append(omega)
                 continue

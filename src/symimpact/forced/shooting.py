@@ -371,6 +371,24 @@ def _off_the_walls(system, forcing, e, s, periods) -> tuple[Forcing, np.ndarray,
     return moved, state_at(res, np.array([tau]))[0], tau
 
 
+def settled_state(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    warmup: int = 300,
+    start: Any = (0.0, 0.0, 0.0, 0.0),
+) -> tuple[tuple[float, float, float, float], Any]:
+    """Where a brute-force run settles: the state (x, ẋ, z, ẏ) after ``warmup`` forcing periods
+    of the event-driven simulation (Eq. F1, F2; chatter and sticking allowed) from ``start``, at
+    the forcing phase of t = 0, and the contact to shoot with from it."""
+    system, forcing, e = checked(system, forcing, e)
+    x, v, z, u = (float(c) for c in checks.state("start", start))
+    res = simulate_forced(system, forcing, **simulation_arguments(e), periods=warmup, x0=x,
+                          xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
+    fx, fv, fy, fu = res.final_state
+    return (fx, fv, fy - fx, fu), res.e if is_rigid(e) else e
+
+
 def shoot_from_rest(
     system: ImpactSystem,
     forcing: Forcing,
@@ -379,13 +397,10 @@ def shoot_from_rest(
     periods: int = 1,
     start: Any = (0.0, 0.0, 0.0, 0.0),
 ) -> ShootingOrbit:
-    """The orbit a brute-force run settles near: ``warmup`` forcing periods of the event-driven
-    simulation from ``start`` = (x, ẋ, z, ẏ) (chatter and sticking allowed there), then
-    :func:`shoot` from its final state (the same forcing phase: a whole number of periods)."""
+    """The orbit a brute-force run settles near: :func:`settled_state` after ``warmup`` forcing
+    periods from ``start`` = (x, ẋ, z, ẏ), then :func:`shoot` from it (the same forcing phase: a
+    whole number of periods)."""
     system, forcing, e = checked(system, forcing, e)
-    x, v, z, u = (float(c) for c in checks.state("start", start))
     periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
-    res = simulate_forced(system, forcing, **simulation_arguments(e), periods=warmup, x0=x,
-                          xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
-    fx, fv, fy, fu = res.final_state
-    return shoot(system, forcing, res.e if is_rigid(e) else e, (fx, fv, fy - fx, fu), periods)
+    state, law = settled_state(system, forcing, e, warmup, start)
+    return shoot(system, forcing, law, state, periods)
