@@ -129,3 +129,31 @@ def test_a_law_without_its_parameters_is_refused_in_one_line():
                         e=CompliantContact("hunt-crossley", 0.5))  # fmt: skip
     with pytest.raises(ParameterError, match=r"^chi:"):
         CompliantContact("hunt-crossley")
+
+
+def test_a_stiffening_linear_contact_converges_to_rigid_impacts_with_its_e():
+    """The rigid limit under a record: the linear law with c1 from Step 9 for e (its contacts
+    then restitute exactly e, Eq. 35) and k1 growing tenfold at a time, against the rigid
+    engine with that e on the same record.  A contact lasts π/ω_c, ω_c = √(k1/μ) (Step 6), and
+    displaces the impact's instant by a part of that; so the difference from the rigid run falls
+    with the contact time, about √10 per decade of k1 (first order in it)."""
+    from symimpact.generated import rigid_impact as ri
+
+    e, dt = 0.6, 0.004
+    t = np.arange(0.0, 0.6, dt)
+    record = Record(4.0 * np.cos(33.0 * t), dt, "force")
+    start = {"x0": 0.0, "xdot0": 0.1, "y0": 0.008, "ydot0": -0.3}
+    rigid = damper_response(ImpactSystem(**BASE, contact="linear", k1=1e6), record, e=e, **start)
+    assert len(rigid.impact_times) >= 4
+    errors = []
+    for k1 in (1e6, 1e7, 1e8):
+        c1 = float(ri.linear_c1_for_restitution(BASE["m"], BASE["M"], k1, e))
+        system = ImpactSystem(**BASE, contact="linear", k1=k1, c1=c1)
+        soft = damper_response(system, record, e=CompliantContact("linear"), **start)
+        assert len(soft.impact_times) == len(rigid.impact_times)
+        errors.append(np.max(np.abs(soft.displacement - rigid.displacement)))
+    # each decade: at least half the √10 = 3.16 that first order in the contact time gives
+    assert errors[0] / errors[1] > 1.58 and errors[1] / errors[2] > 1.58, errors
+    # and the stiffest contact (about 0.07 ms against the primary's 199 ms period) within 1e-3
+    # of the rigid run's amplitude
+    assert errors[2] < 1e-3 * np.max(np.abs(rigid.displacement)), errors
