@@ -146,6 +146,31 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
         raise ParameterError("fn", "give the modal mass --M (or the stiffness --K) with --fn")
 
 
+#: The commands that take e per impact from the materials (``--e material``): runs, not orbits
+PER_IMPACT = ("simulate", "random", "shock", "sweep-sine")
+
+
+def _material_restitution(ns: argparse.Namespace, body: Any, cavity: str, said: list) -> None:
+    """``--e material``: e per impact from the materials (Step 13, Eq. F5), a
+    :class:`~symimpact.forced.contact_law.MaterialRestitution` with the contact's yield speed;
+    a constant where the law does not depend on the speed (a resilient material's √R, or no
+    yield strength: elastic, e = 1)."""
+    from ..derived_contact import derived_contact
+    from ..forced.contact_law import MaterialRestitution
+
+    contact = derived_contact(body, cavity, 1.0, M=ns.M)
+    source = contact.sources["e"].split(":")[0]
+    if contact.yield_speed is None or source.startswith("resilience"):
+        ns.e = contact.e
+        said.append(f"e {contact.e:.4g} at every impact speed ({contact.sources['e']})")
+        return
+    ns.e = MaterialRestitution(contact.yield_speed, contact.sources.get("yield_speed", ""))
+    said.append(
+        f"e of the materials at each impact: 1 up to the yield speed {contact.yield_speed:.4g} "
+        "m/s, Thornton's law above (Step 13)"
+    )
+
+
 def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
     """--impactor, --cavity and --impact-speed (Step 13, :mod:`symimpact.derived_contact`):
     replace m, K_Hz and, at the impact speed, the law's e, χ or c1 in ``ns`` (``given``: the
@@ -157,6 +182,17 @@ def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
     imp = getattr(ns, "impactor", None)
     cav = getattr(ns, "cavity", None)
     speed = getattr(ns, "impact_speed", None)
+    material_e = str(getattr(ns, "e", None)).strip().lower() == "material"
+    if material_e and ns.command not in PER_IMPACT:
+        raise ParameterError(
+            "e", "material: a restitution that follows the impact speed is for runs (simulate, "
+            "random, shock, sweep-sine); periodic orbits, frf, branch and design need a "
+            "constant e"
+        )  # fmt: skip
+    if material_e and (imp is None or cav is None):
+        raise ParameterError(
+            "e", "material: the restitution of the materials needs --impactor and --cavity"
+        )
     if imp is None and cav is None and speed is None:
         return
     if imp is None:
@@ -181,7 +217,11 @@ def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
             raise ParameterError(flag[2:], f"--cavity gives the contact: give {flag} or --cavity")
     law = getattr(ns, "contact", None) or "cubic"
     needs = []
-    if law == "rigid" and getattr(ns, "e", None) is None:
+    if material_e and law != "rigid":
+        raise ParameterError("e", "material: applies to rigid impacts (--contact rigid)")
+    if material_e:
+        _material_restitution(ns, body, cav, said)
+    elif law == "rigid" and getattr(ns, "e", None) is None:
         needs.append("e")
     elif law == "hunt-crossley" and getattr(ns, "chi", None) is None:
         needs.append("chi")
@@ -286,7 +326,8 @@ def add_forcing(p: argparse.ArgumentParser) -> None:
     g.add_argument("--phase", help="forcing phase φ at t = 0 [rad]; default 0", **once)
     g.add_argument(
         "--e",
-        help="Newton's coefficient of restitution of the rigid law, 0 ≤ e ≤ 1",
+        help="Newton's coefficient of restitution of the rigid law, 0 ≤ e ≤ 1; 'material' with "
+        "--impactor and --cavity: e of the materials at each impact's speed (Step 13)",
         **once,
     )
 

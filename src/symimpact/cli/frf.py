@@ -11,6 +11,7 @@ from typing import Any
 from .. import budgets
 from .common import (
     AMPLITUDE_NEEDED,
+    PER_IMPACT,
     add_output,
     add_system,
     emit,
@@ -109,7 +110,7 @@ def contact_of(ns) -> Any:
     rigid impacts, else a :class:`~symimpact.forced.CompliantContact` (with --chi for
     Hunt–Crossley)."""
     from ..errors import MethodNotApplicable, ParameterError
-    from ..forced.contact_law import CompliantContact
+    from ..forced.contact_law import CompliantContact, MaterialRestitution, restitution_or_law
     from ..units import nonnegative_float
 
     if ns.contact is None:
@@ -128,6 +129,8 @@ def contact_of(ns) -> Any:
         raise ParameterError("chi", "contact hunt-crossley needs its damping --chi χ [s/m]")
     if ns.contact != "hunt-crossley" and ns.chi is not None:
         raise ParameterError("chi", "applies to --contact hunt-crossley only")
+    if ns.contact == "rigid" and isinstance(ns.e, MaterialRestitution):
+        return restitution_or_law(ns.e, per_impact=ns.command in PER_IMPACT)  # Eq. F5
     if ns.contact == "rigid":
         e = nonnegative_float("e", ns.e)
         if e > 1.0:
@@ -138,8 +141,10 @@ def contact_of(ns) -> Any:
 
 def contact_title(ns, e: Any) -> str:
     """``e = 0.6`` or ``contact hunt-crossley, χ = 0.5 s/m``: the contact for a plot's title."""
-    from ..forced.contact_law import contact_text, is_rigid
+    from ..forced.contact_law import MaterialRestitution, contact_text, is_rigid
 
+    if isinstance(e, MaterialRestitution):
+        return f"e of the materials (yield speed {e.yield_speed * 1e3:.3g} mm/s)"
     return f"e = {float(e):g}" if is_rigid(e) else f"contact {contact_text(e)}"
 
 

@@ -49,11 +49,13 @@ from numba import njit
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
 from .._stepper import secant_point
 from ..generated import sampled_load as _sl
+from ._rigid import restitution
 
 # parameter vector layout: masses [kg], K [N/m], C [N s/m], half clearance [m], e, chatter
-# threshold [natural periods], 1.0 for a base-acceleration record (0.0: a force)
-P_M, P_m, P_K, P_C, P_h, P_e, P_CHAT, P_BASE = range(8)
-N_PARAMS = 8
+# threshold [natural periods], 1.0 for a base-acceleration record (0.0: a force), the yield
+# speed of a restitution that follows the impact speed [m/s] (0: the constant e)
+P_M, P_m, P_K, P_C, P_h, P_e, P_CHAT, P_BASE, P_VY = range(9)
+N_PARAMS = 9
 # event-log columns: time [s], side (±1), approach speed [m/s], energy lost [J], kind
 E_T, E_SIDE, E_VREL, E_LOST, E_KIND = range(5)
 N_EVENT_COLS = 5
@@ -349,6 +351,7 @@ def run(p, q, dt, state0, max_events, watch):
             sd = float(side)
             z = sd * h
             vrel = sd * (u - v)  # approach speed, ≥ 0
+            e = restitution(p[P_e], p[P_VY], vrel)
             v_after = v + (1.0 + e) * mu_red / M * (u - v)
             u_after = u - (1.0 + e) * mu_red / m * (u - v)
             lost = 0.5 * mu_red * (1.0 - e * e) * vrel * vrel
@@ -364,7 +367,7 @@ def run(p, q, dt, state0, max_events, watch):
             p1, _, g1, _ = _loads(p, M, q1, qd)
             a = sd * (g1 - (p1 - C * v - K * x) / M)  # relative acceleration towards the wall
             w = e * vrel
-            if a > 0.0 and e < 1.0:
+            if a > 0.0 and e < 1.0 and p[P_VY] <= 0.0:  # e(v) → 1 as v → 0: no accumulation
                 delta = 2.0 * w / (a * (1.0 - e))
                 if delta <= p[P_CHAT] * Tn and tau + delta < dt:
                     p1, pd1, g1, gd1 = _loads(p, M, q1, qd)

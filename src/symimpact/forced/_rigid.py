@@ -41,10 +41,12 @@ from numba import njit
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
 from .._stepper import secant_point
 from ..generated import forced_flight as _fl
+from ..generated import hertz_contact as _hz
 
-# parameter vector layout
-P_M, P_K, P_C, P_m, P_h, P_e, P_F0, P_XB, P_W, P_PHI, P_CHAT = range(11)
-N_PARAMS = 11
+# parameter vector layout; P_VY: the yield speed of a restitution that follows the impact
+# speed (Step 13, Eq. F5; 0: the constant e of P_e)
+P_M, P_K, P_C, P_m, P_h, P_e, P_F0, P_XB, P_W, P_PHI, P_CHAT, P_VY = range(12)
+N_PARAMS = 12
 # event-log columns: time, x, xdot before, ydot before, side, relative approach speed, energy
 # lost, kind (see KIND_*), xdot after, ydot after
 E_T, E_X, E_XD, E_YD, E_SIDE, E_VREL, E_LOST, E_KIND, E_XD1, E_YD1 = range(10)
@@ -67,6 +69,19 @@ _xf_phi = njit(cache=True)(_fl.forced_displacement_d_phi_scalar)
 _vf_phi = njit(cache=True)(_fl.forced_velocity_d_phi_scalar)
 _steady_cos = njit(cache=True)(_fl.steady_cosine_scalar)
 _steady_sin = njit(cache=True)(_fl.steady_sine_scalar)
+_thornton = njit(cache=True)(_hz.thornton_restitution_scalar)
+
+
+@njit(cache=True)
+def restitution(e, vy, vrel):
+    """e of an impact at approach speed ``vrel`` [m/s]: the constant ``e`` where ``vy`` is 0,
+    else 1 at or below the yield speed ``vy`` and Thornton's e(vy/vrel) above it (Eq. F5)."""
+    if vy <= 0.0:
+        return e
+    if vrel <= vy:
+        return 1.0
+    return _thornton(vy / vrel)
+
 
 #: 8-point Gauss–Legendre nodes and weights on [−1, 1] (NumPy computes them; none typed in).
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
@@ -446,6 +461,7 @@ def run(p, state0, t_end, max_events, watch):
         t, x = t_new, xn
         z = s * h
         vrel = s * (u - vn)  # approach speed, ≥ 0
+        e = restitution(p[P_e], p[P_VY], vrel)
         mu = M * m / (M + m)
         v_after = vn + (1.0 + e) * mu / M * (u - vn)
         u_after = u - (1.0 + e) * mu / m * (u - vn)
@@ -467,7 +483,7 @@ def run(p, state0, t_end, max_events, watch):
         # --- chatter: does the sequence accumulate? ---
         a = -s * _accel(p, M, t, x, v)  # relative acceleration towards the wall s
         w = e * vrel  # separation speed
-        if a > 0.0 and e < 1.0:
+        if a > 0.0 and e < 1.0 and p[P_VY] <= 0.0:  # e(v) → 1 as v → 0: no accumulation
             delta = 2.0 * w / (a * (1.0 - e))
             if delta <= p[P_CHAT] * T_f and t + delta < t_end:
                 # jump to the accumulation point; the pair moves on together

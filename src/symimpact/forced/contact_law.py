@@ -41,6 +41,48 @@ class CompliantContact:
         return {"contact": self.law, **({"chi": self.chi} if self.chi is not None else {})}
 
 
+@dataclass(frozen=True)
+class MaterialRestitution:
+    """Rigid impacts whose restitution follows the materials at each impact's approach speed v
+    (Step 13, Eq. F5): e = 1 at or below the yield speed v_y [m/s] (the contact stays elastic),
+    Thornton's elastic–perfectly-plastic e(v_y/v) above it.  ``source`` says where v_y came from.
+
+    Simulations and records take it (:func:`symimpact.forced.simulate_forced`,
+    :func:`symimpact.forced.damper_response`); chatter is not taken to an accumulation point
+    (a sequence's speeds fall below v_y, where impacts no longer lose energy, so it does not
+    accumulate).  Shooting and what builds on it need Step 9's saltation matrix with de/dv and
+    refuse it."""
+
+    yield_speed: float
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        from ..units import positive_float
+
+        object.__setattr__(self, "yield_speed", positive_float("yield_speed", self.yield_speed))
+
+    def at(self, speed: Any) -> float:
+        """e at the approach speed ``speed`` [m/s] (Eq. F5)."""
+        from ..generated import hertz_contact as hz
+
+        v = nonnegative_float("speed", speed)
+        if v <= self.yield_speed:
+            return 1.0
+        return float(hz.thornton_restitution_scalar(self.yield_speed / v))
+
+    def as_dict(self) -> dict[str, Any]:
+        """``{"e": "material", "yield_speed": v_y}`` (SI)."""
+        return {"e": "material", "yield_speed": self.yield_speed}
+
+
+def restitution_parameters(e: Any) -> tuple[float, float]:
+    """(constant e, yield speed [m/s]) of the engines' parameter vectors: a number's (e, 0), a
+    :class:`MaterialRestitution`'s (1, v_y), no restitution (a compliant run) (1, 0)."""
+    if isinstance(e, MaterialRestitution):
+        return 1.0, e.yield_speed
+    return (1.0 if e is None else float(e)), 0.0
+
+
 def checked(system: Any, forcing: Any, e: Any, rigid_only: str | None = None):
     """(system, forcing, e) of an orbit's computation, checked: an
     :class:`~symimpact.system.ImpactSystem`, a :class:`~symimpact.forced.Forcing`, and a
@@ -57,11 +99,19 @@ def checked(system: Any, forcing: Any, e: Any, rigid_only: str | None = None):
     return system, forcing, restitution_or_law(e)
 
 
-def restitution_or_law(e: Any) -> Any:
+def restitution_or_law(e: Any, per_impact: bool = False) -> Any:
     """``e`` checked: a :class:`CompliantContact` as it is, else Newton's restitution in [0, 1]
-    (Eq. F2) as a float."""
+    (Eq. F2) as a float; a :class:`MaterialRestitution` (Eq. F5) as it is with ``per_impact``
+    (simulations and records), else refused (shooting needs a constant e)."""
     if not is_rigid(e):
         return e
+    if isinstance(e, MaterialRestitution) and per_impact:
+        return e
+    if isinstance(e, MaterialRestitution):
+        raise ParameterError(
+            "e", "a restitution that follows the impact speed (material) is for simulations "
+            "and records; periodic orbits, frf, branch and design need a constant e"
+        )  # fmt: skip
     e = nonnegative_float("e", e)
     if e > 1.0:
         raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
@@ -69,9 +119,10 @@ def restitution_or_law(e: Any) -> Any:
 
 
 def contact_setting(e: Any) -> Any:
-    """``e`` as a settings value of a stored map: the restitution, or the law's name with its
-    χ (:meth:`CompliantContact.as_dict`)."""
-    return e if is_rigid(e) else e.as_dict()
+    """``e`` as a settings value of a stored map: the restitution, the material law's yield
+    speed (:meth:`MaterialRestitution.as_dict`), or the law's name with its χ
+    (:meth:`CompliantContact.as_dict`)."""
+    return e.as_dict() if isinstance(e, CompliantContact | MaterialRestitution) else e
 
 
 def is_rigid(e: Any) -> bool:
@@ -88,6 +139,8 @@ def simulation_arguments(e: Any) -> dict[str, Any]:
 
 def contact_text(e: Any) -> str:
     """``rigid, e = 0.6`` or ``hunt-crossley, χ = 0.5 s/m``: the contact in words."""
+    if isinstance(e, MaterialRestitution):
+        return f"rigid, e of the materials at each impact (yield speed {e.yield_speed:.4g} m/s)"
     if is_rigid(e):
         return f"rigid, e = {float(e):.4g}"
     return e.law + ("" if e.chi is None else f", χ = {e.chi:.4g} s/m")

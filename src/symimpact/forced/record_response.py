@@ -21,7 +21,7 @@ from ..system import ImpactSystem
 from . import _compliant as _cp
 from . import _record_compliant as _rc
 from . import _record_rigid as _rr
-from .contact_law import simulation_arguments
+from .contact_law import restitution_parameters, simulation_arguments
 from .loads import Record
 from .simulation import CHATTER, contact_arguments
 
@@ -101,7 +101,8 @@ def damper_response(
         raise ParameterError("record", "needs at least two samples")
     M, m, K, C = system.M, system.m, system.K, system.C
     base = record.kind == "base-acceleration"
-    p = np.array([M, m, K, C, h, 1.0 if e is None else e, chatter, 1.0 if base else 0.0])
+    e_const, yield_speed = restitution_parameters(e)
+    p = np.array([M, m, K, C, h, e_const, chatter, 1.0 if base else 0.0, yield_speed])
     q = np.ascontiguousarray(record.values, dtype=float)
     s0 = np.array([state[0], state[1], state[2] - state[0], state[3]])
     potential = [0.0, 0.0]  # the contact's elastic energy at the start and the end

@@ -22,7 +22,7 @@ from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from ..units import nonnegative_float, si_float
 from . import _compliant, _rigid
-from .contact_law import COMPLIANT
+from .contact_law import COMPLIANT, MaterialRestitution, restitution_parameters
 from .forcing import Forcing
 
 #: Chatter is taken to its accumulation point when the remaining impacts would all fall within
@@ -80,7 +80,8 @@ class ForcedResult:
 
     system: ImpactSystem
     forcing: Forcing
-    e: float
+    #: Newton's restitution (Eq. F2), a MaterialRestitution (Eq. F5, per impact), or None
+    e: Any
     t_end: float
     events: np.ndarray  # (n, 10): columns named by EVENT_COLUMNS
     period_max: np.ndarray  # largest abs(x) in each whole forcing period
@@ -118,7 +119,7 @@ class ForcedResult:
             "forcing": self.forcing.as_dict(),
             "contact": self.contact,
             **({"chi": self.chi} if self.chi is not None else {}),
-            "e": self.e,
+            "e": self.e.as_dict() if isinstance(self.e, MaterialRestitution) else self.e,
             "t_end": self.t_end,
             "n_impacts": len(self.impacts),
             "energy": self.energy,
@@ -257,7 +258,8 @@ def within_walls(name: str, x: float, y: float, h: float) -> None:
 
 def contact_arguments(system: ImpactSystem, contact: str, e: Any, chi: Any):
     """(e, chi, the law's parameter vector) for ``contact``, checked: rigid impacts take Newton's
-    ``e`` in [0, 1] (Eq. F2), Hunt–Crossley its ``chi`` [s/m] and k_hz (Eq. F4), the other
+    ``e`` in [0, 1] (Eq. F2) or a :class:`~symimpact.forced.contact_law.MaterialRestitution`
+    (Eq. F5, per impact), Hunt–Crossley its ``chi`` [s/m] and k_hz (Eq. F4), the other
     compliant laws their own parameters (Eq. 8, 9, 35); anything else is refused in one line."""
     if not isinstance(contact, str) or (contact != "rigid" and contact not in COMPLIANT):
         raise ParameterError(
@@ -266,9 +268,10 @@ def contact_arguments(system: ImpactSystem, contact: str, e: Any, chi: Any):
     if contact == "rigid":
         if e is None:
             raise ParameterError("e", "rigid impacts need Newton's coefficient of restitution e")
-        e = nonnegative_float("e", e)
-        if e > 1.0:
-            raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
+        if not isinstance(e, MaterialRestitution):
+            e = nonnegative_float("e", e)
+            if e > 1.0:
+                raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
     elif e is not None:
         raise ParameterError("e", f"applies to rigid impacts; contact {contact} sets its own")
     if contact == "hunt-crossley":
@@ -295,7 +298,8 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
     h = system.gap / 2.0
     p = np.zeros(_rigid.N_PARAMS)
     p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
-    p[_rigid.P_m], p[_rigid.P_h], p[_rigid.P_e] = system.m, h, 1.0 if e is None else e
+    p[_rigid.P_m], p[_rigid.P_h] = system.m, h
+    p[_rigid.P_e], p[_rigid.P_VY] = restitution_parameters(e)
     p[_rigid.P_F0], p[_rigid.P_XB] = forcing.F0, forcing.X_b
     p[_rigid.P_W], p[_rigid.P_PHI], p[_rigid.P_CHAT] = forcing.omega, forcing.phase, chatter
     t_end = n_periods * forcing.period

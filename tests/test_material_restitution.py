@@ -1,0 +1,161 @@
+"""Rigid impacts whose restitution follows the impact speed (``--e material``, Step 13, Eq. F5):
+e = 1 up to the yield speed, Thornton's elastic–perfectly-plastic law above it, applied at each
+impact of a forced run and of a record.  Checked against Thornton's law as he published it
+(Thornton 1997, J. Appl. Mech. 64, 383: e = √(6√3/5)·√(1 − r²/6)·[r/(r + 2√(6/5 − r²/5))]^¼,
+r = v_y/v, written here in mpmath, not taken from the derivation), and against momentum and
+the energy each impact loses."""
+
+from __future__ import annotations
+
+import itertools
+import json
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from symimpact.cli import main
+from symimpact.derived_contact import derived_contact
+from symimpact.errors import ParameterError
+from symimpact.forced import Forcing, _rigid, simulate_forced
+from symimpact.forced.contact_law import MaterialRestitution
+from symimpact.forced.loads import Record
+from symimpact.forced.record_response import damper_response
+from symimpact.system import ImpactSystem
+
+SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+FORCING = Forcing(F0=2.0, omega=36.0)
+
+
+def thornton(v_y: float, v: float) -> float:
+    """Thornton's published e at approach speed v [m/s], yield speed v_y, to 30 digits."""
+    with mp.workdps(30):
+        if v <= v_y:
+            return 1.0
+        r = mp.mpf(v_y) / mp.mpf(v)
+        core = r / (r + 2 * mp.sqrt(mp.mpf(6) / 5 - r**2 / 5))
+        return float(mp.sqrt(6 * mp.sqrt(3) / 5) * mp.sqrt(1 - r**2 / 6) * core ** mp.mpf(0.25))
+
+
+def test_the_law_is_thorntons_and_elastic_below_the_yield_speed():
+    law = MaterialRestitution(0.03)
+    for v in (0.0, 0.01, 0.03, 0.0300001, 0.05, 0.3, 3.0, 30.0):
+        # the kernel evaluates a dozen float operations: a few units in the last place
+        assert law.at(v) == pytest.approx(thornton(0.03, v), rel=1e-14, abs=1e-15)
+    assert law.at(0.03) == 1.0 and law.at(0.01) == 1.0
+    # Thornton's law falls steadily above yield and is continuous there
+    speeds = np.geomspace(0.03, 30.0, 50)
+    values = [law.at(v) for v in speeds]
+    assert all(a > b for a, b in itertools.pairwise(values))
+    assert values[0] == pytest.approx(1.0, abs=1e-12)
+
+
+def _impacts(events):
+    return events[events[:, _rigid.E_KIND] == _rigid.KIND_IMPACT]
+
+
+def test_each_impact_of_a_forced_run_restitutes_thorntons_e_at_its_speed():
+    # the constant-e run's impact speeds span 0.07-0.6 m/s; a yield speed inside that span
+    # puts impacts on both sides of it
+    reference = simulate_forced(SYSTEM, FORCING, contact="rigid", e=0.6, periods=60)
+    speeds = _impacts(reference.events)[:, _rigid.E_VREL]
+    v_y = float(np.median(speeds))
+    law = MaterialRestitution(v_y)
+    res = simulate_forced(SYSTEM, FORCING, contact="rigid", e=law, periods=60)
+    hits = _impacts(res.events)
+    assert np.any(hits[:, _rigid.E_VREL] <= v_y) and np.any(hits[:, _rigid.E_VREL] > v_y)
+    M, m = SYSTEM.M, SYSTEM.m
+    mu = M * m / (M + m)
+    for row in hits:
+        v, u, v1, u1 = row[_rigid.E_XD], row[_rigid.E_YD], row[_rigid.E_XD1], row[_rigid.E_YD1]
+        vrel = row[_rigid.E_VREL]
+        e = thornton(v_y, vrel)
+        scale = abs(v) + abs(u)
+        # separation over approach, momentum, and the loss ½μ(1 − e²)v²: a few roundings of
+        # the velocities (1e-15 of their size) each
+        assert abs((u1 - v1) + e * (u - v)) <= 1e-14 * scale
+        assert abs(M * v1 + m * u1 - M * v - m * u) <= 1e-14 * (M + m) * scale
+        assert row[_rigid.E_LOST] == pytest.approx(0.5 * mu * (1 - e * e) * vrel**2, rel=1e-12)
+    # no chatter taken to an accumulation point: every event is an impact
+    assert len(hits) == len(res.events)
+    assert abs(res.energy["residual"]) < 1e-10
+
+
+def test_a_record_run_loses_what_thorntons_e_says_at_each_impact():
+    dt = 0.004
+    t = np.arange(0.0, 3.0, dt)
+    record = Record(4.0 * np.cos(33.0 * t), dt, "force")
+    r = damper_response(SYSTEM, record, e=MaterialRestitution(0.15))
+    v = r.impact_speeds
+    assert len(v) >= 10 and np.any(v > 0.15) and np.any(v <= 0.15)
+    mu = SYSTEM.M * SYSTEM.m / (SYSTEM.M + SYSTEM.m)
+    # every event is an impact (no accumulation), each losing ½μ(1 − e(v)²)v²
+    lost = sum(0.5 * mu * (1 - thornton(0.15, s) ** 2) * s * s for s in v)
+    assert r.ledger["lost_in_impacts"] == pytest.approx(lost, rel=1e-12)
+    assert r.ledger["residual"] < 1e-9
+
+
+def test_orbits_refuse_a_speed_dependent_e_in_one_line():
+    from symimpact.forced import shoot
+
+    with pytest.raises(ParameterError, match=r"constant e"):
+        shoot(SYSTEM, FORCING, MaterialRestitution(0.03), (0.0, 0.0, 0.0, 0.0))
+
+
+STEEL = ("--impactor", "steel sphere 20 mm", "--cavity", "steel flat", "--contact", "rigid")
+PRIMARY = ("--M", "1 kg", "--K", "1000 N/m", "--C", "0.5 N s/m", "--gap", "20 mm")
+
+
+def test_cli_simulate_with_the_materials_e(capsys):
+    code = main(["simulate", *PRIMARY, *STEEL, "--e", "material", "--force", "2 N", "--omega",
+               "36", "--periods", "40", "--json"])  # fmt: skip
+    out = capsys.readouterr()
+    assert code == 0, out.err
+    data = json.loads(out.out)
+    expected = derived_contact("steel sphere 20 mm", "steel flat", 1.0, M="1 kg").yield_speed
+    assert data["e"] == {"e": "material", "yield_speed": pytest.approx(expected, rel=1e-15)}
+    assert "yield speed" in out.err
+
+
+@pytest.mark.parametrize(
+    ("args", "parameter"),
+    [
+        (
+            (
+                "frf",
+                *PRIMARY,
+                *STEEL,
+                "--e",
+                "material",
+                "--force",
+                "2 N",
+                "--omega-range",
+                "30:36:1",
+                "--no-sweeps",
+            ),
+            "e",
+        ),
+        (
+            (
+                "simulate",
+                *PRIMARY,
+                "--m",
+                "0.05",
+                "--contact",
+                "rigid",
+                "--e",
+                "material",
+                "--force",
+                "2 N",
+                "--omega",
+                "36",
+            ),
+            "e",
+        ),
+    ],
+    ids=["frf", "no-materials"],
+)
+def test_cli_refuses_the_materials_e_where_it_cannot_apply(args, parameter, capsys):
+    assert main(list(args)) == 2
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert len(lines) == 1 and f"error: {parameter}:" in lines[0], lines
