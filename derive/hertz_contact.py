@@ -369,6 +369,40 @@ def derive() -> Board:
         detail=f"largest difference {mp.nstr(max(diffs), 3)}; e = 1 at v₀ = v_y",
     )
 
+    # --- the impact law's slope when e follows the speed (Step 9's saltation) ------------------
+    # A rigid impact at approach speed w leaves at the separation speed e(w)·w.  Where e is
+    # constant the velocity jumps are linear in w, and Step 9's saltation matrix holds e; where
+    # e follows the speed (e = T(v_y/w) above yield) their slope in w is d(e·w)/dw = e + w·e'(w),
+    # which takes e's place in the saltation's velocity entries.  With r = v_y/w,
+    # w·de/dw = −r·dT/dr.
+    wsp, vy = sp.symbols("w v_y", positive=True)
+    slope = w(
+        "thornton_separation_slope",
+        sp.simplify(printed - ratio_v * sp.diff(printed, ratio_v)),
+        r"$\hat e = d(e\,w)/dw = T(r_v) - r_v\,T'(r_v)$: the separation speed's slope in the "
+        r"approach speed, in place of e in Step 9's saltation entries.",
+        "F5",
+    )
+    board.check(
+        "ê = d(e·w)/dw with e = T(v_y/w), written in r = v_y/w",
+        "F5",
+        sp.simplify(
+            sp.diff(wsp * printed.subs(ratio_v, vy / wsp), wsp) - slope.subs(ratio_v, vy / wsp)
+        )
+        == 0,
+    )
+    with mp.workdps(30):
+        f_s = sp.lambdify(ratio_v, slope, "mpmath")
+        slopes = [f_s(mp.mpf(t)) for t in ("0.001", "0.01", "0.1", "0.5", "0.9", "1")]
+    board.check(
+        "ê lies in (0, 1] over 1e-3 ≤ v_y/w ≤ 1 (the separation speed grows with the approach "
+        "speed, more slowly than it)",
+        "F5",
+        all(0 < x <= 1 for x in slopes),
+        detail="ê at v_y/w = 1e-3, 0.01, 0.1, 0.5, 0.9, 1: "
+        + ", ".join(mp.nstr(x, 4) for x in slopes),
+    )
+
     # --- kernels -----------------------------------------------------------------------------------
     aE1 = Arg(E1, "Pa", "Young's modulus of body 1", 1e6, 5e11, log=True)
     anu1 = Arg(nu1, "1", "Poisson's ratio of body 1", 0.0, 0.5)
@@ -449,6 +483,14 @@ def derive() -> Board:
             "Coefficient of restitution of an elastic–perfectly-plastic impact (v₀ ≥ v_y)",
             "1",
             "e",
+        ),
+        (
+            "thornton_separation_slope",
+            (ar,),
+            slope,
+            "Slope ê = e + w·de/dw of the separation speed in the approach speed w (v₀ ≥ v_y)",
+            "1",
+            r"\hat{e}",
         ),
     )
     for name, args, expr, returns, unit, lhs in kernels:

@@ -3265,6 +3265,23 @@ static void check_hertz_contact_thornton_restitution(void)
     }
 }
 
+/* hertz_contact.thornton_separation_slope: Slope ê = e + w·de/dw of the separation speed in the approach speed w (v₀ ≥ v_y) [1] */
+static void check_hertz_contact_thornton_separation_slope(void)
+{
+    static const double expected[3] = { 0.7519710003642219, 0.18933827734963554, 0.4933565949614775 };
+    static const double scale[3] = { 0.7519710003642219, 0.18933827734963554, 0.4933565949614775 };
+    static const double a_r_v[3] = { 0.453789, 0.00205925, 0.0934464 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_hertz_contact_thornton_separation_slope", i, symimpact_hertz_contact_thornton_separation_slope(a_r_v[i]), expected[i], scale[i]);
+    }
+    symimpact_hertz_contact_thornton_separation_slope_batch(3, a_r_v, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_hertz_contact_thornton_separation_slope_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* beam_modes.mode_shape_clamped_clamped: Mode shape φ(ξ) of the clamped–clamped beam [1] */
 static void check_beam_modes_mode_shape_clamped_clamped(void)
 {
@@ -4813,6 +4830,7 @@ int main(void)
     check_hertz_contact_yield_approach();
     check_hertz_contact_speed_for_approach();
     check_hertz_contact_thornton_restitution();
+    check_hertz_contact_thornton_separation_slope();
     check_beam_modes_mode_shape_clamped_clamped();
     check_beam_modes_mass_coefficient_clamped_clamped();
     check_beam_modes_stiffness_coefficient_clamped_clamped();
@@ -4844,6 +4862,6 @@ int main(void)
     check_periodic_orbit_phase_residual_and_derivatives();
     check_slow_flow_clearance_for_response_and_derivatives();
     check_sampled_load_ramp_state();
-    printf("symimpact: %ld checks of 164 kernels, 8 bundles and 5 iterations, %ld failed\n", checks, failures);
+    printf("symimpact: %ld checks of 165 kernels, 8 bundles and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

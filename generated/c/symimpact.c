@@ -5616,6 +5616,24 @@ void symimpact_hertz_contact_thornton_restitution_batch(size_t n, const double *
     }
 }
 
+/* Eq. F5: \hat{e} = \frac{\sqrt[4]{r_{v}} \left(- 6 \sqrt[4]{375} r_{v} - 9 \sqrt[4]{15} \sqrt{6 - r_{v}^{2}}\right) \sqrt[4]{\frac{1}{5 r_{v} + 2 \sqrt{5} \sqrt{6 - r_{v}^{2}}}}}{2 \sqrt{5} r_{v}^{2} - 5 r_{v} \sqrt{6 - r_{v}^{2}} - 12 \sqrt{5}} */
+double symimpact_hertz_contact_thornton_separation_slope(double r_v)
+{
+    const double _x0 = pow(r_v, 2);
+    const double _x1 = sqrt(6 - _x0);
+    const double _x2 = 5*r_v;
+    const double _x3 = sqrt(5);
+    return pow(r_v, 1.0/4.0)*(-9*pow(15, 1.0/4.0)*_x1 - 6*pow(375, 1.0/4.0)*r_v)*pow(1.0/(2*_x1*_x3 + _x2), 1.0/4.0)/(2*_x0*_x3 - _x1*_x2 - 12*_x3);
+}
+
+void symimpact_hertz_contact_thornton_separation_slope_batch(size_t n, const double *restrict r_v, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_hertz_contact_thornton_separation_slope(r_v[i]);
+    }
+}
+
 /* ---- beam_modes: A beam of several modes (Eq. F6 (derived here, beyond the paper)) ---- */
 
 const double symimpact_beam_modes_BETA_L_CANTILEVER[8] = {

@@ -1637,6 +1637,12 @@ program check_kernels
     got = hertz_contact_thornton_restitution([0.453789_dp, 0.00205925_dp, 0.0934464_dp])
     call check("hertz_contact_thornton_restitution", got, expected, scale)
 
+    ! hertz_contact.thornton_separation_slope
+    expected = [0.7519710003642219_dp, 0.18933827734963554_dp, 0.4933565949614775_dp]
+    scale = [0.7519710003642219_dp, 0.18933827734963554_dp, 0.4933565949614775_dp]
+    got = hertz_contact_thornton_separation_slope([0.453789_dp, 0.00205925_dp, 0.0934464_dp])
+    call check("hertz_contact_thornton_separation_slope", got, expected, scale)
+
     ! beam_modes.mode_shape_clamped_clamped
     expected = [0.18961625685432296_dp, -0.5672212726049561_dp, -1.2669468455929116_dp]
     scale = [0.18961625685432296_dp, 0.5672212726049561_dp, 1.2669468455929116_dp]
@@ -2544,7 +2550,7 @@ row)
     got(3) = row(2)
     call check("sampled_load_ramp_state(2)", got, expected, scale)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 164 kernels, 8 bundles and 5 iterations, ", &
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 165 kernels, 8 bundles and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

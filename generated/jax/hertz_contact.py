@@ -24,6 +24,7 @@ __all__ = [
     "yield_approach",
     "speed_for_approach",
     "thornton_restitution",
+    "thornton_separation_slope",
 ]
 
 
@@ -148,3 +149,16 @@ def thornton_restitution(r_v):
     """
     _x0 = r_v**2
     return (1/5)*jax.numpy.sqrt(10)*3**(3/4)*r_v**(1/4)*jax.numpy.sqrt(1 - 1/6*_x0)*((r_v + 2*jax.numpy.sqrt(6/5 - 1/5*_x0))**(-1.0))**(1/4)
+
+
+@jax.jit
+def thornton_separation_slope(r_v):
+    r"""Slope ê = e + w·de/dw of the separation speed in the approach speed w (v₀ ≥ v_y) [1], Eq. F5 (derived here, beyond the paper).
+
+    ``r_v``: Yield speed over impact speed v_y/v₀ (≤ 1) [1]
+    """
+    _x0 = r_v**2
+    _x1 = jax.numpy.sqrt(6 - _x0)
+    _x2 = 5*r_v
+    _x3 = jax.numpy.sqrt(5)
+    return r_v**(1/4)*(-9*15**(1/4)*_x1 - 6*375**(1/4)*r_v)*((2*_x1*_x3 + _x2)**(-1.0))**(1/4)/(2*_x0*_x3 - _x1*_x2 - 12*_x3)

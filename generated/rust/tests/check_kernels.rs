@@ -1772,6 +1772,18 @@ fn hertz_contact_thornton_restitution() {
 }
 
 #[test]
+fn hertz_contact_thornton_separation_slope() {
+    let expected = [0.7519710003642219, 0.18933827734963554, 0.4933565949614775];
+    let scale = [0.7519710003642219, 0.18933827734963554, 0.4933565949614775];
+    let points: [[f64; 1]; 3] = [[0.453789_f64], [0.00205925_f64], [0.0934464_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::hertz_contact::thornton_separation_slope(p[0]))
+        .collect();
+    check("hertz_contact::thornton_separation_slope", &got, &expected, &scale);
+}
+
+#[test]
 fn beam_modes_mode_shape_clamped_clamped() {
     let expected = [0.18961625685432296, -0.5672212726049561, -1.2669468455929116];
     let scale = [0.18961625685432296, 0.5672212726049561, 1.2669468455929116];
