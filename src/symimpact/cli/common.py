@@ -146,10 +146,6 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
         raise ParameterError("fn", "give the modal mass --M (or the stiffness --K) with --fn")
 
 
-#: The commands that take e per impact from the materials (``--e material``): runs, not orbits
-PER_IMPACT = ("simulate", "random", "shock", "sweep-sine")
-
-
 def _material_restitution(ns: argparse.Namespace, body: Any, cavity: str, said: list) -> None:
     """``--e material``: e per impact from the materials (Step 13, Eq. F5), a
     :class:`~symimpact.forced.contact_law.MaterialRestitution` with the contact's yield speed;
@@ -183,11 +179,10 @@ def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
     cav = getattr(ns, "cavity", None)
     speed = getattr(ns, "impact_speed", None)
     material_e = str(getattr(ns, "e", None)).strip().lower() == "material"
-    if material_e and ns.command not in PER_IMPACT:
+    if material_e and getattr(ns, "method", None) == "closed-form":
         raise ParameterError(
-            "e", "material: a restitution that follows the impact speed is for runs (simulate, "
-            "random, shock, sweep-sine); periodic orbits, frf, branch and design need a "
-            "constant e"
+            "e", "material: the closed form (Eq. F3) needs a constant e; --method shooting "
+            "follows the materials' e at each impact"
         )  # fmt: skip
     if material_e and (imp is None or cav is None):
         raise ParameterError(

@@ -11,7 +11,6 @@ from typing import Any
 from .. import budgets
 from .common import (
     AMPLITUDE_NEEDED,
-    PER_IMPACT,
     add_output,
     add_system,
     emit,
@@ -130,7 +129,7 @@ def contact_of(ns) -> Any:
     if ns.contact != "hunt-crossley" and ns.chi is not None:
         raise ParameterError("chi", "applies to --contact hunt-crossley only")
     if ns.contact == "rigid" and isinstance(ns.e, MaterialRestitution):
-        return restitution_or_law(ns.e, per_impact=ns.command in PER_IMPACT)  # Eq. F5
+        return restitution_or_law(ns.e)  # the materials' e at each impact (Eq. F5)
     if ns.contact == "rigid":
         e = nonnegative_float("e", ns.e)
         if e > 1.0:

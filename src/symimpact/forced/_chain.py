@@ -25,6 +25,7 @@ from ._rigid import (
     E_KIND,
     E_SIDE,
     E_T,
+    E_VREL,
     E_X,
     E_XD,
     E_XD1,
@@ -38,12 +39,15 @@ from ._rigid import (
     P_M,
     P_PHI,
     P_W,
+    P_VY,
     P_XB,
     P_e,
     P_m,
     _accel,
     flight_matrices,
     flight_parameter_terms,
+    restitution,
+    restitution_slope,
 )
 
 #: The parameters a fifth column can carry, by code (-1: none).
@@ -136,17 +140,30 @@ def _impact(p, row, J, which):
     """J through an impact: Step 9's saltation matrix, and the parameter column's explicit
     term (G·f⁻ − f⁺)·∂t/∂p plus the law's own derivative (G the impact law's Jacobian, f∓ the
     vector fields before and after)."""
-    m, M, C, e = p[P_m], p[P_M], p[P_C], p[P_e]
+    m, M, C = p[P_m], p[P_M], p[P_C]
     t, x, v, u = row[E_T], row[E_X], row[E_XD], row[E_YD]
     if u == v:  # an impact at zero relative speed has no saltation matrix
         return np.full(J.shape, np.nan)
+    e = restitution(p[P_e], p[P_VY], row[E_VREL])
     kM, km = _gain_main(m, M, e), _gain_impact(m, M, e)
     a_pre = _accel(p, M, t, x, v)
     S = np.zeros((4, 4))
     S[0, 0], S[0, 2] = 1.0, kM
-    S[1, 1], S[1, 2], S[1, 3] = 1.0 - kM, _s_main_z(m, M, e, C, u - v, a_pre), kM
     S[2, 2] = -e
-    S[3, 1], S[3, 2], S[3, 3] = km, _s_impact_z(m, M, e, u - v, a_pre), 1.0 - km
+    if p[P_VY] <= 0.0:  # one e for every impact: Step 9's entries as derived
+        S[1, 1], S[1, 2], S[1, 3] = 1.0 - kM, _s_main_z(m, M, e, C, u - v, a_pre), kM
+        S[3, 1], S[3, 2], S[3, 3] = km, _s_impact_z(m, M, e, u - v, a_pre), 1.0 - km
+    else:
+        # e follows the approach speed w: the velocity jumps' slopes in the velocities hold
+        # ê = d(e·w)/dw (Step 13) in place of e, the jump itself (k_M, k_m, f⁺) still e.  The
+        # column z is (f⁺ − G·f⁻)/ż with G the velocities' Jacobian: Step 9's entries at ê,
+        # less C·k_M/M for the primary's damping force after the jump
+        eh = restitution_slope(p[P_e], p[P_VY], row[E_VREL])
+        kMh, kmh = _gain_main(m, M, eh), _gain_impact(m, M, eh)
+        S[1, 1], S[1, 3] = 1.0 - kMh, kMh
+        S[1, 2] = _s_main_z(m, M, eh, 0.0, u - v, a_pre) - C * kM / M
+        S[3, 1], S[3, 2], S[3, 3] = kmh, _s_impact_z(m, M, eh, u - v, a_pre), 1.0 - kmh
+        kM, km = kMh, kmh  # the parameter column's (G·f⁻) terms below
     out = _times(S, J, 4)
     if which >= 0:
         col = _law_d(p, row, which)

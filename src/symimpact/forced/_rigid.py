@@ -70,6 +70,7 @@ _vf_phi = njit(cache=True)(_fl.forced_velocity_d_phi_scalar)
 _steady_cos = njit(cache=True)(_fl.steady_cosine_scalar)
 _steady_sin = njit(cache=True)(_fl.steady_sine_scalar)
 _thornton = njit(cache=True)(_hz.thornton_restitution_scalar)
+_thornton_slope = njit(cache=True)(_hz.thornton_separation_slope_scalar)
 
 
 @njit(cache=True)
@@ -81,6 +82,18 @@ def restitution(e, vy, vrel):
     if vrel <= vy:
         return 1.0
     return _thornton(vy / vrel)
+
+
+@njit(cache=True)
+def restitution_slope(e, vy, vrel):
+    """ê = d(e·w)/dw, the separation speed's slope in the approach speed ``vrel`` [m/s] (Step
+    13): ``e`` where ``vy`` is 0 (a constant e), 1 at or below the yield speed ``vy``,
+    Thornton's T(r) − r·T'(r), r = vy/vrel, above it."""
+    if vy <= 0.0:
+        return e
+    if vrel <= vy:
+        return 1.0
+    return _thornton_slope(vy / vrel)
 
 
 #: 8-point Gauss–Legendre nodes and weights on [−1, 1] (NumPy computes them; none typed in).

@@ -47,11 +47,12 @@ class MaterialRestitution:
     (Step 13, Eq. F5): e = 1 at or below the yield speed v_y [m/s] (the contact stays elastic),
     Thornton's elastic–perfectly-plastic e(v_y/v) above it.  ``source`` says where v_y came from.
 
-    Simulations and records take it (:func:`symimpact.forced.simulate_forced`,
-    :func:`symimpact.forced.damper_response`); chatter is not taken to an accumulation point
-    (a sequence's speeds fall below v_y, where impacts no longer lose energy, so it does not
-    accumulate).  Shooting and what builds on it need Step 9's saltation matrix with de/dv and
-    refuse it."""
+    Simulations, records, shooting, continuation in Ω, a clearance or the load, frf and design
+    take it: the saltation matrix of an impact then holds ê = e + w·de/dw (Step 13) in place of e
+    in its velocity entries (:mod:`symimpact.forced._chain`).  Chatter is not taken to an
+    accumulation point (a sequence's speeds fall below v_y, where impacts no longer lose
+    energy, so it does not accumulate).  The closed-form orbits (Eq. F3), continuation in e and
+    a design's e ± 0.1 need a constant e and refuse it."""
 
     yield_speed: float
     source: str = ""
@@ -96,22 +97,19 @@ def checked(system: Any, forcing: Any, e: Any, rigid_only: str | None = None):
     instance("forcing", forcing, Forcing, "a Forcing")
     if rigid_only and not is_rigid(e):
         raise ParameterError("e", f"{rigid_only} is for rigid impacts: give Newton's e")
+    if rigid_only and isinstance(e, MaterialRestitution):
+        raise ParameterError(
+            "e", f"{rigid_only} needs a constant e; e of the materials (per impact) is followed by "
+            "shooting (periodic --method shooting, frf, branch, design)"
+        )  # fmt: skip
     return system, forcing, restitution_or_law(e)
 
 
-def restitution_or_law(e: Any, per_impact: bool = False) -> Any:
-    """``e`` checked: a :class:`CompliantContact` as it is, else Newton's restitution in [0, 1]
-    (Eq. F2) as a float; a :class:`MaterialRestitution` (Eq. F5) as it is with ``per_impact``
-    (simulations and records), else refused (shooting needs a constant e)."""
-    if not is_rigid(e):
+def restitution_or_law(e: Any) -> Any:
+    """``e`` checked: a :class:`CompliantContact` or a :class:`MaterialRestitution` (Eq. F5)
+    as it is, else Newton's restitution in [0, 1] (Eq. F2) as a float."""
+    if not is_rigid(e) or isinstance(e, MaterialRestitution):
         return e
-    if isinstance(e, MaterialRestitution) and per_impact:
-        return e
-    if isinstance(e, MaterialRestitution):
-        raise ParameterError(
-            "e", "a restitution that follows the impact speed (material) is for simulations "
-            "and records; periodic orbits, frf, branch and design need a constant e"
-        )  # fmt: skip
     e = nonnegative_float("e", e)
     if e > 1.0:
         raise ParameterError("e", f"must lie in [0, 1], got {e:g}")
@@ -123,6 +121,12 @@ def contact_setting(e: Any) -> Any:
     speed (:meth:`MaterialRestitution.as_dict`), or the law's name with its χ
     (:meth:`CompliantContact.as_dict`)."""
     return e.as_dict() if isinstance(e, CompliantContact | MaterialRestitution) else e
+
+
+def is_constant(e: Any) -> bool:
+    """Whether ``e`` is one restitution for every impact (a number), not a compliant law nor a
+    :class:`MaterialRestitution`."""
+    return not isinstance(e, CompliantContact | MaterialRestitution)
 
 
 def is_rigid(e: Any) -> bool:

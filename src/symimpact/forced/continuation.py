@@ -53,7 +53,7 @@ from .. import budgets, checks
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..system import ImpactSystem
 from . import _rigid
-from .contact_law import checked, is_rigid
+from .contact_law import checked, is_constant, is_rigid
 from .forcing import Forcing
 from .shooting import (
     MAX_PERIODS,
@@ -404,10 +404,11 @@ def continue_orbit(
     max_points = checks.whole_number("max_points", max_points, 2, 1_000_000)
     if parameter in ("omega", "gap") and not lo > 0:
         raise ParameterError("bounds", f"{parameter} must stay positive, got low {lo:g}")
-    if parameter == "e" and not is_rigid(e):
+    if parameter == "e" and not is_constant(e):
         raise ParameterError(
             "parameter",
-            "e is continued for rigid impacts; a compliant law sets its own restitution",
+            "e is continued for rigid impacts of one restitution; a compliant law or the "
+            "materials' e (per impact) set their own",
         )
     if parameter == "e" and not (0 <= lo and hi <= 1):
         raise ParameterError("bounds", f"e must stay within 0–1, got {lo:g}–{hi:g}")
@@ -802,9 +803,9 @@ def _value(parameter: str, s: BranchStart) -> float:
 
 def _value_of(parameter: str, system: ImpactSystem, forcing: Forcing, e: Any) -> float:
     """The value of ``parameter`` (one of :data:`PARAMETERS`) in ``system``, ``forcing``, ``e``
-    (NaN for e with a compliant contact)."""
+    (NaN for e with a compliant contact or the materials' e)."""
     return {"omega": forcing.omega, "gap": system.gap, "F0": forcing.F0, "X_b": forcing.X_b,
-            "e": float(e) if is_rigid(e) else math.nan}[parameter]  # fmt: skip
+            "e": float(e) if is_constant(e) else math.nan}[parameter]  # fmt: skip
 
 
 def orbit_amplitude(start: BranchStart) -> float:

@@ -34,7 +34,7 @@ from .. import checks
 from ..errors import ParameterError, SymimpactError
 from ..generated import forced_flight as ff
 from ..system import ImpactSystem
-from .contact_law import checked, is_rigid, simulation_arguments
+from .contact_law import checked, is_constant, is_rigid, simulation_arguments
 from .continuation import (
     SWITCHES,
     Branch,
@@ -283,7 +283,7 @@ def frequency_response(
 
     for omega in np.linspace(band[0], band[1], starts + 2)[1:-1]:
         f = _forcing(forcing, float(omega))
-        for o in periodic_orbits(system, f, e) if is_rigid(e) else ():
+        for o in periodic_orbits(system, f, e) if is_constant(e) else ():
             if o.admissible:
                 follow("closed form", 1, *_section_state(o, float(omega), h, system, forcing))
         # one run from rest; its end shot as an orbit of one and of two periods

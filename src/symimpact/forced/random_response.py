@@ -190,7 +190,7 @@ def random_statistics(
     dt = positive_float("dt", dt, "s")
     n = checks.whole_number("realisations", realisations, 1, 1_000_000)
     seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
-    e = restitution_or_law(e, per_impact=True)
+    e = restitution_or_law(e)
     settle = (
         default_settle(system)
         if settle is None

@@ -38,7 +38,13 @@ from .. import budgets, checks
 from ..errors import MethodNotApplicable
 from ..system import ImpactSystem
 from . import _chain, _rigid
-from .contact_law import CompliantContact, checked, is_rigid, simulation_arguments
+from .contact_law import (
+    CompliantContact,
+    checked,
+    is_rigid,
+    restitution_parameters,
+    simulation_arguments,
+)
 from .forcing import Forcing
 from .simulation import (
     TooManyContacts,
@@ -203,7 +209,8 @@ def rigid_monodromy(
     which = -1 if parameter is None else _chain.PARAMETERS.index(parameter)
     p = np.zeros(_rigid.N_PARAMS)
     p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
-    p[_rigid.P_m], p[_rigid.P_h], p[_rigid.P_e] = system.m, system.gap / 2.0, e
+    p[_rigid.P_m], p[_rigid.P_h] = system.m, system.gap / 2.0
+    p[_rigid.P_e], p[_rigid.P_VY] = restitution_parameters(e)
     p[_rigid.P_F0], p[_rigid.P_XB] = forcing.F0, forcing.X_b
     p[_rigid.P_W], p[_rigid.P_PHI] = forcing.omega, forcing.phase
     events = np.ascontiguousarray(np.reshape(events, (-1, _rigid.N_EVENT_COLS)), dtype=float)

@@ -51,7 +51,7 @@ import numpy as np
 
 from .. import checks
 from ..errors import ParameterError
-from ..forced.contact_law import checked, is_rigid
+from ..forced.contact_law import checked, is_constant, is_rigid
 from ..forced.coverage import FREQUENCIES
 from ..forced.forcing import Forcing
 from ..forced.frf import SWEEP_ACCURACY, _sweep, _sweep_runs, frequency_response
@@ -268,7 +268,7 @@ def design_map(
     executor = _executor(executor, workers, client, scheduler)
     store = None
     if out is not None:
-        contact = {"e": e} if is_rigid(e) else e.as_dict()
+        contact = e.as_dict() if not is_constant(e) else {"e": e}
         motion = {k: v for k, v in forcing.as_dict().items() if k in ("V_b", "A_b")}
         settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, **motion,
                     **contact,
@@ -370,7 +370,7 @@ def refine_best(
         result = {**{c: float(first[c]) for c in by}, "gap": best_d, **row(best_d)}
         result.update(tolerance=tolerance, grid_gap=float(gaps[i]), evaluations=len(cache),
                       walk_moves=walked)  # fmt: skip
-        if is_rigid(e):
+        if is_constant(e):  # (the materials' e has no single value to move)
             for key, de in (("peak_e_minus", -0.1), ("peak_e_plus", 0.1)):
                 ee = min(max(float(e) + de, 0.0), 1.0)
                 result[key] = design_row(base.with_(gap=best_d), forcing, ee, w,

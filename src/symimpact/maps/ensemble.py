@@ -116,7 +116,7 @@ def random_ensemble(
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
     n = checks.whole_number("realisations", realisations, 1, 100_000_000)
     seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
-    e = restitution_or_law(e, per_impact=True)
+    e = restitution_or_law(e)
     T = positive_float("duration", duration, "s")
     dt = positive_float("dt", dt, "s")
     settle = (
