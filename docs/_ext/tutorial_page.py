@@ -144,7 +144,9 @@ print(f"f_n = {{f_n:.3f}} Hz; rho*A*L/4 = {{m_beam / 4:.4f}} kg")"""
             "0.01", "--impactor", ball, "--cavity", "aluminium alloy flat", "--gap", "10 mm",
             "--contact", "rigid", "--e", "material", "--base-acc", "0.5 g", "--freq",
             f'{env["f_n"]:.6g} Hz', "--periods", "200"]  # fmt: skip
-    out += ["```console", _command(argv), run_cli(argv), "```", ""]
+    # its one line of summary, wrapped to the code column as a terminal would
+    said = textwrap.fill(run_cli(argv).strip(), CODE_COLUMNS, subsequent_indent="  ")
+    out += ["```console", _command(argv), said, "```", ""]
     out += [
         "A contact of microseconds, ten million times stiffer than the paper's "
         "$K_{Hz}$ = 1000 N/m<sup>1.5</sup>, and plastic at this speed: the dent takes most of the "
