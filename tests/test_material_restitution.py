@@ -195,3 +195,16 @@ def test_cli_refuses_the_materials_e_where_it_cannot_apply(args, parameter, caps
     assert main(args) == 2
     lines = capsys.readouterr().err.strip().splitlines()
     assert len(lines) == 1 and f"error: {parameter}:" in lines[0], lines
+
+
+def test_cli_design_follows_the_materials_e(capsys):
+    """A design with the materials' e: its peaks computed, and no e ± 0.1 beside them (the
+    materials' e has no single value to move); --e material is not read as an e-range."""
+    primary = PRIMARY[:-2]  # the clearances come from --gaps
+    code = main(["design", *primary, *STEEL, "--e", "material", "--force", "2 N",
+                 "--omega-range", "34:36:1", "--gaps", "20 mm", "--executor", "serial",
+                 "--no-refine", "--json"])  # fmt: skip
+    out = capsys.readouterr()
+    assert code == 0, out.err
+    (row,) = json.loads(out.out)["designs"]
+    assert 0 < row["peak_amplitude"] and "peak_e_minus" not in row

@@ -186,7 +186,7 @@ def _e_range(ns) -> tuple[float, float] | None:
     from ..errors import ParameterError
     from ..units import nonnegative_float
 
-    if ns.e is None or ":" not in str(ns.e):
+    if not isinstance(ns.e, str) or ":" not in ns.e:  # none, a number, or the materials' e
         return None
     parts = str(ns.e).split(":")
     if len(parts) != 2 or ns.contact != "rigid":
