@@ -151,16 +151,16 @@ def _material_restitution(ns: argparse.Namespace, body: Any, cavity: str, said: 
     :class:`~symimpact.forced.contact_law.MaterialRestitution` with the contact's yield speed;
     a constant where the law does not depend on the speed (a resilient material's √R, or no
     yield strength: elastic, e = 1)."""
-    from ..derived_contact import derived_contact
+    from ..derived_contact import cavity_body, derived_contact
     from ..forced.contact_law import MaterialRestitution
 
     contact = derived_contact(body, cavity, 1.0, M=ns.M)
-    source = contact.sources["e"].split(":")[0]
-    if contact.yield_speed is None or source.startswith("resilience"):
+    resilient = any(b.material.resilience is not None for b in (body, cavity_body(cavity)))
+    if contact.yield_speed is None or resilient:
         ns.e = contact.e
         said.append(f"e {contact.e:.4g} at every impact speed ({contact.sources['e']})")
         return
-    ns.e = MaterialRestitution(contact.yield_speed, contact.sources.get("yield_speed", ""))
+    ns.e = MaterialRestitution(contact.yield_speed)
     said.append(
         f"e of the materials at each impact: 1 up to the yield speed {contact.yield_speed:.4g} "
         "m/s, Thornton's law above (Step 13)"

@@ -9,9 +9,9 @@
 - :func:`rigid_limit`: compliant contacts stiffened with their damping set from e, against the
   rigid orbit they converge to.
 - :func:`shoot`, :func:`shoot_from_rest`, :func:`settled_state`, :func:`monodromy`: periodic
-  orbits by Newton's method on the stroboscopic map, with the monodromy carried through flights and rigid impacts
-  (saltation matrices) or through compliant contacts (variational equations, the located onsets
-  and exits differentiated), and their Floquet multipliers.
+  orbits by Newton's method on the stroboscopic map, with the monodromy carried through flights
+  and rigid impacts (saltation matrices) or through compliant contacts (variational equations,
+  the located onsets and exits differentiated), and their Floquet multipliers.
 - :class:`CompliantContact`: a compliant law given in place of the restitution e to shooting,
   continuation, the frequency-response curve and the design map.
 - :func:`continue_orbit`, :func:`trace_branch`: pseudo-arclength continuation of those orbits in

@@ -45,7 +45,7 @@ class CompliantContact:
 class MaterialRestitution:
     """Rigid impacts whose restitution follows the materials at each impact's approach speed v
     (Step 13, Eq. F5): e = 1 at or below the yield speed v_y [m/s] (the contact stays elastic),
-    Thornton's elastic–perfectly-plastic e(v_y/v) above it.  ``source`` says where v_y came from.
+    Thornton's elastic–perfectly-plastic e(v_y/v) above it.
 
     Simulations, records, shooting, continuation in Ω, a clearance or the load, frf and design
     take it: the saltation matrix of an impact then holds ê = e + w·de/dw (Step 13) in place of e
@@ -55,7 +55,6 @@ class MaterialRestitution:
     a design's e ± 0.1 need a constant e and refuse it."""
 
     yield_speed: float
-    source: str = ""
 
     def __post_init__(self) -> None:
         from ..units import positive_float
@@ -63,13 +62,10 @@ class MaterialRestitution:
         object.__setattr__(self, "yield_speed", positive_float("yield_speed", self.yield_speed))
 
     def at(self, speed: Any) -> float:
-        """e at the approach speed ``speed`` [m/s] (Eq. F5)."""
-        from ..generated import hertz_contact as hz
+        """e at the approach speed ``speed`` [m/s] (Eq. F5): the engines' own rule."""
+        from ._rigid import restitution
 
-        v = nonnegative_float("speed", speed)
-        if v <= self.yield_speed:
-            return 1.0
-        return float(hz.thornton_restitution_scalar(self.yield_speed / v))
+        return float(restitution(1.0, self.yield_speed, nonnegative_float("speed", speed)))
 
     def as_dict(self) -> dict[str, Any]:
         """``{"e": "material", "yield_speed": v_y}`` (SI)."""
