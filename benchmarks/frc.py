@@ -32,7 +32,7 @@ from symimpact.forced.contact_law import CompliantContact
 from symimpact.forced.coverage import attractors
 from symimpact.forced.forcing import Forcing
 from symimpact.forced.frf import _sweep, frequency_response
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 from .timing import timed
 

@@ -16,7 +16,7 @@ import pandas as pd
 import symimpact.maps.executors as executors
 import symimpact.maps.runs as runs
 from symimpact.maps import parameter_map
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 from .timing import REPEATS, timed
 

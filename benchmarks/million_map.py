@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from symimpact.maps import parameter_map, read_map
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 BASE = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, c1=5.0, k_hz=1000.0)
 GRID = {

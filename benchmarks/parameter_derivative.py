@@ -18,7 +18,7 @@ import numpy as np
 from symimpact.forced import continuation as cont
 from symimpact.forced.forcing import Forcing
 from symimpact.forced.shooting import shoot_from_rest
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 from .timing import timed
 

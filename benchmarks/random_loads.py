@@ -24,7 +24,7 @@ from symimpact.forced.loads import random_record
 from symimpact.forced.record_flight import primary_response
 from symimpact.forced.record_response import damper_response
 from symimpact.maps.ensemble import random_ensemble
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 from .timing import timed
 

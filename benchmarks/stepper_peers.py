@@ -1,7 +1,7 @@
 """The package's stepper against what a user would write instead, each tuned to the same accuracy.
 
 Peers: a hand-written numba DOP853 with events (:mod:`benchmarks.handwritten_dop853`), and
-``solve_ivp`` (DOP853 and LSODA, through :func:`symimpact.reference.reference_impacts`).  For each
+``solve_ivp`` (DOP853 and LSODA, through :func:`symimpact.free.reference.reference_impacts`).  For each
 system, the reference is the package's stepper at rtol 1e-14 (checked against solve_ivp DOP853
 at rtol 1e-13, printed).  Each method is tuned: of its settings (rtol; for the peers also the
 step cap in free flight, which they need so as not to step over a grazing impact), the cheapest
@@ -17,9 +17,9 @@ import time
 
 import numpy as np
 
-from symimpact.reference import reference_impacts
-from symimpact.simulation import simulate
-from symimpact.system import table2_system
+from symimpact.free.reference import reference_impacts
+from symimpact.free.simulation import simulate
+from symimpact.model.system import table2_system
 
 from . import handwritten_dop853
 

@@ -300,7 +300,7 @@ def fixed_point_ast(fp: FixedPoint, prefix: str = "_c") -> tuple[list, sp.Basic]
     ``prefix`` names the common subexpressions (``_c0``, ...; MATLAB needs a leading letter).
 
     Common subexpressions of the step that do not involve the iterate are computed once, before
-    the loop.  The loop is the one :func:`symimpact.contact.perturbation_duration` runs on arrays::
+    the loop.  The loop is the one :func:`symimpact.free.contact.perturbation_duration` runs on arrays::
 
         x = start; x_previous = inf; iterations = 0
         while abs(x - x_previous) > tol*abs(x) and iterations < max_iter:

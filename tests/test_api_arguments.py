@@ -34,7 +34,7 @@ from symimpact.forced import (
 )
 from symimpact.forced.frf import frequency_response
 from symimpact.maps.design import design_map, design_row
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 ODD = [0, -1, 1.5, math.nan, math.inf, -math.inf, 1e308, True, None, "abc", [1.0, 2.0],
        {"a": 1}, complex(1, 1), np.array([1.0, 2.0])]  # fmt: skip

@@ -11,7 +11,7 @@ import pytest
 from symimpact.cli import main
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, periodic_orbits
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 G = 9.80665  # the standard gravity [m/s²] (CGPM 1901: exact by definition)
 SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05"]

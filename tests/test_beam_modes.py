@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 from scipy.linalg import eigh, solve
 
-from symimpact.beams import beam_constants, beam_modes, static_flexibility
 from symimpact.cli import main
 from symimpact.errors import ParameterError
+from symimpact.model.beams import beam_constants, beam_modes, static_flexibility
 from tests.helpers import N_EL, RHO, A, E, I, L
 from tests.helpers import hermite_beam as _fe
 
@@ -140,7 +140,7 @@ def test_ritz_refuses_in_one_line(capsys, extra, name):
 def test_a_system_from_a_clamped_beam_is_its_mode_at_the_point():
     """ImpactSystem.from_beam with a support and a mode: K and M of that mode at the damper, so
     that the primary's ω_n is the mode's (ω₃ of the clamped–clamped beam at 0.3 L)."""
-    from symimpact.system import ImpactSystem
+    from symimpact.model.system import ImpactSystem
 
     s = ImpactSystem.from_beam(E, I, RHO, A, L, m=0.05, gap=0.002, position=0.3 * L,
                                support="clamped-clamped", mode=3, contact="hertz", k_hz=1e9)  # fmt: skip

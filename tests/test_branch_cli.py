@@ -11,7 +11,7 @@ import pytest
 
 from symimpact.cli import main
 from symimpact.forced import Forcing, periodic_orbits
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 ARGS = ["branch", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm",
         "--force", "2 N", "--omega", "36"]  # fmt: skip

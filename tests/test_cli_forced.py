@@ -11,7 +11,7 @@ import pytest
 
 from symimpact.cli import main
 from symimpact.forced import Forcing, periodic_orbits, simulate_forced
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm"]
 

@@ -15,7 +15,7 @@ from symimpact.forced.contact_law import CompliantContact
 from symimpact.forced.loads import shock_record
 from symimpact.forced.random_response import random_statistics
 from symimpact.forced.shock_response import shock_response
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm", "--e", "0.6"]
 API = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)

@@ -13,10 +13,10 @@ from symimpact.generated import closed_forms, contact_fits, ritz
 
 from symimpact.cli import main
 from symimpact.errors import ParameterError
+from symimpact.free.simulation import simulate
 from symimpact.maps import gap_class, parse_range, sweep
-from symimpact.simulation import simulate
-from symimpact.system import ImpactSystem, table2_system
-from symimpact.units import si
+from symimpact.model.system import ImpactSystem, table2_system
+from symimpact.model.units import si
 
 
 @pytest.mark.parametrize(

@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 
 from symimpact.errors import MethodNotApplicable, ParameterError
+from symimpact.free.simulation import damping_inclination, equivalent_damping_ratio
 from symimpact.maps import parameter_map
 from symimpact.maps.points import as_points
 from symimpact.maps.runs import _Base, _chunk_rows, run_point
-from symimpact.simulation import damping_inclination, equivalent_damping_ratio
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 FITTED = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, c1=5.0, k_hz=1000.0)
 GIVEN = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, c1=5.0, a=2e5, b=300.0, k1=400.0)
@@ -120,7 +120,7 @@ def test_figures_are_undefined_below_their_count():
 def test_cached_machine_code_is_dropped_when_a_compiled_source_changes(tmp_path, monkeypatch):
     """numba keys a cache to its own file only; the stepper keeps a digest of every source that
     is compiled into it and drops its cached code (and _batch's) when the digest changes."""
-    from symimpact import _stepper as st
+    from symimpact.free import _stepper as st
 
     monkeypatch.setattr(st.run._cache, "_cache_path", str(tmp_path))
     names = ["_stepper.run-9.py311.nbi", "_stepper.run-9.py311.1.nbc", "_batch.run_many-3.nbi"]

@@ -27,7 +27,7 @@ from symimpact.forced import (
     simulate_forced,
 )
 from symimpact.forced.frf import frequency_response
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 # the system; k1 1e7 with c1 for e = 0.6 (Step 9), Hertz 1e9, cubic a, b of the same
 # order, and the dashpot c1 = 1 N s/m of the non-linear laws

@@ -9,15 +9,15 @@ import pytest
 from scipy.integrate import solve_ivp
 from symimpact.generated import closed_forms
 
-from symimpact.contact import (
+from symimpact.errors import MethodNotApplicable, ParameterError
+from symimpact.free.contact import (
     amplitude_ratio_roots,
     c1_for_restitution,
     contact_duration,
     contact_motion,
     numerical_contact,
 )
-from symimpact.errors import MethodNotApplicable, ParameterError
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 
 def _ivp_duration(s, v0, law, free=False):
@@ -137,7 +137,7 @@ def test_linear_overdamped_is_not_applicable_but_numerical_is():
     s = ImpactSystem(M=1, K=1000, m=0.2, gap="9 mm", k1=120.0, c1=50.0, contact="linear")
     with pytest.raises(MethodNotApplicable, match="numerical method still applies"):
         contact_duration(s, 0.075, "linear")
-    from symimpact.contact import contact_durations
+    from symimpact.free.contact import contact_durations
 
     out = contact_durations(s, 0.075)
     assert "linear" in out["not_applicable"] and out["numerical"].value > 0
@@ -156,7 +156,7 @@ def test_bad_ba_and_speed():
 
 def test_one_return_type_whatever_the_method():
     """Issue 17, item 5: "perturbation" gave a PerturbationDuration, the others np.float64."""
-    from symimpact.contact import ContactDuration, contact_durations
+    from symimpact.free.contact import ContactDuration, contact_durations
 
     s = ImpactSystem(M=1, K=1000, m=0.15, gap="9 mm", k_hz=1000)
     every = contact_durations(s, 0.075)

@@ -14,15 +14,15 @@ from symimpact.generated import closed_forms
 from symimpact.generated import hertz_contact as hz
 
 from symimpact.cli import main
-from symimpact.derived_contact import (
+from symimpact.errors import ParameterError
+from symimpact.model.derived_contact import (
     cavity_body,
     derived_contact,
     impactor_body,
     sphere_mass,
     yield_pressure,
 )
-from symimpact.errors import ParameterError
-from symimpact.materials import MATERIALS, material
+from symimpact.model.materials import MATERIALS, material
 
 STEEL_ON_STEEL = ("steel sphere 20 mm", "steel flat")
 
@@ -153,7 +153,7 @@ def test_thornton_restitution_against_its_force_law_integrated():
 
 def test_restitution_of_the_derived_contact():
     # below the yield speed the impact is elastic; above it Thornton's e; chi and c1 reproduce it
-    from symimpact.contact import hunt_crossley_restitution
+    from symimpact.model.hunt_crossley import hunt_crossley_restitution
 
     c = derived_contact(*STEEL_ON_STEEL, 0.5)
     assert c.yield_speed < 0.5 and c.e == pytest.approx(
@@ -236,8 +236,8 @@ def test_commands_take_the_contact_from_the_materials(capsys):
     assert derived == typed
     assert f"e {c.e:.4g} at 0.4 m/s (Thornton)" in said
     # a compliant law: K_Hz from the materials, c1 giving the material's e at the impact speed
-    from symimpact.contact import restitution
-    from symimpact.system import ImpactSystem
+    from symimpact.free.contact import restitution
+    from symimpact.model.system import ImpactSystem
 
     argv = ["simulate", *system, "--impactor", "steel sphere 30 mm", "--cavity",
             "polyurethane flat", "--impact-speed", "0.4 m/s", "--contact", "hertz",
@@ -270,7 +270,7 @@ def test_the_derived_contact_stiffened_gives_the_rigid_orbit():
     # 1e-9), then the Hunt–Crossley contact with the derived K_Hz (χ giving that e) against the
     # rigid orbit, and at K_Hz/100: the error falls like the contact duration, K^(−2/5)
     from symimpact.forced import Forcing, periodic_orbits, rigid_limit
-    from symimpact.system import ImpactSystem
+    from symimpact.model.system import ImpactSystem
 
     ball, wall, f = "steel sphere 23 mm", "brass flat", Forcing(F0=2, omega=36)
     c = derived_contact(ball, wall, 1.0, M=1.0)
@@ -315,7 +315,7 @@ def test_elliptical_contact_against_boussinesq(cavity):
     # the elliptical pressure's displacement, integrated: it closes the gap δ − Ax² − By² inside
     # the ellipse, and the pressure's integral is K_Hz·δ^{3/2} (1e-9: nested quadrature at 1e-11
     # to 1e-12 of a square-root edge)
-    from symimpact.derived_contact import curvatures, elliptical_hertz
+    from symimpact.model.derived_contact import curvatures, elliptical_hertz
 
     imp, cav = impactor_body("steel sphere 20 mm"), cavity_body(cavity)
     A, B = curvatures(imp, cav)
@@ -341,7 +341,7 @@ def test_elliptical_contact_against_boussinesq(cavity):
 def test_elliptical_contact_tends_to_the_circle():
     # B/A → 1: Hertz's elliptical contact becomes Step 13's circular one (R = 1/(2A)); the
     # difference falls with B/A − 1 (first order)
-    from symimpact.derived_contact import elliptical_hertz
+    from symimpact.model.derived_contact import elliptical_hertz
 
     A = 50.0
     circle = hz.hertz_stiffness_scalar(1.0, 1 / (2 * A))

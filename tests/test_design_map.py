@@ -14,7 +14,7 @@ from symimpact.forced.contact_law import CompliantContact
 from symimpact.forced.forcing import Forcing
 from symimpact.forced.simulation import simulate_forced
 from symimpact.maps.design import best_clearances, design_map, design_row
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
 FORCING = Forcing(F0=2.0, omega=30.0)

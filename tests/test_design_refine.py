@@ -13,7 +13,7 @@ import pytest
 
 from symimpact.forced import Forcing
 from symimpact.maps.design import design_map, design_row, refine_best
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=40.0, K=227396.0, zeta=0.01, m=2.0, gap=0.010, contact="linear", k1=1e6)
 E = 0.6

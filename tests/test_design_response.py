@@ -15,7 +15,7 @@ from scipy.optimize import minimize_scalar
 from symimpact.cli import main
 from symimpact.forced import Forcing
 from symimpact.maps.design import design_row
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 M, K, C, F0 = 1.0, 1000.0, 0.5, 2.0
 

@@ -6,8 +6,8 @@ import csv
 
 import pytest
 
-from symimpact import display
 from symimpact.cli import main
+from symimpact.model import display
 
 
 def test_sweep_text_is_in_display_units_and_csv_in_si(tmp_path, capsys):
@@ -43,9 +43,9 @@ def test_show_picks_another_unit_and_refuses_a_wrong_one(capsys):
 
 
 def test_plot_axes_carry_display_units(monkeypatch, tmp_path):
-    import symimpact.plots as plots
+    import symimpact.report.plots as plots
     from symimpact.maps import parameter_map, table_rows
-    from symimpact.system import ImpactSystem
+    from symimpact.model.system import ImpactSystem
 
     seen = {}
 
@@ -74,7 +74,7 @@ def test_the_first_compilation_is_announced_on_a_terminal_only(monkeypatch, caps
     """Issue 17, item 7: the first run compiled for 10–17 s and printed nothing."""
     import sys
 
-    from symimpact import _stepper
+    from symimpact.free import _stepper
 
     monkeypatch.setattr(_stepper, "compiled_before", lambda: False)
     assert main(["simulate", "--t-end", "0.1"]) == 0

@@ -102,7 +102,7 @@ def test_frf_text_in_hz_and_json_in_si(capsys):
 
 
 def test_design_csv_headers_carry_units():
-    from symimpact.display import csv_header
+    from symimpact.model.display import csv_header
 
     for name, unit in (("peak_amplitude", "m"), ("peak_omega", "rad/s"), ("baseline_peak", "m"),
                        ("baseline_omega", "rad/s"), ("gap", "m")):  # fmt: skip
@@ -157,8 +157,8 @@ def test_a_sweep_shows_the_primary_alone_beside_its_rows(capsys):
     di = abs(np.polyfit(wn * t, X, 1)[0])
     assert di_um == pytest.approx(di * 1e6, rel=1e-5)  # printed to 6 digits
     assert zeta_eq == pytest.approx(zeta, abs=5e-6)  # printed to 5 decimals
-    from symimpact.simulation import simulate
-    from symimpact.system import ImpactSystem
+    from symimpact.free.simulation import simulate
+    from symimpact.model.system import ImpactSystem
 
     alone = simulate(ImpactSystem(M=M, K=K, C=C, m=0.25, gap=1e3, contact="linear", k1=1e6),
                      xdot0=v0, ydot0=v0, t_end=20.0)  # fmt: skip

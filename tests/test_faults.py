@@ -16,7 +16,7 @@ import pytest
 
 from symimpact.cli import EXIT_FAULT, main
 from symimpact.errors import ParameterError
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 MAP = ["map", "--K", "100 N/m", "--t-end", "20", "--quiet"]
 

@@ -1,4 +1,4 @@
-"""A finite-element model's modes at the damper's DOF (symimpact.modal, ``symimpact modes``;
+"""A finite-element model's modes at the damper's DOF (symimpact.model.modal, ``symimpact modes``;
 issue 36, a primary given by its finite-element model): the Hermite beam model of
 tests/helpers.py, written to .npz, Matrix Market and CSV files, reduced and compared with Step
 14's derived modes of the same beam, which share no code with the reduction."""
@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 from scipy import io, sparse
 
-from symimpact.beams import beam_modes
-from symimpact.beams import static_flexibility as beam_flexibility
 from symimpact.cli import main
 from symimpact.errors import ParameterError
-from symimpact.modal import fe_modes, read_matrices, static_flexibility
+from symimpact.model.beams import beam_modes
+from symimpact.model.beams import static_flexibility as beam_flexibility
+from symimpact.model.modal import fe_modes, read_matrices, static_flexibility
 from tests.helpers import N_EL, RHO, A, E, I, L
 from tests.helpers import hermite_beam as _fe
 
@@ -58,7 +58,7 @@ def test_a_large_sparse_model_is_solved_by_shift_invert(monkeypatch):
     lowered, the 200-element model takes that path and gives the derived modes within the same
     bound as the dense solver (measured 2e-9 against the dense 4e-10 for mode 1: both are the
     model's conditioning, cond(K) growing as the elements' number to the fourth)."""
-    from symimpact import modal
+    from symimpact.model import modal
 
     monkeypatch.setattr(modal, "DENSE", 100)
     K, M, kept = _fe("simply-supported")

@@ -15,8 +15,8 @@ import pytest
 import sympy as sp
 from symimpact.generated import fixed_points, multiple_scales
 
-from symimpact.contact import perturbation_duration, perturbation_durations
 from symimpact.errors import ConvergenceError, ParameterError
+from symimpact.free.contact import perturbation_duration, perturbation_durations
 
 RTOL = 1e-13
 N_POINTS = 300

@@ -12,7 +12,7 @@ import pytest
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, periodic_orbits, rigid_limit, simulate_forced
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 from tests.helpers import integrate_whole_system
 
 E, W = 0.6, 36.0  # the stable symmetric orbit of the system at 36 rad/s

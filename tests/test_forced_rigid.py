@@ -19,7 +19,7 @@ from symimpact.generated import forced_flight as ff
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, periodic_orbits, simulate_forced
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
 E = 0.6

@@ -17,7 +17,7 @@ from symimpact.forced.forcing import Forcing
 from symimpact.forced.frf import frequency_response
 from symimpact.forced.peak import linear_amplitude as _linear_amplitude
 from symimpact.forced.simulation import simulate_forced
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--force", "2 N"]
 RIGID = ["--contact", "rigid", "--e", "0.6"]

@@ -376,13 +376,13 @@ def _system_kwargs(draw):
 
 
 def _system(seen: Counter, kw):
-    from symimpact.system import ImpactSystem
+    from symimpact.model.system import ImpactSystem
 
     return _call(seen, ImpactSystem, **kw)
 
 
 def _simulate_case(seen, kw, state, t_end, contact, rest):
-    from symimpact.simulation import simulate
+    from symimpact.free.simulation import simulate
 
     system = _system(seen, kw)
     if system is None:
@@ -406,7 +406,7 @@ def test_api_fuzz_system_and_simulate():
 
 
 def _contact_case(seen, kw, v0, method, ba, free):
-    from symimpact import contact
+    from symimpact.free import contact
 
     system = _system(seen, kw)
     if system is None:
@@ -431,7 +431,7 @@ def test_api_fuzz_contact():
 
 
 def _beam_case(seen, beam, position, k_hz, delta_max):
-    from symimpact.system import beam_constants
+    from symimpact.model.system import beam_constants
 
     _check_finite(_call(seen, beam_constants, *beam, position=position), "beam_constants")
     rc, out, err = _run_cli(["fit", "--k-hz", str(k_hz), "--delta-max", str(delta_max)])

@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from symimpact.errors import ParameterError
+from symimpact.free.reference import reference_impacts
 from symimpact.maps.sweep import (
     arrival_condition,
     envelope_limits,
@@ -20,8 +21,7 @@ from symimpact.maps.sweep import (
     gap_intervals,
     in_range_share,
 )
-from symimpact.reference import reference_impacts
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 
 def _rows(pattern: str, start_mm: float = 4.0, step_mm: float = 0.1):

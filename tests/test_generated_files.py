@@ -152,7 +152,7 @@ def test_reading_a_quantity_does_not_import_dask():
     """pint imports dask's graph machinery when dask is installed; symimpact hides it (issue 17,
     item 7: a quarter of a second of every command's start-up)."""
     code = (
-        "import sys; from symimpact.units import si\n"
+        "import sys; from symimpact.model.units import si\n"
         "assert si('gap', '9 mm') == 0.009\n"
         "print('dask' in sys.modules); sys.exit(1 if 'dask' in sys.modules else 0)\n"
     )

@@ -14,8 +14,12 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 from symimpact.generated import hunt_crossley as hc
 
-from symimpact.contact import hunt_crossley_chi, hunt_crossley_impact, hunt_crossley_restitution
 from symimpact.errors import ParameterError
+from symimpact.model.hunt_crossley import (
+    hunt_crossley_chi,
+    hunt_crossley_impact,
+    hunt_crossley_restitution,
+)
 
 
 def _lambert_restitution(z: float) -> mp.mpf:

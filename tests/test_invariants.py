@@ -20,8 +20,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from symimpact.errors import MethodNotApplicable
-from symimpact.simulation import CONTACT_PATHS, simulate
-from symimpact.system import ImpactSystem
+from symimpact.free.simulation import CONTACT_PATHS, simulate
+from symimpact.model.system import ImpactSystem
 
 SETTINGS = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
@@ -102,7 +102,7 @@ def test_impacts_without_damping_conserve_energy(system, speed):
 @given(system=systems, v0=st.floats(0.01, 1.0))
 def test_free_elastic_contact_conserves_momentum_and_energy(system, v0):
     """Free bodies (no spring), c₁ = 0: restitution 1, momentum m·v0 kept; Hertz law: Eq. 34."""
-    from symimpact.contact import contact_duration, numerical_contact
+    from symimpact.free.contact import contact_duration, numerical_contact
 
     elastic = system.with_(c1=0.0)
     out = numerical_contact(elastic, v0, free=True)
@@ -121,7 +121,7 @@ def test_free_elastic_contact_conserves_momentum_and_energy(system, v0):
 def test_fast_path_agrees_with_solve_ivp(system, speed):
     """Same impacts (count, side, onset and end times to 1e-7 s) as DOP853 with events; both stop
     at the same rest criterion (``rest``), below which the impacts are not resolvable."""
-    from symimpact.reference import reference_impacts
+    from symimpact.free.reference import reference_impacts
 
     fast = simulate(system, 0.0, speed, 0.0, 0.0, 1.0).impacts
     ref = reference_impacts(system, 0.0, speed, 0.0, 0.0, 1.0)

@@ -19,7 +19,7 @@ import pytest
 from symimpact.errors import ParameterError
 from symimpact.maps import MapStore, MapStoreWarning, as_points, parameter_map
 from symimpact.maps import store as mapfiles
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 BASE = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, c1=5.0, k_hz=1000.0)
 GRID = {"gap": "6 mm:18 mm:4 mm", "mass_ratio": [0.1, 0.25]}  # 8 runs, 4 chunks of 2

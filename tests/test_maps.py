@@ -11,10 +11,10 @@ import pytest
 
 from symimpact.cli import main
 from symimpact.errors import ParameterError
+from symimpact.free.simulation import equivalent_damping_ratio, simulate
 from symimpact.maps import OUTPUTS, parameter_map, read_map, read_sets
-from symimpact.plots import plot_map
-from symimpact.simulation import equivalent_damping_ratio, simulate
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
+from symimpact.report.plots import plot_map
 
 BASE = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, c1=5.0, k_hz=1000.0)
 GRID = {"gap": "6 mm:30 mm:4 mm", "mass_ratio": [0.1, 0.25, 0.4]}

@@ -15,13 +15,13 @@ import numpy as np
 import pytest
 
 from symimpact.cli import main
-from symimpact.derived_contact import derived_contact
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, _rigid, simulate_forced
 from symimpact.forced.contact_law import MaterialRestitution
 from symimpact.forced.loads import Record
 from symimpact.forced.record_response import damper_response
-from symimpact.system import ImpactSystem
+from symimpact.model.derived_contact import derived_contact
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
 FORCING = Forcing(F0=2.0, omega=36.0)

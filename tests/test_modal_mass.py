@@ -14,7 +14,7 @@ from scipy.integrate import quad
 from symimpact.generated import ritz
 
 from symimpact.cli.common import apply_engineer_inputs
-from symimpact.system import beam_constants
+from symimpact.model.system import beam_constants
 
 E, I, RHO, A, L = 70e9, 3.125e-10, 2700.0, 1.5e-4, 0.5
 M_BEAM = RHO * A * L

@@ -13,10 +13,10 @@ import pytest
 from scipy.linalg import eigh
 from symimpact.generated import forced_flight as ff
 
-from symimpact.beams import beam_modes
 from symimpact.cli import main
 from symimpact.errors import ParameterError
-from symimpact.modal import fe_modes, influence_vector
+from symimpact.model.beams import beam_modes
+from symimpact.model.modal import fe_modes, influence_vector
 from tests.helpers import N_EL, RHO, A, E, I, L
 from tests.helpers import hermite_beam as _fe
 

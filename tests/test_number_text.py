@@ -19,7 +19,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from symimpact.errors import ParameterError
-from symimpact.units import MAX_TEXT, MINUS_SIGNS, si
+from symimpact.model.units import MAX_TEXT, MINUS_SIGNS, si
 
 UNITS = {"": "1", "m": "1", "mm": "0.001", "cm": "0.01", "km": "1000", "µm": "0.000001"}
 
@@ -145,7 +145,7 @@ def test_a_plain_number_reads_as_through_the_array_path(value, name):
     number as a 0-d array."""
     import numpy as np
 
-    from symimpact.units import nonnegative_float, positive_float, si_float
+    from symimpact.model.units import nonnegative_float, positive_float, si_float
 
     for fn in (si_float, positive_float, nonnegative_float):
         fast = _outcome(fn, name, value)

@@ -17,7 +17,7 @@ import dataclasses
 import pytest
 
 from symimpact.forced import Forcing, periodic_orbits
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 #: The README's forced system (the compliant fields only satisfy the system's checks: the closed
 #: form is the rigid law).

@@ -21,7 +21,7 @@ from symimpact.errors import MethodNotApplicable
 from symimpact.forced import Forcing
 from symimpact.forced import continuation as cont
 from symimpact.forced.shooting import monodromy, shoot_from_rest
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="hertz", k_hz=1000.0)
 FORCING = dict(F0=2.0, X_b=1e-3)

@@ -14,7 +14,7 @@ from symimpact.forced import Forcing, simulate_forced
 from symimpact.forced.continuation import orbits_at
 from symimpact.forced.frf import frequency_response
 from symimpact.forced.peak import baseline_peak, linear_amplitude, stable_peak
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
 E = 0.6

@@ -9,7 +9,7 @@ import pytest
 from symimpact.errors import ParameterError
 from symimpact.forced.random_response import random_statistics
 from symimpact.maps.ensemble import random_ensemble
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.01, contact="linear", k1=1e6)
 ARGS = (SYSTEM, 0.02, (0.2, 50.0), 20.0, 0.002)

@@ -13,7 +13,7 @@ from symimpact.forced.random_response import (
     realisation,
     realisation_seed,
 )
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
 BAND = (0.2, 50.0)  # Hz, around the primary's 5.03 Hz

@@ -49,7 +49,7 @@ def test_table1_claims():
 
 def test_table2_as_printed_moves_the_main_mass_by_what_the_readme_says():
     s = vibration_stage.STATED.system(9.0)
-    from symimpact.units import si
+    from symimpact.model.units import si
 
     amplitude_mm = si("xdot0", vibration_stage.STATED.xdot0) / s.omega_n * 1e3
     assert says(f"moves the main mass {amplitude_mm:.2f} mm")

@@ -15,7 +15,7 @@ from symimpact.errors import ParameterError
 from symimpact.forced.contact_law import CompliantContact
 from symimpact.forced.loads import Record
 from symimpact.forced.record_response import damper_response
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 BASE = {"M": 1.0, "K": 1000.0, "C": 0.5, "m": 0.05, "gap": 0.02}
 CASES = {

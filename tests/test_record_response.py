@@ -13,7 +13,7 @@ from symimpact.forced.loads import Record, random_record, shock_record
 from symimpact.forced.record_flight import primary_response
 from symimpact.forced.record_response import damper_response
 from symimpact.forced.simulation import state_at
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
 

@@ -13,7 +13,7 @@ from symimpact.forced.loads import kanai_tajimi, read_record, shock_record
 from symimpact.forced.random_response import random_statistics
 from symimpact.forced.shock_response import shock_response
 from symimpact.maps.ensemble import random_ensemble
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.01, contact="linear", k1=1e6)
 G = 9.80665

@@ -25,7 +25,7 @@ from symimpact.cli import main
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing
 from symimpact.maps.points import parse_range
-from symimpact.units import si
+from symimpact.model.units import si
 
 SYS = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm", "--force", "2 N"]
 RIGID = ["--contact", "rigid", "--e", "0.6"]
@@ -164,7 +164,7 @@ def test_outputs_are_checked_before_the_computation(capsys, monkeypatch, tmp_pat
 def test_a_maps_lock_holds_for_a_link_and_its_target(tmp_path):
     from symimpact.maps.points import as_points
     from symimpact.maps.store import MapStore as Store
-    from symimpact.system import table2_system
+    from symimpact.model.system import table2_system
 
     real = tmp_path / "real.csv"
     link = tmp_path / "link.csv"
@@ -239,7 +239,7 @@ def _undamped_from_rest(omega: float, t: float) -> tuple[float, float]:
 @pytest.mark.parametrize("detuning", [1e-2, 1e-4, 1e-6])
 def test_an_undamped_flight_near_resonance_keeps_its_digits(detuning):
     from symimpact.forced import simulate_forced
-    from symimpact.system import ImpactSystem
+    from symimpact.model.system import ImpactSystem
 
     omega = math.sqrt(1000) * (1 + detuning)
     system = ImpactSystem(M=1, K=1000, C=0, m=0.05, gap=1000, k_hz=1000)

@@ -16,7 +16,7 @@ from scipy.integrate import solve_ivp
 
 from symimpact.cli import main
 from symimpact.errors import ParameterError
-from symimpact.reference import reference_impacts
+from symimpact.free.reference import reference_impacts
 from symimpact.report import beyond_stage, contact_stage, paper, reproduce, vibration_stage
 from symimpact.report.document import Figure, Table
 
@@ -113,8 +113,8 @@ def test_no_legend_covers_data(report):
 def test_covered_by_legend_sees_a_line_under_the_legend():
     """The check itself, on figures whose answer is known: a level line through a corner legend
     and a marker under it are covered; the same legend beside the axes covers nothing."""
-    from symimpact.plots import legend_beside
     from symimpact.report.figures import covered_by_legend, pyplot
+    from symimpact.report.plots import legend_beside
 
     plt = pyplot()
     x = np.linspace(0.0, 1.0, 50)

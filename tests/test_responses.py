@@ -15,7 +15,7 @@ from symimpact.errors import MethodNotApplicable, ParameterError
 from symimpact.forced import CompliantContact, Forcing, periodic_orbits, simulate_forced
 from symimpact.forced.responses import linear_response, orbit_response
 from symimpact.forced.simulation import EVENT_COLUMNS
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
 E = 0.6

@@ -12,7 +12,7 @@ from symimpact.cli import main
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing
 from symimpact.maps.design import design_row, robust_design, worst_over
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, k_hz=1000)
 FORCING = Forcing(F0=2, omega=30)

@@ -17,7 +17,7 @@ from symimpact.generated import sampled_load as sl
 from symimpact.errors import ParameterError
 from symimpact.forced.loads import random_record, shock_record, sweep_frequency, sweep_record
 from symimpact.forced.record_flight import primary_response, srs
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 #: A 5 Hz primary, ζ = 0.02: M 1 kg, K = (2π·5)² N/m.
 WN = 2 * math.pi * 5.0

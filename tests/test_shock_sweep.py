@@ -12,7 +12,7 @@ from symimpact.forced.periodic import periodic_orbits
 from symimpact.forced.record_flight import srs
 from symimpact.forced.shock_response import base_motion, motion_srs, shock_response
 from symimpact.forced.sweep_response import sweep_response
-from symimpact.system import ImpactSystem
+from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
 

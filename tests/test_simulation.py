@@ -1,6 +1,6 @@
 """The compiled event-driven simulation against the solve_ivp reference, and its bookkeeping.
 
-Independent checks: impact counts and times against ``symimpact.reference`` (whole motion by
+Independent checks: impact counts and times against ``symimpact.free.reference`` (whole motion by
 DOP853, no closed forms) on seeded random systems, to 1e-8 s, both at rtol 1e-13 (vibro-impact
 motion amplifies integration error about 1e4-fold over twenty impacts, so looser tolerances on
 either side would measure the tolerance, not the code); the energy balance;
@@ -17,9 +17,9 @@ import numpy as np
 import pytest
 
 from symimpact.errors import ParameterError
-from symimpact.reference import reference_impacts
-from symimpact.simulation import damping_inclination, effectiveness, simulate
-from symimpact.system import ImpactSystem, table2_system
+from symimpact.free.reference import reference_impacts
+from symimpact.free.simulation import damping_inclination, effectiveness, simulate
+from symimpact.model.system import ImpactSystem, table2_system
 
 
 def _random_system(rng):
@@ -259,7 +259,7 @@ def test_impact_time_accuracy_of_each_rtol():
     ``IMPACT_TIME_ACCURACY`` (and so ``simulate``'s docstring) states, within a factor of 4 either
     way: the measured worst case is a maximum over 42 systems, whose last digits move with the
     CPU's libm, not a bound to meet by a hair."""
-    from symimpact.simulation import IMPACT_TIME_ACCURACY
+    from symimpact.free.simulation import IMPACT_TIME_ACCURACY
 
     worst = dict.fromkeys(IMPACT_TIME_ACCURACY, 0.0)
     for system, speed, t_end in _accuracy_systems():

@@ -1,4 +1,4 @@
-"""The on-disk table of pint's unit factors (symimpact.units._FactorFile): a warm command reads
+"""The on-disk table of pint's unit factors (symimpact.model.units._FactorFile): a warm command reads
 its units without importing pint, and a damaged, stale or unwritable table only costs time —
 the numbers are pint's either way."""
 
@@ -12,7 +12,7 @@ import sys
 import pytest
 
 PROBE = (
-    "import sys; from symimpact.units import si; "
+    "import sys; from symimpact.model.units import si; "
     "print(repr(si('gap', '9 mm')), repr(si('a', '0.1553 N/cm^3')), 'pint' in sys.modules)"
 )
 
@@ -57,7 +57,7 @@ def test_unwritable_cache_folder_still_reads_units(tmp_path):
 
 def test_refusals_are_kept_as_refusals(tmp_path):
     probe = (
-        "from symimpact.units import si\n"
+        "from symimpact.model.units import si\n"
         "for v in ('3 kg', '3 blorbs'):\n"
         "    try: si('gap', v)\n"
         "    except Exception as e: print(e)\n"

@@ -21,7 +21,7 @@ PERIODS = 150
 def _closed_form_rows() -> list[str]:
     """Each closed-form orbit (Eq. F3) beside a simulation started 1e-4 off it (Eq. F1, F2)."""
     from symimpact.forced import Forcing, periodic_orbits, simulate_forced
-    from symimpact.system import ImpactSystem
+    from symimpact.model.system import ImpactSystem
 
     s = ImpactSystem(**SYSTEM, contact="linear", k1=1e6)  # the rigid law uses M, K, C, m, d
     rows = []
@@ -50,7 +50,7 @@ def _closed_form_rows() -> list[str]:
 
 def _limit_rows(contact: str, stiffnesses) -> tuple[float, list[str]]:
     from symimpact.forced import Forcing, rigid_limit
-    from symimpact.system import ImpactSystem
+    from symimpact.model.system import ImpactSystem
 
     s = ImpactSystem(**SYSTEM, k_hz=1e9)
     orbit, rows = rigid_limit(s, Forcing(F0=F0, omega=W_LIMIT), E, contact, stiffnesses,
@@ -83,7 +83,7 @@ def _branch_rows() -> list[str]:
         shoot,
         simulate_forced,
     )
-    from symimpact.system import ImpactSystem
+    from symimpact.model.system import ImpactSystem
 
     s = ImpactSystem(**SYSTEM, contact="linear", k1=1e6)
     (orbit,) = [o for o in periodic_orbits(s, Forcing(F0=F0, omega=W_LIMIT), E) if o.stable]

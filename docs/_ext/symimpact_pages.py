@@ -226,7 +226,7 @@ def errata_page() -> str:
                  "the printed form is 0/0 (undefined)"))  # fmt: skip
     from symimpact.generated import contact_fits
 
-    from symimpact.contact import perturbation_duration
+    from symimpact.free.contact import perturbation_duration
 
     a = float(contact_fits.cubic_fit_a(1000.0, 0.02))
     b = float(contact_fits.cubic_fit_b(1000.0, 0.02))

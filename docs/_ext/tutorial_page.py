@@ -73,7 +73,7 @@ def tutorial_page(folder: Path, run_cli: Callable[[list[str]], str]) -> str:
             "--L", L]  # fmt: skip
     out += ["```console", _command(argv), run_cli(argv), "```", ""]
     env: dict = {}
-    code1 = f"""from symimpact.system import ImpactSystem, beam_constants
+    code1 = f"""from symimpact.model.system import ImpactSystem, beam_constants
 K, M = beam_constants(E="{E}", I={I_AREA:.6g}, rho="{RHO}",
                       A={AREA:.6g}, L="{L}")
 print(f"K = {{K:.3f}} N/m, M = {{M:.4f}} kg")"""
@@ -158,8 +158,8 @@ print(f"f_n = {{f_n:.3f}} Hz; rho*A*L/4 = {{m_beam / 4:.4f}} kg")"""
     argv = ["contact", "--impactor", ball, "--cavity", "polyurethane flat", "--v0", "1 m/s",
             "--M", f"{M_modal:.6g}"]  # fmt: skip
     out += ["```console", _command(argv), run_cli(argv), "```", ""]
-    code2 = f"""from symimpact.contact import c1_for_restitution
-from symimpact.derived_contact import derived_contact
+    code2 = f"""from symimpact.free.contact import c1_for_restitution
+from symimpact.model.derived_contact import derived_contact
 lined = derived_contact(
     "{ball}", "polyurethane flat", "1 m/s", M=M
 )
@@ -195,7 +195,7 @@ print(f"M = {{system.M:.4f}} kg, K = {{system.K:.2f}} N/m, "
         "Hertz and linear closed forms and the numerical truth for an approach speed of 0.2 m/s:",
         "",
     ]
-    code3 = """from symimpact.contact import contact_duration
+    code3 = """from symimpact.free.contact import contact_duration
 for method in ("perturbation", "hertz", "linear", "numerical"):
     T = contact_duration(system, "0.2 m/s", method).value  # [s]
     print(f"{method:>12}: {T * 1e3:7.3f} ms")"""
@@ -211,7 +211,7 @@ for method in ("perturbation", "hertz", "linear", "numerical"):
         "",
     ]
     plot = folder / "sweep.png"
-    code4 = f"""from symimpact.plots import plot_sweep
+    code4 = f"""from symimpact.report.plots import plot_sweep
 from symimpact.maps import sweep
 import numpy as np
 gaps = np.arange(2, 20.1, 1.0) * 1e-3
@@ -241,8 +241,8 @@ print(f"DI = {{best['damping_inclination'] * 1e6:.1f}} µm, "
             *lines[:8], "```", "",
             "![DI, N_eff and effectiveness against the gap](tutorial/sweep.png)", ""]  # fmt: skip
     sim_plot = folder / "simulation.png"
-    code5 = f"""from symimpact.plots import plot_simulation
-from symimpact.simulation import simulate
+    code5 = f"""from symimpact.report.plots import plot_simulation
+from symimpact.free.simulation import simulate
 chosen = system.with_(gap=best["gap"])
 result = simulate(chosen, xdot0=1.0, t_end=3.0, history=True)
 plot_simulation(result, "{sim_plot}")
@@ -263,7 +263,7 @@ print(f"N_tot = {{result.n_impacts}}, "
         "![Response with the chosen gap](tutorial/simulation.png)",
         "",
         'Next: check the design against the other contact laws (`contact="cubic"`, fitted over `delta_max`), against '
-        "the `solve_ivp` reference (`symimpact.reference.reference_impacts`), and map it over "
+        "the `solve_ivp` reference (`symimpact.free.reference.reference_impacts`), and map it over "
         "mass ratio and contact damping with `symimpact sweep --over m` or `--over c1`.",
         "",
     ]

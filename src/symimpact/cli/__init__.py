@@ -216,7 +216,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     ns = _dashes_as_empty(parser.parse_args(_join_negative_values(parser, argv)))
     given = ns.__dict__.pop(GIVEN, set())
-    from .. import display
+    from ..model import display
 
     units_before = dict(display.DISPLAY_UNITS)
     shown_warning = warnings.showwarning

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .. import budgets
+from ..forced import budgets
 from .common import add_forcing, add_output, add_system, emit, forcing_from, system_from, write_csv
 
 #: The parameters ``--parameter`` takes (Ω is ``symimpact frf``'s).
@@ -43,7 +43,7 @@ def add_parser(sub: Any) -> None:
 def bounds_from(ns) -> tuple[float, float]:
     """(low, high) of --range in SI, in the unit of --parameter (one line when malformed)."""
     from ..errors import ParameterError
-    from ..units import si, units_alike
+    from ..model.units import si, units_alike
 
     parts = str(ns.bounds).split(":")
     if len(parts) != 2:
@@ -56,11 +56,11 @@ def bounds_from(ns) -> tuple[float, float]:
 
 
 def run(ns) -> None:
-    from ..display import display_unit, omega_text, shown
     from ..errors import ParameterError
     from ..forced import shoot_from_rest, trace_branch
     from ..forced.continuation import PARAMETERS as UNITS
     from ..forced.simulation import MAX_MULTIPLE, period_count
+    from ..model.display import display_unit, omega_text, shown
     from .frf import contact_of, contact_title
 
     e = contact_of(ns)
@@ -108,7 +108,7 @@ def run(ns) -> None:
         write_csv(ns.csv, "csv", [{name: r["value"], **{k: v for k, v in r.items() if k != "value"}}
                                   for r in out["points"]])  # fmt: skip
     if ns.plot:
-        from ..plots import plot_branch
+        from ..report.plots import plot_branch
 
         plot_branch(branch, ns.plot,
                     title=f"Ω = {forcing.omega:.4g} rad/s, {contact_title(ns, e)}")  # fmt: skip

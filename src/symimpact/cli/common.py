@@ -10,7 +10,7 @@ import math
 import sys
 from typing import Any
 
-from ..display import csv_header, display_unit, shown
+from ..model.display import csv_header, display_unit, shown
 
 #: The defaults are one stated system in which impacts happen and DI is defined: the report's
 #: reading of the paper's Table 2 (K in N/m, c1 = 5C = 5 N s/m, Ẋ0 = 0.5 m/s, t' = t·√(K/M) = 200).
@@ -97,8 +97,8 @@ def add_system(
 
 
 def system_from(ns: argparse.Namespace):
-    """The :class:`~symimpact.system.ImpactSystem` the system options describe."""
-    from ..system import ImpactSystem
+    """The :class:`~symimpact.model.system.ImpactSystem` the system options describe."""
+    from ..model.system import ImpactSystem
 
     law = getattr(ns, "contact", None) or "cubic"
     kw: dict[str, Any] = {
@@ -127,7 +127,7 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
     import math
 
     from ..errors import ParameterError
-    from ..units import positive_float
+    from ..model.units import positive_float
 
     for (command, option), why in UNUSED.items():
         if ns.command == command and option in given:
@@ -151,8 +151,8 @@ def _material_restitution(ns: argparse.Namespace, body: Any, cavity: str, said: 
     :class:`~symimpact.forced.contact_law.MaterialRestitution` with the contact's yield speed;
     a constant where the law does not depend on the speed (a resilient material's √R, or no
     yield strength: elastic, e = 1)."""
-    from ..derived_contact import cavity_body, derived_contact
     from ..forced.contact_law import MaterialRestitution
+    from ..model.derived_contact import cavity_body, derived_contact
 
     contact = derived_contact(body, cavity, 1.0, M=ns.M)
     resilient = any(b.material.resilience is not None for b in (body, cavity_body(cavity)))
@@ -168,7 +168,7 @@ def _material_restitution(ns: argparse.Namespace, body: Any, cavity: str, said: 
 
 
 def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
-    """--impactor, --cavity and --impact-speed (Step 13, :mod:`symimpact.derived_contact`):
+    """--impactor, --cavity and --impact-speed (Step 13, :mod:`symimpact.model.derived_contact`):
     replace m, K_Hz and, at the impact speed, the law's e, χ or c1 in ``ns`` (``given``: the
     options the user typed, which these may not contradict)."""
     from ..errors import ParameterError
@@ -192,7 +192,7 @@ def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
         return
     if imp is None:
         raise ParameterError("cavity" if cav is not None else "impact-speed", "needs --impactor")
-    from ..derived_contact import derived_contact, impactor_body, sphere_mass
+    from ..model.derived_contact import derived_contact, impactor_body, sphere_mass
 
     for option, flag in (("m", "--m"), ("mass_ratios", "--mass-ratios")):
         if option in given:
@@ -239,7 +239,7 @@ def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
         ns.chi = contact.chi
         said.append(f"χ {contact.chi:.5g} s/m for {at}")
     if "c1" in needs:
-        from ..contact import c1_for_restitution
+        from ..free.contact import c1_for_restitution
 
         ns.c1 = 0.0
         system = system_from(ns)
@@ -368,7 +368,7 @@ def forcing_of(ns: argparse.Namespace, **frequency: Any):
 
 
 def add_show(p: Any) -> None:
-    """--show NAME=UNIT: display units (:mod:`symimpact.display`)."""
+    """--show NAME=UNIT: display units (:mod:`symimpact.model.display`)."""
     p.add_argument(
         "--show",
         action="append",
@@ -462,7 +462,7 @@ def notice_first_compilation(command: str) -> None:
     output is not a terminal (a pipe, a log, the tests)."""
     if not sys.stderr.isatty():
         return
-    from .. import _stepper
+    from ..free import _stepper
 
     if not _stepper.compiled_before():
         print(

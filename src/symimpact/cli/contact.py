@@ -67,8 +67,8 @@ def add_parser(sub: Any) -> None:
 
 
 def run(ns) -> None:
-    from ..derived_contact import derived_contact
-    from ..units import positive_float
+    from ..model.derived_contact import derived_contact
+    from ..model.units import positive_float
 
     c = derived_contact(ns.impactor, ns.cavity, ns.v0, ns.M)
     out = c.as_dict()

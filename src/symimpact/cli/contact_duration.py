@@ -39,7 +39,7 @@ def add_parser(sub: Any) -> None:
 
 
 def run(ns) -> None:
-    from ..contact import contact_duration, contact_durations
+    from ..free.contact import contact_duration, contact_durations
 
     system = system_from(ns)
     kw = dict(ba=ns.ba, law=ns.contact, free=ns.free)

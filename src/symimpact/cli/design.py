@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .. import budgets
+from ..forced import budgets
 from .common import add_system, emit, forcing_of, system_from, write_csv
 from .frf import add_band, band_from, contact_of, contact_title
 
@@ -59,12 +59,12 @@ def add_parser(sub: Any) -> None:
 
 
 def run(ns) -> None:
-    from ..display import display_unit, omega_text, shown
     from ..errors import ParameterError
     from ..maps.design import best_clearances, design_map, refine_best
     from ..maps.points import parse_range
     from ..maps.table import table_rows
-    from ..units import positive_float
+    from ..model.display import display_unit, omega_text, shown
+    from ..model.units import positive_float
     from .frf import response_text
 
     e_range = _e_range(ns)  # before the band's checks read --e as one number
@@ -96,7 +96,7 @@ def run(ns) -> None:
                 "per restitution)"
             )  # fmt: skip
         return _robust(ns, system, forcing, e_range, omegas, grid["gap"], response)
-    from ..forced.coverage import FREQUENCIES  # here: the CLI starts without the forced package
+    from ..forced.coverage import FREQUENCIES
 
     multistart = FREQUENCIES if ns.multistart is None else ns.multistart
     table = design_map(system, forcing, e, omegas, grid, executor=ns.executor,
@@ -117,7 +117,7 @@ def run(ns) -> None:
     if ns.csv:
         write_csv(ns.csv, "csv", rows)
     if ns.plot:
-        from ..plots import plot_design
+        from ..report.plots import plot_design
 
         plot_design(table, ns.plot, title=f"band {shown('omega', omegas[0]):.4g}–"
                     f"{omega_text(omegas[-1], '.4g')}, "
@@ -166,9 +166,9 @@ def _named(rows: list[dict[str, Any]], response: str) -> list[dict[str, Any]]:
 
 def _renamed(name: str, response: str) -> str:
     """A design row's key ``name`` under ``response`` (peaks renamed,
-    :data:`symimpact.display.DESIGN_PEAK_NAMES`)."""
-    from ..display import DESIGN_PEAK_NAMES
+    :data:`symimpact.model.display.DESIGN_PEAK_NAMES`)."""
     from ..forced.responses import response_key
+    from ..model.display import DESIGN_PEAK_NAMES
 
     if response == "displacement" or name not in DESIGN_PEAK_NAMES:
         return name
@@ -184,7 +184,7 @@ def _response_json(response: str) -> dict[str, str]:
 def _e_range(ns) -> tuple[float, float] | None:
     """--e LOW:HIGH (rigid impacts): the range, with ns.e set to its middle (the nominal e)."""
     from ..errors import ParameterError
-    from ..units import nonnegative_float
+    from ..model.units import nonnegative_float
 
     if not isinstance(ns.e, str) or ":" not in ns.e:  # none, a number, or the materials' e
         return None
@@ -200,9 +200,9 @@ def _e_range(ns) -> tuple[float, float] | None:
 
 def _robust(ns, system, forcing, e_range, omegas, gaps, response: str) -> None:
     """The robust design over a restitution range (:func:`symimpact.maps.design.robust_design`)."""
-    from ..display import display_unit, omega_text, shown
     from ..forced.coverage import FREQUENCIES
     from ..maps.design import robust_design
+    from ..model.display import display_unit, omega_text, shown
     from .frf import response_text
 
     def value(v: float) -> str:
@@ -236,7 +236,7 @@ def _robust(ns, system, forcing, e_range, omegas, gaps, response: str) -> None:
                  f"{gunit} (worst case {value(rb['worst_peak'])} at e "
                  f"{rb['worst_e']:.3g})")  # fmt: skip
     if ns.plot:
-        from ..plots import plot_robust_design
+        from ..report.plots import plot_robust_design
 
         plot_robust_design(res, ns.plot, title=f"band {shown('omega', omegas[0]):.4g}–"
                            f"{omega_text(omegas[-1], '.4g')}, "

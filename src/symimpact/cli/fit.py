@@ -22,7 +22,7 @@ def add_parser(sub: Any) -> None:
 
 def run(ns) -> None:
     from ..generated import contact_fits as cf
-    from ..units import positive_float
+    from ..model.units import positive_float
 
     k = positive_float("k-hz", ns.k_hz, "N/m^1.5")
     d = positive_float("delta-max", ns.delta_max, "m")

@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from .. import budgets
+from ..forced import budgets
 from .common import (
     AMPLITUDE_NEEDED,
     add_output,
@@ -46,8 +46,8 @@ def add_parser(sub: Any) -> None:
 
 def response_text(name: str, value: float, spec: str = ".5g", unit: bool = True) -> str:
     """``value`` [SI] of the response ``name`` in its display unit (with it, if ``unit``)."""
-    from ..display import display_unit
     from ..forced.responses import QUANTITY, shown_response
+    from ..model.display import display_unit
 
     q = QUANTITY[name]
     text = format(shown_response(name, value), spec)
@@ -110,7 +110,7 @@ def contact_of(ns) -> Any:
     Hunt–Crossley)."""
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced.contact_law import CompliantContact, MaterialRestitution, restitution_or_law
-    from ..units import nonnegative_float
+    from ..model.units import nonnegative_float
 
     if ns.contact is None:
         raise ParameterError("contact", "name the contact: rigid (with --e), cubic, hertz, "
@@ -148,8 +148,8 @@ def contact_title(ns, e: Any) -> str:
 
 
 def run(ns) -> None:
-    from ..display import display_unit, omega_text, shown
     from ..forced.frf import frequency_response
+    from ..model.display import display_unit, omega_text, shown
 
     omegas = band_from(ns)
     system = system_from(ns)
@@ -168,7 +168,7 @@ def run(ns) -> None:
     if ns.csv:
         write_csv(ns.csv, "csv", out["points"])
     if ns.plot:
-        from ..plots import plot_frf
+        from ..report.plots import plot_frf
 
         plot_frf(frf, ns.plot, title=f"m/M = {system.m / system.M:.3g}, d = "
                  f"{shown('gap', system.gap):.4g} {display_unit('gap')}, {contact_title(ns, e)}")  # fmt: skip
@@ -215,7 +215,7 @@ def run(ns) -> None:
 
 def _origin_text(branch) -> str:
     """Where a switched branch starts, its Ω in the display unit."""
-    from ..display import omega_text
+    from ..model.display import omega_text
 
     if math.isnan(branch.origin_omega):
         return branch.origin
@@ -224,7 +224,7 @@ def _origin_text(branch) -> str:
 
 def peak_lines(frf) -> list[str]:
     """The located peak with and without the damper, and the reduction, in words."""
-    from ..display import display_unit, impacts_text, omega_text
+    from ..model.display import display_unit, impacts_text, omega_text
 
     name = getattr(frf, "response", "displacement")
     what = "peak" if name == "displacement" else f"peak {name}"

@@ -165,9 +165,9 @@ def add_parser(sub: Any) -> None:
 
 def band_from(name: str, text: str) -> tuple[float, float]:
     """(f₁, f₂) [Hz] from "f1:f2" with a unit on either or both ends (Hz when none)."""
-    from ..checks import bounds
     from ..errors import ParameterError
-    from ..units import split_quantity
+    from ..model.checks import bounds
+    from ..model.units import split_quantity
 
     parts = [t.strip() for t in str(text).split(":")]
     if len(parts) != 2 or not all(parts):
@@ -195,7 +195,7 @@ def _kind(ns) -> tuple[str, str]:
 def _height(ns, kind: str, text: str) -> float:
     """The pulse height or sweep amplitude in SI: [N] on the mass, [m/s²] of the base ("g" is
     standard gravity)."""
-    from ..units import si_float
+    from ..model.units import si_float
 
     what = {"shock": "peak", "sweep-sine": "amplitude"}[ns.command]
     if kind == "force":
@@ -206,7 +206,7 @@ def _height(ns, kind: str, text: str) -> float:
 def _sampling(ns, total: float, default_dt: float) -> float:
     """The sample interval: --dt as given (the record refuses one that does not divide the
     duration), else the default made to divide ``total`` [s] (at most the default)."""
-    from ..units import positive_float
+    from ..model.units import positive_float
 
     if ns.dt is not None:
         return positive_float("dt", ns.dt, "s")
@@ -215,8 +215,8 @@ def _sampling(ns, total: float, default_dt: float) -> float:
 
 def count(name: str, text: str, low: int, high: int) -> int:
     """A whole number typed on the command line, in [low, high]."""
-    from ..checks import whole_number
     from ..errors import ParameterError
+    from ..model.checks import whole_number
 
     try:
         value = int(str(text).strip())
@@ -240,7 +240,7 @@ def psd_points(path: str) -> tuple[np.ndarray, np.ndarray]:
 def _psd_file(path: str):
     from ..errors import ParameterError
     from ..forced.loads import unit_columns
-    from ..units import ACCELERATION_PSD, si_float
+    from ..model.units import ACCELERATION_PSD, si_float
 
     (f_unit, s_unit), values = unit_columns(path, "psd-file", ("frequency [Hz]", "psd [g^2/Hz]"))
     f = values[:, 0] * si_float("psd-file", f"1 {f_unit}", "Hz")
@@ -261,7 +261,7 @@ def run_random(ns) -> None:
     from ..errors import ParameterError
     from ..forced.loads import SAMPLES_PER_PERIOD
     from ..forced.random_response import UNITS, random_statistics
-    from ..units import ACCELERATION_PSD, positive_float, si_float
+    from ..model.units import ACCELERATION_PSD, positive_float, si_float
 
     system = system_from(ns)
     e = contact_of(ns)
@@ -319,7 +319,7 @@ def run_random(ns) -> None:
             for f, a, b in zip(st.psd_frequency, st.psd, st.baseline_psd, strict=True)
         ])  # fmt: skip
     if ns.plot:
-        from ..plots import plot_random
+        from ..report.plots import plot_random
 
         plot_random(st, ns.plot)
     scale = {"displacement": (1e3, "mm"), "velocity": (1e3, "mm/s"),
@@ -346,7 +346,7 @@ def run_shock(ns) -> None:
     """``symimpact shock``."""
     from ..forced.loads import shock_record
     from ..forced.shock_response import shock_response
-    from ..units import positive_float
+    from ..model.units import positive_float
 
     system = system_from(ns)
     e = contact_of(ns)
@@ -385,7 +385,7 @@ def run_shock(ns) -> None:
             for f, a, b in zip(out.frequency, out.srs, out.baseline_srs, strict=True)
         ])  # fmt: skip
     if ns.plot:
-        from ..plots import plot_shock
+        from ..report.plots import plot_shock
 
         plot_shock(out, ns.plot)
     i = int(np.argmax(out.baseline_srs))
@@ -404,7 +404,7 @@ def run_sweep(ns) -> None:
     """``symimpact sweep-sine``."""
     from ..forced.loads import SAMPLES_PER_PERIOD
     from ..forced.sweep_response import sweep_response
-    from ..units import positive_float
+    from ..model.units import positive_float
 
     system = system_from(ns)
     e = contact_of(ns)
@@ -423,7 +423,7 @@ def run_sweep(ns) -> None:
             ]
         write_csv(ns.csv, "csv", rows)
     if ns.plot:
-        from ..plots import plot_sine_sweep
+        from ..report.plots import plot_sine_sweep
 
         plot_sine_sweep(out, ns.plot)
     d = out.as_dict()

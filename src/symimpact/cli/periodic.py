@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .. import budgets
+from ..forced import budgets
 from .common import add_forcing, add_output, add_system, emit, forcing_from, system_from
 
 #: The methods ``--method`` takes.
@@ -81,9 +81,9 @@ def _with_response(ns, rows: list[dict], orbits: list, starts: list, system, for
 
 
 def run(ns) -> None:
-    from ..display import display_unit, omega_text, shown
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced import periodic_orbits
+    from ..model.display import display_unit, omega_text, shown
     from .frf import contact_of
 
     if ns.response is not None:  # refused before any orbit is computed
@@ -138,10 +138,10 @@ def run(ns) -> None:
 def _shooting(ns, system, forcing, e) -> None:
     """--method shooting: one orbit, the closed form's JSON keys and the shooting's own, for
     rigid impacts or a compliant contact ``e``."""
-    from ..display import display_unit, impacts_text, omega_text, shown
     from ..errors import ParameterError
     from ..forced import shoot_from_rest
     from ..forced.simulation import MAX_MULTIPLE, period_count
+    from ..model.display import display_unit, impacts_text, omega_text, shown
 
     warmup = period_count("warmup", "300" if ns.warmup is None else ns.warmup)
     multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)

@@ -40,8 +40,8 @@ def add_parser(sub: Any) -> None:
 
 
 def run(ns) -> None:
-    from ..beams import SUPPORTS as KERNELS
-    from ..beams import beam_constants, beam_modes, static_flexibility
+    from ..model.beams import SUPPORTS as KERNELS
+    from ..model.beams import beam_constants, beam_modes, static_flexibility
 
     kernels = KERNELS[ns.support]
     if not 1 <= ns.mode <= len(kernels.roots):
@@ -69,7 +69,7 @@ def run(ns) -> None:
         K, M = beam_constants(*beam, position=ns.position, support=ns.support, mode=ns.mode)
         out.update(K=K, M=M)
         if ns.position is not None:
-            from ..units import positive_float
+            from ..model.units import positive_float
 
             xi = positive_float("position", ns.position) / positive_float("L", ns.L)
             out["stiffness_coefficient"] = float(kernels.stiffness(bl, xi))

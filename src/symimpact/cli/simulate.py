@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .. import budgets
+from ..forced import budgets
 from .common import (
     add_forcing,
     add_initial,
@@ -91,7 +91,7 @@ def run(ns) -> None:
                 "--freq, and --contact)",
             )
     notice_first_compilation(ns.command)
-    from ..simulation import simulate
+    from ..free.simulation import simulate
 
     system = system_from(ns)
     res = simulate(
@@ -110,7 +110,7 @@ def run(ns) -> None:
         columns = zip(*res.history.values(), strict=True)
         write_csv(ns.csv, "csv", [dict(zip(names, c, strict=True)) for c in columns])
     if ns.plot:
-        from ..plots import plot_simulation
+        from ..report.plots import plot_simulation
 
         plot_simulation(res, ns.plot)
     out = res.as_dict()
@@ -128,10 +128,10 @@ def run(ns) -> None:
 def run_forced(ns) -> None:
     """The forced response (Eq. F1) with rigid impacts (Eq. F2) or a compliant contact, and its
     steady state."""
-    from ..display import display_unit, impacts_text, omega_text
     from ..errors import MethodNotApplicable, ParameterError
     from ..forced import simulate_forced
     from ..forced.simulation import MAX_MULTIPLE, period_count
+    from ..model.display import display_unit, impacts_text, omega_text
 
     if ns.contact is None:
         raise ParameterError(
@@ -235,7 +235,7 @@ def _forced_outputs(ns, res, discard: int) -> None:
         ]
         write_csv(ns.csv, "csv", rows)
     if ns.plot:
-        from ..plots import plot_forced
+        from ..report.plots import plot_forced
 
         plot_forced(res, t, s, discard, ns.plot)
 

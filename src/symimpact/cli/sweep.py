@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..display import label, shown
+from ..model.display import label, shown
 from .common import (
     SYSTEM_DEFAULTS,
     add_initial,
@@ -214,7 +214,7 @@ def _without_damper(ns, system, names) -> list[str]:
     """The line giving DI and ζ_eq of the primary alone from the same start (Eq. 36 and the
     envelope's decay; for a linear oscillator ζ_eq = ζ): the baseline every row compares with."""
     from ..errors import SymimpactError
-    from ..simulation import simulate
+    from ..free.simulation import simulate
 
     varied = [n for n in names if n in PRIMARY_INPUTS]
     if varied:
@@ -243,7 +243,7 @@ TABLE_NAMES = {"DI": "damping_inclination", "N_tot": "n_impacts", "N_eff": "n_ef
 def _plot_sweep(ns, table, names) -> str:
     from ..errors import ParameterError
     from ..maps import table_rows
-    from ..plots import plot_map, plot_sweep
+    from ..report.plots import plot_map, plot_sweep
 
     if len(names) == 1:
         plot_sweep(table_rows(table), names[0], ns.plot)

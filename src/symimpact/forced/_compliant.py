@@ -4,7 +4,7 @@ the variational equations carried through flight and contact (numba, cached on d
 Free flight is closed form and its contact onsets are found exactly as for rigid impacts
 (:mod:`symimpact.forced._rigid`: Step 8's flight, Eq. F1, and its gap-free onset search).  A
 contact phase, δ = s·z − d/2 > 0 on the wall s = ±1, is integrated by the Dormand–Prince 5(4)
-pair of the free-decay stepper (:mod:`symimpact._stepper`), with the forcing in the primary's
+pair of the free-decay stepper (:mod:`symimpact.free._stepper`), with the forcing in the primary's
 equation,
 
     m ÿ = −s·F(δ, δ̇),  M ẍ = F0 cos θ − K(x − x_b) − C(ẋ − ẋ_b) + s·F(δ, δ̇),
@@ -39,10 +39,11 @@ import math
 import numpy as np
 from numba import njit
 
-from .. import _interrupt, _stepper, budgets
+from .. import _interrupt
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
-from .._stepper import P_a, P_b, P_c1, P_k1, P_khz
-from . import _rigid
+from ..free import _stepper
+from ..free._stepper import P_a, P_b, P_c1, P_k1, P_khz
+from . import _rigid, budgets
 
 HUNT_CROSSLEY = "hunt-crossley"
 #: the contact laws' codes: the stepper's elastic laws, and Hertz with Hunt–Crossley damping
@@ -53,7 +54,7 @@ CODES = {"cubic": CUBIC, "hertz": HERTZ, "linear": LINEAR, HUNT_CROSSLEY: HC}
 #: against a whole-system DOP853 integration at 1e-13 (two periods, four contacts) rtol 1e-11 gave
 #: 5.2e-10 of the state, 1e-12 gave 2.7e-11 and 1e-13 gives 2.0e-12, at 0.28 ms a contact.
 RTOL = 1e-13
-RHS_BUDGET = budgets.RHS_BUDGET  # evaluations of f (symimpact.budgets)
+RHS_BUDGET = budgets.RHS_BUDGET  # evaluations of f (symimpact.forced.budgets)
 TOO_MUCH_WORK, TOO_MANY_STEPS, STEP_UNDERFLOW, UNRESOLVED = 2, 3, 4, 5
 #: steps in one contact beyond which its time scale is out of proportion to the motion
 MAX_CONTACT_STEPS = _stepper.MAX_CONTACT_STEPS
@@ -88,7 +89,7 @@ def _force(code, q, chi, delta, dd):
     """(F, ∂F/∂δ, ∂F/∂δ̇, the damping part) of the contact force [N] at penetration δ [m] and
     rate δ̇ [m/s]: the elastic laws of Eq. 8 (cubic aδ³ + bδ), Eq. 9 (Hertz k_hz·δ^1.5) and
     Eq. 35 (linear k₁δ) with c₁δ̇, or Hunt–Crossley k_hz·δ^1.5·(1 + χδ̇) (Eq. F4).  ``q``: the
-    stepper's parameter vector (:func:`symimpact._stepper.pack`)."""
+    stepper's parameter vector (:func:`symimpact.free._stepper.pack`)."""
     if code == HERTZ or code == HC:
         dp = max(delta, 0.0)
         root = math.sqrt(dp)

@@ -26,8 +26,8 @@ import math
 import numpy as np
 from numba import njit
 
-from .. import _stepper
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
+from ..free import _stepper
 from . import _compliant as _cp
 from . import _record_rigid as _rr
 

@@ -47,7 +47,7 @@ import numpy as np
 from numba import njit
 
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
-from .._stepper import secant_point
+from ..free._stepper import secant_point
 from ..generated import sampled_load as _sl
 from ._rigid import restitution
 

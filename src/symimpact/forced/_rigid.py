@@ -39,7 +39,7 @@ import numpy as np
 from numba import njit
 
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
-from .._stepper import secant_point
+from ..free._stepper import secant_point
 from ..generated import forced_flight as _fl
 from ..generated import hertz_contact as _hz
 
@@ -563,7 +563,7 @@ def _forget_stale_compilations() -> None:
     """This module's cached code, dropped when it or the forced-flight kernels changed."""
     from pathlib import Path
 
-    from .._stepper import forget_stale_compilations
+    from ..free._stepper import forget_stale_compilations
 
     forget_stale_compilations(run, [Path(__file__), Path(_fl.__file__)], ("_rigid.",))
 

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..errors import ParameterError
-from ..units import nonnegative_float
+from ..model.units import nonnegative_float
 
 #: The compliant laws, by the names of ``symimpact simulate --contact``.
 COMPLIANT = ("cubic", "hertz", "linear", "hunt-crossley")
@@ -57,7 +57,7 @@ class MaterialRestitution:
     yield_speed: float
 
     def __post_init__(self) -> None:
-        from ..units import positive_float
+        from ..model.units import positive_float
 
         object.__setattr__(self, "yield_speed", positive_float("yield_speed", self.yield_speed))
 
@@ -82,11 +82,11 @@ def restitution_parameters(e: Any) -> tuple[float, float]:
 
 def checked(system: Any, forcing: Any, e: Any, rigid_only: str | None = None):
     """(system, forcing, e) of an orbit's computation, checked: an
-    :class:`~symimpact.system.ImpactSystem`, a :class:`~symimpact.forced.Forcing`, and a
+    :class:`~symimpact.model.system.ImpactSystem`, a :class:`~symimpact.forced.Forcing`, and a
     :class:`CompliantContact` or Newton's restitution e in [0, 1] (Eq. F2) as a float.
     ``rigid_only``: what refuses a compliant law (e.g. "the closed form")."""
-    from ..checks import instance
-    from ..system import ImpactSystem
+    from ..model.checks import instance
+    from ..model.system import ImpactSystem
     from .forcing import Forcing
 
     instance("system", system, ImpactSystem, "an ImpactSystem")

@@ -49,10 +49,10 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
-from .. import budgets, checks
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
-from ..system import ImpactSystem
-from . import _rigid
+from ..model import checks
+from ..model.system import ImpactSystem
+from . import _rigid, budgets
 from .contact_law import checked, is_constant, is_rigid
 from .forcing import Forcing
 from .shooting import (

@@ -36,7 +36,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SymimpactError
-from ..system import ImpactSystem
+from ..model.system import ImpactSystem
 from .contact_law import is_rigid, simulation_arguments
 from .forcing import Forcing
 from .peak import UNTRACEABLE, linear_amplitude

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..errors import ParameterError
-from ..units import positive_float, si_float
+from ..model.units import positive_float, si_float
 
 
 @dataclass(frozen=True)

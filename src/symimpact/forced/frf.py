@@ -30,10 +30,10 @@ from typing import Any
 
 import numpy as np
 
-from .. import checks
 from ..errors import ParameterError, SymimpactError
 from ..generated import forced_flight as ff
-from ..system import ImpactSystem
+from ..model import checks
+from ..model.system import ImpactSystem
 from .contact_law import checked, is_constant, is_rigid, simulation_arguments
 from .continuation import (
     SWITCHES,

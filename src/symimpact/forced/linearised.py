@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from ..generated import rigid_impact as ri
-from ..system import ImpactSystem
+from ..model.system import ImpactSystem
 from . import _rigid
 from .forcing import Forcing
 

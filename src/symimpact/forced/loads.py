@@ -21,9 +21,9 @@ from typing import Any
 
 import numpy as np
 
-from .. import checks
 from ..errors import ParameterError
-from ..units import positive_float, si_float
+from ..model import checks
+from ..model.units import positive_float, si_float
 
 #: What a record's values are: a force on the main mass [N] or the base's acceleration [m/s²].
 KINDS = {"force": "N", "base-acceleration": "m/s^2"}

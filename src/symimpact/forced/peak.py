@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from ..system import ImpactSystem
+from ..model.system import ImpactSystem
 from .continuation import Branch, orbit_between
 from .forcing import Forcing
 

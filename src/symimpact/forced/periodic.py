@@ -31,7 +31,7 @@ import numpy as np
 
 from ..generated import forced_flight as ff
 from ..generated import periodic_orbit as po
-from ..system import ImpactSystem
+from ..model.system import ImpactSystem
 from .forcing import Forcing
 from .linearised import acceleration, flight_matrix, saltation_matrix
 

@@ -27,10 +27,10 @@ from typing import Any
 import numpy as np
 from scipy import signal, stats
 
-from .. import checks
 from ..errors import ParameterError
-from ..system import ImpactSystem
-from ..units import positive_float
+from ..model import checks
+from ..model.system import ImpactSystem
+from ..model.units import positive_float
 from .contact_law import restitution_or_law
 from .loads import random_record
 from .record_flight import primary_response

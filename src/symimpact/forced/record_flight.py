@@ -17,10 +17,10 @@ from typing import Any
 import numpy as np
 from numba import njit
 
-from .. import checks
 from ..errors import ParameterError
 from ..generated import sampled_load as _sl
-from ..system import ImpactSystem
+from ..model import checks
+from ..model.system import ImpactSystem
 from .loads import Record
 
 _ramp_state = njit(cache=True)(_sl.ramp_state_scalar)

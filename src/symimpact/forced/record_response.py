@@ -15,9 +15,10 @@ from typing import Any
 
 import numpy as np
 
-from .. import _interrupt, checks
+from .. import _interrupt
 from ..errors import ParameterError, SymimpactError
-from ..system import ImpactSystem
+from ..model import checks
+from ..model.system import ImpactSystem
 from . import _compliant as _cp
 from . import _record_compliant as _rc
 from . import _record_rigid as _rr

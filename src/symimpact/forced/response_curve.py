@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from ..system import ImpactSystem
+from ..model.system import ImpactSystem
 from .forcing import Forcing
 from .frf import FrequencyResponse
 from .peak import baseline_peak, curve_peak

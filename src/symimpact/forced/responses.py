@@ -33,10 +33,10 @@ from typing import Any
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from .. import checks
 from ..errors import MethodNotApplicable, ParameterError
 from ..generated import forced_flight as ff
-from ..system import ImpactSystem
+from ..model import checks
+from ..model.system import ImpactSystem
 from .contact_law import is_rigid, simulation_arguments
 from .forcing import Forcing
 
@@ -48,7 +48,7 @@ RESPONSES = {
     "force": ("N", "largest force into the base, max abs(K(x − x_b) + C(ẋ − ẋ_b))"),
     "transmissibility": ("1", "max abs(F_T)/F0 under a force, max abs(x)/X_b under base motion"),
 }
-#: The quantity whose display unit each response is shown in (:mod:`symimpact.display`; None:
+#: The quantity whose display unit each response is shown in (:mod:`symimpact.model.display`; None:
 #: a pure number).
 QUANTITY = {"displacement": "x", "relative-displacement": "x", "acceleration": "A_b",
             "force": "F0", "transmissibility": None}  # fmt: skip
@@ -222,7 +222,7 @@ def response_key(name: str) -> str:
 
 def shown_response(name: str, value: Any) -> Any:
     """``value`` [SI] of the response ``name`` in its display unit (a transmissibility as it is)."""
-    from ..display import shown
+    from ..model.display import shown
 
     quantity = QUANTITY[name]
     return value if quantity is None else shown(quantity, value)

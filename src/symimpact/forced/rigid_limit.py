@@ -3,7 +3,7 @@
 A rigid impact with Newton's e (Eq. F2) is the limit of a compliant contact whose stiffness grows
 while its damping keeps the restitution at e: for the linear law c1 from Step 9's closed form
 (``linear_c1_for_restitution``), for Hunt–Crossley χ from Step 11 at the orbit's impact speed
-(:func:`symimpact.contact.hunt_crossley_chi`).  Each compliant run starts on the stable rigid
+(:func:`symimpact.model.hunt_crossley.hunt_crossley_chi`).  Each compliant run starts on the stable rigid
 two-impact orbit (Eq. F3) and is simulated to its steady state; the amplitude's error against the
 rigid orbit falls like the contact duration — k^(−1/2) for the linear law, k^(−2/5) for Hertz.
 """
@@ -14,11 +14,11 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from ..contact import hunt_crossley_chi
 from ..errors import MethodNotApplicable, ParameterError
 from ..generated import rigid_impact as ri
-from ..system import ImpactSystem
-from ..units import positive_float
+from ..model.hunt_crossley import hunt_crossley_chi
+from ..model.system import ImpactSystem
+from ..model.units import positive_float
 from .forcing import Forcing
 from .periodic import PeriodicOrbit, periodic_orbits
 from .simulation import simulate_forced
@@ -61,7 +61,7 @@ def rigid_limit(
     ``periods`` forcing periods, the last ``periods − discard`` kept.  The default 200 and 170
     leave ~1e-8 of the transient in the section: at 60 periods it was ~2e-4 and the errors were
     7 % smaller than settled."""
-    from .. import checks
+    from ..model import checks
     from .contact_law import checked
 
     checks.choice("contact", contact, tuple(LAWS))

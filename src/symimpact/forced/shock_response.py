@@ -18,9 +18,9 @@ from typing import Any
 
 import numpy as np
 
-from .. import checks
 from ..errors import ParameterError
-from ..system import ImpactSystem
+from ..model import checks
+from ..model.system import ImpactSystem
 from .loads import Record
 from .record_flight import _march, primary_response
 from .record_response import damper_response

@@ -17,8 +17,8 @@ from scipy.optimize import minimize_scalar
 
 from ..errors import MethodNotApplicable, ParameterError
 from ..generated import slow_flow as sf
-from ..system import ImpactSystem
-from ..units import si
+from ..model.system import ImpactSystem
+from ..model.units import si
 from .forcing import Forcing
 
 #: Samples per half period when checking that the impact mass stays between the walls between

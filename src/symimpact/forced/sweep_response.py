@@ -15,8 +15,8 @@ from typing import Any
 
 import numpy as np
 
-from ..system import ImpactSystem
-from ..units import positive_float
+from ..model.system import ImpactSystem
+from ..model.units import positive_float
 from .forcing import Forcing
 from .frf import frequency_response
 from .loads import sweep_frequency, sweep_record

@@ -49,13 +49,13 @@ from typing import Any
 
 import numpy as np
 
-from .. import checks
 from ..errors import ParameterError
 from ..forced.contact_law import checked, is_constant, is_rigid
 from ..forced.coverage import FREQUENCIES
 from ..forced.forcing import Forcing
 from ..forced.frf import SWEEP_ACCURACY, _sweep, _sweep_runs, frequency_response
-from ..system import ImpactSystem
+from ..model import checks
+from ..model.system import ImpactSystem
 from .engine import _executor, _gather, _launch, _progress
 from .points import MapPoints, as_points
 from .store import MapStore

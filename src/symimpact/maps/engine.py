@@ -3,13 +3,13 @@ serially, on local processes or on a Dask cluster, streamed to a resumable file.
 
 A map point sets some swept inputs (system parameters such as ``gap``, ``m``, ``c1``, the
 ``mass_ratio`` m/M, or initial conditions such as ``x0``, ``xdot0``, ``t_end``) on a base
-:class:`~symimpact.system.ImpactSystem` and runs :func:`~symimpact.simulation.simulate`.  Each
+:class:`~symimpact.model.system.ImpactSystem` and runs :func:`~symimpact.free.simulation.simulate`.  Each
 run gives one row of a tidy table:
 
 ``run`` (index of the point), the swept inputs [SI], ``n_impacts`` (N_tot), ``n_effective``
 (N_eff, Eq. 37), ``effectiveness`` (Eq. 38), ``damping_inclination`` (DI [m], Eq. 36),
 ``zeta_eq`` (equivalent viscous damping ratio of the envelope of x,
-:func:`~symimpact.simulation.equivalent_damping_ratio`), ``energy_initial``,
+:func:`~symimpact.free.simulation.equivalent_damping_ratio`), ``energy_initial``,
 ``energy_dissipated`` (by C and c₁), ``energy_dissipated_contact`` (by c₁ alone),
 ``energy_residual`` [J] and ``class`` (see :func:`symimpact.maps.gap_class`).  Undefined
 values (effectiveness with no non-effective impact, DI with fewer than four maxima) are
@@ -29,8 +29,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
-from ..system import ImpactSystem
-from ..units import SI_UNITS, si_float
+from ..model.system import ImpactSystem
+from ..model.units import SI_UNITS, si_float
 from .executors import EXECUTORS, _dask, _processes, _serial
 from .points import MapPoints, as_points
 from .runs import _Base, _check_points, _point_system, run_point
@@ -204,14 +204,14 @@ def parameter_map(
 
     Parameters
     ----------
-    system : the base :class:`~symimpact.system.ImpactSystem`; each point changes the inputs it
+    system : the base :class:`~symimpact.model.system.ImpactSystem`; each point changes the inputs it
         sweeps.
     grid : ``{name: values}``: the Cartesian product is run (first input varies slowest); values
         are sequences of numbers or quantities, or range strings ``"6 mm:35 mm:1 mm"``.
     sets : instead of ``grid``: explicit parameter sets, a CSV path (:func:`read_sets`) or a
         sequence of ``{name: value}``.
     x0, xdot0, y0, ydot0 : initial state [m, m/s]; t_end : end time [s] (unless swept).
-    contact : contact path of :func:`~symimpact.simulation.simulate` (default the system's law).
+    contact : contact path of :func:`~symimpact.free.simulation.simulate` (default the system's law).
     executor : ``"serial"``, ``"processes"`` (default: ``workers`` local processes, all cores)
         or ``"dask"`` (with ``client``, a ``distributed.Client``, or ``scheduler``, the address
         of a running Dask scheduler such as ``"tcp://10.0.0.5:8786"``).

@@ -20,13 +20,13 @@ from typing import Any
 
 import numpy as np
 
-from .. import checks
 from ..errors import ParameterError
 from ..forced.contact_law import contact_setting, restitution_or_law
 from ..forced.random_response import KEYS, RandomStatistics, combine, default_settle, realisation
 from ..forced.simulation import CHATTER
-from ..system import ImpactSystem
-from ..units import positive_float
+from ..model import checks
+from ..model.system import ImpactSystem
+from ..model.units import positive_float
 from .engine import _executor, _gather, _launch, _progress
 from .points import MapPoints
 from .store import MapStore

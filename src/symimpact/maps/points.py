@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
-from ..units import SI_UNITS, si_float, split_quantity, units_alike
+from ..model.units import SI_UNITS, si_float, split_quantity, units_alike
 
 INITIAL = ("x0", "xdot0", "y0", "ydot0", "t_end")
 SYSTEM_PARAMETERS = ("M", "K", "C", "zeta", "m", "gap", "a", "b", "k_hz", "k1", "c1")
@@ -128,7 +128,7 @@ def read_sets(path: str | os.PathLike, progress: bool = False) -> MapPoints:
 
     A header cell is an input name, optionally with a unit (``gap [mm]``); a cell is a number
     (in the header's unit, else SI) or a quantity with units (``9 mm``), read strictly
-    (:func:`symimpact.units.split_quantity`).  A byte-order mark is ignored.  ``progress``: a
+    (:func:`symimpact.model.units.split_quantity`).  A byte-order mark is ignored.  ``progress``: a
     progress bar on standard error for files of more than 10 000 sets (about 30 µs a cell).
     """
     import csv

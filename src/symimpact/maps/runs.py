@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
-from ..system import ImpactSystem
+from ..model.system import ImpactSystem
 from .points import INITIAL
 
 #: Output columns of a map row, in table order (after ``run`` and the swept inputs).
@@ -64,7 +64,7 @@ def _point_system(base: _Base, names: tuple[str, ...], values: Sequence[float]):
 
 def run_point(base: _Base, names: tuple[str, ...], values: Sequence[float]) -> dict[str, Any]:
     """The table row (without ``run``) of one map point."""
-    from ..simulation import simulate
+    from ..free.simulation import simulate
 
     system, initial = _point_system(base, names, values)
     res = simulate(system, contact=base.contact, **initial)
@@ -133,7 +133,7 @@ def _initial_columns(base: _Base, names: tuple[str, ...], values: np.ndarray) ->
 
 
 def _law(base: _Base) -> int:
-    from .. import _stepper
+    from ..free import _stepper
 
     return _stepper.LAWS[base.contact or base.system.contact]
 
@@ -141,8 +141,8 @@ def _law(base: _Base) -> int:
 def _packed(base: _Base, names: tuple[str, ...], values: np.ndarray) -> np.ndarray:
     """(n, N_PARAMS): the stepper's parameter vector of each point (as :func:`_stepper.pack`;
     the tolerances are set per run by :func:`_batch.prepare`)."""
-    from .. import _stepper as st
-    from ..contact import amplitude_ratio
+    from ..free import _stepper as st
+    from ..free.contact import amplitude_ratio
 
     col = _system_columns(base, names, values)
     P = np.zeros((values.shape[0], st.N_PARAMS))
@@ -174,7 +174,7 @@ def _refused(base: _Base, names: tuple[str, ...], values: np.ndarray) -> np.ndar
     """Indices of the points that a check combining several inputs refuses (the ones made on
     each value alone are :func:`engine._validate`'s): damping at or above critical, C and ζ
     that disagree, more than ``MAX_PERIODS`` periods, abs(y0 − x0) beyond d/2."""
-    from ..simulation import MAX_PERIODS
+    from ..free.simulation import MAX_PERIODS
 
     col = _system_columns(base, names, values)
     init = _initial_columns(base, names, values)
@@ -200,9 +200,10 @@ def _check_points(base: _Base, names: tuple[str, ...], values: np.ndarray) -> No
 def _chunk_rows(base: _Base, names: tuple[str, ...], runs: list[int], values: np.ndarray):
     """The rows of a chunk of points, run in one compiled loop (:func:`_batch.run_many`); each
     row holds the bits :func:`run_point` gives for the same point."""
-    from .. import _batch, _interrupt
-    from .. import _stepper as st
-    from ..simulation import MAX_IMPACTS, REST, RTOL, effectiveness
+    from .. import _interrupt
+    from ..free import _batch
+    from ..free import _stepper as st
+    from ..free.simulation import MAX_IMPACTS, REST, RTOL, effectiveness
 
     values = np.asarray(values, dtype=float).reshape(len(runs), len(names))
     P = _packed(base, names, values)

@@ -21,8 +21,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
-from ..system import ImpactSystem
-from ..units import si_float
+from ..model.system import ImpactSystem
+from ..model.units import si_float
 from .engine import map_rows
 from .points import SWEEPABLE, MapPoints, _si_values
 
@@ -153,9 +153,9 @@ def arrival_condition(system: ImpactSystem, gap: float, **kwargs: Any) -> float:
     impact mass across the clearance.  It depends continuously on the gap while that contact
     stays the same event, so its sign changes are boundaries that root-finding can place.
     NaN when no such contact happens before ``t_end``.  Keywords: those of
-    :func:`symimpact.simulation.simulate` (initial state, t_end, contact).
+    :func:`symimpact.free.simulation.simulate` (initial state, t_end, contact).
     """
-    from ..simulation import simulate
+    from ..free.simulation import simulate
 
     res = simulate(system.with_(gap=gap), **kwargs)
     for imp in res.impacts:

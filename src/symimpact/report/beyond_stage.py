@@ -17,9 +17,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.special import ellipk
 
-from ..contact import contact_duration, numerical_contact
+from ..free.contact import contact_duration, numerical_contact
 from ..generated import closed_forms, lindstedt
-from ..system import ImpactSystem
+from ..model.system import ImpactSystem
 from .document import Figure, Section, Table
 from .figures import pyplot, save
 

@@ -10,10 +10,10 @@ from typing import Any
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from ..contact import amplitude_ratio_roots, contact_duration, numerical_contact
+from ..free.contact import amplitude_ratio_roots, contact_duration, numerical_contact
 from ..generated import contact_fits
-from ..system import ImpactSystem
-from ..units import si
+from ..model.system import ImpactSystem
+from ..model.units import si
 from . import paper
 from .document import Figure, Section, Table
 from .figures import pyplot, save
@@ -192,7 +192,7 @@ def _fig3b(s: Section, folder: Path) -> None:
 
 def _steel_k_hz() -> float:
     """K_Hz [N/m^1.5] of a 20 mm steel sphere on a steel flat (Step 13), for the report's note."""
-    from ..derived_contact import derived_contact
+    from ..model.derived_contact import derived_contact
 
     return derived_contact("steel sphere 20 mm", "steel flat", 0.5).k_hz
 

@@ -6,7 +6,7 @@ from pathlib import Path
 from typing import Any
 
 from ..io import atomic_savefig
-from ..plots import _pyplot
+from .plots import _pyplot
 
 
 def pyplot() -> Any:

@@ -31,12 +31,12 @@ from ..forced.forcing import Forcing
 from ..forced.frf import frequency_response
 from ..generated import closed_forms
 from ..maps.design import best_clearances, design_map, design_row
-from ..plots import draw_frf, plot_design
-from ..system import ImpactSystem
-from ..units import si
+from ..model.system import ImpactSystem
+from ..model.units import si
 from . import paper
 from .document import Figure, Section, Table
 from .figures import pyplot, save
+from .plots import draw_frf, plot_design
 
 #: Force amplitude [N]: the primary alone then peaks at F0/(C·ω_n).
 F0 = 0.2

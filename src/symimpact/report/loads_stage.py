@@ -15,7 +15,7 @@ from ..forced.loads import shock_record
 from ..forced.random_response import KEYS, random_statistics
 from ..forced.shock_response import shock_response
 from ..generated import closed_forms
-from ..units import si
+from ..model.units import si
 from . import paper
 from .document import Figure, Section, Table
 from .figures import pyplot, save

@@ -15,16 +15,16 @@ from typing import Any
 import numpy as np
 
 from ..errors import SymimpactError
+from ..free.simulation import SimulationResult, simulate
 from ..generated import free_flight
 from ..maps import gap_class
 from ..maps.sweep import fig5_limits, gap_range, sweep
-from ..plots import legend_beside
-from ..simulation import SimulationResult, simulate
-from ..system import ImpactSystem
-from ..units import si
+from ..model.system import ImpactSystem
+from ..model.units import si
 from . import paper
 from .document import Figure, Section, Table
 from .figures import pyplot, save
+from .plots import legend_beside
 
 #: Horizon of every free-vibration run, in dimensionless time t' = t·√(K/M) (about 32 periods);
 #: the paper does not state one.
@@ -593,7 +593,7 @@ def _zeta_eq(s: Section, chosen: Reading, alone: SimulationResult, quick: bool) 
             rows,
             [".0f", ".4f", None, ".3f", ".0f"],
             note=f"{chosen.label}. ζ_eq: the log-decay of the envelope of x (a design figure "
-            f"beside DI; symimpact.simulation.equivalent_damping_ratio); the primary alone gives "
+            f"beside DI; symimpact.free.simulation.equivalent_damping_ratio); the primary alone gives "
             f"{alone.zeta_eq:.4f} (its own ζ = {zeta:.4f}). ζ_eq is below ζ at {len(below)} of "
             f"{len(rows)} gaps ({gaps_below} mm); at {below_risen} of them a positive maximum "
             "of x exceeds the one before it (largest ratio in the table): between impacts the "

@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from .io import atomic_savefig
+from ..io import atomic_savefig
 
 
 def _pyplot():
@@ -62,7 +62,7 @@ def plot_forced(result: Any, t: Any, state: Any, discard: int, path: str | os.Pa
     """Forced response (Eq. F1; rigid impacts, Eq. F2, or a compliant contact): x(t) with the
     impacts (contact onsets) marked, the kept (steady) window after ``discard`` periods shaded
     with ±amplitude dotted, and the relative displacement z = y − x between the walls ±d/2."""
-    from .display import display_unit, label, omega_text, shown
+    from ..model.display import display_unit, label, omega_text, shown
 
     plt = _pyplot()
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
@@ -113,8 +113,8 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     """Draw a frequency-response curve on ``ax`` (see :func:`plot_frf`), with its legend."""
     import numpy as np
 
-    from .display import display_unit, shown
-    from .forced.responses import AXIS, QUANTITY, shown_response
+    from ..forced.responses import AXIS, QUANTITY, shown_response
+    from ..model.display import display_unit, shown
 
     def W(v):  # Ω in its display unit (rad/s, or Hz when the band was given in Hz)
         return shown("omega", v)
@@ -186,7 +186,7 @@ def plot_branch(branch: Any, path: str | os.PathLike, title: str = "") -> None:
     bifurcations marked by kind."""
     import numpy as np
 
-    from .display import display_unit, shown
+    from ..model.display import display_unit, shown
 
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(9, 5.5))
@@ -230,9 +230,9 @@ def plot_design(
     (or the peak of ``response``, as the map was run) over the band against the clearance, one
     line per mass ratio, the best clearance of each marked, and the primary without the damper's
     peak (dashed)."""
-    from .display import shown
-    from .forced.responses import shown_response
-    from .maps.design import best_clearances
+    from ..forced.responses import shown_response
+    from ..maps.design import best_clearances
+    from ..model.display import shown
 
     def Y(v):  # the response in its display unit
         return shown_response(response, v)
@@ -261,8 +261,8 @@ def plot_robust_design(
     band of the peak (of ``response``, as the design was run) over the range of e against the
     clearance, the nominal e's curve, the worst case, both best clearances marked, and the
     primary without the damper (dashed)."""
-    from .display import shown
-    from .forced.responses import shown_response
+    from ..forced.responses import shown_response
+    from ..model.display import shown
 
     def Y(v):  # the response in its display unit
         return shown_response(response, v)
@@ -291,8 +291,8 @@ def _finish_design(plt: Any, fig: Any, ax: Any, baseline: float, path: Any, titl
                    response: str = "displacement") -> None:  # fmt: skip
     """A design figure's common end: the primary alone's peak (dashed), the axes (the peak of
     ``response``), the legend, the title, and the file written."""
-    from .display import display_unit
-    from .forced.responses import AXIS, QUANTITY, shown_response
+    from ..forced.responses import AXIS, QUANTITY, shown_response
+    from ..model.display import display_unit
 
     quantity = QUANTITY[response]
     ax.axhline(shown_response(response, baseline), ls="--", color="0.5", lw=1.0,
@@ -312,7 +312,7 @@ def _finish_design(plt: Any, fig: Any, ax: Any, baseline: float, path: Any, titl
 
 def plot_sweep(rows: list[dict[str, Any]], over: str, path: str | os.PathLike) -> None:
     """DI, N_eff and effectiveness against the swept parameter (as Fig. 7)."""
-    from .display import label, shown
+    from ..model.display import label, shown
 
     plt = _pyplot()
     x = [shown(over, r[over]) for r in rows]
@@ -384,8 +384,8 @@ def plot_map(
     """
     import numpy as np
 
-    from .errors import ParameterError
-    from .maps import OUTPUTS
+    from ..errors import ParameterError
+    from ..maps import OUTPUTS
 
     for name, role in ((x, "x"), (y, "y")):
         if name not in table.columns or name in OUTPUTS or name == "run":
@@ -418,7 +418,7 @@ def plot_map(
     optimum = {x: float(xs[j0]), y: float(ys[i0]), value: float(z[i0, j0]), "rows": rows,
                "neighbour_best": near, "isolated": isolated}  # fmt: skip
 
-    from .display import label, shown
+    from ..model.display import label, shown
 
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 6))

@@ -13,7 +13,7 @@ x (for Eq. 36), are located by re-stepping from the start of the step with a sho
 the event function vanishes (Illinois regula falsi), so located states carry the integrator's
 full accuracy.  Dissipation by C and c₁ is integrated with the motion for the energy balance.
 
-This module is private: :mod:`symimpact.simulation` validates the input and builds the result.
+This module is private: :mod:`symimpact.free.simulation` validates the input and builds the result.
 """
 
 from __future__ import annotations
@@ -23,9 +23,9 @@ import math
 import numpy as np
 from numba import njit
 
-from ._interrupt import EVERY, INTERRUPTED, stop_requested
-from .generated import free_flight as _ff
-from .generated import multiple_scales as _ms
+from .._interrupt import EVERY, INTERRUPTED, stop_requested
+from ..generated import free_flight as _ff
+from ..generated import multiple_scales as _ms
 
 CUBIC, HERTZ, LINEAR, PERTURBATION = 0, 1, 2, 3
 LAWS = {"cubic": CUBIC, "hertz": HERTZ, "linear": LINEAR, "perturbation": PERTURBATION}
@@ -954,7 +954,7 @@ def forget_stale_compilations(dispatcher, sources, prefixes) -> None:
 
 
 def _forget_stale_compilations() -> None:
-    """This module's and :mod:`symimpact._batch`'s cached code, dropped when this file, the batch
+    """This module's and :mod:`symimpact.free._batch`'s cached code, dropped when this file, the batch
     loop or the free-flight and multiple-scales kernels changed."""
     from pathlib import Path
 

@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import ParameterError
+from ..errors import ParameterError
 
 #: SI unit of every named parameter (what a plain number means).
 #: The unit of a one-sided acceleration PSD; "g^2/Hz" in it is standard gravity squared per hertz.
@@ -293,7 +293,7 @@ class _FactorFile:
     def _save(self) -> None:
         import json
 
-        from .io import _temporary_beside  # the package's atomic write (temporary + rename)
+        from ..io import _temporary_beside
 
         assert self.path is not None
         try:

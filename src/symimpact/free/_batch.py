@@ -1,6 +1,6 @@
 """Compiled figures of a run, and the compiled loop that runs a chunk of map points.
 
-:func:`symimpact.simulation.simulate` and the maps use the same functions here, so a map row
+:func:`symimpact.free.simulation.simulate` and the maps use the same functions here, so a map row
 and the result of ``simulate`` for the same point hold the same bits:
 
 - :func:`prepare`: the tolerances and the rest threshold of a run (from its initial state) and
@@ -10,9 +10,9 @@ and the result of ``simulate`` for the same point hold the same bits:
   positive maxima of x against t' = t·ω_n;
 - :func:`zeta_eq_of`: the equivalent viscous damping ratio from the log-slope of the envelope;
 - :func:`run_many`: one compiled loop over the points of a chunk, each run by
-  :func:`symimpact._stepper.run` and summarised by the functions above.
+  :func:`symimpact.free._stepper.run` and summarised by the functions above.
 
-This module is private: the public API is :func:`symimpact.simulation.simulate` and
+This module is private: the public API is :func:`symimpact.free.simulation.simulate` and
 :func:`symimpact.maps.parameter_map`.
 """
 

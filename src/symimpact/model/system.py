@@ -6,9 +6,9 @@ import math
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
+from ..errors import ParameterError
+from ..generated import contact_fits
 from .beams import beam_constants
-from .errors import ParameterError
-from .generated import contact_fits
 from .units import nonnegative, nonnegative_float, positive, positive_float, si, si_float
 
 CONTACT_LAWS = ("cubic", "hertz", "linear")
@@ -145,7 +145,7 @@ class ImpactSystem:
         ``position`` [m] from the clamp or the left support (default: the cantilever's tip, the
         other beams' midspan); ``zeta`` is the beam's damping
         ratio, C = 2ζ√(KM) (Eq. 6).  K = (K L³/EI)·EI/L³ and M = (M/ρAL)·ρAL with the first-mode
-        coefficients referred to the damper position (:func:`symimpact.beams.beam_constants`).
+        coefficients referred to the damper position (:func:`symimpact.model.beams.beam_constants`).
         Other keywords go to the constructor.
         """
         K, M = beam_constants(E, I, rho, A, L, position, support, mode)

@@ -2,7 +2,7 @@
 
 Independent of the compiled stepper (no closed forms, no shared code but the contact force law):
 free flight integrates Eq. 7, contact integrates Eq. 10, and terminal events abs(y − x) = d/2 and
-δ = 0 switch between them.  The tests use it to check :func:`symimpact.simulation.simulate`
+δ = 0 switch between them.  The tests use it to check :func:`symimpact.free.simulation.simulate`
 (impact counts and times); the benchmark uses it as the baseline.
 """
 
@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from .system import ImpactSystem
+from ..model.system import ImpactSystem
 
 
 def _force(system: ImpactSystem, law: str, delta: float, ddelta: float) -> float:
@@ -46,7 +46,7 @@ def reference_impacts(
     solve_ivp looks at the event functions only at its steps, and a shallow excursion past d/2
     (a grazing impact) between two steps would be missed.
 
-    Stops, as :func:`symimpact.simulation.simulate` does, at the first onset that finds less than
+    Stops, as :func:`symimpact.free.simulation.simulate` does, at the first onset that finds less than
     ``rest`` × the initial mechanical energy in the system (0: never).
     """
     law = law or system.contact

@@ -13,10 +13,10 @@ from __future__ import annotations
 from decimal import Decimal
 from typing import Any
 
-from .errors import ParameterError
+from ..errors import ParameterError
 from .units import SI_UNITS, _factor
 
-#: SI units of the outputs of a simulation or map (inputs: :data:`symimpact.units.SI_UNITS`).
+#: SI units of the outputs of a simulation or map (inputs: :data:`symimpact.model.units.SI_UNITS`).
 OUTPUT_SI_UNITS = {
     "n_impacts": "dimensionless",
     "n_effective": "dimensionless",

@@ -15,7 +15,7 @@ import math
 import re
 from dataclasses import dataclass
 
-from .errors import ParameterError
+from ..errors import ParameterError
 from .units import si_float
 
 

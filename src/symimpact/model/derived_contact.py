@@ -25,10 +25,10 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from .errors import ParameterError
-from .generated import closed_forms, contact_fits
-from .generated import hertz_contact as hz
-from .generated import rigid_impact as ri
+from ..errors import ParameterError
+from ..generated import closed_forms, contact_fits
+from ..generated import hertz_contact as hz
+from ..generated import rigid_impact as ri
 from .materials import Material, material
 from .units import positive_float
 
@@ -296,7 +296,7 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
     else:  # p₀ reaches p_y at the approach δ_y; Step 13: the impact speed that reaches δ_y
         v_y = float(hz.speed_for_approach_scalar(m, M, k_hz, approach_at(p_y)))
     e, e_source = restitution_at(imp, cav, v0, v_y)
-    from .contact import hunt_crossley_chi
+    from .hunt_crossley import hunt_crossley_chi
 
     chi = hunt_crossley_chi(e, v0) if e < 1.0 else 0.0
     k1 = float(contact_fits.linear_fit_k1_scalar(k_hz, delta))

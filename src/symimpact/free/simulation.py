@@ -1,6 +1,6 @@
 """Free vibration with impacts: the event-driven simulation and what the paper measures on it.
 
-:func:`simulate` runs the compiled stepper of :mod:`symimpact._stepper` (closed-form free flight,
+:func:`simulate` runs the compiled stepper of :mod:`symimpact.free._stepper` (closed-form free flight,
 Eq. 7; contact by Eq. 10 with the chosen law, or by the perturbation solution Eq. 31–33) and
 returns a :class:`SimulationResult`: the impact log with the effective flag of Eq. 37, N_tot,
 N_eff, the effectiveness of Eq. 38, the damping inclination of Eq. 36 and the energy balance.
@@ -14,9 +14,9 @@ from typing import Any
 
 import numpy as np
 
-from .errors import MethodNotApplicable, ParameterError, SymimpactError
-from .system import ImpactSystem
-from .units import positive_float, si_float
+from ..errors import MethodNotApplicable, ParameterError, SymimpactError
+from ..model.system import ImpactSystem
+from ..model.units import positive_float, si_float
 
 CONTACT_PATHS = ("cubic", "hertz", "linear", "perturbation")
 
@@ -200,13 +200,13 @@ def simulate(
 
     Parameters
     ----------
-    system : the :class:`~symimpact.system.ImpactSystem`.
+    system : the :class:`~symimpact.model.system.ImpactSystem`.
     x0, y0 : initial displacements [m]; xdot0, ydot0 : initial velocities [m/s]; abs(y0 − x0) must
         not exceed d/2.  t_end : end time [s].
     contact : ``"cubic"``, ``"hertz"``, ``"linear"`` (the force law integrated numerically,
         default: the system's law) or ``"perturbation"`` (the cubic law by Eq. 31–33: the contact
         duration and penetration with B/A chosen by ``ba``, see
-        :func:`symimpact.contact.amplitude_ratio`; the penetration shared between the masses
+        :func:`symimpact.free.contact.amplitude_ratio`; the penetration shared between the masses
         without momentum, Eq. 33 with B/A = −M/m, about a centre of mass that moves on the main
         spring and damper, so that no contact adds energy).
     history : also return x, ẋ, y, ẏ on ``samples`` evenly spaced times (closed form in free
@@ -230,7 +230,8 @@ def simulate(
     SimulationResult with the impact log, N_tot, N_eff, effectiveness (Eq. 38), DI (Eq. 36) and
     the energy balance: initial = final + dissipated by C + dissipated by c₁ + residual.
     """
-    from . import _batch, _interrupt, _stepper
+    from .. import _interrupt
+    from . import _batch, _stepper
 
     if not isinstance(system, ImpactSystem):
         raise ParameterError("system", "must be an ImpactSystem")
@@ -381,7 +382,7 @@ simulate.__doc__ = simulate.__doc__.format(
 
 def _history(system, p, trace, t_end, samples, u_end):
     """x, ẋ, y, ẏ on an even grid from the stepper's trace rows."""
-    from .generated import free_flight as ff
+    from ..generated import free_flight as ff
 
     t = np.linspace(0.0, t_end, samples)
     out = np.empty((4, samples))

@@ -19,10 +19,10 @@ from typing import Any
 
 import numpy as np
 
-from .errors import ParameterError
-from .generated import beam_modes as _bm
-from .generated import modal_structure as _ms
-from .generated import ritz as _ritz
+from ..errors import ParameterError
+from ..generated import beam_modes as _bm
+from ..generated import modal_structure as _ms
+from ..generated import ritz as _ritz
 from .units import positive_float
 
 

@@ -2,7 +2,7 @@
 or value is a :class:`~symimpact.errors.ParameterError` naming the argument, never Python's own
 TypeError, AttributeError or ValueError from deep inside a computation.
 
-Numbers go through :mod:`symimpact.units` (quantities with units accepted where a physical value
+Numbers go through :mod:`symimpact.model.units` (quantities with units accepted where a physical value
 is); these add what is not a unit's business: whole numbers, choices, flags, states and the
 model's own objects.
 """
@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import ParameterError
+from ..errors import ParameterError
 from .units import si_float
 
 
@@ -58,7 +58,7 @@ def choice(name: str, value: Any, options: tuple[Any, ...]) -> Any:
 
 def bounded(name: str, value: Any, low: float | None = None, high: float | None = None,
             *, open_low: bool = False, unit: str | None = None) -> float:  # fmt: skip
-    """A finite float (units read by :func:`symimpact.units.si_float`) in [low, high], or in
+    """A finite float (units read by :func:`symimpact.model.units.si_float`) in [low, high], or in
     (low, high] with ``open_low``."""
     v = si_float(name, value, unit)
     if low is not None and (v < low or (open_low and v == low)):
@@ -95,7 +95,7 @@ def numbers(name: str, value: Any) -> np.ndarray:
 
 def bounds(name: str, value: Any, unit: str | None = None) -> tuple[float, float]:
     """(low, high): two finite numbers with low < high (quantities read in ``unit`` where it is
-    given, :func:`symimpact.units.si_float`)."""
+    given, :func:`symimpact.model.units.si_float`)."""
     if value is None or isinstance(value, (str, bytes, dict)):
         raise ParameterError(name, f"must be (low, high), got {value!r}")
     try:

@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import ParameterError
+from ..errors import ParameterError
 
 #: Below this many degrees of freedom a sparse model is solved densely.
 DENSE = 2000

@@ -1,0 +1,80 @@
+"""The runtime's folders are its pipeline, model → free → forced → maps → report → cli, and
+imports flow that way only: no module imports from a folder after its own (read from the source's
+import statements, lazy ones inside functions included).  ``errors``, ``io``, ``_interrupt``,
+``export`` and the generated kernels serve every folder and import none of them."""
+
+from __future__ import annotations
+
+import ast
+import tomllib
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+PKG = ROOT / "src" / "symimpact"
+LAYERS = ["model", "free", "forced", "maps", "report", "cli"]
+SHARED = {"errors", "io", "_interrupt", "export", "generated"}
+
+
+def _rank(part: str) -> int:
+    return -1 if part in SHARED else LAYERS.index(part)
+
+
+def _imports(path: Path):
+    """(line, the top-level part of symimpact imported) of every relative import in ``path``."""
+    rel = path.relative_to(PKG).parts
+    package = list(rel[:-1])
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom) and node.level > 0:
+            base = package[: len(package) - (node.level - 1)]
+            target = base + (node.module.split(".") if node.module else [])
+            for alias in node.names:
+                full = target if target else [alias.name]
+                yield node.lineno, full[0]
+        elif isinstance(node, ast.ImportFrom) and (node.module or "").startswith("symimpact."):
+            yield node.lineno, node.module.split(".")[1]
+
+
+def _layer(path: Path) -> str:
+    rel = path.relative_to(PKG).parts
+    return rel[0] if len(rel) > 1 else Path(rel[0]).stem
+
+
+MODULES = sorted(
+    p for p in PKG.rglob("*.py") if "generated" not in p.parts and p != PKG / "__init__.py"
+)
+
+
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))
+def test_imports_flow_one_way(path):
+    layer = _layer(path)
+    assert layer in SHARED or layer in LAYERS, f"{path.name} is in no folder of the pipeline"
+    for line, part in _imports(path):
+        if part not in SHARED and part not in LAYERS:
+            continue  # a module of the same folder (a relative import within it)
+        assert _rank(part) <= _rank(layer), (
+            f"{path.relative_to(PKG)}:{line} imports from {part}/, which comes after {layer}/"
+        )
+
+
+def test_the_checker_sees_an_upward_import(tmp_path, monkeypatch):
+    """The check above can fail: a model module importing from forced/ is caught."""
+    fake = PKG / "model" / "units.py"
+    text = "from ..forced import budgets\n"
+    monkeypatch.setattr(Path, "read_text", lambda self, *a, **k: text)
+    found = [part for _, part in _imports(fake)]
+    assert found == ["forced"] and _rank("forced") > _rank(_layer(fake))
+
+
+def test_every_folder_ships():
+    """Each folder of the runtime is a package that pyproject.toml installs."""
+    listed = set(
+        tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["packages"]
+    )
+    folders = {
+        "symimpact." + p.parent.relative_to(PKG).as_posix().replace("/", ".")
+        for p in PKG.rglob("__init__.py")
+        if p.parent != PKG
+    }
+    assert folders <= listed, f"not installed: {sorted(folders - listed)}"
