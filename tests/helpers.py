@@ -175,11 +175,11 @@ ENDS = {"cantilever": ((0, 1), ()), "clamped-clamped": ((0, 1), (0, 1)),
 N_EL = 200
 
 
-def hermite_beam(support: str):
-    """(K, M, kept DOFs) of the strip in N_EL Hermite cubic elements with consistent mass, DOFs
-    (w, θ) per node, the ``support``'s end DOFs removed: an independent model of the beams of
-    Steps 1, 14 and 15 that shares no formula with their derivations."""
-    h = L / N_EL
+def hermite_beam_whole(n_el: int = N_EL):
+    """(K, M) of the strip in ``n_el`` Hermite cubic elements with consistent mass, DOFs (w, θ)
+    per node, no support: an independent model of the beams of Steps 1, 14 and 15 that shares
+    no formula with their derivations."""
+    h = L / n_el
     k = (
         E
         * I
@@ -195,13 +195,25 @@ def hermite_beam(support: str):
     )
     m = RHO * A * h / 420 * np.array([[156, 22 * h, 54, -13 * h], [22 * h, 4 * h * h, 13 * h, -3 * h * h],
                                       [54, 13 * h, 156, -22 * h], [-13 * h, -3 * h * h, -22 * h, 4 * h * h]])  # fmt: skip
-    n = 2 * (N_EL + 1)
+    n = 2 * (n_el + 1)
     K, M = np.zeros((n, n)), np.zeros((n, n))
-    for e in range(N_EL):
+    for e in range(n_el):
         s = slice(2 * e, 2 * e + 4)
         K[s, s] += k
         M[s, s] += m
+    return K, M
+
+
+def supported_dofs(support: str, n_el: int = N_EL) -> list[int]:
+    """The DOFs of the whole model :func:`hermite_beam_whole` the ``support`` keeps."""
+    n = 2 * (n_el + 1)
     left, right = ENDS[support]
     fixed = [d for d in left] + [n - 2 + d for d in right]
-    kept = [d for d in range(n) if d not in fixed]
+    return [d for d in range(n) if d not in fixed]
+
+
+def hermite_beam(support: str, n_el: int = N_EL):
+    """(K, M, kept DOFs) of :func:`hermite_beam_whole` with the ``support``'s end DOFs removed."""
+    K, M = hermite_beam_whole(n_el)
+    kept = supported_dofs(support, n_el)
     return K[np.ix_(kept, kept)], M[np.ix_(kept, kept)], kept
