@@ -27,11 +27,23 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 @pytest.fixture(scope="module")
-def notebooks(tmp_path_factory) -> list[Path]:
-    folder = tmp_path_factory.mktemp("notebooks")
-    res = subprocess.run([sys.executable, "-m", "derive", "--notebooks", str(folder)],
-                         cwd=ROOT, capture_output=True, text=True, timeout=600)  # fmt: skip
-    assert res.returncode == 0, res.stderr[-3000:]
+def notebooks(tmp_path_factory, worker_id) -> list[Path]:
+    """The notebooks, written once per test session: under pytest-xdist the workers share the
+    session's temporary folder (the parent of each worker's own), and the first to arrive writes
+    them while the others wait on a lock (writing them is a whole derivation, minutes)."""
+    import fcntl
+
+    shared = tmp_path_factory.getbasetemp()
+    if worker_id != "master":
+        shared = shared.parent
+    folder = shared / "notebooks"
+    with open(shared / "notebooks.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not (folder / "written").exists():
+            res = subprocess.run([sys.executable, "-m", "derive", "--notebooks", str(folder)],
+                                 cwd=ROOT, capture_output=True, text=True, timeout=900)  # fmt: skip
+            assert res.returncode == 0, res.stderr[-3000:]
+            (folder / "written").touch()
     paths = sorted(folder.glob("*.ipynb"))
     assert [p.stem.split("_", 1)[1] for p in paths] == [*derive.STEPS, "regenerating"]
     return paths

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..forced import budgets
+from .. import budgets
 from .common import add_forcing, add_output, add_system, emit, forcing_from, system_from, write_csv
 
 #: The parameters ``--parameter`` takes (Ω is ``symimpact frf``'s).

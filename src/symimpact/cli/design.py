@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..forced import budgets
+from .. import budgets
 from .common import add_system, emit, forcing_of, system_from, write_csv
 from .frf import add_band, band_from, contact_of, contact_title
 

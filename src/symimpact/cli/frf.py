@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..forced import budgets
+from .. import budgets
 from .common import (
     AMPLITUDE_NEEDED,
     add_output,

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..forced import budgets
+from .. import budgets
 from .common import (
     add_forcing,
     add_initial,

@@ -39,11 +39,11 @@ import math
 import numpy as np
 from numba import njit
 
-from .. import _interrupt
+from .. import _interrupt, budgets
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
 from ..free import _stepper
 from ..free._stepper import P_a, P_b, P_c1, P_k1, P_khz
-from . import _rigid, budgets
+from . import _rigid
 
 HUNT_CROSSLEY = "hunt-crossley"
 #: the contact laws' codes: the stepper's elastic laws, and Hertz with Hunt–Crossley damping
@@ -54,7 +54,7 @@ CODES = {"cubic": CUBIC, "hertz": HERTZ, "linear": LINEAR, HUNT_CROSSLEY: HC}
 #: against a whole-system DOP853 integration at 1e-13 (two periods, four contacts) rtol 1e-11 gave
 #: 5.2e-10 of the state, 1e-12 gave 2.7e-11 and 1e-13 gives 2.0e-12, at 0.28 ms a contact.
 RTOL = 1e-13
-RHS_BUDGET = budgets.RHS_BUDGET  # evaluations of f (symimpact.forced.budgets)
+RHS_BUDGET = budgets.RHS_BUDGET  # evaluations of f (symimpact.budgets)
 TOO_MUCH_WORK, TOO_MANY_STEPS, STEP_UNDERFLOW, UNRESOLVED = 2, 3, 4, 5
 #: steps in one contact beyond which its time scale is out of proportion to the motion
 MAX_CONTACT_STEPS = _stepper.MAX_CONTACT_STEPS

@@ -49,10 +49,11 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
+from .. import budgets
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..model import checks
 from ..model.system import ImpactSystem
-from . import _rigid, budgets
+from . import _rigid
 from .contact_law import checked, is_constant, is_rigid
 from .forcing import Forcing
 from .shooting import (

@@ -22,7 +22,7 @@ sticking phase keeps two of the four directions, so two multipliers vanish.  A s
 falls on a wall (inside a sticking phase) is moved to the middle of the longest free flight and
 the state is mapped back.  With a compliant contact every contact of the period is integrated
 with its variational equations (the cost is linear in them: a fixed number of evaluations a
-contact), within :data:`~symimpact.forced.budgets.SHOOTING_EVALUATIONS_PER_PERIOD` evaluations a period
+contact), within :data:`~symimpact.budgets.SHOOTING_EVALUATIONS_PER_PERIOD` evaluations a period
 (no cap on the contacts themselves).
 """
 
@@ -34,10 +34,11 @@ from typing import Any
 
 import numpy as np
 
+from .. import budgets
 from ..errors import MethodNotApplicable
 from ..model import checks
 from ..model.system import ImpactSystem
-from . import _chain, _rigid, budgets
+from . import _chain, _rigid
 from .contact_law import (
     CompliantContact,
     checked,
@@ -66,7 +67,7 @@ MAX_ITER = budgets.MAX_ITER
 MAX_PERIODS = 64
 #: An orbit with more contacts (compliant) or impacts (rigid) than these in a forcing period is
 #: not followed: a Newton iterate far from any orbit can set the masses bouncing thousands of
-#: times a period, and such a motion chatters rather than impacts (symimpact.forced.budgets).
+#: times a period, and such a motion chatters rather than impacts (symimpact.budgets).
 MAX_IMPACTS_PER_PERIOD = budgets.MAX_IMPACTS_PER_PERIOD
 
 

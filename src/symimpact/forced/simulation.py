@@ -16,13 +16,13 @@ from typing import Any
 import numpy as np
 from numba import njit
 
-from .. import _interrupt
+from .. import _interrupt, budgets
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..free import _stepper
 from ..model.checks import bounded, instance, whole_number
 from ..model.system import ImpactSystem
 from ..model.units import nonnegative_float, si_float
-from . import _compliant, _rigid, budgets
+from . import _compliant, _rigid
 from .contact_law import COMPLIANT, MaterialRestitution, restitution_parameters
 from .forcing import Forcing
 
@@ -33,7 +33,7 @@ CHATTER = 1e-7
 #: scale (the motion's amplitude and velocity amplitude): far above the closed-form flight's
 #: rounding, far below any physical difference between distinct orbits.
 SECTION_RTOL = 1e-6
-#: Work budgets (see :mod:`symimpact.forced.budgets`).
+#: Work budgets (see :mod:`symimpact.budgets`).
 MAX_EVENTS, MAX_CONTACTS = budgets.MAX_EVENTS, budgets.MAX_CONTACTS
 
 
@@ -293,7 +293,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
     compliant run may start inside a wall), and, compliant with ``variational``, the Jacobian Ψ of
     the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced._compliant`);
     ``max_contacts`` in place of :data:`MAX_CONTACTS`; ``max_work`` (evaluations of the
-    contacts' equations) in place of :data:`symimpact.forced.budgets.RHS_BUDGET`, met with
+    contacts' equations) in place of :data:`symimpact.budgets.RHS_BUDGET`, met with
     :class:`TooMuchContactWork`."""
     _refuse_cancelling_flight(system, forcing, contact)
     h = system.gap / 2.0
