@@ -20,6 +20,11 @@ impacts by Step 8's solution.  On the board:
 4. An impact at a point a where the modes have the values φᵢ(a): the impulse enters each mode
    through φᵢ(a), the effective mass is 1/m<sub>eff</sub> = Σ φᵢ(a)²/Mᵢ, and the saltation matrix
    in modal coordinates, checked by a perturbed impact; one mode with φ = 1 gives Step 9's.
+5. Sticking at a: the impact mass rides with the point, and the structure carries it — the modal
+   mass matrix gains m·φφᵀ, inverted in closed form (Sherman–Morrison); the point's acceleration
+   that decides the release; the stuck structure's frequencies from a secular equation (the
+   matrix determinant lemma), interlacing the free ones; one mode gives Step 9's sticking phase,
+   one mass M + m.
 """
 
 from __future__ import annotations
@@ -56,7 +61,11 @@ def derive() -> Board:
     # --- 1. the modal equations -----------------------------------------------------------------
     m1, m2, k1, k2 = sp.symbols("m_1 m_2 k_1 k_2", positive=True)
     M2, K2 = _chain((m1, m2), (k1, k2))
-    w("chain_mass_matrix", M2, "A chain of two masses on two springs, the first to the base: M.")
+    w(
+        "chain_mass_matrix",
+        M2,
+        "A chain of two masses on two springs, the first to the base: M.",
+    )
     w("chain_stiffness_matrix", K2, "Its stiffness matrix K; the base moves both masses "
       "rigidly, r = (1, 1), and K·r = (k₁, 0) is the force the base's motion puts in.")  # fmt: skip
     lam = sp.Symbol("lambda", positive=True)
@@ -71,7 +80,9 @@ def derive() -> Board:
     ortho_m = sp.simplify((phis[0].T * M2 * phis[1])[0])
     ortho_k = sp.simplify((phis[0].T * K2 * phis[1])[0])
     board.check(
-        "the chain's two modes are M- and K-orthogonal", "F7", ortho_m == 0 and ortho_k == 0
+        "the chain's two modes are M- and K-orthogonal",
+        "F7",
+        ortho_m == 0 and ortho_k == 0,
     )
     base_k = [
         sp.simplify((p.T * K2 * r)[0] - li * (p.T * M2 * r)[0])
@@ -131,7 +142,12 @@ def derive() -> Board:
             Ki_n = (phi.T * Km * phi)[0]
             Ci_n = (phi.T * Cm * phi)[0]
             G = (phi.T * Mm * rr)[0] / Mi_n
-            vals = {sym8["M"]: Mi_n, sym8["K"]: Ki_n, sym8["C"]: Ci_n, sym8["Omega"]: Wn}
+            vals = {
+                sym8["M"]: Mi_n,
+                sym8["K"]: Ki_n,
+                sym8["C"]: Ci_n,
+                sym8["Omega"]: Wn,
+            }
             P = P8.subs({sym8["F0"]: F0n * phi[2], sym8["X_b"]: G * Xbn, sym8["K"]: Ki_n})
             Q = Q8.subs({sym8["X_b"]: G * Xbn, sym8["C"]: Ci_n, sym8["Omega"]: Wn})
             a = sp.N(A8.subs({sym8["P"]: P, sym8["Q"]: Q}).subs(vals), 40)
@@ -286,7 +302,8 @@ def derive() -> Board:
     start = state + eps * delta
     sub = dict(zip(state, start, strict=True))
     shift = sp.solve(
-        s * (start[2 * n] + f_minus[2 * n].subs(sub, simultaneous=True) * dt_) - s * z, dt_
+        s * (start[2 * n] + f_minus[2 * n].subs(sub, simultaneous=True) * dt_) - s * z,
+        dt_,
     )[0]
     arrived = start + f_minus.subs(sub, simultaneous=True) * shift
     back = jump(arrived) - f_plus.subs(sub, simultaneous=True) * shift
@@ -358,9 +375,100 @@ def derive() -> Board:
     board.check("one mode with φ = 1 gives Step 9's saltation matrix (F2)", "F7",
                 all(sp.simplify(c) == 0 for c in (S1 - step9_S)))  # fmt: skip
 
+    # --- 5. sticking at a point: the structure carries the impact mass -----------------------------
+    # When chatter has accumulated (Step 9) the impact mass rides with the point a: the structure
+    # then moves as one with the mass m added at a.  In modal coordinates the mass matrix gains
+    # the rank-one term m·φφᵀ, φ = (φᵢ(a)).
+    n3 = 3
+    M3s = sp.symbols(f"M_1:{n3 + 1}", positive=True)
+    p3 = sp.symbols(f"varphi_1:{n3 + 1}", real=True)
+    g3 = sp.symbols(f"g_1:{n3 + 1}", real=True)  # each mode's load Qᵢ − Cᵢq̇ᵢ − Kᵢqᵢ
+    phi = sp.Matrix(p3)
+    Md = sp.diag(*M3s)
+    stuck_mass = Md + m * phi * phi.T
+    w("stuck_mass_matrix", stuck_mass,
+      "Three modes sticking at a: the modal mass matrix diag(Mᵢ) + m·φφᵀ, φ the shapes' values "
+      "at a (the impact mass's kinetic energy ½m(Σφᵢq̇ᵢ)² added to the modes').", "F7")  # fmt: skip
+    inv_d = sp.diag(*[1 / Mi_ for Mi_ in M3s])
+    r = 1 + m * sum(p**2 / Mi_ for p, Mi_ in zip(p3, M3s, strict=True))
+    sherman = inv_d - m * (inv_d * phi) * (inv_d * phi).T / r
+    board.check(
+        "its inverse is Sherman–Morrison's: diag(1/Mᵢ) − m·(φᵢ/Mᵢ)(φⱼ/Mⱼ)/(1 + mΣφₖ²/Mₖ), no "
+        "matrix to invert at run time",
+        "F7",
+        all(sp.simplify(c) == 0 for c in (sherman * stuck_mass - sp.eye(n3))),
+    )
+    g = sp.Matrix(g3)
+    q_acc = sherman * g
+    point_acc = sp.simplify((phi.T * q_acc)[0])
+    gsum = sum(p * gi / Mi_ for p, gi, Mi_ in zip(p3, g3, M3s, strict=True))
+    board.check(
+        "the point's acceleration while stuck: ẍₐ = (Σφᵢgᵢ/Mᵢ)/(1 + m/m_eff), gᵢ = Qᵢ − Cᵢq̇ᵢ − "
+        "Kᵢqᵢ; each mode then moves by q̈ᵢ = (gᵢ − m·ẍₐ·φᵢ)/Mᵢ, pushed by the mass's inertia at a",
+        "F7",
+        sp.simplify(point_acc - gsum / r) == 0
+        and all(
+            sp.simplify(q_acc[i] - (g3[i] - m * point_acc * p3[i]) / M3s[i]) == 0 for i in range(n3)
+        ),
+    )
+    w("stuck_point_acceleration", gsum / r,
+      "The acceleration of the point a and of the mass riding on it during sticking; the wall "
+      "pushes the mass with the force m·ẍₐ, compressive while s·ẍₐ ≤ 0 on the wall s = ±1, and "
+      "the mass is released where s·ẍₐ turns positive (Step 9's rule, with the structure's ẍₐ).",
+      "F7")  # fmt: skip
+    # one mode with φ = 1: Step 9's sticking phase, one mass M + m under the same load
+    M_1, g_1 = sp.symbols("M g", real=True)
+    one_mode = (gsum / r).subs({p3[1]: 0, p3[2]: 0}).subs({p3[0]: 1, M3s[0]: M_1, g3[0]: g_1})
+    board.check("one mode with φ = 1: ẍ = g/(M + m), Step 9's sticking phase (F2)", "F7",
+                sp.simplify(one_mode - g_1 / (M_1 + m)) == 0)  # fmt: skip
+    # the stuck structure is linear: its own frequencies, by the matrix determinant lemma
+    lam = sp.Symbol("lambda", positive=True)
+    om = sp.symbols(f"omega_1:{n3 + 1}", positive=True)
+    Kd = sp.diag(*[Mi_ * o**2 for Mi_, o in zip(M3s, om, strict=True)])
+    secular = 1 - m * lam * sum(
+        p**2 / (Mi_ * (o**2 - lam)) for p, Mi_, o in zip(p3, M3s, om, strict=True)
+    )
+    det_ratio = (Kd - lam * stuck_mass).det() / (Kd - lam * Md).det()
+    board.check(
+        "det(K − λ(M + mφφᵀ)) = det(K − λM)·(1 − mλΣφᵢ²/(Mᵢ(ωᵢ² − λ))): the stuck structure's "
+        "ω² are the roots of this secular equation",
+        "F7",
+        sp.simplify(det_ratio - secular) == 0,
+    )
+    # an example: M (2, 1, 3) kg, ω (10, 25, 60) rad/s, φ(a) (1, −0.7, 0.3), m 0.5 kg
+    example = {M3s[0]: 2, M3s[1]: 1, M3s[2]: 3, om[0]: 10, om[1]: 25, om[2]: 60,
+               m: sp.Rational(1, 2), p3[0]: 1, p3[1]: sp.Rational(-7, 10),
+               p3[2]: sp.Rational(3, 10)}  # fmt: skip
+    stuck_roots = sorted(float(r) for r in sp.Poly(
+        sp.expand((Kd - lam * stuck_mass).det().subs(example)), lam).nroots())  # fmt: skip
+    free_roots = [100.0, 625.0, 3600.0]
+    board.check(
+        "the added mass lowers every frequency and the stuck ω² interlace the free ones, "
+        "λ'₁ < ω₁² < λ'₂ < ω₂² < λ'₃ < ω₃² (an example: M 2, 1, 3 kg, ω 10, 25, 60 rad/s, "
+        f"φ(a) 1, −0.7, 0.3, m 0.5 kg: λ' = {', '.join(f'{r:.5g}' for r in stuck_roots)})",
+        "F7",
+        stuck_roots[0]
+        < free_roots[0]
+        < stuck_roots[1]
+        < free_roots[1]
+        < stuck_roots[2]
+        < free_roots[2],
+    )
+    w("stuck_secular_equation", sp.Eq(secular, 0),
+      "The natural frequencies λ = ω² of the structure carrying the mass m at a (sticking), "
+      "written with the free structure's ωᵢ, Mᵢ and φᵢ(a).", "F7")  # fmt: skip
+    one_root = sp.solve(secular.subs({p3[1]: 0, p3[2]: 0}).subs({p3[0]: 1}), lam)
+    board.check("one mode with φ = 1: ω² = Mω₁²/(M + m) = K/(M + m), Step 9's stuck primary",
+                "F7", len(one_root) == 1
+                and sp.simplify(one_root[0] - M3s[0] * om[0] ** 2 / (M3s[0] + m)) == 0)  # fmt: skip
+
     # --- kernels -----------------------------------------------------------------------------------
     arg_k = Arg(
-        k, "1", "Root βL of the beam's frequency equation (its BETA_L_… constant)", 3.0, 12.0
+        k,
+        "1",
+        "Root βL of the beam's frequency equation (its BETA_L_… constant)",
+        3.0,
+        12.0,
     )
     arg_xi = Arg(xi, "1", "Point ξ = r/L along the beam (0 < ξ < 1)", 0.2, 0.8)
     for beam in BEAMS:
