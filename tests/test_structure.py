@@ -272,3 +272,61 @@ def test_modes_command_lists_a_structure_and_its_effective_masses(tmp_path, caps
     assert main(["modes", "--structure", str(tmp_path / "none.json")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "structure: cannot read" in err[0], err
+
+
+def test_a_structure_mode_is_the_primary_on_the_command_line(tmp_path, capsys):
+    """``--structure FILE --at P --mode I``: the primary is the mode referred to P, M = Mᵢ/φᵢ(P)²
+    and K = ωᵢ²M, against the cantilever's closed form with mpmath (its roots of
+    1 + cos β cosh β = 0 and φ = cosh βξ − cos βξ − σ(sinh βξ − sin βξ), ∫φ²dξ = 1):
+    at the tip M = ρAL/4 for every mode.  1e-12: the kernels' roots and shapes in double
+    precision.  Bad combinations are refused in one line naming the option."""
+    import mpmath as mp
+
+    from symimpact.cli import main
+
+    data = {"beam": {"type": "cantilever", "E": E, "I": I, "rho": RHO, "A": A, "L": L,
+                     "modes": 3, "zeta": 0.01}, "points": {"tip": L, "middle": L / 2}}  # fmt: skip
+    path = tmp_path / "beam.json"
+    path.write_text(json.dumps(data))
+    mass = RHO * A * L
+    for at, xi, mode in (("tip", 1, 1), ("middle", 0.5, 2), ("tip", 1, 3)):
+        beta = mp.findroot(lambda b: 1 + mp.cos(b) * mp.cosh(b), [1.875, 4.694, 7.855][mode - 1])
+        sigma = (mp.cosh(beta) + mp.cos(beta)) / (mp.sinh(beta) + mp.sin(beta))
+        phi = (mp.cosh(beta * xi) - mp.cos(beta * xi)
+               - sigma * (mp.sinh(beta * xi) - mp.sin(beta * xi)))  # fmt: skip
+        M = mass / float(phi) ** 2
+        K = float(beta) ** 4 * E * I / L**3 * M / mass
+        argv = ["simulate", "--structure", str(path), "--at", at, "--mode", str(mode), "--m",
+                "0.05", "--gap", "5 mm", "--json"]  # fmt: skip
+        assert main(argv) == 0
+        out = capsys.readouterr()
+        system = json.loads(out.out)["system"]
+        assert system["M"] == pytest.approx(M, rel=1e-12)
+        assert system["K"] == pytest.approx(K, rel=1e-12)
+        assert system["zeta"] == pytest.approx(0.01, rel=1e-14)  # ζ back from C = 2ζ√(KM)
+        assert f"the primary is mode {mode}" in out.err
+    for argv, name in (
+        (["--structure", str(path), "--m", "0.05"], "at"),
+        (["--structure", str(path), "--at", "base", "--m", "0.05"], "at"),
+        (["--structure", str(path), "--at", "tip", "--mode", "4", "--m", "0.05"], "mode"),
+        (["--structure", str(path), "--at", "tip", "--K", "100", "--m", "0.05"], "K"),
+        (["--at", "tip", "--m", "0.05"], "at"),
+    ):
+        assert main(["simulate", *argv]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and f"error: {name}:" in err[0], err
+
+
+def test_a_node_at_the_point_is_refused(tmp_path, capsys):
+    """A clamped–clamped beam's second mode has a node at midspan: it cannot be the primary of
+    a damper there."""
+    from symimpact.cli import main
+
+    path = tmp_path / "cc.toml"
+    path.write_text(
+        f'[beam]\ntype = "clamped-clamped"\nE = {E!r}\nI = {I!r}\nrho = {RHO!r}\nA = {A!r}\n'
+        f"L = {L!r}\nmodes = 2\n[points]\nmid = {L / 2!r}\n"
+    )
+    assert main(["simulate", "--structure", str(path), "--mode", "2", "--m", "0.05"]) == 2
+    assert "node" in capsys.readouterr().err
+    assert main(["simulate", "--structure", str(path), "--mode", "1", "--m", "0.05"]) == 0

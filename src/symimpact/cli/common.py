@@ -66,6 +66,16 @@ def add_system(
             metavar="Q",
             help=f"{helptext}; default {default!r}" if default else helptext,
         )
+    g.add_argument("--structure", default=None, metavar="FILE",
+                   help="the primary as one mode of a structure file (JSON or TOML: a beam, modal "
+                   "data or a finite-element model with named points; see 'symimpact modes "
+                   "--structure'), referred to the damper's point --at: gives M, K and ζ "
+                   "instead of --M, --K, --C (Step 15; the engine takes one mode today)")  # fmt: skip
+    g.add_argument("--at", default=None, metavar="POINT",
+                   help="with --structure: the named point the damper sits at (default: the "
+                   "file's only point)")  # fmt: skip
+    g.add_argument("--mode", default=None, type=int, metavar="I",
+                   help="with --structure: which mode is the primary (default 1, the lowest)")  # fmt: skip
     g.add_argument("--impactor", default=None, metavar="TEXT",
                    help="the ball, '<material> sphere <diameter>' (e.g. 'steel sphere 20 mm'): "
                    "gives m instead of --m (Step 13)")  # fmt: skip
@@ -132,6 +142,14 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
     for (command, option), why in UNUSED.items():
         if ns.command == command and option in given:
             raise ParameterError(option.replace("_", "-"), why)
+    if not hasattr(ns, "at"):  # no system options: `modes --structure` lists a structure
+        return
+    if ns.structure is not None:
+        _structure_mode(ns, given)
+        return
+    for option in ("at", "mode"):
+        if option in given:
+            raise ParameterError(option, "names a point or mode of --structure, which is not given")
     if getattr(ns, "fn", None) is None:
         return
     f = positive_float("fn", ns.fn, "Hz")
@@ -144,6 +162,41 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
         ns.K = positive_float("M", ns.M, "kg") * w2
     else:
         raise ParameterError("fn", "give the modal mass --M (or the stiffness --K) with --fn")
+
+
+def _structure_mode(ns: argparse.Namespace, given: set[str]) -> None:
+    """--structure, --at and --mode: the primary as one mode of the structure referred to the
+    damper's point a, M = Mᵢ/φᵢ(a)², K = ωᵢ²M, ζ = ζᵢ (Step 15: the displacement at a is the
+    mode's coordinate; Eq. 5–6 for a beam)."""
+    from ..errors import ParameterError
+    from ..model.structure import read_structure
+
+    for option in ("M", "K", "C", "zeta", "fn"):
+        if option in given:
+            raise ParameterError(option, "--structure gives the primary: leave it out")
+    s = read_structure(ns.structure)
+    if ns.at is None:
+        if len(s.points) > 1:
+            raise ParameterError("at", f"name the damper's point ({', '.join(s.points)})")
+        at = s.points[0]
+    else:
+        at = str(ns.at)
+        if at not in s.points:
+            raise ParameterError("at", f"no point {at!r} in {ns.structure} ({', '.join(s.points)})")
+    i = 1 if ns.mode is None else ns.mode
+    if not 1 <= i <= len(s.modes):
+        raise ParameterError("mode", f"a mode from 1 to {len(s.modes)} of the structure, got {i}")
+    mode = s.modes[i - 1]
+    phi = mode.shape[at]
+    if mode.node_at(at):
+        raise ParameterError("at", f"mode {i} has a node at {at!r}: it does not move the damper "
+                                   "(choose another point or mode)")  # fmt: skip
+    ns.M = mode.mass / phi**2
+    ns.K = mode.omega**2 * ns.M
+    ns.zeta, ns.C = mode.zeta, None
+    print(f"symimpact {ns.command}: the primary is mode {i} ({mode.frequency:.5g} Hz, ζ "
+          f"{mode.zeta:.4g}) of the {s.source} model at {at!r}: M {ns.M:.6g} kg, K {ns.K:.6g} "
+          "N/m", file=sys.stderr)  # fmt: skip
 
 
 def _material_restitution(ns: argparse.Namespace, body: Any, cavity: str, said: list) -> None:

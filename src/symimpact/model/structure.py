@@ -55,6 +55,15 @@ class StructureMode:
     mass: float
     shape: dict[str, float]
     participation: float = 0.0
+    #: the largest value of the shape over the whole structure (a beam's span, a model's DOFs;
+    #: for modal data, over its points): a point where the shape is below 1e-9 of it is a node
+    largest: float = math.nan
+
+    def node_at(self, point: str) -> bool:
+        """True where the mode does not move ``point`` (its shape there below 1e-9 of its
+        largest value)."""
+        scale = self.largest if math.isfinite(self.largest) else max(map(abs, self.shape.values()))
+        return abs(self.shape[point]) <= 1e-9 * scale
 
     @property
     def frequency(self) -> float:
@@ -176,8 +185,9 @@ def beam_structure(support: str, E: Any, I: Any, rho: Any, A: Any, L: Any, point
         gamma = float(k.participation(bl, x_ref)) / phi_ref  # ∫φdξ/∫φ²dξ
         gamma = 0.0 if abs(gamma) < 1e-12 else gamma  # antisymmetric modes of symmetric beams
         shape = {p: float(k.shape(bl, x)) for p, x in where.items()}
+        largest = max(abs(float(k.shape(bl, x))) for x in np.linspace(0.0, 1.0, 201))
         out.append(StructureMode(i, bl * bl * scale, zetas[i - 1], rho * A * L * norm, shape,
-                                 gamma))  # fmt: skip
+                                 gamma, largest))  # fmt: skip
     return Structure(tuple(out), tuple(where), "beam")
 
 
@@ -279,7 +289,9 @@ def fe_structure(M: Any, K: Any, points: Any, modes: Any = None, zeta: Any = Non
     out = []
     for i in range(n):
         shape = {p: float(vec[d, i]) for p, d in where.items()}
-        out.append(StructureMode(i + 1, float(omegas[i]), zetas[i], 1.0, shape, float(loads[i])))
+        largest = float(np.max(np.abs(vec[:, i])))
+        out.append(StructureMode(i + 1, float(omegas[i]), zetas[i], 1.0, shape, float(loads[i]),
+                                 largest))  # fmt: skip
     return Structure(tuple(out), tuple(where), "fe")
 
 
