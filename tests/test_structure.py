@@ -157,6 +157,16 @@ def test_fe_structure_from_files(tmp_path):
     assert [m.zeta for m in s.modes] == [0.01, 0.02, 0.03]
 
 
+def test_an_inline_model_names_its_dofs_by_number():
+    """The issue's two-DOF chain, given without points: each DOF is a point named by its number;
+    ω² are the roots of λ² − 3λ + 1 = 0, (3 ∓ √5)/2 (closed form)."""
+    s = structure_from_dict({"fe": {"M": [[1, 0], [0, 1]], "K": [[1, -1], [-1, 2]],
+                                    "zeta": 0.015}})  # fmt: skip
+    assert s.points == ("0", "1")
+    assert [m.omega**2 for m in s.modes] == pytest.approx([(3 - 5**0.5) / 2, (3 + 5**0.5) / 2],
+                                                          rel=1e-14)  # fmt: skip
+
+
 def test_modal_data_are_sorted_by_frequency():
     s = modal_structure([
         {"f": 30.0, "mass": 2.0, "zeta": 0.02, "shape": {"a": 1.0, "b": -0.5}},
@@ -228,6 +238,15 @@ BAD = [
         "support",
     ),
     ({"beam": {}, "modes": []}, "structure"),
+    (
+        {
+            "fe": {"M": [[1, 0], [0, 1]], "K": [[1, -1], [-1, 2]], "zeta": 0.015},
+            "stops": [{"name": "s", "at": 0, "gap": 1}],
+        },
+        "stops",
+    ),
+    ({"modes": [{"f": 10, "shape": {"a": 1}}], "point": {"a": 1}}, "point"),
+    ({"modes": [{"f": 10, "shape": {"a": 1}}], "points": {"a": 1}}, "points"),
     (
         {
             "fe": {"M": [[1, 0], [0, 1]], "K": [[2, -1], [-1, 2]], "zeta": 0.01, "modes": 3},

@@ -335,12 +335,26 @@ def structure_from_dict(data: Any, base: Path | None = None) -> Structure:
         raise ParameterError("structure", "give exactly one of beam, modes or fe, got "
                                           f"{given or 'none'}")  # fmt: skip
     kind = given[0]
+    later = [k for k in ("dampers", "stops", "force", "base") if k in data]
+    if later:
+        raise ParameterError(later[0], "the file's dampers, stops and loads need the engine for "
+                                       "several modes, not built yet: give the damper and the "
+                                       "load with the command's options")  # fmt: skip
+    unknown = sorted(set(data) - {"beam", "modes", "fe", "points"})
+    if unknown:
+        raise ParameterError(unknown[0], "is not a field of a structure file (beam, modes or fe, "
+                                         "and points)")  # fmt: skip
     if kind == "modes":
+        if "points" in data:
+            raise ParameterError("points", "modal data name their points in each mode's shape")
         return modal_structure(data["modes"])
     spec = data[kind]
     if not isinstance(spec, dict):
         raise ParameterError(kind, "a table of its parameters")
     points = data.get("points", spec.get("points"))
+    if points is None and kind == "fe":
+        size = len(spec["M"]) if isinstance(spec.get("M"), list) else None
+        points = {str(d): d for d in range(size)} if size else None
     if kind == "beam":
         known = {"type", "E", "I", "rho", "A", "L", "modes", "zeta", "points"}
         unknown = sorted(set(spec) - known)
@@ -369,7 +383,9 @@ def read_structure(path: Any) -> Structure:
     """The structure in a JSON or TOML file: one of ``"beam"`` ({type, E, I, rho, A, L, modes,
     zeta}), ``"modes"`` (a list of {f, mass, zeta, shape: {point: value}}) or ``"fe"`` ({M, K,
     C or zeta, modes, influence}: matrices as nested lists or paths), and ``"points"`` ({name:
-    distance along the beam, or DOF}); values SI numbers or quantity texts."""
+    distance along the beam, or DOF}; a model given inline names each DOF by its number when
+    they are left out); values SI numbers or quantity texts.  Dampers, stops and loads in the
+    file are refused until the engine for several modes takes them."""
     p = Path(path)
     try:
         text = p.read_text()
