@@ -26,13 +26,38 @@ nbclient = pytest.importorskip("nbclient")
 ROOT = Path(__file__).resolve().parent.parent
 
 
+#: Where the documentation build writes the notebooks (docs/_ext/symimpact_pages.py).
+BUILT = ROOT / "docs" / "_generated" / "notebooks"
+
+
+def _built_notebooks() -> list[Path] | None:
+    """The notebooks the documentation build wrote, when .ci/run says that build is the one to
+    test (SYMIMPACT_DOCS_BUILT, as tests/test_docs.py reads it) and no derivation file changed
+    after them; else None."""
+    import os
+
+    built = os.environ.get("SYMIMPACT_DOCS_BUILT")
+    if not built or Path(built).resolve() != ROOT / "docs" / "_build" / "html":
+        return None
+    paths = sorted(BUILT.glob("*.ipynb"))
+    newest_code = max(p.stat().st_mtime for p in (ROOT / "derive").glob("*.py"))
+    if not paths or min(p.stat().st_mtime for p in paths) < newest_code:
+        return None
+    return paths
+
+
 @pytest.fixture(scope="module")
 def notebooks(tmp_path_factory, worker_id) -> list[Path]:
-    """The notebooks, written once per test session: under pytest-xdist the workers share the
-    session's temporary folder (the parent of each worker's own), and the first to arrive writes
-    them while the others wait on a lock (writing them is a whole derivation, minutes)."""
+    """The notebooks: those of the documentation build CI has just run (writing them is a whole
+    derivation, minutes), else written once per test session — under pytest-xdist the workers
+    share the session's temporary folder (the parent of each worker's own), and the first to
+    arrive writes them while the others wait on a lock."""
     import fcntl
 
+    paths = _built_notebooks()
+    if paths is not None:
+        assert [p.stem.split("_", 1)[1] for p in paths] == [*derive.STEPS, "regenerating"]
+        return paths
     shared = tmp_path_factory.getbasetemp()
     if worker_id != "master":
         shared = shared.parent
