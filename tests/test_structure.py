@@ -59,6 +59,29 @@ def test_effective_mass_with_all_modes_is_the_inverse_of_the_flexibility_of_mass
         assert s.effective_mass(p) == pytest.approx(1.0 / inverse[i, i], rel=1e-13)
 
 
+def test_all_modes_hold_the_whole_static_flexibility():
+    """Σ φᵢ(p)²/(Mᵢωᵢ²) over all modes is (K⁻¹)ₚₚ: the share is 1 (1e-12, a 3×3 solve)."""
+    s = fe_structure(M3, K3, POINTS3, zeta=0.02)
+    inverse = np.linalg.inv(K3)
+    for p, i in POINTS3.items():
+        assert s.flexibility[p] == pytest.approx(inverse[i, i], rel=1e-13)
+        assert s.flexibility_share(p) == pytest.approx(1.0, rel=1e-12)
+    assert math.isnan(modal_structure([{"f": 1.0, "shape": {"a": 1.0}}]).flexibility_share("a"))
+
+
+def test_a_cantilevers_first_mode_holds_12_over_beta4_of_its_tip_flexibility():
+    """At the tip φ(L)² = 4∫φ²dξ for every mode and the flexibility is L³/(3EI): mode i holds
+    12/βᵢ⁴ of it (closed form; 97.07 % for the first), and the shares of more modes sum to
+    Σ 12/βᵢ⁴ (1e-12: the kernels' roots)."""
+    s = beam_structure("cantilever", E, I, RHO, A, L, {"tip": L}, modes=4)
+    assert s.flexibility["tip"] == pytest.approx(L**3 / (3 * E * I), rel=1e-12)
+    betas = [float(SUPPORTS["cantilever"].roots[i]) for i in range(4)]
+    assert s.flexibility_share("tip") == pytest.approx(sum(12 / b**4 for b in betas), rel=1e-12)
+    one = beam_structure("cantilever", E, I, RHO, A, L, {"tip": L}, modes=1)
+    assert one.flexibility_share("tip") == pytest.approx(12 / betas[0] ** 4, rel=1e-12)
+    assert 0.9706 < one.flexibility_share("tip") < 0.9708
+
+
 def test_one_mode_meets_its_own_mass():
     """One mode with φ = 1 at the point: m_eff = M (Step 9's impact)."""
     s = modal_structure([{"f": 12.0, "mass": 40.0, "zeta": 0.01, "shape": {"tip": 1.0}}])

@@ -4,6 +4,7 @@ structure file's modes at its named points with the mass an impact meets at each
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from .common import add_output, emit
@@ -93,6 +94,12 @@ def _structure(ns) -> None:
     tail = "mass an impact meets (over these modes): " + ", ".join(
         f"{p} {masses[p]:.5g} kg" for p in points
     )
+    shares = {p: s.flexibility_share(p) for p in points}
+    out["flexibility_share"] = {p: (None if math.isnan(v) else v) for p, v in shares.items()}
+    if s.flexibility:
+        tail += "\nshare of each point's static flexibility these modes hold: " + ", ".join(
+            f"{p} {shares[p] * 100:.4g} %" for p in points
+        )
     emit(
         ns,
         out,

@@ -27,7 +27,7 @@ from __future__ import annotations
 import json
 import math
 import tomllib
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -84,6 +84,19 @@ class Structure:
     points: tuple[str, ...]
     #: where the model came from: "beam", "modes" or "fe"
     source: str
+    #: each point's static flexibility over all the structure's modes [m/N], the limit of the
+    #: modal sum (a beam's statics, Eq. F6; a model's (K⁻¹)ⱼⱼ); empty for modal data
+    flexibility: dict[str, float] = field(default_factory=dict)
+
+    def flexibility_share(self, p: Any) -> float:
+        """The share of point ``p``'s static flexibility the kept modes hold,
+        Σ φᵢ(p)²/(Mᵢωᵢ²) over the exact value: how well the truncation describes the point
+        (the point receptance at Ω = 0); nan for modal data, which carry no exact value."""
+        key = self._point(p)
+        exact = self.flexibility.get(key)
+        if not exact:
+            return math.nan
+        return sum(m.shape[key] ** 2 / (m.mass * m.omega**2) for m in self.modes) / exact
 
     def shapes(self, points: Any = None) -> np.ndarray:
         """Φ, shape (len(points), N): φᵢ(p) of every mode at ``points`` (default: all)."""
@@ -188,7 +201,8 @@ def beam_structure(support: str, E: Any, I: Any, rho: Any, A: Any, L: Any, point
         largest = max(abs(float(k.shape(bl, x))) for x in np.linspace(0.0, 1.0, 201))
         out.append(StructureMode(i, bl * bl * scale, zetas[i - 1], rho * A * L * norm, shape,
                                  gamma, largest))  # fmt: skip
-    return Structure(tuple(out), tuple(where), "beam")
+    flex = {p: float(k.flexibility(x)) * L**3 / (E * I) for p, x in where.items()}
+    return Structure(tuple(out), tuple(where), "beam", flex)
 
 
 def modal_structure(modes: Any) -> Structure:
@@ -292,7 +306,12 @@ def fe_structure(M: Any, K: Any, points: Any, modes: Any = None, zeta: Any = Non
         largest = float(np.max(np.abs(vec[:, i])))
         out.append(StructureMode(i + 1, float(omegas[i]), zetas[i], 1.0, shape, float(loads[i]),
                                  largest))  # fmt: skip
-    return Structure(tuple(out), tuple(where), "fe")
+    flex = {}
+    for p, d in where.items():
+        unit = np.zeros(size)
+        unit[d] = 1.0
+        flex[p] = float(np.linalg.solve(K, unit)[d])
+    return Structure(tuple(out), tuple(where), "fe", flex)
 
 
 def _dense(A: Any) -> Any:
