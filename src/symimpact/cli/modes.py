@@ -92,13 +92,15 @@ def _structure(ns) -> None:
         for m in s.modes
     ]
     tail = "mass an impact meets (over these modes): " + ", ".join(
-        f"{p} {masses[p]:.5g} kg" for p in points
+        f"{p} {masses[p]:.5g} kg" if math.isfinite(masses[p]) else f"{p} (no mode moves it)"
+        for p in points
     )
     shares = {p: s.flexibility_share(p) for p in points}
     out["flexibility_share"] = {p: (None if math.isnan(v) else v) for p, v in shares.items()}
     if s.flexibility:
         tail += "\nshare of each point's static flexibility these modes hold: " + ", ".join(
-            f"{p} {shares[p] * 100:.4g} %" for p in points
+            f"{p} {shares[p] * 100:.4g} %" if not math.isnan(shares[p]) else f"{p} (held fixed)"
+            for p in points
         )
     emit(
         ns,
