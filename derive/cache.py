@@ -59,17 +59,6 @@ def store(boards: dict) -> None:
     os.replace(tmp, target)
 
 
-def kept_board(step: str):
-    """The board of ``step`` as the current derivation code derived it before in this checkout
-    (a notebook's last cell compares its own board with it), or None when none is kept."""
-    try:
-        with path().open("rb") as f:
-            kept = pickle.load(f)
-    except (OSError, EOFError, pickle.UnpicklingError):
-        return None
-    return kept.get(step) if list(kept) == list(STEPS) else None
-
-
 def boards() -> dict:
     """{step: Board} of every step in lecture order: read back when the current derivation code
     derived them before in this checkout, derived (and kept) otherwise."""

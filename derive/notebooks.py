@@ -168,12 +168,8 @@ from derive.teach import check, show, show_value  # noqa: E402
 
 print(f"derive/{step}.py from {{root}}")"""
 
-_SAME = """# The board this notebook built, line by line, against the one derive() builds: as
-# `python -m derive` kept it for this very code (derive/cache.py), else derived here.
-from derive import cache  # noqa: E402
-reference = cache.kept_board("{step}")
-if reference is None:
-    reference = step.derive()
+_SAME = """# The board this notebook built, line by line, against the one derive() builds.
+reference = step.derive()
 same = [a.name == b.name and str(a.value) == str(b.value)
         for a, b in zip(board.lines, reference.lines, strict=True)]
 print(f"{{sum(same)}} of {{len(reference.lines)}} board lines identical to derive.{step}.derive(); "

@@ -2,7 +2,9 @@
 and each is executed here with nbclient on a fresh kernel, as a teacher would run it.
 
 A notebook fails the test on any error or any code cell without output; it must re-derive the
-step's board exactly (its last cell compares it with ``derive()``'s), show the paper's equation
+step's board exactly (its last cell compares it with ``derive()``'s, derived in the same kernel: a
+board kept by another process, under another hash seed, writes some lines in another order — 11
+of Step 1's 15 lines and 13 of Step 12's 14 matched when that was tried), show the paper's equation
 numbers, its checks and its errata where they arise, and hold two or three exercises.
 """
 
