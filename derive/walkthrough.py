@@ -153,11 +153,13 @@ INTRO = (
 
 def executed(root: Path):
     """The walk-through notebook of :func:`notebook`, executed with nbclient on a fresh kernel
-    in ``root`` (the checkout) — what the docs page shows and offers for download."""
+    in ``root`` (the checkout) — what the docs page shows and offers for download.  A cell may
+    take 1800 s, as in tests/test_notebooks.py: its ``derive --check`` of the changed copy ran
+    past 900 s alone on the 2-core machine once (a fresh clone's documentation build)."""
     import nbclient
 
     nb = notebook()
-    client = nbclient.NotebookClient(nb, timeout=900, kernel_name="python3",
+    client = nbclient.NotebookClient(nb, timeout=1800, kernel_name="python3",
                                      resources={"metadata": {"path": str(root)}})  # fmt: skip
     client.execute()
     return nb
