@@ -142,13 +142,12 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
     for (command, option), why in UNUSED.items():
         if ns.command == command and option in given:
             raise ParameterError(option.replace("_", "-"), why)
-    if not hasattr(ns, "at"):  # no system options: `modes --structure` lists a structure
-        return
-    if ns.structure is not None:
+    # the system options' --structure (``modes --structure`` only lists a structure: no --at)
+    if getattr(ns, "structure", None) is not None and hasattr(ns, "at"):
         _structure_mode(ns, given)
         return
     for option in ("at", "mode"):
-        if option in given:
+        if option in given and hasattr(ns, "at"):
             raise ParameterError(option, "names a point or mode of --structure, which is not given")
     if getattr(ns, "fn", None) is None:
         return
