@@ -174,22 +174,14 @@ def influence_vector(pattern: Any, size: int) -> np.ndarray:
     return r
 
 
-def fe_modes(K: Any, M: Any, dof: Any, n: Any = 1, influence: Any = None) -> list[FEMode]:
-    """The first ``n`` modes of the model (K [N/m], M [kg], constrained: K positive definite)
-    referred to DOF ``dof`` (0-based): ω from K v = ω²M v, Mᵢ = 1/φᵢⱼ² with φᵢ of unit modal
-    mass, Kᵢ = ωᵢ²Mᵢ (the reduction of Eq. 5–6 and F6 applied to the model's modes); with the
-    ``influence`` vector r (:func:`influence_vector`), Γᵢ = φᵢⱼ·φᵢᵀMr and the share
-    (φᵢᵀMr)²/rᵀMr (Eq. F7)."""
+def unit_modes(K: Any, M: Any, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """(ω², modes as columns of unit modal mass φᵀMφ = 1) of the ``n`` lowest modes of K, M
+    (checked by :func:`_checked`): the flexibility form M v = μ K v (dense) or ARPACK in
+    shift-invert mode about zero (sparse, above DENSE DOFs)."""
     from scipy import sparse
     from scipy.linalg import LinAlgError, eigh
 
-    K = _checked("K", K, None)
     size = K.shape[0]
-    M = _checked("M", M, size)
-    if not isinstance(dof, int | np.integer) or isinstance(dof, bool) or not 0 <= dof < size:
-        raise ParameterError("dof", f"a degree of freedom from 0 to {size - 1}, got {dof!r}")
-    if not isinstance(n, int | np.integer) or isinstance(n, bool) or not 1 <= n <= min(size, 100):
-        raise ParameterError("modes", f"a whole number from 1 to {min(size, 100)}, got {n!r}")
     try:
         if sparse.issparse(K) and size > DENSE:
             from scipy.sparse.linalg import eigsh
@@ -202,7 +194,7 @@ def fe_modes(K: Any, M: Any, dof: Any, n: Any = 1, influence: Any = None) -> lis
             Md = M.toarray() if sparse.issparse(M) else M
             mu, vec = eigh(Md, Kd, subset_by_index=[size - n, size - 1])
             lam, vec = 1.0 / mu[::-1], vec[:, ::-1]
-    except (LinAlgError, RuntimeError) as exc:
+    except (LinAlgError, RuntimeError, ValueError) as exc:
         raise ParameterError(
             "K",
             "the model is not positive definite (a rigid-body mode, or M singular): constrain "
@@ -212,6 +204,24 @@ def fe_modes(K: Any, M: Any, dof: Any, n: Any = 1, influence: Any = None) -> lis
         raise ParameterError("K", "the model has a mode of zero or negative stiffness")
     Mv = M @ vec
     vec = vec / np.sqrt(np.einsum("ij,ij->j", vec, Mv))  # unit modal mass
+    return lam, vec
+
+
+def fe_modes(K: Any, M: Any, dof: Any, n: Any = 1, influence: Any = None) -> list[FEMode]:
+    """The first ``n`` modes of the model (K [N/m], M [kg], constrained: K positive definite)
+    referred to DOF ``dof`` (0-based): ω from K v = ω²M v, Mᵢ = 1/φᵢⱼ² with φᵢ of unit modal
+    mass, Kᵢ = ωᵢ²Mᵢ (the reduction of Eq. 5–6 and F6 applied to the model's modes); with the
+    ``influence`` vector r (:func:`influence_vector`), Γᵢ = φᵢⱼ·φᵢᵀMr and the share
+    (φᵢᵀMr)²/rᵀMr (Eq. F7)."""
+
+    K = _checked("K", K, None)
+    size = K.shape[0]
+    M = _checked("M", M, size)
+    if not isinstance(dof, int | np.integer) or isinstance(dof, bool) or not 0 <= dof < size:
+        raise ParameterError("dof", f"a degree of freedom from 0 to {size - 1}, got {dof!r}")
+    if not isinstance(n, int | np.integer) or isinstance(n, bool) or not 1 <= n <= min(size, 100):
+        raise ParameterError("modes", f"a whole number from 1 to {min(size, 100)}, got {n!r}")
+    lam, vec = unit_modes(K, M, n)
     if influence is not None:
         r = influence_vector(influence, size)
         Mr = M @ r

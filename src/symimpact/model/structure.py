@@ -35,7 +35,7 @@ import numpy as np
 
 from ..errors import ParameterError
 from .beams import MAX_MODES, SUPPORTS, _support
-from .modal import _checked, influence_vector
+from .modal import _checked, influence_vector, static_flexibility, unit_modes
 from .units import nonnegative_float, positive_float, si_float
 
 #: Largest number of modes a structure keeps (the beams' kernels carry MAX_MODES roots; beyond a
@@ -256,8 +256,6 @@ def fe_structure(M: Any, K: Any, points: Any, modes: Any = None, zeta: Any = Non
     proportional (ΦᵀCΦ diagonal to 1e-8 of its diagonal) and gives ζᵢ = φᵢᵀCφᵢ/(2ωᵢ).
     ``influence``: r, each DOF's displacement per unit support motion (a number, or a pattern,
     :func:`~symimpact.model.modal.influence_vector`)."""
-    from scipy.linalg import LinAlgError, eigh
-
     K = np.asarray(_dense(_checked("K", K, None)), dtype=float)
     size = K.shape[0]
     M = np.asarray(_dense(_checked("M", M, size)), dtype=float)
@@ -268,18 +266,7 @@ def fe_structure(M: Any, K: Any, points: Any, modes: Any = None, zeta: Any = Non
         if not isinstance(dof, int) or isinstance(dof, bool) or not 0 <= dof < size:
             raise ParameterError(f"points.{name}", f"a DOF from 0 to {size - 1}, got {dof!r}")
         where[name] = dof
-    try:
-        mu, vec = eigh(M, K, subset_by_index=[size - n, size - 1])
-    except (LinAlgError, ValueError) as exc:
-        raise ParameterError(
-            "K",
-            "the model is not positive definite (a rigid-body mode, or M "
-            f"singular): constrain it at its supports ({exc})",
-        ) from None
-    if not np.all(mu > 0):
-        raise ParameterError("M", "is not positive definite")
-    lam, vec = 1.0 / mu[::-1], vec[:, ::-1]
-    vec = vec / np.sqrt(np.einsum("ij,ij->j", vec, M @ vec))  # unit modal mass
+    lam, vec = unit_modes(K, M, n)
     omegas = np.sqrt(lam)
     if (zeta is None) == (C is None):
         raise ParameterError("zeta", "give the damping as one of zeta (modal ratios) or C")
@@ -306,11 +293,7 @@ def fe_structure(M: Any, K: Any, points: Any, modes: Any = None, zeta: Any = Non
         largest = float(np.max(np.abs(vec[:, i])))
         out.append(StructureMode(i + 1, float(omegas[i]), zetas[i], 1.0, shape, float(loads[i]),
                                  largest))  # fmt: skip
-    flex = {}
-    for p, d in where.items():
-        unit = np.zeros(size)
-        unit[d] = 1.0
-        flex[p] = float(np.linalg.solve(K, unit)[d])
+    flex = {p: static_flexibility(K, d) for p, d in where.items()}
     return Structure(tuple(out), tuple(where), "fe", flex)
 
 
