@@ -405,6 +405,7 @@ def _segment(p, mass, t0, x0, v0, tau, ledger, period_max, n_periods):
                 tm = secant_point(lo, hi, flo, fhi)
                 xm, vm = _state(p, mass, t0, x0, v0, tm)
                 if vm == 0.0:
+                    lo = hi = tm  # the zero itself: x is read there
                     break
                 if (vm > 0.0) == (flo > 0.0):
                     lo, flo = tm, vm
