@@ -1,30 +1,42 @@
 """Compiled event-driven simulation of a structure of N modes carrying K impact dampers with
-rigid impacts (numba, cached).
+rigid impacts, chatter and sticking (numba, cached).
 
-Between impacts everything is closed form, as in :mod:`symimpact.forced._rigid`, whose flight
-functions this module composes mode by mode: mode i follows Step 8's forced flight (Eq. F1) with
-its own Mᵢ, Kᵢ = ωᵢ²Mᵢ, Cᵢ = 2ζᵢωᵢMᵢ and modal force Fᵢ = Σⱼ F₀ⱼφᵢ(j) (Step 15, item 1); each
-impact mass k flies at constant speed; an impact of damper k at its point aₖ applies Step 15's law
-(item 4, Eq. F7): the impulse P = (1 + e)·μ·(ẏ − ẋₐ), μ the reduced mass of m and the effective
-mass (Σφᵢ(a)²/Mᵢ)⁻¹, enters each mode as q̇ᵢ += φᵢ(a)P/Mᵢ and leaves the mass as ẏ −= P/m.  One mode
-with φ = 1 is Step 9's impact (Eq. F2), the test of the N = 1 case.
+Between events everything is closed form.  While no mass sticks, mode i follows Step 8's forced
+flight (Eq. F1) with its own Mᵢ, Kᵢ = ωᵢ²Mᵢ, Cᵢ = 2ζᵢωᵢMᵢ and modal force Fᵢ = Σⱼ F₀ⱼφᵢ(j)
+(Step 15, item 1), through the one-mode engine's own functions (:mod:`symimpact.forced._rigid`);
+each impact mass k flies at constant speed.  An impact of damper k at its point aₖ applies Step
+15's law (item 4, Eq. F7): the impulse P = (1 + e)·μ·(ẏ − ẋₐ), μ the reduced mass of m and the
+effective mass (Σφᵢ(a)²/Mᵢ)⁻¹, enters each mode as q̇ᵢ += φᵢ(a)P/Mᵢ and leaves the mass as
+ẏ −= P/m.  One mode with φ = 1 is Step 9's impact (Eq. F2).
 
-*The next impact.*  Damper k's relative displacement zₖ = yₖ − Σφᵢ(aₖ)qᵢ has
-|zₖ''| ≤ Aₖ = Σ|φᵢ(aₖ)|·Aᵢ, Aᵢ the bound of mode i's acceleration over the flight
-(:func:`symimpact.forced._rigid._accel_bound`).  All dampers are marched together on one grid:
-an interval every damper's bound clears is skipped, any other halved, and each damper whose z
-crosses a wall there is bracketed and refined by Illinois regula falsi; the earliest crossing is
-the impact.  Right after an impact the wall just left is kept off as in the one-mode search
-(2w/Aₖ, and while the point's acceleration is certified to point away, with
-B = Σ|φᵢ|·2Aᵢ·max(Ω, ωᵢ)² bounding its second derivative).
+*Chatter and sticking* (Step 15, item 5).  When damper k's impacts on one wall would accumulate
+within a fraction of a forcing period (Step 9's test, Δ = 2w/(a(1 − e)), with the point's
+acceleration a), the run jumps to the accumulation point, where the mass and the point close
+plastically (the impulse with e = 0), and the mass then rides on the point: the structure's modal
+mass matrix becomes diag(Mᵢ) + Σ mₖφₖφₖᵀ over the stuck dampers.  The stuck structure is still
+linear, but its modes are no longer the free ones (nor is the modal damping proportional in
+them), so its flight is the closed form of the first-order system X' = AX + b·cos(Ωt + φ):
+X(τ) = Re(V e^{Λτ} V⁻¹(X₀ − X_p(t₀))) + X_p(t₀ + τ), with A's eigen-decomposition V, Λ and the
+harmonic particular solution X_p = Re(X̂ e^{i(Ωt + φ)}), X̂ = (iΩ − A)⁻¹b, computed once each time
+the set of stuck dampers changes.  A stuck mass is released where sₖ·ẍₐ turns positive (the wall
+would pull), located by sampling at 1/64 of the shortest period and Illinois regula falsi.  An
+impact of another damper while masses stick uses the stuck structure's mass matrix; a stuck mass
+whose wall would have to pull it during that impulse is released first and the impulse taken
+again without it.
 
-*Chatter.*  An impact after which the mass would return to the same wall so slowly that the
-sequence accumulates within a fraction of a forcing period (Step 9's test with the point's
-acceleration) ends the run with status CHATTER: the sticking of a mass on a structure of several
-modes (Step 15, item 5) is derived but not yet in this engine.
+*The next event.*  Damper k's relative displacement zₖ = yₖ − φₖᵀq has |zₖ''| ≤ Aₖ: while no mass
+sticks Aₖ = Σ|φᵢ(aₖ)|·Aᵢ, Aᵢ the one-mode bound of mode i's acceleration over the flight
+(:func:`symimpact.forced._rigid._accel_bound`); while masses stick, the sum over the stuck
+system's modes of |φₖᵀVₗ|·|cₗ|·|λₗ|² (each decays, Re λₗ ≤ 0) and the harmonic part Ω²|φₖᵀX̂|.
+All free dampers are marched together: an interval every bound clears is skipped, any other
+halved, and each damper whose z crosses a wall there is bracketed and refined by Illinois regula
+falsi; the earliest crossing is the impact.  The wall just left is kept off as in the one-mode
+search (2w/Aₖ, and while the point's acceleration is certified to point away, with a bound B on
+its second derivative of the same make, |λ|⁴ in place of |λ|²).
 
-*Energy ledger.*  The work of the modal forces and the dissipation of every Cᵢ, by the one-mode
-engine's Gauss–Legendre rule summed over the modes, and the impacts' losses ½μ(1 − e²)ż².
+*Energy ledger.*  The work of the modal forces and the dissipation of the Cᵢ, by the one-mode
+engine's Gauss–Legendre rule summed over the modes (both hold while masses stick: those only add
+inertia), and the impacts' and closures' losses.
 
 Private: :mod:`symimpact.forced.structure_response` checks the input and builds the result.
 """
@@ -46,7 +58,9 @@ from ._rigid import (
     E_SIDE,
     E_T,
     E_VREL,
+    KIND_ACCUMULATION,
     KIND_IMPACT,
+    KIND_RELEASE,
     N_EVENT_COLS,
     OK,
     P_C,
@@ -64,81 +78,202 @@ from ._rigid import (
     restitution,
 )
 
-#: Run status beside :data:`~symimpact.forced._rigid.OK`, ``TOO_MANY_EVENTS`` and INTERRUPTED.
-CHATTER = 3
-#: Extra event-log column: the damper of the impact (its index).
+#: Run status beside OK, TOO_MANY_EVENTS and INTERRUPTED: the stuck structure has no harmonic
+#: response (undamped, driven at one of its own frequencies) or no eigen-decomposition.
+SINGULAR_STUCK = 3
+#: Extra event-log column: the damper of the event (its index).
 E_DAMPER = N_EVENT_COLS
 N_MODAL_EVENT_COLS = N_EVENT_COLS + 1
 
 
-@njit(cache=True)
-def _states(pm, t0, q0, v0, tau, q, v):
-    """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v (Eq. F1)."""
-    for i in range(pm.shape[0]):
-        q[i], v[i] = _state(pm[i], pm[i, P_M], t0, q0[i], v0[i], tau)
+# --- the flight: free modes (Eq. F1 each), or the stuck structure's closed form -----------------
 
 
 @njit(cache=True)
-def _point_accel(pm, phi, t, q, v):
-    """ẍₐ = Σφᵢq̈ᵢ at a point whose shapes are ``phi``."""
+def _config(pm, Phi, md, stuck):
+    """The stuck structure of the dampers with ``stuck[k] != 0``: (M_s⁻¹, Λ, V, V⁻¹, X̂, ok)."""
+    N = pm.shape[0]
+    Ms = np.zeros((N, N))
+    for i in range(N):
+        Ms[i, i] = pm[i, P_M]
+    for k in range(Phi.shape[0]):
+        if stuck[k] != 0:
+            for i in range(N):
+                for j in range(N):
+                    Ms[i, j] += md[k] * Phi[k, i] * Phi[k, j]
+    Minv = np.linalg.inv(Ms)
+    A = np.zeros((2 * N, 2 * N), dtype=np.complex128)
+    for i in range(N):
+        A[i, N + i] = 1.0
+        for j in range(N):
+            A[N + i, j] = -Minv[i, j] * pm[j, P_K]
+            A[N + i, N + j] = -Minv[i, j] * pm[j, P_C]
+    lam, V = np.linalg.eig(A)
+    Vinv = np.linalg.inv(V)
+    b = np.zeros(2 * N, dtype=np.complex128)
+    for i in range(N):
+        for j in range(N):
+            b[N + i] += Minv[i, j] * pm[j, P_F0]
+    D = 1j * pm[0, P_W] * np.eye(2 * N) - A
+    ok = True
+    if np.linalg.cond(D) > 1e12 or np.linalg.cond(V) > 1e12:
+        ok = False
+        Xhat = np.zeros(2 * N, dtype=np.complex128)
+    else:
+        Xhat = np.linalg.solve(D, b)
+    return Minv, lam, V, Vinv, Xhat, ok
+
+
+@njit(cache=True)
+def _coefficients(pm, cfg, t0, q0, v0):
+    """c = V⁻¹(X₀ − X_p(t₀)): the stuck flight's modal amplitudes from (q0, v0) at t0."""
+    _, _, _, Vinv, Xhat, _ = cfg
+    N = pm.shape[0]
+    rot = np.exp(1j * (pm[0, P_W] * t0 + pm[0, P_PHI]))
+    X0 = np.empty(2 * N, dtype=np.complex128)
+    for i in range(N):
+        X0[i] = q0[i] - (Xhat[i] * rot).real
+        X0[N + i] = v0[i] - (Xhat[N + i] * rot).real
+    return Vinv @ X0
+
+
+@njit(cache=True)
+def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
+    """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v: Eq. F1 per mode
+    while no mass sticks, else the stuck structure's closed form (module text)."""
+    N = pm.shape[0]
+    if nstuck == 0:
+        for i in range(N):
+            q[i], v[i] = _state(pm[i], pm[i, P_M], t0, q0[i], v0[i], tau)
+        return
+    _, lam, V, _, Xhat, _ = cfg
+    c = _coefficients(pm, cfg, t0, q0, v0)
+    rot = np.exp(1j * (pm[0, P_W] * (t0 + tau) + pm[0, P_PHI]))
+    g = c * np.exp(lam * tau)
+    X = V @ g
+    for i in range(N):
+        q[i] = X[i].real + (Xhat[i] * rot).real
+        v[i] = X[N + i].real + (Xhat[N + i] * rot).real
+
+
+@njit(cache=True)
+def _point_accel(pm, cfg, nstuck, phi, t, q, v):
+    """ẍₐ = φᵀq̈ at a point whose shapes are ``phi``: q̈ = M_s⁻¹(F cos θ − Cq̇ − Kq)."""
+    N = pm.shape[0]
     a = 0.0
-    for i in range(pm.shape[0]):
-        a += phi[i] * _accel(pm[i], pm[i, P_M], t, q[i], v[i])
+    if nstuck == 0:
+        for i in range(N):
+            a += phi[i] * _accel(pm[i], pm[i, P_M], t, q[i], v[i])
+        return a
+    Minv = cfg[0]
+    c = math.cos(pm[0, P_W] * t + pm[0, P_PHI])
+    for i in range(N):
+        g = 0.0
+        for j in range(N):
+            g += Minv[i, j] * (pm[j, P_F0] * c - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
+        a += phi[i] * g
     return a
 
 
 @njit(cache=True)
-def _point_jerk(pm, phi, t, q, v):
-    """d³xₐ/dt³ = Σφᵢ d³qᵢ/dt³."""
+def _point_jerk(pm, cfg, nstuck, phi, t, q, v):
+    """d³xₐ/dt³ = φᵀ d³q/dt³."""
+    N = pm.shape[0]
     a = 0.0
-    for i in range(pm.shape[0]):
-        a += phi[i] * _jerk(pm[i], pm[i, P_M], t, q[i], v[i])
+    if nstuck == 0:
+        for i in range(N):
+            a += phi[i] * _jerk(pm[i], pm[i, P_M], t, q[i], v[i])
+        return a
+    Minv = cfg[0]
+    W = pm[0, P_W]
+    th = W * t + pm[0, P_PHI]
+    acc = np.empty(N)
+    for i in range(N):
+        g = 0.0
+        for j in range(N):
+            g += Minv[i, j] * (pm[j, P_F0] * math.cos(th) - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
+        acc[i] = g
+    for i in range(N):
+        g = 0.0
+        for j in range(N):
+            g += Minv[i, j] * (-pm[j, P_F0] * W * math.sin(th) - pm[j, P_C] * acc[j]
+                               - pm[j, P_K] * v[j])  # fmt: skip
+        a += phi[i] * g
     return a
 
 
 @njit(cache=True)
 def _omega_max(pm):
-    """The largest of Ω and the modes' damped frequencies [rad/s]: it sets the search's steps."""
+    """The largest of Ω and the free modes' damped frequencies [rad/s] (the stuck structure's
+    are lower: they interlace below the free ones, Step 15 item 5): it sets the steps."""
     w = pm[0, P_W]
     for i in range(pm.shape[0]):
         M, K, C = pm[i, P_M], pm[i, P_K], pm[i, P_C]
-        w = max(w, math.sqrt(K / M - C * C / (4 * M * M)))
+        w = max(w, math.sqrt(max(K / M - C * C / (4 * M * M), 0.0)), math.sqrt(K / M))
     return w
 
 
 @njit(cache=True)
-def _held_off(pm, phi, t0, q0, v0, side, T, A_modes):
-    """A τ up to which the wall ``side`` the damper at ``phi`` just left cannot be reached:
-    :func:`symimpact.forced._rigid._held_off` with the point's acceleration g = side·ẍₐ and
-    B = Σ|φᵢ|·2Aᵢ·max(Ω, ωᵢ)² ≥ |g''|."""
-    N = pm.shape[0]
+def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T):
+    """(A, B): for every damper's point, A ≥ |ẍₐ| and B ≥ |d⁴xₐ/dt⁴| over [t0, t0 + T] of the
+    flight (module text)."""
+    N, K = pm.shape[0], Phi.shape[0]
     W = pm[0, P_W]
-    A, B = 0.0, 0.0
-    wmax = W
-    for i in range(N):
-        wn = math.sqrt(pm[i, P_K] / pm[i, P_M])
-        A += abs(phi[i]) * A_modes[i]
-        B += abs(phi[i]) * 2.0 * A_modes[i] * max(W, wn) ** 2
-        wmax = max(wmax, wn)
+    A = np.zeros(K)
+    B = np.zeros(K)
+    if nstuck == 0:
+        for i in range(N):
+            Ai = _accel_bound(pm[i], pm[i, P_M], t0, q0[i], v0[i], T)
+            wn = math.sqrt(pm[i, P_K] / pm[i, P_M])
+            for k in range(K):
+                A[k] += abs(Phi[k, i]) * Ai
+                B[k] += abs(Phi[k, i]) * 2.0 * Ai * max(W, wn) ** 2
+        return A, B
+    _, lam, V, _, Xhat, _ = cfg
+    c = _coefficients(pm, cfg, t0, q0, v0)
+    for k in range(K):
+        for m in range(2 * N):
+            r = 0.0j
+            for i in range(N):
+                r += Phi[k, i] * V[i, m]
+            amp = abs(r) * abs(c[m]) * abs(lam[m]) ** 2
+            A[k] += amp
+            B[k] += amp * abs(lam[m]) ** 2
+        r = 0.0j
+        for i in range(N):
+            r += Phi[k, i] * Xhat[i]
+        A[k] += abs(r) * W * W
+        B[k] += abs(r) * W**4
+        A[k] = A[k] * (1.0 + 1e-9) + 1e-300
+        B[k] = B[k] * (1.0 + 1e-9) + 1e-300
+    return A, B
+
+
+@njit(cache=True)
+def _held_off(pm, cfg, nstuck, phi, t0, q0, v0, side, T, A, B):
+    """A τ up to which the wall ``side`` the damper at ``phi`` just left cannot be reached:
+    :func:`symimpact.forced._rigid._held_off` with the point's acceleration g = side·ẍₐ, A ≥ |ẍₐ|
+    and B ≥ |g''|."""
+    N = pm.shape[0]
     period = 2.0 * math.pi / _omega_max(pm)
     span = min(T, period)
     q = np.empty(N)
     v = np.empty(N)
-    ga = side * _point_accel(pm, phi, t0, q0, v0)
+    ga = side * _point_accel(pm, cfg, nstuck, phi, t0, q0, v0)
     if ga < -1e-12 * A:
         return 0.0
     ga = max(ga, 0.0)
-    g1 = side * _point_jerk(pm, phi, t0, q0, v0)
+    g1 = side * _point_jerk(pm, cfg, nstuck, phi, t0, q0, v0)
     tau = min((g1 + math.sqrt(g1 * g1 + 2.0 * B * ga)) / B, span)
     if tau > 0.0:
-        _states(pm, t0, q0, v0, tau, q, v)
-        ga = side * _point_accel(pm, phi, t0 + tau, q, v)
+        _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v)
+        ga = side * _point_accel(pm, cfg, nstuck, phi, t0 + tau, q, v)
     H = period / 64.0
     while tau < span:
         H = min(H, span - tau)
         tb = tau + H
-        _states(pm, t0, q0, v0, tb, q, v)
-        gb = side * _point_accel(pm, phi, t0 + tb, q, v)
+        _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
+        gb = side * _point_accel(pm, cfg, nstuck, phi, t0 + tb, q, v)
         if gb >= 0.0 and min(ga, gb) - B * H * H / 8.0 >= 0.0:
             tau, ga = tb, gb
             H = min(2.0 * H, period / 64.0)
@@ -150,9 +285,9 @@ def _held_off(pm, phi, t0, q0, v0, side, T, A_modes):
 
 
 @njit(cache=True)
-def _z(pm, phi, t0, q0, v0, z0, u0, tau, q, v):
+def _z(pm, cfg, nstuck, phi, t0, q0, v0, z0, u0, tau, q, v):
     """z = y − xₐ a time τ into the flight: z0 + u0·τ − Σφᵢ(qᵢ(τ) − qᵢ0)."""
-    _states(pm, t0, q0, v0, tau, q, v)
+    _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v)
     dx = 0.0
     for i in range(pm.shape[0]):
         dx += phi[i] * (q[i] - q0[i])
@@ -160,7 +295,7 @@ def _z(pm, phi, t0, q0, v0, z0, u0, tau, q, v):
 
 
 @njit(cache=True)
-def _refine(pm, phi, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v):
+def _refine(pm, cfg, nstuck, phi, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v):
     """The first τ in (lo, hi] where s·z reaches h (z(lo) = za inside, z(hi) = zb beyond), by
     Illinois regula falsi to 4e-16 of the time."""
     flo = min(s * za - h, 0.0)
@@ -171,7 +306,7 @@ def _refine(pm, phi, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v):
         tm = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
         if not (lo < tm < hi):
             tm = 0.5 * (lo + hi)
-        fm = s * _z(pm, phi, t0, q0, v0, z0, u0, tm, q, v) - h
+        fm = s * _z(pm, cfg, nstuck, phi, t0, q0, v0, z0, u0, tm, q, v) - h
         if fm >= 0.0:
             hi, fhi = tm, fm
             if kept == 1:
@@ -188,22 +323,18 @@ def _refine(pm, phi, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v):
 
 
 @njit(cache=True)
-def _next_impact(pm, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch):
-    """(τ, damper, side): the first τ in (0, T] at which a damper's abs(z) reaches its half
+def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch):
+    """(τ, damper, side): the first τ in (0, T] at which a free damper's abs(z) reaches its half
     clearance, that damper and its wall (±1); (T, −1, 0) when there is none, or (τ so far, −1, 0)
     when a signal is seen on ``watch``.  ``side0[k]``: the wall damper k starts on (0: none)."""
     N, K = pm.shape[0], Phi.shape[0]
     hmax = 2.0 * math.pi / _omega_max(pm) / 16.0
-    A_modes = np.empty(N)
-    for i in range(N):
-        A_modes[i] = _accel_bound(pm[i], pm[i, P_M], t0, q0[i], v0[i], T)
-    A = np.zeros(K)
-    for k in range(K):
-        for i in range(N):
-            A[k] += abs(Phi[k, i]) * A_modes[i]
+    A, B = _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T)
     hmin = 1e-6 * hmax
     tau_safe = np.zeros(K)
     for k in range(K):
+        if stuck[k] != 0:
+            continue
         hmin = min(hmin, max(1e-12 * hmax, math.sqrt(8e-20 * hd[k] / A[k])))
         if side0[k] != 0:
             xd = 0.0
@@ -211,12 +342,12 @@ def _next_impact(pm, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch):
                 xd += Phi[k, i] * v0[i]
             fd0 = side0[k] * (u0[k] - xd)
             if fd0 <= 0.0:
-                tau_safe[k] = max(-2.0 * fd0 / A[k],
-                                  _held_off(pm, Phi[k], t0, q0, v0, side0[k], T, A_modes))  # fmt: skip
+                tau_safe[k] = max(-2.0 * fd0 / A[k], _held_off(pm, cfg, nstuck, Phi[k], t0, q0,
+                                  v0, side0[k], T, A[k], B[k]))  # fmt: skip
     q = np.empty(N)
     v = np.empty(N)
     za = z0.copy()
-    zb = np.empty(K)
+    zb = z0.copy()
     tau = 0.0
     H = hmax
     looks = 0
@@ -226,9 +357,11 @@ def _next_impact(pm, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch):
             return tau, -1, 0
         H = min(H, T - tau)
         tb = tau + H
-        _states(pm, t0, q0, v0, tb, q, v)
+        _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
         clear = True
         for k in range(K):
+            if stuck[k] != 0:
+                continue
             dx = 0.0
             for i in range(N):
                 dx += Phi[k, i] * (q[i] - q0[i])
@@ -248,10 +381,10 @@ def _next_impact(pm, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch):
             continue
         first, which, wall = tb, -1, 0
         for k in range(K):
-            if abs(zb[k]) >= hd[k]:
+            if stuck[k] == 0 and abs(zb[k]) >= hd[k]:
                 s = 1.0 if zb[k] > 0 else -1.0
-                tk = _refine(pm, Phi[k], hd[k], t0, q0, v0, z0[k], u0[k], s, tau, tb, za[k],
-                             zb[k], q, v)  # fmt: skip
+                tk = _refine(pm, cfg, nstuck, Phi[k], hd[k], t0, q0, v0, z0[k], u0[k], s, tau,
+                             tb, za[k], zb[k], q, v)  # fmt: skip
                 if which < 0 or tk < first:
                     first, which, wall = tk, k, int(s)
         if which >= 0:
@@ -263,7 +396,62 @@ def _next_impact(pm, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch):
 
 
 @njit(cache=True)
-def _segment(pm, Pout, t0, q0, v0, tau, ledger, period_max, n_periods):
+def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch):
+    """(τ, damper): the first τ in (0, T] where a stuck damper's sₖ·ẍₐ turns positive (its wall
+    would pull), or (T, −1) (or the τ reached when a signal is seen on ``watch``)."""
+    N, K = pm.shape[0], Phi.shape[0]
+    step = 2.0 * math.pi / _omega_max(pm) / 64.0
+    q = np.empty(N)
+    v = np.empty(N)
+    fa = np.empty(K)
+    for k in range(K):
+        fa[k] = -1.0
+        if stuck[k] != 0:
+            fa[k] = min(stuck[k] * _point_accel(pm, cfg, nstuck, Phi[k], t0, q0, v0), -1e-300)
+    tau = 0.0
+    looks = 0
+    while tau < T:
+        looks += 1
+        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
+            return tau, -1
+        tb = min(tau + step, T)
+        _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
+        first, which = tb, -1
+        for k in range(K):
+            if stuck[k] == 0:
+                continue
+            fb = stuck[k] * _point_accel(pm, cfg, nstuck, Phi[k], t0 + tb, q, v)
+            if fb > 0.0:
+                lo, hi, flo, fhi = tau, tb, fa[k], fb
+                kept = 0
+                for _ in range(200):
+                    tm = secant_point(lo, hi, flo, fhi)
+                    _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
+                    fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi[k], t0 + tm, q, v)
+                    if fm > 0.0:
+                        hi, fhi = tm, fm
+                        if kept == 1:
+                            flo *= 0.5
+                        kept = 1
+                    else:
+                        lo, flo = tm, fm
+                        if kept == -1:
+                            fhi *= 0.5
+                        kept = -1
+                    if hi - lo <= 4e-16 * (t0 + hi):
+                        break
+                if which < 0 or hi < first:
+                    first, which = hi, k
+            else:
+                fa[k] = fb
+        if which >= 0:
+            return first, which
+        tau = tb
+    return T, -1
+
+
+@njit(cache=True)
+def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods):
     """Account for the flight [t0, t0 + τ]: the work of the modal forces and the dissipation of
     the Cᵢ (ledger[0], ledger[1], Gauss–Legendre as in the one-mode engine) and, for every output
     point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period crossed
@@ -285,13 +473,13 @@ def _segment(pm, Pout, t0, q0, v0, tau, ledger, period_max, n_periods):
         a = j * hs
         for g in range(8):
             s = a + 0.5 * hs * (1.0 + _GL_X[g])
-            _states(pm, t0, q0, v0, s, q, v)
+            _states(pm, cfg, nstuck, t0, q0, v0, s, q, v)
             c = math.cos(W * (t0 + s) + pm[0, P_PHI])
             for i in range(N):
                 ledger[0] += 0.5 * hs * _GL_W[g] * pm[i, P_F0] * c * v[i]
                 ledger[1] += 0.5 * hs * _GL_W[g] * pm[i, P_C] * v[i] * v[i]
         b = (j + 1) * hs
-        _states(pm, t0, q0, v0, b, q, v)
+        _states(pm, cfg, nstuck, t0, q0, v0, b, q, v)
         k = int(math.floor((t0 + b) / T_f))  # noqa: RUF046 (int() spelled out for numba)
         for p in range(P):
             xb, vb = 0.0, 0.0
@@ -305,7 +493,7 @@ def _segment(pm, Pout, t0, q0, v0, tau, ledger, period_max, n_periods):
                 kept = 0
                 for _ in range(100):
                     tm = secant_point(lo, hi, flo, fhi)
-                    _states(pm, t0, q0, v0, tm, q, v)
+                    _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
                     vm = 0.0
                     for i in range(N):
                         vm += Pout[p, i] * v[i]
@@ -324,7 +512,7 @@ def _segment(pm, Pout, t0, q0, v0, tau, ledger, period_max, n_periods):
                         kept = 1
                     if hi - lo <= 4e-16 * (t0 + hi):
                         break
-                _states(pm, t0, q0, v0, 0.5 * (lo + hi), q, v)
+                _states(pm, cfg, nstuck, t0, q0, v0, 0.5 * (lo + hi), q, v)
                 xm = 0.0
                 for i in range(N):
                     xm += Pout[p, i] * q[i]
@@ -335,17 +523,69 @@ def _segment(pm, Pout, t0, q0, v0, tau, ledger, period_max, n_periods):
 
 
 @njit(cache=True)
+def _impulse(pm, cfg, nstuck, phi, m, e, u, v):
+    """Step 15's impact (Eq. F7) of a mass m with speed u on the point of shapes ``phi``, the
+    structure's velocities ``v`` (changed in place): returns (P, μ), P the impulse on the
+    structure (P/m leaves the mass).  While masses stick, the structure's mass matrix is the
+    stuck one: 1/m_eff = φᵀM_s⁻¹φ and q̇ += M_s⁻¹φP."""
+    N = pm.shape[0]
+    xd, inv = 0.0, 0.0
+    for i in range(N):
+        xd += phi[i] * v[i]
+    if nstuck == 0:
+        for i in range(N):
+            inv += phi[i] * phi[i] / pm[i, P_M]
+    else:
+        Minv = cfg[0]
+        for i in range(N):
+            for j in range(N):
+                inv += phi[i] * Minv[i, j] * phi[j]
+    mu = m / (1.0 + m * inv)
+    P = (1.0 + e) * mu * (u - xd)
+    if nstuck == 0:
+        for i in range(N):
+            v[i] += phi[i] * P / pm[i, P_M]
+    else:
+        Minv = cfg[0]
+        dv = np.zeros(N)
+        for i in range(N):
+            for j in range(N):
+                dv[i] += Minv[i, j] * phi[j] * P
+        v += dv
+    return P, mu
+
+
+@njit(cache=True)
+def _log(events, n_ev, t, x, xd, yd, s, vrel, lost, kind, xd1, yd1, k):
+    events = _grow(events, n_ev)
+    ev = events[n_ev]
+    ev[E_T], ev[1], ev[2], ev[3], ev[E_SIDE] = t, x, xd, yd, s
+    ev[E_VREL], ev[E_LOST], ev[E_KIND], ev[8], ev[9] = vrel, lost, kind, xd1, yd1
+    ev[E_DAMPER] = k
+    return events, n_ev + 1
+
+
+@njit(cache=True)
+def _dot(phi, v):
+    out = 0.0
+    for i in range(phi.shape[0]):
+        out += phi[i] * v[i]
+    return out
+
+
+@njit(cache=True)
 def run(pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, max_events, watch):
     """Simulate the structure (modes: rows of ``pm``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi[k]`` at their points, masses ``md``,
-    half clearances ``hd``, restitution ``ed``) from modal state (q0, v0) and the masses' (y0, u0)
+    half clearances ``hd``, restitution ``ed``; chatter taken to its accumulation point when it
+    would end within ``chat`` forcing periods) from modal state (q0, v0) and the masses' (y0, u0)
     at t = 0 to t_end.
 
     Returns (status, events, n_events, period_max, ledger, final): the event log (columns of
-    :mod:`symimpact.forced._rigid` and E_DAMPER; E_X, E_XD, E_YD, E_XD1, E_YD1 hold the point's
-    displacement, velocities before and after), ``period_max[k, p]`` the largest abs(x) at output
-    point p in forcing period k, ledger = (work of the forces, dissipation, loss in impacts),
-    final = (t, q…, q̇…, y…, ẏ…).
+    :mod:`symimpact.forced._rigid` and E_DAMPER; columns 1, 2, 3, 8, 9 hold the point's
+    displacement, its velocity and the mass's before and after), ``period_max[k, p]`` the largest
+    abs(x) at output point p in forcing period k, ledger = (work of the forces, dissipation,
+    loss in impacts), final = (t, q…, q̇…, y…, ẏ…, stuck…).
     """
     N, K = pm.shape[0], Phi.shape[0]
     T_f = 2.0 * math.pi / pm[0, P_W]
@@ -360,11 +600,11 @@ def run(pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, max_events, watc
     u = u0.copy()
     z = np.empty(K)
     side0 = np.zeros(K, dtype=np.int64)
+    stuck = np.zeros(K, dtype=np.int64)
+    nstuck = 0
+    cfg = _config(pm, Phi, md, stuck)
     for k in range(K):
-        x = 0.0
-        for i in range(N):
-            x += Phi[k, i] * q[i]
-        z[k] = y0[k] - x
+        z[k] = y0[k] - _dot(Phi[k], q)
         if abs(z[k]) >= hd[k]:
             side0[k] = 1 if z[k] > 0 else -1
             z[k] = side0[k] * hd[k]
@@ -378,17 +618,35 @@ def run(pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, max_events, watc
         if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
             status = INTERRUPTED
             break
-        tau, k, side = _next_impact(pm, Phi, hd, t, q, v, z, u, side0, t_end - t, watch)
-        _segment(pm, Pout, t, q, v, tau, ledger, period_max, n_periods)
-        _states(pm, t, q, v, tau, qn, vn)
+        T = t_end - t
+        kr = -1
+        if nstuck > 0:
+            T, kr = _release(pm, cfg, nstuck, stuck, Phi, t, q, v, T, watch)
+        tau, k, side = _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t, q, v, z, u, side0, T,
+                                    watch)  # fmt: skip
+        _segment(pm, cfg, nstuck, Pout, t, q, v, tau, ledger, period_max, n_periods)
+        _states(pm, cfg, nstuck, t, q, v, tau, qn, vn)
         for j in range(K):
-            dx = 0.0
-            for i in range(N):
-                dx += Phi[j, i] * (qn[i] - q[i])
-            z[j] = z[j] + u[j] * tau - dx
+            if stuck[j] == 0:
+                z[j] = z[j] + u[j] * tau - _dot(Phi[j], qn) + _dot(Phi[j], q)
+            else:
+                u[j] = _dot(Phi[j], vn)
         t = t + tau
         q[:] = qn
         v[:] = vn
+        if k < 0 and kr >= 0 and tau >= T and t < t_end:
+            # --- release of damper kr: it leaves its wall with the point's velocity ---
+            s = float(stuck[kr])
+            stuck[kr] = 0
+            nstuck -= 1
+            cfg = _config(pm, Phi, md, stuck)
+            for j in range(K):
+                side0[j] = 0
+            side0[kr] = int(s)
+            xd = _dot(Phi[kr], v)
+            events, n_ev = _log(events, n_ev, t, _dot(Phi[kr], q), xd, u[kr], s, 0.0, 0.0,
+                                KIND_RELEASE, xd, u[kr], kr)  # fmt: skip
+            continue
         if k < 0:
             if watch[2] != 0:
                 status = INTERRUPTED
@@ -396,49 +654,86 @@ def run(pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, max_events, watc
         # --- Step 15's impact (F7) of damper k on its wall s ---
         s = float(side)
         z[k] = s * hd[k]
-        xa, xda, inv_meff = 0.0, 0.0, 0.0
-        for i in range(N):
-            xa += Phi[k, i] * q[i]
-            xda += Phi[k, i] * v[i]
-            inv_meff += Phi[k, i] * Phi[k, i] / pm[i, P_M]
-        vrel = s * (u[k] - xda)  # approach speed, ≥ 0
+        xd = _dot(Phi[k], v)
+        vrel = s * (u[k] - xd)  # approach speed, ≥ 0
         e = restitution(ed[k], 0.0, vrel)
-        mu = md[k] / (1.0 + md[k] * inv_meff)
-        P = (1.0 + e) * mu * (u[k] - xda)
-        for i in range(N):
-            v[i] += Phi[k, i] * P / pm[i, P_M]
+        v_before = v.copy()
+        let_go = np.zeros(K, dtype=np.int64)
+        while True:  # a stuck mass its wall would have to pull during the impulse is let go
+            v[:] = v_before
+            P, mu = _impulse(pm, cfg, nstuck, Phi[k], md[k], e, u[k], v)
+            pulled = -1
+            for j in range(K):
+                if stuck[j] != 0 and stuck[j] * (_dot(Phi[j], v) - _dot(Phi[j], v_before)) > 0.0:
+                    pulled = j
+                    break
+            if pulled < 0:
+                break
+            let_go[pulled] = stuck[pulled]
+            stuck[pulled] = 0
+            nstuck -= 1
+            cfg = _config(pm, Phi, md, stuck)
+            events, n_ev = _log(events, n_ev, t, _dot(Phi[pulled], q), u[pulled], u[pulled],
+                                float(let_go[pulled]), 0.0, 0.0, KIND_RELEASE, u[pulled],
+                                u[pulled], pulled)  # fmt: skip
         u_before = u[k]
         u[k] -= P / md[k]
+        for j in range(K):
+            if stuck[j] != 0:
+                u[j] = _dot(Phi[j], v)
         lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
         ledger[2] += lost
-        xda1 = 0.0
-        for i in range(N):
-            xda1 += Phi[k, i] * v[i]
-        events = _grow(events, n_ev)
-        ev = events[n_ev]
-        ev[E_T], ev[1], ev[2], ev[3], ev[E_SIDE] = t, xa, xda, u_before, s
-        ev[E_VREL], ev[E_LOST], ev[E_KIND], ev[8], ev[9] = vrel, lost, KIND_IMPACT, xda1, u[k]
-        ev[E_DAMPER] = k
-        n_ev += 1
+        events, n_ev = _log(events, n_ev, t, _dot(Phi[k], q), xd, u_before, s, vrel, lost,
+                            KIND_IMPACT, _dot(Phi[k], v), u[k], k)  # fmt: skip
         for j in range(K):
-            side0[j] = 0
+            side0[j] = let_go[j]  # the masses just let go leave their walls
         side0[k] = side
         # --- chatter: would the sequence accumulate (Step 9's test at the point)? ---
-        a = -s * _point_accel(pm, Phi[k], t, q, v)
+        a = -s * _point_accel(pm, cfg, nstuck, Phi[k], t, q, v)
         w = e * vrel
         if a > 0.0 and e < 1.0:
             delta = 2.0 * w / (a * (1.0 - e))
             if delta <= chat * T_f and t + delta < t_end:
-                status = CHATTER
+                # jump to the accumulation point (the other masses fly on), close plastically
+                _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods)
+                _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
+                for j in range(K):
+                    if stuck[j] == 0 and j != k:
+                        z[j] = z[j] + u[j] * delta - _dot(Phi[j], qn) + _dot(Phi[j], q)
+                    elif stuck[j] != 0:
+                        u[j] = _dot(Phi[j], vn)
+                t = t + delta
+                q[:] = qn
+                v[:] = vn
+                xd = _dot(Phi[k], v)
+                P, mu = _impulse(pm, cfg, nstuck, Phi[k], md[k], 0.0, u[k], v)
+                lost = 0.5 * mu * (u[k] - xd) ** 2
+                ledger[2] += lost
+                u_before = u[k]
+                u[k] = _dot(Phi[k], v)
+                for j in range(K):
+                    if stuck[j] != 0:
+                        u[j] = _dot(Phi[j], v)
+                events, n_ev = _log(events, n_ev, t, _dot(Phi[k], q), xd, u_before, s,
+                                    s * (u_before - xd), lost, KIND_ACCUMULATION, u[k], u[k],
+                                    k)  # fmt: skip
+            elif w != 0.0 and delta != 0.0:
+                continue
+            # --- the mass rides on its point from here ---
+            stuck[k] = side
+            nstuck += 1
+            cfg = _config(pm, Phi, md, stuck)
+            if not cfg[5]:
+                status = SINGULAR_STUCK
                 break
-    final = np.empty(1 + 2 * N + 2 * K)
+            u[k] = _dot(Phi[k], v)
+            z[k] = s * hd[k]
+    final = np.empty(1 + 2 * N + 3 * K)
     final[0] = t
     final[1 : 1 + N] = q
     final[1 + N : 1 + 2 * N] = v
     for k in range(K):
-        x = 0.0
-        for i in range(N):
-            x += Phi[k, i] * q[i]
-        final[1 + 2 * N + k] = x + z[k]
-    final[1 + 2 * N + K :] = u
+        final[1 + 2 * N + k] = _dot(Phi[k], q) + z[k]
+        final[1 + 2 * N + 2 * K + k] = stuck[k]
+    final[1 + 2 * N + K : 1 + 2 * N + 2 * K] = u
     return status, events, n_ev, period_max, ledger, final

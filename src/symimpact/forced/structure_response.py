@@ -50,18 +50,21 @@ class StructureResult:
     #: (periods, points): the largest abs(x) at each point in each forcing period [m]
     period_max: np.ndarray
     energy: dict[str, float]
-    #: (t, q…, q̇…, y…, ẏ…) at the end
+    #: (t, q…, q̇…, y…, ẏ…, and per damper its wall if it ends stuck, else 0) at the end
     final_state: np.ndarray
     notes: list[str] = field(default_factory=list)
 
     def impacts(self, damper: str) -> np.ndarray:
-        """The times of damper ``damper``'s impacts [s]."""
+        """The times of damper ``damper``'s impacts [s] (the impacts it resolved and, for each chatter
+        sequence, its accumulation point, as :attr:`~symimpact.forced.ForcedResult.impacts`)."""
         names = [d.name for d in self.dampers]
         if damper not in names:
             raise ParameterError("damper", f"no damper {damper!r} (the dampers: "
                                            f"{', '.join(names)})")  # fmt: skip
         k = names.index(damper)
-        return self.events[self.events[:, _modal.E_DAMPER] == k, _rigid.E_T]
+        mine = self.events[:, _modal.E_DAMPER] == k
+        kept = mine & (self.events[:, _rigid.E_KIND] != _rigid.KIND_RELEASE)
+        return self.events[kept, _rigid.E_T]
 
     def amplitudes(self, discard: Any = 0.5) -> dict[str, float]:
         """Every point's largest abs(x) over the periods kept after the first ``discard`` share
@@ -114,8 +117,8 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     forcing periods, from rest or from ``state`` = (q…, q̇…, y…, ẏ…) (modal coordinates, then
     each damper's absolute displacement and velocity).  Eq. F1 per mode, Eq. F7 at each impact.
 
-    Refused in one line: a chattering damper (its sticking on a structure of several modes,
-    Step 15 item 5, is derived but not yet in the engine), an undamped mode driven at its own
+    Chatter is taken to its accumulation point and the mass then sticks on its point until its
+    wall would pull it (Step 15, item 5).  Refused in one line: an undamped mode driven at its own
     frequency (Eq. F1 cancels there, as in :func:`~symimpact.forced.simulate_forced`)."""
     structure = instance("structure", structure, Structure, "a Structure")
     dampers = tuple(dampers) if isinstance(dampers, (list, tuple)) else dampers
@@ -162,20 +165,19 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         _modal.run, pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, budgets.MAX_EVENTS
     )
     events = events[:n_ev]
-    if status == _modal.CHATTER:
-        last = events[-1]
+    if status == _modal.SINGULAR_STUCK:
         raise MethodNotApplicable(
             "simulate_structure",
-            f"damper {dampers[int(last[_modal.E_DAMPER])].name!r} chatters at t = "
-            f"{last[_rigid.E_T]:.6g} s (Ω {omega:.4g} rad/s): a mass sticking on a structure of "
-            "several modes (Step 15, item 5) is not yet simulated",
+            f"at t = {events[-1][_rigid.E_T]:.6g} s a mass sticks and the structure carrying it "
+            f"is undamped and resonant at Ω {omega:.6g} rad/s: its closed-form flight does not "
+            "exist",
         )
     if status == _rigid.TOO_MANY_EVENTS:
         raise ParameterError("periods", f"more than {budgets.MAX_EVENTS} impacts in "
                                         f"{n_periods} periods; ask for fewer periods")  # fmt: skip
     e0 = _energy(pm, md, q0, v0, u0)
     qf, vf = final[1 : 1 + N], final[1 + N : 1 + 2 * N]
-    uf = final[1 + 2 * N + K :]
+    uf = final[1 + 2 * N + K : 1 + 2 * N + 2 * K]
     e1 = _energy(pm, md, qf, vf, uf)
     work, d_c, d_imp = (float(x) for x in ledger)
     residual = (e1 - e0) - (work - d_c - d_imp)
