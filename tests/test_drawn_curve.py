@@ -6,8 +6,10 @@ Checked against the exact orbit at each segment's middle Ω (Newton's method fro
 state, :func:`orbit_between`), on the README's system over 30–34 rad/s, where without the step
 control one segment departs by 2.3e-3 (measured).  Segments next to a turn in Ω (a fold), a
 grazing or a moved section are left out: there the orbit at the middle Ω can be another part of
-the branch.  The continuation estimates the departure from the circle through three points; the
-exact departures measured here are at most 0.53e-3, so the bound itself is asserted.
+the branch.  The continuation estimates the departure from the circle through three points, and
+looks back with it at the segment before (towards a fold the curve bends more ahead: a segment two
+points before one departed by 2.2e-3 until the look-back put points halfway along it); the exact
+departures measured here are at most 0.70e-3, so the bound itself is asserted.
 """
 
 from __future__ import annotations

@@ -86,7 +86,9 @@ MAX_STEP = 1.0
 #: amplitude axis).  Estimated from the circle through the last three points: a segment of length
 #: s on a curve of curvature κ departs by κs²/8 at its middle.  The step shrinks to keep it, to
 #: no less than a sixteenth of the given step (at a kink of max abs(x), where two extremes of x
-#: swap, the curvature is unbounded and the bound cannot hold).
+#: swap, the curvature is unbounded and the bound cannot hold).  The same circle looks back at
+#: the segment before: where the curve bends more ahead (towards a fold), the orbit halfway along
+#: that segment is found and put in while it lies farther than this from the segment.
 CHORD = 1e-3
 
 
@@ -440,11 +442,13 @@ def continue_orbit(
     ds = step
     crossings = 0
     before: BranchPoint | None = None  # the point before ``point``: the drawn curve's curvature
+    back = None  # (y, t, ds) at ``before``: the step that led to ``point``
     while len(branch.points) < max_points:
         moved = _resection(problem, y, t, res)
         if moved is not None:  # the same orbit, its section moved away from the impacts
             problem, y, J, mono, res, t = moved
             point = _point(problem, y, mono, res)
+            back = None  # the section moved: the point before is in the old one
         attempt = _correct(problem, y + ds * t, t, point.impact_events_per_period)
         if attempt is GRAZE:
             located = _grazing(problem, y, t, ds, point)
@@ -467,7 +471,7 @@ def continue_orbit(
                                        "appearing and vanishing, as before chatter)")  # fmt: skip
                 return branch
             y, t, mono, res, point = crossed
-            before = None
+            before = back = None
             tests = _tests(t, mono)  # the multipliers jump at a grazing: no test across it
             branch.points.append(point)
             continue
@@ -502,6 +506,20 @@ def continue_orbit(
             ds = max(0.5 * ds, step / 16)  # too far for the drawn curve: a shorter step
             res = res_here
             continue
+        # the curve may bend more ahead than it did behind (towards a fold, where the amplitude
+        # goes as a square root of the parameter): where the circle through the three points
+        # shows the last segment too long for the drawn curve, the orbit halfway along it is
+        # found, and while it lies farther than CHORD from the segment it is put in and the half
+        # next to ``point`` is looked at in the same way
+        start = before
+        if back is not None and kappa * _chord(before, point, hi - lo) ** 2 / 8 > CHORD:
+            for _ in range(6):
+                got = _between(problem, back, point)
+                if got is None or _departure(start, got[0], point, hi - lo) <= CHORD:
+                    break
+                start, y_mid = got
+                branch.points.insert(len(branch.points) - 1, start)
+                back = (y_mid, back[1], 0.5 * back[2])
         tests1 = _tests(t1, mono1)
         for kind in ("fold", "branch-point", "period-doubling", "neimark-sacker"):
             a, b = tests[kind], tests1[kind]
@@ -511,6 +529,7 @@ def continue_orbit(
                 found = _locate(problem, kind, y, t, ds, a, b)
                 if found is not None:
                     branch.bifurcations.append(found)
+        back = (y, t, ds)
         y, t, mono, point, before, tests = y1, t1, mono1, p1, point, tests1
         branch.points.append(point)
         again = _revisited(branch.points, problem, ds)
@@ -526,6 +545,31 @@ def continue_orbit(
             ds = max(min(ds, 0.9 * math.sqrt(8 * CHORD / kappa) / reach), step / 16)
     branch.stopped = f"{max_points} points"
     return branch
+
+
+def _between(problem: _Problem, back: tuple, point: BranchPoint):
+    """(the orbit, its unknowns) halfway along the step ``back`` = (y, t, ds) that led to
+    ``point`` (the corrector from y + t·ds/2), or None where it lands elsewhere: another count of
+    impacts, or outside the step's parameter range."""
+    y, t, ds = back
+    attempt = _correct(problem, y + 0.5 * ds * t, t, point.impact_events_per_period)
+    if attempt is None or attempt is GRAZE:
+        return None
+    y1, _, mono1, res1 = attempt
+    middle = _point(problem, y1, mono1, res1)
+    lo, hi = sorted((float(y[4] * problem.unit), point.value))
+    if middle.impact_events_per_period != point.impact_events_per_period:
+        return None
+    return (middle, y1) if lo < middle.value < hi else None
+
+
+def _departure(a: BranchPoint, m: BranchPoint, c: BranchPoint, width: float) -> float:
+    """How far the orbit ``m`` lies from the drawn segment from ``a`` to ``c`` (:func:`_plane`
+    relative to ``m``)."""
+    pa, pm, pc = _plane(a, m, width), _plane(m, m, width), _plane(c, m, width)
+    chord = pc - pa
+    norm = float(np.linalg.norm(chord))
+    return abs(float(chord[0] * (pm - pa)[1] - chord[1] * (pm - pa)[0])) / norm if norm else 0.0
 
 
 def _plane(p: BranchPoint, ref: BranchPoint, width: float) -> np.ndarray:
