@@ -25,6 +25,7 @@ from . import (
     random_loads,
     startup,
     stepper_peers,
+    structure,
     targets,
 )
 from .timing import machine
@@ -44,6 +45,10 @@ SUITE = (
     (
         "9. random vibration with the damper: realisations per second, Dask scaling",
         random_loads.main,
+    ),
+    (
+        "10. a structure of several modes with impact dampers: cost against N, against DOP853",
+        structure.main,
     ),
 )
 

@@ -64,12 +64,18 @@ from ._rigid import (
     N_EVENT_COLS,
     OK,
     P_C,
+    P_CHAT,
     P_F0,
     P_K,
     P_M,
     P_PHI,
+    P_VY,
     P_W,
+    P_XB,
     TOO_MANY_EVENTS,
+    P_e,
+    P_h,
+    P_m,
     _accel,
     _accel_bound,
     _grow,
@@ -91,8 +97,14 @@ N_MODAL_EVENT_COLS = N_EVENT_COLS + 1
 
 @njit(cache=True)
 def _config(pm, Phi, md, stuck):
-    """The stuck structure of the dampers with ``stuck[k] != 0``: (M_s⁻¹, Λ, V, V⁻¹, X̂, ok)."""
+    """The structure with the dampers of ``stuck[k] != 0`` riding on it: (M_s⁻¹, Λ, V, V⁻¹, X̂,
+    ok, decoupled, masses, ω_max).  ``decoupled``: M_s is diagonal (no mass sticks, or one mode
+    alone moves each stuck point: one mode with φ = 1 is Step 9's sticking, one mass M + m), and
+    the modes fly by Eq. F1 with the masses ``masses`` (M_s's diagonal); otherwise by the
+    eigen-decomposition (module text).  ω_max: the largest of Ω and the structure's damped
+    frequencies, which sets the searches' steps."""
     N = pm.shape[0]
+    W = pm[0, P_W]
     Ms = np.zeros((N, N))
     for i in range(N):
         Ms[i, i] = pm[i, P_M]
@@ -101,7 +113,25 @@ def _config(pm, Phi, md, stuck):
             for i in range(N):
                 for j in range(N):
                     Ms[i, j] += md[k] * Phi[k, i] * Phi[k, j]
+    masses = np.empty(N)
+    decoupled = True
+    for i in range(N):
+        masses[i] = Ms[i, i]
+        for j in range(N):
+            if i != j and Ms[i, j] != 0.0:
+                decoupled = False
     Minv = np.linalg.inv(Ms)
+    lam = np.zeros(2 * N, dtype=np.complex128)
+    V = np.eye(2 * N, dtype=np.complex128)
+    Vinv = np.eye(2 * N, dtype=np.complex128)
+    Xhat = np.zeros(2 * N, dtype=np.complex128)
+    ok = True
+    wmax = W
+    if decoupled:
+        for i in range(N):
+            M, K, C = masses[i], pm[i, P_K], pm[i, P_C]
+            wmax = max(wmax, math.sqrt(max(K / M - C * C / (4 * M * M), 0.0)))
+        return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax
     A = np.zeros((2 * N, 2 * N), dtype=np.complex128)
     for i in range(N):
         A[i, N + i] = 1.0
@@ -109,25 +139,28 @@ def _config(pm, Phi, md, stuck):
             A[N + i, j] = -Minv[i, j] * pm[j, P_K]
             A[N + i, N + j] = -Minv[i, j] * pm[j, P_C]
     lam, V = np.linalg.eig(A)
-    Vinv = np.linalg.inv(V)
+    V = np.ascontiguousarray(V)
+    Vinv = np.ascontiguousarray(np.linalg.inv(V))
+    # the load on each mode, (F + K·X_b)cos θ − CΩ·X_b sin θ = Re((F + K·X_b + iCΩ·X_b)e^{iθ})
     b = np.zeros(2 * N, dtype=np.complex128)
     for i in range(N):
         for j in range(N):
-            b[N + i] += Minv[i, j] * pm[j, P_F0]
-    D = 1j * pm[0, P_W] * np.eye(2 * N) - A
-    ok = True
+            load = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB] + 1j * W * pm[j, P_C] * pm[j, P_XB]
+            b[N + i] += Minv[i, j] * load
+    D = 1j * W * np.eye(2 * N) - A
     if np.linalg.cond(D) > 1e12 or np.linalg.cond(V) > 1e12:
         ok = False
-        Xhat = np.zeros(2 * N, dtype=np.complex128)
     else:
         Xhat = np.linalg.solve(D, b)
-    return Minv, lam, V, Vinv, Xhat, ok
+    for m in range(2 * N):
+        wmax = max(wmax, abs(lam[m].imag))
+    return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax
 
 
 @njit(cache=True)
 def _coefficients(pm, cfg, t0, q0, v0):
     """c = V⁻¹(X₀ − X_p(t₀)): the stuck flight's modal amplitudes from (q0, v0) at t0."""
-    _, _, _, Vinv, Xhat, _ = cfg
+    Vinv, Xhat = cfg[3], cfg[4]
     N = pm.shape[0]
     rot = np.exp(1j * (pm[0, P_W] * t0 + pm[0, P_PHI]))
     X0 = np.empty(2 * N, dtype=np.complex128)
@@ -142,11 +175,12 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v: Eq. F1 per mode
     while no mass sticks, else the stuck structure's closed form (module text)."""
     N = pm.shape[0]
-    if nstuck == 0:
+    if cfg[6]:
+        masses = cfg[7]
         for i in range(N):
-            q[i], v[i] = _state(pm[i], pm[i, P_M], t0, q0[i], v0[i], tau)
+            q[i], v[i] = _state(pm[i], masses[i], t0, q0[i], v0[i], tau)
         return
-    _, lam, V, _, Xhat, _ = cfg
+    lam, V, Xhat = cfg[1], cfg[2], cfg[4]
     c = _coefficients(pm, cfg, t0, q0, v0)
     rot = np.exp(1j * (pm[0, P_W] * (t0 + tau) + pm[0, P_PHI]))
     g = c * np.exp(lam * tau)
@@ -158,19 +192,25 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
 
 @njit(cache=True)
 def _point_accel(pm, cfg, nstuck, phi, t, q, v):
-    """ẍₐ = φᵀq̈ at a point whose shapes are ``phi``: q̈ = M_s⁻¹(F cos θ − Cq̇ − Kq)."""
+    """ẍₐ = φᵀq̈ at a point whose shapes are ``phi``: q̈ = M_s⁻¹(Pcos θ + Qsin θ − Cq̇ − Kq),
+    P = F + K·X_b, Q = −CΩ·X_b per mode (Eq. F1's left side)."""
     N = pm.shape[0]
     a = 0.0
-    if nstuck == 0:
+    if cfg[6]:
+        masses = cfg[7]
         for i in range(N):
-            a += phi[i] * _accel(pm[i], pm[i, P_M], t, q[i], v[i])
+            a += phi[i] * _accel(pm[i], masses[i], t, q[i], v[i])
         return a
     Minv = cfg[0]
-    c = math.cos(pm[0, P_W] * t + pm[0, P_PHI])
+    W = pm[0, P_W]
+    th = W * t + pm[0, P_PHI]
+    c, sn = math.cos(th), math.sin(th)
     for i in range(N):
         g = 0.0
         for j in range(N):
-            g += Minv[i, j] * (pm[j, P_F0] * c - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
+            P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
+            Q = -pm[j, P_C] * W * pm[j, P_XB]
+            g += Minv[i, j] * (P * c + Q * sn - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
         a += phi[i] * g
     return a
 
@@ -180,37 +220,31 @@ def _point_jerk(pm, cfg, nstuck, phi, t, q, v):
     """d³xₐ/dt³ = φᵀ d³q/dt³."""
     N = pm.shape[0]
     a = 0.0
-    if nstuck == 0:
+    if cfg[6]:
+        masses = cfg[7]
         for i in range(N):
-            a += phi[i] * _jerk(pm[i], pm[i, P_M], t, q[i], v[i])
+            a += phi[i] * _jerk(pm[i], masses[i], t, q[i], v[i])
         return a
     Minv = cfg[0]
     W = pm[0, P_W]
     th = W * t + pm[0, P_PHI]
+    c, sn = math.cos(th), math.sin(th)
     acc = np.empty(N)
     for i in range(N):
         g = 0.0
         for j in range(N):
-            g += Minv[i, j] * (pm[j, P_F0] * math.cos(th) - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
+            P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
+            Q = -pm[j, P_C] * W * pm[j, P_XB]
+            g += Minv[i, j] * (P * c + Q * sn - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
         acc[i] = g
     for i in range(N):
         g = 0.0
         for j in range(N):
-            g += Minv[i, j] * (-pm[j, P_F0] * W * math.sin(th) - pm[j, P_C] * acc[j]
-                               - pm[j, P_K] * v[j])  # fmt: skip
+            P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
+            Q = -pm[j, P_C] * W * pm[j, P_XB]
+            g += Minv[i, j] * (W * (Q * c - P * sn) - pm[j, P_C] * acc[j] - pm[j, P_K] * v[j])
         a += phi[i] * g
     return a
-
-
-@njit(cache=True)
-def _omega_max(pm):
-    """The largest of Ω and the free modes' damped frequencies [rad/s] (the stuck structure's
-    are lower: they interlace below the free ones, Step 15 item 5): it sets the steps."""
-    w = pm[0, P_W]
-    for i in range(pm.shape[0]):
-        M, K, C = pm[i, P_M], pm[i, P_K], pm[i, P_C]
-        w = max(w, math.sqrt(max(K / M - C * C / (4 * M * M), 0.0)), math.sqrt(K / M))
-    return w
 
 
 @njit(cache=True)
@@ -221,15 +255,16 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T):
     W = pm[0, P_W]
     A = np.zeros(K)
     B = np.zeros(K)
-    if nstuck == 0:
+    if cfg[6]:
+        masses = cfg[7]
         for i in range(N):
-            Ai = _accel_bound(pm[i], pm[i, P_M], t0, q0[i], v0[i], T)
-            wn = math.sqrt(pm[i, P_K] / pm[i, P_M])
+            Ai = _accel_bound(pm[i], masses[i], t0, q0[i], v0[i], T)
+            wn = math.sqrt(pm[i, P_K] / masses[i])
             for k in range(K):
                 A[k] += abs(Phi[k, i]) * Ai
                 B[k] += abs(Phi[k, i]) * 2.0 * Ai * max(W, wn) ** 2
         return A, B
-    _, lam, V, _, Xhat, _ = cfg
+    lam, V, Xhat = cfg[1], cfg[2], cfg[4]
     c = _coefficients(pm, cfg, t0, q0, v0)
     for k in range(K):
         for m in range(2 * N):
@@ -255,7 +290,7 @@ def _held_off(pm, cfg, nstuck, phi, t0, q0, v0, side, T, A, B):
     :func:`symimpact.forced._rigid._held_off` with the point's acceleration g = side·ẍₐ, A ≥ |ẍₐ|
     and B ≥ |g''|."""
     N = pm.shape[0]
-    period = 2.0 * math.pi / _omega_max(pm)
+    period = 2.0 * math.pi / cfg[8]
     span = min(T, period)
     q = np.empty(N)
     v = np.empty(N)
@@ -328,7 +363,9 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
     clearance, that damper and its wall (±1); (T, −1, 0) when there is none, or (τ so far, −1, 0)
     when a signal is seen on ``watch``.  ``side0[k]``: the wall damper k starts on (0: none)."""
     N, K = pm.shape[0], Phi.shape[0]
-    hmax = 2.0 * math.pi / _omega_max(pm) / 16.0
+    if nstuck == K:  # every mass rides on its point: nothing to meet
+        return T, -1, 0
+    hmax = 2.0 * math.pi / cfg[8] / 16.0
     A, B = _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T)
     hmin = 1e-6 * hmax
     tau_safe = np.zeros(K)
@@ -341,7 +378,11 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             for i in range(N):
                 xd += Phi[k, i] * v0[i]
             fd0 = side0[k] * (u0[k] - xd)
-            if fd0 <= 0.0:
+            # a plastic impact leaves the two at one speed to rounding: a positive rate of a few
+            # units in the last place of the speeds is that rounding, not an approach (taken as
+            # one, the search met the wall again within picoseconds, below the clearance's ulp)
+            if fd0 <= 8e-16 * (abs(u0[k]) + abs(xd)):
+                fd0 = min(fd0, 0.0)
                 tau_safe[k] = max(-2.0 * fd0 / A[k], _held_off(pm, cfg, nstuck, Phi[k], t0, q0,
                                   v0, side0[k], T, A[k], B[k]))  # fmt: skip
     q = np.empty(N)
@@ -400,7 +441,7 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch):
     """(τ, damper): the first τ in (0, T] where a stuck damper's sₖ·ẍₐ turns positive (its wall
     would pull), or (T, −1) (or the τ reached when a signal is seen on ``watch``)."""
     N, K = pm.shape[0], Phi.shape[0]
-    step = 2.0 * math.pi / _omega_max(pm) / 64.0
+    step = 2.0 * math.pi / cfg[8] / 64.0
     q = np.empty(N)
     v = np.empty(N)
     fa = np.empty(K)
@@ -455,29 +496,44 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
     """Account for the flight [t0, t0 + τ]: the work of the modal forces and the dissipation of
     the Cᵢ (ledger[0], ledger[1], Gauss–Legendre as in the one-mode engine) and, for every output
     point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period crossed
-    (``period_max[k, p]``), at the sub-intervals' ends and at the zeros of ẋₚ inside them."""
+    (``period_max[k, p]``), at the sub-intervals' ends and at the zeros of ẋₚ inside them.  A zero
+    is located only where the extreme could raise the period's maximum: within a sub-interval of
+    length h, abs(xₚ) ≤ max(abs(xₚ(a)), abs(xₚ(b))) + Aₚh²/8 (Aₚ ≥ abs(ẍₚ), as the impact search
+    bounds it), and a smaller bound cannot (with several modes, ẋₚ ripples at the highest mode's
+    frequency and most of its zeros are such)."""
     N, P = pm.shape[0], Pout.shape[0]
+    Ap = _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau)[0]
     W = pm[0, P_W]
     T_f = 2.0 * math.pi / W
-    hq = 2.0 * math.pi / _omega_max(pm) / 16.0
+    hq = 2.0 * math.pi / cfg[8] / 16.0
     n = max(1, int(math.ceil(tau / hq)))  # noqa: RUF046 (int() spelled out for numba)
     hs = tau / n
     q = np.empty(N)
     v = np.empty(N)
     v_prev = np.empty(P)
+    x_prev = np.empty(P)
     for p in range(P):
         v_prev[p] = 0.0
+        x_prev[p] = 0.0
         for i in range(N):
             v_prev[p] += Pout[p, i] * v0[i]
+            x_prev[p] += Pout[p, i] * q0[i]
     for j in range(n):
         a = j * hs
         for g in range(8):
             s = a + 0.5 * hs * (1.0 + _GL_X[g])
             _states(pm, cfg, nstuck, t0, q0, v0, s, q, v)
-            c = math.cos(W * (t0 + s) + pm[0, P_PHI])
+            th = W * (t0 + s) + pm[0, P_PHI]
+            c, sn = math.cos(th), math.sin(th)
             for i in range(N):
-                ledger[0] += 0.5 * hs * _GL_W[g] * pm[i, P_F0] * c * v[i]
-                ledger[1] += 0.5 * hs * _GL_W[g] * pm[i, P_C] * v[i] * v[i]
+                # the one-mode engine's power with each mode's base amplitude Γᵢ·X_b
+                xb, vb = pm[i, P_XB] * c, -pm[i, P_XB] * W * sn
+                rel = v[i] - vb
+                power_in = (
+                    pm[i, P_F0] * c * v[i] - (pm[i, P_K] * (q[i] - xb) + pm[i, P_C] * rel) * vb
+                )
+                ledger[0] += 0.5 * hs * _GL_W[g] * power_in
+                ledger[1] += 0.5 * hs * _GL_W[g] * pm[i, P_C] * rel * rel
         b = (j + 1) * hs
         _states(pm, cfg, nstuck, t0, q0, v0, b, q, v)
         k = int(math.floor((t0 + b) / T_f))  # noqa: RUF046 (int() spelled out for numba)
@@ -488,6 +544,15 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                 vb += Pout[p, i] * v[i]
             if k < n_periods:
                 period_max[k, p] = max(period_max[k, p], abs(xb))
+            ka = min(int(math.floor((t0 + a) / T_f)), n_periods)  # noqa: RUF046
+            top = max(abs(x_prev[p]), abs(xb)) + Ap[p] * hs * hs / 8.0
+            low = period_max[ka, p]
+            if k < n_periods:
+                low = min(low, period_max[k, p])
+            x_prev[p] = xb
+            if top <= low:
+                v_prev[p] = vb
+                continue
             if (v_prev[p] > 0.0) != (vb > 0.0) and v_prev[p] != 0.0:
                 lo, hi, flo, fhi = a, b, v_prev[p], vb
                 kept = 0
@@ -532,9 +597,10 @@ def _impulse(pm, cfg, nstuck, phi, m, e, u, v):
     xd, inv = 0.0, 0.0
     for i in range(N):
         xd += phi[i] * v[i]
-    if nstuck == 0:
+    if cfg[6]:
+        masses = cfg[7]
         for i in range(N):
-            inv += phi[i] * phi[i] / pm[i, P_M]
+            inv += phi[i] * phi[i] / masses[i]
     else:
         Minv = cfg[0]
         for i in range(N):
@@ -542,9 +608,10 @@ def _impulse(pm, cfg, nstuck, phi, m, e, u, v):
                 inv += phi[i] * Minv[i, j] * phi[j]
     mu = m / (1.0 + m * inv)
     P = (1.0 + e) * mu * (u - xd)
-    if nstuck == 0:
+    if cfg[6]:
+        masses = cfg[7]
         for i in range(N):
-            v[i] += phi[i] * P / pm[i, P_M]
+            v[i] += phi[i] * P / masses[i]
     else:
         Minv = cfg[0]
         dv = np.zeros(N)
@@ -574,10 +641,11 @@ def _dot(phi, v):
 
 
 @njit(cache=True)
-def run(pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, max_events, watch):
+def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events, watch):
     """Simulate the structure (modes: rows of ``pm``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi[k]`` at their points, masses ``md``,
-    half clearances ``hd``, restitution ``ed``; chatter taken to its accumulation point when it
+    half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
+    Step 13's e(v), Eq. F5, which tends to 1 at low speed, so chatter never accumulates); chatter taken to its accumulation point when it
     would end within ``chat`` forcing periods) from modal state (q0, v0) and the masses' (y0, u0)
     at t = 0 to t_end.
 
@@ -656,7 +724,7 @@ def run(pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, max_events, watc
         z[k] = s * hd[k]
         xd = _dot(Phi[k], v)
         vrel = s * (u[k] - xd)  # approach speed, ≥ 0
-        e = restitution(ed[k], 0.0, vrel)
+        e = restitution(ed[k], vyd[k], vrel)
         v_before = v.copy()
         let_go = np.zeros(K, dtype=np.int64)
         while True:  # a stuck mass its wall would have to pull during the impulse is let go
@@ -691,7 +759,7 @@ def run(pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, max_events, watc
         # --- chatter: would the sequence accumulate (Step 9's test at the point)? ---
         a = -s * _point_accel(pm, cfg, nstuck, Phi[k], t, q, v)
         w = e * vrel
-        if a > 0.0 and e < 1.0:
+        if a > 0.0 and e < 1.0 and vyd[k] <= 0.0:
             delta = 2.0 * w / (a * (1.0 - e))
             if delta <= chat * T_f and t + delta < t_end:
                 # jump to the accumulation point (the other masses fly on), close plastically
@@ -737,3 +805,42 @@ def run(pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, max_events, watc
         final[1 + 2 * N + 2 * K + k] = stuck[k]
     final[1 + 2 * N + K : 1 + 2 * N + 2 * K] = u
     return status, events, n_ev, period_max, ledger, final
+
+
+@njit(cache=True)
+def one_mode_run(p, state0, t_end, max_events, watch):
+    """The paper's primary through :func:`run`: one mode of mass M and shape 1 (parameters
+    ``p`` in :mod:`symimpact.forced._rigid`'s layout), one damper, from state0 = (x, ẋ, y, ẏ).
+
+    Returns (status, events, n_events, period_max, ledger, final) in the one-mode layout: events
+    with :mod:`symimpact.forced._rigid`'s ten columns, the largest abs(x) of every period,
+    final = (t, x, ẋ, y, ẏ, 1.0 if it ended stuck)."""
+    pm = p.reshape((1, p.shape[0])).copy()
+    one = np.ones((1, 1))
+    status, events, n_ev, period_max, ledger, final = run(
+        pm, one, np.array([p[P_m]]), np.array([p[P_h]]), np.array([p[P_e]]),
+        np.array([p[P_VY]]), p[P_CHAT], state0[0:1].copy(), state0[1:2].copy(),
+        state0[2:3].copy(), state0[3:4].copy(), one, t_end, max_events, watch,
+    )  # fmt: skip
+    out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
+    if final[5] != 0.0:
+        out[5] = 1.0
+    return status, events[:, :N_EVENT_COLS].copy(), n_ev, period_max[:, 0].copy(), ledger, out
+
+
+def _forget_stale_compilations() -> None:
+    """This module's cached code, dropped when it, the one-mode flight functions it calls, the
+    forced-flight kernels or the stepper's secant changed (numba's cache does not follow a
+    callee into another module)."""
+    from pathlib import Path
+
+    from ..free import _stepper
+    from ..generated import forced_flight
+    from . import _rigid
+
+    sources = [Path(__file__), Path(_rigid.__file__), Path(forced_flight.__file__),
+               Path(_stepper.__file__)]  # fmt: skip
+    _stepper.forget_stale_compilations(run, sources, ("_modal.",))
+
+
+_forget_stale_compilations()

@@ -1,8 +1,14 @@
-"""Compiled event-driven simulation of the forced primary with rigid impacts (numba, cached).
+"""The one-mode pieces of the rigid-impact engine (numba, cached): Step 8's forced flight of one
+mode (``symimpact.generated.forced_flight``, Eq. F1), its acceleration and its bound, the search
+for a wall crossing of one mass, the Gauss–Legendre energy ledger of a flight, the impact's
+restitution (Step 9, Eq. F2; Step 13's e(v), Eq. F5), the flights' transition matrices for the
+shooting chain, and the parameter layout of one mode.  No ODE is integrated.
 
-Between events everything is closed form: the primary follows Step 8's forced free flight
-(``symimpact.generated.forced_flight``, Eq. F1), the impact mass flies at constant speed, and an
-impact applies Step 9's law (Eq. F2).  No ODE is integrated.
+The engine itself, which composes these mode by mode for a structure of several modes and
+dampers, with chatter and sticking, is :mod:`symimpact.forced._modal`; the paper's primary is its
+case of one mode of shape 1 and one damper (:func:`symimpact.forced._modal.one_mode_run`).  The
+compliant engine (:mod:`symimpact.forced._compliant`) uses the same flight and search between
+its contacts.
 
 *Finding the next impact without sampling gaps.*  On [τa, τb] the relative displacement
 z = y − x has |z''| = |ẍ| ≤ A, where A bounds the primary's acceleration over the flight: the
@@ -15,20 +21,9 @@ the root at τ = 0, nor while the primary's acceleration is certified to point a
 (``_held_off``); a flight that leaves while the primary still accelerates back is searched from
 2w/A on, so a slow return to that wall is found.
 
-*Chatter.*  When the impact mass keeps returning to the same wall (relative acceleration a > 0
-towards it) with a separation speed w so small that the sequence would accumulate within
-Δ = 2w/(a(1 − e)) (the sum of the geometric series of flight times for constant a), the run jumps
-to the accumulation point t∞ = t + Δ, where the masses move together (momentum conserved; the
-kinetic energy of the relative motion is the impacts' loss), and a *sticking phase* follows: one
-mass M + m under the same forcing, while the wall's force on the impact mass stays compressive
-(s·ẍ ≤ 0 on the wall s = ±1).  The release is located where s·ẍ turns positive.
-
 *Energy ledger.*  The work of the forcing and the dissipation of C are integrated over every
 segment by 8-point Gauss–Legendre quadrature on sub-intervals of at most 1/16 of the shorter of
 the forcing and natural periods (smooth integrands: error far below 1e-12 of the energies).
-
-This module is private: :mod:`symimpact.forced.simulation` validates the input and builds the
-result.
 """
 
 from __future__ import annotations
@@ -38,7 +33,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .._interrupt import EVERY, INTERRUPTED, stop_requested
+from .._interrupt import EVERY, stop_requested
 from ..free._stepper import secant_point
 from ..generated import forced_flight as _fl
 from ..generated import hertz_contact as _hz
@@ -326,49 +321,6 @@ def _next_impact(p, t0, x0, v0, z0, u0, side0, T, watch):
 
 
 @njit(cache=True)
-def _release(p, t0, x0, v0, side, T, watch):
-    """τ in (0, T] where the stuck pair's s·ẍ first turns positive (the wall would pull), or T
-    (or the τ reached when a signal is seen on ``watch``)."""
-    mass = p[P_M] + p[P_m]
-    K, C, W = p[P_K], p[P_C], p[P_W]
-    wd = math.sqrt(K / mass - C * C / (4 * mass * mass))
-    step = 2.0 * math.pi / max(wd, W) / 64.0
-    tau, fa = 0.0, -1.0
-    looks = 0
-    while tau < T:
-        looks += 1
-        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
-            return tau
-        tb = min(tau + step, T)
-        x, v = _state(p, mass, t0, x0, v0, tb)
-        fb = side * _accel(p, mass, t0 + tb, x, v)
-        if fb > 0.0:
-            lo, hi, flo, fhi = tau, tb, fa, fb
-            if tau == 0.0:
-                flo = min(side * _accel(p, mass, t0, x0, v0), -1e-300)
-            kept = 0
-            for _ in range(200):
-                tm = secant_point(lo, hi, flo, fhi)
-                x, v = _state(p, mass, t0, x0, v0, tm)
-                fm = side * _accel(p, mass, t0 + tm, x, v)
-                if fm > 0.0:
-                    hi, fhi = tm, fm
-                    if kept == 1:
-                        flo *= 0.5
-                    kept = 1
-                else:
-                    lo, flo = tm, fm
-                    if kept == -1:
-                        fhi *= 0.5
-                    kept = -1
-                if hi - lo <= 4e-16 * (t0 + hi):
-                    break
-            return hi
-        tau, fa = tb, fb
-    return T
-
-
-@njit(cache=True)
 def _segment(p, mass, t0, x0, v0, tau, ledger, period_max, n_periods):
     """Account for the segment [t0, t0 + τ] of the primary (moving mass ``mass``): the work of
     the forcing and the dissipation of C (ledger[0], ledger[1]) and the largest abs(x) of every
@@ -427,130 +379,6 @@ def _segment(p, mass, t0, x0, v0, tau, ledger, period_max, n_periods):
 
 
 @njit(cache=True)
-def run(p, state0, t_end, max_events, watch):
-    """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end (or until a signal is seen on
-    ``watch``: status INTERRUPTED, see :mod:`symimpact._interrupt`).
-
-    Returns (status, events, n_events, period_max, ledger, final state): the event log
-    (columns E_*), the largest abs(x) in every forcing period, ledger = (work of the forcing,
-    dissipation by C, loss in impacts), final = (t, x, ẋ, y, ẏ, 1.0 if it ended stuck).
-    """
-    M, m, h, e = p[P_M], p[P_m], p[P_h], p[P_e]
-    T_f = 2.0 * math.pi / p[P_W]
-    # t_end is a whole number of periods; floor(t_end / T_f) alone gives one less for about 8 %
-    # of the counts (n·T/T rounds below n)
-    n_periods = int(math.floor(t_end / T_f + 0.5))  # noqa: RUF046 (int() spelled out for numba)
-    period_max = np.zeros(n_periods + 1)
-    ledger = np.zeros(3)
-    events = np.zeros((64, N_EVENT_COLS))
-    n_ev = 0
-    t, x, v, y, u = 0.0, state0[0], state0[1], state0[2], state0[3]
-    z = y - x
-    side0 = 0
-    if abs(z) >= h:
-        side0 = 1 if z > 0 else -1
-        z = side0 * h
-    status = OK
-    stuck = 0.0  # 1.0: the run ended inside a sticking phase
-    looks = 0
-    while t < t_end:
-        if n_ev + 2 > max_events:
-            status = TOO_MANY_EVENTS
-            break
-        looks += 1
-        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
-            status = INTERRUPTED
-            break
-        # --- free flight to the next impact ---
-        tau, side = _next_impact(p, t, x, v, z, u, side0, t_end - t, watch)
-        _segment(p, M, t, x, v, tau, ledger, period_max, n_periods)
-        xn, vn = _state(p, M, t, x, v, tau)
-        t_new = t + tau
-        if side == 0:
-            t, x, v, z = t_new, xn, vn, z + u * tau - (xn - x)
-            if watch[2] != 0:
-                status = INTERRUPTED
-            break
-        s = float(side)
-        t, x = t_new, xn
-        z = s * h
-        vrel = s * (u - vn)  # approach speed, ≥ 0
-        e = restitution(p[P_e], p[P_VY], vrel)
-        mu = M * m / (M + m)
-        v_after = vn + (1.0 + e) * mu / M * (u - vn)
-        u_after = u - (1.0 + e) * mu / m * (u - vn)
-        lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
-        ledger[2] += lost
-        events = _grow(events, n_ev)
-        ev = events[n_ev]
-        ev[E_T], ev[E_X], ev[E_XD], ev[E_YD], ev[E_SIDE] = t, x, vn, u, s
-        ev[E_VREL], ev[E_LOST], ev[E_KIND], ev[E_XD1], ev[E_YD1] = (
-            vrel,
-            lost,
-            KIND_IMPACT,
-            v_after,
-            u_after,
-        )
-        n_ev += 1
-        v, u = v_after, u_after
-        side0 = side
-        # --- chatter: does the sequence accumulate? ---
-        a = -s * _accel(p, M, t, x, v)  # relative acceleration towards the wall s
-        w = e * vrel  # separation speed
-        if a > 0.0 and e < 1.0 and p[P_VY] <= 0.0:  # e(v) → 1 as v → 0: no accumulation
-            delta = 2.0 * w / (a * (1.0 - e))
-            if delta <= p[P_CHAT] * T_f and t + delta < t_end:
-                # jump to the accumulation point; the pair moves on together
-                _segment(p, M, t, x, v, delta, ledger, period_max, n_periods)
-                xj, vj = _state(p, M, t, x, v, delta)
-                t = t + delta
-                vc = (M * vj + m * u) / (M + m)
-                lost = 0.5 * M * vj * vj + 0.5 * m * u * u - 0.5 * (M + m) * vc * vc
-                ledger[2] += lost
-                events = _grow(events, n_ev)
-                ev = events[n_ev]
-                ev[E_T], ev[E_X], ev[E_XD], ev[E_YD], ev[E_SIDE] = t, xj, vj, u, s
-                ev[E_VREL], ev[E_LOST], ev[E_KIND], ev[E_XD1], ev[E_YD1] = (
-                    s * (u - vj),
-                    lost,
-                    KIND_ACCUMULATION,
-                    vc,
-                    vc,
-                )
-                n_ev += 1
-                x, v, u = xj, vc, vc
-            elif w == 0.0 or delta == 0.0:
-                pass  # plastic impact: stuck from here
-            else:
-                continue
-            # --- sticking phase ---
-            if t >= t_end:
-                break
-            tau = _release(p, t, x, v, s, t_end - t, watch)
-            _segment(p, M + m, t, x, v, tau, ledger, period_max, n_periods)
-            x, v = _state(p, M + m, t, x, v, tau)
-            t = t + tau
-            u = v
-            z = s * h
-            if t >= t_end:
-                stuck = 1.0
-            else:
-                events = _grow(events, n_ev)
-                ev = events[n_ev]
-                ev[E_T], ev[E_X], ev[E_XD], ev[E_YD], ev[E_SIDE] = t, x, v, u, s
-                ev[E_VREL], ev[E_LOST], ev[E_KIND], ev[E_XD1], ev[E_YD1] = (
-                    0.0,
-                    0.0,
-                    KIND_RELEASE,
-                    v,
-                    u,
-                )
-                n_ev += 1
-    final = np.array([t, x, v, x + z, u, stuck])
-    return status, events, n_ev, period_max, ledger, final
-
-
-@njit(cache=True)
 def _grow(a, n):
     """``a`` if it has a row ``n``, else a copy with twice the rows."""
     if n < a.shape[0]:
@@ -566,7 +394,7 @@ def _forget_stale_compilations() -> None:
 
     from ..free._stepper import forget_stale_compilations
 
-    forget_stale_compilations(run, [Path(__file__), Path(_fl.__file__)], ("_rigid.",))
+    forget_stale_compilations(_next_impact, [Path(__file__), Path(_fl.__file__)], ("_rigid.",))
 
 
 _forget_stale_compilations()

@@ -1,8 +1,9 @@
 """Forced response with rigid impacts: :func:`simulate_forced`, and the steady state it reaches.
 
-The simulation is event driven and closed form between events (:mod:`symimpact.forced._rigid`:
-Step 8's forced flight, Eq. F1; Step 9's impact law, Eq. F2), with chatter taken to its
-accumulation point and sticking phases.  The steady state is read over the kept forcing periods:
+The simulation is event driven and closed form between events (Step 8's forced flight, Eq. F1;
+Step 9's impact law, Eq. F2), with chatter taken to its accumulation point and sticking phases:
+the engine of a structure of several modes and dampers (:mod:`symimpact.forced._modal`) run with
+one mode of shape 1 and one damper, the primary of the paper.  The steady state is read over the kept forcing periods:
 the amplitude max abs(x), the impacts per period, and the period of the motion from the Poincaré
 section at t = k·T (the state once per forcing period).
 """
@@ -22,7 +23,7 @@ from ..free import _stepper
 from ..model.checks import bounded, instance, whole_number
 from ..model.system import ImpactSystem
 from ..model.units import nonnegative_float, si_float
-from . import _compliant, _rigid
+from . import _compliant, _modal, _rigid
 from .contact_law import COMPLIANT, MaterialRestitution, restitution_parameters
 from .forcing import Forcing
 
@@ -317,8 +318,9 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
     work = 0
     if contact == "rigid":
         status, events, n_ev, period_max, ledger, final = _interrupt.call(
-            _rigid.run, p, np.array(state), t_end, max_contacts or MAX_EVENTS
-        )
+            _modal.one_mode_run, p, np.array(state, dtype=float), t_end,
+            max_contacts or MAX_EVENTS,
+        )  # fmt: skip
     else:
         status, events, period_max, ledger, final, samples, psi, work = _compliant.run(
             contact,

@@ -6,9 +6,15 @@ point; an impact of damper k applies Step 15's law at its point (Eq. F7: the imp
 (1 + e)·μ·ż enters each mode through φᵢ(aₖ)).  The compiled engine is
 :mod:`symimpact.forced._modal`, which composes the one-mode engine's flight functions mode by mode;
 with one mode of shape 1 it repeats :func:`symimpact.forced.simulate_forced` (the tests hold it to
-it).  Rigid impacts of two dampers never fall at the same instant in this engine: the earlier of
-two located crossings is applied first, and the later one is searched for again from there (a
-tie within the crossings' 4e-16 of the time goes to the damper listed first).
+it).  Chatter is taken to its accumulation point, and the mass then sticks on its point, the
+structure carrying it, until its wall would pull it (Step 15, item 5).
+
+*Impacts at the same instant.*  Two dampers that reach their walls at the same instant are
+resolved one after the other, in the order they are listed: the first's impact changes the
+point's velocity, and the second's is then found at the same instant (to the search's 4e-16 of
+the time) with the velocity the first left.  Each impact loses ½μ(1 − e²)ż² at its own approach
+speed, so the pair loses what two impacts in a row lose, not what one impact of their summed
+mass would; the energy ledger closes either way.
 """
 
 from __future__ import annotations
@@ -162,7 +168,21 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
                                         f"of the highest mode; at most "
                                         f"{budgets.MAX_NATURAL_PERIODS:.0e}")  # fmt: skip
     status, events, n_ev, period_max, ledger, final = _interrupt.call(
-        _modal.run, pm, Phi, md, hd, ed, chat, q0, v0, y0, u0, Pout, t_end, budgets.MAX_EVENTS
+        _modal.run,
+        pm,
+        Phi,
+        md,
+        hd,
+        ed,
+        np.zeros(K),
+        chat,
+        q0,
+        v0,
+        y0,
+        u0,
+        Pout,
+        t_end,
+        budgets.MAX_EVENTS,
     )
     events = events[:n_ev]
     if status == _modal.SINGULAR_STUCK:

@@ -1,0 +1,144 @@
+"""A structure of several modes carrying rigid impact dampers (issue 36): the compiled modal engine
+(:func:`symimpact.forced.structure_response.simulate_structure`) by the number of modes, a
+10-mode cantilever with two dampers, and against SciPy's DOP853 with event location on the same
+model at the same impact-time accuracy.
+
+1. Cost per event against N: the steel cantilever of the tests (1 m of 40 mm × 10 mm, ζ 0.02)
+   reduced to its first N Ritz modes (N = 1 … 8, the beams' kernels), dampers of 50 g (10 mm) at
+   the tip and of 30 g (3 mm) at mid-span, e 0.6, 2 N at 8 Hz at the tip, 200 periods.  Each
+   mode's flight costs the same, and the search and the energy ledger step at a fraction of the
+   highest mode's period, which a beam's ωₙ ∝ n² shortens: about N³ a forcing period.  The
+   exponent printed is the slope of log(cost per event) against log N.
+2. The issue's case: a 10-mode cantilever (a Hermite finite-element model of 20 elements, written
+   here, reduced by :func:`symimpact.model.structure.fe_structure`) with the same two dampers:
+   a 400-period forced run (target ≤ 1 s).
+3. The baseline: DOP853 (rtol 1e-13, events at every wall) on the two-mode system of the tests'
+   comparison (ζ 0.05, one 50 g damper of 10 mm, e 0.5, 2 N at 8 Hz, 60 periods): both computed
+   in this run, the impact times' largest relative difference printed beside the ratio (target
+   ≥ 100).
+
+Medians of five with their spread; asserts nothing.  Run from the checkout:
+python -m benchmarks.structure
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from symimpact.forced.structure_response import simulate_structure
+from symimpact.model.dampers import dampers
+from symimpact.model.structure import beam_structure, fe_structure
+
+from .timing import timed
+
+BEAM = {"support": "cantilever", "E": 210e9, "I": 0.04 * 0.01**3 / 12, "rho": 7850.0,
+        "A": 4e-4, "L": 1.0}  # fmt: skip
+TWO = [{"name": "tip", "at": "tip", "m": 0.05, "gap": "10 mm", "e": 0.6},
+       {"name": "mid", "at": "mid", "m": 0.03, "gap": "3 mm", "e": 0.6}]  # fmt: skip
+OMEGA = 2 * math.pi * 8.0
+
+
+def _hermite_cantilever(n_el: int = 20):
+    """(M, K) of the cantilever in Hermite cubic elements (consistent mass), clamped at x = 0,
+    DOFs (w, θ) per free node: the tip's deflection is DOF 2·n_el − 2, mid-span's n_el − 2."""
+    E, I, rho, A, L = (BEAM[k] for k in ("E", "I", "rho", "A", "L"))
+    h = L / n_el
+    k = E * I / h**3 * np.array([[12, 6 * h, -12, 6 * h], [6 * h, 4 * h * h, -6 * h, 2 * h * h],
+                                 [-12, -6 * h, 12, -6 * h], [6 * h, 2 * h * h, -6 * h, 4 * h * h]])  # fmt: skip
+    m = rho * A * h / 420 * np.array([[156, 22 * h, 54, -13 * h], [22 * h, 4 * h * h, 13 * h, -3 * h * h],
+                                      [54, 13 * h, 156, -22 * h], [-13 * h, -3 * h * h, -22 * h, 4 * h * h]])  # fmt: skip
+    n = 2 * (n_el + 1)
+    K, M = np.zeros((n, n)), np.zeros((n, n))
+    for e in range(n_el):
+        s = slice(2 * e, 2 * e + 4)
+        K[s, s] += k
+        M[s, s] += m
+    return M[2:, 2:], K[2:, 2:]
+
+
+def _dop853_impacts(s, ds, F0, omega, t_end):
+    """Impact times by DOP853 with event location on the modal equations (the tests' reference,
+    restated: rtol 1e-13, the impact as an impulse reversing the relative velocity by e)."""
+    modes = s.modes
+    N, K = len(modes), len(ds)
+    M = np.array([m.mass for m in modes])
+    w = np.array([m.omega for m in modes])
+    z = np.array([m.zeta for m in modes])
+    F = F0 * np.array([m.shape["tip"] for m in modes])
+    Phi = s.shapes([d.at for d in ds])
+    h = np.array([d.gap / 2 for d in ds])
+
+    def rhs(t, y):
+        a = F * math.cos(omega * t) / M - 2 * z * w * y[N : 2 * N] - w * w * y[:N]
+        return np.concatenate([y[N : 2 * N], a, y[2 * N + K :], np.zeros(K)])
+
+    events = []
+    for k in range(K):
+        for side in (1.0, -1.0):
+
+            def ev(t, y, k=k, side=side):
+                return side * (y[2 * N + k] - Phi[k] @ y[:N]) - h[k]
+
+            ev.terminal, ev.direction = True, 1.0
+            events.append((k, ev))
+    y, t, times = np.zeros(2 * N + 2 * K), 0.0, []
+    while t < t_end:
+        sol = solve_ivp(rhs, (t, t_end), y, method="DOP853", rtol=1e-13, atol=1e-16,
+                        events=[e[1] for e in events])  # fmt: skip
+        hit = [(te[0], i) for i, te in enumerate(sol.t_events) if len(te)]
+        if not hit:
+            break
+        t, i = min(hit)
+        k = events[i][0]
+        y = sol.y_events[i][0].copy()
+        P = (
+            (1 + ds[k].e)
+            * (y[2 * N + K + k] - Phi[k] @ y[N : 2 * N])
+            / (1 / ds[k].m + np.sum(Phi[k] ** 2 / M))
+        )
+        y[N : 2 * N] += Phi[k] * P / M
+        y[2 * N + K + k] -= P / ds[k].m
+        times.append(t)
+    return np.array(times)
+
+
+def main() -> None:
+    print("1. cost per event against the number of modes (cantilever, dampers at tip and "
+          "mid-span, 2 N at 8 Hz, 200 periods)")  # fmt: skip
+    costs = []
+    for n in (1, 2, 3, 4, 6, 8):
+        s = beam_structure(**BEAM, points={"tip": 1.0, "mid": 0.5}, modes=n, zeta=0.02)
+        ds = dampers(s, TWO)
+        simulate_structure(s, ds, "tip", 2.0, OMEGA, periods=2)  # compiled before timing
+        run = timed(lambda s=s, ds=ds: simulate_structure(s, ds, "tip", 2.0, OMEGA, periods=200))
+        events = len(run.out.events)
+        per = run.median / max(events, 1)
+        costs.append((n, per))
+        print(f"  N = {n}: {run.s()}, {events} events, {per * 1e6:.1f} µs an event "
+              f"(× {per / costs[0][1]:.1f} of N = 1)")  # fmt: skip
+    ns, cs = np.log([c[0] for c in costs]), np.log([c[1] for c in costs])
+    print(f"  growth: cost per event ∝ N^{np.polyfit(ns, cs, 1)[0]:.2f} over N = 1 … 8")
+    M, K = _hermite_cantilever()
+    s = fe_structure(M, K, {"tip": M.shape[0] - 2, "mid": M.shape[0] // 2 - 1}, modes=10,
+                     zeta=0.02)  # fmt: skip
+    ds = dampers(s, TWO)
+    simulate_structure(s, ds, "tip", 2.0, OMEGA, periods=2)
+    run = timed(lambda: simulate_structure(s, ds, "tip", 2.0, OMEGA, periods=400))
+    print(f"2. a 10-mode cantilever (20 Hermite elements), 2 rigid dampers, 400 periods: "
+          f"{run.s()}, {len(run.out.events)} events  (target <= 1 s)")  # fmt: skip
+    s = beam_structure(**BEAM, points={"tip": 1.0, "mid": 0.5}, modes=2, zeta=0.05)
+    ds = dampers(s, [{"name": "tip", "at": "tip", "m": 0.05, "gap": "10 mm", "e": 0.5}])
+    engine = timed(lambda: simulate_structure(s, ds, "tip", 2.0, OMEGA, periods=60))
+    ref = timed(lambda: _dop853_impacts(s, ds, 2.0, OMEGA, engine.out.t_end))
+    got = engine.out.impacts("tip")
+    diff = np.max(np.abs(got - ref.out) / ref.out) if len(got) == len(ref.out) else math.nan
+    print(f"3. two modes, one damper, 60 periods ({len(got)} impacts): engine {engine.s()}; "
+          f"DOP853 with events (rtol 1e-13) {ref.s()}; impact times agree to {diff:.1e}")  # fmt: skip
+    print(f"  ratio DOP853 / engine: {ref.median / engine.median:.0f}  (target >= 100)")
+
+
+if __name__ == "__main__":
+    main()
