@@ -76,11 +76,10 @@ from ._rigid import (
     P_e,
     P_h,
     P_m,
-    _accel,
     _accel_bound,
     _grow,
-    _jerk,
-    _state,
+    _vf,
+    _xf,
     restitution,
 )
 
@@ -93,6 +92,39 @@ N_MODAL_EVENT_COLS = N_EVENT_COLS + 1
 
 
 # --- the flight: free modes (Eq. F1 each), or the stuck structure's closed form -----------------
+
+
+@njit(cache=True, inline="always")
+def _mode_state(pm, i, mass, t0, x0, v0, tau):
+    """Mode i's (qᵢ, q̇ᵢ) a time τ after (x0, v0) at t0 with moving mass ``mass``: Eq. F1, as
+    :func:`symimpact.forced._rigid._state` on row i of ``pm`` (read in place: a row taken as an
+    array costs a reference count in the engine's innermost loops)."""
+    W = pm[i, P_W]
+    th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
+    K, C, F0, Xb = pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB]
+    return (_xf(tau, mass, K, C, F0, Xb, W, th, x0, v0),
+            _vf(tau, mass, K, C, F0, Xb, W, th, x0, v0))  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def _mode_accel(pm, i, mass, t, x, v):
+    """Mode i's q̈ᵢ (:func:`symimpact.forced._rigid._accel` on row i of ``pm``)."""
+    W, K, C = pm[i, P_W], pm[i, P_K], pm[i, P_C]
+    th = W * t + pm[i, P_PHI]
+    P = pm[i, P_F0] + K * pm[i, P_XB]
+    Q = -C * W * pm[i, P_XB]
+    return (P * math.cos(th) + Q * math.sin(th) - C * v - K * x) / mass
+
+
+@njit(cache=True)
+def _mode_jerk(pm, i, mass, t, x, v):
+    """Mode i's d³qᵢ/dt³ (:func:`symimpact.forced._rigid._jerk` on row i of ``pm``)."""
+    W, K, C = pm[i, P_W], pm[i, P_K], pm[i, P_C]
+    th = W * t + pm[i, P_PHI]
+    P = pm[i, P_F0] + K * pm[i, P_XB]
+    Q = -C * W * pm[i, P_XB]
+    a = _mode_accel(pm, i, mass, t, x, v)
+    return (W * (Q * math.cos(th) - P * math.sin(th)) - C * a - K * v) / mass
 
 
 @njit(cache=True)
@@ -170,7 +202,7 @@ def _coefficients(pm, cfg, t0, q0, v0):
     return Vinv @ X0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v: Eq. F1 per mode
     while no mass sticks, else the stuck structure's closed form (module text)."""
@@ -178,7 +210,7 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     if cfg[6]:
         masses = cfg[7]
         for i in range(N):
-            q[i], v[i] = _state(pm[i], masses[i], t0, q0[i], v0[i], tau)
+            q[i], v[i] = _mode_state(pm, i, masses[i], t0, q0[i], v0[i], tau)
         return
     lam, V, Xhat = cfg[1], cfg[2], cfg[4]
     c = _coefficients(pm, cfg, t0, q0, v0)
@@ -190,16 +222,16 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
         v[i] = X[N + i].real + (Xhat[N + i] * rot).real
 
 
-@njit(cache=True)
-def _point_accel(pm, cfg, nstuck, phi, t, q, v):
-    """ẍₐ = φᵀq̈ at a point whose shapes are ``phi``: q̈ = M_s⁻¹(Pcos θ + Qsin θ − Cq̇ − Kq),
+@njit(cache=True, inline="always")
+def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v):
+    """ẍₐ = φᵀq̈ at the point of row ``row`` of ``Phi`` (its shapes): q̈ = M_s⁻¹(Pcos θ + Qsin θ − Cq̇ − Kq),
     P = F + K·X_b, Q = −CΩ·X_b per mode (Eq. F1's left side)."""
     N = pm.shape[0]
     a = 0.0
     if cfg[6]:
         masses = cfg[7]
         for i in range(N):
-            a += phi[i] * _accel(pm[i], masses[i], t, q[i], v[i])
+            a += Phi[row, i] * _mode_accel(pm, i, masses[i], t, q[i], v[i])
         return a
     Minv = cfg[0]
     W = pm[0, P_W]
@@ -211,19 +243,19 @@ def _point_accel(pm, cfg, nstuck, phi, t, q, v):
             P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
             Q = -pm[j, P_C] * W * pm[j, P_XB]
             g += Minv[i, j] * (P * c + Q * sn - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
-        a += phi[i] * g
+        a += Phi[row, i] * g
     return a
 
 
 @njit(cache=True)
-def _point_jerk(pm, cfg, nstuck, phi, t, q, v):
+def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v):
     """d³xₐ/dt³ = φᵀ d³q/dt³."""
     N = pm.shape[0]
     a = 0.0
     if cfg[6]:
         masses = cfg[7]
         for i in range(N):
-            a += phi[i] * _jerk(pm[i], masses[i], t, q[i], v[i])
+            a += Phi[row, i] * _mode_jerk(pm, i, masses[i], t, q[i], v[i])
         return a
     Minv = cfg[0]
     W = pm[0, P_W]
@@ -243,18 +275,18 @@ def _point_jerk(pm, cfg, nstuck, phi, t, q, v):
             P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
             Q = -pm[j, P_C] * W * pm[j, P_XB]
             g += Minv[i, j] * (W * (Q * c - P * sn) - pm[j, P_C] * acc[j] - pm[j, P_K] * v[j])
-        a += phi[i] * g
+        a += Phi[row, i] * g
     return a
 
 
 @njit(cache=True)
-def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T):
+def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B):
     """(A, B): for every damper's point, A ≥ |ẍₐ| and B ≥ |d⁴xₐ/dt⁴| over [t0, t0 + T] of the
-    flight (module text)."""
+    flight (module text), written into A and B."""
     N, K = pm.shape[0], Phi.shape[0]
     W = pm[0, P_W]
-    A = np.zeros(K)
-    B = np.zeros(K)
+    A[:] = 0.0
+    B[:] = 0.0
     if cfg[6]:
         masses = cfg[7]
         for i in range(N):
@@ -285,30 +317,27 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T):
 
 
 @njit(cache=True)
-def _held_off(pm, cfg, nstuck, phi, t0, q0, v0, side, T, A, B):
-    """A τ up to which the wall ``side`` the damper at ``phi`` just left cannot be reached:
-    :func:`symimpact.forced._rigid._held_off` with the point's acceleration g = side·ẍₐ, A ≥ |ẍₐ|
-    and B ≥ |g''|."""
-    N = pm.shape[0]
+def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v):
+    """A τ up to which the wall ``side`` the damper of row ``row`` of ``Phi`` just left cannot be
+    reached: :func:`symimpact.forced._rigid._held_off` with the point's acceleration
+    g = side·ẍₐ, A ≥ |ẍₐ| and B ≥ |g''| (q, v: scratch)."""
     period = 2.0 * math.pi / cfg[8]
     span = min(T, period)
-    q = np.empty(N)
-    v = np.empty(N)
-    ga = side * _point_accel(pm, cfg, nstuck, phi, t0, q0, v0)
+    ga = side * _point_accel(pm, cfg, nstuck, Phi, row, t0, q0, v0)
     if ga < -1e-12 * A:
         return 0.0
     ga = max(ga, 0.0)
-    g1 = side * _point_jerk(pm, cfg, nstuck, phi, t0, q0, v0)
+    g1 = side * _point_jerk(pm, cfg, nstuck, Phi, row, t0, q0, v0)
     tau = min((g1 + math.sqrt(g1 * g1 + 2.0 * B * ga)) / B, span)
     if tau > 0.0:
         _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v)
-        ga = side * _point_accel(pm, cfg, nstuck, phi, t0 + tau, q, v)
+        ga = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tau, q, v)
     H = period / 64.0
     while tau < span:
         H = min(H, span - tau)
         tb = tau + H
         _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
-        gb = side * _point_accel(pm, cfg, nstuck, phi, t0 + tb, q, v)
+        gb = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tb, q, v)
         if gb >= 0.0 and min(ga, gb) - B * H * H / 8.0 >= 0.0:
             tau, ga = tb, gb
             H = min(2.0 * H, period / 64.0)
@@ -319,18 +348,18 @@ def _held_off(pm, cfg, nstuck, phi, t0, q0, v0, side, T, A, B):
     return tau
 
 
-@njit(cache=True)
-def _z(pm, cfg, nstuck, phi, t0, q0, v0, z0, u0, tau, q, v):
+@njit(cache=True, inline="always")
+def _z(pm, cfg, nstuck, Phi, row, t0, q0, v0, z0, u0, tau, q, v):
     """z = y − xₐ a time τ into the flight: z0 + u0·τ − Σφᵢ(qᵢ(τ) − qᵢ0)."""
     _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v)
     dx = 0.0
     for i in range(pm.shape[0]):
-        dx += phi[i] * (q[i] - q0[i])
+        dx += Phi[row, i] * (q[i] - q0[i])
     return z0 + u0 * tau - dx
 
 
 @njit(cache=True)
-def _refine(pm, cfg, nstuck, phi, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v):
+def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v):
     """The first τ in (lo, hi] where s·z reaches h (z(lo) = za inside, z(hi) = zb beyond), by
     Illinois regula falsi to 4e-16 of the time."""
     flo = min(s * za - h, 0.0)
@@ -341,7 +370,7 @@ def _refine(pm, cfg, nstuck, phi, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v
         tm = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
         if not (lo < tm < hi):
             tm = 0.5 * (lo + hi)
-        fm = s * _z(pm, cfg, nstuck, phi, t0, q0, v0, z0, u0, tm, q, v) - h
+        fm = s * _z(pm, cfg, nstuck, Phi, row, t0, q0, v0, z0, u0, tm, q, v) - h
         if fm >= 0.0:
             hi, fhi = tm, fm
             if kept == 1:
@@ -358,7 +387,7 @@ def _refine(pm, cfg, nstuck, phi, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v
 
 
 @njit(cache=True)
-def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch):
+def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch, work):
     """(τ, damper, side): the first τ in (0, T] at which a free damper's abs(z) reaches its half
     clearance, that damper and its wall (±1); (T, −1, 0) when there is none, or (τ so far, −1, 0)
     when a signal is seen on ``watch``.  ``side0[k]``: the wall damper k starts on (0: none)."""
@@ -366,9 +395,10 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
     if nstuck == K:  # every mass rides on its point: nothing to meet
         return T, -1, 0
     hmax = 2.0 * math.pi / cfg[8] / 16.0
-    A, B = _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T)
+    A, B, tau_safe, q, v, za, zb = work[0], work[1], work[2], work[3], work[4], work[5], work[6]
+    _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B)
     hmin = 1e-6 * hmax
-    tau_safe = np.zeros(K)
+    tau_safe[:] = 0.0
     for k in range(K):
         if stuck[k] != 0:
             continue
@@ -383,12 +413,10 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             # one, the search met the wall again within picoseconds, below the clearance's ulp)
             if fd0 <= 8e-16 * (abs(u0[k]) + abs(xd)):
                 fd0 = min(fd0, 0.0)
-                tau_safe[k] = max(-2.0 * fd0 / A[k], _held_off(pm, cfg, nstuck, Phi[k], t0, q0,
-                                  v0, side0[k], T, A[k], B[k]))  # fmt: skip
-    q = np.empty(N)
-    v = np.empty(N)
-    za = z0.copy()
-    zb = z0.copy()
+                tau_safe[k] = max(-2.0 * fd0 / A[k], _held_off(pm, cfg, nstuck, Phi, k, t0, q0,
+                                  v0, side0[k], T, A[k], B[k], work[7], work[8]))  # fmt: skip
+    za[:] = z0
+    zb[:] = z0
     tau = 0.0
     H = hmax
     looks = 0
@@ -424,7 +452,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
         for k in range(K):
             if stuck[k] == 0 and abs(zb[k]) >= hd[k]:
                 s = 1.0 if zb[k] > 0 else -1.0
-                tk = _refine(pm, cfg, nstuck, Phi[k], hd[k], t0, q0, v0, z0[k], u0[k], s, tau,
+                tk = _refine(pm, cfg, nstuck, Phi, k, hd[k], t0, q0, v0, z0[k], u0[k], s, tau,
                              tb, za[k], zb[k], q, v)  # fmt: skip
                 if which < 0 or tk < first:
                     first, which, wall = tk, k, int(s)
@@ -437,18 +465,16 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
 
 
 @njit(cache=True)
-def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch):
+def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work):
     """(τ, damper): the first τ in (0, T] where a stuck damper's sₖ·ẍₐ turns positive (its wall
     would pull), or (T, −1) (or the τ reached when a signal is seen on ``watch``)."""
-    N, K = pm.shape[0], Phi.shape[0]
+    K = Phi.shape[0]
     step = 2.0 * math.pi / cfg[8] / 64.0
-    q = np.empty(N)
-    v = np.empty(N)
-    fa = np.empty(K)
+    q, v, fa = work[3], work[4], work[9]
     for k in range(K):
         fa[k] = -1.0
         if stuck[k] != 0:
-            fa[k] = min(stuck[k] * _point_accel(pm, cfg, nstuck, Phi[k], t0, q0, v0), -1e-300)
+            fa[k] = min(stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0, q0, v0), -1e-300)
     tau = 0.0
     looks = 0
     while tau < T:
@@ -461,14 +487,14 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch):
         for k in range(K):
             if stuck[k] == 0:
                 continue
-            fb = stuck[k] * _point_accel(pm, cfg, nstuck, Phi[k], t0 + tb, q, v)
+            fb = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tb, q, v)
             if fb > 0.0:
                 lo, hi, flo, fhi = tau, tb, fa[k], fb
                 kept = 0
                 for _ in range(200):
                     tm = secant_point(lo, hi, flo, fhi)
                     _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
-                    fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi[k], t0 + tm, q, v)
+                    fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tm, q, v)
                     if fm > 0.0:
                         hi, fhi = tm, fm
                         if kept == 1:
@@ -492,7 +518,7 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch):
 
 
 @njit(cache=True)
-def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods):
+def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work):
     """Account for the flight [t0, t0 + τ]: the work of the modal forces and the dissipation of
     the Cᵢ (ledger[0], ledger[1], Gauss–Legendre as in the one-mode engine) and, for every output
     point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period crossed
@@ -502,16 +528,14 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
     bounds it), and a smaller bound cannot (with several modes, ẋₚ ripples at the highest mode's
     frequency and most of its zeros are such)."""
     N, P = pm.shape[0], Pout.shape[0]
-    Ap = _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau)[0]
+    Ap, Bp, v_prev, x_prev = work[10], work[11], work[12], work[13]
+    _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp)
     W = pm[0, P_W]
     T_f = 2.0 * math.pi / W
     hq = 2.0 * math.pi / cfg[8] / 16.0
     n = max(1, int(math.ceil(tau / hq)))  # noqa: RUF046 (int() spelled out for numba)
     hs = tau / n
-    q = np.empty(N)
-    v = np.empty(N)
-    v_prev = np.empty(P)
-    x_prev = np.empty(P)
+    q, v = work[3], work[4]
     for p in range(P):
         v_prev[p] = 0.0
         x_prev[p] = 0.0
@@ -588,36 +612,36 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
 
 
 @njit(cache=True)
-def _impulse(pm, cfg, nstuck, phi, m, e, u, v):
-    """Step 15's impact (Eq. F7) of a mass m with speed u on the point of shapes ``phi``, the
+def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v):
+    """Step 15's impact (Eq. F7) of a mass m with speed u on the point of shapes ``Phi[row]``, the
     structure's velocities ``v`` (changed in place): returns (P, μ), P the impulse on the
     structure (P/m leaves the mass).  While masses stick, the structure's mass matrix is the
     stuck one: 1/m_eff = φᵀM_s⁻¹φ and q̇ += M_s⁻¹φP."""
     N = pm.shape[0]
     xd, inv = 0.0, 0.0
     for i in range(N):
-        xd += phi[i] * v[i]
+        xd += Phi[row, i] * v[i]
     if cfg[6]:
         masses = cfg[7]
         for i in range(N):
-            inv += phi[i] * phi[i] / masses[i]
+            inv += Phi[row, i] * Phi[row, i] / masses[i]
     else:
         Minv = cfg[0]
         for i in range(N):
             for j in range(N):
-                inv += phi[i] * Minv[i, j] * phi[j]
+                inv += Phi[row, i] * Minv[i, j] * Phi[row, j]
     mu = m / (1.0 + m * inv)
     P = (1.0 + e) * mu * (u - xd)
     if cfg[6]:
         masses = cfg[7]
         for i in range(N):
-            v[i] += phi[i] * P / masses[i]
+            v[i] += Phi[row, i] * P / masses[i]
     else:
         Minv = cfg[0]
         dv = np.zeros(N)
         for i in range(N):
             for j in range(N):
-                dv[i] += Minv[i, j] * phi[j] * P
+                dv[i] += Minv[i, j] * Phi[row, j] * P
         v += dv
     return P, mu
 
@@ -632,18 +656,18 @@ def _log(events, n_ev, t, x, xd, yd, s, vrel, lost, kind, xd1, yd1, k):
     return events, n_ev + 1
 
 
-@njit(cache=True)
-def _dot(phi, v):
+@njit(cache=True, inline="always")
+def _dot(Phi, row, v):
     out = 0.0
-    for i in range(phi.shape[0]):
-        out += phi[i] * v[i]
+    for i in range(Phi.shape[1]):
+        out += Phi[row, i] * v[i]
     return out
 
 
 @njit(cache=True)
 def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events, watch):
     """Simulate the structure (modes: rows of ``pm``, the one-mode parameter layout of
-    :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi[k]`` at their points, masses ``md``,
+    :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
     Step 13's e(v), Eq. F5, which tends to 1 at low speed, so chatter never accumulates); chatter taken to its accumulation point when it
     would end within ``chat`` forcing periods) from modal state (q0, v0) and the masses' (y0, u0)
@@ -671,8 +695,18 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
     stuck = np.zeros(K, dtype=np.int64)
     nstuck = 0
     cfg = _config(pm, Phi, md, stuck)
+    P = Pout.shape[0]
+    # scratch for the searches and the ledger, allocated once: bounds A, B and the held-off
+    # times of the dampers; two state buffers; z at the grid's ends; two more state buffers;
+    # the release search's last values; the output points' bounds, last velocities and
+    # displacements
+    work = (np.empty(K), np.empty(K), np.empty(K), np.empty(N), np.empty(N), np.empty(K),
+            np.empty(K), np.empty(N), np.empty(N), np.empty(K), np.empty(P), np.empty(P),
+            np.empty(P), np.empty(P))  # fmt: skip
+    v_before = np.empty(N)
+    let_go = np.zeros(K, dtype=np.int64)
     for k in range(K):
-        z[k] = y0[k] - _dot(Phi[k], q)
+        z[k] = y0[k] - _dot(Phi, k, q)
         if abs(z[k]) >= hd[k]:
             side0[k] = 1 if z[k] > 0 else -1
             z[k] = side0[k] * hd[k]
@@ -689,16 +723,16 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
         T = t_end - t
         kr = -1
         if nstuck > 0:
-            T, kr = _release(pm, cfg, nstuck, stuck, Phi, t, q, v, T, watch)
+            T, kr = _release(pm, cfg, nstuck, stuck, Phi, t, q, v, T, watch, work)
         tau, k, side = _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t, q, v, z, u, side0, T,
-                                    watch)  # fmt: skip
-        _segment(pm, cfg, nstuck, Pout, t, q, v, tau, ledger, period_max, n_periods)
+                                    watch, work)  # fmt: skip
+        _segment(pm, cfg, nstuck, Pout, t, q, v, tau, ledger, period_max, n_periods, work)
         _states(pm, cfg, nstuck, t, q, v, tau, qn, vn)
         for j in range(K):
             if stuck[j] == 0:
-                z[j] = z[j] + u[j] * tau - _dot(Phi[j], qn) + _dot(Phi[j], q)
+                z[j] = z[j] + u[j] * tau - _dot(Phi, j, qn) + _dot(Phi, j, q)
             else:
-                u[j] = _dot(Phi[j], vn)
+                u[j] = _dot(Phi, j, vn)
         t = t + tau
         q[:] = qn
         v[:] = vn
@@ -711,8 +745,8 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
             for j in range(K):
                 side0[j] = 0
             side0[kr] = int(s)
-            xd = _dot(Phi[kr], v)
-            events, n_ev = _log(events, n_ev, t, _dot(Phi[kr], q), xd, u[kr], s, 0.0, 0.0,
+            xd = _dot(Phi, kr, v)
+            events, n_ev = _log(events, n_ev, t, _dot(Phi, kr, q), xd, u[kr], s, 0.0, 0.0,
                                 KIND_RELEASE, xd, u[kr], kr)  # fmt: skip
             continue
         if k < 0:
@@ -722,17 +756,17 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
         # --- Step 15's impact (F7) of damper k on its wall s ---
         s = float(side)
         z[k] = s * hd[k]
-        xd = _dot(Phi[k], v)
+        xd = _dot(Phi, k, v)
         vrel = s * (u[k] - xd)  # approach speed, ≥ 0
         e = restitution(ed[k], vyd[k], vrel)
-        v_before = v.copy()
-        let_go = np.zeros(K, dtype=np.int64)
+        v_before[:] = v
+        let_go[:] = 0
         while True:  # a stuck mass its wall would have to pull during the impulse is let go
             v[:] = v_before
-            P, mu = _impulse(pm, cfg, nstuck, Phi[k], md[k], e, u[k], v)
+            P, mu = _impulse(pm, cfg, nstuck, Phi, k, md[k], e, u[k], v)
             pulled = -1
             for j in range(K):
-                if stuck[j] != 0 and stuck[j] * (_dot(Phi[j], v) - _dot(Phi[j], v_before)) > 0.0:
+                if stuck[j] != 0 and stuck[j] * (_dot(Phi, j, v) - _dot(Phi, j, v_before)) > 0.0:
                     pulled = j
                     break
             if pulled < 0:
@@ -741,48 +775,48 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
             stuck[pulled] = 0
             nstuck -= 1
             cfg = _config(pm, Phi, md, stuck)
-            events, n_ev = _log(events, n_ev, t, _dot(Phi[pulled], q), u[pulled], u[pulled],
+            events, n_ev = _log(events, n_ev, t, _dot(Phi, pulled, q), u[pulled], u[pulled],
                                 float(let_go[pulled]), 0.0, 0.0, KIND_RELEASE, u[pulled],
                                 u[pulled], pulled)  # fmt: skip
         u_before = u[k]
         u[k] -= P / md[k]
         for j in range(K):
             if stuck[j] != 0:
-                u[j] = _dot(Phi[j], v)
+                u[j] = _dot(Phi, j, v)
         lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
         ledger[2] += lost
-        events, n_ev = _log(events, n_ev, t, _dot(Phi[k], q), xd, u_before, s, vrel, lost,
-                            KIND_IMPACT, _dot(Phi[k], v), u[k], k)  # fmt: skip
+        events, n_ev = _log(events, n_ev, t, _dot(Phi, k, q), xd, u_before, s, vrel, lost,
+                            KIND_IMPACT, _dot(Phi, k, v), u[k], k)  # fmt: skip
         for j in range(K):
             side0[j] = let_go[j]  # the masses just let go leave their walls
         side0[k] = side
         # --- chatter: would the sequence accumulate (Step 9's test at the point)? ---
-        a = -s * _point_accel(pm, cfg, nstuck, Phi[k], t, q, v)
+        a = -s * _point_accel(pm, cfg, nstuck, Phi, k, t, q, v)
         w = e * vrel
         if a > 0.0 and e < 1.0 and vyd[k] <= 0.0:
             delta = 2.0 * w / (a * (1.0 - e))
             if delta <= chat * T_f and t + delta < t_end:
                 # jump to the accumulation point (the other masses fly on), close plastically
-                _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods)
+                _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods, work)
                 _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
                 for j in range(K):
                     if stuck[j] == 0 and j != k:
-                        z[j] = z[j] + u[j] * delta - _dot(Phi[j], qn) + _dot(Phi[j], q)
+                        z[j] = z[j] + u[j] * delta - _dot(Phi, j, qn) + _dot(Phi, j, q)
                     elif stuck[j] != 0:
-                        u[j] = _dot(Phi[j], vn)
+                        u[j] = _dot(Phi, j, vn)
                 t = t + delta
                 q[:] = qn
                 v[:] = vn
-                xd = _dot(Phi[k], v)
-                P, mu = _impulse(pm, cfg, nstuck, Phi[k], md[k], 0.0, u[k], v)
+                xd = _dot(Phi, k, v)
+                P, mu = _impulse(pm, cfg, nstuck, Phi, k, md[k], 0.0, u[k], v)
                 lost = 0.5 * mu * (u[k] - xd) ** 2
                 ledger[2] += lost
                 u_before = u[k]
-                u[k] = _dot(Phi[k], v)
+                u[k] = _dot(Phi, k, v)
                 for j in range(K):
                     if stuck[j] != 0:
-                        u[j] = _dot(Phi[j], v)
-                events, n_ev = _log(events, n_ev, t, _dot(Phi[k], q), xd, u_before, s,
+                        u[j] = _dot(Phi, j, v)
+                events, n_ev = _log(events, n_ev, t, _dot(Phi, k, q), xd, u_before, s,
                                     s * (u_before - xd), lost, KIND_ACCUMULATION, u[k], u[k],
                                     k)  # fmt: skip
             elif w != 0.0 and delta != 0.0:
@@ -794,14 +828,14 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
             if not cfg[5]:
                 status = SINGULAR_STUCK
                 break
-            u[k] = _dot(Phi[k], v)
+            u[k] = _dot(Phi, k, v)
             z[k] = s * hd[k]
     final = np.empty(1 + 2 * N + 3 * K)
     final[0] = t
     final[1 : 1 + N] = q
     final[1 + N : 1 + 2 * N] = v
     for k in range(K):
-        final[1 + 2 * N + k] = _dot(Phi[k], q) + z[k]
+        final[1 + 2 * N + k] = _dot(Phi, k, q) + z[k]
         final[1 + 2 * N + 2 * K + k] = stuck[k]
     final[1 + 2 * N + K : 1 + 2 * N + 2 * K] = u
     return status, events, n_ev, period_max, ledger, final
