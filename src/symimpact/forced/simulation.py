@@ -3,9 +3,9 @@
 The simulation is event driven and closed form between events (Step 8's forced flight, Eq. F1;
 Step 9's impact law, Eq. F2), with chatter taken to its accumulation point and sticking phases:
 the engine of a structure of several modes and dampers (:mod:`symimpact.forced._modal`) run with
-one mode of shape 1 and one damper, the primary of the paper.  The steady state is read over the kept forcing periods:
-the amplitude max abs(x), the impacts per period, and the period of the motion from the Poincaré
-section at t = k·T (the state once per forcing period).
+one mode of shape 1 and one damper, the primary of the paper.  The steady state is read over the
+kept forcing periods: the amplitude max abs(x), the impacts per period, and the period of the
+motion from the Poincaré section at t = k·T (the state once per forcing period).
 """
 
 from __future__ import annotations

@@ -4,9 +4,9 @@ impacts: :func:`simulate_structure`.
 Each mode flies by Step 8's closed form (Eq. F1) under its modal force Fᵢ = F₀·φᵢ(f), f the driven
 point; an impact of damper k applies Step 15's law at its point (Eq. F7: the impulse
 (1 + e)·μ·ż enters each mode through φᵢ(aₖ)).  The compiled engine is
-:mod:`symimpact.forced._modal`, which composes the one-mode engine's flight functions mode by mode;
-with one mode of shape 1 it repeats :func:`symimpact.forced.simulate_forced` (the tests hold it to
-it).  Chatter is taken to its accumulation point, and the mass then sticks on its point, the
+:mod:`symimpact.forced._modal`, which composes the one-mode flight functions mode by mode; the
+paper's primary is its case of one mode of shape 1 and one damper, which
+:func:`symimpact.forced.simulate_forced` runs.  Chatter is taken to its accumulation point, and the mass then sticks on its point, the
 structure carrying it, until its wall would pull it (Step 15, item 5).
 
 *Impacts at the same instant.*  Two dampers that reach their walls at the same instant are
@@ -49,7 +49,8 @@ class StructureResult:
     F0: float
     omega: float
     t_end: float
-    #: (n, 11): columns :data:`EVENT_COLUMNS`, one row per impact
+    #: (n, 11): columns :data:`EVENT_COLUMNS`, one row per impact, accumulation point or release
+    #: (column "kind": 0, 1, 2)
     events: np.ndarray
     #: the output points (the structure's, in its order)
     points: tuple[str, ...]
@@ -61,8 +62,9 @@ class StructureResult:
     notes: list[str] = field(default_factory=list)
 
     def impacts(self, damper: str) -> np.ndarray:
-        """The times of damper ``damper``'s impacts [s] (the impacts it resolved and, for each chatter
-        sequence, its accumulation point, as :attr:`~symimpact.forced.ForcedResult.impacts`)."""
+        """The times of damper ``damper``'s impacts [s]: the impacts it resolved and, for each
+        chatter sequence, its accumulation point (as :attr:`~symimpact.forced.ForcedResult.
+        impacts`)."""
         names = [d.name for d in self.dampers]
         if damper not in names:
             raise ParameterError("damper", f"no damper {damper!r} (the dampers: "
@@ -75,7 +77,7 @@ class StructureResult:
     def amplitudes(self, discard: Any = 0.5) -> dict[str, float]:
         """Every point's largest abs(x) over the periods kept after the first ``discard`` share
         [m]."""
-        share = float(discard)
+        share = si_float("discard", discard)
         if not 0.0 <= share < 1.0:
             raise ParameterError("discard", f"must be a share in [0, 1), got {discard!r}")
         n = self.period_max.shape[0]
