@@ -223,9 +223,24 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
 
 
 @njit(cache=True, inline="always")
+def _stuck_acceleration(pm, Minv, t, q, v, i):
+    """q̈ᵢ of the stuck structure: row i of M_s⁻¹(Pcos θ + Qsin θ − Cq̇ − Kq), P = F + K·X_b,
+    Q = −CΩ·X_b per mode (Eq. F1's left side with the stuck mass matrix)."""
+    W = pm[0, P_W]
+    th = W * t + pm[0, P_PHI]
+    c, sn = math.cos(th), math.sin(th)
+    g = 0.0
+    for j in range(pm.shape[0]):
+        P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
+        Q = -pm[j, P_C] * W * pm[j, P_XB]
+        g += Minv[i, j] * (P * c + Q * sn - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
+    return g
+
+
+@njit(cache=True, inline="always")
 def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v):
-    """ẍₐ = φᵀq̈ at the point of row ``row`` of ``Phi`` (its shapes): q̈ = M_s⁻¹(Pcos θ + Qsin θ − Cq̇ − Kq),
-    P = F + K·X_b, Q = −CΩ·X_b per mode (Eq. F1's left side)."""
+    """ẍₐ = φᵀq̈ at the point of row ``row`` of ``Phi`` (its shapes): each mode's Eq. F1 while
+    the modes are uncoupled, else the stuck structure's (:func:`_stuck_acceleration`)."""
     N = pm.shape[0]
     a = 0.0
     if cfg[6]:
@@ -233,17 +248,8 @@ def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v):
         for i in range(N):
             a += Phi[row, i] * _mode_accel(pm, i, masses[i], t, q[i], v[i])
         return a
-    Minv = cfg[0]
-    W = pm[0, P_W]
-    th = W * t + pm[0, P_PHI]
-    c, sn = math.cos(th), math.sin(th)
     for i in range(N):
-        g = 0.0
-        for j in range(N):
-            P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
-            Q = -pm[j, P_C] * W * pm[j, P_XB]
-            g += Minv[i, j] * (P * c + Q * sn - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
-        a += Phi[row, i] * g
+        a += Phi[row, i] * _stuck_acceleration(pm, cfg[0], t, q, v, i)
     return a
 
 
@@ -263,12 +269,7 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v):
     c, sn = math.cos(th), math.sin(th)
     acc = np.empty(N)
     for i in range(N):
-        g = 0.0
-        for j in range(N):
-            P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
-            Q = -pm[j, P_C] * W * pm[j, P_XB]
-            g += Minv[i, j] * (P * c + Q * sn - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
-        acc[i] = g
+        acc[i] = _stuck_acceleration(pm, Minv, t, q, v, i)
     for i in range(N):
         g = 0.0
         for j in range(N):
