@@ -130,9 +130,11 @@ def _mode_jerk(pm, i, mass, t, x, v):
 @njit(cache=True)
 def _config(pm, Phi, md, stuck):
     """The structure with the dampers of ``stuck[k] != 0`` riding on it: (M_s⁻¹, Λ, V, V⁻¹, X̂,
-    ok, decoupled, masses, ω_max).  ``decoupled``: M_s is diagonal (no mass sticks, or one mode
+    ok, decoupled, pm_s, ω_max).  ``pm_s``: ``pm`` with column P_M holding M_s's diagonal, the
+    parameters every other function of the engine reads (an array of its own would cost a
+    reference count wherever the innermost loops take it out of the tuple).  ``decoupled``: M_s is diagonal (no mass sticks, or one mode
     alone moves each stuck point: one mode with φ = 1 is Step 9's sticking, one mass M + m), and
-    the modes fly by Eq. F1 with the masses ``masses`` (M_s's diagonal); otherwise by the
+    the modes fly by Eq. F1 with those masses; otherwise by the
     eigen-decomposition (module text).  ω_max: the largest of Ω and the structure's damped
     frequencies, which sets the searches' steps."""
     N = pm.shape[0]
@@ -145,14 +147,19 @@ def _config(pm, Phi, md, stuck):
             for i in range(N):
                 for j in range(N):
                     Ms[i, j] += md[k] * Phi[k, i] * Phi[k, j]
-    masses = np.empty(N)
+    masses = pm.copy()
     decoupled = True
     for i in range(N):
-        masses[i] = Ms[i, i]
+        masses[i, P_M] = Ms[i, i]
         for j in range(N):
             if i != j and Ms[i, j] != 0.0:
                 decoupled = False
-    Minv = np.linalg.inv(Ms)
+    if decoupled:  # no LAPACK call (its threads would spin beside the engine)
+        Minv = np.zeros((N, N))
+        for i in range(N):
+            Minv[i, i] = 1.0 / Ms[i, i]
+    else:
+        Minv = np.linalg.inv(Ms)
     lam = np.zeros(2 * N, dtype=np.complex128)
     V = np.eye(2 * N, dtype=np.complex128)
     Vinv = np.eye(2 * N, dtype=np.complex128)
@@ -161,7 +168,7 @@ def _config(pm, Phi, md, stuck):
     wmax = W
     if decoupled:
         for i in range(N):
-            M, K, C = masses[i], pm[i, P_K], pm[i, P_C]
+            M, K, C = masses[i, P_M], pm[i, P_K], pm[i, P_C]
             wmax = max(wmax, math.sqrt(max(K / M - C * C / (4 * M * M), 0.0)))
         return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax
     A = np.zeros((2 * N, 2 * N), dtype=np.complex128)
@@ -203,14 +210,27 @@ def _coefficients(pm, cfg, t0, q0, v0):
 
 
 @njit(cache=True, inline="always")
+def _free_states(pm, t0, q0, v0, tau, q, v):
+    """Every mode's (qᵢ, q̇ᵢ) by Eq. F1 a time τ after (q0, v0) at t0, written into q and v, while
+    the modes are uncoupled (:func:`_states`; the searches' and the ledger's innermost loops call
+    this one directly: the configuration tuple taken into an inlined function costs a
+    reference count per array at each call)."""
+    for i in range(pm.shape[0]):  # _mode_state written out: an inlined call binds pm again
+        W = pm[i, P_W]
+        th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
+        M, K, C, F0, Xb = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB]
+        q[i] = _xf(tau, M, K, C, F0, Xb, W, th, q0[i], v0[i])
+        v[i] = _vf(tau, M, K, C, F0, Xb, W, th, q0[i], v0[i])
+
+
+@njit(cache=True, inline="always")
 def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v: Eq. F1 per mode
     while no mass sticks, else the stuck structure's closed form (module text)."""
     N = pm.shape[0]
     if cfg[6]:
-        masses = cfg[7]
         for i in range(N):
-            q[i], v[i] = _mode_state(pm, i, masses[i], t0, q0[i], v0[i], tau)
+            q[i], v[i] = _mode_state(pm, i, pm[i, P_M], t0, q0[i], v0[i], tau)
         return
     lam, V, Xhat = cfg[1], cfg[2], cfg[4]
     c = _coefficients(pm, cfg, t0, q0, v0)
@@ -238,17 +258,23 @@ def _stuck_acceleration(pm, Minv, t, q, v, i):
 
 
 @njit(cache=True, inline="always")
+def _free_point_accel(pm, Phi, row, t, q, v):
+    """ẍₐ = φᵀq̈ at the point of row ``row`` of ``Phi`` while the modes are uncoupled: each
+    mode's Eq. F1 (:func:`_point_accel`, without the configuration: see :func:`_free_states`)."""
+    a = 0.0
+    for i in range(pm.shape[0]):
+        a += Phi[row, i] * _mode_accel(pm, i, pm[i, P_M], t, q[i], v[i])
+    return a
+
+
+@njit(cache=True, inline="always")
 def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v):
     """ẍₐ = φᵀq̈ at the point of row ``row`` of ``Phi`` (its shapes): each mode's Eq. F1 while
     the modes are uncoupled, else the stuck structure's (:func:`_stuck_acceleration`)."""
-    N = pm.shape[0]
-    a = 0.0
     if cfg[6]:
-        masses = cfg[7]
-        for i in range(N):
-            a += Phi[row, i] * _mode_accel(pm, i, masses[i], t, q[i], v[i])
-        return a
-    for i in range(N):
+        return _free_point_accel(pm, Phi, row, t, q, v)
+    a = 0.0
+    for i in range(pm.shape[0]):
         a += Phi[row, i] * _stuck_acceleration(pm, cfg[0], t, q, v, i)
     return a
 
@@ -259,9 +285,8 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v):
     N = pm.shape[0]
     a = 0.0
     if cfg[6]:
-        masses = cfg[7]
         for i in range(N):
-            a += Phi[row, i] * _mode_jerk(pm, i, masses[i], t, q[i], v[i])
+            a += Phi[row, i] * _mode_jerk(pm, i, pm[i, P_M], t, q[i], v[i])
         return a
     Minv = cfg[0]
     W = pm[0, P_W]
@@ -289,10 +314,9 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B):
     A[:] = 0.0
     B[:] = 0.0
     if cfg[6]:
-        masses = cfg[7]
         for i in range(N):
-            Ai = _accel_bound(pm[i], masses[i], t0, q0[i], v0[i], T)
-            wn = math.sqrt(pm[i, P_K] / masses[i])
+            Ai = _accel_bound(pm[i], pm[i, P_M], t0, q0[i], v0[i], T)
+            wn = math.sqrt(pm[i, P_K] / pm[i, P_M])
             for k in range(K):
                 A[k] += abs(Phi[k, i]) * Ai
                 B[k] += abs(Phi[k, i]) * 2.0 * Ai * max(W, wn) ** 2
@@ -323,6 +347,7 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v):
     reached: :func:`symimpact.forced._rigid._held_off` with the point's acceleration
     g = side·ẍₐ, A ≥ |ẍₐ| and B ≥ |g''| (q, v: scratch)."""
     period = 2.0 * math.pi / cfg[8]
+    dec = cfg[6]
     span = min(T, period)
     ga = side * _point_accel(pm, cfg, nstuck, Phi, row, t0, q0, v0)
     if ga < -1e-12 * A:
@@ -337,8 +362,12 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v):
     while tau < span:
         H = min(H, span - tau)
         tb = tau + H
-        _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
-        gb = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tb, q, v)
+        if dec:
+            _free_states(pm, t0, q0, v0, tb, q, v)
+            gb = side * _free_point_accel(pm, Phi, row, t0 + tb, q, v)
+        else:
+            _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
+            gb = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tb, q, v)
         if gb >= 0.0 and min(ga, gb) - B * H * H / 8.0 >= 0.0:
             tau, ga = tb, gb
             H = min(2.0 * H, period / 64.0)
@@ -349,20 +378,11 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v):
     return tau
 
 
-@njit(cache=True, inline="always")
-def _z(pm, cfg, nstuck, Phi, row, t0, q0, v0, z0, u0, tau, q, v):
-    """z = y − xₐ a time τ into the flight: z0 + u0·τ − Σφᵢ(qᵢ(τ) − qᵢ0)."""
-    _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v)
-    dx = 0.0
-    for i in range(pm.shape[0]):
-        dx += Phi[row, i] * (q[i] - q0[i])
-    return z0 + u0 * tau - dx
-
-
 @njit(cache=True)
 def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v):
     """The first τ in (lo, hi] where s·z reaches h (z(lo) = za inside, z(hi) = zb beyond), by
     Illinois regula falsi to 4e-16 of the time."""
+    dec = cfg[6]
     flo = min(s * za - h, 0.0)
     fhi = s * zb - h
     kept = 0
@@ -371,7 +391,14 @@ def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb,
         tm = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
         if not (lo < tm < hi):
             tm = 0.5 * (lo + hi)
-        fm = s * _z(pm, cfg, nstuck, Phi, row, t0, q0, v0, z0, u0, tm, q, v) - h
+        if dec:
+            _free_states(pm, t0, q0, v0, tm, q, v)
+        else:
+            _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
+        dx = 0.0
+        for i in range(pm.shape[0]):
+            dx += Phi[row, i] * (q[i] - q0[i])
+        fm = s * (z0 + u0 * tm - dx) - h
         if fm >= 0.0:
             hi, fhi = tm, fm
             if kept == 1:
@@ -396,6 +423,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
     if nstuck == K:  # every mass rides on its point: nothing to meet
         return T, -1, 0
     hmax = 2.0 * math.pi / cfg[8] / 16.0
+    dec = cfg[6]
     A, B, tau_safe, q, v, za, zb = work[0], work[1], work[2], work[3], work[4], work[5], work[6]
     _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B)
     hmin = 1e-6 * hmax
@@ -416,8 +444,9 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
                 fd0 = min(fd0, 0.0)
                 tau_safe[k] = max(-2.0 * fd0 / A[k], _held_off(pm, cfg, nstuck, Phi, k, t0, q0,
                                   v0, side0[k], T, A[k], B[k], work[7], work[8]))  # fmt: skip
-    za[:] = z0
-    zb[:] = z0
+    for k in range(K):
+        za[k] = z0[k]
+        zb[k] = z0[k]
     tau = 0.0
     H = hmax
     looks = 0
@@ -427,7 +456,10 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             return tau, -1, 0
         H = min(H, T - tau)
         tb = tau + H
-        _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
+        if dec:
+            _free_states(pm, t0, q0, v0, tb, q, v)
+        else:
+            _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
         clear = True
         for k in range(K):
             if stuck[k] != 0:
@@ -443,7 +475,8 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
                 clear = False
         if clear:
             tau = tb
-            za[:] = zb
+            for k in range(K):
+                za[k] = zb[k]
             H = min(2.0 * H, hmax)
             continue
         if H > hmin and H > 4e-16 * tb:
@@ -460,7 +493,8 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
         if which >= 0:
             return first, which, wall
         tau = tb  # excursions shorter than hmin: below 1e-20 of the clearances
-        za[:] = zb
+        for k in range(K):
+            za[k] = zb[k]
         H = hmax
     return T, -1, 0
 
@@ -529,6 +563,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
     bounds it), and a smaller bound cannot (with several modes, ẋₚ ripples at the highest mode's
     frequency and most of its zeros are such)."""
     N, P = pm.shape[0], Pout.shape[0]
+    dec = cfg[6]
     Ap, Bp, v_prev, x_prev = work[10], work[11], work[12], work[13]
     _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp)
     W = pm[0, P_W]
@@ -547,7 +582,10 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
         a = j * hs
         for g in range(8):
             s = a + 0.5 * hs * (1.0 + _GL_X[g])
-            _states(pm, cfg, nstuck, t0, q0, v0, s, q, v)
+            if dec:
+                _free_states(pm, t0, q0, v0, s, q, v)
+            else:
+                _states(pm, cfg, nstuck, t0, q0, v0, s, q, v)
             th = W * (t0 + s) + pm[0, P_PHI]
             c, sn = math.cos(th), math.sin(th)
             for i in range(N):
@@ -560,7 +598,10 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                 ledger[0] += 0.5 * hs * _GL_W[g] * power_in
                 ledger[1] += 0.5 * hs * _GL_W[g] * pm[i, P_C] * rel * rel
         b = (j + 1) * hs
-        _states(pm, cfg, nstuck, t0, q0, v0, b, q, v)
+        if dec:
+            _free_states(pm, t0, q0, v0, b, q, v)
+        else:
+            _states(pm, cfg, nstuck, t0, q0, v0, b, q, v)
         k = int(math.floor((t0 + b) / T_f))  # noqa: RUF046 (int() spelled out for numba)
         for p in range(P):
             xb, vb = 0.0, 0.0
@@ -583,7 +624,10 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                 kept = 0
                 for _ in range(100):
                     tm = secant_point(lo, hi, flo, fhi)
-                    _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
+                    if dec:
+                        _free_states(pm, t0, q0, v0, tm, q, v)
+                    else:
+                        _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
                     vm = 0.0
                     for i in range(N):
                         vm += Pout[p, i] * v[i]
@@ -623,9 +667,8 @@ def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v):
     for i in range(N):
         xd += Phi[row, i] * v[i]
     if cfg[6]:
-        masses = cfg[7]
         for i in range(N):
-            inv += Phi[row, i] * Phi[row, i] / masses[i]
+            inv += Phi[row, i] * Phi[row, i] / pm[i, P_M]
     else:
         Minv = cfg[0]
         for i in range(N):
@@ -634,9 +677,8 @@ def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v):
     mu = m / (1.0 + m * inv)
     P = (1.0 + e) * mu * (u - xd)
     if cfg[6]:
-        masses = cfg[7]
         for i in range(N):
-            v[i] += Phi[row, i] * P / masses[i]
+            v[i] += Phi[row, i] * P / pm[i, P_M]
     else:
         Minv = cfg[0]
         dv = np.zeros(N)
@@ -666,8 +708,8 @@ def _dot(Phi, row, v):
 
 
 @njit(cache=True)
-def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events, watch):
-    """Simulate the structure (modes: rows of ``pm``, the one-mode parameter layout of
+def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events, watch):
+    """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
     Step 13's e(v), Eq. F5, which tends to 1 at low speed, so chatter never accumulates); chatter taken to its accumulation point when it
@@ -680,8 +722,8 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
     abs(x) at output point p in forcing period k, ledger = (work of the forces, dissipation,
     loss in impacts), final = (t, q…, q̇…, y…, ẏ…, stuck…).
     """
-    N, K = pm.shape[0], Phi.shape[0]
-    T_f = 2.0 * math.pi / pm[0, P_W]
+    N, K = pm0.shape[0], Phi.shape[0]
+    T_f = 2.0 * math.pi / pm0[0, P_W]
     n_periods = int(math.floor(t_end / T_f + 0.5))  # noqa: RUF046 (int() spelled out for numba)
     period_max = np.zeros((n_periods + 1, Pout.shape[0]))
     ledger = np.zeros(3)
@@ -695,15 +737,15 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
     side0 = np.zeros(K, dtype=np.int64)
     stuck = np.zeros(K, dtype=np.int64)
     nstuck = 0
-    cfg = _config(pm, Phi, md, stuck)
+    cfg = _config(pm0, Phi, md, stuck)
+    pm = cfg[7]
     P = Pout.shape[0]
     # scratch for the searches and the ledger, allocated once: bounds A, B and the held-off
     # times of the dampers; two state buffers; z at the grid's ends; two more state buffers;
     # the release search's last values; the output points' bounds, last velocities and
     # displacements
-    work = (np.empty(K), np.empty(K), np.empty(K), np.empty(N), np.empty(N), np.empty(K),
-            np.empty(K), np.empty(N), np.empty(N), np.empty(K), np.empty(P), np.empty(P),
-            np.empty(P), np.empty(P))  # fmt: skip
+    # (one array, its rows: a tuple of arrays costs a reference count per array at every call)
+    work = np.empty((14, max(N, K, P)))
     v_before = np.empty(N)
     let_go = np.zeros(K, dtype=np.int64)
     for k in range(K):
@@ -742,7 +784,8 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
             s = float(stuck[kr])
             stuck[kr] = 0
             nstuck -= 1
-            cfg = _config(pm, Phi, md, stuck)
+            cfg = _config(pm0, Phi, md, stuck)
+            pm = cfg[7]
             for j in range(K):
                 side0[j] = 0
             side0[kr] = int(s)
@@ -775,7 +818,8 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
             let_go[pulled] = stuck[pulled]
             stuck[pulled] = 0
             nstuck -= 1
-            cfg = _config(pm, Phi, md, stuck)
+            cfg = _config(pm0, Phi, md, stuck)
+            pm = cfg[7]
             events, n_ev = _log(events, n_ev, t, _dot(Phi, pulled, q), u[pulled], u[pulled],
                                 float(let_go[pulled]), 0.0, 0.0, KIND_RELEASE, u[pulled],
                                 u[pulled], pulled)  # fmt: skip
@@ -825,7 +869,8 @@ def run(pm, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events,
             # --- the mass rides on its point from here ---
             stuck[k] = side
             nstuck += 1
-            cfg = _config(pm, Phi, md, stuck)
+            cfg = _config(pm0, Phi, md, stuck)
+            pm = cfg[7]
             if not cfg[5]:
                 status = SINGULAR_STUCK
                 break
