@@ -144,7 +144,12 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
             raise ParameterError(option.replace("_", "-"), why)
     # the system options' --structure (``modes --structure`` only lists a structure: no --at)
     if getattr(ns, "structure", None) is not None and hasattr(ns, "at"):
-        _structure_mode(ns, given)
+        from ..model.structure_model import has_loads
+
+        if has_loads(ns.structure):
+            _structure_model(ns, given)
+        else:
+            _structure_mode(ns, given)
         return
     for option in ("at", "mode"):
         if option in given and hasattr(ns, "at"):
@@ -161,6 +166,39 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
         ns.K = positive_float("M", ns.M, "kg") * w2
     else:
         raise ParameterError("fn", "give the modal mass --M (or the stiffness --K) with --fn")
+
+
+#: The options a structure file with dampers and a force replaces: the primary, the damper, the
+#: contact and the force amplitude.
+_MODEL_GIVES = ("M", "K", "C", "zeta", "fn", "m", "gap", "a", "b", "k_hz", "k1", "c1", "at",
+                "mode", "impactor", "cavity", "impact_speed", "contact", "e", "chi", "F0", "X_b",
+                "V_b", "A_b")  # fmt: skip
+
+
+def _structure_model(ns: argparse.Namespace, given: set[str]) -> None:
+    """--structure with a file that gives dampers and a force: the structure of several modes
+    for :func:`symimpact.forced.structure_response.simulate_structure` (``ns.structure_model``),
+    which ``simulate`` runs; the other commands do not take it yet."""
+    from ..errors import ParameterError
+    from ..model.structure_model import read_model
+
+    if ns.command != "simulate":
+        raise ParameterError("structure", f"{ns.structure} gives dampers and loads: only "
+                             "'simulate' runs a structure of several modes so far; 'periodic', "
+                             "'frf', 'branch' and 'design' take one mode of a structure file "
+                             "without them (with the damper from the options)")  # fmt: skip
+    flags = {"F0": "force", "X_b": "base", "V_b": "base-vel", "A_b": "base-acc"}
+    for option in _MODEL_GIVES:
+        # the forcing options have no default: given is not None
+        if option in given or (option in ("e", "chi", *flags) and getattr(ns, option, None)
+                               is not None):  # fmt: skip
+            raise ParameterError(flags.get(option, option.replace("_", "-")), f"{ns.structure} "
+                                 "gives the structure, its dampers (with their contact) and the "
+                                 "force: leave it out")  # fmt: skip
+    for option in ("x0", "xdot0", "y0", "ydot0"):
+        if option in given:
+            raise ParameterError(option, "a structure's run starts from rest")
+    ns.structure_model = read_model(ns.structure)
 
 
 def _structure_mode(ns: argparse.Namespace, given: set[str]) -> None:

@@ -76,8 +76,14 @@ def _structure(ns) -> None:
     """The structure file's modes at its points (Step 15, Eq. F7) and each point's effective
     mass over them, 1/m_eff = Σ φᵢ(p)²/Mᵢ (Step 15, item 4)."""
     from ..model.structure import read_structure
+    from ..model.structure_model import has_loads, read_model
 
-    s = read_structure(ns.structure)
+    # a file with dampers and a force: its structure (the dampers do not change the modes)
+    s = (
+        read_model(ns.structure).structure
+        if has_loads(ns.structure)
+        else read_structure(ns.structure)
+    )
     points = s.points
     masses = {p: s.effective_mass(p) for p in points}
     out = {"source": s.source, "points": list(points), "modes": [m.as_dict() for m in s.modes],

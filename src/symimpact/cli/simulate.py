@@ -81,6 +81,8 @@ _SAMPLES = 64
 def run(ns) -> None:
     from ..errors import ParameterError
 
+    if getattr(ns, "structure_model", None) is not None:
+        return run_structure(ns)
     if ns.contact in ("rigid", "hunt-crossley") or has_forcing(ns):
         return run_forced(ns)
     for key, flag in _FORCED_ONLY.items():
@@ -214,6 +216,71 @@ def run_forced(ns) -> None:
         out["response"] = {"name": ns.response, "unit": response_unit(ns.response), "value": value}
         text += f"\nsteady {ns.response}: {response_text(ns.response, value)}"
     text += "".join(f"\nnote: {n}" for n in res.notes)
+    emit(ns, out, text)
+
+
+def run_structure(ns) -> None:
+    """The forced response of a structure file's structure of several modes with its dampers and
+    force (Eq. F1 per mode, Step 15's impacts, Eq. F7): each damper's impacts and every point's
+    steady amplitude."""
+    import csv
+
+    from ..errors import ParameterError
+    from ..forced.simulation import period_count
+    from ..forced.structure_response import simulate_structure
+    from ..io import atomic_write
+    from ..model.display import display_unit, omega_text
+
+    for key, flag, why in (
+        ("t_end", "t-end", "a forced run lasts --periods forcing periods"),
+        ("rest", "rest", "applies to free vibration; a forced run never comes to rest"),
+        ("response", "response", "the responses of a structure of several modes are not built "
+                                 "yet: --json gives every point's amplitude"),
+        ("plot", "plot", "a structure's run has no plot yet: --csv gives every point's largest "
+                         "displacement in each period"),
+    ):  # fmt: skip
+        if getattr(ns, key, None) is not None:
+            raise ParameterError(flag, why)
+    if ns.omega is None and ns.freq is None:
+        raise ParameterError("omega", "give the forcing frequency: --omega Ω or --freq f")
+    if ns.omega is not None and ns.freq is not None:
+        raise ParameterError("omega", "give the forcing frequency once: --omega or --freq")
+    from ..forced import Forcing
+
+    model = ns.structure_model
+    forcing = Forcing(F0=model.F0, omega=ns.omega, freq=ns.freq,
+                      phase=0.0 if ns.phase is None else ns.phase)  # fmt: skip
+    periods = period_count("periods", "400" if ns.periods is None else ns.periods)
+    discard = int(0.75 * periods) if ns.discard is None else period_count("discard", ns.discard)
+    if discard >= periods:
+        raise ParameterError("discard", f"must be fewer than --periods ({periods}), got {discard}")
+    res = simulate_structure(model.structure, model.dampers, model.force_at, model.F0,
+                             forcing.omega, periods, forcing.phase)  # fmt: skip
+    amplitudes = res.amplitudes(discard / periods)
+    if ns.csv:
+
+        def write(f):  # SI values, the unit in each header
+            w = csv.writer(f)
+            w.writerow(["period"] + [f"x_max {p} [m]" for p in res.points])
+            w.writerows([[k, *map(float, row)] for k, row in enumerate(res.period_max)])
+
+        atomic_write(ns.csv, write, "csv")
+    text = (
+        f"{res.structure.source} model, {len(res.structure.modes)} modes; force "
+        f"{model.F0:.6g} N at {model.force_at!r}, Ω {omega_text(forcing.omega)}"
+        + ("" if display_unit("omega") == "Hz" else f" ({forcing.freq:.6g} Hz)")
+        + f"; {periods} periods, steady over the last {periods - discard}\n"
+        + "\n".join(f"damper {d.name!r} at {d.at!r}: {len(res.impacts(d.name))} impacts"
+                    for d in res.dampers)
+        + "\n"
+        + "\n".join(f"amplitude at {p!r}: {quantity_text('x', a)}"
+                    for p, a in amplitudes.items())
+        + f"\nenergy residual {res.energy['relative_residual']:.1e}"
+        + "".join(f"\nnote: {n}" for n in res.notes)
+    )  # fmt: skip
+    out = res.as_dict()
+    out["amplitudes"] = amplitudes
+    out["periods"], out["discard"] = periods, discard
     emit(ns, out, text)
 
 

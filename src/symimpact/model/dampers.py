@@ -46,7 +46,10 @@ def damper(structure: Structure, name: Any, at: Any, m: Any, gap: Any, e: Any,
     if contact != "rigid":
         raise ParameterError(f"{label}.contact", f"only rigid impacts (with e) act on a structure "
                                                  f"of several modes so far, got {contact!r}")  # fmt: skip
-    point = structure._point(at)
+    try:
+        point = structure._point(at)
+    except ParameterError as exc:
+        raise ParameterError(f"{label}.at", exc.reason) from None
     if all(mode.node_at(point) for mode in structure.modes):
         raise ParameterError(f"{label}.at", f"no mode moves the point {point!r} (a support): "
                                             "the damper would never act")  # fmt: skip

@@ -327,6 +327,10 @@ def _matrix(name: str, value: Any, base: Path) -> Any:
     raise ParameterError(f"fe.{name}", "nested lists of numbers, or a path to a matrix file")
 
 
+#: The fields of a structure file that are not the structure: what acts on it.
+LOADS = ("dampers", "stops", "force", "base")
+
+
 def structure_from_dict(data: Any, base: Path | None = None) -> Structure:
     """The structure a parsed structure file describes (see :func:`read_structure`)."""
     base = Path.cwd() if base is None else base
@@ -337,11 +341,11 @@ def structure_from_dict(data: Any, base: Path | None = None) -> Structure:
         raise ParameterError("structure", "give exactly one of beam, modes or fe, got "
                                           f"{given or 'none'}")  # fmt: skip
     kind = given[0]
-    later = [k for k in ("dampers", "stops", "force", "base") if k in data]
+    later = [k for k in LOADS if k in data]
     if later:
-        raise ParameterError(later[0], "the file's dampers, stops and loads need the engine for "
-                                       "several modes, not built yet: give the damper and the "
-                                       "load with the command's options")  # fmt: skip
+        raise ParameterError(later[0], "a structure file's dampers and loads are read by "
+                                       "read_model (symimpact.model.structure_model); here the "
+                                       "damper and the load come from the command's options")  # fmt: skip
     unknown = sorted(set(data) - {"beam", "modes", "fe", "points"})
     if unknown:
         raise ParameterError(unknown[0], "is not a field of a structure file (beam, modes or fe, "
@@ -381,13 +385,8 @@ def structure_from_dict(data: Any, base: Path | None = None) -> Structure:
                         spec.get("influence", 1.0))  # fmt: skip
 
 
-def read_structure(path: Any) -> Structure:
-    """The structure in a JSON or TOML file: one of ``"beam"`` ({type, E, I, rho, A, L, modes,
-    zeta}), ``"modes"`` (a list of {f, mass, zeta, shape: {point: value}}) or ``"fe"`` ({M, K,
-    C or zeta, modes, influence}: matrices as nested lists or paths), and ``"points"`` ({name:
-    distance along the beam, or DOF}; a model given inline names each DOF by its number when
-    they are left out); values SI numbers or quantity texts.  Dampers, stops and loads in the
-    file are refused until the engine for several modes takes them."""
+def parsed_file(path: Any) -> tuple[Any, Path]:
+    """A structure file's parsed content (JSON, or TOML by its suffix) and its folder."""
     p = Path(path)
     try:
         text = p.read_text()
@@ -398,4 +397,16 @@ def read_structure(path: Any) -> Structure:
     except (tomllib.TOMLDecodeError, json.JSONDecodeError) as exc:
         kind = "TOML" if p.suffix.lower() == ".toml" else "JSON"
         raise ParameterError("structure", f"{p} is not valid {kind} ({exc})") from None
-    return structure_from_dict(data, p.parent)
+    return data, p.parent
+
+
+def read_structure(path: Any) -> Structure:
+    """The structure in a JSON or TOML file: one of ``"beam"`` ({type, E, I, rho, A, L, modes,
+    zeta}), ``"modes"`` (a list of {f, mass, zeta, shape: {point: value}}) or ``"fe"`` ({M, K,
+    C or zeta, modes, influence}: matrices as nested lists or paths), and ``"points"`` ({name:
+    distance along the beam, or DOF}; a model given inline names each DOF by its number when
+    they are left out); values SI numbers or quantity texts.  The file's dampers and loads
+    (``"dampers"``, ``"stops"``, ``"force"``, ``"base"``) are left to
+    :func:`symimpact.model.structure_model.read_model`; here they are refused."""
+    data, base = parsed_file(path)
+    return structure_from_dict(data, base)
