@@ -70,7 +70,8 @@ def add_system(
                    help="the primary as one mode of a structure file (JSON or TOML: a beam, modal "
                    "data or a finite-element model with named points; see 'symimpact modes "
                    "--structure'), referred to the damper's point --at: gives M, K and ζ "
-                   "instead of --M, --K, --C (Step 15; the engine takes one mode today)")  # fmt: skip
+                   "instead of --M, --K, --C (Step 15); a file that also lists \"dampers\" and "
+                   "a \"force\" is the whole model of several modes, which 'simulate' runs")  # fmt: skip
     g.add_argument("--at", default=None, metavar="POINT",
                    help="with --structure: the named point the damper sits at (default: the "
                    "file's only point)")  # fmt: skip
