@@ -95,18 +95,6 @@ N_MODAL_EVENT_COLS = N_EVENT_COLS + 1
 
 
 @njit(cache=True, inline="always")
-def _mode_state(pm, i, mass, t0, x0, v0, tau):
-    """Mode i's (qᵢ, q̇ᵢ) a time τ after (x0, v0) at t0 with moving mass ``mass``: Eq. F1, as
-    :func:`symimpact.forced._rigid._state` on row i of ``pm`` (read in place: a row taken as an
-    array costs a reference count in the engine's innermost loops)."""
-    W = pm[i, P_W]
-    th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
-    K, C, F0, Xb = pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB]
-    return (_xf(tau, mass, K, C, F0, Xb, W, th, x0, v0),
-            _vf(tau, mass, K, C, F0, Xb, W, th, x0, v0))  # fmt: skip
-
-
-@njit(cache=True, inline="always")
 def _mode_accel(pm, i, mass, t, x, v):
     """Mode i's q̈ᵢ (:func:`symimpact.forced._rigid._accel` on row i of ``pm``)."""
     W, K, C = pm[i, P_W], pm[i, P_K], pm[i, P_C]
@@ -132,11 +120,11 @@ def _config(pm, Phi, md, stuck):
     """The structure with the dampers of ``stuck[k] != 0`` riding on it: (M_s⁻¹, Λ, V, V⁻¹, X̂,
     ok, decoupled, pm_s, ω_max).  ``pm_s``: ``pm`` with column P_M holding M_s's diagonal, the
     parameters every other function of the engine reads (an array of its own would cost a
-    reference count wherever the innermost loops take it out of the tuple).  ``decoupled``: M_s is diagonal (no mass sticks, or one mode
-    alone moves each stuck point: one mode with φ = 1 is Step 9's sticking, one mass M + m), and
-    the modes fly by Eq. F1 with those masses; otherwise by the
-    eigen-decomposition (module text).  ω_max: the largest of Ω and the structure's damped
-    frequencies, which sets the searches' steps."""
+    reference count wherever the innermost loops take it out of the tuple).  ``decoupled``: M_s
+    is diagonal (no mass sticks, or one mode alone moves each stuck point: one mode with φ = 1 is
+    Step 9's sticking, one mass M + m), and the modes fly by Eq. F1 with those masses; otherwise
+    by the eigen-decomposition (module text).  ω_max: the largest of Ω and the structure's
+    damped frequencies, which sets the searches' steps."""
     N = pm.shape[0]
     W = pm[0, P_W]
     Ms = np.zeros((N, N))
@@ -215,7 +203,7 @@ def _free_states(pm, t0, q0, v0, tau, q, v):
     the modes are uncoupled (:func:`_states`; the searches' and the ledger's innermost loops call
     this one directly: the configuration tuple taken into an inlined function costs a
     reference count per array at each call)."""
-    for i in range(pm.shape[0]):  # _mode_state written out: an inlined call binds pm again
+    for i in range(pm.shape[0]):  # :func:`symimpact.forced._rigid._state` on row i, in place
         W = pm[i, P_W]
         th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
         M, K, C, F0, Xb = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB]
@@ -229,8 +217,7 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     while no mass sticks, else the stuck structure's closed form (module text)."""
     N = pm.shape[0]
     if cfg[6]:
-        for i in range(N):
-            q[i], v[i] = _mode_state(pm, i, pm[i, P_M], t0, q0[i], v0[i], tau)
+        _free_states(pm, t0, q0, v0, tau, q, v)
         return
     lam, V, Xhat = cfg[1], cfg[2], cfg[4]
     c = _coefficients(pm, cfg, t0, q0, v0)
