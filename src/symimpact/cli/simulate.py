@@ -256,7 +256,7 @@ def run_structure(ns) -> None:
         raise ParameterError("discard", f"must be fewer than --periods ({periods}), got {discard}")
     res = simulate_structure(model.structure, model.dampers, model.force_at, model.F0,
                              forcing.omega, periods, forcing.phase)  # fmt: skip
-    amplitudes = res.amplitudes(discard / periods)
+    amplitudes = {p: float(res.period_max[discard:, j].max()) for j, p in enumerate(res.points)}
     if ns.csv:
 
         def write(f):  # SI values, the unit in each header
