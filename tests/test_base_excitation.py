@@ -69,6 +69,7 @@ def test_a_shaker_sweep_without_impacts_is_the_textbook_transmissibility(capsys)
     assert out["baseline_peak"]["omega"] == pytest.approx(best, abs=2e-5)
 
 
+@pytest.mark.slow  # a whole frf with brute-force checks at several frequencies (~2 min): CI runs it in the slow step
 def test_a_shaker_frf_traces_the_orbits_at_each_frequencys_own_displacement(capsys):
     """With impacts: the symmetric two-impact branch of `frf --base-acc` is the closed-form
     orbit (Eq. F3) for X_b = A_b/Ω² at each point's Ω, to 1e-8 of the amplitude (the

@@ -96,7 +96,11 @@ def test_csv_gives_every_points_period_maxima(tmp_path, capsys):
 
 
 BAD_FILES = [
-    (dict(FILE, stops=[{"name": "s", "at": "tip", "gap": 0.001}]), "stops"),
+    (dict(FILE, stops=[{"name": "s", "at": "tip", "gap": 0.001}]), "stops[0]"),
+    (
+        dict(FILE, stops=[{"name": "s", "at": "root", "gap": 0.001, "side": "+", "k1": 1e4}]),
+        "stops.s.at",
+    ),
     (dict(FILE, base={"at": "root", "amplitude": 0.001}), "base"),
     ({k: v for k, v in FILE.items() if k != "force"}, "force"),
     (dict(FILE, force={"at": "tip"}), "force"),

@@ -220,8 +220,9 @@ def run_forced(ns) -> None:
 
 
 def run_structure(ns) -> None:
-    """The forced response of a structure file's structure of several modes with its dampers and
-    force (Eq. F1 per mode, Step 15's impacts, Eq. F7): each damper's impacts and every point's
+    """The forced response of a structure file's structure of several modes with its dampers,
+    stops and force (Eq. F1 per mode, Step 15's impacts, Eq. F7; a pressed stop's spring and
+    dashpot in the closed form): each damper's impacts, each stop's contacts and every point's
     steady amplitude."""
     import csv
 
@@ -255,7 +256,8 @@ def run_structure(ns) -> None:
     if discard >= periods:
         raise ParameterError("discard", f"must be fewer than --periods ({periods}), got {discard}")
     res = simulate_structure(model.structure, model.dampers, model.force_at, model.F0,
-                             forcing.omega, periods, forcing.phase)  # fmt: skip
+                             forcing.omega, periods, forcing.phase,
+                             stops=model.stops)  # fmt: skip
     amplitudes = {p: float(res.period_max[discard:, j].max()) for j, p in enumerate(res.points)}
     if ns.csv:
 
@@ -270,9 +272,10 @@ def run_structure(ns) -> None:
         f"{model.F0:.6g} N at {model.force_at!r}, Ω {omega_text(forcing.omega)}"
         + ("" if display_unit("omega") == "Hz" else f" ({forcing.freq:.6g} Hz)")
         + f"; {periods} periods, steady over the last {periods - discard}\n"
-        + "\n".join(f"damper {d.name!r} at {d.at!r}: {len(res.impacts(d.name))} impacts"
-                    for d in res.dampers)
-        + "\n"
+        + "".join(f"damper {d.name!r} at {d.at!r}: {len(res.impacts(d.name))} impacts\n"
+                  for d in res.dampers)
+        + "".join(f"stop {s.name!r} at {s.at!r}: {len(res.contacts(s.name))} contacts\n"
+                  for s in res.stops)
         + "\n".join(f"amplitude at {p!r}: {quantity_text('x', a)}"
                     for p, a in amplitudes.items())
         + f"\nenergy residual {res.energy['relative_residual']:.1e}"

@@ -89,6 +89,8 @@ SINGULAR_STUCK = 3
 #: Extra event-log column: the damper of the event (its index).
 E_DAMPER = N_EVENT_COLS
 N_MODAL_EVENT_COLS = N_EVENT_COLS + 1
+#: Event kinds beside the one-mode engine's: a stop's contact begins, or ends.
+KIND_ONSET, KIND_EXIT = 3, 4
 
 
 # --- the flight: free modes (Eq. F1 each), or the stuck structure's closed form -----------------
@@ -116,27 +118,46 @@ def _mode_jerk(pm, i, mass, t, x, v):
 
 
 @njit(cache=True)
-def _config(pm, Phi, md, stuck):
-    """The structure with the dampers of ``stuck[k] != 0`` riding on it: (M_s⁻¹, Λ, V, V⁻¹, X̂,
-    ok, decoupled, pm_s, ω_max).  ``pm_s``: ``pm`` with column P_M holding M_s's diagonal, the
-    parameters every other function of the engine reads (an array of its own would cost a
-    reference count wherever the innermost loops take it out of the tuple).  ``decoupled``: M_s
-    is diagonal (no mass sticks, or one mode alone moves each stuck point: one mode with φ = 1 is
-    Step 9's sticking, one mass M + m), and the modes fly by Eq. F1 with those masses; otherwise
-    by the eigen-decomposition (module text).  ω_max: the largest of Ω and the structure's
-    damped frequencies, which sets the searches' steps."""
+def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact):
+    """The structure with the dampers of ``stuck[k] != 0`` riding on it and the stops of
+    ``contact[s] != 0`` pressed by it: (M_s⁻¹, Λ, V, V⁻¹, X̂, ok, decoupled, pm_s, ω_max, K_s, C_s,
+    f_s, q_s).  ``pm_s``: ``pm`` with column P_M holding M_s's diagonal, the parameters every
+    other function of the engine reads (an array of its own would cost a reference count
+    wherever the innermost loops take it out of the tuple).  A stop s in contact on its wall
+    w = ``contact[s]`` adds its linear law's spring and dashpot at its point, K_s = K + k₁φφᵀ,
+    C_s = C + c₁φφᵀ, and the constant load f_s = k₁·w·g·φ (the force −k₁(φᵀq − w·g) − c₁φᵀq̇ on
+    the point), whose static deflection q_s = K_s⁻¹f_s shifts the closed form.  ``decoupled``:
+    no stop is pressed and M_s is diagonal (no mass sticks, or one mode alone moves each stuck
+    point: one mode with φ = 1 is Step 9's sticking, one mass M + m), and the modes fly by Eq. F1
+    with those masses; otherwise by the eigen-decomposition (module text).  ω_max: the largest of
+    Ω and the structure's damped frequencies, which sets the searches' steps."""
     N = pm.shape[0]
     W = pm[0, P_W]
     Ms = np.zeros((N, N))
+    Ks = np.zeros((N, N))
+    Cs = np.zeros((N, N))
+    fs = np.zeros(N)
+    qs = np.zeros(N)
     for i in range(N):
         Ms[i, i] = pm[i, P_M]
+        Ks[i, i] = pm[i, P_K]
+        Cs[i, i] = pm[i, P_C]
     for k in range(Phi.shape[0]):
         if stuck[k] != 0:
             for i in range(N):
                 for j in range(N):
                     Ms[i, j] += md[k] * Phi[k, i] * Phi[k, j]
+    pressed = False
+    for s in range(Sphi.shape[0]):
+        if contact[s] != 0:
+            pressed = True
+            for i in range(N):
+                fs[i] += sk[s] * contact[s] * sg[s] * Sphi[s, i]
+                for j in range(N):
+                    Ks[i, j] += sk[s] * Sphi[s, i] * Sphi[s, j]
+                    Cs[i, j] += sc[s] * Sphi[s, i] * Sphi[s, j]
     masses = pm.copy()
-    decoupled = True
+    decoupled = not pressed
     for i in range(N):
         masses[i, P_M] = Ms[i, i]
         for j in range(N):
@@ -158,13 +179,14 @@ def _config(pm, Phi, md, stuck):
         for i in range(N):
             M, K, C = masses[i, P_M], pm[i, P_K], pm[i, P_C]
             wmax = max(wmax, math.sqrt(max(K / M - C * C / (4 * M * M), 0.0)))
-        return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax
+        return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax, Ks, Cs, fs, qs
     A = np.zeros((2 * N, 2 * N), dtype=np.complex128)
     for i in range(N):
         A[i, N + i] = 1.0
         for j in range(N):
-            A[N + i, j] = -Minv[i, j] * pm[j, P_K]
-            A[N + i, N + j] = -Minv[i, j] * pm[j, P_C]
+            for m in range(N):
+                A[N + i, j] -= Minv[i, m] * Ks[m, j]
+                A[N + i, N + j] -= Minv[i, m] * Cs[m, j]
     lam, V = np.linalg.eig(A)
     V = np.ascontiguousarray(V)
     Vinv = np.ascontiguousarray(np.linalg.inv(V))
@@ -179,20 +201,26 @@ def _config(pm, Phi, md, stuck):
         ok = False
     else:
         Xhat = np.linalg.solve(D, b)
+    if pressed:
+        if np.linalg.cond(Ks) > 1e12:
+            ok = False
+        else:
+            qs = np.linalg.solve(Ks, fs)
     for m in range(2 * N):
         wmax = max(wmax, abs(lam[m].imag))
-    return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax
+    return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax, Ks, Cs, fs, qs
 
 
 @njit(cache=True)
 def _coefficients(pm, cfg, t0, q0, v0):
-    """c = V⁻¹(X₀ − X_p(t₀)): the stuck flight's modal amplitudes from (q0, v0) at t0."""
-    Vinv, Xhat = cfg[3], cfg[4]
+    """c = V⁻¹(X₀ − X_p(t₀) − (q_s, 0)): the coupled flight's modal amplitudes from (q0, v0) at
+    t0 (q_s: the pressed stops' static deflection, :func:`_config`)."""
+    Vinv, Xhat, qs = cfg[3], cfg[4], cfg[12]
     N = pm.shape[0]
     rot = np.exp(1j * (pm[0, P_W] * t0 + pm[0, P_PHI]))
     X0 = np.empty(2 * N, dtype=np.complex128)
     for i in range(N):
-        X0[i] = q0[i] - (Xhat[i] * rot).real
+        X0[i] = q0[i] - (Xhat[i] * rot).real - qs[i]
         X0[N + i] = v0[i] - (Xhat[N + i] * rot).real
     return Vinv @ X0
 
@@ -219,28 +247,35 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     if cfg[6]:
         _free_states(pm, t0, q0, v0, tau, q, v)
         return
-    lam, V, Xhat = cfg[1], cfg[2], cfg[4]
+    lam, V, Xhat, qs = cfg[1], cfg[2], cfg[4], cfg[12]
     c = _coefficients(pm, cfg, t0, q0, v0)
     rot = np.exp(1j * (pm[0, P_W] * (t0 + tau) + pm[0, P_PHI]))
     g = c * np.exp(lam * tau)
     X = V @ g
     for i in range(N):
-        q[i] = X[i].real + (Xhat[i] * rot).real
+        q[i] = X[i].real + (Xhat[i] * rot).real + qs[i]
         v[i] = X[N + i].real + (Xhat[N + i] * rot).real
 
 
 @njit(cache=True, inline="always")
-def _stuck_acceleration(pm, Minv, t, q, v, i):
-    """q̈ᵢ of the stuck structure: row i of M_s⁻¹(Pcos θ + Qsin θ − Cq̇ − Kq), P = F + K·X_b,
-    Q = −CΩ·X_b per mode (Eq. F1's left side with the stuck mass matrix)."""
+def _stuck_acceleration(pm, cfg, t, q, v, i):
+    """q̈ᵢ of the coupled structure: row i of M_s⁻¹(Pcos θ + Qsin θ + f_s − C_sq̇ − K_sq),
+    P = F + K·X_b, Q = −CΩ·X_b per mode (Eq. F1's left side with the stuck mass matrix and the
+    pressed stops' springs, dashpots and load, :func:`_config`)."""
+    Minv, Ks, Cs, fs = cfg[0], cfg[9], cfg[10], cfg[11]
+    N = pm.shape[0]
     W = pm[0, P_W]
     th = W * t + pm[0, P_PHI]
     c, sn = math.cos(th), math.sin(th)
     g = 0.0
-    for j in range(pm.shape[0]):
+    for j in range(N):
         P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
         Q = -pm[j, P_C] * W * pm[j, P_XB]
-        g += Minv[i, j] * (P * c + Q * sn - pm[j, P_C] * v[j] - pm[j, P_K] * q[j])
+        cv, kq = 0.0, 0.0
+        for m in range(N):
+            cv += Cs[j, m] * v[m]
+            kq += Ks[j, m] * q[m]
+        g += Minv[i, j] * (P * c + Q * sn + fs[j] - cv - kq)
     return g
 
 
@@ -262,7 +297,7 @@ def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v):
         return _free_point_accel(pm, Phi, row, t, q, v)
     a = 0.0
     for i in range(pm.shape[0]):
-        a += Phi[row, i] * _stuck_acceleration(pm, cfg[0], t, q, v, i)
+        a += Phi[row, i] * _stuck_acceleration(pm, cfg, t, q, v, i)
     return a
 
 
@@ -275,19 +310,23 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v):
         for i in range(N):
             a += Phi[row, i] * _mode_jerk(pm, i, pm[i, P_M], t, q[i], v[i])
         return a
-    Minv = cfg[0]
+    Minv, Ks, Cs = cfg[0], cfg[9], cfg[10]
     W = pm[0, P_W]
     th = W * t + pm[0, P_PHI]
     c, sn = math.cos(th), math.sin(th)
     acc = np.empty(N)
     for i in range(N):
-        acc[i] = _stuck_acceleration(pm, Minv, t, q, v, i)
+        acc[i] = _stuck_acceleration(pm, cfg, t, q, v, i)
     for i in range(N):
         g = 0.0
         for j in range(N):
             P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
             Q = -pm[j, P_C] * W * pm[j, P_XB]
-            g += Minv[i, j] * (W * (Q * c - P * sn) - pm[j, P_C] * acc[j] - pm[j, P_K] * v[j])
+            ca, kv = 0.0, 0.0
+            for m in range(N):
+                ca += Cs[j, m] * acc[m]
+                kv += Ks[j, m] * v[m]
+            g += Minv[i, j] * (W * (Q * c - P * sn) - ca - kv)
         a += Phi[row, i] * g
     return a
 
@@ -487,6 +526,96 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
 
 
 @njit(cache=True)
+def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, fresh, t0, q0, v0, T, watch, work):
+    """(τ, stop, wall): the first τ in (0, T] at which a stop's contact begins (its point xₛ,
+    free of the stop, reaches the wall w·g) or ends (the point pressing the wall w comes back to
+    w·g), that stop and the new value of ``contact[s]`` (w at an onset, 0 at an exit); (T, −1, 0)
+    when none does, (τ so far, −2, 0) when a signal is seen on ``watch``.  The search is the
+    impact search's (a grid every bound A ≥ abs(ẍₛ) certifies, halved where it cannot, Illinois
+    regula falsi on the crossing); stop ``fresh``, which switched at t0 with the point's speed r,
+    cannot switch again before 2·abs(r)/A (its penetration, or its gap, grows as rτ − Aτ²/2)."""
+    S = Sphi.shape[0]
+    hmax = 2.0 * math.pi / cfg[8] / 16.0
+    dec = cfg[6]
+    A, B, fa, fb, hold = work[14], work[15], work[16], work[17], work[18]
+    q, v = work[3], work[4]
+    _bounds(pm, cfg, nstuck, Sphi, t0, q0, v0, T, A, B)
+    hmin = 1e-6 * hmax
+    for s in range(S):
+        hmin = min(hmin, max(1e-12 * hmax, math.sqrt(8e-20 * sg[s] / A[s])))
+        fa[s] = _dot(Sphi, s, q0)
+        hold[s] = 0.0
+        if s == fresh:
+            hold[s] = 2.0 * abs(_dot(Sphi, s, v0)) / A[s]
+    tau = 0.0
+    H = hmax
+    looks = 0
+    while tau < T:
+        looks += 1
+        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
+            return tau, -2, 0
+        H = min(H, T - tau)
+        tb = tau + H
+        if dec:
+            _free_states(pm, t0, q0, v0, tb, q, v)
+        else:
+            _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
+        clear = True
+        for s in range(S):
+            fb[s] = _dot(Sphi, s, q)
+            if tb <= hold[s]:
+                continue
+            slack = A[s] * H * H / 8.0
+            top = max(fa[s], fb[s]) + slack
+            low = min(fa[s], fb[s]) - slack
+            if contact[s] == 1:
+                stays = low > sg[s]
+            elif contact[s] == -1:
+                stays = top < -sg[s]
+            else:
+                stays = (sside[s] < 0 or top < sg[s]) and (sside[s] > 0 or low > -sg[s])
+            if not stays:
+                clear = False
+        if clear:
+            tau = tb
+            for s in range(S):
+                fa[s] = fb[s]
+            H = min(2.0 * H, hmax)
+            continue
+        if H > hmin and H > 4e-16 * tb:
+            H *= 0.5
+            continue
+        first, which, wall = tb, -1, 0
+        for s in range(S):
+            if tb <= hold[s]:
+                continue
+            # the crossing as the impact search's: z = −x reaching the level h on the side d
+            d, h, to = 0.0, 0.0, 0
+            if contact[s] == 1 and fb[s] <= sg[s]:
+                d, h, to = 1.0, -sg[s], 0
+            elif contact[s] == -1 and fb[s] >= -sg[s]:
+                d, h, to = -1.0, -sg[s], 0
+            elif contact[s] == 0 and sside[s] >= 0 and fb[s] >= sg[s]:
+                d, h, to = -1.0, sg[s], 1
+            elif contact[s] == 0 and sside[s] <= 0 and fb[s] <= -sg[s]:
+                d, h, to = 1.0, sg[s], -1
+            if d == 0.0:
+                continue
+            x0 = _dot(Sphi, s, q0)
+            ts = _refine(pm, cfg, nstuck, Sphi, s, h, t0, q0, v0, -x0, 0.0, d, tau, tb, -fa[s],
+                         -fb[s], q, v)  # fmt: skip
+            if which < 0 or ts < first:
+                first, which, wall = ts, s, to
+        if which >= 0:
+            return first, which, wall
+        tau = tb  # excursions shorter than hmin: below 1e-20 of the gaps
+        for s in range(S):
+            fa[s] = fb[s]
+        H = hmax
+    return T, -1, 0
+
+
+@njit(cache=True)
 def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work):
     """(τ, damper): the first τ in (0, T] where a stuck damper's sₖ·ẍₐ turns positive (its wall
     would pull), or (T, −1) (or the τ reached when a signal is seen on ``watch``)."""
@@ -540,9 +669,11 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work):
 
 
 @njit(cache=True)
-def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work):
+def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work, Sphi,
+             sc, contact):  # fmt: skip
     """Account for the flight [t0, t0 + τ]: the work of the modal forces and the dissipation of
-    the Cᵢ (ledger[0], ledger[1], Gauss–Legendre as in the one-mode engine) and, for every output
+    the Cᵢ (ledger[0], ledger[1], Gauss–Legendre as in the one-mode engine) and of the pressed
+    stops' dashpots, c₁(φₛᵀq̇)² (ledger[3]), and, for every output
     point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period crossed
     (``period_max[k, p]``), at the sub-intervals' ends and at the zeros of ẋₚ inside them.  A zero
     is located only where the extreme could raise the period's maximum: within a sub-interval of
@@ -584,6 +715,11 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                 )
                 ledger[0] += 0.5 * hs * _GL_W[g] * power_in
                 ledger[1] += 0.5 * hs * _GL_W[g] * pm[i, P_C] * rel * rel
+            if not dec:
+                for r in range(Sphi.shape[0]):
+                    if contact[r] != 0:
+                        rate = _dot(Sphi, r, v)
+                        ledger[3] += 0.5 * hs * _GL_W[g] * sc[r] * rate * rate
         b = (j + 1) * hs
         if dec:
             _free_states(pm, t0, q0, v0, b, q, v)
@@ -695,26 +831,41 @@ def _dot(Phi, row, v):
 
 
 @njit(cache=True)
-def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events, watch):
+def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0, Pout, t_end,
+        max_events, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
     Step 13's e(v), Eq. F5, which tends to 1 at low speed, so chatter never accumulates); chatter taken to its accumulation point when it
-    would end within ``chat`` forcing periods) from modal state (q0, v0) and the masses' (y0, u0)
-    at t = 0 to t_end.
+    would end within ``chat`` forcing periods) and stops (shapes ``Sphi, s`` at their points, gaps
+    ``sg``, walls ``sside``: +1 at +g, −1 at −g, 0 both; linear contact laws k₁ = ``sk``,
+    c₁ = ``sc``: each pressed stop changes the structure's closed form, :func:`_config`) from
+    modal state (q0, v0) and the masses' (y0, u0) at t = 0 to t_end (a point past a wall at
+    t = 0 starts pressing it).
 
     Returns (status, events, n_events, period_max, ledger, final): the event log (columns of
     :mod:`symimpact.forced._rigid` and E_DAMPER; columns 1, 2, 3, 8, 9 hold the point's
-    displacement, its velocity and the mass's before and after), ``period_max[k, p]`` the largest
-    abs(x) at output point p in forcing period k, ledger = (work of the forces, dissipation,
-    loss in impacts), final = (t, q…, q̇…, y…, ẏ…, stuck…).
+    displacement, its velocity and the mass's before and after; a stop's contact onset or exit,
+    kinds KIND_ONSET and KIND_EXIT, has E_DAMPER = K + s, its wall in E_SIDE and the point's
+    speed in E_VREL), ``period_max[k, p]`` the largest abs(x) at output point p in forcing period
+    k, ledger = (work of the forces, dissipation of the Cᵢ, loss in impacts, dissipation of the
+    stops' dashpots), final = (t, q…, q̇…, y…, ẏ…, stuck…, contact…).
     """
     N, K = pm0.shape[0], Phi.shape[0]
     T_f = 2.0 * math.pi / pm0[0, P_W]
     n_periods = int(math.floor(t_end / T_f + 0.5))  # noqa: RUF046 (int() spelled out for numba)
     period_max = np.zeros((n_periods + 1, Pout.shape[0]))
-    ledger = np.zeros(3)
+    ledger = np.zeros(4)
     events = np.zeros((64, N_MODAL_EVENT_COLS))
+    S = Sphi.shape[0]
+    contact = np.zeros(S, dtype=np.int64)
+    for r in range(S):
+        xs = _dot(Sphi, r, q0)
+        if sside[r] >= 0 and xs > sg[r]:
+            contact[r] = 1
+        elif sside[r] <= 0 and xs < -sg[r]:
+            contact[r] = -1
+    fresh = -1
     n_ev = 0
     t = 0.0
     q, v = q0.copy(), v0.copy()
@@ -724,7 +875,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events
     side0 = np.zeros(K, dtype=np.int64)
     stuck = np.zeros(K, dtype=np.int64)
     nstuck = 0
-    cfg = _config(pm0, Phi, md, stuck)
+    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
     pm = cfg[7]
     P = Pout.shape[0]
     # scratch for the searches and the ledger, allocated once: bounds A, B and the held-off
@@ -732,7 +883,8 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events
     # the release search's last values; the output points' bounds, last velocities and
     # displacements
     # (one array, its rows: a tuple of arrays costs a reference count per array at every call)
-    work = np.empty((14, max(N, K, P)))
+    # displacements; the stops' bounds A, B, displacements at the grid's ends and held-off times
+    work = np.empty((19, max(N, K, P, S)))
     v_before = np.empty(N)
     let_go = np.zeros(K, dtype=np.int64)
     for k in range(K):
@@ -754,9 +906,17 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events
         kr = -1
         if nstuck > 0:
             T, kr = _release(pm, cfg, nstuck, stuck, Phi, t, q, v, T, watch, work)
+        ks, ws = -1, 0
+        if S > 0:
+            taus, ks, ws = _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, fresh, t, q,
+                                         v, T, watch, work)  # fmt: skip
+            if ks != -1:
+                T = taus
+                kr = -1
         tau, k, side = _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t, q, v, z, u, side0, T,
                                     watch, work)  # fmt: skip
-        _segment(pm, cfg, nstuck, Pout, t, q, v, tau, ledger, period_max, n_periods, work)
+        _segment(pm, cfg, nstuck, Pout, t, q, v, tau, ledger, period_max, n_periods, work, Sphi,
+                 sc, contact)  # fmt: skip
         _states(pm, cfg, nstuck, t, q, v, tau, qn, vn)
         for j in range(K):
             if stuck[j] == 0:
@@ -766,12 +926,28 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events
         t = t + tau
         q[:] = qn
         v[:] = vn
+        fresh = -1
+        if k < 0 and ks >= 0 and tau >= T:
+            # --- stop ks's contact begins (on wall ws) or ends ---
+            wall = ws if ws != 0 else contact[ks]
+            contact[ks] = ws
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
+            pm = cfg[7]
+            fresh = ks
+            xd = _dot(Sphi, ks, v)
+            events, n_ev = _log(events, n_ev, t, _dot(Sphi, ks, q), xd, 0.0, float(wall),
+                                abs(xd), 0.0, KIND_ONSET if ws != 0 else KIND_EXIT, xd, 0.0,
+                                K + ks)  # fmt: skip
+            if not cfg[5]:
+                status = SINGULAR_STUCK
+                break
+            continue
         if k < 0 and kr >= 0 and tau >= T and t < t_end:
             # --- release of damper kr: it leaves its wall with the point's velocity ---
             s = float(stuck[kr])
             stuck[kr] = 0
             nstuck -= 1
-            cfg = _config(pm0, Phi, md, stuck)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
             pm = cfg[7]
             for j in range(K):
                 side0[j] = 0
@@ -805,7 +981,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events
             let_go[pulled] = stuck[pulled]
             stuck[pulled] = 0
             nstuck -= 1
-            cfg = _config(pm0, Phi, md, stuck)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
             pm = cfg[7]
             events, n_ev = _log(events, n_ev, t, _dot(Phi, pulled, q), u[pulled], u[pulled],
                                 float(let_go[pulled]), 0.0, 0.0, KIND_RELEASE, u[pulled],
@@ -829,7 +1005,8 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events
             delta = 2.0 * w / (a * (1.0 - e))
             if delta <= chat * T_f and t + delta < t_end:
                 # jump to the accumulation point (the other masses fly on), close plastically
-                _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods, work)
+                _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods,
+                         work, Sphi, sc, contact)  # fmt: skip
                 _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
                 for j in range(K):
                     if stuck[j] == 0 and j != k:
@@ -856,14 +1033,14 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events
             # --- the mass rides on its point from here ---
             stuck[k] = side
             nstuck += 1
-            cfg = _config(pm0, Phi, md, stuck)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
             pm = cfg[7]
             if not cfg[5]:
                 status = SINGULAR_STUCK
                 break
             u[k] = _dot(Phi, k, v)
             z[k] = s * hd[k]
-    final = np.empty(1 + 2 * N + 3 * K)
+    final = np.empty(1 + 2 * N + 3 * K + S)
     final[0] = t
     final[1 : 1 + N] = q
     final[1 + N : 1 + 2 * N] = v
@@ -871,6 +1048,8 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, q0, v0, y0, u0, Pout, t_end, max_events
         final[1 + 2 * N + k] = _dot(Phi, k, q) + z[k]
         final[1 + 2 * N + 2 * K + k] = stuck[k]
     final[1 + 2 * N + K : 1 + 2 * N + 2 * K] = u
+    for r in range(S):
+        final[1 + 2 * N + 3 * K + r] = contact[r]
     return status, events, n_ev, period_max, ledger, final
 
 
@@ -880,19 +1059,21 @@ def one_mode_run(p, state0, t_end, max_events, watch):
     ``p`` in :mod:`symimpact.forced._rigid`'s layout), one damper, from state0 = (x, ẋ, y, ẏ).
 
     Returns (status, events, n_events, period_max, ledger, final) in the one-mode layout: events
-    with :mod:`symimpact.forced._rigid`'s ten columns, the largest abs(x) of every period,
-    final = (t, x, ẋ, y, ẏ, 1.0 if it ended stuck)."""
+    with :mod:`symimpact.forced._rigid`'s ten columns, the largest abs(x) of every period, the
+    ledger's first three terms (no stops), final = (t, x, ẋ, y, ẏ, 1.0 if it ended stuck)."""
     pm = p.reshape((1, p.shape[0])).copy()
     one = np.ones((1, 1))
     status, events, n_ev, period_max, ledger, final = run(
         pm, one, np.array([p[P_m]]), np.array([p[P_h]]), np.array([p[P_e]]),
-        np.array([p[P_VY]]), p[P_CHAT], state0[0:1].copy(), state0[1:2].copy(),
+        np.array([p[P_VY]]), p[P_CHAT], np.zeros((0, 1)), np.zeros(0),
+        np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
         state0[2:3].copy(), state0[3:4].copy(), one, t_end, max_events, watch,
     )  # fmt: skip
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
     if final[5] != 0.0:
         out[5] = 1.0
-    return status, events[:, :N_EVENT_COLS].copy(), n_ev, period_max[:, 0].copy(), ledger, out
+    return (status, events[:, :N_EVENT_COLS].copy(), n_ev, period_max[:, 0].copy(),
+            ledger[:3].copy(), out)  # fmt: skip
 
 
 def _forget_stale_compilations() -> None:

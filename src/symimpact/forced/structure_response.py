@@ -29,6 +29,7 @@ from .. import _interrupt, budgets
 from ..errors import MethodNotApplicable, ParameterError
 from ..model.checks import instance, whole_number
 from ..model.dampers import Damper
+from ..model.stops import Stop
 from ..model.structure import Structure
 from ..model.units import nonnegative_float, positive_float, si_float
 from . import _modal, _rigid
@@ -37,6 +38,10 @@ from .simulation import CHATTER
 #: Columns of :attr:`StructureResult.events`.
 EVENT_COLUMNS = ("t", "x_point", "xdot_point_before", "ydot_before", "side", "approach_speed",
                  "energy_lost", "kind", "xdot_point_after", "ydot_after", "damper")  # fmt: skip
+#: Kinds of :attr:`StructureResult.events` (column "kind").
+KINDS = {_rigid.KIND_IMPACT: "impact", _rigid.KIND_ACCUMULATION: "accumulation",
+         _rigid.KIND_RELEASE: "release", _modal.KIND_ONSET: "contact onset",
+         _modal.KIND_EXIT: "contact exit"}  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -49,17 +54,30 @@ class StructureResult:
     F0: float
     omega: float
     t_end: float
-    #: (n, 11): columns :data:`EVENT_COLUMNS`, one row per impact, accumulation point or release
-    #: (column "kind": 0, 1, 2)
+    #: (n, 11): columns :data:`EVENT_COLUMNS`, one row per impact, accumulation point, release,
+    #: or a stop's contact onset or exit (column "kind", :data:`KINDS`; column "damper": the
+    #: damper's index, or the number of dampers plus the stop's index)
     events: np.ndarray
     #: the output points (the structure's, in its order)
     points: tuple[str, ...]
     #: (periods, points): the largest abs(x) at each point in each forcing period [m]
     period_max: np.ndarray
     energy: dict[str, float]
-    #: (t, q…, q̇…, y…, ẏ…, and per damper its wall if it ends stuck, else 0) at the end
+    #: (t, q…, q̇…, y…, ẏ…, per damper its wall if it ends stuck else 0, per stop the wall it
+    #: ends pressing else 0) at the end
     final_state: np.ndarray
     notes: list[str] = field(default_factory=list)
+    stops: tuple[Stop, ...] = ()
+
+    def contacts(self, stop: str) -> np.ndarray:
+        """The times at which stop ``stop``'s contacts begin [s]."""
+        names = [s.name for s in self.stops]
+        if stop not in names:
+            raise ParameterError("stop", f"no stop {stop!r} (the stops: "
+                                         f"{', '.join(names) or 'none'})")  # fmt: skip
+        row = len(self.dampers) + names.index(stop)
+        mine = self.events[:, _modal.E_DAMPER] == row
+        return self.events[mine & (self.events[:, _rigid.E_KIND] == _modal.KIND_ONSET), _rigid.E_T]
 
     def impacts(self, damper: str) -> np.ndarray:
         """The times of damper ``damper``'s impacts [s]: the impacts it resolved and, for each
@@ -90,7 +108,9 @@ class StructureResult:
             "force": {"at": self.force_at, "amplitude": self.F0},
             "omega": self.omega,
             "t_end": self.t_end,
-            "impacts": {d.name: len(self.impacts(d.name)) for d in self.dampers},
+            "stops": [s.as_dict() for s in self.stops],
+            "impacts": {d.name: len(self.impacts(d.name)) for d in self.dampers}
+            | {s.name: len(self.contacts(s.name)) for s in self.stops},
             "amplitudes": self.amplitudes(),
             "energy": self.energy,
             "notes": self.notes,
@@ -111,32 +131,48 @@ def _modal_parameters(structure: Structure, force_at: str, F0: float, omega: flo
     return pm
 
 
-def _energy(pm: np.ndarray, md: np.ndarray, q, v, u) -> float:
-    """Σ(½Mᵢq̇ᵢ² + ½Kᵢqᵢ²) + Σ½mₖẏₖ²."""
+def _energy(pm: np.ndarray, md: np.ndarray, q, v, u, stops: tuple[Stop, ...] = (),
+            Sphi: Any = None, pressed: Any = ()) -> float:  # fmt: skip
+    """Σ(½Mᵢq̇ᵢ² + ½Kᵢqᵢ²) + Σ½mₖẏₖ² + Σ½k₁(w·xₛ − g)² over the stops pressed on their wall w."""
     M, K = pm[:, _rigid.P_M], pm[:, _rigid.P_K]
-    return float(0.5 * np.sum(M * v * v + K * q * q) + 0.5 * np.sum(md * u * u))
+    out = 0.5 * np.sum(M * v * v + K * q * q) + 0.5 * np.sum(md * u * u)
+    for j, (s, w) in enumerate(zip(stops, pressed, strict=True)):
+        if w != 0:
+            out += 0.5 * s.k1 * (w * float(Sphi[j] @ q) - s.gap) ** 2
+    return float(out)
 
 
 def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega: Any,
                        periods: Any = 400, phase: Any = 0.0, state: Any = None,
-                       chatter: Any = CHATTER) -> StructureResult:  # fmt: skip
+                       chatter: Any = CHATTER, stops: Any = ()) -> StructureResult:  # fmt: skip
     """Simulate ``structure`` with ``dampers`` (a sequence of :class:`~symimpact.model.dampers.
     Damper`) under the force F₀cos(Ωt + φ) at point ``force_at`` [N, rad/s, rad] for ``periods``
     forcing periods, from rest or from ``state`` = (q…, q̇…, y…, ẏ…) (modal coordinates, then
     each damper's absolute displacement and velocity).  Eq. F1 per mode, Eq. F7 at each impact.
 
     Chatter is taken to its accumulation point and the mass then sticks on its point until its
-    wall would pull it (Step 15, item 5).  Refused in one line: an undamped mode driven at its own
-    frequency (Eq. F1 cancels there, as in :func:`~symimpact.forced.simulate_forced`)."""
+    wall would pull it (Step 15, item 5).  ``stops``: a sequence of
+    :class:`~symimpact.model.stops.Stop`, walls fixed to the ground with a linear contact law;
+    a pressed stop adds its spring and dashpot to the structure, whose flight stays closed form
+    (:mod:`symimpact.model.stops`).  A structure with stops may carry no damper.  Refused in one
+    line: an undamped mode driven at its own frequency (Eq. F1 cancels there, as in
+    :func:`~symimpact.forced.simulate_forced`)."""
     structure = instance("structure", structure, Structure, "a Structure")
     dampers = tuple(dampers) if isinstance(dampers, (list, tuple)) else dampers
-    if not isinstance(dampers, tuple) or not dampers:
-        raise ParameterError("dampers", "must be a non-empty list of Damper")
+    stops = tuple(stops) if isinstance(stops, (list, tuple)) else stops
+    if not isinstance(stops, tuple):
+        raise ParameterError("stops", "must be a list of Stop")
+    if not isinstance(dampers, tuple) or not (dampers or stops):
+        raise ParameterError("dampers", "must be a non-empty list of Damper (or give stops)")
     for d in dampers:
         instance("dampers", d, Damper, "a Damper")
         structure._point(d.at)
-    if len({d.name for d in dampers}) < len(dampers):
-        raise ParameterError("dampers", "two dampers have the same name")
+    for st in stops:
+        instance("stops", st, Stop, "a Stop")
+        structure._point(st.at)
+    names = [d.name for d in dampers] + [st.name for st in stops]
+    if len(set(names)) < len(names):
+        raise ParameterError("dampers", "two dampers or stops have the same name")
     point = structure._point(force_at)
     F0 = nonnegative_float("F0", F0, "N")
     omega = positive_float("omega", omega, "rad/s")
@@ -156,7 +192,12 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
             raise ParameterError("state", f"must be {2 * N + 2 * K} finite numbers (q, q̇ of "
                                           f"{N} modes, y, ẏ of {K} dampers)")  # fmt: skip
     pm = _modal_parameters(structure, point, F0, omega, phase)
-    Phi = structure.shapes([d.at for d in dampers])
+    Phi = structure.shapes([d.at for d in dampers]).reshape(K, N)
+    Sphi = structure.shapes([st.at for st in stops]).reshape(len(stops), N)
+    sg = np.array([st.gap for st in stops])
+    sside = np.array([st.walls for st in stops], dtype=np.int64)
+    sk = np.array([st.k1 for st in stops])
+    sc = np.array([st.c1 for st in stops])
     md = np.array([d.m for d in dampers])
     hd = np.array([d.gap / 2.0 for d in dampers])
     ed = np.array([d.e for d in dampers])
@@ -178,6 +219,11 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         ed,
         np.zeros(K),
         chat,
+        Sphi,
+        sg,
+        sside,
+        sk,
+        sc,
         q0,
         v0,
         y0,
@@ -197,15 +243,26 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     if status == _rigid.TOO_MANY_EVENTS:
         raise ParameterError("periods", f"more than {budgets.MAX_EVENTS} impacts in "
                                         f"{n_periods} periods; ask for fewer periods")  # fmt: skip
-    e0 = _energy(pm, md, q0, v0, u0)
+    pressed0 = [_pressed(st, float(Sphi[j] @ q0)) for j, st in enumerate(stops)]
+    e0 = _energy(pm, md, q0, v0, u0, stops, Sphi, pressed0)
     qf, vf = final[1 : 1 + N], final[1 + N : 1 + 2 * N]
     uf = final[1 + 2 * N + K : 1 + 2 * N + 2 * K]
-    e1 = _energy(pm, md, qf, vf, uf)
-    work, d_c, d_imp = (float(x) for x in ledger)
-    residual = (e1 - e0) - (work - d_c - d_imp)
-    scale = max(abs(work), d_c + d_imp, e0, e1, 1e-300)
+    e1 = _energy(pm, md, qf, vf, uf, stops, Sphi, final[1 + 2 * N + 3 * K :])
+    work, d_c, d_imp, d_stops = (float(x) for x in ledger)
+    residual = (e1 - e0) - (work - d_c - d_imp - d_stops)
+    scale = max(abs(work), d_c + d_imp + d_stops, e0, e1, 1e-300)
     energy = {"initial": e0, "final": e1, "forcing_work": work, "dissipated_C": d_c,
-              "dissipated_impacts": d_imp, "residual": residual,
+              "dissipated_impacts": d_imp, "dissipated_stops": d_stops, "residual": residual,
               "relative_residual": abs(residual) / scale}  # fmt: skip
     return StructureResult(structure, dampers, point, F0, omega, t_end, events,
-                           structure.points, period_max[:n_periods], energy, final)  # fmt: skip
+                           structure.points, period_max[:n_periods], energy, final,
+                           stops=stops)  # fmt: skip
+
+
+def _pressed(st: Stop, x: float) -> int:
+    """The wall a stop's point at x presses at the start (the engine's rule), or 0."""
+    if st.walls >= 0 and x > st.gap:
+        return 1
+    if st.walls <= 0 and x < -st.gap:
+        return -1
+    return 0

@@ -1,12 +1,14 @@
 """A whole structure file: the structure (:mod:`symimpact.model.structure`), the impact dampers on
-it (:mod:`symimpact.model.dampers`) and the harmonic force that drives it — what
+it (:mod:`symimpact.model.dampers`), the stops it meets (:mod:`symimpact.model.stops`) and the
+harmonic force that drives it — what
 :func:`symimpact.forced.structure_response.simulate_structure` takes (Step 15: the modes of the
 structure, each damper's impact at its point, Eq. F7).
 
 The file's fields beside the structure's: ``"dampers"``, a list of ``{"name", "at", "m", "gap",
-"contact": "rigid", "e"}``, and ``"force"``, ``{"at": point, "amplitude": F0}`` (SI numbers or
-quantity texts such as ``"2 N"``).  Stops (walls fixed to the ground) and base motion of a
-structure of several modes are not built yet: a file that gives them is refused in one line.
+"contact": "rigid", "e"}``; ``"stops"``, a list of ``{"name", "at", "gap", "side", "contact":
+"linear", "k1", "c1"}``; and ``"force"``, ``{"at": point, "amplitude": F0}`` (SI numbers or
+quantity texts such as ``"2 N"``).  A file gives dampers, stops or both.  Base motion of a
+structure of several modes is not built yet: a file that gives it is refused in one line.
 """
 
 from __future__ import annotations
@@ -16,36 +18,43 @@ from typing import Any
 
 from ..errors import ParameterError
 from .dampers import Damper, dampers
+from .stops import Stop, stops
 from .structure import LOADS, Structure, parsed_file, structure_from_dict
 from .units import nonnegative_float
 
 
 @dataclass(frozen=True)
 class StructureModel:
-    """A structure, its dampers and the force amplitude ``F0`` [N] at point ``force_at``."""
+    """A structure, its dampers, its stops and the force amplitude ``F0`` [N] at point
+    ``force_at``."""
 
     structure: Structure
     dampers: tuple[Damper, ...]
     force_at: str
     F0: float
+    stops: tuple[Stop, ...] = ()
 
 
 def model_from_dict(data: Any, base: Any = None) -> StructureModel:
     """The :class:`StructureModel` of a parsed structure file (see :func:`read_model`)."""
     if not isinstance(data, dict):
         raise ParameterError("structure", "a table with one of beam, modes or fe")
-    for key, why in (("stops", "walls fixed to the ground"), ("base", "base motion")):
-        if key in data:
-            raise ParameterError(key, f"{why} on a structure of several modes is not built yet "
-                                      "(the one-mode primary takes --base)")  # fmt: skip
-    if "dampers" not in data:
-        raise ParameterError("dampers", "the file gives no dampers: list them as {name, at, m, "
-                                        "gap, contact, e}")  # fmt: skip
+    if "base" in data:
+        raise ParameterError("base", "base motion on a structure of several modes is not built "
+                                     "yet (the one-mode primary takes --base)")  # fmt: skip
+    if "dampers" not in data and "stops" not in data:
+        raise ParameterError("dampers", "the file gives no dampers and no stops: list them as "
+                                        "{name, at, m, gap, contact, e} or {name, at, gap, side, "
+                                        "contact, k1, c1}")  # fmt: skip
     if "force" not in data:
         raise ParameterError("force", "the file gives no force: {\"at\": point, \"amplitude\": "
                                       "F0}")  # fmt: skip
     structure = structure_from_dict({k: v for k, v in data.items() if k not in LOADS}, base)
-    found = dampers(structure, data["dampers"])
+    found = dampers(structure, data["dampers"]) if "dampers" in data else ()
+    walls = stops(structure, data["stops"]) if "stops" in data else ()
+    for w in walls:
+        if any(d.name == w.name for d in found):
+            raise ParameterError(f"stops.{w.name}", "a damper has this name too")
     force = data["force"]
     if not isinstance(force, dict) or set(force) != {"at", "amplitude"}:
         raise ParameterError("force", 'must be {"at": point, "amplitude": F0}')
@@ -57,14 +66,14 @@ def model_from_dict(data: Any, base: Any = None) -> StructureModel:
         raise ParameterError("force.at", f"no mode moves the point {at!r} (a support): the "
                                          "force would do nothing")  # fmt: skip
     return StructureModel(
-        structure, found, at, nonnegative_float("force.amplitude", force["amplitude"], "N")
+        structure, found, at, nonnegative_float("force.amplitude", force["amplitude"], "N"), walls
     )
 
 
 def read_model(path: Any) -> StructureModel:
-    """The structure file at ``path`` (JSON or TOML) with its dampers and force: the structure as
-    :func:`symimpact.model.structure.read_structure` reads it, ``"dampers"`` and ``"force"`` as
-    the module text says."""
+    """The structure file at ``path`` (JSON or TOML) with its dampers, stops and force: the
+    structure as :func:`symimpact.model.structure.read_structure` reads it, ``"dampers"``,
+    ``"stops"`` and ``"force"`` as the module text says."""
     data, base = parsed_file(path)
     return model_from_dict(data, base)
 
