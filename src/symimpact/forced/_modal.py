@@ -78,6 +78,7 @@ from ._rigid import (
     P_m,
     _accel_bound,
     _grow,
+    _transition,
     _vf,
     _xf,
     restitution,
@@ -830,9 +831,92 @@ def _dot(Phi, row, v):
     return out
 
 
+# --- the monodromy: the flights' transition matrices and the events' saltation matrices -------
+
+
+@njit(cache=True)
+def _flight_jacobian(pm, cfg, K, tau, G):
+    """G ← Φ(τ)·G over a flight of τ: per mode Step 8's Φᵢ(τ) (the generated
+    ``forced_transition``, which the forcing does not enter) while the modes are uncoupled, else
+    Re(V e^{Λτ} V⁻¹) of the coupled structure (:func:`_config`); each free mass y += τ·ẏ.  The
+    state is (q, q̇, y, ẏ): 2N + 2K."""
+    N = pm.shape[0]
+    D = 2 * N + 2 * K
+    F = np.zeros((D, D))
+    if cfg[6]:
+        for i in range(N):
+            M, Ki, C = pm[i, P_M], pm[i, P_K], pm[i, P_C]
+            _, _, p11, p12, p21, p22 = _transition(tau, M, Ki, C, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
+            F[i, i], F[i, N + i], F[N + i, i], F[N + i, N + i] = p11, p12, p21, p22
+    else:
+        lam, V, Vinv = cfg[1], cfg[2], cfg[3]
+        E = (V * np.exp(lam * tau)) @ Vinv
+        for i in range(2 * N):
+            for j in range(2 * N):
+                F[i, j] = E[i, j].real
+    for k in range(K):
+        F[2 * N + k, 2 * N + k] = 1.0
+        F[2 * N + k, 2 * N + K + k] = tau
+        F[2 * N + K + k, 2 * N + K + k] = 1.0
+    G[:, :] = F @ G
+
+
+@njit(cache=True)
+def _field(pm, cfg, K, t, q, v, u, out):
+    """The state's rate f = (q̇, q̈, ẏ, 0) of the free masses' flight (q̈: each mode's Eq. F1, or
+    the coupled structure's, :func:`_stuck_acceleration`)."""
+    N = pm.shape[0]
+    for i in range(N):
+        out[i] = v[i]
+        if cfg[6]:
+            out[N + i] = _mode_accel(pm, i, pm[i, P_M], t, q[i], v[i])
+        else:
+            out[N + i] = _stuck_acceleration(pm, cfg, t, q, v, i)
+    for k in range(K):
+        out[2 * N + k] = u[k]
+        out[2 * N + K + k] = 0.0
+
+
+@njit(cache=True)
+def _saltation(DJ, fm, fp, gh, G):
+    """G ← S·G with S = D + (f⁺ − D·f⁻)∇hᵀ/(∇h·f⁻): the jump's Jacobian D and the effect of the
+    event's time, which moves with the state (h = 0 on the switching surface, f∓ the rates just
+    before and after)."""
+    den = gh @ fm
+    r = fp - DJ @ fm
+    S = DJ + np.outer(r, gh) / den
+    G[:, :] = S @ G
+
+
+@njit(cache=True)
+def _impact_jump(pm, cfg, Phi, k, K, m, e, mu):
+    """D: the Jacobian of Step 15's impact law (Eq. F7) of damper k in the state (q, q̇, y, ẏ):
+    q̇ += M_s⁻¹φ·P, ẏₖ −= P/m with P = (1 + e)μ(ẏₖ − φᵀq̇), linear in the speeds."""
+    N = pm.shape[0]
+    D = 2 * N + 2 * K
+    DJ = np.eye(D)
+    w = np.zeros(N)
+    for i in range(N):
+        if cfg[6]:
+            w[i] = Phi[k, i] / pm[i, P_M]
+        else:
+            for j in range(N):
+                w[i] += cfg[0][i, j] * Phi[k, j]
+    c = (1.0 + e) * mu
+    ku = 2 * N + K + k
+    for i in range(N):
+        for j in range(N):
+            DJ[N + i, N + j] -= c * w[i] * Phi[k, j]
+        DJ[N + i, ku] += c * w[i]
+    for j in range(N):
+        DJ[ku, N + j] += c * Phi[k, j] / m
+    DJ[ku, ku] -= c / m
+    return DJ
+
+
 @njit(cache=True)
 def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0, Pout, t_end,
-        max_events, watch):  # fmt: skip
+        max_events, variational, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
@@ -849,7 +933,11 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
     kinds KIND_ONSET and KIND_EXIT, has E_DAMPER = K + s, its wall in E_SIDE and the point's
     speed in E_VREL), ``period_max[k, p]`` the largest abs(x) at output point p in forcing period
     k, ledger = (work of the forces, dissipation of the Cᵢ, loss in impacts, dissipation of the
-    stops' dashpots), final = (t, q…, q̇…, y…, ẏ…, stuck…, contact…).
+    stops' dashpots), final = (t, q…, q̇…, y…, ẏ…, stuck…, contact…), and with
+    ``variational`` G = ∂(q, q̇, y, ẏ)(t_end)/∂(q, q̇, y, ẏ)(0), the chain of the flights'
+    transition matrices and the events' saltation matrices (:func:`_flight_jacobian`,
+    :func:`_saltation`); NaN where the run is not differentiable so (a mass sticks or its
+    chatter accumulates, e varies with the speed, or an event meets its surface at zero rate).
     """
     N, K = pm0.shape[0], Phi.shape[0]
     T_f = 2.0 * math.pi / pm0[0, P_W]
@@ -881,10 +969,13 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
     # scratch for the searches and the ledger, allocated once: bounds A, B and the held-off
     # times of the dampers; two state buffers; z at the grid's ends; two more state buffers;
     # the release search's last values; the output points' bounds, last velocities and
-    # displacements
-    # (one array, its rows: a tuple of arrays costs a reference count per array at every call)
     # displacements; the stops' bounds A, B, displacements at the grid's ends and held-off times
+    # (one array, its rows: a tuple of arrays costs a reference count per array at every call)
     work = np.empty((19, max(N, K, P, S)))
+    D = 2 * N + 2 * K
+    G = np.eye(D)
+    fm, fp, gh = np.empty(D), np.empty(D), np.zeros(D)
+    smooth = variational
     v_before = np.empty(N)
     let_go = np.zeros(K, dtype=np.int64)
     for k in range(K):
@@ -918,6 +1009,11 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
         _segment(pm, cfg, nstuck, Pout, t, q, v, tau, ledger, period_max, n_periods, work, Sphi,
                  sc, contact)  # fmt: skip
         _states(pm, cfg, nstuck, t, q, v, tau, qn, vn)
+        if smooth:
+            if nstuck > 0:
+                smooth = False
+            else:
+                _flight_jacobian(pm, cfg, K, tau, G)
         for j in range(K):
             if stuck[j] == 0:
                 z[j] = z[j] + u[j] * tau - _dot(Phi, j, qn) + _dot(Phi, j, q)
@@ -930,9 +1026,16 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
         if k < 0 and ks >= 0 and tau >= T:
             # --- stop ks's contact begins (on wall ws) or ends ---
             wall = ws if ws != 0 else contact[ks]
+            if smooth:
+                _field(pm, cfg, K, t, q, v, u, fm)
             contact[ks] = ws
             cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
             pm = cfg[7]
+            if smooth:  # the state is continuous, the rate jumps by the dashpot's force
+                _field(pm, cfg, K, t, q, v, u, fp)
+                gh[:] = 0.0
+                gh[:N] = Sphi[ks]
+                _saltation(np.eye(D), fm, fp, gh, G)
             fresh = ks
             xd = _dot(Sphi, ks, v)
             events, n_ev = _log(events, n_ev, t, _dot(Sphi, ks, q), xd, 0.0, float(wall),
@@ -944,6 +1047,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
             continue
         if k < 0 and kr >= 0 and tau >= T and t < t_end:
             # --- release of damper kr: it leaves its wall with the point's velocity ---
+            smooth = False
             s = float(stuck[kr])
             stuck[kr] = 0
             nstuck -= 1
@@ -966,6 +1070,11 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
         xd = _dot(Phi, k, v)
         vrel = s * (u[k] - xd)  # approach speed, ≥ 0
         e = restitution(ed[k], vyd[k], vrel)
+        if smooth:
+            if vyd[k] > 0.0:
+                smooth = False
+            else:
+                _field(pm, cfg, K, t, q, v, u, fm)
         v_before[:] = v
         let_go[:] = 0
         while True:  # a stuck mass its wall would have to pull during the impulse is let go
@@ -991,6 +1100,13 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
         for j in range(K):
             if stuck[j] != 0:
                 u[j] = _dot(Phi, j, v)
+        if smooth:
+            _field(pm, cfg, K, t, q, v, u, fp)
+            gh[:] = 0.0
+            for i in range(N):
+                gh[i] = -s * Phi[k, i]
+            gh[2 * N + k] = s
+            _saltation(_impact_jump(pm, cfg, Phi, k, K, md[k], e, mu), fm, fp, gh, G)
         lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
         ledger[2] += lost
         events, n_ev = _log(events, n_ev, t, _dot(Phi, k, q), xd, u_before, s, vrel, lost,
@@ -1004,6 +1120,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
         if a > 0.0 and e < 1.0 and vyd[k] <= 0.0:
             delta = 2.0 * w / (a * (1.0 - e))
             if delta <= chat * T_f and t + delta < t_end:
+                smooth = False
                 # jump to the accumulation point (the other masses fly on), close plastically
                 _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods,
                          work, Sphi, sc, contact)  # fmt: skip
@@ -1031,6 +1148,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
             elif w != 0.0 and delta != 0.0:
                 continue
             # --- the mass rides on its point from here ---
+            smooth = False
             stuck[k] = side
             nstuck += 1
             cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
@@ -1050,7 +1168,9 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
     final[1 + 2 * N + K : 1 + 2 * N + 2 * K] = u
     for r in range(S):
         final[1 + 2 * N + 3 * K + r] = contact[r]
-    return status, events, n_ev, period_max, ledger, final
+    if not smooth:
+        G[:, :] = np.nan
+    return status, events, n_ev, period_max, ledger, final, G
 
 
 @njit(cache=True)
@@ -1063,11 +1183,11 @@ def one_mode_run(p, state0, t_end, max_events, watch):
     ledger's first three terms (no stops), final = (t, x, ẋ, y, ẏ, 1.0 if it ended stuck)."""
     pm = p.reshape((1, p.shape[0])).copy()
     one = np.ones((1, 1))
-    status, events, n_ev, period_max, ledger, final = run(
+    status, events, n_ev, period_max, ledger, final, _ = run(
         pm, one, np.array([p[P_m]]), np.array([p[P_h]]), np.array([p[P_e]]),
         np.array([p[P_VY]]), p[P_CHAT], np.zeros((0, 1)), np.zeros(0),
         np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
-        state0[2:3].copy(), state0[3:4].copy(), one, t_end, max_events, watch,
+        state0[2:3].copy(), state0[3:4].copy(), one, t_end, max_events, False, watch,
     )  # fmt: skip
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
     if final[5] != 0.0:

@@ -68,6 +68,10 @@ class StructureResult:
     final_state: np.ndarray
     notes: list[str] = field(default_factory=list)
     stops: tuple[Stop, ...] = ()
+    #: with ``variational``: ∂(q, q̇, y, ẏ)(t_end)/∂(q, q̇, y, ẏ)(0), the chain of the flights'
+    #: transition matrices and the events' saltation matrices; NaN where the motion is not
+    #: differentiable so (a mass sticks, or its chatter accumulates)
+    monodromy: np.ndarray | None = None
 
     def contacts(self, stop: str) -> np.ndarray:
         """The times at which stop ``stop``'s contacts begin [s]."""
@@ -144,7 +148,8 @@ def _energy(pm: np.ndarray, md: np.ndarray, q, v, u, stops: tuple[Stop, ...] = (
 
 def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega: Any,
                        periods: Any = 400, phase: Any = 0.0, state: Any = None,
-                       chatter: Any = CHATTER, stops: Any = ()) -> StructureResult:  # fmt: skip
+                       chatter: Any = CHATTER, stops: Any = (),
+                       variational: bool = False) -> StructureResult:  # fmt: skip
     """Simulate ``structure`` with ``dampers`` (a sequence of :class:`~symimpact.model.dampers.
     Damper`) under the force F₀cos(Ωt + φ) at point ``force_at`` [N, rad/s, rad] for ``periods``
     forcing periods, from rest or from ``state`` = (q…, q̇…, y…, ẏ…) (modal coordinates, then
@@ -156,7 +161,8 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     a pressed stop adds its spring and dashpot to the structure, whose flight stays closed form
     (:mod:`symimpact.model.stops`).  A structure with stops may carry no damper.  Refused in one
     line: an undamped mode driven at its own frequency (Eq. F1 cancels there, as in
-    :func:`~symimpact.forced.simulate_forced`)."""
+    :func:`~symimpact.forced.simulate_forced`).  ``variational``: carry the state's Jacobian
+    (:attr:`StructureResult.monodromy`)."""
     structure = instance("structure", structure, Structure, "a Structure")
     dampers = tuple(dampers) if isinstance(dampers, (list, tuple)) else dampers
     stops = tuple(stops) if isinstance(stops, (list, tuple)) else stops
@@ -210,7 +216,7 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         raise ParameterError("periods", f"{n_periods} forcing periods last {natural:.3g} periods "
                                         f"of the highest mode; at most "
                                         f"{budgets.MAX_NATURAL_PERIODS:.0e}")  # fmt: skip
-    status, events, n_ev, period_max, ledger, final = _interrupt.call(
+    status, events, n_ev, period_max, ledger, final, G = _interrupt.call(
         _modal.run,
         pm,
         Phi,
@@ -231,6 +237,7 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         Pout,
         t_end,
         budgets.MAX_EVENTS,
+        bool(variational),
     )
     events = events[:n_ev]
     if status == _modal.SINGULAR_STUCK:
@@ -256,7 +263,7 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
               "relative_residual": abs(residual) / scale}  # fmt: skip
     return StructureResult(structure, dampers, point, F0, omega, t_end, events,
                            structure.points, period_max[:n_periods], energy, final,
-                           stops=stops)  # fmt: skip
+                           stops=stops, monodromy=G if variational else None)  # fmt: skip
 
 
 def _pressed(st: Stop, x: float) -> int:
