@@ -94,3 +94,59 @@ def test_an_orbit_that_sticks_is_refused_in_one_line():
     start = _settled(structure, [d], [], 0.55, 20)
     with pytest.raises(MethodNotApplicable, match="sticks"):
         shoot_structure(structure, [d], "1", F0, 0.55, start)
+
+
+CHAIN_FILE = {"fe": FE, "stops": [{"name": "s", "at": 0, "gap": 1, "side": "+",
+                                   "contact": "linear", "k1": 100, "c1": 0}],
+              "force": {"at": 1, "amplitude": 0.1}}  # fmt: skip
+
+
+def _periodic(tmp_path, capsys, *args):
+    import json
+
+    from symimpact.cli import main
+
+    path = tmp_path / "chain.json"
+    path.write_text(json.dumps(CHAIN_FILE))
+    code = main(["periodic", "--structure", str(path), *args])
+    return code, capsys.readouterr()
+
+
+def test_periodic_shoots_the_issue_s_chain_on_the_command_line(tmp_path, capsys):
+    import json
+
+    from symimpact.model.structure_model import model_from_dict
+
+    code, out = _periodic(tmp_path, capsys, "--omega", "0.65", "--json")
+    assert code == 0, out.err
+    got = json.loads(out.out)
+    assert got["periods"] == 1 and got["stable"] and got["impacts"] == {"s": 1}
+    model = model_from_dict(CHAIN_FILE)
+    start = simulate_structure(model.structure, [], "1", F0, 0.65, periods=300,
+                               stops=model.stops).final_state[1:5]  # fmt: skip
+    orbit = shoot_structure(model.structure, [], "1", F0, 0.65, start, stops=model.stops)
+    assert got["state"] == [float(x) for x in orbit.state]
+
+
+def test_a_period_four_motion_is_named_and_then_shot(tmp_path, capsys):
+    """At Ω 0.62 the chain's stop has doubled the period twice: one period's shooting is refused
+    naming --multiple with the period the settled run returns after, which then shoots."""
+    import json
+
+    code, out = _periodic(tmp_path, capsys, "--omega", "0.62")
+    assert code == 2 and out.err.count("\n") == 1
+    assert "error: multiple:" in out.err and "try --multiple 4" in out.err
+    code, out = _periodic(tmp_path, capsys, "--omega", "0.62", "--multiple", "4", "--json")
+    assert code == 0, out.err
+    got = json.loads(out.out)
+    assert got["stable"] and got["periods"] == 4
+    # brute force: the orbit's state comes back after 4 periods, not after 1 or 2
+    from symimpact.model.structure_model import model_from_dict
+
+    model = model_from_dict(CHAIN_FILE)
+    state = np.array(got["state"])
+    back = {k: simulate_structure(model.structure, [], "1", F0, 0.62, periods=k, state=state,
+                                  stops=model.stops).final_state[1:5] for k in (1, 2, 4)}  # fmt: skip
+    scale = np.max(np.abs(state))
+    assert np.max(np.abs(back[4] - state)) < 1e-10 * scale
+    assert min(np.max(np.abs(back[k] - state)) for k in (1, 2)) > 1e-2 * scale

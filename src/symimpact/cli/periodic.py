@@ -28,11 +28,11 @@ def add_parser(sub: Any) -> None:
     p.add_argument(
         "--method",
         choices=METHODS,
-        default="closed-form",
+        default=None,
         help="closed-form: the symmetric two-impact orbits of the rigid law (Masri & Caughey), "
         "Eq. F3; shooting: the orbit a run from rest settles near, by Newton on the "
         "stroboscopic map (any impacting orbit, subharmonics with --multiple); default "
-        "closed-form",
+        "closed-form (shooting for a --structure file with dampers or stops)",
     )
     g = p.add_argument_group("shooting")
     g.add_argument(
@@ -86,6 +86,10 @@ def run(ns) -> None:
     from ..model.display import display_unit, omega_text, shown
     from .frf import contact_of
 
+    if getattr(ns, "structure_model", None) is not None:
+        return _structure_orbit(ns)
+    if ns.method is None:
+        ns.method = "closed-form"
     if ns.response is not None:  # refused before any orbit is computed
         from ..forced.responses import checked_response
 
@@ -159,6 +163,71 @@ def _shooting(ns, system, forcing, e) -> None:
         f"{'stable' if o.stable else 'unstable'} (largest |multiplier| {o.multipliers[0]:.6g})"
     ) + (f"\n{extra}" if extra else "")
     emit(ns, out, text)
+
+
+def _structure_orbit(ns) -> None:
+    """A structure file with dampers or stops: the orbit a run from rest settles near, by
+    shooting on the state of its N modes and K dampers (:func:`symimpact.forced.structure_orbits.
+    shoot_structure`: the monodromy carried through every flight, impact and contact)."""
+    import numpy as np
+
+    from ..errors import ParameterError
+    from ..forced import Forcing
+    from ..forced.simulation import MAX_MULTIPLE, period_count
+    from ..forced.structure_orbits import shoot_structure
+    from ..forced.structure_response import simulate_structure
+    from ..model.display import omega_text
+    from .common import quantity_text
+
+    if ns.method == "closed-form":
+        raise ParameterError("method", "the closed form (Eq. F3) is the one-mode primary's: a "
+                                       "structure's orbits are found by --method shooting")  # fmt: skip
+    for key, why in (("response", "the responses of a structure's orbit are not built yet: "
+                                  "--json gives every point's amplitude"),
+                     ("chi", "the file gives each damper's and stop's contact")):  # fmt: skip
+        if getattr(ns, key, None) is not None:
+            raise ParameterError(key, why)
+    if ns.omega is None and ns.freq is None:
+        raise ParameterError("omega", "give the forcing frequency: --omega Ω or --freq f")
+    if ns.omega is not None and ns.freq is not None:
+        raise ParameterError("omega", "give the forcing frequency once: --omega or --freq")
+    model = ns.structure_model
+    forcing = Forcing(F0=model.F0, omega=ns.omega, freq=ns.freq,
+                      phase=0.0 if ns.phase is None else ns.phase)  # fmt: skip
+    warmup = period_count("warmup", "300" if ns.warmup is None else ns.warmup)
+    multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
+    if not 1 <= multiple <= MAX_MULTIPLE:
+        raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
+    args = (model.structure, model.dampers, model.force_at, model.F0, forcing.omega)
+    settled = simulate_structure(*args, periods=warmup, phase=forcing.phase, stops=model.stops)
+    n = 2 * len(model.structure.modes) + 2 * len(model.dampers)
+    start = settled.final_state[1 : 1 + n]
+    try:
+        o = shoot_structure(*args, start, multiple, model.stops, forcing.phase)
+    except ParameterError as exc:  # Newton's start, named for the options that set it
+        returns = []
+        for k in range(1, 9):  # how near the settled motion comes back within 8 periods
+            back = simulate_structure(*args, periods=k, phase=forcing.phase, state=start,
+                                      stops=model.stops).final_state[1 : 1 + n]  # fmt: skip
+            returns.append(float(np.max(np.abs(back - start)) / np.max(np.abs(start))))
+        k = 1 + int(np.argmin(returns))
+        raise ParameterError("multiple", f"no orbit of {multiple} period(s) near the state after "
+                             f"--warmup {warmup} periods (Newton's method: {exc.reason}); that "
+                             f"motion comes back nearest after {k} period(s) (to "
+                             f"{returns[k - 1]:.1e} of the state): try --multiple {k}, or a "
+                             "longer --warmup if it is still settling") from None  # fmt: skip
+    big = max(abs(m) for m in o.multipliers)
+    text = (
+        f"Ω {omega_text(forcing.omega)}: an orbit of {multiple} forcing period(s) of the "
+        f"{len(model.structure.modes)}-mode structure by shooting from {warmup} periods from rest "
+        f"({o.iterations} Newton steps, residual {o.residual:.1e}), "
+        f"{'stable' if o.stable else 'unstable'} (largest |multiplier| {big:.6g})\n"
+        + "".join(f"{name}: {count} {'contacts' if name in {s.name for s in model.stops} else 'impacts'}"
+                  f" in the orbit\n" for name, count in o.impacts.items())
+        + "\n".join(f"amplitude at {p!r}: {quantity_text('x', a)}"
+                    for p, a in o.amplitudes.items())
+    )  # fmt: skip
+    emit(ns, o.as_dict(), text)
 
 
 #: The subcommands this module runs.

@@ -116,9 +116,9 @@ def shoot_structure(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
         # +1 (it may rest anywhere in its clearance), and the step is the shortest one
         step = np.linalg.lstsq(G - np.eye(len(s)), -r, rcond=1e-13)[0]
         s = s + step
-    raise ParameterError("state", f"Newton's method did not converge in {max_iterations} "
-                                  f"iterations (last relative residual {residual:.2g}): start "
-                                  "from a settled state nearer the orbit")  # fmt: skip
+    raise ParameterError("state", f"no convergence in {max_iterations} iterations (last "
+                                  f"relative residual {residual:.2g}): start from a settled "
+                                  "state nearer the orbit")  # fmt: skip
 
 
 def _orbit(s: np.ndarray, k: int, G: np.ndarray, iterations: int, residual: float,
