@@ -94,3 +94,52 @@ def test_a_grazing_is_reported_with_the_contacts_on_both_sides(chain):
     assert branch.grazings[0]["after"] == {"s": 1}
     lo, hi = branch.grazings[0]["between"]
     assert 0.58 < lo < hi < 0.585
+
+
+def test_the_doubled_branch_holds_the_attractor_a_brute_force_run_settles_on(chain):
+    from symimpact.forced.structure_branch import doubled_branch
+    from symimpact.forced.structure_orbits import shoot_structure
+
+    model, args, start = chain
+    parent = structure_branch(*args, 0.66, 0.75, start, 1, model.stops)
+    pd = next(b for b in parent.bifurcations if b.kind == PERIOD_DOUBLING)
+    daughter = doubled_branch(*args, pd, 0.7345, model.stops)
+    assert daughter is not None and not daughter.ended
+    assert all(o.periods == 2 and o.stable for o in daughter.orbits)
+    # brute force at the branch's end: the parent's orbit, perturbed, settles on a motion of
+    # two periods; shot from there it is the daughter's last orbit
+    near = parent.orbits[int(np.argmin(np.abs(parent.omegas - 0.7345)))]
+    settled, back = _settled(args, model.stops, 0.7345, near.state * (1.0 + 1e-4), 1000)
+    assert back[0] > 1e-2 and back[1] < 1e-9
+    end = daughter.orbits[-1]
+    assert end.run.omega == pytest.approx(0.7345, rel=1e-14)
+    shot = shoot_structure(*args, 0.7345, settled, 2, model.stops)
+    assert shot.amplitudes["0"] == pytest.approx(end.amplitudes["0"], rel=1e-9)
+
+
+def test_frf_of_the_issue_s_chain_on_the_command_line(tmp_path, capsys):
+    import json
+
+    from symimpact.cli import main
+
+    path = tmp_path / "chain.json"
+    path.write_text(json.dumps(CHAIN_FILE))
+    code = main(["frf", "--structure", str(path), "--omega-range", "0.5:0.8:0.005", "--json"])
+    assert code == 0, capsys.readouterr().err
+    out = json.loads(capsys.readouterr().out)
+    kinds = {(b["kind"], round(b["omega"], 6)) for br in out["branches"]
+             for b in br["bifurcations"]}  # fmt: skip
+    assert (PERIOD_DOUBLING, 0.732019) in kinds and (NEIMARK_SACKER, 0.619308) in kinds
+    assert any(br["periods"] == 2 for br in out["branches"])
+    # the bare structure's peak is the linear receptance's maximum: against a dense scan of
+    # the closed form (step 1e-6 rad/s: the maximum's flatness puts it within 1e-10)
+    model = model_from_dict(CHAIN_FILE)
+    w = np.arange(0.5, 0.8, 1e-6)
+    for p, bare in out["bare_peaks"].items():
+        dense = np.abs(model.structure.receptance(p, "1", w)).max() * 0.1
+        assert bare["amplitude"] == pytest.approx(dense, rel=1e-9)
+        assert bare["amplitude"] >= dense
+    # the located peak is the largest stable amplitude of every orbit drawn
+    drawn = max(pt["amplitudes"]["0"] for br in out["branches"] for pt in br["points"]
+                if pt["stable"])  # fmt: skip
+    assert out["peaks"]["0"]["amplitude"] >= drawn

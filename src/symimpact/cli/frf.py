@@ -147,7 +147,136 @@ def contact_title(ns, e: Any) -> str:
     return f"e = {float(e):g}" if is_rigid(e) else f"contact {contact_text(e)}"
 
 
+def run_structure(ns) -> None:
+    """A structure file with dampers or stops: its branches of orbits continued over the band
+    from both ends (:func:`symimpact.forced.structure_branch.structure_branch`, each started
+    from the orbit a run from rest settles on, of the fewest periods it comes back after, 1 to
+    8), the period-doubled branch at each located period doubling, and every point's located
+    peak beside the bare structure's (the linear receptance, no damper or stop)."""
+    import numpy as np
+    from scipy.optimize import minimize_scalar
+
+    from ..errors import MethodNotApplicable, ParameterError
+    from ..forced.structure_branch import (
+        PERIOD_DOUBLING,
+        doubled_branch,
+        located_peak,
+        structure_branch,
+    )
+    from ..forced.structure_orbits import shoot_structure
+    from ..forced.structure_response import simulate_structure
+    from ..maps.points import parse_range
+    from ..model.display import omega_text
+    from .common import quantity_text
+
+    for key, flag, why in (("response", "response", "the responses of a structure's orbits are "
+                            "not built yet: the amplitude of every point is given"),
+                           ("plot", "plot", "a structure's curve has no plot yet: --json gives "
+                            "every orbit"),
+                           ("csv", "csv", "a structure's curve has no CSV yet: --json gives "
+                            "every orbit"),
+                           ("chi", "chi", "the file gives each damper's and stop's contact")):  # fmt: skip
+        if getattr(ns, key, None) not in (None, False, "displacement"):
+            raise ParameterError(flag, why)
+    if ns.no_sweeps:
+        raise ParameterError("no-sweeps", "a structure's curve runs no sweeps: its branches start "
+                                          "from the motions settled at the band's ends")  # fmt: skip
+    if (ns.omega_range is None) == (ns.freq_range is None):
+        raise ParameterError("omega-range", "give the band once: --omega-range or --freq-range")
+    name = "omega-range" if ns.omega_range is not None else "freq-range"
+    if ns.omega_range is not None:
+        omegas = parse_range(name, ns.omega_range)
+    else:
+        omegas = 2 * np.pi * parse_range(name, ns.freq_range)
+    if len(omegas) < 2 or omegas[0] <= 0:
+        raise ParameterError(name, "the band needs at least two positive frequencies")
+    lo, hi, step = float(omegas[0]), float(omegas[-1]), float(omegas[1] - omegas[0])
+    model = ns.structure_model
+    args = (model.structure, model.dampers, model.force_at, model.F0)
+    n = 2 * len(model.structure.modes) + 2 * len(model.dampers)
+    branches, notes = [], []
+    for w0, w1 in ((lo, hi), (hi, lo)):
+        start = simulate_structure(*args, w0, periods=300, stops=model.stops)
+        s = start.final_state[1 : 1 + n]
+        for k in range(1, 9):
+            back = simulate_structure(*args, w0, periods=k, state=s, stops=model.stops)
+            if np.linalg.norm(back.final_state[1 : 1 + n] - s) <= 1e-6 * np.linalg.norm(s):
+                break
+        else:
+            notes.append(f"at Ω {omega_text(w0)} the motion 300 periods from rest is not an orbit "
+                         "of up to 8 periods (quasi-periodic or chaotic): no branch from there")  # fmt: skip
+            continue
+        try:
+            shoot_structure(*args, w0, s, k, model.stops)
+            branches.append(structure_branch(*args, w0, w1, s, k, model.stops, step=step))
+        except (MethodNotApplicable, ParameterError) as exc:
+            notes.append(f"no branch from Ω {omega_text(w0)}: {exc}")
+    for b in list(branches):
+        for f in b.bifurcations:
+            if f.kind != PERIOD_DOUBLING:
+                continue
+            lo_side, hi_side = f.sides
+            unstable = hi_side if not hi_side.stable else lo_side
+            end = hi if unstable.run.omega > f.omega else lo
+            d = doubled_branch(*args, f, end, model.stops)
+            if d is None:
+                notes.append(f"the period doubling at Ω {omega_text(f.omega)} has no stable "
+                             "daughter on its unstable side (subcritical)")  # fmt: skip
+            else:
+                branches.append(d)
+    peaks, bare = {}, {}
+    for p in model.structure.points:
+        pk = located_peak(*args, branches, p, model.stops)
+        peaks[p] = None if pk is None else pk.as_dict()
+
+        def minus_linear(w: float, p: str = p) -> float:
+            return -abs(model.structure.receptance(p, model.force_at, w)) * model.F0
+
+        grid = np.linspace(lo, hi, max(len(omegas), 200))
+        i = int(np.argmin([minus_linear(w) for w in grid]))
+        a, c = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
+        found = minimize_scalar(minus_linear, bounds=(a, c), method="bounded",
+                                options={"xatol": 1e-12 * c})  # fmt: skip
+        w_bare = float(found.x) if -found.fun >= -minus_linear(grid[i]) else float(grid[i])
+        bare[p] = {"amplitude": -minus_linear(w_bare), "omega": w_bare}
+    out = {"branches": [dict(b.as_dict(), periods=b.orbits[0].periods) for b in branches],
+           "peaks": peaks, "bare_peaks": bare, "notes": notes}  # fmt: skip
+    lines = [f"Ω {omega_text(lo)}–{omega_text(hi)}: {len(branches)} branch(es) of the "
+             f"{len(model.structure.modes)}-mode structure, "
+             f"{sum(len(b.orbits) for b in branches)} orbits"]  # fmt: skip
+    for i, b in enumerate(branches):
+        ws = b.omegas
+        lines.append(f"branch {i}: {b.orbits[0].periods} period(s), Ω {omega_text(ws.min())}–"
+                     f"{omega_text(ws.max())}, {sum(o.stable for o in b.orbits)} of "
+                     f"{len(b.orbits)} orbits stable" + (f"; {b.ended}" if b.ended else ""))  # fmt: skip
+        for f in b.bifurcations:
+            within = (f" ± {f.tolerance / 2:.2g} rad/s" if f.tolerance > 1e-8 * f.omega
+                      else "")  # fmt: skip
+            lines.append(f"  {f.kind} at Ω {omega_text(f.omega)}{within} (multiplier "
+                         f"{f.multiplier.real:.4f}{f.multiplier.imag:+.4f}i)")  # fmt: skip
+        for g in b.grazings:
+            lines.append(f"  grazing between Ω {omega_text(g['between'][0])} and "
+                         f"{omega_text(g['between'][1])}: {g['before']} → {g['after']}")  # fmt: skip
+    for p in model.structure.points:
+        pk, bp = peaks[p], bare[p]
+        head = f"peak at {p!r}: "
+        if pk is None:
+            head += "no stable orbit traced"
+        else:
+            head += (f"{quantity_text('x', pk['amplitude'])} at Ω {omega_text(pk['omega'])} "
+                     f"({pk['kind']})")  # fmt: skip
+        head += (f"; bare structure {quantity_text('x', bp['amplitude'])} at Ω "
+                 f"{omega_text(bp['omega'])}")  # fmt: skip
+        if pk is not None:
+            head += f", reduction {100 * (1 - pk['amplitude'] / bp['amplitude']):.1f} %"
+        lines.append(head)
+    lines += [f"note: {x}" for x in notes]
+    emit(ns, out, "\n".join(lines))
+
+
 def run(ns) -> None:
+    if getattr(ns, "structure_model", None) is not None:
+        return run_structure(ns)
     from ..forced.frf import frequency_response
     from ..model.display import display_unit, omega_text, shown
 

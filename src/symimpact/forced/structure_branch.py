@@ -43,6 +43,8 @@ class Bifurcation:
     omega: float
     multiplier: complex
     tolerance: float
+    #: the orbits at the bracket's two ends (within ``tolerance`` of each other)
+    sides: tuple[StructureOrbit, StructureOrbit]
 
     def as_dict(self) -> dict[str, Any]:
         return {"kind": self.kind, "omega": self.omega, "tolerance": self.tolerance,
@@ -58,6 +60,9 @@ class StructureBranch:
     bifurcations: list[Bifurcation]
     grazings: list[dict[str, Any]] = field(default_factory=list)
     ended: str = ""
+    #: the orbits at the ends of each located bracket (bifurcations and grazings), beside the
+    #: traced ones: where a stable stretch ends
+    edges: list[StructureOrbit] = field(default_factory=list)
 
     @property
     def omegas(self) -> np.ndarray:
@@ -74,6 +79,18 @@ class StructureBranch:
             "grazings": self.grazings,
             "ended": self.ended,
         }
+
+
+def _returns_after(o: StructureOrbit, periods: int, args: tuple, stops: Any, phase: float) -> bool:
+    """Whether orbit ``o`` comes back after ``periods`` (to 1e-6 of its state's size): an orbit
+    of fewer periods than it was shot for."""
+    from .structure_response import simulate_structure
+
+    run = simulate_structure(*args, o.run.omega, periods=periods, phase=phase, state=o.state,
+                             stops=stops)  # fmt: skip
+    n = len(o.state)
+    gap = np.linalg.norm(run.final_state[1 : 1 + n] - o.state)
+    return bool(gap <= 1e-6 * np.linalg.norm(o.state))
 
 
 def _point(o: StructureOrbit) -> dict[str, Any]:
@@ -111,11 +128,17 @@ def structure_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
     args = (structure, dampers, force_at, F0)
 
     def shot(w: float, s: np.ndarray) -> StructureOrbit:
-        return shoot_structure(*args, w, s, k, stops, phase, max_iterations=12)
+        o = shoot_structure(*args, w, s, k, stops, phase, max_iterations=12)
+        if k % 2 == 0 and _returns_after(o, k // 2, args, stops, phase):
+            # near a doubling the parent, of half the period, is a fixed point of this map too
+            raise MethodNotApplicable("structure_branch", f"the orbit at Ω {w:.9g} rad/s is the "
+                                      f"one of {k // 2} period(s): Newton left the branch")  # fmt: skip
+        return o
 
     orbits = [shot(w0, np.asarray(state, dtype=float))]
     bifurcations: list[Bifurcation] = []
     grazings: list[dict[str, Any]] = []
+    edges: list[StructureOrbit] = []
     h, h_min = h_max, band * 1e-7
     ended = ""
     while direction * (w1 - orbits[-1].run.omega) > 1e-12 * band:
@@ -136,30 +159,46 @@ def structure_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
             h /= 2.0
             continue
         if _unstable(o) != _unstable(last):
-            bifurcations.append(_locate(shot, last, o, locate))
+            found = _locate(shot, last, o, locate)
+            bifurcations.append(found)
+            edges.extend(found.sides)
         if o.impacts != last.impacts:
-            grazings.append({"between": [last.run.omega, o.run.omega], "before": last.impacts,
+            before = last.impacts
+            a, b = _bisect(shot, last, o, locate, lambda x, before=before: x.impacts == before)
+            grazings.append({"between": [a.run.omega, b.run.omega], "before": last.impacts,
                              "after": o.impacts})  # fmt: skip
+            edges.extend((a, b))
         orbits.append(o)
         h = min(2.0 * h, h_max)
-    return StructureBranch(orbits, bifurcations, grazings, ended)
+    return StructureBranch(orbits, bifurcations, grazings, ended, edges)
 
 
-def _locate(shot, a: StructureOrbit, b: StructureOrbit, tol: float) -> Bifurcation:
-    """Bisection in Ω between orbits ``a`` and ``b`` on either side of a crossing, each trial
-    shot from the nearer side's orbit, to ``tol`` of Ω."""
+def _bisect(shot, a: StructureOrbit, b: StructureOrbit, tol: float, like_a) -> tuple:
+    """(lo, hi): the orbits within ``tol`` of Ω of each other between which ``like_a`` turns
+    false, by bisection from ``a`` (true) and ``b`` (false), each trial shot from ``lo`` (or
+    from ``hi`` where that fails); a bracket no trial narrows is returned as it stands."""
     lo, hi = a, b
-    side = _unstable(a)
     while abs(hi.run.omega - lo.run.omega) > tol * abs(hi.run.omega):
         w = 0.5 * (lo.run.omega + hi.run.omega)
         try:
             mid = shot(w, lo.state)
         except (MethodNotApplicable, ParameterError):
-            break
-        if _unstable(mid) == side:
+            try:  # near a grazing Newton may only converge from the other side
+                mid = shot(w, hi.state)
+            except (MethodNotApplicable, ParameterError):
+                break
+        if like_a(mid):
             lo = mid
         else:
             hi = mid
+    return lo, hi
+
+
+def _locate(shot, a: StructureOrbit, b: StructureOrbit, tol: float) -> Bifurcation:
+    """Bisection in Ω between orbits ``a`` and ``b`` on either side of a crossing, each trial
+    shot from the nearer side's orbit, to ``tol`` of Ω."""
+    side = _unstable(a)
+    lo, hi = _bisect(shot, a, b, tol, lambda x: _unstable(x) == side)
     lam = _crossing(hi if abs(abs(_crossing(hi)) - 1) < abs(abs(_crossing(lo)) - 1) else lo)
     angle = abs(math.atan2(lam.imag, lam.real))
     if lo.impacts != hi.impacts:
@@ -171,4 +210,108 @@ def _locate(shot, a: StructureOrbit, b: StructureOrbit, tol: float) -> Bifurcati
     else:
         kind = NEIMARK_SACKER
     omega = 0.5 * (lo.run.omega + hi.run.omega)
-    return Bifurcation(kind, omega, lam, abs(hi.run.omega - lo.run.omega))
+    return Bifurcation(kind, omega, lam, abs(hi.run.omega - lo.run.omega), (lo, hi))
+
+
+@dataclass(frozen=True)
+class StructurePeak:
+    """The largest stable amplitude at a point over some branches [m], at ``omega`` [rad/s]:
+    ``kind`` "maximum" (located along a branch, between orbits of one impact sequence) or
+    "end" (the last stable orbit before a stability change, a grazing or the band's edge)."""
+
+    point: str
+    amplitude: float
+    omega: float
+    kind: str
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"point": self.point, "amplitude": self.amplitude, "omega": self.omega,
+                "kind": self.kind}  # fmt: skip
+
+
+def located_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
+                 branches: list[StructureBranch], point: str, stops: Any = (),
+                 periods: int = 1, phase: float = 0.0) -> StructurePeak | None:  # fmt: skip
+    """The largest stable amplitude at ``point`` over ``branches``: the best traced orbit or
+    stable orbit at a located bracket's end (a bifurcation's or a grazing's, to 1e-9 of Ω), and
+    where the best traced orbit's neighbours on the branch are stable orbits of the same impacts (so the amplitude
+    is smooth there), the maximum between them located by Brent's bounded search on Ω
+    (scipy.optimize.minimize_scalar, to 1e-10 of Ω), each trial shot from the best orbit.  None
+    when no traced orbit is stable."""
+    from scipy.optimize import minimize_scalar
+
+    best: tuple[float, int, int] | None = None
+    for b, branch in enumerate(branches):
+        for i, o in enumerate(branch.orbits):
+            if o.stable and (best is None or o.amplitudes[point] > best[0]):
+                best = (o.amplitudes[point], b, i)
+    ends = [o for branch in branches for o in branch.edges if o.stable]
+    if best is None and not ends:
+        return None
+    end = max(ends, key=lambda o: o.amplitudes[point], default=None)
+    if best is None or (end is not None and end.amplitudes[point] > best[0]):
+        return StructurePeak(point, end.amplitudes[point], end.run.omega, "end")
+    _, b, i = best
+    orbits = branches[b].orbits
+    o = orbits[i]
+    peak = StructurePeak(point, o.amplitudes[point], o.run.omega, "end")
+    if not 0 < i < len(orbits) - 1:
+        return peak
+    lo, hi = orbits[i - 1], orbits[i + 1]
+    if not (lo.stable and hi.stable and lo.impacts == o.impacts == hi.impacts):
+        return peak
+    a, c = sorted((lo.run.omega, hi.run.omega))
+
+    def minus_amplitude(w: float) -> float:
+        try:
+            trial = shoot_structure(structure, dampers, force_at, F0, w, o.state, periods, stops,
+                                    phase, max_iterations=12)  # fmt: skip
+        except (MethodNotApplicable, ParameterError):
+            return -0.0
+        return -trial.amplitudes[point] if trial.impacts == o.impacts else -0.0
+
+    found = minimize_scalar(minus_amplitude, bounds=(a, c), method="bounded",
+                            options={"xatol": 1e-10 * c})  # fmt: skip
+    if -found.fun >= peak.amplitude:
+        return StructurePeak(point, float(-found.fun), float(found.x), "maximum")
+    return peak
+
+
+def doubled_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
+                   bifurcation: Bifurcation, omega_end: Any, stops: Any = (),
+                   phase: float = 0.0) -> StructureBranch | None:  # fmt: skip
+    """The branch of twice the period born at a period doubling, continued to ``omega_end``
+    [rad/s]: its first orbit is shot on the side where the parent is unstable (the daughter of a
+    supercritical doubling lives there), a small step past the located point, from the parent's
+    state pushed along the eigenvector of its multiplier −1 — by 10⁻³ of the state's size,
+    then 10⁻², then 10⁻¹ — and kept when it is genuinely of twice the period (its state after
+    half its periods differs from it by more than 10⁻⁶ of its size; so is every orbit the
+    continuation keeps, which near the doubling could otherwise fall back on the parent, a fixed
+    point of the doubled map too).  None when no push finds one (a
+    subcritical doubling: its daughter is unstable and lives on the other side)."""
+    if bifurcation.kind != PERIOD_DOUBLING:
+        raise ParameterError("bifurcation", f"a period doubling, got a {bifurcation.kind}")
+    lo, hi = bifurcation.sides
+    unstable = hi if _unstable(hi) > _unstable(lo) else lo
+    k = unstable.periods
+    w_end = positive_float("omega_end", omega_end, "rad/s")
+    direction = math.copysign(1.0, unstable.run.omega - bifurcation.omega)
+    if direction * (w_end - bifurcation.omega) <= 0.0:
+        raise ParameterError("omega_end", "must lie on the side of the doubling where the parent "
+                                          "orbit is unstable")  # fmt: skip
+    G = unstable.run.monodromy
+    values, vectors = np.linalg.eig(G)
+    v = np.real(vectors[:, int(np.argmin(np.abs(values + 1.0)))])
+    scale = float(np.linalg.norm(unstable.state))
+    w = bifurcation.omega + direction * 1e-4 * abs(w_end - bifurcation.omega)
+    for push in (1e-3, 1e-2, 1e-1):
+        try:
+            o = shoot_structure(structure, dampers, force_at, F0, w,
+                                unstable.state + push * scale * v / np.linalg.norm(v), 2 * k,
+                                stops, phase, max_iterations=20)  # fmt: skip
+        except (MethodNotApplicable, ParameterError):
+            continue
+        if not _returns_after(o, k, (structure, dampers, force_at, F0), stops, phase):
+            return structure_branch(structure, dampers, force_at, F0, w, w_end, o.state, 2 * k,
+                                    stops, phase=phase)  # fmt: skip
+    return None
