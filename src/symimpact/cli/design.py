@@ -42,6 +42,11 @@ def add_parser(sub: Any) -> None:
                    help="what the peaks measure: displacement (max |x|, default), "
                    "relative-displacement, acceleration, force (into the base) or "
                    "transmissibility, as for frf --response")  # fmt: skip
+    g = p.add_argument_group("a --structure file with dampers")
+    g.add_argument("--damper", default=None, metavar="NAME",
+                   help="the damper whose clearance --gaps sweeps; default the file's first")  # fmt: skip
+    g.add_argument("--point", default=None, metavar="NAME",
+                   help="the point whose peak is compared; default the driven point")  # fmt: skip
     g = p.add_argument_group("execution and files")
     g.add_argument("--executor", choices=("serial", "processes", "dask"), default=None,
                    help="where the designs run (default: local processes)")  # fmt: skip
@@ -58,7 +63,72 @@ def add_parser(sub: Any) -> None:
     g.add_argument("--csv", metavar="FILE", help="write the rows as CSV (SI, units in headers)")
 
 
+def run_structure(ns) -> None:
+    """--structure FILE with dampers: one damper's clearance chosen by the located peak of the
+    structure's curve at a point (:func:`symimpact.maps.structure_design.structure_design`)."""
+    import numpy as np
+
+    from ..errors import ParameterError
+    from ..maps.points import parse_range
+    from ..maps.structure_design import structure_design
+    from ..model.display import omega_text
+    from .common import quantity_text
+
+    refused = {"mass_ratios": "mass-ratios", "multistart": "multistart", "no_refine": "no-refine",
+               "executor": "executor", "workers": "workers", "scheduler": "scheduler",
+               "out": "out", "plot": "plot", "csv": "csv", "chi": "chi"}  # fmt: skip
+    for key, flag in refused.items():
+        if getattr(ns, key, None) not in (None, False):
+            raise ParameterError(flag, "not taken by a structure's design yet (it sweeps one "
+                                       "damper's clearance, in this process)")  # fmt: skip
+    if ns.response not in (None, "displacement"):
+        raise ParameterError("response", "a structure's design compares displacements")
+    if (ns.omega_range is None) == (ns.freq_range is None):
+        raise ParameterError("omega-range", "give the band once: --omega-range or --freq-range")
+    name = "omega-range" if ns.omega_range is not None else "freq-range"
+    if ns.omega_range is not None:
+        omegas = parse_range(name, ns.omega_range)
+    else:
+        omegas = 2 * np.pi * parse_range(name, ns.freq_range)
+    if len(omegas) < 2 or omegas[0] <= 0:
+        raise ParameterError(name, "the band needs at least two positive frequencies")
+    model = ns.structure_model
+    if not model.dampers:
+        raise ParameterError("structure", f"{ns.structure} gives no damper to design")
+    damper = model.dampers[0].name if ns.damper is None else ns.damper
+    point = model.force_at if ns.point is None else ns.point
+    try:
+        model.structure._point(point)
+    except ParameterError as exc:
+        raise ParameterError("point", exc.reason) from None
+    gaps = parse_range("gaps", ns.gaps)
+    d = structure_design(model.structure, model.dampers, model.force_at, model.F0, damper,
+                         gaps, float(omegas[0]), float(omegas[-1]),
+                         float(omegas[1] - omegas[0]), point, model.stops)  # fmt: skip
+    lines = [f"damper {damper!r}: its clearance against the peak at {point!r} over Ω "
+             f"{omega_text(omegas[0])}–{omega_text(omegas[-1])}"]  # fmt: skip
+    for g, pk in zip(d.gaps, d.peaks, strict=True):
+        lines.append(f"  gap {quantity_text('gap', g)}: " + ("no stable orbit traced" if pk is None
+                     else f"peak {quantity_text('x', pk.amplitude)} at Ω {omega_text(pk.omega)} "
+                     f"({pk.kind})"))  # fmt: skip
+    best = d.best
+    lines.append(f"bare structure: {quantity_text('x', d.bare.amplitude)} at Ω "
+                 f"{omega_text(d.bare.omega)}")  # fmt: skip
+    if best is not None:
+        lines.append(f"best: gap {quantity_text('gap', best[0])}, peak "
+                     f"{quantity_text('x', best[1].amplitude)} (reduction "
+                     f"{100 * (1 - best[1].amplitude / d.bare.amplitude):.1f} %)")  # fmt: skip
+    emit(ns, d.as_dict(), "\n".join(lines))
+
+
 def run(ns) -> None:
+    if getattr(ns, "structure_model", None) is not None:
+        return run_structure(ns)
+    if ns.damper is not None or ns.point is not None:
+        from ..errors import ParameterError
+
+        raise ParameterError("damper" if ns.damper is not None else "point",
+                             "names a damper or point of a --structure file with dampers")  # fmt: skip
     from ..errors import ParameterError
     from ..maps.design import best_clearances, design_map, refine_best
     from ..maps.points import parse_range

@@ -149,22 +149,13 @@ def contact_title(ns, e: Any) -> str:
 
 def run_structure(ns) -> None:
     """A structure file with dampers or stops: its branches of orbits continued over the band
-    from both ends (:func:`symimpact.forced.structure_branch.structure_branch`, each started
-    from the orbit a run from rest settles on, of the fewest periods it comes back after, 1 to
-    8), the period-doubled branch at each located period doubling, and every point's located
-    peak beside the bare structure's (the linear receptance, no damper or stop)."""
+    from both ends with the period-doubled branches
+    (:func:`symimpact.forced.structure_branch.structure_curve`) and every point's located peak
+    beside the bare structure's (the linear receptance, no damper or stop)."""
     import numpy as np
-    from scipy.optimize import minimize_scalar
 
-    from ..errors import MethodNotApplicable, ParameterError
-    from ..forced.structure_branch import (
-        PERIOD_DOUBLING,
-        doubled_branch,
-        located_peak,
-        structure_branch,
-    )
-    from ..forced.structure_orbits import shoot_structure
-    from ..forced.structure_response import simulate_structure
+    from ..errors import ParameterError
+    from ..forced.structure_branch import bare_peak, curve_peak, structure_curve
     from ..maps.points import parse_range
     from ..model.display import omega_text
     from .common import quantity_text
@@ -193,54 +184,14 @@ def run_structure(ns) -> None:
     lo, hi, step = float(omegas[0]), float(omegas[-1]), float(omegas[1] - omegas[0])
     model = ns.structure_model
     args = (model.structure, model.dampers, model.force_at, model.F0)
-    n = 2 * len(model.structure.modes) + 2 * len(model.dampers)
-    branches, notes = [], []
-    for w0, w1 in ((lo, hi), (hi, lo)):
-        start = simulate_structure(*args, w0, periods=300, stops=model.stops)
-        s = start.final_state[1 : 1 + n]
-        for k in range(1, 9):
-            back = simulate_structure(*args, w0, periods=k, state=s, stops=model.stops)
-            if np.linalg.norm(back.final_state[1 : 1 + n] - s) <= 1e-6 * np.linalg.norm(s):
-                break
-        else:
-            notes.append(f"at Ω {omega_text(w0)} the motion 300 periods from rest is not an orbit "
-                         "of up to 8 periods (quasi-periodic or chaotic): no branch from there")  # fmt: skip
-            continue
-        try:
-            shoot_structure(*args, w0, s, k, model.stops)
-            branches.append(structure_branch(*args, w0, w1, s, k, model.stops, step=step))
-        except (MethodNotApplicable, ParameterError) as exc:
-            notes.append(f"no branch from Ω {omega_text(w0)}: {exc}")
-    for b in list(branches):
-        for f in b.bifurcations:
-            if f.kind != PERIOD_DOUBLING:
-                continue
-            lo_side, hi_side = f.sides
-            unstable = hi_side if not hi_side.stable else lo_side
-            end = hi if unstable.run.omega > f.omega else lo
-            d = doubled_branch(*args, f, end, model.stops)
-            if d is None:
-                notes.append(f"the period doubling at Ω {omega_text(f.omega)} has no stable "
-                             "daughter on its unstable side (subcritical)")  # fmt: skip
-            else:
-                branches.append(d)
+    curve = structure_curve(*args, lo, hi, step, model.stops)
+    branches, notes = curve.branches, curve.notes
     peaks, bare = {}, {}
     for p in model.structure.points:
-        pk = located_peak(*args, branches, p, model.stops)
+        pk = curve_peak(*args, curve, p, model.stops)
         peaks[p] = None if pk is None else pk.as_dict()
-
-        def minus_linear(w: float, p: str = p) -> float:
-            return -abs(model.structure.receptance(p, model.force_at, w)) * model.F0
-
-        grid = np.linspace(lo, hi, max(len(omegas), 200))
-        i = int(np.argmin([minus_linear(w) for w in grid]))
-        a, c = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
-        found = minimize_scalar(minus_linear, bounds=(a, c), method="bounded",
-                                options={"xatol": 1e-12 * c})  # fmt: skip
-        w_bare = float(found.x) if -found.fun >= -minus_linear(grid[i]) else float(grid[i])
-        bare[p] = {"amplitude": -minus_linear(w_bare), "omega": w_bare}
-    out = {"branches": [dict(b.as_dict(), periods=b.orbits[0].periods) for b in branches],
-           "peaks": peaks, "bare_peaks": bare, "notes": notes}  # fmt: skip
+        bare[p] = bare_peak(model.structure, model.force_at, model.F0, p, lo, hi).as_dict()
+    out = curve.as_dict() | {"peaks": peaks, "bare_peaks": bare}
     lines = [f"Ω {omega_text(lo)}–{omega_text(hi)}: {len(branches)} branch(es) of the "
              f"{len(model.structure.modes)}-mode structure, "
              f"{sum(len(b.orbits) for b in branches)} orbits"]  # fmt: skip

@@ -231,7 +231,7 @@ class StructurePeak:
 
 def located_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
                  branches: list[StructureBranch], point: str, stops: Any = (),
-                 periods: int = 1, phase: float = 0.0) -> StructurePeak | None:  # fmt: skip
+                 phase: float = 0.0) -> StructurePeak | None:  # fmt: skip
     """The largest stable amplitude at ``point`` over ``branches``: the best traced orbit or
     stable orbit at a located bracket's end (a bifurcation's or a grazing's, to 1e-9 of Ω), and
     where the best traced orbit's neighbours on the branch are stable orbits of the same impacts (so the amplitude
@@ -264,8 +264,8 @@ def located_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
 
     def minus_amplitude(w: float) -> float:
         try:
-            trial = shoot_structure(structure, dampers, force_at, F0, w, o.state, periods, stops,
-                                    phase, max_iterations=12)  # fmt: skip
+            trial = shoot_structure(structure, dampers, force_at, F0, w, o.state, o.periods,
+                                    stops, phase, max_iterations=12)  # fmt: skip
         except (MethodNotApplicable, ParameterError):
             return -0.0
         return -trial.amplitudes[point] if trial.impacts == o.impacts else -0.0
@@ -315,3 +315,117 @@ def doubled_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
             return structure_branch(structure, dampers, force_at, F0, w, w_end, o.state, 2 * k,
                                     stops, phase=phase)  # fmt: skip
     return None
+
+
+@dataclass(frozen=True)
+class StructureCurve:
+    """A structure's response curve over a band: the traced branches, the runs from rest at
+    each frequency of the band's grid (``settled``: {"omega", "amplitudes": {point: m}}, each
+    point's largest abs(x) over the last quarter of ``warmup`` periods) and notes."""
+
+    branches: list[StructureBranch]
+    settled: list[dict[str, Any]]
+    notes: list[str]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"branches": [dict(b.as_dict(), periods=b.orbits[0].periods)
+                             for b in self.branches],
+                "settled": self.settled, "notes": self.notes}  # fmt: skip
+
+
+def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega_low: float,
+                    omega_high: float, step: float, stops: Any = (),
+                    warmup: int = 300) -> StructureCurve:  # fmt: skip
+    """The structure's response curve over [omega_low, omega_high] [rad/s]: a run of ``warmup``
+    periods from rest at every frequency of the grid of ``step``; a branch continued from each
+    end of the band (steps up to ``step``), each started from the orbit the run there settles
+    on, of the fewest periods it comes back after (1 to 8, to 1e-6 of the state); and the
+    period-doubled branch of each period doubling they locate (:func:`doubled_branch`).  The
+    runs from rest hold the motions no branch follows (orbits that stick or chatter, motions
+    that are not periodic).  A note says where no branch could start or where a doubling has
+    no stable daughter."""
+    from .structure_response import simulate_structure
+
+    args = (structure, dampers, force_at, F0)
+    n = 2 * len(structure.modes) + 2 * len(tuple(dampers))
+    branches: list[StructureBranch] = []
+    notes: list[str] = []
+    grid = np.arange(omega_low, omega_high + 0.5 * step, step)
+    grid[-1] = min(grid[-1], omega_high)
+    if grid[-1] < omega_high:
+        grid = np.append(grid, omega_high)
+    runs = {}
+    settled = []
+    for w in grid:
+        run = simulate_structure(*args, float(w), periods=warmup, stops=stops)
+        runs[float(w)] = run
+        settled.append({"omega": float(w), "amplitudes": run.amplitudes(0.75)})
+    for w0, w1 in ((omega_low, omega_high), (omega_high, omega_low)):
+        start = runs[float(grid[0] if w0 == omega_low else grid[-1])]
+        s = start.final_state[1 : 1 + n]
+        for k in range(1, 9):
+            back = simulate_structure(*args, w0, periods=k, state=s, stops=stops)
+            if np.linalg.norm(back.final_state[1 : 1 + n] - s) <= 1e-6 * np.linalg.norm(s):
+                break
+        else:
+            notes.append(f"at Ω {w0:.6g} rad/s the motion {warmup} periods from rest is not an "
+                         "orbit of up to 8 periods (quasi-periodic or chaotic): no branch from "
+                         "there")  # fmt: skip
+            continue
+        try:
+            branches.append(structure_branch(*args, w0, w1, s, k, stops, step=step))
+        except (MethodNotApplicable, ParameterError) as exc:
+            notes.append(f"no branch from Ω {w0:.6g} rad/s: {exc}")
+    for b in list(branches):
+        for f in b.bifurcations:
+            if f.kind != PERIOD_DOUBLING:
+                continue
+            lo_side, hi_side = f.sides
+            unstable = hi_side if _unstable(hi_side) > _unstable(lo_side) else lo_side
+            end = omega_high if unstable.run.omega > f.omega else omega_low
+            try:
+                d = doubled_branch(*args, f, end, stops)
+            except (MethodNotApplicable, ParameterError) as exc:
+                notes.append(f"no branch from the period doubling at Ω {f.omega:.6g} rad/s: "
+                             f"{exc}")  # fmt: skip
+                continue
+            if d is None:
+                notes.append(f"the period doubling at Ω {f.omega:.6g} rad/s has no stable "
+                             "daughter on its unstable side (subcritical)")  # fmt: skip
+            else:
+                branches.append(d)
+    return StructureCurve(branches, settled, notes)
+
+
+def curve_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
+               curve: StructureCurve, point: str, stops: Any = ()) -> StructurePeak | None:  # fmt: skip
+    """The largest steady amplitude at ``point`` over the curve: the located peak of its
+    branches (:func:`located_peak`), or, where a run from rest settled on a larger motion that
+    no traced branch holds, that run's (kind "run from rest": a grid sample)."""
+    peak = located_peak(structure, dampers, force_at, F0, curve.branches, point, stops)
+    run = max(curve.settled, key=lambda r: r["amplitudes"][point], default=None)
+    if run is not None and (peak is None or run["amplitudes"][point] > peak.amplitude):
+        return StructurePeak(point, run["amplitudes"][point], run["omega"], "run from rest")
+    return peak
+
+
+def bare_peak(structure: Structure, force_at: Any, F0: Any, point: Any, omega_low: float,
+              omega_high: float) -> StructurePeak:  # fmt: skip
+    """The bare structure's (no damper, no stop) largest steady amplitude at ``point`` over the
+    band: F₀·max abs(H(p, f; Ω)) of the modal receptance (Eq. F7 in the frequency domain),
+    the grid's best of 200 frequencies refined by Brent's bounded search (to 1e-12 of Ω)."""
+    from scipy.optimize import minimize_scalar
+
+    F0 = float(F0)
+
+    def minus(w: float) -> float:
+        return -abs(structure.receptance(point, force_at, w)) * F0
+
+    grid = np.linspace(omega_low, omega_high, 200)
+    values = [minus(w) for w in grid]
+    i = int(np.argmin(values))
+    a, c = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
+    found = minimize_scalar(minus, bounds=(a, c), method="bounded", options={"xatol": 1e-12 * c})
+    w = float(found.x) if found.fun <= values[i] else float(grid[i])
+    kind = "maximum" if omega_low < w < omega_high else "end"
+    return StructurePeak(str(point), -minus(w), w, kind)
