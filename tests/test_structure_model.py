@@ -142,12 +142,12 @@ def test_options_the_file_replaces_are_refused(tmp_path, capsys, args, name):
 
 
 def test_other_commands_refuse_a_file_with_dampers(tmp_path, capsys):
-    """Design of several modes is not built yet: one line.  ``periodic`` shoots such a file,
-    refusing the options the file replaces."""
+    """Continuation of several modes in a parameter other than Ω is not built yet: one line.
+    ``periodic`` shoots such a file, refusing the options the file replaces."""
     path = tmp_path / "model.json"
     path.write_text(json.dumps(FILE))
-    code = main(["design", "--structure", str(path), "--freq-range", "9:11:0.5", "--gaps",
-                 "1 mm:3 mm:1 mm"])  # fmt: skip
+    code = main(["branch", "--structure", str(path), "--freq", "10", "--parameter", "gap",
+                 "--range", "1 mm:3 mm"])  # fmt: skip
     err = capsys.readouterr().err
     assert code == 2 and err.count("\n") == 1 and "error: structure:" in err
     code = main(["periodic", "--structure", str(path), "--freq", "10", "--contact", "rigid",

@@ -187,8 +187,9 @@ def test_the_stuck_structure_flies_as_its_equations_say():
     Phi = s.shapes(["mid"])
     md = np.array([0.2])
     none = np.zeros(0)
+    nothing = np.zeros(0, dtype=np.int64)
     cfg = _modal._config(pm, Phi, md, np.array([1]), np.zeros((0, 3)), none, none, none,
-                         np.zeros(0, dtype=np.int64))  # fmt: skip
+                         nothing, nothing)  # fmt: skip
     rng = np.random.default_rng(7)
     q0, v0 = rng.normal(size=3) * 1e-3, rng.normal(size=3) * 1e-2
     t0, T = 0.37, 3 * 2 * math.pi / W

@@ -119,15 +119,22 @@ def _mode_jerk(pm, i, mass, t, x, v):
 
 
 @njit(cache=True)
-def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact):
+def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig):
     """The structure with the dampers of ``stuck[k] != 0`` riding on it and the stops of
     ``contact[s] != 0`` pressed by it: (M_s⁻¹, Λ, V, V⁻¹, X̂, ok, decoupled, pm_s, ω_max, K_s, C_s,
-    f_s, q_s).  ``pm_s``: ``pm`` with column P_M holding M_s's diagonal, the parameters every
+    f_s, q_s, M_s⁻¹ unconstrained, (ΦₕM_s⁻¹Φₕᵀ)⁻¹).  ``pm_s``: ``pm`` with column P_M holding M_s's diagonal, the parameters every
     other function of the engine reads (an array of its own would cost a reference count
     wherever the innermost loops take it out of the tuple).  A stop s in contact on its wall
     w = ``contact[s]`` adds its linear law's spring and dashpot at its point, K_s = K + k₁φφᵀ,
     C_s = C + c₁φφᵀ, and the constant load f_s = k₁·w·g·φ (the force −k₁(φᵀq − w·g) − c₁φᵀq̇ on
-    the point), whose static deflection q_s = K_s⁻¹f_s shifts the closed form.  ``decoupled``:
+    the point), whose static deflection q_s = K_s⁻¹f_s shifts the closed form.  A rigid stop
+    (``srig[s]``) held on its wall w = ``contact[s]`` after its impacts accumulated constrains
+    its point to w·g: the structure moves in the null space of the held points' shapes,
+    q = q* + Zr (Z orthonormal, q* the least-norm q on the walls), r flying as the reduced
+    structure ZᵀM_sZ, ZᵀC_sZ, ZᵀK_sZ; V and V⁻¹ then map r's 2(N − h) modes to the 2N state,
+    M_s⁻¹ becomes Z(ZᵀM_sZ)⁻¹Zᵀ (accelerations and impulses the walls allow), and the walls'
+    reactions λ = −(ΦₕM_s⁻¹Φₕᵀ)⁻¹ΦₕM_s⁻¹f follow from the unconstrained inverse (returned with
+    (ΦₕM_s⁻¹Φₕᵀ)⁻¹).  ``decoupled``:
     no stop is pressed and M_s is diagonal (no mass sticks, or one mode alone moves each stuck
     point: one mode with φ = 1 is Step 9's sticking, one mass M + m), and the modes fly by Eq. F1
     with those masses; otherwise by the eigen-decomposition (module text).  ω_max: the largest of
@@ -149,8 +156,12 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact):
                 for j in range(N):
                     Ms[i, j] += md[k] * Phi[k, i] * Phi[k, j]
     pressed = False
+    held = 0
     for s in range(Sphi.shape[0]):
-        if contact[s] != 0:
+        if contact[s] != 0 and srig[s] != 0:
+            held += 1
+            pressed = True
+        elif contact[s] != 0:
             pressed = True
             for i in range(N):
                 fs[i] += sk[s] * contact[s] * sg[s] * Sphi[s, i]
@@ -170,6 +181,9 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact):
             Minv[i, i] = 1.0 / Ms[i, i]
     else:
         Minv = np.linalg.inv(Ms)
+    Pinv = np.zeros((held, held))
+    if held > 0:
+        return _held_config(pm, Sphi, sg, contact, srig, held, Ms, Ks, Cs, fs, Minv, masses)
     lam = np.zeros(2 * N, dtype=np.complex128)
     V = np.eye(2 * N, dtype=np.complex128)
     Vinv = np.eye(2 * N, dtype=np.complex128)
@@ -180,7 +194,7 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact):
         for i in range(N):
             M, K, C = masses[i, P_M], pm[i, P_K], pm[i, P_C]
             wmax = max(wmax, math.sqrt(max(K / M - C * C / (4 * M * M), 0.0)))
-        return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax, Ks, Cs, fs, qs
+        return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax, Ks, Cs, fs, qs, Minv, Pinv
     A = np.zeros((2 * N, 2 * N), dtype=np.complex128)
     for i in range(N):
         A[i, N + i] = 1.0
@@ -209,7 +223,74 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact):
             qs = np.linalg.solve(Ks, fs)
     for m in range(2 * N):
         wmax = max(wmax, abs(lam[m].imag))
-    return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax, Ks, Cs, fs, qs
+    return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax, Ks, Cs, fs, qs, Minv, Pinv
+
+
+@njit(cache=True)
+def _held_config(pm, Sphi, sg, contact, srig, held, Ms, Ks, Cs, fs, Minv, masses):
+    """:func:`_config` while rigid stops are held on their walls: the reduced structure in the
+    null space of the held points' shapes (:func:`_config`'s text)."""
+    N = pm.shape[0]
+    W = pm[0, P_W]
+    H = np.zeros((held, N))
+    gh = np.zeros(held)
+    j = 0
+    for s in range(Sphi.shape[0]):
+        if contact[s] != 0 and srig[s] != 0:
+            H[j] = Sphi[s]
+            gh[j] = contact[s] * sg[s]
+            j += 1
+    _, _, Vt = np.linalg.svd(H)  # full: Vt is N × N, its last N − h rows span the null space
+    nr = N - held
+    Z = np.ascontiguousarray(Vt[held:].T)
+    qstar = H.T @ np.linalg.solve(H @ H.T, gh)
+    HM = H @ Minv
+    Pinv = np.linalg.inv(HM @ H.T)
+    ok = True
+    wmax = W
+    lam = np.zeros(2 * nr, dtype=np.complex128)
+    V = np.zeros((2 * N, 2 * nr), dtype=np.complex128)
+    Vinv = np.zeros((2 * nr, 2 * N), dtype=np.complex128)
+    Xhat = np.zeros(2 * N, dtype=np.complex128)
+    qs = qstar.copy()
+    Meff = np.zeros((N, N))
+    if nr > 0:
+        Mr = Z.T @ Ms @ Z
+        Mrinv = np.linalg.inv(Mr)
+        Meff = Z @ Mrinv @ Z.T
+        Kr, Cr = Z.T @ Ks @ Z, Z.T @ Cs @ Z
+        A = np.zeros((2 * nr, 2 * nr), dtype=np.complex128)
+        MK, MC = Mrinv @ Kr, Mrinv @ Cr
+        for i in range(nr):
+            A[i, nr + i] = 1.0
+            for m in range(nr):
+                A[nr + i, m] = -MK[i, m]
+                A[nr + i, nr + m] = -MC[i, m]
+        lamr, Vr = np.linalg.eig(A)
+        lam = lamr
+        Vrinv = np.linalg.inv(np.ascontiguousarray(Vr))
+        Zc = Z.astype(np.complex128)
+        V[:N] = Zc @ np.ascontiguousarray(Vr[:nr])
+        V[N:] = Zc @ np.ascontiguousarray(Vr[nr:])
+        Vinv[:, :N] = np.ascontiguousarray(Vrinv[:, :nr]) @ Zc.T
+        Vinv[:, N:] = np.ascontiguousarray(Vrinv[:, nr:]) @ Zc.T
+        load = np.zeros(N, dtype=np.complex128)
+        for i in range(N):
+            load[i] = pm[i, P_F0] + pm[i, P_K] * pm[i, P_XB] + 1j * W * pm[i, P_C] * pm[i, P_XB]
+        b = np.zeros(2 * nr, dtype=np.complex128)
+        b[nr:] = Mrinv.astype(np.complex128) @ (Zc.T @ load)
+        D = 1j * W * np.eye(2 * nr) - A
+        if np.linalg.cond(D) > 1e12 or np.linalg.cond(Vr) > 1e12 or np.linalg.cond(Kr) > 1e12:
+            ok = False
+        else:
+            Xr = np.linalg.solve(D, b)
+            Xhat[:N] = Zc @ Xr[:nr]
+            Xhat[N:] = Zc @ Xr[nr:]
+            qs = qstar + Z @ np.linalg.solve(Kr, Z.T @ (fs - Ks @ qstar))
+        for m in range(2 * nr):
+            wmax = max(wmax, abs(lam[m].imag))
+    return (Meff, lam, np.ascontiguousarray(V), np.ascontiguousarray(Vinv), Xhat, ok, False,
+            masses, wmax, Ks, Cs, fs, qs, Minv, Pinv)  # fmt: skip
 
 
 @njit(cache=True)
@@ -223,7 +304,19 @@ def _coefficients(pm, cfg, t0, q0, v0):
     for i in range(N):
         X0[i] = q0[i] - (Xhat[i] * rot).real - qs[i]
         X0[N + i] = v0[i] - (Xhat[N + i] * rot).real
-    return Vinv @ X0
+    return _cmv(Vinv, X0)
+
+
+@njit(cache=True, inline="always")
+def _cmv(A, x):
+    """A·x for a complex matrix of any shape (a held structure's may have no column)."""
+    out = np.zeros(A.shape[0], dtype=np.complex128)
+    for i in range(A.shape[0]):
+        acc = 0.0j
+        for j in range(A.shape[1]):
+            acc += A[i, j] * x[j]
+        out[i] = acc
+    return out
 
 
 @njit(cache=True, inline="always")
@@ -252,7 +345,7 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     c = _coefficients(pm, cfg, t0, q0, v0)
     rot = np.exp(1j * (pm[0, P_W] * (t0 + tau) + pm[0, P_PHI]))
     g = c * np.exp(lam * tau)
-    X = V @ g
+    X = _cmv(V, g)
     for i in range(N):
         q[i] = X[i].real + (Xhat[i] * rot).real + qs[i]
         v[i] = X[N + i].real + (Xhat[N + i] * rot).real
@@ -351,7 +444,7 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B):
     lam, V, Xhat = cfg[1], cfg[2], cfg[4]
     c = _coefficients(pm, cfg, t0, q0, v0)
     for k in range(K):
-        for m in range(2 * N):
+        for m in range(lam.shape[0]):
             r = 0.0j
             for i in range(N):
                 r += Phi[k, i] * V[i, m]
@@ -527,14 +620,18 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
 
 
 @njit(cache=True)
-def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, fresh, t0, q0, v0, T, watch, work):
+def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_wall, t0, q0, v0,
+                  T, watch, work):  # fmt: skip
     """(τ, stop, wall): the first τ in (0, T] at which a stop's contact begins (its point xₛ,
     free of the stop, reaches the wall w·g) or ends (the point pressing the wall w comes back to
     w·g), that stop and the new value of ``contact[s]`` (w at an onset, 0 at an exit); (T, −1, 0)
     when none does, (τ so far, −2, 0) when a signal is seen on ``watch``.  The search is the
     impact search's (a grid every bound A ≥ abs(ẍₛ) certifies, halved where it cannot, Illinois
     regula falsi on the crossing); stop ``fresh``, which switched at t0 with the point's speed r,
-    cannot switch again before 2·abs(r)/A (its penetration, or its gap, grows as rτ − Aτ²/2)."""
+    cannot switch again before 2·abs(r)/A (its penetration, or its gap, grows as rτ − Aτ²/2),
+    nor, when it just left its wall ``fresh_wall`` (a rigid stop's rebound or release), while its
+    point's acceleration is certified to point away (:func:`_held_off`).  A held rigid stop does
+    not switch here (:func:`_stop_release`)."""
     S = Sphi.shape[0]
     hmax = 2.0 * math.pi / cfg[8] / 16.0
     dec = cfg[6]
@@ -548,6 +645,11 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, fresh, t0, q0, v0, 
         hold[s] = 0.0
         if s == fresh:
             hold[s] = 2.0 * abs(_dot(Sphi, s, v0)) / A[s]
+            if fresh_wall != 0:
+                hold[s] = max(hold[s], _held_off(pm, cfg, nstuck, Sphi, s, t0, q0, v0,
+                                                 -fresh_wall, T, A[s], B[s], work[7], work[8]))  # fmt: skip
+        if contact[s] != 0 and srig[s] != 0:
+            hold[s] = math.inf  # held on its wall: the constraint keeps it there
     tau = 0.0
     H = hmax
     looks = 0
@@ -667,6 +769,158 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work):
             return first, which
         tau = tb
     return T, -1
+
+
+@njit(cache=True)
+def _held_pulls(pm, cfg, Sphi, contact, srig, t, q, v, out):
+    """For each held rigid stop (in their order), w·λ: its wall's reaction force λ on the
+    structure times the wall's side w; positive where the wall would have to pull
+    (λ = −(ΦₕM_s⁻¹Φₕᵀ)⁻¹ΦₕM_s⁻¹f, f the modal forces of the held structure's flight, M_s⁻¹
+    unconstrained: :func:`_config`).  Returns the number of held stops."""
+    N = pm.shape[0]
+    Ks, Cs, fs, Mfull = cfg[9], cfg[10], cfg[11], cfg[13]
+    W = pm[0, P_W]
+    th = W * t + pm[0, P_PHI]
+    c, sn = math.cos(th), math.sin(th)
+    f = np.empty(N)
+    for j in range(N):
+        P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
+        Q = -pm[j, P_C] * W * pm[j, P_XB]
+        cv, kq = 0.0, 0.0
+        for m in range(N):
+            cv += Cs[j, m] * v[m]
+            kq += Ks[j, m] * q[m]
+        f[j] = P * c + Q * sn + fs[j] - cv - kq
+    return _held_reactions(cfg, Sphi, contact, srig, Mfull @ f, out)
+
+
+@njit(cache=True)
+def _held_reactions(cfg, Sphi, contact, srig, Mf, out):
+    """w·λ for each held rigid stop from the unconstrained response M_s⁻¹f (or M_s⁻¹φP of an
+    impulse): λ = −(ΦₕM_s⁻¹Φₕᵀ)⁻¹Φₕ·M_s⁻¹f.  Returns the number of held stops."""
+    Pinv = cfg[14]
+    h = Pinv.shape[0]
+    a = np.zeros(h)
+    walls = np.zeros(h)
+    j = 0
+    for s in range(Sphi.shape[0]):
+        if contact[s] != 0 and srig[s] != 0:
+            a[j] = _dot(Sphi, s, Mf)
+            walls[j] = contact[s]
+            j += 1
+    for i in range(h):
+        lam = 0.0
+        for j in range(h):
+            lam -= Pinv[i, j] * a[j]
+        out[i] = walls[i] * lam
+    return h
+
+
+@njit(cache=True)
+def _held_index(contact, srig, i):
+    """The stop of the i-th held rigid stop."""
+    j = 0
+    for s in range(contact.shape[0]):
+        if contact[s] != 0 and srig[s] != 0:
+            if j == i:
+                return s
+            j += 1
+    return -1
+
+
+@njit(cache=True)
+def _stop_release(pm, cfg, Sphi, contact, srig, t0, q0, v0, T, watch, work):
+    """(τ, stop): the first τ in (0, T] where a held rigid stop's wall would pull
+    (:func:`_held_pulls` turns positive), or (T, −1) (or the τ reached on a signal)."""
+    step = 2.0 * math.pi / cfg[8] / 64.0
+    q, v, fa, fb = work[3], work[4], work[16], work[17]
+    h = _held_pulls(pm, cfg, Sphi, contact, srig, t0, q0, v0, fa)
+    for i in range(h):
+        fa[i] = min(fa[i], -1e-300)
+    tau = 0.0
+    looks = 0
+    while tau < T:
+        looks += 1
+        if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
+            return tau, -1
+        tb = min(tau + step, T)
+        _states(pm, cfg, 0, t0, q0, v0, tb, q, v)
+        _held_pulls(pm, cfg, Sphi, contact, srig, t0 + tb, q, v, fb)
+        first, which = tb, -1
+        for i in range(h):
+            if fb[i] > 0.0:
+                lo, hi, flo, fhi = tau, tb, fa[i], fb[i]
+                kept = 0
+                out = np.empty(h)
+                for _ in range(200):
+                    tm = secant_point(lo, hi, flo, fhi)
+                    _states(pm, cfg, 0, t0, q0, v0, tm, q, v)
+                    _held_pulls(pm, cfg, Sphi, contact, srig, t0 + tm, q, v, out)
+                    fm = out[i]
+                    if fm > 0.0:
+                        hi, fhi = tm, fm
+                        if kept == 1:
+                            flo *= 0.5
+                        kept = 1
+                    else:
+                        lo, flo = tm, fm
+                        if kept == -1:
+                            fhi *= 0.5
+                        kept = -1
+                    if hi - lo <= 4e-16 * (t0 + hi):
+                        break
+                if which < 0 or hi < first:
+                    first, which = hi, _held_index(contact, srig, i)
+        if which >= 0:
+            return first, which
+        for i in range(h):
+            fa[i] = fb[i]
+        tau = tb
+    return T, -1
+
+
+@njit(cache=True)
+def _stop_impulse(pm, cfg, Sphi, s, e, v):
+    """A rigid impact of the point of stop s on its wall, Newton's law with restitution e at the
+    point: φᵀq̇⁺ = −e·φᵀq̇⁻ through J = −(1 + e)φᵀq̇/(φᵀM_s⁻¹φ), q̇ += M_s⁻¹φJ (M_s⁻¹ the
+    one the held walls allow, :func:`_config`); ``v`` changed in place.  Returns (J, m_eff):
+    the loss is ½m_eff(1 − e²)(φᵀq̇)²."""
+    N = pm.shape[0]
+    Minv = cfg[0]
+    w = np.zeros(N)
+    for i in range(N):
+        if cfg[6]:
+            w[i] = Sphi[s, i] / pm[i, P_M]
+        else:
+            for j in range(N):
+                w[i] += Minv[i, j] * Sphi[s, j]
+    inv = _dot(Sphi, s, w)
+    if inv <= 0.0:
+        return 0.0, math.inf
+    J = -(1.0 + e) * _dot(Sphi, s, v) / inv
+    for i in range(N):
+        v[i] += w[i] * J
+    return J, 1.0 / inv
+
+
+@njit(cache=True)
+def _stop_jump(pm, cfg, Sphi, s, K, e):
+    """D: the Jacobian of a rigid stop's impact law (:func:`_stop_impulse`) in the state
+    (q, q̇, y, ẏ): q̇⁺ = q̇ − (1 + e)·w·φᵀq̇/(φᵀw), w = M_s⁻¹φ."""
+    N = pm.shape[0]
+    DJ = np.eye(2 * N + 2 * K)
+    w = np.zeros(N)
+    for i in range(N):
+        if cfg[6]:
+            w[i] = Sphi[s, i] / pm[i, P_M]
+        else:
+            for j in range(N):
+                w[i] += cfg[0][i, j] * Sphi[s, j]
+    inv = _dot(Sphi, s, w)
+    for i in range(N):
+        for j in range(N):
+            DJ[N + i, N + j] -= (1.0 + e) * w[i] * Sphi[s, j] / inv
+    return DJ
 
 
 @njit(cache=True)
@@ -915,15 +1169,18 @@ def _impact_jump(pm, cfg, Phi, k, K, m, e, mu):
 
 
 @njit(cache=True)
-def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0, Pout, t_end,
-        max_events, variational, watch):  # fmt: skip
+def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0, Pout,
+        t_end, max_events, variational, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
     Step 13's e(v), Eq. F5, which tends to 1 at low speed, so chatter never accumulates); chatter taken to its accumulation point when it
     would end within ``chat`` forcing periods) and stops (shapes ``Sphi, s`` at their points, gaps
     ``sg``, walls ``sside``: +1 at +g, −1 at −g, 0 both; linear contact laws k₁ = ``sk``,
-    c₁ = ``sc``: each pressed stop changes the structure's closed form, :func:`_config`) from
+    c₁ = ``sc``: each pressed stop changes the structure's closed form, :func:`_config`; or,
+    where ``srig[s]``, rigid impacts of restitution ``se``, whose chatter is taken to its
+    accumulation point as a damper's and then holds the point on the wall until the wall would
+    pull) from
     modal state (q0, v0) and the masses' (y0, u0) at t = 0 to t_end (a point past a wall at
     t = 0 starts pressing it).
 
@@ -953,7 +1210,8 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
             contact[r] = 1
         elif sside[r] <= 0 and xs < -sg[r]:
             contact[r] = -1
-    fresh = -1
+    fresh, fresh_wall = -1, 0
+    pulls = np.empty(S)
     n_ev = 0
     t = 0.0
     q, v = q0.copy(), v0.copy()
@@ -963,7 +1221,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
     side0 = np.zeros(K, dtype=np.int64)
     stuck = np.zeros(K, dtype=np.int64)
     nstuck = 0
-    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
+    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
     pm = cfg[7]
     P = Pout.shape[0]
     # scratch for the searches and the ledger, allocated once: bounds A, B and the held-off
@@ -998,11 +1256,19 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
         if nstuck > 0:
             T, kr = _release(pm, cfg, nstuck, stuck, Phi, t, q, v, T, watch, work)
         ks, ws = -1, 0
+        held = 0
+        for r in range(S):
+            if contact[r] != 0 and srig[r] != 0:
+                held += 1
+        if held > 0:
+            T_h, kh = _stop_release(pm, cfg, Sphi, contact, srig, t, q, v, T, watch, work)
+            if kh >= 0:
+                T, kr, ks, ws = T_h, -1, kh, 0
         if S > 0:
-            taus, ks, ws = _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, fresh, t, q,
-                                         v, T, watch, work)  # fmt: skip
-            if ks != -1:
-                T = taus
+            taus, kc, wc = _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh,
+                                         fresh_wall, t, q, v, T, watch, work)  # fmt: skip
+            if kc != -1:
+                T, ks, ws = taus, kc, wc
                 kr = -1
         tau, k, side = _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t, q, v, z, u, side0, T,
                                     watch, work)  # fmt: skip
@@ -1022,14 +1288,106 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
         t = t + tau
         q[:] = qn
         v[:] = vn
-        fresh = -1
+        fresh, fresh_wall = -1, 0
+        if k < 0 and ks >= 0 and tau >= T and srig[ks] != 0:
+            smooth = smooth and ws != 0
+            if ws == 0:
+                # --- held stop ks is let go: its wall would pull ---
+                wall = contact[ks]
+                contact[ks] = 0
+                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+                pm = cfg[7]
+                fresh, fresh_wall = ks, wall
+                xd = _dot(Sphi, ks, v)
+                events, n_ev = _log(events, n_ev, t, _dot(Sphi, ks, q), xd, 0.0, float(wall), 0.0,
+                                    0.0, KIND_RELEASE, xd, 0.0, K + ks)  # fmt: skip
+                continue
+            # --- a rigid impact of stop ks's point on its wall ws ---
+            sw = float(ws)
+            vapp = sw * _dot(Sphi, ks, v)  # approach speed, ≥ 0
+            if smooth:
+                _field(pm, cfg, K, t, q, v, u, fm)
+            v_before[:] = v
+            while True:  # a held stop whose wall would have to pull during the impulse is let go
+                v[:] = v_before
+                J, meff = _stop_impulse(pm, cfg, Sphi, ks, se[ks], v)
+                h = 0
+                if held > 0:  # the walls' reaction impulses to J at the point
+                    h = _held_reactions(cfg, Sphi, contact, srig, cfg[13] @ (Sphi[ks] * J), pulls)
+                pulled = -1
+                for i in range(h):
+                    if pulls[i] > 0.0:
+                        pulled = _held_index(contact, srig, i)
+                        break
+                if pulled < 0:
+                    break
+                wall = contact[pulled]
+                contact[pulled] = 0
+                held -= 1
+                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+                pm = cfg[7]
+                events, n_ev = _log(events, n_ev, t, _dot(Sphi, pulled, q), 0.0, 0.0, float(wall),
+                                    0.0, 0.0, KIND_RELEASE, 0.0, 0.0, K + pulled)  # fmt: skip
+            lost = 0.5 * meff * (1.0 - se[ks] * se[ks]) * vapp * vapp
+            ledger[2] += lost
+            events, n_ev = _log(events, n_ev, t, _dot(Sphi, ks, q), sw * vapp, 0.0, sw, vapp, lost,
+                                KIND_IMPACT, _dot(Sphi, ks, v), 0.0, K + ks)  # fmt: skip
+            if smooth:
+                _field(pm, cfg, K, t, q, v, u, fp)
+                gh[:] = 0.0
+                gh[:N] = Sphi[ks]
+                _saltation(_stop_jump(pm, cfg, Sphi, ks, K, se[ks]), fm, fp, gh, G)
+            for j in range(K):
+                if stuck[j] != 0:
+                    u[j] = _dot(Phi, j, v)
+            fresh, fresh_wall = ks, ws
+            # --- chatter on the stop: would the rebounds accumulate (Step 9's test)? ---
+            a = sw * _point_accel(pm, cfg, nstuck, Sphi, ks, t, q, v)  # toward the wall
+            wr = se[ks] * vapp
+            if a > 0.0 and se[ks] < 1.0:
+                delta = 2.0 * wr / (a * (1.0 - se[ks]))
+                if delta <= chat * T_f and t + delta < t_end:
+                    smooth = False
+                    _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max,
+                             n_periods, work, Sphi, sc, contact)  # fmt: skip
+                    _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
+                    for j in range(K):
+                        if stuck[j] == 0:
+                            z[j] = z[j] + u[j] * delta - _dot(Phi, j, qn) + _dot(Phi, j, q)
+                        else:
+                            u[j] = _dot(Phi, j, vn)
+                    t = t + delta
+                    q[:] = qn
+                    v[:] = vn
+                    xd = _dot(Sphi, ks, v)
+                    J, meff = _stop_impulse(pm, cfg, Sphi, ks, 0.0, v)
+                    lost = 0.5 * meff * xd * xd
+                    ledger[2] += lost
+                    for j in range(K):
+                        if stuck[j] != 0:
+                            u[j] = _dot(Phi, j, v)
+                    events, n_ev = _log(events, n_ev, t, _dot(Sphi, ks, q), xd, 0.0, sw,
+                                        sw * xd, lost, KIND_ACCUMULATION, _dot(Sphi, ks, v), 0.0,
+                                        K + ks)  # fmt: skip
+                elif wr != 0.0 and delta != 0.0:
+                    continue
+                # --- the point rests on the wall from here ---
+                smooth = False
+                contact[ks] = ws
+                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+                pm = cfg[7]
+                if not cfg[5]:
+                    status = SINGULAR_STUCK
+                    break
+                fresh, fresh_wall = -1, 0
+            continue
         if k < 0 and ks >= 0 and tau >= T:
             # --- stop ks's contact begins (on wall ws) or ends ---
             wall = ws if ws != 0 else contact[ks]
             if smooth:
                 _field(pm, cfg, K, t, q, v, u, fm)
             contact[ks] = ws
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
             pm = cfg[7]
             if smooth:  # the state is continuous, the rate jumps by the dashpot's force
                 _field(pm, cfg, K, t, q, v, u, fp)
@@ -1051,7 +1409,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
             s = float(stuck[kr])
             stuck[kr] = 0
             nstuck -= 1
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
             pm = cfg[7]
             for j in range(K):
                 side0[j] = 0
@@ -1080,6 +1438,24 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
         while True:  # a stuck mass its wall would have to pull during the impulse is let go
             v[:] = v_before
             P, mu = _impulse(pm, cfg, nstuck, Phi, k, md[k], e, u[k], v)
+            if held > 0:  # a held stop whose wall would have to pull is let go first
+                h = _held_reactions(cfg, Sphi, contact, srig, cfg[13] @ (Phi[k] * P), pulls)
+                gone = -1
+                for i in range(h):
+                    if pulls[i] > 0.0:
+                        gone = _held_index(contact, srig, i)
+                        break
+                if gone >= 0:
+                    wall = contact[gone]
+                    contact[gone] = 0
+                    held -= 1
+                    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+                    pm = cfg[7]
+                    smooth = False
+                    events, n_ev = _log(events, n_ev, t, _dot(Sphi, gone, q), 0.0, 0.0,
+                                        float(wall), 0.0, 0.0, KIND_RELEASE, 0.0, 0.0,
+                                        K + gone)  # fmt: skip
+                    continue
             pulled = -1
             for j in range(K):
                 if stuck[j] != 0 and stuck[j] * (_dot(Phi, j, v) - _dot(Phi, j, v_before)) > 0.0:
@@ -1090,7 +1466,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
             let_go[pulled] = stuck[pulled]
             stuck[pulled] = 0
             nstuck -= 1
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
             pm = cfg[7]
             events, n_ev = _log(events, n_ev, t, _dot(Phi, pulled, q), u[pulled], u[pulled],
                                 float(let_go[pulled]), 0.0, 0.0, KIND_RELEASE, u[pulled],
@@ -1151,7 +1527,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, q0, v0, y0, u0
             smooth = False
             stuck[k] = side
             nstuck += 1
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
             pm = cfg[7]
             if not cfg[5]:
                 status = SINGULAR_STUCK
@@ -1186,7 +1562,8 @@ def one_mode_run(p, state0, t_end, max_events, watch):
     status, events, n_ev, period_max, ledger, final, _ = run(
         pm, one, np.array([p[P_m]]), np.array([p[P_h]]), np.array([p[P_e]]),
         np.array([p[P_VY]]), p[P_CHAT], np.zeros((0, 1)), np.zeros(0),
-        np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
+        np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
+        np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
         state0[2:3].copy(), state0[3:4].copy(), one, t_end, max_events, False, watch,
     )  # fmt: skip
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])

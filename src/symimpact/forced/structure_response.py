@@ -74,14 +74,21 @@ class StructureResult:
     monodromy: np.ndarray | None = None
 
     def contacts(self, stop: str) -> np.ndarray:
-        """The times at which stop ``stop``'s contacts begin [s]."""
+        """The times at which stop ``stop``'s contacts begin [s] (a rigid stop's: its impacts and,
+        for each chatter sequence, its accumulation point)."""
         names = [s.name for s in self.stops]
         if stop not in names:
             raise ParameterError("stop", f"no stop {stop!r} (the stops: "
                                          f"{', '.join(names) or 'none'})")  # fmt: skip
         row = len(self.dampers) + names.index(stop)
         mine = self.events[:, _modal.E_DAMPER] == row
-        return self.events[mine & (self.events[:, _rigid.E_KIND] == _modal.KIND_ONSET), _rigid.E_T]
+        kind = self.events[:, _rigid.E_KIND]
+        begins = (
+            (kind == _modal.KIND_ONSET)
+            | (kind == _rigid.KIND_IMPACT)
+            | (kind == _rigid.KIND_ACCUMULATION)
+        )
+        return self.events[mine & begins, _rigid.E_T]
 
     def impacts(self, damper: str) -> np.ndarray:
         """The times of damper ``damper``'s impacts [s]: the impacts it resolved and, for each
@@ -204,6 +211,8 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     sside = np.array([st.walls for st in stops], dtype=np.int64)
     sk = np.array([st.k1 for st in stops])
     sc = np.array([st.c1 for st in stops])
+    srig = np.array([st.contact == "rigid" for st in stops], dtype=np.int64)
+    se = np.array([st.e if st.contact == "rigid" else 0.0 for st in stops])
     md = np.array([d.m for d in dampers])
     hd = np.array([d.gap / 2.0 for d in dampers])
     ed = np.array([d.e for d in dampers])
@@ -230,6 +239,8 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         sside,
         sk,
         sc,
+        srig,
+        se,
         q0,
         v0,
         y0,
@@ -251,6 +262,10 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         raise ParameterError("periods", f"more than {budgets.MAX_EVENTS} impacts in "
                                         f"{n_periods} periods; ask for fewer periods")  # fmt: skip
     pressed0 = [_pressed(st, float(Sphi[j] @ q0)) for j, st in enumerate(stops)]
+    for st, w in zip(stops, pressed0, strict=True):
+        if w != 0 and st.contact == "rigid":
+            raise ParameterError("state", f"puts the point of stop {st.name!r} beyond its rigid "
+                                          "wall")  # fmt: skip
     e0 = _energy(pm, md, q0, v0, u0, stops, Sphi, pressed0)
     qf, vf = final[1 : 1 + N], final[1 + N : 1 + 2 * N]
     uf = final[1 + 2 * N + K : 1 + 2 * N + 2 * K]
@@ -267,7 +282,8 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
 
 
 def _pressed(st: Stop, x: float) -> int:
-    """The wall a stop's point at x presses at the start (the engine's rule), or 0."""
+    """The wall a stop's point at x presses at the start (the engine's rule), or 0 (a rigid
+    stop's point starts beyond its wall only if the state says so: it is then held there)."""
     if st.walls >= 0 and x > st.gap:
         return 1
     if st.walls <= 0 and x < -st.gap:

@@ -1,35 +1,47 @@
 """Stops: walls fixed to the ground that a structure's point meets across a gap (the vibro-impact
 oscillator with a stop; a unilateral contact).  A stop at point ``at`` with gap ``g`` [m] has a
-wall at x = +g (``side`` "+"), at x = −g ("-") or both ("both"), and a linear contact law there:
-while the point presses the wall w (w·x > g) it feels −k₁(x − w·g) − c₁ẋ (Eq. 35's k₁δ with the
-dashpot c₁δ̇ of the one-mode contact laws), and the contact ends where the point comes back to
-the wall.  A pressed stop adds k₁φφᵀ and c₁φφᵀ to the structure's modal stiffness and damping
-(Step 15's modal form, φ the modes' values at the point), so the flight stays closed form.
+wall at x = +g (``side`` "+"), at x = −g ("-") or both ("both"), and a contact law there:
 
-:func:`stops` reads a list of ``{"name", "at", "gap", "side", "contact": "linear", "k1", "c1"}``
+- ``"linear"``: while the point presses the wall w (w·x > g) it feels −k₁(x − w·g) − c₁ẋ (Eq.
+  35's k₁δ with the dashpot c₁δ̇ of the one-mode contact laws), and the contact ends where the
+  point comes back to the wall.  A pressed stop adds k₁φφᵀ and c₁φφᵀ to the structure's modal
+  stiffness and damping (Step 15's modal form, φ the modes' values at the point), so the flight
+  stays closed form.
+- ``"rigid"``: Newton's impact law at the point, φᵀq̇⁺ = −e·φᵀq̇⁻, the impulse entering the
+  modes through their shapes (Step 15's law, Eq. F7, against a wall of infinite mass: the
+  reduced mass is the point's effective mass).  Rebounds that would accumulate (Step 9's test)
+  are taken to their accumulation point, and the point then rests on the wall — the structure
+  moving in the null space of the held points' shapes — until the wall would have to pull.
+
+:func:`stops` reads a list of ``{"name", "at", "gap", "side", "contact", "k1", "c1" | "e"}``
 (the structure file's ``"stops"`` entry; SI numbers or quantity texts such as ``"1 mm"``,
 ``"2 kN/m"``).
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
 from ..errors import ParameterError
+from .checks import bounded
 from .structure import Structure
 from .units import nonnegative_float, positive_float
 
 #: The fields a stop takes.
-FIELDS = ("name", "at", "gap", "side", "contact", "k1", "c1")
+FIELDS = ("name", "at", "gap", "side", "contact", "k1", "c1", "e")
+#: The contact laws a stop takes.
+LAWS = ("linear", "rigid")
 #: The walls of each side: +1 the wall at +g, −1 at −g, 0 both.
 SIDES = {"+": 1, "-": -1, "both": 0}
 
 
 @dataclass(frozen=True)
 class Stop:
-    """A stop at point ``at``: walls at ``side`` ("+": x = +gap, "-": x = −gap, "both"), linear
-    contact of stiffness ``k1`` [N/m] and damping ``c1`` [N s/m]."""
+    """A stop at point ``at``: walls at ``side`` ("+": x = +gap, "-": x = −gap, "both"), a
+    linear contact of stiffness ``k1`` [N/m] and damping ``c1`` [N s/m], or (``contact``
+    "rigid") rigid impacts of restitution ``e``."""
 
     name: str
     at: str
@@ -37,6 +49,8 @@ class Stop:
     side: str
     k1: float
     c1: float
+    contact: str = "linear"
+    e: float = math.nan
 
     @property
     def walls(self) -> int:
@@ -44,22 +58,31 @@ class Stop:
         return SIDES[self.side]
 
     def as_dict(self) -> dict[str, Any]:
+        law = {"e": self.e} if self.contact == "rigid" else {"k1": self.k1, "c1": self.c1}
         return {"name": self.name, "at": self.at, "gap": self.gap, "side": self.side,
-                "contact": "linear", "k1": self.k1, "c1": self.c1}  # fmt: skip
+                "contact": self.contact} | law  # fmt: skip
 
 
 def stop(structure: Structure, name: Any, at: Any, gap: Any, side: Any = "both",
-         contact: Any = "linear", k1: Any = None, c1: Any = 0.0) -> Stop:  # fmt: skip
+         contact: Any = "linear", k1: Any = None, c1: Any = None, e: Any = None) -> Stop:  # fmt: skip
     """One checked :class:`Stop` on ``structure`` (its point ``at`` must exist and move)."""
     label = f"stops.{name}"
     if not isinstance(name, str) or not name:
         raise ParameterError("stops.name", f"must be a non-empty text, got {name!r}")
-    if contact != "linear":
-        raise ParameterError(f"{label}.contact", f"only the linear law (k1, c1) acts at a stop so "
-                                                 f"far, got {contact!r}")  # fmt: skip
+    if contact not in LAWS:
+        raise ParameterError(f"{label}.contact", f"one of {', '.join(LAWS)} at a stop so far, "
+                                                 f"got {contact!r}")  # fmt: skip
     if side not in SIDES:
         raise ParameterError(f"{label}.side", f'must be "+", "-" or "both", got {side!r}')
-    if k1 is None:
+    if contact == "rigid":
+        for field, value in (("k1", k1), ("c1", c1)):
+            if value is not None:
+                raise ParameterError(f"{label}.{field}", "a rigid stop takes e, not a spring")
+        if e is None:
+            raise ParameterError(f"{label}.e", "missing: the restitution of the rigid impacts")
+    elif e is not None:
+        raise ParameterError(f"{label}.e", "a linear stop takes k1 and c1, not e")
+    elif k1 is None:
         raise ParameterError(f"{label}.k1", "missing: the contact stiffness [N/m]")
     try:
         point = structure._point(at)
@@ -68,13 +91,16 @@ def stop(structure: Structure, name: Any, at: Any, gap: Any, side: Any = "both",
     if all(mode.node_at(point) for mode in structure.modes):
         raise ParameterError(f"{label}.at", f"no mode moves the point {point!r} (a support): "
                                             "the stop would never act")  # fmt: skip
+    gap = positive_float(f"{label}.gap", gap, "m")
+    if contact == "rigid":
+        return Stop(name, point, gap, side, 0.0, 0.0, "rigid", bounded(f"{label}.e", e, 0.0, 1.0))
     return Stop(
         name,
         point,
-        positive_float(f"{label}.gap", gap, "m"),
+        gap,
         side,
         positive_float(f"{label}.k1", k1, "N/m"),
-        nonnegative_float(f"{label}.c1", c1, "N*s/m"),
+        nonnegative_float(f"{label}.c1", 0.0 if c1 is None else c1, "N*s/m"),
     )
 
 
