@@ -180,7 +180,7 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig):
         for i in range(N):
             Minv[i, i] = 1.0 / Ms[i, i]
     else:
-        Minv = np.linalg.inv(Ms)
+        Minv = np.ascontiguousarray(np.linalg.inv(Ms))
     Pinv = np.zeros((held, held))
     if held > 0:
         return _held_config(pm, Sphi, sg, contact, srig, held, Ms, Ks, Cs, fs, Minv, masses)
@@ -245,7 +245,7 @@ def _held_config(pm, Sphi, sg, contact, srig, held, Ms, Ks, Cs, fs, Minv, masses
     Z = np.ascontiguousarray(Vt[held:].T)
     qstar = H.T @ np.linalg.solve(H @ H.T, gh)
     HM = H @ Minv
-    Pinv = np.linalg.inv(HM @ H.T)
+    Pinv = np.ascontiguousarray(np.linalg.inv(HM @ H.T))
     ok = True
     wmax = W
     lam = np.zeros(2 * nr, dtype=np.complex128)
@@ -791,7 +791,11 @@ def _held_pulls(pm, cfg, Sphi, contact, srig, t, q, v, out):
             cv += Cs[j, m] * v[m]
             kq += Ks[j, m] * q[m]
         f[j] = P * c + Q * sn + fs[j] - cv - kq
-    return _held_reactions(cfg, Sphi, contact, srig, Mfull @ f, out)
+    Mf = np.zeros(N)
+    for i in range(N):
+        for j in range(N):
+            Mf[i] += Mfull[i, j] * f[j]
+    return _held_reactions(cfg, Sphi, contact, srig, Mf, out)
 
 
 @njit(cache=True)
@@ -814,6 +818,18 @@ def _held_reactions(cfg, Sphi, contact, srig, Mf, out):
             lam -= Pinv[i, j] * a[j]
         out[i] = walls[i] * lam
     return h
+
+
+@njit(cache=True)
+def _row_response(cfg, Phi, row, P):
+    """M_s⁻¹φP: the unconstrained response to an impulse P at the point of row ``row``."""
+    Mfull = cfg[13]
+    N = Mfull.shape[0]
+    out = np.zeros(N)
+    for i in range(N):
+        for j in range(N):
+            out[i] += Mfull[i, j] * Phi[row, j] * P
+    return out
 
 
 @njit(cache=True)
@@ -1313,7 +1329,9 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
                 J, meff = _stop_impulse(pm, cfg, Sphi, ks, se[ks], v)
                 h = 0
                 if held > 0:  # the walls' reaction impulses to J at the point
-                    h = _held_reactions(cfg, Sphi, contact, srig, cfg[13] @ (Sphi[ks] * J), pulls)
+                    h = _held_reactions(
+                        cfg, Sphi, contact, srig, _row_response(cfg, Sphi, ks, J), pulls
+                    )
                 pulled = -1
                 for i in range(h):
                     if pulls[i] > 0.0:
@@ -1439,7 +1457,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
             v[:] = v_before
             P, mu = _impulse(pm, cfg, nstuck, Phi, k, md[k], e, u[k], v)
             if held > 0:  # a held stop whose wall would have to pull is let go first
-                h = _held_reactions(cfg, Sphi, contact, srig, cfg[13] @ (Phi[k] * P), pulls)
+                h = _held_reactions(cfg, Sphi, contact, srig, _row_response(cfg, Phi, k, P), pulls)
                 gone = -1
                 for i in range(h):
                     if pulls[i] > 0.0:
