@@ -121,9 +121,10 @@ def _mode_jerk(pm, i, mass, t, x, v):
 @njit(cache=True)
 def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig):
     """The structure with the dampers of ``stuck[k] != 0`` riding on it and the stops of
-    ``contact[s] != 0`` pressed by it: (M_s⁻¹, Λ, V, V⁻¹, X̂, ok, decoupled, pm_s, ω_max, K_s, C_s,
-    f_s, q_s, M_s⁻¹ unconstrained, (ΦₕM_s⁻¹Φₕᵀ)⁻¹).  ``pm_s``: ``pm`` with column P_M holding M_s's diagonal, the parameters every
-    other function of the engine reads (an array of its own would cost a reference count
+    ``contact[s] != 0`` pressed by it: M_s⁻¹, Λ, V, V⁻¹, X̂, K_s, C_s, f_s, q_s, M_s⁻¹
+    unconstrained and (ΦₕM_s⁻¹Φₕᵀ)⁻¹ packed by :func:`_pack` in the tuple (mats, cplx, 2n, vecs,
+    h, ok, decoupled, pm_s, ω_max).  ``pm_s``: ``pm`` with column P_M holding M_s's diagonal, the
+    parameters every other function of the engine reads (an array of its own would cost a reference count
     wherever the innermost loops take it out of the tuple).  A stop s in contact on its wall
     w = ``contact[s]`` adds its linear law's spring and dashpot at its point, K_s = K + k₁φφᵀ,
     C_s = C + c₁φφᵀ, and the constant load f_s = k₁·w·g·φ (the force −k₁(φᵀq − w·g) − c₁φᵀq̇ on
@@ -194,7 +195,8 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig):
         for i in range(N):
             M, K, C = masses[i, P_M], pm[i, P_K], pm[i, P_C]
             wmax = max(wmax, math.sqrt(max(K / M - C * C / (4 * M * M), 0.0)))
-        return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax, Ks, Cs, fs, qs, Minv, Pinv
+        return _pack(Minv, Ks, Cs, Minv, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses,
+                     wmax)  # fmt: skip
     A = np.zeros((2 * N, 2 * N), dtype=np.complex128)
     for i in range(N):
         A[i, N + i] = 1.0
@@ -223,7 +225,42 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig):
             qs = np.linalg.solve(Ks, fs)
     for m in range(2 * N):
         wmax = max(wmax, abs(lam[m].imag))
-    return Minv, lam, V, Vinv, Xhat, ok, decoupled, masses, wmax, Ks, Cs, fs, qs, Minv, Pinv
+    return _pack(Minv, Ks, Cs, Minv, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses, wmax)
+
+
+@njit(cache=True)
+def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses, wmax):
+    """The configuration tuple (mats, cplx, 2n, vecs, h, ok, decoupled, pm_s, ω_max): its arrays
+    packed in three (every array in a tuple that a function takes costs a reference count at
+    each call): mats = [M_s⁻¹ (as the walls allow), K_s, C_s, M_s⁻¹ unconstrained,
+    (ΦₕM_s⁻¹Φₕᵀ)⁻¹ in its top-left h × h]; cplx holds V (2N × 2n), V⁻¹ (2n × 2N), X̂ and Λ in
+    its rows; vecs = [f_s, q_s] (:func:`_config`)."""
+    N = Ks.shape[0]
+    n2 = lam.shape[0]
+    h = Pinv.shape[0]
+    mats = np.zeros((5, N, N))
+    mats[0] = Minv
+    mats[1] = Ks
+    mats[2] = Cs
+    mats[3] = Mfull
+    mats[4, :h, :h] = Pinv
+    cplx = np.zeros((2 * N + n2 + 2, max(2 * N, n2, 1)), dtype=np.complex128)
+    cplx[: 2 * N, :n2] = V
+    cplx[2 * N : 2 * N + n2, : 2 * N] = Vinv
+    cplx[2 * N + n2, : 2 * N] = Xhat
+    cplx[2 * N + n2 + 1, :n2] = lam
+    vecs = np.zeros((2, N))
+    vecs[0] = fs
+    vecs[1] = qs
+    return mats, cplx, n2, vecs, h, ok, decoupled, masses, wmax
+
+
+@njit(cache=True, inline="always")
+def _modes_of(cfg):
+    """(Λ, V, V⁻¹, X̂) of a coupled configuration (views into its packed array)."""
+    cplx, n2 = cfg[1], cfg[2]
+    N2 = cplx.shape[0] - n2 - 2
+    return cplx[N2 + n2 + 1, :n2], cplx[:N2, :n2], cplx[N2 : N2 + n2, :N2], cplx[N2 + n2, :N2]
 
 
 @njit(cache=True)
@@ -289,15 +326,15 @@ def _held_config(pm, Sphi, sg, contact, srig, held, Ms, Ks, Cs, fs, Minv, masses
             qs = qstar + Z @ np.linalg.solve(Kr, Z.T @ (fs - Ks @ qstar))
         for m in range(2 * nr):
             wmax = max(wmax, abs(lam[m].imag))
-    return (Meff, lam, np.ascontiguousarray(V), np.ascontiguousarray(Vinv), Xhat, ok, False,
-            masses, wmax, Ks, Cs, fs, qs, Minv, Pinv)  # fmt: skip
+    return _pack(Meff, Ks, Cs, Minv, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, False, masses, wmax)
 
 
 @njit(cache=True)
 def _coefficients(pm, cfg, t0, q0, v0):
     """c = V⁻¹(X₀ − X_p(t₀) − (q_s, 0)): the coupled flight's modal amplitudes from (q0, v0) at
     t0 (q_s: the pressed stops' static deflection, :func:`_config`)."""
-    Vinv, Xhat, qs = cfg[3], cfg[4], cfg[12]
+    _, _, Vinv, Xhat = _modes_of(cfg)
+    qs = cfg[3][1]
     N = pm.shape[0]
     rot = np.exp(1j * (pm[0, P_W] * t0 + pm[0, P_PHI]))
     X0 = np.empty(2 * N, dtype=np.complex128)
@@ -341,7 +378,8 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     if cfg[6]:
         _free_states(pm, t0, q0, v0, tau, q, v)
         return
-    lam, V, Xhat, qs = cfg[1], cfg[2], cfg[4], cfg[12]
+    lam, V, _, Xhat = _modes_of(cfg)
+    qs = cfg[3][1]
     c = _coefficients(pm, cfg, t0, q0, v0)
     rot = np.exp(1j * (pm[0, P_W] * (t0 + tau) + pm[0, P_PHI]))
     g = c * np.exp(lam * tau)
@@ -356,7 +394,7 @@ def _stuck_acceleration(pm, cfg, t, q, v, i):
     """q̈ᵢ of the coupled structure: row i of M_s⁻¹(Pcos θ + Qsin θ + f_s − C_sq̇ − K_sq),
     P = F + K·X_b, Q = −CΩ·X_b per mode (Eq. F1's left side with the stuck mass matrix and the
     pressed stops' springs, dashpots and load, :func:`_config`)."""
-    Minv, Ks, Cs, fs = cfg[0], cfg[9], cfg[10], cfg[11]
+    Minv, Ks, Cs, fs = cfg[0][0], cfg[0][1], cfg[0][2], cfg[3][0]
     N = pm.shape[0]
     W = pm[0, P_W]
     th = W * t + pm[0, P_PHI]
@@ -404,7 +442,7 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v):
         for i in range(N):
             a += Phi[row, i] * _mode_jerk(pm, i, pm[i, P_M], t, q[i], v[i])
         return a
-    Minv, Ks, Cs = cfg[0], cfg[9], cfg[10]
+    Minv, Ks, Cs = cfg[0][0], cfg[0][1], cfg[0][2]
     W = pm[0, P_W]
     th = W * t + pm[0, P_PHI]
     c, sn = math.cos(th), math.sin(th)
@@ -441,7 +479,7 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B):
                 A[k] += abs(Phi[k, i]) * Ai
                 B[k] += abs(Phi[k, i]) * 2.0 * Ai * max(W, wn) ** 2
         return A, B
-    lam, V, Xhat = cfg[1], cfg[2], cfg[4]
+    lam, V, _, Xhat = _modes_of(cfg)
     c = _coefficients(pm, cfg, t0, q0, v0)
     for k in range(K):
         for m in range(lam.shape[0]):
@@ -778,7 +816,7 @@ def _held_pulls(pm, cfg, Sphi, contact, srig, t, q, v, out):
     (λ = −(ΦₕM_s⁻¹Φₕᵀ)⁻¹ΦₕM_s⁻¹f, f the modal forces of the held structure's flight, M_s⁻¹
     unconstrained: :func:`_config`).  Returns the number of held stops."""
     N = pm.shape[0]
-    Ks, Cs, fs, Mfull = cfg[9], cfg[10], cfg[11], cfg[13]
+    Ks, Cs, fs, Mfull = cfg[0][1], cfg[0][2], cfg[3][0], cfg[0][3]
     W = pm[0, P_W]
     th = W * t + pm[0, P_PHI]
     c, sn = math.cos(th), math.sin(th)
@@ -802,8 +840,8 @@ def _held_pulls(pm, cfg, Sphi, contact, srig, t, q, v, out):
 def _held_reactions(cfg, Sphi, contact, srig, Mf, out):
     """w·λ for each held rigid stop from the unconstrained response M_s⁻¹f (or M_s⁻¹φP of an
     impulse): λ = −(ΦₕM_s⁻¹Φₕᵀ)⁻¹Φₕ·M_s⁻¹f.  Returns the number of held stops."""
-    Pinv = cfg[14]
-    h = Pinv.shape[0]
+    h = cfg[4]
+    Pinv = cfg[0][4]
     a = np.zeros(h)
     walls = np.zeros(h)
     j = 0
@@ -823,7 +861,7 @@ def _held_reactions(cfg, Sphi, contact, srig, Mf, out):
 @njit(cache=True)
 def _row_response(cfg, Phi, row, P):
     """M_s⁻¹φP: the unconstrained response to an impulse P at the point of row ``row``."""
-    Mfull = cfg[13]
+    Mfull = cfg[0][3]
     N = Mfull.shape[0]
     out = np.zeros(N)
     for i in range(N):
@@ -902,7 +940,7 @@ def _stop_impulse(pm, cfg, Sphi, s, e, v):
     one the held walls allow, :func:`_config`); ``v`` changed in place.  Returns (J, m_eff):
     the loss is ½m_eff(1 − e²)(φᵀq̇)²."""
     N = pm.shape[0]
-    Minv = cfg[0]
+    Minv = cfg[0][0]
     w = np.zeros(N)
     for i in range(N):
         if cfg[6]:
@@ -931,7 +969,7 @@ def _stop_jump(pm, cfg, Sphi, s, K, e):
             w[i] = Sphi[s, i] / pm[i, P_M]
         else:
             for j in range(N):
-                w[i] += cfg[0][i, j] * Sphi[s, j]
+                w[i] += cfg[0][0][i, j] * Sphi[s, j]
     inv = _dot(Sphi, s, w)
     for i in range(N):
         for j in range(N):
@@ -1064,7 +1102,7 @@ def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v):
         for i in range(N):
             inv += Phi[row, i] * Phi[row, i] / pm[i, P_M]
     else:
-        Minv = cfg[0]
+        Minv = cfg[0][0]
         for i in range(N):
             for j in range(N):
                 inv += Phi[row, i] * Minv[i, j] * Phi[row, j]
@@ -1074,7 +1112,7 @@ def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v):
         for i in range(N):
             v[i] += Phi[row, i] * P / pm[i, P_M]
     else:
-        Minv = cfg[0]
+        Minv = cfg[0][0]
         dv = np.zeros(N)
         for i in range(N):
             for j in range(N):
@@ -1119,11 +1157,14 @@ def _flight_jacobian(pm, cfg, K, tau, G):
             _, _, p11, p12, p21, p22 = _transition(tau, M, Ki, C, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
             F[i, i], F[i, N + i], F[N + i, i], F[N + i, N + i] = p11, p12, p21, p22
     else:
-        lam, V, Vinv = cfg[1], cfg[2], cfg[3]
-        E = (V * np.exp(lam * tau)) @ Vinv
+        lam, V, Vinv, _ = _modes_of(cfg)
+        g = np.exp(lam * tau)
         for i in range(2 * N):
             for j in range(2 * N):
-                F[i, j] = E[i, j].real
+                acc = 0.0j
+                for m in range(lam.shape[0]):
+                    acc += V[i, m] * g[m] * Vinv[m, j]
+                F[i, j] = acc.real
     for k in range(K):
         F[2 * N + k, 2 * N + k] = 1.0
         F[2 * N + k, 2 * N + K + k] = tau
@@ -1171,7 +1212,7 @@ def _impact_jump(pm, cfg, Phi, k, K, m, e, mu):
             w[i] = Phi[k, i] / pm[i, P_M]
         else:
             for j in range(N):
-                w[i] += cfg[0][i, j] * Phi[k, j]
+                w[i] += cfg[0][0][i, j] * Phi[k, j]
     c = (1.0 + e) * mu
     ku = 2 * N + K + k
     for i in range(N):
