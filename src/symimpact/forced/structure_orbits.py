@@ -14,8 +14,8 @@ is continuous there, the rate jumps by the dashpot's force).  Newton's method on
 with the Jacobian (monodromy − I) converges quadratically from a state near the orbit (a settled
 state of a long run); the eigenvalues of the monodromy are the Floquet multipliers.
 
-Orbits in which a mass sticks or its chatter accumulates are not differentiable by this chain
-yet (the one-mode engine's chain through them, :func:`symimpact.forced.shooting.rigid_monodromy`,
+Orbits in which a mass sticks, a rigid stop holds its point, or chatter accumulates are not
+differentiable by this chain yet (the one-mode engine's chain through them, :func:`symimpact.forced.shooting.rigid_monodromy`,
 is not carried to N modes): they are refused in one line.
 """
 
@@ -30,6 +30,7 @@ import numpy as np
 from ..errors import MethodNotApplicable, ParameterError
 from ..model.checks import whole_number
 from ..model.structure import Structure
+from . import _rigid
 from .structure_response import StructureResult, simulate_structure
 
 
@@ -101,8 +102,10 @@ def shoot_structure(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
         image, G, res = stroboscopic_map(structure, dampers, force_at, F0, omega, s, k, stops,
                                          phase)  # fmt: skip
         if not np.all(np.isfinite(G)):
-            kinds = set(res.events[:, 7].astype(int).tolist()) if len(res.events) else set()
-            why = ("a mass sticks or its chatter accumulates" if kinds & {1, 2}
+            kinds = set(res.events[:, _rigid.E_KIND].astype(int).tolist())
+            held = {_rigid.KIND_ACCUMULATION, _rigid.KIND_RELEASE}
+            why = ("a mass sticks, a rigid stop holds its point, or chatter accumulates"
+                   if kinds & held
                    else "an impact or contact meets its wall at zero speed (grazing)")  # fmt: skip
             raise MethodNotApplicable("shoot_structure", f"at Ω {float(omega):.6g} rad/s {why} "
                                       "within the orbit's periods: its monodromy is not carried "
