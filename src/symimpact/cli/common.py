@@ -271,7 +271,12 @@ def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
     cav = getattr(ns, "cavity", None)
     speed = getattr(ns, "impact_speed", None)
     material_e = str(getattr(ns, "e", None)).strip().lower() == "material"
-    if material_e and getattr(ns, "method", None) == "closed-form":
+    # periodic's --method: closed-form unless named (a structure file shoots, but takes no --e)
+    if (
+        material_e
+        and ns.command == "periodic"
+        and getattr(ns, "method", None) in (None, "closed-form")
+    ):
         raise ParameterError(
             "e", "material: the closed form (Eq. F3) needs a constant e; --method shooting "
             "follows the materials' e at each impact"
