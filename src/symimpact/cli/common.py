@@ -203,6 +203,40 @@ def _structure_model(ns: argparse.Namespace, given: set[str]) -> None:
     ns.structure_model = read_model(ns.structure)
 
 
+def structure_forcing(ns: argparse.Namespace) -> Any:
+    """The harmonic force of a structure file's model at --omega or --freq (and --phase): a
+    :class:`~symimpact.forced.Forcing` (each refusal one line naming the option)."""
+    from ..errors import ParameterError
+    from ..forced import Forcing
+
+    if ns.omega is None and ns.freq is None:
+        raise ParameterError("omega", "give the forcing frequency: --omega Ω or --freq f")
+    if ns.omega is not None and ns.freq is not None:
+        raise ParameterError("omega", "give the forcing frequency once: --omega or --freq")
+    return Forcing(F0=ns.structure_model.F0, omega=ns.omega, freq=ns.freq,
+                   phase=0.0 if ns.phase is None else ns.phase)  # fmt: skip
+
+
+def structure_band(ns: argparse.Namespace) -> tuple[float, float, float]:
+    """(low, high, step) [rad/s] of --omega-range or --freq-range for a structure file's curve
+    (each refusal one line naming the option)."""
+    import numpy as np
+
+    from ..errors import ParameterError
+    from ..maps.points import parse_range
+
+    if (ns.omega_range is None) == (ns.freq_range is None):
+        raise ParameterError("omega-range", "give the band once: --omega-range or --freq-range")
+    name = "omega-range" if ns.omega_range is not None else "freq-range"
+    if ns.omega_range is not None:
+        omegas = parse_range(name, ns.omega_range)
+    else:
+        omegas = 2 * np.pi * parse_range(name, ns.freq_range)
+    if len(omegas) < 2 or omegas[0] <= 0:
+        raise ParameterError(name, "the band needs at least two positive frequencies")
+    return float(omegas[0]), float(omegas[-1]), float(omegas[1] - omegas[0])
+
+
 def _structure_mode(ns: argparse.Namespace, given: set[str]) -> None:
     """--structure, --at and --mode: the primary as one mode of the structure referred to the
     damper's point a, M = Mᵢ/φᵢ(a)², K = ωᵢ²M, ζ = ζᵢ (Step 15: the displacement at a is the

@@ -7,7 +7,7 @@ from __future__ import annotations
 from typing import Any
 
 from .. import budgets
-from .common import add_system, emit, forcing_of, system_from, write_csv
+from .common import add_system, emit, forcing_of, structure_band, system_from, write_csv
 from .frf import add_band, band_from, contact_of, contact_title
 
 
@@ -66,7 +66,6 @@ def add_parser(sub: Any) -> None:
 def run_structure(ns) -> None:
     """--structure FILE with dampers: one damper's clearance chosen by the located peak of the
     structure's curve at a point (:func:`symimpact.maps.structure_design.structure_design`)."""
-    import numpy as np
 
     from ..errors import ParameterError
     from ..maps.points import parse_range
@@ -83,15 +82,7 @@ def run_structure(ns) -> None:
                                        "damper's clearance, in this process)")  # fmt: skip
     if ns.response not in (None, "displacement"):
         raise ParameterError("response", "a structure's design compares displacements")
-    if (ns.omega_range is None) == (ns.freq_range is None):
-        raise ParameterError("omega-range", "give the band once: --omega-range or --freq-range")
-    name = "omega-range" if ns.omega_range is not None else "freq-range"
-    if ns.omega_range is not None:
-        omegas = parse_range(name, ns.omega_range)
-    else:
-        omegas = 2 * np.pi * parse_range(name, ns.freq_range)
-    if len(omegas) < 2 or omegas[0] <= 0:
-        raise ParameterError(name, "the band needs at least two positive frequencies")
+    lo, hi, step = structure_band(ns)
     model = ns.structure_model
     if not model.dampers:
         raise ParameterError("structure", f"{ns.structure} gives no damper to design")
@@ -103,10 +94,9 @@ def run_structure(ns) -> None:
         raise ParameterError("point", exc.reason) from None
     gaps = parse_range("gaps", ns.gaps)
     d = structure_design(model.structure, model.dampers, model.force_at, model.F0, damper,
-                         gaps, float(omegas[0]), float(omegas[-1]),
-                         float(omegas[1] - omegas[0]), point, model.stops)  # fmt: skip
+                         gaps, lo, hi, step, point, model.stops)  # fmt: skip
     lines = [f"damper {damper!r}: its clearance against the peak at {point!r} over Ω "
-             f"{omega_text(omegas[0])}–{omega_text(omegas[-1])}"]  # fmt: skip
+             f"{omega_text(lo)}–{omega_text(hi)}"]  # fmt: skip
     for g, pk in zip(d.gaps, d.peaks, strict=True):
         lines.append(f"  gap {quantity_text('gap', g)}: " + ("no stable orbit traced" if pk is None
                      else f"peak {quantity_text('x', pk.amplitude)} at Ω {omega_text(pk.omega)} "

@@ -15,6 +15,7 @@ from .common import (
     add_system,
     emit,
     forcing_of,
+    structure_band,
     system_from,
     write_csv,
 )
@@ -152,11 +153,9 @@ def run_structure(ns) -> None:
     from both ends with the period-doubled branches
     (:func:`symimpact.forced.structure_branch.structure_curve`) and every point's located peak
     beside the bare structure's (the linear receptance, no damper or stop)."""
-    import numpy as np
 
     from ..errors import ParameterError
     from ..forced.structure_branch import bare_peak, curve_peak, structure_curve
-    from ..maps.points import parse_range
     from ..model.display import omega_text
     from .common import quantity_text
 
@@ -172,16 +171,7 @@ def run_structure(ns) -> None:
     if ns.no_sweeps:
         raise ParameterError("no-sweeps", "a structure's curve runs no sweeps: its branches start "
                                           "from the motions settled at the band's ends")  # fmt: skip
-    if (ns.omega_range is None) == (ns.freq_range is None):
-        raise ParameterError("omega-range", "give the band once: --omega-range or --freq-range")
-    name = "omega-range" if ns.omega_range is not None else "freq-range"
-    if ns.omega_range is not None:
-        omegas = parse_range(name, ns.omega_range)
-    else:
-        omegas = 2 * np.pi * parse_range(name, ns.freq_range)
-    if len(omegas) < 2 or omegas[0] <= 0:
-        raise ParameterError(name, "the band needs at least two positive frequencies")
-    lo, hi, step = float(omegas[0]), float(omegas[-1]), float(omegas[1] - omegas[0])
+    lo, hi, step = structure_band(ns)
     model = ns.structure_model
     args = (model.structure, model.dampers, model.force_at, model.F0)
     curve = structure_curve(*args, lo, hi, step, model.stops)

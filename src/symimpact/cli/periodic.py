@@ -9,7 +9,15 @@ from __future__ import annotations
 from typing import Any
 
 from .. import budgets
-from .common import add_forcing, add_output, add_system, emit, forcing_from, system_from
+from .common import (
+    add_forcing,
+    add_output,
+    add_system,
+    emit,
+    forcing_from,
+    structure_forcing,
+    system_from,
+)
 
 #: The methods ``--method`` takes.
 METHODS = ("closed-form", "shooting")
@@ -172,7 +180,6 @@ def _structure_orbit(ns) -> None:
     import numpy as np
 
     from ..errors import ParameterError
-    from ..forced import Forcing
     from ..forced.simulation import MAX_MULTIPLE, period_count
     from ..forced.structure_orbits import shoot_structure
     from ..forced.structure_response import simulate_structure
@@ -187,13 +194,8 @@ def _structure_orbit(ns) -> None:
                      ("chi", "the file gives each damper's and stop's contact")):  # fmt: skip
         if getattr(ns, key, None) is not None:
             raise ParameterError(key, why)
-    if ns.omega is None and ns.freq is None:
-        raise ParameterError("omega", "give the forcing frequency: --omega Ω or --freq f")
-    if ns.omega is not None and ns.freq is not None:
-        raise ParameterError("omega", "give the forcing frequency once: --omega or --freq")
     model = ns.structure_model
-    forcing = Forcing(F0=model.F0, omega=ns.omega, freq=ns.freq,
-                      phase=0.0 if ns.phase is None else ns.phase)  # fmt: skip
+    forcing = structure_forcing(ns)
     warmup = period_count("warmup", "300" if ns.warmup is None else ns.warmup)
     multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
     if not 1 <= multiple <= MAX_MULTIPLE:

@@ -18,6 +18,7 @@ from .common import (
     has_forcing,
     notice_first_compilation,
     quantity_text,
+    structure_forcing,
     system_from,
     write_csv,
 )
@@ -242,15 +243,8 @@ def run_structure(ns) -> None:
     ):  # fmt: skip
         if getattr(ns, key, None) is not None:
             raise ParameterError(flag, why)
-    if ns.omega is None and ns.freq is None:
-        raise ParameterError("omega", "give the forcing frequency: --omega Ω or --freq f")
-    if ns.omega is not None and ns.freq is not None:
-        raise ParameterError("omega", "give the forcing frequency once: --omega or --freq")
-    from ..forced import Forcing
-
     model = ns.structure_model
-    forcing = Forcing(F0=model.F0, omega=ns.omega, freq=ns.freq,
-                      phase=0.0 if ns.phase is None else ns.phase)  # fmt: skip
+    forcing = structure_forcing(ns)
     periods = period_count("periods", "400" if ns.periods is None else ns.periods)
     discard = int(0.75 * periods) if ns.discard is None else period_count("discard", ns.discard)
     if discard >= periods:
