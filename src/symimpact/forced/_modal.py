@@ -34,9 +34,13 @@ falsi; the earliest crossing is the impact.  The wall just left is kept off as i
 search (2w/Aₖ, and while the point's acceleration is certified to point away, with a bound B on
 its second derivative of the same make, |λ|⁴ in place of |λ|²).
 
-*Energy ledger.*  The work of the modal forces and the dissipation of the Cᵢ, by the one-mode
-engine's Gauss–Legendre rule summed over the modes (both hold while masses stick: those only add
-inertia), and the impacts' and closures' losses.
+*Energy ledger.*  The work of the modal forces and the dissipation of the Cᵢ, in closed form
+while the modes are uncoupled (each flight is a sum of two complex exponentials, and so is its
+force: each product integrates exactly, :func:`_mode_ledger`), else by the one-mode engine's
+Gauss–Legendre rule at a sixteenth of the shortest period, summed over the modes (both hold while
+masses stick: those only add inertia), and the impacts' and closures' losses.  The searches and
+the periods' maxima step up to a sixteenth of the slowest period (:func:`_slowest`) and down to
+what their bounds allow: a structure's highest modes set their finest step, not their coarsest.
 
 Private: :mod:`symimpact.forced.structure_response` checks the input and builds the result.
 """
@@ -78,6 +82,8 @@ from ._rigid import (
     P_m,
     _accel_bound,
     _grow,
+    _steady_cos,
+    _steady_sin,
     _transition,
     _vf,
     _xf,
@@ -196,7 +202,7 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig):
             M, K, C = masses[i, P_M], pm[i, P_K], pm[i, P_C]
             wmax = max(wmax, math.sqrt(max(K / M - C * C / (4 * M * M), 0.0)))
         return _pack(Minv, Ks, Cs, Minv, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses,
-                     wmax)  # fmt: skip
+                     wmax, _slowest(lam, masses, pm, W, True))  # fmt: skip
     A = np.zeros((2 * N, 2 * N), dtype=np.complex128)
     for i in range(N):
         A[i, N + i] = 1.0
@@ -225,12 +231,33 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig):
             qs = np.linalg.solve(Ks, fs)
     for m in range(2 * N):
         wmax = max(wmax, abs(lam[m].imag))
-    return _pack(Minv, Ks, Cs, Minv, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses, wmax)
+    return _pack(Minv, Ks, Cs, Minv, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses, wmax,
+                 _slowest(lam, masses, pm, W, False))  # fmt: skip
 
 
 @njit(cache=True)
-def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses, wmax):
-    """The configuration tuple (mats, cplx, 2n, vecs, h, ok, decoupled, pm_s, ω_max): its arrays
+def _slowest(lam, masses, pm, W, decoupled):
+    """max(Ω, the lowest damped frequency of the flight's modes) [rad/s]: the searches' and the
+    periods' maxima's coarsest step is a sixteenth of its period (their bounds certify any step;
+    a structure's high modes, which set the finest one, need not set the coarsest).  With one mode
+    it is that mode's ω_d, as ω_max (:func:`_pack`)."""
+    w = math.inf
+    if decoupled:
+        for i in range(pm.shape[0]):
+            M, K, C = masses[i, P_M], pm[i, P_K], pm[i, P_C]
+            w = min(w, math.sqrt(max(K / M - C * C / (4 * M * M), 0.0)))
+    else:
+        for m in range(lam.shape[0]):
+            if lam[m].imag != 0.0:
+                w = min(w, abs(lam[m].imag))
+    return W if w == math.inf else max(W, w)
+
+
+@njit(cache=True)
+def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses, wmax,
+          wlow):  # fmt: skip
+    """The configuration tuple (mats, cplx, 2n, vecs, h, ok, decoupled, pm_s, ω_max, ω_low,
+    :func:`_slowest`): its arrays
     packed in three (every array in a tuple that a function takes costs a reference count at
     each call): mats = [M_s⁻¹ (as the walls allow), K_s, C_s, M_s⁻¹ unconstrained,
     (ΦₕM_s⁻¹Φₕᵀ)⁻¹ in its top-left h × h]; cplx holds V (2N × 2n), V⁻¹ (2n × 2N), X̂ and Λ in
@@ -252,7 +279,7 @@ def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, 
     vecs = np.zeros((2, N))
     vecs[0] = fs
     vecs[1] = qs
-    return mats, cplx, n2, vecs, h, ok, decoupled, masses, wmax
+    return mats, cplx, n2, vecs, h, ok, decoupled, masses, wmax, wlow
 
 
 @njit(cache=True, inline="always")
@@ -326,7 +353,8 @@ def _held_config(pm, Sphi, sg, contact, srig, held, Ms, Ks, Cs, fs, Minv, masses
             qs = qstar + Z @ np.linalg.solve(Kr, Z.T @ (fs - Ks @ qstar))
         for m in range(2 * nr):
             wmax = max(wmax, abs(lam[m].imag))
-    return _pack(Meff, Ks, Cs, Minv, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, False, masses, wmax)
+    return _pack(Meff, Ks, Cs, Minv, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, False, masses, wmax,
+                 _slowest(lam, masses, pm, W, False))  # fmt: skip
 
 
 @njit(cache=True)
@@ -580,7 +608,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
     N, K = pm.shape[0], Phi.shape[0]
     if nstuck == K:  # every mass rides on its point: nothing to meet
         return T, -1, 0
-    hmax = 2.0 * math.pi / cfg[8] / 16.0
+    hmax = 2.0 * math.pi / cfg[9] / 16.0
     dec = cfg[6]
     A, B, tau_safe, q, v, za, zb = work[0], work[1], work[2], work[3], work[4], work[5], work[6]
     _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B)
@@ -671,7 +699,7 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
     point's acceleration is certified to point away (:func:`_held_off`).  A held rigid stop does
     not switch here (:func:`_stop_release`)."""
     S = Sphi.shape[0]
-    hmax = 2.0 * math.pi / cfg[8] / 16.0
+    hmax = 2.0 * math.pi / cfg[9] / 16.0
     dec = cfg[6]
     A, B, fa, fb, hold = work[14], work[15], work[16], work[17], work[18]
     q, v = work[3], work[4]
@@ -977,82 +1005,197 @@ def _stop_jump(pm, cfg, Sphi, s, K, e):
     return DJ
 
 
+@njit(cache=True, inline="always")
+def _expint(k, tau):
+    """∫₀^τ e^{κt} dt = (e^{κτ} − 1)/κ for a complex κ, by its series where κτ is small (there
+    the quotient would cancel)."""
+    z = k * tau
+    if abs(z) < 0.5:
+        term, acc = 1.0 + 0.0j, 1.0 + 0.0j
+        for n in range(2, 20):
+            term = term * z / n
+            acc += term
+        return tau * acc
+    return (np.exp(z) - 1.0) / k
+
+
+@njit(cache=True, inline="always")
+def _pair(x, y, E):
+    """∫₀^τ Re(x₀e^{μt} + x₁e^{iΩt})·Re(y₀e^{μt} + y₁e^{iΩt}) dt from ``E`` = ∫ e^{κt} over the
+    exponents κ = 2μ, μ + μ̄, μ + iΩ, μ − iΩ, 2iΩ, 0 (Re a·Re b = (Re ab + Re ab̄)/2)."""
+    return 0.5 * (
+        (x[0] * y[0] * E[0]).real
+        + (x[0] * np.conj(y[0]) * E[1]).real
+        + (x[0] * y[1] * E[2]).real
+        + (x[0] * np.conj(y[1]) * E[3]).real
+        + (x[1] * y[0] * E[2]).real
+        + (x[1] * np.conj(y[0]) * np.conj(E[3])).real
+        + (x[1] * y[1] * E[4]).real
+        + (x[1] * np.conj(y[1]) * E[5]).real
+    )
+
+
+@njit(cache=True)
+def _mode_ledger(pm, i, t0, x0, v0, tau):
+    """(work of mode i's force, dissipation of its Cᵢ) over the flight [t0, t0 + τ] of Eq. F1 in
+    closed form, or (NaN, NaN) where Eq. F1 takes another form (at or next to the undamped
+    resonance, over-damped): the flight is Re(αe^{μt}) + Re(βe^{iΩt}) with μ = −σ + iω_d (the
+    particular part β from Eq. F1's steady cosine and sine, α from the start), the force's
+    terms are Re(γe^{iΩt}), and each product integrates to (e^{κτ} − 1)/κ.  The power is the
+    one-mode engine's, F₀cos θ·ẋ − (K(x − x_b) + C(ẋ − ẋ_b))ẋ_b, the dissipation C(ẋ − ẋ_b)²."""
+    M, K, C, F0, Xb, W = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB], pm[i, P_W]
+    sigma = C / (2.0 * M)
+    wd2 = K / M - sigma * sigma
+    D = (K - M * W * W) ** 2 + (C * W) ** 2
+    if not (wd2 > 0.0 and D > 1e-24 * K * K):
+        return math.nan, math.nan
+    wd = math.sqrt(wd2)
+    th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
+    A = _steady_cos(M, K, C, F0, Xb, W)
+    B = _steady_sin(M, K, C, F0, Xb, W)
+    c, sn = math.cos(th), math.sin(th)
+    dx = x0 - (A * c + B * sn)
+    dv = v0 - W * (B * c - A * sn)
+    mu = complex(-sigma, wd)
+    rot = complex(c, sn)
+    iw = complex(0.0, W)
+    x = np.empty(2, dtype=np.complex128)  # the displacement's two terms
+    x[0] = complex(dx, -(dv + sigma * dx) / wd)
+    x[1] = complex(A, -B) * rot
+    v = np.empty(2, dtype=np.complex128)
+    v[0] = mu * x[0]
+    v[1] = iw * x[1]
+    cos_t = np.zeros(2, dtype=np.complex128)  # cos θ(t), and the base's displacement and rate
+    cos_t[1] = rot
+    xb = np.zeros(2, dtype=np.complex128)
+    xb[1] = Xb * rot
+    vb = np.zeros(2, dtype=np.complex128)
+    vb[1] = iw * Xb * rot
+    rel = v - vb
+    E = np.empty(6, dtype=np.complex128)
+    E[0] = _expint(2.0 * mu, tau)
+    E[1] = _expint(complex(-2.0 * sigma, 0.0), tau)
+    E[2] = _expint(mu + iw, tau)
+    E[3] = _expint(mu - iw, tau)
+    E[4] = _expint(2.0 * iw, tau)
+    E[5] = tau
+    work = F0 * _pair(cos_t, v, E)
+    if Xb != 0.0:
+        work -= K * (_pair(x, vb, E) - _pair(xb, vb, E)) + C * _pair(rel, vb, E)
+    return work, C * _pair(rel, rel, E)
+
+
 @njit(cache=True)
 def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work, Sphi,
              sc, contact):  # fmt: skip
     """Account for the flight [t0, t0 + τ]: the work of the modal forces and the dissipation of
-    the Cᵢ (ledger[0], ledger[1], Gauss–Legendre as in the one-mode engine) and of the pressed
-    stops' dashpots, c₁(φₛᵀq̇)² (ledger[3]), and, for every output
-    point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period crossed
-    (``period_max[k, p]``), at the sub-intervals' ends and at the zeros of ẋₚ inside them.  A zero
-    is located only where the extreme could raise the period's maximum: within a sub-interval of
-    length h, abs(xₚ) ≤ max(abs(xₚ(a)), abs(xₚ(b))) + Aₚh²/8 (Aₚ ≥ abs(ẍₚ), as the impact search
-    bounds it), and a smaller bound cannot (with several modes, ẋₚ ripples at the highest mode's
-    frequency and most of its zeros are such)."""
+    the Cᵢ (ledger[0], ledger[1]) in closed form while the modes are uncoupled
+    (:func:`_mode_ledger`), else by the one-mode engine's Gauss–Legendre rule at a sixteenth of
+    the shortest period, with the pressed stops' dashpots, c₁(φₛᵀq̇)² (ledger[3]); and, for every
+    output point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period
+    crossed (``period_max[k, p]``), at the ends of the steps and at the zeros of ẋₚ inside them.
+    Within a step of length h, abs(xₚ) ≤ max(abs(xₚ(a)), abs(xₚ(b))) + Aₚh²/8 (Aₚ ≥ abs(ẍₚ), as
+    the impact search bounds it): a step whose bound cannot raise the period's maximum is taken,
+    so is one over which ẋₚ keeps its sign (ẋₚ(a) + ẋₚ(b) > Aₚh, of one sign: the extremes are
+    its ends), and any other is halved down to a sixteenth of the shortest period, where a zero
+    of ẋₚ is located where its sign changes (with several modes, ẋₚ ripples at the highest
+    mode's frequency and most of its zeros are such)."""
     N, P = pm.shape[0], Pout.shape[0]
     dec = cfg[6]
     Ap, Bp, v_prev, x_prev = work[10], work[11], work[12], work[13]
-    _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp)
+    xs, vs, fine = work[19], work[20], work[21]
     W = pm[0, P_W]
     T_f = 2.0 * math.pi / W
     hq = 2.0 * math.pi / cfg[8] / 16.0
-    n = max(1, int(math.ceil(tau / hq)))  # noqa: RUF046 (int() spelled out for numba)
-    hs = tau / n
     q, v = work[3], work[4]
+    closed = dec
+    if dec:
+        w_sum, d_sum = 0.0, 0.0
+        for i in range(N):
+            wi, di = _mode_ledger(pm, i, t0, q0[i], v0[i], tau)
+            if math.isnan(wi):
+                closed = False
+                break
+            w_sum += wi
+            d_sum += di
+        if closed:
+            ledger[0] += w_sum
+            ledger[1] += d_sum
+    if not closed:
+        n = max(1, int(math.ceil(tau / hq)))  # noqa: RUF046 (int() spelled out for numba)
+        hs = tau / n
+        for j in range(n):
+            a = j * hs
+            for g in range(8):
+                s = a + 0.5 * hs * (1.0 + _GL_X[g])
+                if dec:
+                    _free_states(pm, t0, q0, v0, s, q, v)
+                else:
+                    _states(pm, cfg, nstuck, t0, q0, v0, s, q, v)
+                th = W * (t0 + s) + pm[0, P_PHI]
+                c, sn = math.cos(th), math.sin(th)
+                for i in range(N):
+                    # the one-mode engine's power with each mode's base amplitude Γᵢ·X_b
+                    xb, vb = pm[i, P_XB] * c, -pm[i, P_XB] * W * sn
+                    rel = v[i] - vb
+                    power_in = (
+                        pm[i, P_F0] * c * v[i] - (pm[i, P_K] * (q[i] - xb) + pm[i, P_C] * rel) * vb
+                    )
+                    ledger[0] += 0.5 * hs * _GL_W[g] * power_in
+                    ledger[1] += 0.5 * hs * _GL_W[g] * pm[i, P_C] * rel * rel
+                if not dec:
+                    for r in range(Sphi.shape[0]):
+                        if contact[r] != 0:
+                            rate = _dot(Sphi, r, v)
+                            ledger[3] += 0.5 * hs * _GL_W[g] * sc[r] * rate * rate
+    if P == 0:
+        return
+    _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp)
     for p in range(P):
         v_prev[p] = 0.0
         x_prev[p] = 0.0
         for i in range(N):
             v_prev[p] += Pout[p, i] * v0[i]
             x_prev[p] += Pout[p, i] * q0[i]
-    for j in range(n):
-        a = j * hs
-        for g in range(8):
-            s = a + 0.5 * hs * (1.0 + _GL_X[g])
-            if dec:
-                _free_states(pm, t0, q0, v0, s, q, v)
-            else:
-                _states(pm, cfg, nstuck, t0, q0, v0, s, q, v)
-            th = W * (t0 + s) + pm[0, P_PHI]
-            c, sn = math.cos(th), math.sin(th)
-            for i in range(N):
-                # the one-mode engine's power with each mode's base amplitude Γᵢ·X_b
-                xb, vb = pm[i, P_XB] * c, -pm[i, P_XB] * W * sn
-                rel = v[i] - vb
-                power_in = (
-                    pm[i, P_F0] * c * v[i] - (pm[i, P_K] * (q[i] - xb) + pm[i, P_C] * rel) * vb
-                )
-                ledger[0] += 0.5 * hs * _GL_W[g] * power_in
-                ledger[1] += 0.5 * hs * _GL_W[g] * pm[i, P_C] * rel * rel
-            if not dec:
-                for r in range(Sphi.shape[0]):
-                    if contact[r] != 0:
-                        rate = _dot(Sphi, r, v)
-                        ledger[3] += 0.5 * hs * _GL_W[g] * sc[r] * rate * rate
-        b = (j + 1) * hs
+    Hc = 2.0 * math.pi / cfg[9] / 16.0
+    a = 0.0
+    H = Hc
+    while a < tau:
+        H = min(H, tau - a)
+        b = a + H
         if dec:
             _free_states(pm, t0, q0, v0, b, q, v)
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, b, q, v)
+        ka = min(int(math.floor((t0 + a) / T_f)), n_periods)  # noqa: RUF046
         k = int(math.floor((t0 + b) / T_f))  # noqa: RUF046 (int() spelled out for numba)
+        taken = True
         for p in range(P):
             xb, vb = 0.0, 0.0
             for i in range(N):
                 xb += Pout[p, i] * q[i]
                 vb += Pout[p, i] * v[i]
-            if k < n_periods:
-                period_max[k, p] = max(period_max[k, p], abs(xb))
-            ka = min(int(math.floor((t0 + a) / T_f)), n_periods)  # noqa: RUF046
-            top = max(abs(x_prev[p]), abs(xb)) + Ap[p] * hs * hs / 8.0
+            xs[p], vs[p], fine[p] = xb, vb, 0.0
+            top = max(abs(x_prev[p]), abs(xb)) + Ap[p] * H * H / 8.0
             low = period_max[ka, p]
             if k < n_periods:
                 low = min(low, period_max[k, p])
-            x_prev[p] = xb
-            if top <= low:
-                v_prev[p] = vb
+            slope = v_prev[p] + vb
+            one_sign = (v_prev[p] > 0.0) == (vb > 0.0) and v_prev[p] != 0.0 and vb != 0.0
+            if top <= low or (one_sign and abs(slope) > Ap[p] * H):
                 continue
-            if (v_prev[p] > 0.0) != (vb > 0.0) and v_prev[p] != 0.0:
-                lo, hi, flo, fhi = a, b, v_prev[p], vb
+            if H > hq and H > 4e-16 * (t0 + b):
+                taken = False
+                break
+            fine[p] = 1.0
+        if not taken:
+            H *= 0.5
+            continue
+        for p in range(P):
+            if k < n_periods:
+                period_max[k, p] = max(period_max[k, p], abs(xs[p]))
+            if fine[p] != 0.0 and (v_prev[p] > 0.0) != (vs[p] > 0.0) and v_prev[p] != 0.0:
+                lo, hi, flo, fhi = a, b, v_prev[p], vs[p]
                 kept = 0
                 for _ in range(100):
                     tm = secant_point(lo, hi, flo, fhi)
@@ -1085,7 +1228,10 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                 km = int(math.floor((t0 + 0.5 * (lo + hi)) / T_f))  # noqa: RUF046
                 if km < n_periods:
                     period_max[km, p] = max(period_max[km, p], abs(xm))
-            v_prev[p] = vb
+            x_prev[p] = xs[p]
+            v_prev[p] = vs[p]
+        a = b
+        H = min(2.0 * H, Hc)
 
 
 @njit(cache=True)
@@ -1286,7 +1432,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
     # the release search's last values; the output points' bounds, last velocities and
     # displacements; the stops' bounds A, B, displacements at the grid's ends and held-off times
     # (one array, its rows: a tuple of arrays costs a reference count per array at every call)
-    work = np.empty((19, max(N, K, P, S)))
+    work = np.empty((22, max(N, K, P, S)))
     D = 2 * N + 2 * K
     G = np.eye(D)
     fm, fp, gh = np.empty(D), np.empty(D), np.zeros(D)
