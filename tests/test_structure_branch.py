@@ -150,6 +150,7 @@ DAMPED_FILE = {"fe": CHAIN_FILE["fe"],
                "force": {"at": 1, "amplitude": 0.1}}  # fmt: skip
 
 
+@pytest.mark.slow  # about 50 s on one core: the README's test command stays within 12 minutes
 def test_design_of_a_structure_s_clearance_bounds_every_motion_brute_force_finds(tmp_path, capsys):
     """No motion a multi-start brute force settles on (from rest and from two random states, at
     a grid twice as fine as the design's) exceeds the design's peak at that clearance."""
