@@ -601,6 +601,54 @@ def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb,
 
 
 @njit(cache=True)
+def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau_safe, A, tau, za,
+                 which, wall, tk, q, v):  # fmt: skip
+    """Whether no free damper meets a wall in [τ, τₖ) when damper ``which`` meets wall ``wall``
+    at τₖ (refined) and every z was inside at τ (``za``): near τₖ that damper's s·z ≤ h − r(τₖ − t)
+    + Aₖ(τₖ − t)²/2 < h while τₖ − t ≤ r/Aₖ (r its rate at τₖ), and over [τ, t₁] and [t₁, τₖ],
+    t₁ = τₖ − r/Aₖ, each damper's chord bound (:func:`_next_impact`'s) must clear both walls
+    (a wall just left also while the interval ends before its held-off time).  False (not
+    certified) sends the search back to halving its step."""
+    N, K = pm.shape[0], Phi.shape[0]
+    dec = cfg[6]
+    if dec:
+        _free_states(pm, t0, q0, v0, tk, q, v)
+    else:
+        _states(pm, cfg, nstuck, t0, q0, v0, tk, q, v)
+    r = wall * (u0[which] - _dot(Phi, which, v))
+    if not r > 0.0:
+        return False
+    t1 = max(tau, tk - r / A[which])
+    zk = np.empty(K)
+    for k in range(K):
+        dx = 0.0
+        for i in range(N):
+            dx += Phi[k, i] * (q[i] - q0[i])
+        zk[k] = z0[k] + u0[k] * tk - dx
+    if dec:
+        _free_states(pm, t0, q0, v0, t1, q, v)
+    else:
+        _states(pm, cfg, nstuck, t0, q0, v0, t1, q, v)
+    for k in range(K):
+        if stuck[k] != 0:
+            continue
+        dx = 0.0
+        for i in range(N):
+            dx += Phi[k, i] * (q[i] - q0[i])
+        z1 = z0[k] + u0[k] * t1 - dx
+        for w in (1.0, -1.0):
+            first = max(w * za[k], w * z1) + A[k] * (t1 - tau) ** 2 / 8.0 < hd[k]
+            if not first and not (side0[k] == w and t1 <= tau_safe[k]):
+                return False
+            if k == which and w == wall:
+                continue  # [t₁, τₖ): the rate's bound above
+            last = max(w * z1, w * zk[k]) + A[k] * (tk - t1) ** 2 / 8.0 < hd[k]
+            if not last and not (side0[k] == w and tk <= tau_safe[k]):
+                return False
+    return True
+
+
+@njit(cache=True)
 def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch, work):
     """(τ, damper, side): the first τ in (0, T] at which a free damper's abs(z) reaches its half
     clearance, that damper and its wall (±1); (T, −1, 0) when there is none, or (τ so far, −1, 0)
@@ -666,6 +714,20 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             H = min(2.0 * H, hmax)
             continue
         if H > hmin and H > 4e-16 * tb:
+            # a crossing already bracketed, away from where its damper started: refined at
+            # once and taken where nothing can come before it (else the step is halved)
+            first, which, wall = tb, -1, 0
+            for k in range(K):
+                if stuck[k] == 0 and abs(zb[k]) >= hd[k] and abs(za[k]) < hd[k] and tau > 0.0:
+                    s = 1.0 if zb[k] > 0 else -1.0
+                    tk = _refine(pm, cfg, nstuck, Phi, k, hd[k], t0, q0, v0, z0[k], u0[k], s,
+                                 tau, tb, za[k], zb[k], q, v)  # fmt: skip
+                    if which < 0 or tk < first:
+                        first, which, wall = tk, k, int(s)
+            if which >= 0 and _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0,
+                                           side0, tau_safe, A, tau, za, which, wall, first, q,
+                                           v):  # fmt: skip
+                return first, which, wall
             H *= 0.5
             continue
         first, which, wall = tb, -1, 0
