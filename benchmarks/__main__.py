@@ -21,6 +21,7 @@ from . import (
     frc,
     map_throughput,
     million_map,
+    one_mode_engine,
     parameter_derivative,
     random_loads,
     startup,
@@ -49,6 +50,10 @@ SUITE = (
     (
         "10. a structure of several modes with impact dampers: cost against N, against DOP853",
         structure.main,
+    ),
+    (
+        "11. the one-mode system through the engine of several modes against the engine it replaced",
+        one_mode_engine.main,
     ),
 )
 

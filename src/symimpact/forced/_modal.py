@@ -30,7 +30,10 @@ sticks Aₖ = Σ|φᵢ(aₖ)|·Aᵢ, Aᵢ the one-mode bound of mode i's acceler
 system's modes of |φₖᵀVₗ|·|cₗ|·|λₗ|² (each decays, Re λₗ ≤ 0) and the harmonic part Ω²|φₖᵀX̂|.
 All free dampers are marched together: an interval every bound clears is skipped, any other
 halved, and each damper whose z crosses a wall there is bracketed and refined by Illinois regula
-falsi; the earliest crossing is the impact.  The wall just left is kept off as in the one-mode
+falsi; the earliest crossing is the impact.  A crossing bracketed by a longer step is refined at
+once and taken where nothing can come before it (:func:`_none_before`: its rate bounds the
+approach, the chord bounds the rest); else the step is halved down to where any excursion beyond
+a wall would be shallower than 1e-20 of the clearance.  The wall just left is kept off as in the one-mode
 search (2w/Aₖ, and while the point's acceleration is certified to point away, with a bound B on
 its second derivative of the same make, |λ|⁴ in place of |λ|²).
 
