@@ -33,9 +33,9 @@ halved, and each damper whose z crosses a wall there is bracketed and refined by
 falsi; the earliest crossing is the impact.  A crossing bracketed by a longer step is refined at
 once and taken where nothing can come before it (:func:`_none_before`: its rate bounds the
 approach, the chord bounds the rest); else the step is halved down to where any excursion beyond
-a wall would be shallower than 1e-20 of the clearance.  The wall just left is kept off as in the one-mode
-search (2w/Aₖ, and while the point's acceleration is certified to point away, with a bound B on
-its second derivative of the same make, |λ|⁴ in place of |λ|²).
+a wall would be shallower than 1e-20 of the clearance.  The wall just left is kept off as in the
+one-mode search (2w/Aₖ, and while the point's acceleration is certified to point away, with a
+bound B on its second derivative of the same make, |λ|⁴ in place of |λ|²).
 
 *Energy ledger.*  The work of the modal forces and the dissipation of the Cᵢ, in closed form
 while the modes are uncoupled (each flight is a sum of two complex exponentials, and so is its
