@@ -259,12 +259,11 @@ def _slowest(lam, masses, pm, W, decoupled):
 @njit(cache=True)
 def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses, wmax,
           wlow):  # fmt: skip
-    """The configuration tuple (mats, cplx, 2n, vecs, h, ok, decoupled, pm_s, ω_max, ω_low,
-    :func:`_slowest`): its arrays
-    packed in three (every array in a tuple that a function takes costs a reference count at
-    each call): mats = [M_s⁻¹ (as the walls allow), K_s, C_s, M_s⁻¹ unconstrained,
-    (ΦₕM_s⁻¹Φₕᵀ)⁻¹ in its top-left h × h]; cplx holds V (2N × 2n), V⁻¹ (2n × 2N), X̂ and Λ in
-    its rows; vecs = [f_s, q_s] (:func:`_config`)."""
+    """The configuration tuple (mats, cplx, 2n, vecs, h, ok, decoupled, pm_s, ω_max, ω_low of
+    :func:`_slowest`): its arrays packed in three (every array in a tuple that a function takes
+    costs a reference count at each call): mats = [M_s⁻¹ (as the walls allow), K_s, C_s,
+    M_s⁻¹ unconstrained, (ΦₕM_s⁻¹Φₕᵀ)⁻¹ in its top-left h × h]; cplx holds V (2N × 2n), V⁻¹
+    (2n × 2N), X̂ and Λ in its rows; vecs = [f_s, q_s] (:func:`_config`)."""
     N = Ks.shape[0]
     n2 = lam.shape[0]
     h = Pinv.shape[0]
