@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import importlib
 
+from sympy.core.random import seed as _sympy_seed
+
 # Load the submodule derive.board before the function board() below is defined: the first import
 # of a submodule sets it as an attribute of the package, which would otherwise shadow board().
 from . import board as _board_module  # noqa: F401
@@ -34,6 +36,17 @@ STEPS = (
 )
 
 
+#: The seed of SymPy's own random numbers, set on import and before every step.  Its polynomial
+#: factorisation (Wang's algorithm, under ``simplify`` and ``factor``) lifts from randomly chosen
+#: points, which SymPy draws from a generator seeded by the operating system: the results are the
+#: same, the time is not.  Unseeded, one ``derive --check`` of a fresh clone spent 39 minutes of
+#: CPU in ``sampled_load``'s simplify (Hensel lifting), where its twin took 4 minutes in all.
+SYMPY_SEED = 20261128
+_sympy_seed(SYMPY_SEED)
+
+
 def board(step: str):
-    """Run one derivation step and return its board."""
+    """Run one derivation step and return its board (SymPy's random numbers seeded first, so a
+    step's work does not depend on the steps before it nor on the run)."""
+    _sympy_seed(SYMPY_SEED)
     return importlib.import_module(f"derive.{step}").derive()
