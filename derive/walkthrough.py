@@ -74,10 +74,9 @@ print("".join(diff))""",
         "step's own checks fail — the one that compares two free bodies with their reduced mass "
         "catches the wrong relation — and every generated file that holds the contact-duration "
         "kernels differs.",
-        """# a fixed hash seed: SymPy's work on the wrong relation depends on
-# the order of its sets; under 4242 the check takes about 6 minutes
-# of CPU, under one random seed a documentation build saw it pass
-# 23 minutes without ending
+        """# derive seeds SymPy's random numbers (derive.SYMPY_SEED) and this
+# fixes the hash seed: the time SymPy's factorisation takes on the
+# wrong relation depends on both (about 6 minutes of CPU here)
 run = subprocess.run([sys.executable, "-m", "derive", "--check"],
                      cwd=work, capture_output=True, text=True,
                      env=dict(os.environ, PYTHONHASHSEED="4242"))
