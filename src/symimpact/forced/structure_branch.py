@@ -1,14 +1,16 @@
 """A branch of periodic orbits of a structure of several modes, continued in the forcing
-frequency, with its bifurcations located: :func:`structure_branch`.
+frequency (:func:`structure_branch`) or, at a fixed frequency, in a damper's clearance,
+restitution or mass or the force amplitude (:func:`parameter_branch`), with its bifurcations
+located.
 
 Each point is an orbit shot on the state of the N modes and K dampers
 (:func:`symimpact.forced.structure_orbits.shoot_structure`, the monodromy carried through every
-flight, impact and stop contact).  The next frequency's Newton starts from the secant
+flight, impact and stop contact).  The next value's Newton starts from the secant
 extrapolation of the last two orbits (natural-parameter continuation); where it fails the step is
 halved, down to a floor, where the branch ends and says why (a fold turns it back; an orbit that
 sticks or chatters is not followed yet).  Between two orbits whose count of multipliers outside
-the unit circle differs a multiplier has crossed it: the crossing is located by bisection in Ω
-(each trial shot from the nearer orbit) and named by where the multiplier crosses — at −1 a
+the unit circle differs a multiplier has crossed it: the crossing is located by bisection in the
+parameter (each trial shot from the nearer orbit) and named by where the multiplier crosses — at −1 a
 period doubling, at +1 a fold or branch point, elsewhere a Neimark–Sacker point (a pair
 e^{±iθ}); where the bracket closes on a change of the impacts a period, the stability changed
 at a grazing (the multipliers jump there).  Where the count of impacts or contacts a period changes, an impact was born or died
@@ -37,17 +39,27 @@ AT_GRAZING = "stability change at a grazing"
 
 @dataclass(frozen=True)
 class Bifurcation:
-    """A multiplier crossing the unit circle at ``omega`` [rad/s] (located to ``tolerance``)."""
+    """A multiplier crossing the unit circle at ``value`` of the branch's ``parameter`` (Ω
+    [rad/s], or one of :data:`PARAMETERS` in SI), located to ``tolerance``."""
 
     kind: str
-    omega: float
+    value: float
     multiplier: complex
     tolerance: float
     #: the orbits at the bracket's two ends (within ``tolerance`` of each other)
     sides: tuple[StructureOrbit, StructureOrbit]
+    parameter: str = "omega"
+
+    @property
+    def omega(self) -> float:
+        """The forcing frequency Ω [rad/s] of the bifurcation: the located value on a branch in
+        Ω, else the branch's fixed Ω."""
+        return self.value if self.parameter == "omega" else self.sides[0].run.omega
 
     def as_dict(self) -> dict[str, Any]:
-        return {"kind": self.kind, "omega": self.omega, "tolerance": self.tolerance,
+        located = {} if self.parameter == "omega" else {"parameter": self.parameter,
+                                                        "value": self.value}  # fmt: skip
+        return {"kind": self.kind, **located, "omega": self.omega, "tolerance": self.tolerance,
                 "multiplier": [self.multiplier.real, self.multiplier.imag]}  # fmt: skip
 
 
@@ -63,22 +75,54 @@ class StructureBranch:
     #: the orbits at the ends of each located bracket (bifurcations and grazings), beside the
     #: traced ones: where a stable stretch ends
     edges: list[StructureOrbit] = field(default_factory=list)
+    #: what the branch is continued in: "omega", or one of :data:`PARAMETERS`
+    parameter: str = "omega"
+    #: the damper whose ``gap``, ``e`` or ``m`` is continued (else "")
+    damper: str = ""
 
     @property
     def omegas(self) -> np.ndarray:
         return np.array([o.run.omega for o in self.orbits])
+
+    @property
+    def values(self) -> np.ndarray:
+        """The parameter's value at each orbit (SI; Ω [rad/s] on a branch in Ω)."""
+        value = _value_of(self.parameter, self.damper)
+        return np.array([value(o) for o in self.orbits])
 
     def amplitudes(self, point: str) -> np.ndarray:
         """The orbits' largest abs(x) at ``point`` [m]."""
         return np.array([o.amplitudes[point] for o in self.orbits])
 
     def as_dict(self) -> dict[str, Any]:
-        return {
-            "points": [_point(o) for o in self.orbits],
+        value = _value_of(self.parameter, self.damper)
+        located = ({} if self.parameter == "omega" else
+                   {"parameter": self.parameter, "damper": self.damper or None})  # fmt: skip
+        extra = (lambda o: {}) if self.parameter == "omega" else (lambda o: {"value": value(o)})
+        return located | {
+            "points": [_point(o) | extra(o) for o in self.orbits],
             "bifurcations": [b.as_dict() for b in self.bifurcations],
             "grazings": self.grazings,
             "ended": self.ended,
         }
+
+
+#: What :func:`parameter_branch` continues at a fixed Ω, with its SI unit: a damper's total
+#: clearance, restitution or mass, or the force amplitude.
+PARAMETERS = {"gap": "m", "e": "", "m": "kg", "F0": "N"}
+
+
+def _value_of(parameter: str, damper: str):
+    """The function giving an orbit's value of ``parameter`` (of damper ``damper``)."""
+    if parameter == "omega":
+        return lambda o: o.run.omega
+    if parameter == "F0":
+        return lambda o: o.run.F0
+
+    def value(o: StructureOrbit) -> float:
+        return float(getattr(next(d for d in o.run.dampers if d.name == damper), parameter))
+
+    return value
 
 
 def _returns_after(o: StructureOrbit, periods: int, args: tuple, stops: Any, phase: float) -> bool:
@@ -121,10 +165,7 @@ def structure_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
     if w0 == w1:
         raise ParameterError("omega_end", "must differ from omega_start")
     k = whole_number("periods", periods, 1)
-    band = abs(w1 - w0)
-    h_max = band / 100.0 if step is None else positive_float("step", step, "rad/s")
-    h_max = min(h_max, band)
-    direction = math.copysign(1.0, w1 - w0)
+    h = None if step is None else positive_float("step", step, "rad/s")
     args = (structure, dampers, force_at, F0)
 
     def shot(w: float, s: np.ndarray) -> StructureOrbit:
@@ -135,51 +176,131 @@ def structure_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
                                       f"one of {k // 2} period(s): Newton left the branch")  # fmt: skip
         return o
 
-    orbits = [shot(w0, np.asarray(state, dtype=float))]
+    return _trace(shot, "omega", "", w0, w1, state, h, locate)
+
+
+def _trace(shot, parameter: str, damper: str, p0: float, p1: float, state: Any,
+           step: float | None, locate: float) -> StructureBranch:  # fmt: skip
+    """Natural-parameter continuation from p0 to p1 (module text): ``shot(p, guess)`` is the
+    orbit at parameter value p shot from ``guess``."""
+    value = _value_of(parameter, damper)
+    name, unit = ("Ω", "rad/s") if parameter == "omega" else (parameter, PARAMETERS[parameter])
+    band = abs(p1 - p0)
+    h_max = band / 100.0 if step is None else step
+    h_max = min(h_max, band)
+    direction = math.copysign(1.0, p1 - p0)
+    orbits = [shot(p0, np.asarray(state, dtype=float))]
     bifurcations: list[Bifurcation] = []
     grazings: list[dict[str, Any]] = []
     edges: list[StructureOrbit] = []
     h, h_min = h_max, band * 1e-7
     ended = ""
-    while direction * (w1 - orbits[-1].run.omega) > 1e-12 * band:
+    while direction * (p1 - value(orbits[-1])) > 1e-12 * band:
         last = orbits[-1]
-        w = last.run.omega + direction * min(h, abs(w1 - last.run.omega))
+        at = value(last)
+        w = at + direction * min(h, abs(p1 - at))
         guess = last.state
         if len(orbits) > 1:  # the secant through the last two orbits
             prev = orbits[-2]
-            slope = (last.state - prev.state) / (last.run.omega - prev.run.omega)
-            guess = last.state + slope * (w - last.run.omega)
+            slope = (last.state - prev.state) / (at - value(prev))
+            guess = last.state + slope * (w - at)
         try:
             o = shot(w, guess)
         except (MethodNotApplicable, ParameterError) as exc:
             if h / 2.0 < h_min:
-                ended = (f"at Ω {last.run.omega:.9g} rad/s no orbit is found a step further "
-                         f"({exc})")  # fmt: skip
+                ended = (f"at {name} {at:.9g}{' ' + unit if unit else ''} no orbit is found a "
+                         f"step further ({exc})")  # fmt: skip
                 break
             h /= 2.0
             continue
         if _unstable(o) != _unstable(last):
-            found = _locate(shot, last, o, locate)
+            found = _locate(shot, last, o, locate, value, parameter)
             bifurcations.append(found)
             edges.extend(found.sides)
         if o.impacts != last.impacts:
             before = last.impacts
-            a, b = _bisect(shot, last, o, locate, lambda x, before=before: x.impacts == before)
-            grazings.append({"between": [a.run.omega, b.run.omega], "before": last.impacts,
+            a, b = _bisect(shot, last, o, locate, lambda x, before=before: x.impacts == before,
+                           value)  # fmt: skip
+            grazings.append({"between": [value(a), value(b)], "before": last.impacts,
                              "after": o.impacts})  # fmt: skip
             edges.extend((a, b))
         orbits.append(o)
         h = min(2.0 * h, h_max)
-    return StructureBranch(orbits, bifurcations, grazings, ended, edges)
+    return StructureBranch(orbits, bifurcations, grazings, ended, edges, parameter, damper)
 
 
-def _bisect(shot, a: StructureOrbit, b: StructureOrbit, tol: float, like_a) -> tuple:
-    """(lo, hi): the orbits within ``tol`` of Ω of each other between which ``like_a`` turns
-    false, by bisection from ``a`` (true) and ``b`` (false), each trial shot from ``lo`` (or
-    from ``hi`` where that fails); a bracket no trial narrows is returned as it stands."""
+def parameter_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega: Any,
+                     parameter: str, start: Any, end: Any, state: Any, damper: Any = None,
+                     periods: Any = 1, stops: Any = (), step: Any = None, phase: Any = 0.0,
+                     locate: float = 1e-9) -> StructureBranch:  # fmt: skip
+    """Continue the period-``periods`` orbit near ``state`` at a fixed Ω ``omega`` [rad/s] in
+    ``parameter`` (:data:`PARAMETERS`: damper ``damper``'s total clearance ``gap`` [m],
+    restitution ``e`` or mass ``m`` [kg], or the force amplitude ``F0`` [N]) from ``start`` (the
+    value ``state`` belongs to) to ``end``, as :func:`structure_branch` continues in Ω: the
+    same shooting (the monodromy through every flight, impact and contact, Step 15), steps and
+    location of bifurcations and grazings, to ``locate`` of the value."""
+    from dataclasses import replace
+
+    from ..model.dampers import Damper
+
+    if parameter not in PARAMETERS:
+        raise ParameterError("parameter", f"one of {', '.join(PARAMETERS)}, got {parameter!r}")
+    w = positive_float("omega", omega, "rad/s")
+    dampers = tuple(dampers)
+    unit = PARAMETERS[parameter]
+    bounds = []
+    for label, v in (("start", start), ("end", end)):
+        x = positive_float(label, v, unit) if unit else positive_float(label, v)
+        if parameter == "e" and x > 1.0:
+            raise ParameterError(label, f"a restitution lies in (0, 1], got {x:g}")
+        bounds.append(x)
+    p0, p1 = bounds
+    if p0 == p1:
+        raise ParameterError("end", "must differ from start")
+    name = ""
+    if parameter != "F0":
+        names = [d.name for d in dampers]
+        if damper is None and len(names) == 1:
+            damper = names[0]
+        if damper not in names:
+            raise ParameterError("damper", f"name the damper whose {parameter} is continued "
+                                           f"(the dampers: {', '.join(names) or 'none'})")  # fmt: skip
+        name = str(damper)
+    k = whole_number("periods", periods, 1)
+    h = None if step is None else (positive_float("step", step, unit) if unit
+                                   else positive_float("step", step))  # fmt: skip
+
+    def shot(p: float, s: np.ndarray) -> StructureOrbit:
+        force, ds = F0, dampers
+        if parameter == "F0":
+            force = p
+        else:
+            ds = tuple(replace(d, **{parameter: p}) if isinstance(d, Damper) and d.name == name
+                       else d for d in dampers)  # fmt: skip
+        o = shoot_structure(structure, ds, force_at, force, w, s, k, stops, phase,
+                            max_iterations=12)  # fmt: skip
+        if k % 2 == 0 and _returns_after(o, k // 2, (structure, ds, force_at, force), stops,
+                                         phase):  # fmt: skip
+            raise MethodNotApplicable("parameter_branch", f"the orbit at {parameter} {p:.9g} is "
+                                      f"the one of {k // 2} period(s): Newton left the branch")  # fmt: skip
+        return o
+
+    return _trace(shot, parameter, name, p0, p1, state, h, locate)
+
+
+def _omega(o: StructureOrbit) -> float:
+    return o.run.omega
+
+
+def _bisect(shot, a: StructureOrbit, b: StructureOrbit, tol: float, like_a,
+            value=_omega) -> tuple:  # fmt: skip
+    """(lo, hi): the orbits within ``tol`` of the parameter (``value`` of an orbit; Ω) of each
+    other between which ``like_a`` turns false, by bisection from ``a`` (true) and ``b``
+    (false), each trial shot from ``lo`` (or from ``hi`` where that fails); a bracket no trial
+    narrows is returned as it stands."""
     lo, hi = a, b
-    while abs(hi.run.omega - lo.run.omega) > tol * abs(hi.run.omega):
-        w = 0.5 * (lo.run.omega + hi.run.omega)
+    while abs(value(hi) - value(lo)) > tol * abs(value(hi)):
+        w = 0.5 * (value(lo) + value(hi))
         try:
             mid = shot(w, lo.state)
         except (MethodNotApplicable, ParameterError):
@@ -194,11 +315,13 @@ def _bisect(shot, a: StructureOrbit, b: StructureOrbit, tol: float, like_a) -> t
     return lo, hi
 
 
-def _locate(shot, a: StructureOrbit, b: StructureOrbit, tol: float) -> Bifurcation:
-    """Bisection in Ω between orbits ``a`` and ``b`` on either side of a crossing, each trial
-    shot from the nearer side's orbit, to ``tol`` of Ω."""
+def _locate(shot, a: StructureOrbit, b: StructureOrbit, tol: float, value=_omega,
+            parameter: str = "omega") -> Bifurcation:  # fmt: skip
+    """Bisection in the parameter (``value`` of an orbit; Ω) between orbits ``a`` and ``b`` on
+    either side of a crossing, each trial shot from the nearer side's orbit, to ``tol`` of
+    it."""
     side = _unstable(a)
-    lo, hi = _bisect(shot, a, b, tol, lambda x: _unstable(x) == side)
+    lo, hi = _bisect(shot, a, b, tol, lambda x: _unstable(x) == side, value)
     lam = _crossing(hi if abs(abs(_crossing(hi)) - 1) < abs(abs(_crossing(lo)) - 1) else lo)
     angle = abs(math.atan2(lam.imag, lam.real))
     if lo.impacts != hi.impacts:
@@ -209,8 +332,8 @@ def _locate(shot, a: StructureOrbit, b: StructureOrbit, tol: float) -> Bifurcati
         kind = FOLD
     else:
         kind = NEIMARK_SACKER
-    omega = 0.5 * (lo.run.omega + hi.run.omega)
-    return Bifurcation(kind, omega, lam, abs(hi.run.omega - lo.run.omega), (lo, hi))
+    at = 0.5 * (value(lo) + value(hi))
+    return Bifurcation(kind, at, lam, abs(value(hi) - value(lo)), (lo, hi), parameter)
 
 
 @dataclass(frozen=True)
