@@ -141,15 +141,16 @@ def test_options_the_file_replaces_are_refused(tmp_path, capsys, args, name):
     assert code == 2 and out.err.count("\n") == 1 and f"error: {name}:" in out.err
 
 
-def test_other_commands_refuse_a_file_with_dampers(tmp_path, capsys):
-    """Continuation of several modes in a parameter other than Ω is not built yet: one line.
-    ``periodic`` shoots such a file, refusing the options the file replaces."""
+def test_other_commands_refuse_what_a_file_with_dampers_does_not_take(tmp_path, capsys):
+    """``branch`` continues such a file in a damper's gap, e or m or in F0, not in the one-mode
+    primary's base motion: one line.  ``periodic`` shoots it, refusing the options the file
+    replaces."""
     path = tmp_path / "model.json"
     path.write_text(json.dumps(FILE))
-    code = main(["branch", "--structure", str(path), "--freq", "10", "--parameter", "gap",
+    code = main(["branch", "--structure", str(path), "--freq", "10", "--parameter", "X_b",
                  "--range", "1 mm:3 mm"])  # fmt: skip
     err = capsys.readouterr().err
-    assert code == 2 and err.count("\n") == 1 and "error: structure:" in err
+    assert code == 2 and err.count("\n") == 1 and "error: parameter:" in err
     code = main(["periodic", "--structure", str(path), "--freq", "10", "--contact", "rigid",
                  "--e", "0.6", "--force", "1"])  # fmt: skip
     err = capsys.readouterr().err

@@ -64,7 +64,7 @@ def test_the_clearance_s_bifurcations_are_where_brute_force_runs_change(rattling
     assert 0.1 < abs(np.angle(ns.multiplier)) < 3.0
     assert pd.value < ns.value
 
-    # brute force, 3 mm either side, from the nearest traced orbit perturbed by 1e-4: a settled
+    # brute force, 0.003 either side, from the nearest traced orbit perturbed by 1e-4: a settled
     # orbit comes back to roundoff (7e-12 measured), a period-2 motion after 2 periods only
     # (6.5e-2 after one), a motion on a torus after none (5e-2, 0.1, 0.18)
     def nearest(gap):
@@ -141,3 +141,38 @@ def test_bad_input_is_refused_in_one_line_naming_the_parameter(rattling, kwargs,
         parameter_branch(structure, dampers, "1", 0.1, OMEGA, call["parameter"], call["start"],
                          call["end"], np.zeros(6), damper=call["damper"])  # fmt: skip
     assert info.value.parameter == name and "\n" not in str(info.value)
+
+
+def test_branch_continues_a_structure_file_on_the_command_line(tmp_path, capsys):
+    """``symimpact branch --structure FILE --omega Ω --parameter gap --range a:b`` continues the
+    file's damper both ways from its own clearance: the same bifurcations as the API's branch,
+    and one line for what it does not take."""
+    import json
+
+    from symimpact.cli import main
+
+    model = {"fe": FE, "dampers": [{"name": "d", "at": 1, "m": 0.1, "gap": 0.5,
+                                    "contact": "rigid", "e": 0.6}],
+             "force": {"at": 1, "amplitude": 0.1}}  # fmt: skip
+    path = tmp_path / "chain.json"
+    path.write_text(json.dumps(model))
+    base = ["branch", "--structure", str(path), "--omega", str(OMEGA), "--parameter", "gap"]
+    assert main([*base, "--range", "0.45:0.7", "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)
+    assert got["damper"] == "d" and got["start"]["value"] == 0.5
+    down, up = got["branches"]
+    assert down["points"][-1]["value"] == pytest.approx(0.45, abs=1e-12)
+    kinds = [(b["kind"], b["value"]) for b in up["bifurcations"]]
+    structure = structure_from_dict({"fe": FE})
+    dampers = (damper(structure, "d", 1, 0.1, 0.5, 0.6),)
+    api = parameter_branch(structure, dampers, "1", 0.1, OMEGA, "gap", 0.5, 0.7,
+                           np.array(got["start"]["state"]))  # fmt: skip
+    assert [k for k, _ in kinds] == [b.kind for b in api.bifurcations]
+    for (_, value), b in zip(kinds, api.bifurcations, strict=True):
+        assert value == pytest.approx(b.value, abs=2 * b.tolerance)
+    for args, name in ((["--range", "0.6:0.7"], "range"),
+                       (["--range", "0.4:0.7", "--damper", "q"], "damper"),
+                       (["--range", "0.4:0.7", "--csv", "x.csv"], "csv")):  # fmt: skip
+        assert main([*base, *args]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and f"error: {name}:" in err

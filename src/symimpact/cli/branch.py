@@ -11,8 +11,9 @@ from typing import Any
 from .. import budgets
 from .common import add_forcing, add_output, add_system, emit, forcing_from, system_from, write_csv
 
-#: The parameters ``--parameter`` takes (Ω is ``symimpact frf``'s).
-PARAMETERS = ("gap", "F0", "X_b", "e")
+#: The parameters ``--parameter`` takes (Ω is ``symimpact frf``'s); m, a damper's mass, is a
+#: structure file's (``--structure``), X_b the one-mode primary's.
+PARAMETERS = ("gap", "F0", "X_b", "e", "m")
 
 
 def add_parser(sub: Any) -> None:
@@ -29,7 +30,11 @@ def add_parser(sub: Any) -> None:
                    help="Hunt–Crossley damping χ [s/m] of --contact hunt-crossley (Eq. F4)")  # fmt: skip
     g.add_argument("--parameter", choices=PARAMETERS, required=True,
                    help="what the branch is continued in: the clearance gap, the force F0, the "
-                   "base motion X_b or the restitution e (rigid impacts)")  # fmt: skip
+                   "base motion X_b or the restitution e (rigid impacts); with a --structure "
+                   "file that gives dampers: gap, e or the mass m of --damper, or F0")  # fmt: skip
+    g.add_argument("--damper", default=None, metavar="NAME",
+                   help="with --structure: the damper whose gap, e or m is continued (default: "
+                   "the file's only damper)")  # fmt: skip
     g.add_argument("--range", dest="bounds", required=True, metavar="LOW:HIGH",
                    help="the parameter's range, with units, e.g. '5 mm:40 mm'; it must hold "
                    "the start (the system's value)")  # fmt: skip
@@ -56,6 +61,8 @@ def bounds_from(ns) -> tuple[float, float]:
 
 
 def run(ns) -> None:
+    if getattr(ns, "structure_model", None) is not None:
+        return run_structure(ns)
     from ..errors import ParameterError
     from ..forced import shoot_from_rest, trace_branch
     from ..forced.continuation import PARAMETERS as UNITS
@@ -63,6 +70,12 @@ def run(ns) -> None:
     from ..model.display import display_unit, omega_text, shown
     from .frf import contact_of, contact_title
 
+    for option, why in (("m", "m, a damper's mass, is continued on a --structure file's "
+                               "damper"), ):  # fmt: skip
+        if ns.parameter == option:
+            raise ParameterError("parameter", why)
+    if ns.damper is not None:
+        raise ParameterError("damper", "names a damper of a --structure file, which is not given")
     e = contact_of(ns)
     system = system_from(ns)
     forcing = forcing_from(ns)
@@ -130,6 +143,102 @@ def run(ns) -> None:
         lines.append(f"  {f.kind} at {name} = {shown_value(f.value)}, amplitude "
                      f"{shown('x', f.amplitude):.5g} {unit}")  # fmt: skip
     lines.append(f"ends: {branch.stopped}")
+    emit(ns, out, "\n".join(lines))
+
+
+def run_structure(ns) -> None:
+    """A structure file with dampers or stops: the orbit a run of --warmup periods from rest
+    settles near at --omega, shot on the state of its N modes and K dampers, continued both ways
+    over --range in a damper's gap, e or m or in F0
+    (:func:`symimpact.forced.structure_branch.parameter_branch`), with its bifurcations and
+    grazings located."""
+    from ..errors import ParameterError
+    from ..forced.simulation import MAX_MULTIPLE, period_count
+    from ..forced.structure_branch import PARAMETERS as UNITS
+    from ..forced.structure_branch import parameter_branch
+    from ..forced.structure_orbits import shoot_structure
+    from ..forced.structure_response import simulate_structure
+    from ..model.display import omega_text
+    from .common import quantity_text, structure_forcing
+
+    for key, why in (("plot", "a structure's branch has no plot yet: --json gives every orbit"),
+                     ("csv", "a structure's branch has no CSV yet: --json gives every orbit"),
+                     ("chi", "the file gives each damper's and stop's contact")):  # fmt: skip
+        if getattr(ns, key, None) is not None:
+            raise ParameterError(key, why)
+    model = ns.structure_model
+    if ns.parameter not in UNITS:
+        raise ParameterError("parameter", f"{ns.parameter} is the one-mode primary's; a "
+                             f"structure's branch is continued in {', '.join(UNITS)}")  # fmt: skip
+    forcing = structure_forcing(ns)
+    names = [d.name for d in model.dampers]
+    damper = None
+    if ns.parameter == "F0":
+        if ns.damper is not None:
+            raise ParameterError("damper", "names the damper whose gap, e or m is continued, "
+                                           "not F0")  # fmt: skip
+        start_value = model.F0
+    else:
+        damper = ns.damper if ns.damper is not None else (names[0] if len(names) == 1 else None)
+        if damper not in names:
+            raise ParameterError("damper", f"name the damper whose {ns.parameter} is continued "
+                                           f"(the file's dampers: {', '.join(names) or 'none'})")  # fmt: skip
+        start_value = getattr(model.dampers[names.index(damper)], ns.parameter)
+    low, high = bounds_from(ns)
+    if not low <= start_value <= high:
+        raise ParameterError("range", f"must hold the start, {ns.parameter} = {start_value:g} "
+                                      "(SI, the file's)")  # fmt: skip
+    warmup = period_count("warmup", "300" if ns.warmup is None else ns.warmup)
+    multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
+    if not 1 <= multiple <= MAX_MULTIPLE:
+        raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
+    args = (model.structure, model.dampers, model.force_at, model.F0)
+    settled = simulate_structure(*args, forcing.omega, periods=warmup, phase=forcing.phase,
+                                 stops=model.stops)  # fmt: skip
+    n = 2 * len(model.structure.modes) + 2 * len(model.dampers)
+    try:
+        start = shoot_structure(*args, forcing.omega, settled.final_state[1 : 1 + n], multiple,
+                                model.stops, forcing.phase)  # fmt: skip
+    except ParameterError as exc:
+        raise ParameterError("multiple", f"no orbit of {multiple} period(s) near the state after "
+                             f"--warmup {warmup} periods (Newton's method: {exc.reason}): "
+                             "'symimpact periodic' with the same file says which --multiple "
+                             "the motion comes back after") from None  # fmt: skip
+    branches = []
+    for end in (low, high):
+        if end != start_value:
+            branches.append(parameter_branch(*args, forcing.omega, ns.parameter, start_value,
+                                             end, start.state, damper=damper, periods=multiple,
+                                             stops=model.stops, phase=forcing.phase))  # fmt: skip
+    unit = UNITS[ns.parameter]
+
+    def value_text(v: float) -> str:
+        if ns.parameter == "gap":
+            return quantity_text("gap", v)
+        return f"{v:.6g}{' ' + unit if unit else ''}"
+
+    out = {"parameter": ns.parameter, "unit": unit, "damper": damper, "omega": forcing.omega,
+           "start": start.as_dict() | {"value": start_value},
+           "branches": [b.as_dict() for b in branches]}  # fmt: skip
+    what = f"{ns.parameter} of damper {damper!r}" if damper else ns.parameter
+    lines = [f"Ω {omega_text(forcing.omega)}: the orbit of {multiple} forcing period(s) at "
+             f"{what} = {value_text(start_value)} ({'stable' if start.stable else 'unstable'}), "
+             f"continued to {value_text(low)} and {value_text(high)}"]  # fmt: skip
+    for b in branches:
+        vs = b.values
+        lines.append(f"towards {value_text(vs[-1])}: {len(b.orbits)} orbits, "
+                     f"{sum(o.stable for o in b.orbits)} stable"
+                     + (f"; {b.ended}" if b.ended else ""))  # fmt: skip
+        for f in b.bifurcations:
+            lines.append(f"  {f.kind} at {ns.parameter} = {value_text(f.value)} (multiplier "
+                         f"{f.multiplier.real:.4f}{f.multiplier.imag:+.4f}i)")  # fmt: skip
+        for g in b.grazings:
+            lines.append(f"  grazing between {value_text(g['between'][0])} and "
+                         f"{value_text(g['between'][1])}: {g['before']} → {g['after']}")  # fmt: skip
+    for p in model.structure.points:
+        amps = [o.amplitudes[p] for b in branches for o in b.orbits if o.stable]
+        if amps:
+            lines.append(f"largest stable amplitude at {p!r}: {quantity_text('x', max(amps))}")
     emit(ns, out, "\n".join(lines))
 
 

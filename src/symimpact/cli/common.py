@@ -179,16 +179,11 @@ _MODEL_GIVES = ("M", "K", "C", "zeta", "fn", "m", "gap", "a", "b", "k_hz", "k1",
 def _structure_model(ns: argparse.Namespace, given: set[str]) -> None:
     """--structure with a file that gives dampers or stops and a force: the structure of several
     modes for :func:`symimpact.forced.structure_response.simulate_structure`
-    (``ns.structure_model``), which ``simulate`` runs, ``periodic`` shoots, ``frf`` continues and
-    ``design`` sweeps; ``branch`` does not take it yet."""
+    (``ns.structure_model``), which ``simulate`` runs, ``periodic`` shoots, ``frf`` and
+    ``branch`` continue and ``design`` sweeps."""
     from ..errors import ParameterError
     from ..model.structure_model import read_model
 
-    if ns.command not in ("simulate", "periodic", "frf", "design"):
-        raise ParameterError("structure", f"{ns.structure} gives dampers and loads: 'branch' "
-                             "does not run a structure of several modes yet ('frf' continues it "
-                             "in the frequency); it takes one mode of a structure file without "
-                             "them (with the damper from the options)")  # fmt: skip
     flags = {"F0": "force", "X_b": "base", "V_b": "base-vel", "A_b": "base-acc"}
     for option in _MODEL_GIVES:
         # the forcing options have no default: given is not None
