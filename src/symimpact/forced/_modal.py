@@ -127,8 +127,34 @@ def _mode_jerk(pm, i, mass, t, x, v):
     return (W * (Q * math.cos(th) - P * math.sin(th)) - C * a - K * v) / mass
 
 
+@njit(cache=True, inline="always")
+def _base_x(pm, xb, t):
+    """x_b(t) = X_b·cos(Ωt + φ) [m], the supports' displacement (``xb``: X_b; 0 without base
+    motion, then exactly 0)."""
+    if xb == 0.0:
+        return 0.0
+    return xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
+
+
+@njit(cache=True, inline="always")
+def _base_v(pm, xb, t):
+    """ẋ_b(t) [m/s]."""
+    if xb == 0.0:
+        return 0.0
+    return -xb * pm[0, P_W] * math.sin(pm[0, P_W] * t + pm[0, P_PHI])
+
+
+@njit(cache=True, inline="always")
+def _base_a(pm, xb, t):
+    """ẍ_b(t) [m/s²]."""
+    if xb == 0.0:
+        return 0.0
+    W = pm[0, P_W]
+    return -xb * W * W * math.cos(W * t + pm[0, P_PHI])
+
+
 @njit(cache=True)
-def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig):
+def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb):
     """The structure with the dampers of ``stuck[k] != 0`` riding on it and the stops of
     ``contact[s] != 0`` pressed by it: M_s⁻¹, Λ, V, V⁻¹, X̂, K_s, C_s, f_s, q_s, M_s⁻¹
     unconstrained and (ΦₕM_s⁻¹Φₕᵀ)⁻¹ packed by :func:`_pack` in the tuple (mats, cplx, 2n, vecs,
@@ -144,13 +170,23 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig):
     structure ZᵀM_sZ, ZᵀC_sZ, ZᵀK_sZ; V and V⁻¹ then map r's 2(N − h) modes to the 2N state,
     M_s⁻¹ becomes Z(ZᵀM_sZ)⁻¹Zᵀ (accelerations and impulses the walls allow), and the walls'
     reactions λ = −(ΦₕM_s⁻¹Φₕᵀ)⁻¹ΦₕM_s⁻¹f follow from the unconstrained inverse (returned with
-    (ΦₕM_s⁻¹Φₕᵀ)⁻¹).  ``decoupled``:
+    (ΦₕM_s⁻¹Φₕᵀ)⁻¹).  Under base motion (``xb`` = X_b: the modes relative to the supports,
+    the masses absolute) a stuck mass's inertia −m·ẍ_b adds m·Ω²X_b·φ to the modal loads.
+    ``decoupled``:
     no stop is pressed and M_s is diagonal (no mass sticks, or one mode alone moves each stuck
     point: one mode with φ = 1 is Step 9's sticking, one mass M + m), and the modes fly by Eq. F1
     with those masses; otherwise by the eigen-decomposition (module text).  ω_max: the largest of
     Ω and the structure's damped frequencies, which sets the searches' steps."""
     N = pm.shape[0]
     W = pm[0, P_W]
+    if xb != 0.0 and np.any(stuck != 0):
+        # a mass riding on its point moves with it absolutely, x_b + φᵀq: its inertia
+        # −m·ẍ_b = m·Ω²X_b·cos θ loads the modes through φ, in phase with the force
+        pm = pm.copy()
+        for k in range(Phi.shape[0]):
+            if stuck[k] != 0:
+                for i in range(N):
+                    pm[i, P_F0] += md[k] * Phi[k, i] * W * W * xb
     Ms = np.zeros((N, N))
     Ks = np.zeros((N, N))
     Cs = np.zeros((N, N))
@@ -442,32 +478,37 @@ def _stuck_acceleration(pm, cfg, t, q, v, i):
 
 
 @njit(cache=True, inline="always")
-def _free_point_accel(pm, Phi, row, t, q, v):
-    """ẍₐ = φᵀq̈ at the point of row ``row`` of ``Phi`` while the modes are uncoupled: each
+def _free_point_accel(pm, Phi, row, t, q, v, xb):
+    """ẍₐ = φᵀq̈ + ẍ_b at the point of row ``row`` of ``Phi`` while the modes are uncoupled: each
     mode's Eq. F1 (:func:`_point_accel`, without the configuration: see :func:`_free_states`)."""
-    a = 0.0
+    a = _base_a(pm, xb, t)
     for i in range(pm.shape[0]):
         a += Phi[row, i] * _mode_accel(pm, i, pm[i, P_M], t, q[i], v[i])
     return a
 
 
 @njit(cache=True, inline="always")
-def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v):
-    """ẍₐ = φᵀq̈ at the point of row ``row`` of ``Phi`` (its shapes): each mode's Eq. F1 while
-    the modes are uncoupled, else the stuck structure's (:func:`_stuck_acceleration`)."""
+def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v, xb):
+    """ẍₐ = φᵀq̈ + ẍ_b at the point of row ``row`` of ``Phi`` (its shapes; ``xb``: X_b for the
+    dampers' points, which move absolutely, 0 for a stop's, relative to the ground): each mode's
+    Eq. F1 while the modes are uncoupled, else the stuck structure's
+    (:func:`_stuck_acceleration`)."""
     if cfg[6]:
-        return _free_point_accel(pm, Phi, row, t, q, v)
-    a = 0.0
+        return _free_point_accel(pm, Phi, row, t, q, v, xb)
+    a = _base_a(pm, xb, t)
     for i in range(pm.shape[0]):
         a += Phi[row, i] * _stuck_acceleration(pm, cfg, t, q, v, i)
     return a
 
 
 @njit(cache=True)
-def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v):
-    """d³xₐ/dt³ = φᵀ d³q/dt³."""
+def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v, xb):
+    """d³xₐ/dt³ = φᵀ d³q/dt³ + d³x_b/dt³."""
     N = pm.shape[0]
     a = 0.0
+    if xb != 0.0:
+        W = pm[0, P_W]
+        a = xb * W * W * W * math.sin(W * t + pm[0, P_PHI])
     if cfg[6]:
         for i in range(N):
             a += Phi[row, i] * _mode_jerk(pm, i, pm[i, P_M], t, q[i], v[i])
@@ -494,13 +535,13 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v):
 
 
 @njit(cache=True)
-def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B):
+def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, xb):
     """(A, B): for every damper's point, A ≥ |ẍₐ| and B ≥ |d⁴xₐ/dt⁴| over [t0, t0 + T] of the
-    flight (module text), written into A and B."""
+    flight (module text), written into A and B (with the base's Ω²X_b and Ω⁴X_b)."""
     N, K = pm.shape[0], Phi.shape[0]
     W = pm[0, P_W]
-    A[:] = 0.0
-    B[:] = 0.0
+    A[:] = abs(xb) * W * W
+    B[:] = abs(xb) * W**4
     if cfg[6]:
         for i in range(N):
             Ai = _accel_bound(pm[i], pm[i, P_M], t0, q0[i], v0[i], T)
@@ -530,32 +571,32 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B):
 
 
 @njit(cache=True)
-def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v):
+def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, xb):
     """A τ up to which the wall ``side`` the damper of row ``row`` of ``Phi`` just left cannot be
     reached: :func:`symimpact.forced._rigid._held_off` with the point's acceleration
     g = side·ẍₐ, A ≥ |ẍₐ| and B ≥ |g''| (q, v: scratch)."""
     period = 2.0 * math.pi / cfg[8]
     dec = cfg[6]
     span = min(T, period)
-    ga = side * _point_accel(pm, cfg, nstuck, Phi, row, t0, q0, v0)
+    ga = side * _point_accel(pm, cfg, nstuck, Phi, row, t0, q0, v0, xb)
     if ga < -1e-12 * A:
         return 0.0
     ga = max(ga, 0.0)
-    g1 = side * _point_jerk(pm, cfg, nstuck, Phi, row, t0, q0, v0)
+    g1 = side * _point_jerk(pm, cfg, nstuck, Phi, row, t0, q0, v0, xb)
     tau = min((g1 + math.sqrt(g1 * g1 + 2.0 * B * ga)) / B, span)
     if tau > 0.0:
         _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v)
-        ga = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tau, q, v)
+        ga = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tau, q, v, xb)
     H = period / 64.0
     while tau < span:
         H = min(H, span - tau)
         tb = tau + H
         if dec:
             _free_states(pm, t0, q0, v0, tb, q, v)
-            gb = side * _free_point_accel(pm, Phi, row, t0 + tb, q, v)
+            gb = side * _free_point_accel(pm, Phi, row, t0 + tb, q, v, xb)
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
-            gb = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tb, q, v)
+            gb = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tb, q, v, xb)
         if gb >= 0.0 and min(ga, gb) - B * H * H / 8.0 >= 0.0:
             tau, ga = tb, gb
             H = min(2.0 * H, period / 64.0)
@@ -567,7 +608,7 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v):
 
 
 @njit(cache=True)
-def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v):
+def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v, xb):
     """The first τ in (lo, hi] where s·z reaches h (z(lo) = za inside, z(hi) = zb beyond), by
     Illinois regula falsi to 4e-16 of the time."""
     dec = cfg[6]
@@ -583,7 +624,7 @@ def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb,
             _free_states(pm, t0, q0, v0, tm, q, v)
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
-        dx = 0.0
+        dx = _base_x(pm, xb, t0 + tm) - _base_x(pm, xb, t0)
         for i in range(pm.shape[0]):
             dx += Phi[row, i] * (q[i] - q0[i])
         fm = s * (z0 + u0 * tm - dx) - h
@@ -604,7 +645,7 @@ def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb,
 
 @njit(cache=True)
 def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau_safe, A, tau, za,
-                 which, wall, tk, q, v):  # fmt: skip
+                 which, wall, tk, q, v, xb):  # fmt: skip
     """Whether no free damper meets a wall in [τ, τₖ) when damper ``which`` meets wall ``wall``
     at τₖ (refined) and every z was inside at τ (``za``): near τₖ that damper's s·z ≤ h − r(τₖ − t)
     + Aₖ(τₖ − t)²/2 < h while τₖ − t ≤ r/Aₖ (r its rate at τₖ), and over [τ, t₁] and [t₁, τₖ],
@@ -617,13 +658,14 @@ def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau
         _free_states(pm, t0, q0, v0, tk, q, v)
     else:
         _states(pm, cfg, nstuck, t0, q0, v0, tk, q, v)
-    r = wall * (u0[which] - _dot(Phi, which, v))
+    r = wall * (u0[which] - _dot(Phi, which, v) - _base_v(pm, xb, t0 + tk))
     if not r > 0.0:
         return False
     t1 = max(tau, tk - r / A[which])
     zk = np.empty(K)
+    shift = _base_x(pm, xb, t0 + tk) - _base_x(pm, xb, t0)
     for k in range(K):
-        dx = 0.0
+        dx = shift
         for i in range(N):
             dx += Phi[k, i] * (q[i] - q0[i])
         zk[k] = z0[k] + u0[k] * tk - dx
@@ -631,10 +673,11 @@ def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau
         _free_states(pm, t0, q0, v0, t1, q, v)
     else:
         _states(pm, cfg, nstuck, t0, q0, v0, t1, q, v)
+    shift = _base_x(pm, xb, t0 + t1) - _base_x(pm, xb, t0)
     for k in range(K):
         if stuck[k] != 0:
             continue
-        dx = 0.0
+        dx = shift
         for i in range(N):
             dx += Phi[k, i] * (q[i] - q0[i])
         z1 = z0[k] + u0[k] * t1 - dx
@@ -651,7 +694,7 @@ def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau
 
 
 @njit(cache=True)
-def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch, work):
+def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch, work, xb):
     """(τ, damper, side): the first τ in (0, T] at which a free damper's abs(z) reaches its half
     clearance, that damper and its wall (±1); (T, −1, 0) when there is none, or (τ so far, −1, 0)
     when a signal is seen on ``watch``.  ``side0[k]``: the wall damper k starts on (0: none)."""
@@ -661,7 +704,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
     hmax = 2.0 * math.pi / cfg[9] / 16.0
     dec = cfg[6]
     A, B, tau_safe, q, v, za, zb = work[0], work[1], work[2], work[3], work[4], work[5], work[6]
-    _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B)
+    _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, xb)
     hmin = 1e-6 * hmax
     tau_safe[:] = 0.0
     for k in range(K):
@@ -669,7 +712,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             continue
         hmin = min(hmin, max(1e-12 * hmax, math.sqrt(8e-20 * hd[k] / A[k])))
         if side0[k] != 0:
-            xd = 0.0
+            xd = _base_v(pm, xb, t0)
             for i in range(N):
                 xd += Phi[k, i] * v0[i]
             fd0 = side0[k] * (u0[k] - xd)
@@ -679,7 +722,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             if fd0 <= 8e-16 * (abs(u0[k]) + abs(xd)):
                 fd0 = min(fd0, 0.0)
                 tau_safe[k] = max(-2.0 * fd0 / A[k], _held_off(pm, cfg, nstuck, Phi, k, t0, q0,
-                                  v0, side0[k], T, A[k], B[k], work[7], work[8]))  # fmt: skip
+                                  v0, side0[k], T, A[k], B[k], work[7], work[8], xb))  # fmt: skip
     for k in range(K):
         za[k] = z0[k]
         zb[k] = z0[k]
@@ -697,10 +740,11 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
         clear = True
+        shift = _base_x(pm, xb, t0 + tb) - _base_x(pm, xb, t0)
         for k in range(K):
             if stuck[k] != 0:
                 continue
-            dx = 0.0
+            dx = shift
             for i in range(N):
                 dx += Phi[k, i] * (q[i] - q0[i])
             zb[k] = z0[k] + u0[k] * tb - dx
@@ -723,12 +767,12 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
                 if stuck[k] == 0 and abs(zb[k]) >= hd[k] and abs(za[k]) < hd[k] and tau > 0.0:
                     s = 1.0 if zb[k] > 0 else -1.0
                     tk = _refine(pm, cfg, nstuck, Phi, k, hd[k], t0, q0, v0, z0[k], u0[k], s,
-                                 tau, tb, za[k], zb[k], q, v)  # fmt: skip
+                                 tau, tb, za[k], zb[k], q, v, xb)  # fmt: skip
                     if which < 0 or tk < first:
                         first, which, wall = tk, k, int(s)
             if which >= 0 and _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0,
                                            side0, tau_safe, A, tau, za, which, wall, first, q,
-                                           v):  # fmt: skip
+                                           v, xb):  # fmt: skip
                 return first, which, wall
             H *= 0.5
             continue
@@ -737,7 +781,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             if stuck[k] == 0 and abs(zb[k]) >= hd[k]:
                 s = 1.0 if zb[k] > 0 else -1.0
                 tk = _refine(pm, cfg, nstuck, Phi, k, hd[k], t0, q0, v0, z0[k], u0[k], s, tau,
-                             tb, za[k], zb[k], q, v)  # fmt: skip
+                             tb, za[k], zb[k], q, v, xb)  # fmt: skip
                 if which < 0 or tk < first:
                     first, which, wall = tk, k, int(s)
         if which >= 0:
@@ -767,7 +811,7 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
     dec = cfg[6]
     A, B, fa, fb, hold = work[14], work[15], work[16], work[17], work[18]
     q, v = work[3], work[4]
-    _bounds(pm, cfg, nstuck, Sphi, t0, q0, v0, T, A, B)
+    _bounds(pm, cfg, nstuck, Sphi, t0, q0, v0, T, A, B, 0.0)
     hmin = 1e-6 * hmax
     for s in range(S):
         hmin = min(hmin, max(1e-12 * hmax, math.sqrt(8e-20 * sg[s] / A[s])))
@@ -777,7 +821,8 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
             hold[s] = 2.0 * abs(_dot(Sphi, s, v0)) / A[s]
             if fresh_wall != 0:
                 hold[s] = max(hold[s], _held_off(pm, cfg, nstuck, Sphi, s, t0, q0, v0,
-                                                 -fresh_wall, T, A[s], B[s], work[7], work[8]))  # fmt: skip
+                                                 -fresh_wall, T, A[s], B[s], work[7], work[8],
+                                                 0.0))  # fmt: skip
         if contact[s] != 0 and srig[s] != 0:
             hold[s] = math.inf  # held on its wall: the constraint keeps it there
     tau = 0.0
@@ -836,7 +881,7 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
                 continue
             x0 = _dot(Sphi, s, q0)
             ts = _refine(pm, cfg, nstuck, Sphi, s, h, t0, q0, v0, -x0, 0.0, d, tau, tb, -fa[s],
-                         -fb[s], q, v)  # fmt: skip
+                         -fb[s], q, v, 0.0)  # fmt: skip
             if which < 0 or ts < first:
                 first, which, wall = ts, s, to
         if which >= 0:
@@ -849,16 +894,17 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
 
 
 @njit(cache=True)
-def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work):
+def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, xb):
     """(τ, damper): the first τ in (0, T] where a stuck damper's sₖ·ẍₐ turns positive (its wall
-    would pull), or (T, −1) (or the τ reached when a signal is seen on ``watch``)."""
+    would pull; ẍₐ the point's absolute acceleration, with ẍ_b), or (T, −1) (or the τ reached
+    when a signal is seen on ``watch``)."""
     K = Phi.shape[0]
     step = 2.0 * math.pi / cfg[8] / 64.0
     q, v, fa = work[3], work[4], work[9]
     for k in range(K):
         fa[k] = -1.0
         if stuck[k] != 0:
-            fa[k] = min(stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0, q0, v0), -1e-300)
+            fa[k] = min(stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0, q0, v0, xb), -1e-300)
     tau = 0.0
     looks = 0
     while tau < T:
@@ -871,14 +917,14 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work):
         for k in range(K):
             if stuck[k] == 0:
                 continue
-            fb = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tb, q, v)
+            fb = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tb, q, v, xb)
             if fb > 0.0:
                 lo, hi, flo, fhi = tau, tb, fa[k], fb
                 kept = 0
                 for _ in range(200):
                     tm = secant_point(lo, hi, flo, fhi)
                     _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
-                    fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tm, q, v)
+                    fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tm, q, v, xb)
                     if fm > 0.0:
                         hi, fhi = tm, fm
                         if kept == 1:
@@ -1151,7 +1197,7 @@ def _mode_ledger(pm, i, t0, x0, v0, tau):
 
 @njit(cache=True)
 def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work, Sphi,
-             sc, contact):  # fmt: skip
+             sc, contact, xb):  # fmt: skip
     """Account for the flight [t0, t0 + τ]: the work of the modal forces and the dissipation of
     the Cᵢ (ledger[0], ledger[1]) in closed form while the modes are uncoupled
     (:func:`_mode_ledger`), else by the one-mode engine's Gauss–Legendre rule at a sixteenth of
@@ -1163,7 +1209,8 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
     so is one over which ẋₚ keeps its sign (ẋₚ(a) + ẋₚ(b) > Aₚh, of one sign: the extremes are
     its ends), and any other is halved down to a sixteenth of the shortest period, where a zero
     of ẋₚ is located where its sign changes (with several modes, ẋₚ ripples at the highest
-    mode's frequency and most of its zeros are such)."""
+    mode's frequency and most of its zeros are such).  Under base motion (``xb`` = X_b) the
+    output points' displacements are absolute, x_b + φₚᵀq."""
     N, P = pm.shape[0], Pout.shape[0]
     dec = cfg[6]
     Ap, Bp, v_prev, x_prev = work[10], work[11], work[12], work[13]
@@ -1200,10 +1247,10 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                 c, sn = math.cos(th), math.sin(th)
                 for i in range(N):
                     # the one-mode engine's power with each mode's base amplitude Γᵢ·X_b
-                    xb, vb = pm[i, P_XB] * c, -pm[i, P_XB] * W * sn
-                    rel = v[i] - vb
+                    xg, vg = pm[i, P_XB] * c, -pm[i, P_XB] * W * sn
+                    rel = v[i] - vg
                     power_in = (
-                        pm[i, P_F0] * c * v[i] - (pm[i, P_K] * (q[i] - xb) + pm[i, P_C] * rel) * vb
+                        pm[i, P_F0] * c * v[i] - (pm[i, P_K] * (q[i] - xg) + pm[i, P_C] * rel) * vg
                     )
                     ledger[0] += 0.5 * hs * _GL_W[g] * power_in
                     ledger[1] += 0.5 * hs * _GL_W[g] * pm[i, P_C] * rel * rel
@@ -1214,10 +1261,10 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                             ledger[3] += 0.5 * hs * _GL_W[g] * sc[r] * rate * rate
     if P == 0:
         return
-    _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp)
+    _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp, xb)
     for p in range(P):
-        v_prev[p] = 0.0
-        x_prev[p] = 0.0
+        v_prev[p] = _base_v(pm, xb, t0)
+        x_prev[p] = _base_x(pm, xb, t0)
         for i in range(N):
             v_prev[p] += Pout[p, i] * v0[i]
             x_prev[p] += Pout[p, i] * q0[i]
@@ -1234,18 +1281,19 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
         ka = min(int(math.floor((t0 + a) / T_f)), n_periods)  # noqa: RUF046
         k = int(math.floor((t0 + b) / T_f))  # noqa: RUF046 (int() spelled out for numba)
         taken = True
+        xbb, vbb = _base_x(pm, xb, t0 + b), _base_v(pm, xb, t0 + b)
         for p in range(P):
-            xb, vb = 0.0, 0.0
+            xp, vp = xbb, vbb
             for i in range(N):
-                xb += Pout[p, i] * q[i]
-                vb += Pout[p, i] * v[i]
-            xs[p], vs[p], fine[p] = xb, vb, 0.0
-            top = max(abs(x_prev[p]), abs(xb)) + Ap[p] * H * H / 8.0
+                xp += Pout[p, i] * q[i]
+                vp += Pout[p, i] * v[i]
+            xs[p], vs[p], fine[p] = xp, vp, 0.0
+            top = max(abs(x_prev[p]), abs(xp)) + Ap[p] * H * H / 8.0
             low = period_max[ka, p]
             if k < n_periods:
                 low = min(low, period_max[k, p])
-            slope = v_prev[p] + vb
-            one_sign = (v_prev[p] > 0.0) == (vb > 0.0) and v_prev[p] != 0.0 and vb != 0.0
+            slope = v_prev[p] + vp
+            one_sign = (v_prev[p] > 0.0) == (vp > 0.0) and v_prev[p] != 0.0 and vp != 0.0
             if top <= low or (one_sign and abs(slope) > Ap[p] * H):
                 continue
             if H > hq and H > 4e-16 * (t0 + b):
@@ -1267,7 +1315,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                         _free_states(pm, t0, q0, v0, tm, q, v)
                     else:
                         _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
-                    vm = 0.0
+                    vm = _base_v(pm, xb, t0 + tm)
                     for i in range(N):
                         vm += Pout[p, i] * v[i]
                     if vm == 0.0:
@@ -1286,7 +1334,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                     if hi - lo <= 4e-16 * (t0 + hi):
                         break
                 _states(pm, cfg, nstuck, t0, q0, v0, 0.5 * (lo + hi), q, v)
-                xm = 0.0
+                xm = _base_x(pm, xb, t0 + 0.5 * (lo + hi))
                 for i in range(N):
                     xm += Pout[p, i] * q[i]
                 km = int(math.floor((t0 + 0.5 * (lo + hi)) / T_f))  # noqa: RUF046
@@ -1299,13 +1347,14 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
 
 
 @njit(cache=True)
-def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v):
+def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v, vb):
     """Step 15's impact (Eq. F7) of a mass m with speed u on the point of shapes ``Phi[row]``, the
-    structure's velocities ``v`` (changed in place): returns (P, μ), P the impulse on the
-    structure (P/m leaves the mass).  While masses stick, the structure's mass matrix is the
-    stuck one: 1/m_eff = φᵀM_s⁻¹φ and q̇ += M_s⁻¹φP."""
+    structure's velocities ``v`` (changed in place) and the supports' ``vb`` (the point moves at
+    vb + φᵀq̇): returns (P, μ), P the impulse on the structure (P/m leaves the mass).  While
+    masses stick, the structure's mass matrix is the stuck one: 1/m_eff = φᵀM_s⁻¹φ and
+    q̇ += M_s⁻¹φP."""
     N = pm.shape[0]
-    xd, inv = 0.0, 0.0
+    xd, inv = vb, 0.0
     for i in range(N):
         xd += Phi[row, i] * v[i]
     if cfg[6]:
@@ -1410,6 +1459,17 @@ def _saltation(DJ, fm, fp, gh, G):
 
 
 @njit(cache=True)
+def _timed_saltation(DJ, fm, fp, gh, gt, jt, G):
+    """G ← S·G with S = D + (f⁺ − D·f⁻ − ∂J/∂t)∇hᵀ/(∇h·f⁻ + ∂h/∂t): :func:`_saltation` for a
+    surface h and a jump J that move with time (a damper's wall on supports that move:
+    ``gt`` = ∂h/∂t, ``jt`` = ∂J/∂t)."""
+    den = gh @ fm + gt
+    r = fp - DJ @ fm - jt
+    S = DJ + np.outer(r, gh) / den
+    G[:, :] = S @ G
+
+
+@njit(cache=True)
 def _impact_jump(pm, cfg, Phi, k, K, m, e, mu):
     """D: the Jacobian of Step 15's impact law (Eq. F7) of damper k in the state (q, q̇, y, ẏ):
     q̇ += M_s⁻¹φ·P, ẏₖ −= P/m with P = (1 + e)μ(ẏₖ − φᵀq̇), linear in the speeds."""
@@ -1437,7 +1497,7 @@ def _impact_jump(pm, cfg, Phi, k, K, m, e, mu):
 
 @njit(cache=True)
 def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0, Pout,
-        t_end, max_events, variational, watch):  # fmt: skip
+        xb, t_end, max_events, variational, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
@@ -1449,7 +1509,13 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
     accumulation point as a damper's and then holds the point on the wall until the wall would
     pull) from
     modal state (q0, v0) and the masses' (y0, u0) at t = 0 to t_end (a point past a wall at
-    t = 0 starts pressing it).
+    t = 0 starts pressing it).  ``xb``: the supports' displacement amplitude X_b [m], x_b =
+    X_b·cos(Ωt + φ) with the force's Ω and φ (0: fixed supports).  The modes are then relative
+    to the supports (their load −MᵢΓᵢẍ_b is in ``pm0``'s forces), the masses absolute, and a
+    damper's point moves at x_b + φᵀq (its walls, and the output points' displacements, go with
+    it; a stop's wall is fixed to the ground, which moves with the supports: it stays relative).
+    The ledger then closes on the masses' kinetic energies relative to the supports,
+    ½m(ẏ − ẋ_b)²: each free mass's change in flight is the work of its inertia −m·ẍ_b.
 
     Returns (status, events, n_events, period_max, ledger, final): the event log (columns of
     :mod:`symimpact.forced._rigid` and E_DAMPER; columns 1, 2, 3, 8, 9 hold the point's
@@ -1488,7 +1554,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
     side0 = np.zeros(K, dtype=np.int64)
     stuck = np.zeros(K, dtype=np.int64)
     nstuck = 0
-    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
     pm = cfg[7]
     P = Pout.shape[0]
     # scratch for the searches and the ledger, allocated once: bounds A, B and the held-off
@@ -1504,7 +1570,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
     v_before = np.empty(N)
     let_go = np.zeros(K, dtype=np.int64)
     for k in range(K):
-        z[k] = y0[k] - _dot(Phi, k, q)
+        z[k] = y0[k] - _dot(Phi, k, q) - _base_x(pm0, xb, 0.0)
         if abs(z[k]) >= hd[k]:
             side0[k] = 1 if z[k] > 0 else -1
             z[k] = side0[k] * hd[k]
@@ -1521,7 +1587,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
         T = t_end - t
         kr = -1
         if nstuck > 0:
-            T, kr = _release(pm, cfg, nstuck, stuck, Phi, t, q, v, T, watch, work)
+            T, kr = _release(pm, cfg, nstuck, stuck, Phi, t, q, v, T, watch, work, xb)
         ks, ws = -1, 0
         held = 0
         for r in range(S):
@@ -1538,20 +1604,24 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
                 T, ks, ws = taus, kc, wc
                 kr = -1
         tau, k, side = _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t, q, v, z, u, side0, T,
-                                    watch, work)  # fmt: skip
+                                    watch, work, xb)  # fmt: skip
         _segment(pm, cfg, nstuck, Pout, t, q, v, tau, ledger, period_max, n_periods, work, Sphi,
-                 sc, contact)  # fmt: skip
+                 sc, contact, xb)  # fmt: skip
         _states(pm, cfg, nstuck, t, q, v, tau, qn, vn)
         if smooth:
             if nstuck > 0:
                 smooth = False
             else:
                 _flight_jacobian(pm, cfg, K, tau, G)
+        shift = _base_x(pm, xb, t + tau) - _base_x(pm, xb, t)
+        vb0, vb1 = _base_v(pm, xb, t), _base_v(pm, xb, t + tau)
         for j in range(K):
             if stuck[j] == 0:
-                z[j] = z[j] + u[j] * tau - _dot(Phi, j, qn) + _dot(Phi, j, q)
+                z[j] = z[j] + u[j] * tau - _dot(Phi, j, qn) + _dot(Phi, j, q) - shift
+                if xb != 0.0:
+                    ledger[0] += 0.5 * md[j] * ((u[j] - vb1) ** 2 - (u[j] - vb0) ** 2)
             else:
-                u[j] = _dot(Phi, j, vn)
+                u[j] = _dot(Phi, j, vn) + vb1
         t = t + tau
         q[:] = qn
         v[:] = vn
@@ -1562,7 +1632,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
                 # --- held stop ks is let go: its wall would pull ---
                 wall = contact[ks]
                 contact[ks] = 0
-                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
                 pm = cfg[7]
                 fresh, fresh_wall = ks, wall
                 xd = _dot(Sphi, ks, v)
@@ -1593,7 +1663,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
                 wall = contact[pulled]
                 contact[pulled] = 0
                 held -= 1
-                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
                 pm = cfg[7]
                 events, n_ev = _log(events, n_ev, t, _dot(Sphi, pulled, q), 0.0, 0.0, float(wall),
                                     0.0, 0.0, KIND_RELEASE, 0.0, 0.0, K + pulled)  # fmt: skip
@@ -1608,23 +1678,27 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
                 _saltation(_stop_jump(pm, cfg, Sphi, ks, K, se[ks]), fm, fp, gh, G)
             for j in range(K):
                 if stuck[j] != 0:
-                    u[j] = _dot(Phi, j, v)
+                    u[j] = _dot(Phi, j, v) + _base_v(pm, xb, t)
             fresh, fresh_wall = ks, ws
             # --- chatter on the stop: would the rebounds accumulate (Step 9's test)? ---
-            a = sw * _point_accel(pm, cfg, nstuck, Sphi, ks, t, q, v)  # toward the wall
+            a = sw * _point_accel(pm, cfg, nstuck, Sphi, ks, t, q, v, 0.0)  # toward the wall
             wr = se[ks] * vapp
             if a > 0.0 and se[ks] < 1.0:
                 delta = 2.0 * wr / (a * (1.0 - se[ks]))
                 if delta <= chat * T_f and t + delta < t_end:
                     smooth = False
                     _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max,
-                             n_periods, work, Sphi, sc, contact)  # fmt: skip
+                             n_periods, work, Sphi, sc, contact, xb)  # fmt: skip
                     _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
+                    shift = _base_x(pm, xb, t + delta) - _base_x(pm, xb, t)
+                    vb0, vb1 = _base_v(pm, xb, t), _base_v(pm, xb, t + delta)
                     for j in range(K):
                         if stuck[j] == 0:
-                            z[j] = z[j] + u[j] * delta - _dot(Phi, j, qn) + _dot(Phi, j, q)
+                            z[j] = z[j] + u[j] * delta - _dot(Phi, j, qn) + _dot(Phi, j, q) - shift
+                            if xb != 0.0:
+                                ledger[0] += 0.5 * md[j] * ((u[j] - vb1) ** 2 - (u[j] - vb0) ** 2)
                         else:
-                            u[j] = _dot(Phi, j, vn)
+                            u[j] = _dot(Phi, j, vn) + vb1
                     t = t + delta
                     q[:] = qn
                     v[:] = vn
@@ -1634,7 +1708,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
                     ledger[2] += lost
                     for j in range(K):
                         if stuck[j] != 0:
-                            u[j] = _dot(Phi, j, v)
+                            u[j] = _dot(Phi, j, v) + _base_v(pm, xb, t)
                     events, n_ev = _log(events, n_ev, t, _dot(Sphi, ks, q), xd, 0.0, sw,
                                         sw * xd, lost, KIND_ACCUMULATION, _dot(Sphi, ks, v), 0.0,
                                         K + ks)  # fmt: skip
@@ -1643,7 +1717,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
                 # --- the point rests on the wall from here ---
                 smooth = False
                 contact[ks] = ws
-                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
                 pm = cfg[7]
                 if not cfg[5]:
                     status = SINGULAR_STUCK
@@ -1656,7 +1730,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
             if smooth:
                 _field(pm, cfg, K, t, q, v, u, fm)
             contact[ks] = ws
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
             pm = cfg[7]
             if smooth:  # the state is continuous, the rate jumps by the dashpot's force
                 _field(pm, cfg, K, t, q, v, u, fp)
@@ -1678,14 +1752,15 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
             s = float(stuck[kr])
             stuck[kr] = 0
             nstuck -= 1
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
             pm = cfg[7]
             for j in range(K):
                 side0[j] = 0
             side0[kr] = int(s)
-            xd = _dot(Phi, kr, v)
-            events, n_ev = _log(events, n_ev, t, _dot(Phi, kr, q), xd, u[kr], s, 0.0, 0.0,
-                                KIND_RELEASE, xd, u[kr], kr)  # fmt: skip
+            xd = _dot(Phi, kr, v) + _base_v(pm, xb, t)
+            xa = _dot(Phi, kr, q) + _base_x(pm, xb, t)
+            events, n_ev = _log(events, n_ev, t, xa, xd, u[kr], s, 0.0, 0.0, KIND_RELEASE, xd,
+                                u[kr], kr)  # fmt: skip
             continue
         if k < 0:
             if watch[2] != 0:
@@ -1694,7 +1769,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
         # --- Step 15's impact (F7) of damper k on its wall s ---
         s = float(side)
         z[k] = s * hd[k]
-        xd = _dot(Phi, k, v)
+        xd = _dot(Phi, k, v) + _base_v(pm, xb, t)
         vrel = s * (u[k] - xd)  # approach speed, ≥ 0
         e = restitution(ed[k], vyd[k], vrel)
         if smooth:
@@ -1706,7 +1781,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
         let_go[:] = 0
         while True:  # a stuck mass its wall would have to pull during the impulse is let go
             v[:] = v_before
-            P, mu = _impulse(pm, cfg, nstuck, Phi, k, md[k], e, u[k], v)
+            P, mu = _impulse(pm, cfg, nstuck, Phi, k, md[k], e, u[k], v, _base_v(pm, xb, t))
             if held > 0:  # a held stop whose wall would have to pull is let go first
                 h = _held_reactions(cfg, Sphi, contact, srig, _row_response(cfg, Phi, k, P), pulls)
                 gone = -1
@@ -1718,7 +1793,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
                     wall = contact[gone]
                     contact[gone] = 0
                     held -= 1
-                    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+                    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
                     pm = cfg[7]
                     smooth = False
                     events, n_ev = _log(events, n_ev, t, _dot(Sphi, gone, q), 0.0, 0.0,
@@ -1735,32 +1810,38 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
             let_go[pulled] = stuck[pulled]
             stuck[pulled] = 0
             nstuck -= 1
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
             pm = cfg[7]
-            events, n_ev = _log(events, n_ev, t, _dot(Phi, pulled, q), u[pulled], u[pulled],
+            xa = _dot(Phi, pulled, q) + _base_x(pm, xb, t)
+            events, n_ev = _log(events, n_ev, t, xa, u[pulled], u[pulled],
                                 float(let_go[pulled]), 0.0, 0.0, KIND_RELEASE, u[pulled],
                                 u[pulled], pulled)  # fmt: skip
         u_before = u[k]
         u[k] -= P / md[k]
         for j in range(K):
             if stuck[j] != 0:
-                u[j] = _dot(Phi, j, v)
+                u[j] = _dot(Phi, j, v) + _base_v(pm, xb, t)
         if smooth:
             _field(pm, cfg, K, t, q, v, u, fp)
             gh[:] = 0.0
             for i in range(N):
                 gh[i] = -s * Phi[k, i]
             gh[2 * N + k] = s
-            _saltation(_impact_jump(pm, cfg, Phi, k, K, md[k], e, mu), fm, fp, gh, G)
+            DJ = _impact_jump(pm, cfg, Phi, k, K, md[k], e, mu)
+            ku = 2 * N + K + k
+            jt = -_base_a(pm, xb, t) * DJ[:, ku]
+            jt[ku] += _base_a(pm, xb, t)
+            _timed_saltation(DJ, fm, fp, gh, -s * _base_v(pm, xb, t), jt, G)
         lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
         ledger[2] += lost
-        events, n_ev = _log(events, n_ev, t, _dot(Phi, k, q), xd, u_before, s, vrel, lost,
-                            KIND_IMPACT, _dot(Phi, k, v), u[k], k)  # fmt: skip
+        events, n_ev = _log(events, n_ev, t, _dot(Phi, k, q) + _base_x(pm, xb, t), xd, u_before,
+                            s, vrel, lost, KIND_IMPACT, _dot(Phi, k, v) + _base_v(pm, xb, t),
+                            u[k], k)  # fmt: skip
         for j in range(K):
             side0[j] = let_go[j]  # the masses just let go leave their walls
         side0[k] = side
         # --- chatter: would the sequence accumulate (Step 9's test at the point)? ---
-        a = -s * _point_accel(pm, cfg, nstuck, Phi, k, t, q, v)
+        a = -s * _point_accel(pm, cfg, nstuck, Phi, k, t, q, v, xb)
         w = e * vrel
         if a > 0.0 and e < 1.0 and vyd[k] <= 0.0:
             delta = 2.0 * w / (a * (1.0 - e))
@@ -1768,47 +1849,51 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
                 smooth = False
                 # jump to the accumulation point (the other masses fly on), close plastically
                 _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods,
-                         work, Sphi, sc, contact)  # fmt: skip
+                         work, Sphi, sc, contact, xb)  # fmt: skip
                 _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
+                shift = _base_x(pm, xb, t + delta) - _base_x(pm, xb, t)
+                vb0, vb1 = _base_v(pm, xb, t), _base_v(pm, xb, t + delta)
                 for j in range(K):
+                    if stuck[j] == 0 and xb != 0.0:
+                        ledger[0] += 0.5 * md[j] * ((u[j] - vb1) ** 2 - (u[j] - vb0) ** 2)
                     if stuck[j] == 0 and j != k:
-                        z[j] = z[j] + u[j] * delta - _dot(Phi, j, qn) + _dot(Phi, j, q)
+                        z[j] = z[j] + u[j] * delta - _dot(Phi, j, qn) + _dot(Phi, j, q) - shift
                     elif stuck[j] != 0:
-                        u[j] = _dot(Phi, j, vn)
+                        u[j] = _dot(Phi, j, vn) + vb1
                 t = t + delta
                 q[:] = qn
                 v[:] = vn
-                xd = _dot(Phi, k, v)
-                P, mu = _impulse(pm, cfg, nstuck, Phi, k, md[k], 0.0, u[k], v)
+                xd = _dot(Phi, k, v) + _base_v(pm, xb, t)
+                P, mu = _impulse(pm, cfg, nstuck, Phi, k, md[k], 0.0, u[k], v, _base_v(pm, xb, t))
                 lost = 0.5 * mu * (u[k] - xd) ** 2
                 ledger[2] += lost
                 u_before = u[k]
-                u[k] = _dot(Phi, k, v)
+                u[k] = _dot(Phi, k, v) + _base_v(pm, xb, t)
                 for j in range(K):
                     if stuck[j] != 0:
-                        u[j] = _dot(Phi, j, v)
-                events, n_ev = _log(events, n_ev, t, _dot(Phi, k, q), xd, u_before, s,
-                                    s * (u_before - xd), lost, KIND_ACCUMULATION, u[k], u[k],
-                                    k)  # fmt: skip
+                        u[j] = _dot(Phi, j, v) + _base_v(pm, xb, t)
+                xa = _dot(Phi, k, q) + _base_x(pm, xb, t)
+                events, n_ev = _log(events, n_ev, t, xa, xd, u_before, s, s * (u_before - xd),
+                                    lost, KIND_ACCUMULATION, u[k], u[k], k)  # fmt: skip
             elif w != 0.0 and delta != 0.0:
                 continue
             # --- the mass rides on its point from here ---
             smooth = False
             stuck[k] = side
             nstuck += 1
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig)
+            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
             pm = cfg[7]
             if not cfg[5]:
                 status = SINGULAR_STUCK
                 break
-            u[k] = _dot(Phi, k, v)
+            u[k] = _dot(Phi, k, v) + _base_v(pm, xb, t)
             z[k] = s * hd[k]
     final = np.empty(1 + 2 * N + 3 * K + S)
     final[0] = t
     final[1 : 1 + N] = q
     final[1 + N : 1 + 2 * N] = v
     for k in range(K):
-        final[1 + 2 * N + k] = _dot(Phi, k, q) + z[k]
+        final[1 + 2 * N + k] = _dot(Phi, k, q) + _base_x(pm0, xb, t) + z[k]
         final[1 + 2 * N + 2 * K + k] = stuck[k]
     final[1 + 2 * N + K : 1 + 2 * N + 2 * K] = u
     for r in range(S):
@@ -1833,7 +1918,7 @@ def one_mode_run(p, state0, t_end, max_events, watch):
         np.array([p[P_VY]]), p[P_CHAT], np.zeros((0, 1)), np.zeros(0),
         np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
         np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
-        state0[2:3].copy(), state0[3:4].copy(), one, t_end, max_events, False, watch,
+        state0[2:3].copy(), state0[3:4].copy(), one, 0.0, t_end, max_events, False, watch,
     )  # fmt: skip
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
     if final[5] != 0.0:

@@ -78,19 +78,23 @@ class StructureOrbit:
 
 
 def stroboscopic_map(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega: Any,
-                     state: Any, periods: Any = 1, stops: Any = (),
-                     phase: Any = 0.0) -> tuple[np.ndarray, np.ndarray, StructureResult]:  # fmt: skip
+                     state: Any, periods: Any = 1, stops: Any = (), phase: Any = 0.0,
+                     base: Any = 0.0) -> tuple[np.ndarray, np.ndarray, StructureResult]:  # fmt: skip
     """(P(s), ∂P/∂s, the run): the state ``periods`` forcing periods after s = ``state``
-    (q…, q̇…, y…, ẏ…) and the monodromy carried along the run (module text)."""
+    (q…, q̇…, y…, ẏ…) and the monodromy carried along the run (module text); ``base``: the
+    supports' displacement amplitude X_b [m] (:func:`~symimpact.forced.structure_response.
+    simulate_structure`)."""
     res = simulate_structure(structure, dampers, force_at, F0, omega, periods=periods,
-                             phase=phase, state=state, stops=stops, variational=True)  # fmt: skip
+                             phase=phase, state=state, stops=stops, variational=True,
+                             base=base)  # fmt: skip
     N, K = len(structure.modes), len(res.dampers)
     return res.final_state[1 : 1 + 2 * N + 2 * K].copy(), res.monodromy, res
 
 
 def shoot_structure(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega: Any,
                     state: Any, periods: Any = 1, stops: Any = (), phase: Any = 0.0,
-                    tol: float = 1e-11, max_iterations: int = 30) -> StructureOrbit:  # fmt: skip
+                    tol: float = 1e-11, max_iterations: int = 30,
+                    base: Any = 0.0) -> StructureOrbit:  # fmt: skip
     """The period-``periods`` orbit near ``state`` (q…, q̇…, y…, ẏ…): Newton's method on
     P(s) − s = 0 with the carried monodromy (module text), to ‖P(s) − s‖ ≤ tol·‖s‖.  Refused in
     one line: an orbit in which a mass sticks or its chatter accumulates, an event met at zero
@@ -100,7 +104,7 @@ def shoot_structure(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
     residual = math.inf
     for it in range(1, max_iterations + 1):
         image, G, res = stroboscopic_map(structure, dampers, force_at, F0, omega, s, k, stops,
-                                         phase)  # fmt: skip
+                                         phase, base)  # fmt: skip
         if not np.all(np.isfinite(G)):
             kinds = set(res.events[:, _rigid.E_KIND].astype(int).tolist())
             held = {_rigid.KIND_ACCUMULATION, _rigid.KIND_RELEASE}

@@ -72,6 +72,8 @@ class StructureResult:
     #: transition matrices and the events' saltation matrices; NaN where the motion is not
     #: differentiable so (a mass sticks, or its chatter accumulates)
     monodromy: np.ndarray | None = None
+    #: the supports' displacement amplitude X_b [m] (0: fixed supports)
+    X_b: float = 0.0
 
     def contacts(self, stop: str) -> np.ndarray:
         """The times at which stop ``stop``'s contacts begin [s] (a rigid stop's: its impacts and,
@@ -117,6 +119,7 @@ class StructureResult:
         return {
             "dampers": [d.as_dict() for d in self.dampers],
             "force": {"at": self.force_at, "amplitude": self.F0},
+            **({"base": {"amplitude": self.X_b}} if self.X_b != 0.0 else {}),
             "omega": self.omega,
             "t_end": self.t_end,
             "stops": [s.as_dict() for s in self.stops],
@@ -129,24 +132,28 @@ class StructureResult:
 
 
 def _modal_parameters(structure: Structure, force_at: str, F0: float, omega: float,
-                      phase: float) -> np.ndarray:  # fmt: skip
+                      phase: float, X_b: float = 0.0) -> np.ndarray:  # fmt: skip
     """One row of the one-mode engine's parameter layout per mode: Mᵢ, Kᵢ = ωᵢ²Mᵢ,
-    Cᵢ = 2ζᵢωᵢMᵢ, Fᵢ = F₀φᵢ(f) (Step 15, item 1)."""
+    Cᵢ = 2ζᵢωᵢMᵢ, Fᵢ = F₀φᵢ(f) + MᵢΓᵢΩ²X_b (Step 15, item 1; the second term the supports'
+    motion X_b·cos(Ωt + φ) seen from the modes relative to them: the inertia −MᵢΓᵢẍ_b)."""
     pm = np.zeros((len(structure.modes), _rigid.N_PARAMS))
     for i, mode in enumerate(structure.modes):
         pm[i, _rigid.P_M] = mode.mass
         pm[i, _rigid.P_K] = mode.omega**2 * mode.mass
         pm[i, _rigid.P_C] = 2.0 * mode.zeta * mode.omega * mode.mass
         pm[i, _rigid.P_F0] = F0 * mode.shape[force_at]
+        if X_b != 0.0:
+            pm[i, _rigid.P_F0] += mode.mass * mode.participation * omega**2 * X_b
         pm[i, _rigid.P_W], pm[i, _rigid.P_PHI] = omega, phase
     return pm
 
 
 def _energy(pm: np.ndarray, md: np.ndarray, q, v, u, stops: tuple[Stop, ...] = (),
-            Sphi: Any = None, pressed: Any = ()) -> float:  # fmt: skip
-    """Σ(½Mᵢq̇ᵢ² + ½Kᵢqᵢ²) + Σ½mₖẏₖ² + Σ½k₁(w·xₛ − g)² over the stops pressed on their wall w."""
+            Sphi: Any = None, pressed: Any = (), vb: float = 0.0) -> float:  # fmt: skip
+    """Σ(½Mᵢq̇ᵢ² + ½Kᵢqᵢ²) + Σ½mₖ(ẏₖ − ẋ_b)² + Σ½k₁(w·xₛ − g)² over the stops pressed on their
+    wall w (``vb``: the supports' speed ẋ_b; the modes are relative to them)."""
     M, K = pm[:, _rigid.P_M], pm[:, _rigid.P_K]
-    out = 0.5 * np.sum(M * v * v + K * q * q) + 0.5 * np.sum(md * u * u)
+    out = 0.5 * np.sum(M * v * v + K * q * q) + 0.5 * np.sum(md * (u - vb) * (u - vb))
     for j, (s, w) in enumerate(zip(stops, pressed, strict=True)):
         if w != 0:
             out += 0.5 * s.k1 * (w * float(Sphi[j] @ q) - s.gap) ** 2
@@ -156,7 +163,7 @@ def _energy(pm: np.ndarray, md: np.ndarray, q, v, u, stops: tuple[Stop, ...] = (
 def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega: Any,
                        periods: Any = 400, phase: Any = 0.0, state: Any = None,
                        chatter: Any = CHATTER, stops: Any = (),
-                       variational: bool = False) -> StructureResult:  # fmt: skip
+                       variational: bool = False, base: Any = 0.0) -> StructureResult:  # fmt: skip
     """Simulate ``structure`` with ``dampers`` (a sequence of :class:`~symimpact.model.dampers.
     Damper`) under the force F₀cos(Ωt + φ) at point ``force_at`` [N, rad/s, rad] for ``periods``
     forcing periods, from rest or from ``state`` = (q…, q̇…, y…, ẏ…) (modal coordinates, then
@@ -169,7 +176,17 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     (:mod:`symimpact.model.stops`).  A structure with stops may carry no damper.  Refused in one
     line: an undamped mode driven at its own frequency (Eq. F1 cancels there, as in
     :func:`~symimpact.forced.simulate_forced`).  ``variational``: carry the state's Jacobian
-    (:attr:`StructureResult.monodromy`)."""
+    (:attr:`StructureResult.monodromy`).
+
+    ``base``: the supports' displacement amplitude X_b [m], moving as X_b·cos(Ωt + φ) (with or
+    without the force).  The modal coordinates are then relative to the supports, each mode
+    loaded by the inertia −MᵢΓᵢẍ_b (Eq. F7 with its participation factor Γᵢ); the dampers'
+    displacements stay absolute, and a damper's point, the point its clearance is measured
+    from, moves at x_b + Σφᵢqᵢ, as do the output points (:attr:`StructureResult.period_max`: the
+    absolute amplitudes the bare structure's :meth:`~symimpact.model.structure.Structure.
+    base_transmissibility` gives).  A stop's wall, fixed to the moving ground, is met by the
+    point's displacement relative to it, Σφᵢqᵢ.  The energy ledger is then the one seen from
+    the supports (the masses' speeds relative to them)."""
     structure = instance("structure", structure, Structure, "a Structure")
     dampers = tuple(dampers) if isinstance(dampers, (list, tuple)) else dampers
     stops = tuple(stops) if isinstance(stops, (list, tuple)) else stops
@@ -188,6 +205,12 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         raise ParameterError("dampers", "two dampers or stops have the same name")
     point = structure._point(force_at)
     F0 = nonnegative_float("F0", F0, "N")
+    X_b = si_float("base", base, "m")
+    if not math.isfinite(X_b):
+        raise ParameterError("base", f"must be a finite displacement amplitude, got {base!r}")
+    if X_b != 0.0 and not any(m.participation != 0.0 for m in structure.modes):
+        raise ParameterError("base", "no mode of the structure has a participation factor: its "
+                                     "supports' motion drives nothing (a modal model gives none)")  # fmt: skip
     omega = positive_float("omega", omega, "rad/s")
     phase = si_float("phase", phase)
     n_periods = whole_number("periods", periods, 1)
@@ -197,14 +220,16 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         if mode.zeta == 0.0 and abs(omega / mode.omega - 1.0) < 5e-8 and omega != mode.omega:
             raise ParameterError("omega", f"within 5e-8 of the undamped mode {mode.number} "
                                           f"({mode.omega:.10g} rad/s): Eq. F1 cancels there")  # fmt: skip
-    if state is None:
+    if state is None:  # at rest on the supports: the masses centred on their points, with them
         x0 = np.zeros(2 * N + 2 * K)
+        x0[2 * N : 2 * N + K] = X_b * math.cos(phase)
+        x0[2 * N + K :] = -X_b * omega * math.sin(phase)
     else:
         x0 = np.array(state, dtype=float).ravel()
         if x0.shape != (2 * N + 2 * K,) or not np.all(np.isfinite(x0)):
             raise ParameterError("state", f"must be {2 * N + 2 * K} finite numbers (q, q̇ of "
                                           f"{N} modes, y, ẏ of {K} dampers)")  # fmt: skip
-    pm = _modal_parameters(structure, point, F0, omega, phase)
+    pm = _modal_parameters(structure, point, F0, omega, phase, X_b)
     Phi = structure.shapes([d.at for d in dampers]).reshape(K, N)
     Sphi = structure.shapes([st.at for st in stops]).reshape(len(stops), N)
     sg = np.array([st.gap for st in stops])
@@ -246,6 +271,7 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         y0,
         u0,
         Pout,
+        X_b,
         t_end,
         budgets.MAX_EVENTS,
         bool(variational),
@@ -266,10 +292,12 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         if w != 0 and st.contact == "rigid":
             raise ParameterError("state", f"puts the point of stop {st.name!r} beyond its rigid "
                                           "wall")  # fmt: skip
-    e0 = _energy(pm, md, q0, v0, u0, stops, Sphi, pressed0)
+    vb0 = -X_b * omega * math.sin(phase)
+    vb1 = -X_b * omega * math.sin(omega * float(final[0]) + phase)
+    e0 = _energy(pm, md, q0, v0, u0, stops, Sphi, pressed0, vb0)
     qf, vf = final[1 : 1 + N], final[1 + N : 1 + 2 * N]
     uf = final[1 + 2 * N + K : 1 + 2 * N + 2 * K]
-    e1 = _energy(pm, md, qf, vf, uf, stops, Sphi, final[1 + 2 * N + 3 * K :])
+    e1 = _energy(pm, md, qf, vf, uf, stops, Sphi, final[1 + 2 * N + 3 * K :], vb1)
     work, d_c, d_imp, d_stops = (float(x) for x in ledger)
     residual = (e1 - e0) - (work - d_c - d_imp - d_stops)
     scale = max(abs(work), d_c + d_imp + d_stops, e0, e1, 1e-300)
@@ -278,7 +306,8 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
               "relative_residual": abs(residual) / scale}  # fmt: skip
     return StructureResult(structure, dampers, point, F0, omega, t_end, events,
                            structure.points, period_max[:n_periods], energy, final,
-                           stops=stops, monodromy=G if variational else None)  # fmt: skip
+                           stops=stops, monodromy=G if variational else None,
+                           X_b=X_b)  # fmt: skip
 
 
 def _pressed(st: Stop, x: float) -> int:
