@@ -201,16 +201,18 @@ def _structure_orbit(ns) -> None:
     if not 1 <= multiple <= MAX_MULTIPLE:
         raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
     args = (model.structure, model.dampers, model.force_at, model.F0, forcing.omega)
-    settled = simulate_structure(*args, periods=warmup, phase=forcing.phase, stops=model.stops)
+    X_b = model.base_at(forcing.omega)
+    settled = simulate_structure(*args, periods=warmup, phase=forcing.phase, stops=model.stops,
+                                 base=X_b)  # fmt: skip
     n = 2 * len(model.structure.modes) + 2 * len(model.dampers)
     start = settled.final_state[1 : 1 + n]
     try:
-        o = shoot_structure(*args, start, multiple, model.stops, forcing.phase)
+        o = shoot_structure(*args, start, multiple, model.stops, forcing.phase, base=X_b)
     except ParameterError as exc:  # Newton's start, named for the options that set it
         returns = []
         for k in range(1, 9):  # how near the settled motion comes back within 8 periods
             back = simulate_structure(*args, periods=k, phase=forcing.phase, state=start,
-                                      stops=model.stops).final_state[1 : 1 + n]  # fmt: skip
+                                      stops=model.stops, base=X_b).final_state[1 : 1 + n]  # fmt: skip
             returns.append(float(np.max(np.abs(back - start)) / np.max(np.abs(start))))
         k = 1 + int(np.argmin(returns))
         raise ParameterError("multiple", f"no orbit of {multiple} period(s) near the state after "

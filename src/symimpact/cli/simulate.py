@@ -249,9 +249,10 @@ def run_structure(ns) -> None:
     discard = int(0.75 * periods) if ns.discard is None else period_count("discard", ns.discard)
     if discard >= periods:
         raise ParameterError("discard", f"must be fewer than --periods ({periods}), got {discard}")
+    X_b = model.base_at(forcing.omega)
     res = simulate_structure(model.structure, model.dampers, model.force_at, model.F0,
-                             forcing.omega, periods, forcing.phase,
-                             stops=model.stops)  # fmt: skip
+                             forcing.omega, periods, forcing.phase, stops=model.stops,
+                             base=X_b)  # fmt: skip
     amplitudes = {p: float(res.period_max[discard:, j].max()) for j, p in enumerate(res.points)}
     if ns.csv:
 
@@ -262,8 +263,10 @@ def run_structure(ns) -> None:
 
         atomic_write(ns.csv, write, "csv")
     text = (
-        f"{res.structure.source} model, {len(res.structure.modes)} modes; force "
-        f"{model.F0:.6g} N at {model.force_at!r}, Ω {omega_text(forcing.omega)}"
+        f"{res.structure.source} model, {len(res.structure.modes)} modes; "
+        + (f"force {model.F0:.6g} N at {model.force_at!r}" if model.F0 else "no force")
+        + (f", supports moving {quantity_text('x', X_b)} (absolute amplitudes)" if X_b else "")
+        + f", Ω {omega_text(forcing.omega)}"
         + ("" if display_unit("omega") == "Hz" else f" ({forcing.freq:.6g} Hz)")
         + f"; {periods} periods, steady over the last {periods - discard}\n"
         + "".join(f"damper {d.name!r} at {d.at!r}: {len(res.impacts(d.name))} impacts\n"

@@ -6,9 +6,11 @@ structure, each damper's impact at its point, Eq. F7).
 
 The file's fields beside the structure's: ``"dampers"``, a list of ``{"name", "at", "m", "gap",
 "contact": "rigid", "e"}``; ``"stops"``, a list of ``{"name", "at", "gap", "side", "contact":
-"linear", "k1", "c1"}``; and ``"force"``, ``{"at": point, "amplitude": F0}`` (SI numbers or
-quantity texts such as ``"2 N"``).  A file gives dampers, stops or both.  Base motion of a
-structure of several modes is not built yet: a file that gives it is refused in one line.
+"linear", "k1", "c1"}``; ``"force"``, ``{"at": point, "amplitude": F0}``; and ``"base"``, the
+supports' harmonic motion at the force's frequency and phase, ``{"amplitude": X_b}`` (a
+displacement) or ``{"acceleration": A_b}`` (X_b = A_b/Ω² at each Ω: a shaker's constant
+acceleration level, e.g. ``"0.5 g"``) (SI numbers or quantity texts such as ``"2 N"``).  A file
+gives dampers, stops or both, and a force, a base motion or both.
 """
 
 from __future__ import annotations
@@ -20,7 +22,7 @@ from ..errors import ParameterError
 from .dampers import Damper, dampers
 from .stops import Stop, stops
 from .structure import LOADS, Structure, parsed_file, structure_from_dict
-from .units import nonnegative_float
+from .units import nonnegative_float, positive_float
 
 
 @dataclass(frozen=True)
@@ -33,28 +35,42 @@ class StructureModel:
     force_at: str
     F0: float
     stops: tuple[Stop, ...] = ()
+    #: the supports' displacement amplitude X_b [m], or (``base_kind`` "acceleration") their
+    #: acceleration amplitude A_b [m/s²]; 0: fixed supports
+    base: float = 0.0
+    base_kind: str = "amplitude"
+
+    def base_at(self, omega: float) -> float:
+        """X_b [m] at the forcing frequency Ω [rad/s]: the file's displacement amplitude, or
+        its acceleration amplitude over Ω² (x_b = X_b cos(Ωt + φ) has ẍ_b = −Ω²x_b)."""
+        if self.base_kind == "acceleration":
+            return self.base / (omega * omega)
+        return self.base
 
 
 def model_from_dict(data: Any, base: Any = None) -> StructureModel:
     """The :class:`StructureModel` of a parsed structure file (see :func:`read_model`)."""
     if not isinstance(data, dict):
         raise ParameterError("structure", "a table with one of beam, modes or fe")
-    if "base" in data:
-        raise ParameterError("base", "base motion on a structure of several modes is not built "
-                                     "yet (the one-mode primary takes --base)")  # fmt: skip
     if "dampers" not in data and "stops" not in data:
         raise ParameterError("dampers", "the file gives no dampers and no stops: list them as "
                                         "{name, at, m, gap, contact, e} or {name, at, gap, side, "
                                         "contact, k1, c1}")  # fmt: skip
-    if "force" not in data:
-        raise ParameterError("force", "the file gives no force: {\"at\": point, \"amplitude\": "
-                                      "F0}")  # fmt: skip
+    if "force" not in data and "base" not in data:
+        raise ParameterError("force", "the file gives no force and no base motion: {\"at\": "
+                                      "point, \"amplitude\": F0} or \"base\": {\"amplitude\": "
+                                      "X_b}")  # fmt: skip
     structure = structure_from_dict({k: v for k, v in data.items() if k not in LOADS}, base)
     found = dampers(structure, data["dampers"]) if "dampers" in data else ()
     walls = stops(structure, data["stops"]) if "stops" in data else ()
     for w in walls:
         if any(d.name == w.name for d in found):
             raise ParameterError(f"stops.{w.name}", "a damper has this name too")
+    X_b, kind = 0.0, "amplitude"
+    if "base" in data:
+        X_b, kind = _base(structure, data["base"])
+    if "force" not in data:  # moved by its supports alone
+        return StructureModel(structure, found, structure.points[0], 0.0, walls, X_b, kind)
     force = data["force"]
     if not isinstance(force, dict) or set(force) != {"at", "amplitude"}:
         raise ParameterError("force", 'must be {"at": point, "amplitude": F0}')
@@ -65,9 +81,23 @@ def model_from_dict(data: Any, base: Any = None) -> StructureModel:
     if all(mode.node_at(at) for mode in structure.modes):
         raise ParameterError("force.at", f"no mode moves the point {at!r} (a support): the "
                                          "force would do nothing")  # fmt: skip
-    return StructureModel(
-        structure, found, at, nonnegative_float("force.amplitude", force["amplitude"], "N"), walls
-    )
+    F0 = nonnegative_float("force.amplitude", force["amplitude"], "N")
+    return StructureModel(structure, found, at, F0, walls, X_b, kind)
+
+
+def _base(structure: Structure, base: Any) -> tuple[float, str]:
+    """(value, kind) of the file's ``"base"``: ``{"amplitude": X_b}`` [m] or
+    ``{"acceleration": A_b}`` [m/s²]."""
+    if not isinstance(base, dict) or len(base) != 1 or set(base) - {"amplitude", "acceleration"}:
+        raise ParameterError("base", 'must be {"amplitude": X_b} or {"acceleration": A_b} (the '
+                                     "supports move at the force's frequency and phase)")  # fmt: skip
+    if not any(mode.participation != 0.0 for mode in structure.modes):
+        raise ParameterError("base", "no mode of the structure has a participation factor: its "
+                                     "supports' motion drives nothing (modal data give none; a "
+                                     "beam or a finite-element model does)")  # fmt: skip
+    ((kind, value),) = base.items()
+    unit = "m" if kind == "amplitude" else "m/s^2"
+    return positive_float(f"base.{kind}", value, unit), kind
 
 
 def read_model(path: Any) -> StructureModel:
