@@ -193,12 +193,13 @@ def run_structure(ns) -> None:
     if not 1 <= multiple <= MAX_MULTIPLE:
         raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
     args = (model.structure, model.dampers, model.force_at, model.F0)
+    X_b = model.base_at(forcing.omega)
     settled = simulate_structure(*args, forcing.omega, periods=warmup, phase=forcing.phase,
-                                 stops=model.stops)  # fmt: skip
+                                 stops=model.stops, base=X_b)  # fmt: skip
     n = 2 * len(model.structure.modes) + 2 * len(model.dampers)
     try:
         start = shoot_structure(*args, forcing.omega, settled.final_state[1 : 1 + n], multiple,
-                                model.stops, forcing.phase)  # fmt: skip
+                                model.stops, forcing.phase, base=X_b)  # fmt: skip
     except ParameterError as exc:
         raise ParameterError("multiple", f"no orbit of {multiple} period(s) near the state after "
                              f"--warmup {warmup} periods (Newton's method: {exc.reason}): "
@@ -209,7 +210,8 @@ def run_structure(ns) -> None:
         if end != start_value:
             branches.append(parameter_branch(*args, forcing.omega, ns.parameter, start_value,
                                              end, start.state, damper=damper, periods=multiple,
-                                             stops=model.stops, phase=forcing.phase))  # fmt: skip
+                                             stops=model.stops, phase=forcing.phase,
+                                             base=X_b))  # fmt: skip
     unit = UNITS[ns.parameter]
 
     def value_text(v: float) -> str:

@@ -196,10 +196,6 @@ def _structure_model(ns: argparse.Namespace, given: set[str]) -> None:
         if option in given:
             raise ParameterError(option, "a structure's run starts from rest")
     ns.structure_model = read_model(ns.structure)
-    if ns.structure_model.base != 0.0 and ns.command not in ("simulate", "periodic"):
-        raise ParameterError("structure", f"{ns.structure} moves the supports: 'simulate' and "
-                             "'periodic' run a structure on moving supports; its 'frf', 'branch' "
-                             "and 'design' are not built yet")  # fmt: skip
 
 
 def structure_forcing(ns: argparse.Namespace) -> Any:

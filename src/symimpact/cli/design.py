@@ -94,7 +94,7 @@ def run_structure(ns) -> None:
         raise ParameterError("point", exc.reason) from None
     gaps = parse_range("gaps", ns.gaps)
     d = structure_design(model.structure, model.dampers, model.force_at, model.F0, damper,
-                         gaps, lo, hi, step, point, model.stops)  # fmt: skip
+                         gaps, lo, hi, step, point, model.stops, base=model.base_at)  # fmt: skip
     lines = [f"damper {damper!r}: its clearance against the peak at {point!r} over Ω "
              f"{omega_text(lo)}–{omega_text(hi)}"]  # fmt: skip
     for g, pk in zip(d.gaps, d.peaks, strict=True):

@@ -174,13 +174,14 @@ def run_structure(ns) -> None:
     lo, hi, step = structure_band(ns)
     model = ns.structure_model
     args = (model.structure, model.dampers, model.force_at, model.F0)
-    curve = structure_curve(*args, lo, hi, step, model.stops)
+    curve = structure_curve(*args, lo, hi, step, model.stops, base=model.base_at)
     branches, notes = curve.branches, curve.notes
     peaks, bare = {}, {}
     for p in model.structure.points:
-        pk = curve_peak(*args, curve, p, model.stops)
+        pk = curve_peak(*args, curve, p, model.stops, base=model.base_at)
         peaks[p] = None if pk is None else pk.as_dict()
-        bare[p] = bare_peak(model.structure, model.force_at, model.F0, p, lo, hi).as_dict()
+        bare[p] = bare_peak(model.structure, model.force_at, model.F0, p, lo, hi,
+                            base=model.base_at).as_dict()  # fmt: skip
     out = curve.as_dict() | {"peaks": peaks, "bare_peaks": bare}
     lines = [f"Ω {omega_text(lo)}–{omega_text(hi)}: {len(branches)} branch(es) of the "
              f"{len(model.structure.modes)}-mode structure, "

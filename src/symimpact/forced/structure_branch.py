@@ -125,12 +125,20 @@ def _value_of(parameter: str, damper: str):
     return value
 
 
+def _base_at(base: Any, omega: float) -> float:
+    """X_b [m] at Ω: ``base`` is the supports' displacement amplitude, or a function of Ω giving
+    it (a constant acceleration level: :meth:`~symimpact.model.structure_model.StructureModel.
+    base_at`)."""
+    return float(base(omega)) if callable(base) else float(base)
+
+
 def _returns_after(o: StructureOrbit, periods: int, args: tuple, stops: Any, phase: float) -> bool:
     """Whether orbit ``o`` comes back after ``periods`` (to 1e-6 of its state's size): an orbit
     of fewer periods than it was shot for."""
     from .structure_response import simulate_structure
 
     run = simulate_structure(*args, o.run.omega, periods=periods, phase=phase, state=o.state,
+                             base=o.run.X_b,
                              stops=stops)  # fmt: skip
     n = len(o.state)
     gap = np.linalg.norm(run.final_state[1 : 1 + n] - o.state)
@@ -156,10 +164,11 @@ def _crossing(o: StructureOrbit) -> complex:
 def structure_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
                      omega_start: Any, omega_end: Any, state: Any, periods: Any = 1,
                      stops: Any = (), step: Any = None, phase: Any = 0.0,
-                     locate: float = 1e-9) -> StructureBranch:  # fmt: skip
+                     locate: float = 1e-9, base: Any = 0.0) -> StructureBranch:  # fmt: skip
     """Continue the period-``periods`` orbit near ``state`` at ``omega_start`` to ``omega_end``
     [rad/s] (either direction; module text), with a first step ``step`` (default 1/100 of the
-    band) that grows to it again after halvings; bifurcations located to ``locate`` of Ω."""
+    band) that grows to it again after halvings; bifurcations located to ``locate`` of Ω.
+    ``base``: the supports' displacement amplitude X_b [m], or a function of Ω giving it."""
     w0 = positive_float("omega_start", omega_start, "rad/s")
     w1 = positive_float("omega_end", omega_end, "rad/s")
     if w0 == w1:
@@ -169,7 +178,8 @@ def structure_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
     args = (structure, dampers, force_at, F0)
 
     def shot(w: float, s: np.ndarray) -> StructureOrbit:
-        o = shoot_structure(*args, w, s, k, stops, phase, max_iterations=12)
+        o = shoot_structure(*args, w, s, k, stops, phase, max_iterations=12,
+                            base=_base_at(base, w))  # fmt: skip
         if k % 2 == 0 and _returns_after(o, k // 2, args, stops, phase):
             # near a doubling the parent, of half the period, is a fixed point of this map too
             raise MethodNotApplicable("structure_branch", f"the orbit at Ω {w:.9g} rad/s is the "
@@ -232,7 +242,7 @@ def _trace(shot, parameter: str, damper: str, p0: float, p1: float, state: Any,
 def parameter_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega: Any,
                      parameter: str, start: Any, end: Any, state: Any, damper: Any = None,
                      periods: Any = 1, stops: Any = (), step: Any = None, phase: Any = 0.0,
-                     locate: float = 1e-9) -> StructureBranch:  # fmt: skip
+                     locate: float = 1e-9, base: Any = 0.0) -> StructureBranch:  # fmt: skip
     """Continue the period-``periods`` orbit near ``state`` at a fixed Ω ``omega`` [rad/s] in
     ``parameter`` (:data:`PARAMETERS`: damper ``damper``'s total clearance ``gap`` [m],
     restitution ``e`` or mass ``m`` [kg], or the force amplitude ``F0`` [N]) from ``start`` (the
@@ -278,7 +288,7 @@ def parameter_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
             ds = tuple(replace(d, **{parameter: p}) if isinstance(d, Damper) and d.name == name
                        else d for d in dampers)  # fmt: skip
         o = shoot_structure(structure, ds, force_at, force, w, s, k, stops, phase,
-                            max_iterations=12)  # fmt: skip
+                            max_iterations=12, base=_base_at(base, w))  # fmt: skip
         if k % 2 == 0 and _returns_after(o, k // 2, (structure, ds, force_at, force), stops,
                                          phase):  # fmt: skip
             raise MethodNotApplicable("parameter_branch", f"the orbit at {parameter} {p:.9g} is "
@@ -354,7 +364,7 @@ class StructurePeak:
 
 def located_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
                  branches: list[StructureBranch], point: str, stops: Any = (),
-                 phase: float = 0.0) -> StructurePeak | None:  # fmt: skip
+                 phase: float = 0.0, base: Any = 0.0) -> StructurePeak | None:  # fmt: skip
     """The largest stable amplitude at ``point`` over ``branches``: the best traced orbit or
     stable orbit at a located bracket's end (a bifurcation's or a grazing's, to 1e-9 of Ω), and
     where the best traced orbit's neighbours on the branch are stable orbits of the same impacts (so the amplitude
@@ -388,7 +398,8 @@ def located_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
     def minus_amplitude(w: float) -> float:
         try:
             trial = shoot_structure(structure, dampers, force_at, F0, w, o.state, o.periods,
-                                    stops, phase, max_iterations=12)  # fmt: skip
+                                    stops, phase, max_iterations=12,
+                                    base=_base_at(base, w))  # fmt: skip
         except (MethodNotApplicable, ParameterError):
             return -0.0
         return -trial.amplitudes[point] if trial.impacts == o.impacts else -0.0
@@ -402,7 +413,7 @@ def located_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
 
 def doubled_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
                    bifurcation: Bifurcation, omega_end: Any, stops: Any = (),
-                   phase: float = 0.0) -> StructureBranch | None:  # fmt: skip
+                   phase: float = 0.0, base: Any = 0.0) -> StructureBranch | None:  # fmt: skip
     """The branch of twice the period born at a period doubling, continued to ``omega_end``
     [rad/s]: its first orbit is shot on the side where the parent is unstable (the daughter of a
     supercritical doubling lives there), a small step past the located point, from the parent's
@@ -431,12 +442,13 @@ def doubled_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
         try:
             o = shoot_structure(structure, dampers, force_at, F0, w,
                                 unstable.state + push * scale * v / np.linalg.norm(v), 2 * k,
-                                stops, phase, max_iterations=20)  # fmt: skip
+                                stops, phase, max_iterations=20,
+                                base=_base_at(base, w))  # fmt: skip
         except (MethodNotApplicable, ParameterError):
             continue
         if not _returns_after(o, k, (structure, dampers, force_at, F0), stops, phase):
             return structure_branch(structure, dampers, force_at, F0, w, w_end, o.state, 2 * k,
-                                    stops, phase=phase)  # fmt: skip
+                                    stops, phase=phase, base=base)  # fmt: skip
     return None
 
 
@@ -457,8 +469,8 @@ class StructureCurve:
 
 
 def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega_low: float,
-                    omega_high: float, step: float, stops: Any = (),
-                    warmup: int = 300) -> StructureCurve:  # fmt: skip
+                    omega_high: float, step: float, stops: Any = (), warmup: int = 300,
+                    base: Any = 0.0) -> StructureCurve:  # fmt: skip
     """The structure's response curve over [omega_low, omega_high] [rad/s]: a run of ``warmup``
     periods from rest at every frequency of the grid of ``step``; a branch continued from each
     end of the band (steps up to ``step``), each started from the orbit the run there settles
@@ -480,14 +492,16 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
     runs = {}
     settled = []
     for w in grid:
-        run = simulate_structure(*args, float(w), periods=warmup, stops=stops)
+        run = simulate_structure(*args, float(w), periods=warmup, stops=stops,
+                                 base=_base_at(base, float(w)))  # fmt: skip
         runs[float(w)] = run
         settled.append({"omega": float(w), "amplitudes": run.amplitudes(0.75)})
     for w0, w1 in ((omega_low, omega_high), (omega_high, omega_low)):
         start = runs[float(grid[0] if w0 == omega_low else grid[-1])]
         s = start.final_state[1 : 1 + n]
         for k in range(1, 9):
-            back = simulate_structure(*args, w0, periods=k, state=s, stops=stops)
+            back = simulate_structure(*args, w0, periods=k, state=s, stops=stops,
+                                      base=_base_at(base, w0))  # fmt: skip
             if np.linalg.norm(back.final_state[1 : 1 + n] - s) <= 1e-6 * np.linalg.norm(s):
                 break
         else:
@@ -496,7 +510,7 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
                          "there")  # fmt: skip
             continue
         try:
-            branches.append(structure_branch(*args, w0, w1, s, k, stops, step=step))
+            branches.append(structure_branch(*args, w0, w1, s, k, stops, step=step, base=base))
         except (MethodNotApplicable, ParameterError) as exc:
             notes.append(f"no branch from Ω {w0:.6g} rad/s: {exc}")
     for b in list(branches):
@@ -507,7 +521,7 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
             unstable = hi_side if _unstable(hi_side) > _unstable(lo_side) else lo_side
             end = omega_high if unstable.run.omega > f.omega else omega_low
             try:
-                d = doubled_branch(*args, f, end, stops)
+                d = doubled_branch(*args, f, end, stops, base=base)
             except (MethodNotApplicable, ParameterError) as exc:
                 notes.append(f"no branch from the period doubling at Ω {f.omega:.6g} rad/s: "
                              f"{exc}")  # fmt: skip
@@ -521,11 +535,13 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
 
 
 def curve_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
-               curve: StructureCurve, point: str, stops: Any = ()) -> StructurePeak | None:  # fmt: skip
+               curve: StructureCurve, point: str, stops: Any = (),
+               base: Any = 0.0) -> StructurePeak | None:  # fmt: skip
     """The largest steady amplitude at ``point`` over the curve: the located peak of its
     branches (:func:`located_peak`), or, where a run from rest settled on a larger motion that
     no traced branch holds, that run's (kind "run from rest": a grid sample)."""
-    peak = located_peak(structure, dampers, force_at, F0, curve.branches, point, stops)
+    peak = located_peak(structure, dampers, force_at, F0, curve.branches, point, stops,
+                        base=base)  # fmt: skip
     run = max(curve.settled, key=lambda r: r["amplitudes"][point], default=None)
     if run is not None and (peak is None or run["amplitudes"][point] > peak.amplitude):
         return StructurePeak(point, run["amplitudes"][point], run["omega"], "run from rest")
@@ -533,16 +549,22 @@ def curve_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
 
 
 def bare_peak(structure: Structure, force_at: Any, F0: Any, point: Any, omega_low: float,
-              omega_high: float) -> StructurePeak:  # fmt: skip
+              omega_high: float, base: Any = 0.0) -> StructurePeak:  # fmt: skip
     """The bare structure's (no damper, no stop) largest steady amplitude at ``point`` over the
-    band: F₀·max abs(H(p, f; Ω)) of the modal receptance (Eq. F7 in the frequency domain),
+    band: max abs(F₀·H(p, f; Ω) + X_b·T(p; Ω)) of the modal receptance and, on supports moving
+    by X_b cos(Ωt + φ) in phase with the force (``base``: X_b [m] or a function of Ω giving
+    it), the base transmissibility (Eq. F7 in the frequency domain; the absolute displacement),
     the grid's best of 200 frequencies refined by Brent's bounded search (to 1e-12 of Ω)."""
     from scipy.optimize import minimize_scalar
 
     F0 = float(F0)
 
     def minus(w: float) -> float:
-        return -abs(structure.receptance(point, force_at, w)) * F0
+        x = structure.receptance(point, force_at, w) * F0
+        X_b = _base_at(base, w)
+        if X_b != 0.0:
+            x = x + structure.base_transmissibility(point, w) * X_b
+        return -abs(x)
 
     grid = np.linspace(omega_low, omega_high, 200)
     values = [minus(w) for w in grid]

@@ -61,10 +61,11 @@ def _row(gap: float, peak: StructurePeak | None, notes: list[str]) -> dict[str, 
 
 def structure_design(structure: Structure, dampers: Any, force_at: Any, F0: Any, damper: str,
                      gaps: Any, omega_low: float, omega_high: float, step: float,
-                     point: Any = None, stops: Any = ()) -> StructureDesign:  # fmt: skip
+                     point: Any = None, stops: Any = (), base: Any = 0.0) -> StructureDesign:  # fmt: skip
     """The located peak at ``point`` (default: the driven point) over [omega_low, omega_high]
     [rad/s] for each clearance of ``gaps`` [m] given to the damper named ``damper`` (module
-    text)."""
+    text); ``base``: the supports' displacement amplitude X_b [m], or a function of Ω giving
+    it."""
     dampers = tuple(dampers)
     names = [d.name for d in dampers]
     if damper not in names:
@@ -81,8 +82,8 @@ def structure_design(structure: Structure, dampers: Any, force_at: Any, F0: Any,
         trial: list[Damper] = list(dampers)
         trial[k] = replace(dampers[k], gap=float(gap))
         curve = structure_curve(structure, trial, force_at, F0, omega_low, omega_high, step,
-                                stops)  # fmt: skip
-        peaks.append(curve_peak(structure, trial, force_at, F0, curve, at, stops))
+                                stops, base=base)  # fmt: skip
+        peaks.append(curve_peak(structure, trial, force_at, F0, curve, at, stops, base=base))
         notes.append(curve.notes)
-    bare = bare_peak(structure, force_at, F0, at, omega_low, omega_high)
+    bare = bare_peak(structure, force_at, F0, at, omega_low, omega_high, base=base)
     return StructureDesign(damper, at, values, peaks, notes, bare)
