@@ -166,8 +166,9 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
                        variational: bool = False, base: Any = 0.0) -> StructureResult:  # fmt: skip
     """Simulate ``structure`` with ``dampers`` (a sequence of :class:`~symimpact.model.dampers.
     Damper`) under the force F₀cos(Ωt + φ) at point ``force_at`` [N, rad/s, rad] for ``periods``
-    forcing periods, from rest or from ``state`` = (q…, q̇…, y…, ẏ…) (modal coordinates, then
-    each damper's absolute displacement and velocity).  Eq. F1 per mode, Eq. F7 at each impact.
+    forcing periods, from rest (on the supports: the masses centred on their points, moving
+    with them) or from ``state`` = (q…, q̇…, y…, ẏ…) (modal coordinates, then each damper's
+    absolute displacement and velocity).  Eq. F1 per mode, Eq. F7 at each impact.
 
     Chatter is taken to its accumulation point and the mass then sticks on its point until its
     wall would pull it (Step 15, item 5).  ``stops``: a sequence of
