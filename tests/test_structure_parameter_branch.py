@@ -172,7 +172,8 @@ def test_branch_continues_a_structure_file_on_the_command_line(tmp_path, capsys)
         assert value == pytest.approx(b.value, abs=2 * b.tolerance)
     for args, name in ((["--range", "0.6:0.7"], "range"),
                        (["--range", "0.4:0.7", "--damper", "q"], "damper"),
-                       (["--range", "0.4:0.7", "--csv", "x.csv"], "csv")):  # fmt: skip
+                       (["--range", "0.4:0.7", "--csv", "x.csv"], "csv"),
+                       (["--range", "0:0.7"], "range")):  # fmt: skip
         assert main([*base, *args]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and f"error: {name}:" in err

@@ -70,10 +70,9 @@ def run(ns) -> None:
     from ..model.display import display_unit, omega_text, shown
     from .frf import contact_of, contact_title
 
-    for option, why in (("m", "m, a damper's mass, is continued on a --structure file's "
-                               "damper"), ):  # fmt: skip
-        if ns.parameter == option:
-            raise ParameterError("parameter", why)
+    if ns.parameter == "m":
+        raise ParameterError("parameter", "m, a damper's mass, is continued on a --structure "
+                                          "file's damper")  # fmt: skip
     if ns.damper is not None:
         raise ParameterError("damper", "names a damper of a --structure file, which is not given")
     e = contact_of(ns)
@@ -178,6 +177,8 @@ def run_structure(ns) -> None:
             raise ParameterError("damper", "names the damper whose gap, e or m is continued, "
                                            "not F0")  # fmt: skip
         start_value = model.F0
+        if start_value == 0.0:
+            raise ParameterError("parameter", f"{ns.structure} gives no force to continue")
     else:
         damper = ns.damper if ns.damper is not None else (names[0] if len(names) == 1 else None)
         if damper not in names:
@@ -188,6 +189,10 @@ def run_structure(ns) -> None:
     if not low <= start_value <= high:
         raise ParameterError("range", f"must hold the start, {ns.parameter} = {start_value:g} "
                                       "(SI, the file's)")  # fmt: skip
+    if low <= 0.0 or (ns.parameter == "e" and high > 1.0):
+        raise ParameterError("range", f"{ns.parameter} must lie in "
+                                      f"{'(0, 1]' if ns.parameter == 'e' else '(0, ∞)'}, got "
+                                      f"{ns.bounds!r}")  # fmt: skip
     warmup = period_count("warmup", "300" if ns.warmup is None else ns.warmup)
     multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
     if not 1 <= multiple <= MAX_MULTIPLE:
@@ -207,11 +212,17 @@ def run_structure(ns) -> None:
                              "the motion comes back after") from None  # fmt: skip
     branches = []
     for end in (low, high):
-        if end != start_value:
+        if end == start_value:
+            continue
+        try:
             branches.append(parameter_branch(*args, forcing.omega, ns.parameter, start_value,
                                              end, start.state, damper=damper, periods=multiple,
                                              stops=model.stops, phase=forcing.phase,
                                              base=X_b))  # fmt: skip
+        except ParameterError as exc:  # the range's ends, named for the option that gives them
+            if exc.parameter in ("start", "end"):
+                raise ParameterError("range", exc.reason) from None
+            raise
     unit = UNITS[ns.parameter]
 
     def value_text(v: float) -> str:
