@@ -261,10 +261,12 @@ def test_cli_fuzz(fuzz_dir):
                 _no_nan_json(out)
 
     case()
-    # the vocabulary must reach both outcomes, or the fuzz tests only one side.  Measured under
-    # three seeds: 4.4-6.2 % of the argument lists run (exit 0); 1/40 lies four binomial
-    # standard deviations (√(1000·0.05) ≈ 7 runs) below that, so another seed does not fail it
-    floor = FUZZ_EXAMPLES // 40
+    # the vocabulary must reach both outcomes, or the fuzz tests only one side.  Measured on
+    # 2026-11-28 (the subcommands have grown options that each refuse more lists): 1.8-3.7 % of
+    # the argument lists run (exit 0): 18, 25, 27, 37 and 37 in 1000 under the CI profile, the
+    # derandomised draw and seeds 1-3.  1/200 lies four binomial standard deviations
+    # (√(1000·0.029) ≈ 5.4 runs) below their mean of 29, so another seed does not fail it
+    floor = FUZZ_EXAMPLES // 200
     assert seen.get(0, 0) >= floor and seen.get(2, 0) >= floor, seen
 
 
