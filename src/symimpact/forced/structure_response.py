@@ -211,7 +211,8 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         raise ParameterError("base", f"must be a finite displacement amplitude, got {base!r}")
     if X_b != 0.0 and not any(m.participation != 0.0 for m in structure.modes):
         raise ParameterError("base", "no mode of the structure has a participation factor: its "
-                                     "supports' motion drives nothing (a modal model gives none)")  # fmt: skip
+                                     "supports' motion drives nothing (modal data give none; a beam or a "
+                                     "finite-element model does)")  # fmt: skip
     omega = positive_float("omega", omega, "rad/s")
     phase = si_float("phase", phase)
     n_periods = whole_number("periods", periods, 1)

@@ -68,7 +68,7 @@ def model_from_dict(data: Any, base: Any = None) -> StructureModel:
             raise ParameterError(f"stops.{w.name}", "a damper has this name too")
     X_b, kind = 0.0, "amplitude"
     if "base" in data:
-        X_b, kind = _base(structure, data["base"])
+        X_b, kind = _base(data["base"])
     if "force" not in data:  # moved by its supports alone
         return StructureModel(structure, found, structure.points[0], 0.0, walls, X_b, kind)
     force = data["force"]
@@ -85,16 +85,14 @@ def model_from_dict(data: Any, base: Any = None) -> StructureModel:
     return StructureModel(structure, found, at, F0, walls, X_b, kind)
 
 
-def _base(structure: Structure, base: Any) -> tuple[float, str]:
+def _base(base: Any) -> tuple[float, str]:
     """(value, kind) of the file's ``"base"``: ``{"amplitude": X_b}`` [m] or
-    ``{"acceleration": A_b}`` [m/s²]."""
+    ``{"acceleration": A_b}`` [m/s²] (a structure whose modes have no participation factor, as
+    modal data give, is refused by the run: :func:`~symimpact.forced.structure_response.
+    simulate_structure`)."""
     if not isinstance(base, dict) or len(base) != 1 or set(base) - {"amplitude", "acceleration"}:
         raise ParameterError("base", 'must be {"amplitude": X_b} or {"acceleration": A_b} (the '
                                      "supports move at the force's frequency and phase)")  # fmt: skip
-    if not any(mode.participation != 0.0 for mode in structure.modes):
-        raise ParameterError("base", "no mode of the structure has a participation factor: its "
-                                     "supports' motion drives nothing (modal data give none; a "
-                                     "beam or a finite-element model does)")  # fmt: skip
     ((kind, value),) = base.items()
     unit = "m" if kind == "amplitude" else "m/s^2"
     return positive_float(f"base.{kind}", value, unit), kind
