@@ -224,10 +224,15 @@ def _structure_orbit(ns) -> None:
     text = (
         f"Ω {omega_text(forcing.omega)}: an orbit of {multiple} forcing period(s) of the "
         f"{len(model.structure.modes)}-mode structure by shooting from {warmup} periods from rest "
-        f"({o.iterations} Newton steps, residual {o.residual:.1e}), "
-        f"{'stable' if o.stable else 'unstable'} (largest |multiplier| {big:.6g})\n"
+        f"({o.iterations} Newton steps, residual {o.residual:.1e}"
+        + (", Jacobian by central differences: the orbit chatters or sticks"
+           if o.jacobian == "differenced" else "")
+        + f"), {'stable' if o.stable else 'unstable'} (largest |multiplier| {big:.6g})\n"
         + "".join(f"{name}: {count} {'contacts' if name in {s.name for s in model.stops} else 'impacts'}"
-                  f" in the orbit\n" for name, count in o.impacts.items())
+                  f" in the orbit"
+                  + (f" ({o.impact_events[name]} with each chatter sequence counted once)"
+                     if o.impact_events[name] != count else "")
+                  + "\n" for name, count in o.impacts.items())
         + "\n".join(f"amplitude at {p!r}: {quantity_text('x', a)}"
                     for p, a in o.amplitudes.items())
     )  # fmt: skip

@@ -5,16 +5,18 @@ located.
 
 Each point is an orbit shot on the state of the N modes and K dampers
 (:func:`symimpact.forced.structure_orbits.shoot_structure`, the monodromy carried through every
-flight, impact and stop contact).  The next value's Newton starts from the secant
-extrapolation of the last two orbits (natural-parameter continuation); where it fails the step is
-halved, down to a floor, where the branch ends and says why (a fold turns it back; an orbit that
-sticks or chatters is not followed yet).  Between two orbits whose count of multipliers outside
+flight, impact and stop contact, and differenced through chatter and sticking).  The next value's
+Newton starts from the secant extrapolation of the last two orbits (natural-parameter
+continuation); where it fails the step is halved, down to a floor, where the branch ends and says
+why (a fold turns it back).  Between two orbits whose count of multipliers outside
 the unit circle differs a multiplier has crossed it: the crossing is located by bisection in the
 parameter (each trial shot from the nearer orbit) and named by where the multiplier crosses — at −1 a
 period doubling, at +1 a fold or branch point, elsewhere a Neimark–Sacker point (a pair
 e^{±iθ}); where the bracket closes on a change of the impacts a period, the stability changed
-at a grazing (the multipliers jump there).  Where the count of impacts or contacts a period changes, an impact was born or died
-(a grazing) between the two orbits: it is reported with the counts on both sides.
+at a grazing (the multipliers jump there).  Where the count of impact events or contacts a period changes (a
+chatter sequence counted once, :attr:`~symimpact.forced.structure_orbits.StructureOrbit.
+impact_events`, so that how many of its impacts are resolved does not count), an impact was born
+or died (a grazing) between the two orbits: it is reported with the counts on both sides.
 """
 
 from __future__ import annotations
@@ -147,7 +149,8 @@ def _returns_after(o: StructureOrbit, periods: int, args: tuple, stops: Any, pha
 
 def _point(o: StructureOrbit) -> dict[str, Any]:
     return {"omega": o.run.omega, "amplitudes": o.amplitudes, "stable": o.stable,
-            "largest_multiplier": float(max(abs(o.multipliers))), "impacts": o.impacts}  # fmt: skip
+            "largest_multiplier": float(max(abs(o.multipliers))), "impacts": o.impacts,
+            "impact_events": o.impact_events, "jacobian": o.jacobian}  # fmt: skip
 
 
 def _unstable(o: StructureOrbit) -> int:
@@ -227,12 +230,12 @@ def _trace(shot, parameter: str, damper: str, p0: float, p1: float, state: Any,
             found = _locate(shot, last, o, locate, value, parameter)
             bifurcations.append(found)
             edges.extend(found.sides)
-        if o.impacts != last.impacts:
-            before = last.impacts
-            a, b = _bisect(shot, last, o, locate, lambda x, before=before: x.impacts == before,
-                           value)  # fmt: skip
-            grazings.append({"between": [value(a), value(b)], "before": last.impacts,
-                             "after": o.impacts})  # fmt: skip
+        if o.impact_events != last.impact_events:
+            before = last.impact_events
+            a, b = _bisect(shot, last, o, locate,
+                           lambda x, before=before: x.impact_events == before, value)  # fmt: skip
+            grazings.append({"between": [value(a), value(b)], "before": last.impact_events,
+                             "after": o.impact_events})  # fmt: skip
             edges.extend((a, b))
         orbits.append(o)
         h = min(2.0 * h, h_max)
@@ -334,7 +337,7 @@ def _locate(shot, a: StructureOrbit, b: StructureOrbit, tol: float, value=_omega
     lo, hi = _bisect(shot, a, b, tol, lambda x: _unstable(x) == side, value)
     lam = _crossing(hi if abs(abs(_crossing(hi)) - 1) < abs(abs(_crossing(lo)) - 1) else lo)
     angle = abs(math.atan2(lam.imag, lam.real))
-    if lo.impacts != hi.impacts:
+    if lo.impact_events != hi.impact_events:
         kind = AT_GRAZING
     elif angle > math.pi - 1e-3:
         kind = PERIOD_DOUBLING
@@ -391,7 +394,7 @@ def located_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
     if not 0 < i < len(orbits) - 1:
         return peak
     lo, hi = orbits[i - 1], orbits[i + 1]
-    if not (lo.stable and hi.stable and lo.impacts == o.impacts == hi.impacts):
+    if not (lo.stable and hi.stable and lo.impact_events == o.impact_events == hi.impact_events):
         return peak
     a, c = sorted((lo.run.omega, hi.run.omega))
 
@@ -402,7 +405,7 @@ def located_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
                                     base=_base_at(base, w))  # fmt: skip
         except (MethodNotApplicable, ParameterError):
             return -0.0
-        return -trial.amplitudes[point] if trial.impacts == o.impacts else -0.0
+        return -trial.amplitudes[point] if trial.impact_events == o.impact_events else -0.0
 
     found = minimize_scalar(minus_amplitude, bounds=(a, c), method="bounded",
                             options={"xatol": 1e-10 * c})  # fmt: skip

@@ -1,0 +1,130 @@
+"""Periodic orbits of a structure through chatter and sticking (issue 36: "shooting and
+continuation through sticking or chatter"): Newton on the stroboscopic map with its differenced
+Jacobian (:func:`symimpact.forced.structure_orbits.differenced_monodromy`) against what does not
+share it — the one-mode engine's carried chain through the accumulation point, the sticking phase
+and the release (:func:`symimpact.forced.monodromy`), and long simulations from rest."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from symimpact.forced import Forcing, monodromy, shoot_from_rest
+from symimpact.forced.structure_branch import structure_branch
+from symimpact.forced.structure_orbits import differenced_monodromy, shoot_structure
+from symimpact.forced.structure_response import simulate_structure
+from symimpact.model.dampers import damper, dampers
+from symimpact.model.structure import beam_structure, structure_from_dict
+from symimpact.model.system import ImpactSystem
+
+#: The paper's primary of tests/test_shooting.py (M 1 kg, K 1000 N/m, C 0.5 N s/m, m 0.05 kg in
+#: 20 mm, 2 N) as one mode of shape 1.
+SYSTEM = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+ONE_MODE = {"modes": [{"f": math.sqrt(1000) / (2 * math.pi), "mass": 1.0,
+                       "zeta": 0.5 / (2 * math.sqrt(1000)), "shape": {"p": 1.0}}]}  # fmt: skip
+#: A steel cantilever, 1 m of 40 mm × 10 mm (8.36 and 52.4 Hz), ζ 0.02, a plastic damper of
+#: 50 g in 10 mm at its tip, 2 N at the tip: every impact sticks, the tip carrying the mass.
+BEAM = {"support": "cantilever", "E": 210e9, "I": 0.04 * 0.01**3 / 12, "rho": 7850.0, "A": 4e-4,
+        "L": 1.0}  # fmt: skip
+
+
+def _settled(structure, ds, omega, periods, F0=2.0, at="p"):
+    res = simulate_structure(structure, ds, at, F0, omega, periods=periods)
+    return res.final_state[1 : 1 + 2 * len(structure.modes) + 2 * len(ds)]
+
+
+@pytest.mark.parametrize(("e", "omega"), [(0.05, 28.0), (0.16, 30.0), (0.6, 30.8)])
+def test_one_mode_through_chatter_and_sticking_is_the_one_mode_engines_orbit(e, omega):
+    """The orbits of tests/test_shooting.py whose mass chatters to an accumulation point and
+    sticks each half period, shot on the structure of one mode from where its run from rest is
+    after 300 periods: the orbit against the one-mode engine's (1e-9 of the scales: both
+    Newtons stop near 1e-11), and its differenced Jacobian against the one-mode engine's carried
+    chain in the coordinates (x, ẋ, y, ẏ) (1e-7 of the scales: the differences' truncation and
+    rounding, measured 1.6e-10 to 1.7e-9 at steps of 1e-5), so the multipliers agree (1e-7)."""
+    structure = structure_from_dict(ONE_MODE)
+    ds = dampers(structure, [{"name": "d", "at": "p", "m": 0.05, "gap": 0.02, "e": e}])
+    orbit = shoot_structure(structure, ds, "p", 2.0, omega, _settled(structure, ds, omega, 300))
+    f = Forcing(F0=2, omega=omega)
+    one = shoot_from_rest(SYSTEM, f, e, warmup=400)
+    x, v, z, u = one.state
+    want = np.array([x, v, x + z, u])
+    a = one.amplitude
+    scale = np.array([a, a * omega, 0.01, a * omega])
+    assert orbit.jacobian == "differenced" and orbit.stable
+    assert np.max(np.abs(orbit.state - want) / scale) < 1e-9
+    _, J, _ = monodromy(SYSTEM, f, e, np.array(one.state))
+    T = np.eye(4)
+    T[2, 0] = 1.0  # (x, ẋ, y, ẏ) = T·(x, ẋ, z, ẏ)
+    carried = T @ J @ np.linalg.inv(T)
+    assert np.max(np.abs((orbit.monodromy - carried) * scale[None, :] / scale[:, None])) < 1e-7
+    moduli = np.sort(np.abs(orbit.multipliers))[::-1]
+    assert np.max(np.abs(moduli - np.array(one.multipliers))) < 1e-7
+
+
+def test_the_differenced_jacobian_equals_the_carried_one_on_two_modes():
+    """Where the chain is carried (the two-mode cantilever's damper, e 0.6, at 7.6 Hz: impacts
+    only), the differenced Jacobian equals it (1e-7 of the matrix's scale, the differences'
+    truncation and rounding at steps of 1e-5, as above)."""
+    s = beam_structure(**BEAM, points={"p": 1.0}, modes=2, zeta=0.02)
+    ds = dampers(s, [{"name": "d", "at": "p", "m": 0.05, "gap": "10 mm", "e": 0.6}])
+    omega = 2 * math.pi * 7.6
+    orbit = shoot_structure(s, ds, "p", 2.0, omega, _settled(s, ds, omega, 300))
+    assert orbit.jacobian == "carried" and sum(orbit.impacts.values()) >= 2
+    G = differenced_monodromy(s, ds, "p", 2.0, omega, orbit.state)
+    assert np.max(np.abs(G - orbit.monodromy)) < 1e-7 * np.max(np.abs(orbit.monodromy))
+
+
+@pytest.mark.parametrize("f_hz", [7.5, 8.0, 8.5])
+def test_a_sticking_orbit_of_two_modes_is_the_brute_force_steady_state(f_hz):
+    """The plastic damper at the cantilever's tip: shot from 50 periods from rest, the orbit
+    equals where a 400-period run from rest settles (its largest multiplier is at most 0.87:
+    0.87^400 is far below rounding; 1e-9 of the scales, measured ~1e-13), and a 300-period run
+    from the orbit comes back to it (1e-9)."""
+    s = beam_structure(**BEAM, points={"p": 1.0}, modes=2, zeta=0.02)
+    ds = dampers(s, [{"name": "d", "at": "p", "m": 0.05, "gap": "10 mm", "e": 0.0}])
+    omega = 2 * math.pi * f_hz
+    orbit = shoot_structure(s, ds, "p", 2.0, omega, _settled(s, ds, omega, 50))
+    kinds = set(orbit.run.events[:, 7].astype(int).tolist())
+    assert {1, 2} <= kinds and orbit.jacobian == "differenced"  # accumulations, releases
+    assert orbit.stable and orbit.impact_events["d"] >= 2
+    settled = _settled(s, ds, omega, 400)
+    scale = np.abs(settled).max()
+    assert np.max(np.abs(orbit.state - settled)) < 1e-9 * scale
+    back = _settled_from(s, ds, omega, orbit.state, 300)
+    assert np.max(np.abs(back - orbit.state)) < 1e-9 * scale
+
+
+def _settled_from(s, ds, omega, state, periods):
+    res = simulate_structure(s, ds, "p", 2.0, omega, periods=periods, state=state)
+    return res.final_state[1 : 1 + 2 * len(s.modes) + 2 * len(ds)]
+
+
+def test_a_branch_is_continued_through_sticking():
+    """The plastic damper's branch from 7.5 to 7.75 Hz: every orbit sticks (differenced), the
+    branch reaches the band's end, and at its middle orbit the amplitude is the one a run from
+    rest settles on (1e-8: the orbit's residual and the 400-period transient are far below)."""
+    s = beam_structure(**BEAM, points={"p": 1.0}, modes=2, zeta=0.02)
+    ds = dampers(s, [{"name": "d", "at": "p", "m": 0.05, "gap": "10 mm", "e": 0.0}])
+    w0, w1 = 2 * math.pi * 7.5, 2 * math.pi * 7.75
+    b = structure_branch(s, ds, "p", 2.0, w0, w1, _settled(s, ds, w0, 300), step=0.1)
+    assert not b.ended and b.omegas[-1] == pytest.approx(w1, rel=1e-12)
+    assert all(o.jacobian == "differenced" for o in b.orbits)
+    o = b.orbits[len(b.orbits) // 2]
+    run = simulate_structure(s, ds, "p", 2.0, o.run.omega, periods=400)
+    assert o.amplitudes["p"] == pytest.approx(float(run.period_max[-1, 0]), rel=1e-8)
+
+
+def test_a_plastic_damper_on_the_chain_is_shot():
+    """The issue's two-DOF chain with a plastic damper (0.1 kg, 0.5 clearance) at its second
+    DOF, driven there with 0.1 at Ω 0.55: the mass sticks at once, and the shot orbit is where a
+    600-period run settles (1e-9 of the state)."""
+    structure = structure_from_dict({"fe": {"M": [[1, 0], [0, 1]], "K": [[1, -1], [-1, 2]],
+                                            "zeta": 0.015}})  # fmt: skip
+    d = damper(structure, "d", 1, 0.1, 0.5, 0.0)
+    start = _settled(structure, [d], 0.55, 20, F0=0.1, at="1")
+    orbit = shoot_structure(structure, [d], "1", 0.1, 0.55, start)
+    settled = _settled(structure, [d], 0.55, 600, F0=0.1, at="1")
+    assert orbit.jacobian == "differenced" and orbit.stable
+    assert np.max(np.abs(orbit.state - settled)) < 1e-9 * np.max(np.abs(settled))
