@@ -281,6 +281,8 @@ def test_bad_input_is_refused_in_one_line():
     with pytest.raises(ParameterError, match="no point 'root'"):
         dampers(s, [{**good, "at": "root"}])
     with pytest.raises(ParameterError, match=r"dampers\[0\]"):
+        dampers(s, [{**good, "k2": 3}])
+    with pytest.raises(ParameterError, match="a rigid contact does not take k1"):
         dampers(s, [{**good, "k1": 3}])
     ds = dampers(s, [good])
     with pytest.raises(ParameterError, match="state"):

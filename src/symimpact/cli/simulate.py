@@ -269,8 +269,8 @@ def run_structure(ns) -> None:
         + f", Ω {omega_text(forcing.omega)}"
         + ("" if display_unit("omega") == "Hz" else f" ({forcing.freq:.6g} Hz)")
         + f"; {periods} periods, steady over the last {periods - discard}\n"
-        + "".join(f"damper {d.name!r} at {d.at!r}: {len(res.impacts(d.name))} impacts\n"
-                  for d in res.dampers)
+        + "".join(f"damper {d.name!r} at {d.at!r}: {len(res.impacts(d.name))} "
+                  f"{'impacts' if d.rigid else d.contact + ' contacts'}\n" for d in res.dampers)
         + "".join(f"stop {s.name!r} at {s.at!r}: {len(res.contacts(s.name))} contacts\n"
                   for s in res.stops)
         + "\n".join(f"amplitude at {p!r}: {quantity_text('x', a)}"

@@ -96,6 +96,9 @@ from ._rigid import (
 #: Run status beside OK, TOO_MANY_EVENTS and INTERRUPTED: the stuck structure has no harmonic
 #: response (undamped, driven at one of its own frequencies) or no eigen-decomposition.
 SINGULAR_STUCK = 3
+#: Run status: a compliant damper's contact begins (its onset is the log's last event); the
+#: caller integrates the contact (:mod:`symimpact.forced._structure_contact`) and runs on.
+CONTACT = 5
 #: Extra event-log column: the damper of the event (its index).
 E_DAMPER = N_EVENT_COLS
 N_MODAL_EVENT_COLS = N_EVENT_COLS + 1
@@ -1496,8 +1499,8 @@ def _impact_jump(pm, cfg, Phi, k, K, m, e, mu):
 
 
 @njit(cache=True)
-def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0, Pout,
-        xb, t_end, max_events, variational, watch):  # fmt: skip
+def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0,
+        Pout, xb, t0, t_end, max_events, variational, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
@@ -1508,8 +1511,9 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
     where ``srig[s]``, rigid impacts of restitution ``se``, whose chatter is taken to its
     accumulation point as a damper's and then holds the point on the wall until the wall would
     pull) from
-    modal state (q0, v0) and the masses' (y0, u0) at t = 0 to t_end (a point past a wall at
-    t = 0 starts pressing it).  ``xb``: the supports' displacement amplitude X_b [m], x_b =
+    modal state (q0, v0) and the masses' (y0, u0) at t = ``t0`` to t_end (a point past a wall at
+    t0 starts pressing it).  A damper with ``law[k]`` ≥ 0 (a compliant law's code) ends the run
+    where its contact begins, with status :data:`CONTACT` and that onset logged last.  ``xb``: the supports' displacement amplitude X_b [m], x_b =
     X_b·cos(Ωt + φ) with the force's Ω and φ (0: fixed supports).  The modes are then relative
     to the supports (their load −MᵢΓᵢẍ_b is in ``pm0``'s forces), the masses absolute, and a
     damper's point moves at x_b + φᵀq (its walls, and the output points' displacements, go with
@@ -1546,7 +1550,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
     fresh, fresh_wall = -1, 0
     pulls = np.empty(S)
     n_ev = 0
-    t = 0.0
+    t = t0
     q, v = q0.copy(), v0.copy()
     qn, vn = np.empty(N), np.empty(N)
     u = u0.copy()
@@ -1570,7 +1574,7 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
     v_before = np.empty(N)
     let_go = np.zeros(K, dtype=np.int64)
     for k in range(K):
-        z[k] = y0[k] - _dot(Phi, k, q) - _base_x(pm0, xb, 0.0)
+        z[k] = y0[k] - _dot(Phi, k, q) - _base_x(pm0, xb, t0)
         if abs(z[k]) >= hd[k]:
             side0[k] = 1 if z[k] > 0 else -1
             z[k] = side0[k] * hd[k]
@@ -1768,8 +1772,14 @@ def run(pm0, Phi, md, hd, ed, vyd, chat, Sphi, sg, sside, sk, sc, srig, se, q0, 
             break
         # --- Step 15's impact (F7) of damper k on its wall s ---
         s = float(side)
-        z[k] = s * hd[k]
         xd = _dot(Phi, k, v) + _base_v(pm, xb, t)
+        if law[k] >= 0:  # a compliant contact begins: the caller integrates it (z unclamped,
+            smooth = False  # so that dampers alike stay alike to the bit)
+            events, n_ev = _log(events, n_ev, t, _dot(Phi, k, q) + _base_x(pm, xb, t), xd, u[k],
+                                s, s * (u[k] - xd), 0.0, KIND_ONSET, xd, u[k], k)  # fmt: skip
+            status = CONTACT
+            break
+        z[k] = s * hd[k]
         vrel = s * (u[k] - xd)  # approach speed, ≥ 0
         e = restitution(ed[k], vyd[k], vrel)
         if smooth:
@@ -1915,10 +1925,10 @@ def one_mode_run(p, state0, t_end, max_events, watch):
     one = np.ones((1, 1))
     status, events, n_ev, period_max, ledger, final, _ = run(
         pm, one, np.array([p[P_m]]), np.array([p[P_h]]), np.array([p[P_e]]),
-        np.array([p[P_VY]]), p[P_CHAT], np.zeros((0, 1)), np.zeros(0),
+        np.array([p[P_VY]]), np.array([-1]), p[P_CHAT], np.zeros((0, 1)), np.zeros(0),
         np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
         np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
-        state0[2:3].copy(), state0[3:4].copy(), one, 0.0, t_end, max_events, False, watch,
+        state0[2:3].copy(), state0[3:4].copy(), one, 0.0, 0.0, t_end, max_events, False, watch,
     )  # fmt: skip
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
     if final[5] != 0.0:

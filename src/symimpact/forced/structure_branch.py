@@ -279,6 +279,10 @@ def parameter_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
             raise ParameterError("damper", f"name the damper whose {parameter} is continued "
                                            f"(the dampers: {', '.join(names) or 'none'})")  # fmt: skip
         name = str(damper)
+        chosen = next(d for d in dampers if d.name == name)
+        if parameter == "e" and not getattr(chosen, "rigid", True):
+            raise ParameterError("parameter", f"damper {name!r} has a {chosen.contact} contact: "
+                                              "it has no restitution e to continue in")  # fmt: skip
     k = whole_number("periods", periods, 1)
     h = None if step is None else (positive_float("step", step, unit) if unit
                                    else positive_float("step", step))  # fmt: skip

@@ -147,7 +147,8 @@ def shoot_structure(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
             ends = res.final_state[1 + 2 * N + 2 * K :]  # each damper stuck, each stop pressed
             rigid = [st.contact == "rigid" for st in res.stops]
             resting = np.any(ends[:K] != 0) or np.any(ends[K:][rigid] != 0)
-            if not (kinds & held or resting):
+            compliant = any(not d.rigid for d in res.dampers)
+            if not (kinds & held or resting or compliant):
                 raise MethodNotApplicable("shoot_structure", f"at Ω {float(omega):.6g} rad/s an "
                                           "impact or contact meets its wall at zero speed "
                                           "(grazing) within the orbit's periods: the map has no "

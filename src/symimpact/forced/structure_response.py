@@ -27,12 +27,13 @@ import numpy as np
 
 from .. import _interrupt, budgets
 from ..errors import MethodNotApplicable, ParameterError
+from ..free import _stepper
 from ..model.checks import instance, whole_number
 from ..model.dampers import Damper
 from ..model.stops import Stop
 from ..model.structure import Structure
 from ..model.units import nonnegative_float, positive_float, si_float
-from . import _modal, _rigid
+from . import _compliant, _modal, _rigid, _structure_contact
 from .simulation import CHATTER
 
 #: Columns of :attr:`StructureResult.events`.
@@ -95,14 +96,15 @@ class StructureResult:
     def impacts(self, damper: str) -> np.ndarray:
         """The times of damper ``damper``'s impacts [s]: the impacts it resolved and, for each
         chatter sequence, its accumulation point (as :attr:`~symimpact.forced.ForcedResult.
-        impacts`)."""
+        impacts`); a compliant damper's contact onsets."""
         names = [d.name for d in self.dampers]
         if damper not in names:
             raise ParameterError("damper", f"no damper {damper!r} (the dampers: "
                                            f"{', '.join(names)})")  # fmt: skip
         k = names.index(damper)
         mine = self.events[:, _modal.E_DAMPER] == k
-        kept = mine & (self.events[:, _rigid.E_KIND] != _rigid.KIND_RELEASE)
+        kind = self.events[:, _rigid.E_KIND]
+        kept = mine & (kind != _rigid.KIND_RELEASE) & (kind != _modal.KIND_EXIT)
         return self.events[kept, _rigid.E_T]
 
     def amplitudes(self, discard: Any = 0.5) -> dict[str, float]:
@@ -171,7 +173,12 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     absolute displacement and velocity).  Eq. F1 per mode, Eq. F7 at each impact.
 
     Chatter is taken to its accumulation point and the mass then sticks on its point until its
-    wall would pull it (Step 15, item 5).  ``stops``: a sequence of
+    wall would pull it (Step 15, item 5).  A damper with a compliant contact law (linear, Hertz,
+    Hunt–Crossley: :mod:`symimpact.model.dampers`) presses its wall with the law's force, which
+    enters the modes through their shapes (Eq. F7); its contact phases are integrated over the
+    whole state (:mod:`symimpact.forced._structure_contact`), its onsets and exits logged
+    (kinds "contact onset", "contact exit"), and :meth:`StructureResult.impacts` gives its
+    onsets.  Compliant dampers act alone so far: not beside rigid dampers or stops.  ``stops``: a sequence of
     :class:`~symimpact.model.stops.Stop`, walls fixed to the ground with a linear contact law;
     a pressed stop adds its spring and dashpot to the structure, whose flight stays closed form
     (:mod:`symimpact.model.stops`).  A structure with stops may carry no damper.  Refused in one
@@ -252,32 +259,15 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
         raise ParameterError("periods", f"{n_periods} forcing periods last {natural:.3g} periods "
                                         f"of the highest mode; at most "
                                         f"{budgets.MAX_NATURAL_PERIODS:.0e}")  # fmt: skip
-    status, events, n_ev, period_max, ledger, final, G = _interrupt.call(
-        _modal.run,
-        pm,
-        Phi,
-        md,
-        hd,
-        ed,
-        np.zeros(K),
-        chat,
-        Sphi,
-        sg,
-        sside,
-        sk,
-        sc,
-        srig,
-        se,
-        q0,
-        v0,
-        y0,
-        u0,
-        Pout,
-        X_b,
-        t_end,
-        budgets.MAX_EVENTS,
-        bool(variational),
-    )
+    law = np.array([-1 if d.rigid else _compliant.CODES[d.contact] for d in dampers],
+                   dtype=np.int64)  # fmt: skip
+    if np.any(law >= 0) and (np.any(law < 0) or stops):
+        raise ParameterError("dampers", "compliant dampers act on a structure alone so far: not "
+                                        "beside rigid dampers or stops")  # fmt: skip
+    status, events, n_ev, period_max, ledger, final, G = _alternation(
+        pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0,
+        u0, Pout, X_b, t_end, bool(variational),
+    )  # fmt: skip
     events = events[:n_ev]
     if status == _modal.SINGULAR_STUCK:
         raise MethodNotApplicable(
@@ -300,6 +290,9 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     qf, vf = final[1 : 1 + N], final[1 + N : 1 + 2 * N]
     uf = final[1 + 2 * N + K : 1 + 2 * N + 2 * K]
     e1 = _energy(pm, md, qf, vf, uf, stops, Sphi, final[1 + 2 * N + 3 * K :], vb1)
+    e0 += _pressing(dampers, Phi, q0, y0, X_b * math.cos(phase))
+    e1 += _pressing(dampers, Phi, qf, final[1 + 2 * N : 1 + 2 * N + K],
+                    X_b * math.cos(omega * float(final[0]) + phase))  # fmt: skip
     work, d_c, d_imp, d_stops = (float(x) for x in ledger)
     residual = (e1 - e0) - (work - d_c - d_imp - d_stops)
     scale = max(abs(work), d_c + d_imp + d_stops, e0, e1, 1e-300)
@@ -310,6 +303,103 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
                            structure.points, period_max[:n_periods], energy, final,
                            stops=stops, monodromy=G if variational else None,
                            X_b=X_b)  # fmt: skip
+
+
+def _pressing(dampers: tuple[Damper, ...], Phi: np.ndarray, q, y, x_b: float) -> float:
+    """The elastic energy stored in the compliant dampers' contacts [J]."""
+    lq, _ = _law_parameters(dampers)
+    out = 0.0
+    for k, d in enumerate(dampers):
+        delta = abs(float(y[k]) - x_b - float(Phi[k] @ q)) - d.gap / 2.0
+        if not d.rigid and delta > 0.0:
+            out += _compliant.contact_potential(d.contact, lq[k], delta)
+    return out
+
+
+def _law_parameters(dampers: tuple[Damper, ...]) -> tuple[np.ndarray, np.ndarray]:
+    """Each compliant damper's law in the stepper's parameter layout, and its χ."""
+    lq = np.zeros((len(dampers), _stepper.N_PARAMS))
+    for k, d in enumerate(dampers):
+        lq[k, _stepper.P_k1], lq[k, _stepper.P_c1], lq[k, _stepper.P_khz] = d.k1, d.c1, d.k_hz
+    return lq, np.array([d.chi for d in dampers])
+
+
+def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, sc, srig, se, q0,
+                 v0, y0, u0, Pout, X_b, t_end, variational):  # fmt: skip
+    """The modal engine's closed-form flights and rigid events, alternating with the compliant
+    dampers' contact phases (:mod:`symimpact.forced._structure_contact`): (status, events, their
+    count, period maxima, ledger, final, G) as :func:`symimpact.forced._modal.run` returns
+    them."""
+    N, K = len(q0), len(y0)
+    lq, chi = _law_parameters(dampers)
+    scale = float(np.min(hd)) if K else 1.0
+    peak = float(np.max(np.abs(Phi))) if K else 1.0
+    fastest = max(float(np.max(np.sqrt(pm[:, _rigid.P_K] / pm[:, _rigid.P_M]))), pm[0, _rigid.P_W])
+    atol = np.concatenate([np.full(N, 1e-14 * scale / peak),
+                           np.full(N, 1e-14 * scale / peak * fastest),
+                           np.full(K, 1e-14 * scale), np.full(K, 1e-14 * scale * fastest)])  # fmt: skip
+    t = 0.0
+    q, v, y, u = q0, v0, y0, u0
+    logs, total, ledger, period_max = [], 0, np.zeros(4), None
+    while True:
+        status, events, n_ev, pmx, led, final, G = _interrupt.call(
+            _modal.run, pm, Phi, md, hd, ed, np.zeros(K), law, chat, Sphi, sg, sside, sk, sc,
+            srig, se, q, v, y, u, Pout, X_b, t, t_end, budgets.MAX_EVENTS - total, variational,
+        )  # fmt: skip
+        logs.append(events[:n_ev])
+        total += n_ev
+        ledger += led
+        period_max = pmx if period_max is None else np.maximum(period_max, pmx)
+        if status != _modal.CONTACT:
+            break
+        onset = events[n_ev - 1]
+        k, s = int(onset[_modal.E_DAMPER]), float(onset[_rigid.E_SIDE])
+        t = float(final[0])
+        q, v = final[1 : 1 + N].copy(), final[1 + N : 1 + 2 * N].copy()
+        y, u = (
+            final[1 + 2 * N : 1 + 2 * N + K].copy(),
+            final[1 + 2 * N + K : 1 + 2 * N + 2 * K].copy(),
+        )
+        st, t, state, rise, found, n_found, _ = _structure_contact.phase(
+            pm, Phi, md, hd, law, lq, chi, X_b, Pout, t, q, v, y, u, k, s, t_end, period_max, atol
+        )  # fmt: skip
+        if st != 0:
+            raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the contact of "
+                                      f"damper {dampers[k].name!r} is too stiff for the "
+                                      "integrator's steps (its time scale is below 1e-14 of "
+                                      "the period, or it takes 2e6 steps)")  # fmt: skip
+        ledger[:3] += rise
+        rows = np.zeros((n_found, _modal.N_MODAL_EVENT_COLS))
+        for j, (te, kd, side, kind, rate, xa, va, ua) in enumerate(found):
+            rows[j, [_rigid.E_T, _rigid.E_X, _rigid.E_XD, _rigid.E_YD, _rigid.E_SIDE]] = (
+                te,
+                xa,
+                va,
+                ua,
+                side,
+            )
+            rows[j, [_rigid.E_VREL, _rigid.E_KIND, _rigid.E_XD1, _rigid.E_YD1]] = (
+                abs(rate),
+                kind,
+                va,
+                ua,
+            )
+            rows[j, _modal.E_DAMPER] = kd
+        logs.append(rows)
+        total += n_found
+        q, v = state[:N], state[N : 2 * N]
+        y, u = state[2 * N : 2 * N + K], state[2 * N + K :]
+        if t >= t_end:
+            final = np.concatenate([[t], state, np.zeros(K + len(sg))])
+            status = _rigid.OK
+            break
+        if total + 2 > budgets.MAX_EVENTS:
+            status = _rigid.TOO_MANY_EVENTS
+            break
+    if len(logs) > 1:
+        G = np.full_like(G, np.nan)
+    events = np.concatenate(logs) if logs else np.zeros((0, _modal.N_MODAL_EVENT_COLS))
+    return status, events, len(events), period_max, ledger, final, G
 
 
 def _pressed(st: Stop, x: float) -> int:

@@ -1,0 +1,361 @@
+"""Compiled contact phases of a structure's compliant impact dampers (numba, cached).
+
+While damper k presses a wall s = ±1 of its clearance, δₖ = s·(yₖ − xₐ) − dₖ/2 > 0 with its
+point xₐ = x_b + φₖᵀq, the mass and the structure push each other with the contact law's force
+Fₖ(δₖ, δ̇ₖ) (Eq. 35's linear k₁δ + c₁δ̇, Eq. 9's Hertz k_hz·δ^1.5 + c₁δ̇, or Hunt–Crossley's
+k_hz·δ^1.5·(1 + χδ̇), Eq. F4: the one-mode engine's laws, :func:`symimpact.forced._compliant.
+_force`), which enters the modes through their shapes (Step 15, item 4, Eq. F7, with the impulse
+spread over the contact):
+
+    Mᵢ(q̈ᵢ + 2ζᵢωᵢq̇ᵢ + ωᵢ²qᵢ) = (Eq. F7's modal force)ᵢ + Σₖ φᵢ(aₖ)·sₖFₖ,   mₖÿₖ = −sₖFₖ.
+
+A contact phase — from one damper's onset until no damper presses a wall — is integrated over the
+whole state (q, q̇, y, ẏ) by the Dormand–Prince 5(4) pair of the one-mode contact
+(:mod:`symimpact.forced._compliant`, rtol 1e-13), with the work of the modal forces, the
+dissipation of the Cᵢ and of the contacts' damping carried along, so the energy ledger closes.
+Any damper's onset or exit inside a step is located by re-stepping from the step's start
+(Illinois regula falsi on the step's length), so that the law's kink at δ = 0 falls on a step's
+end.  Between phases the flight is the closed form of :mod:`symimpact.forced._modal`, which hands
+over at an onset.  Each output point's largest abs(x) in each forcing period is taken over the
+steps' cubic Hermite interpolant (its position and velocity at both ends).
+
+Private: :mod:`symimpact.forced.structure_response` runs the alternation.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..free._stepper import secant_point
+from ._compliant import _DP_A, _DP_B, _DP_C, _DP_E, RTOL, _force
+from ._rigid import P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
+
+#: Status beside OK (0): the step fell below 1e-14 of the forcing period (a contact too stiff
+#: for its time scale), or a phase took more than its budget of steps.
+STEP_UNDERFLOW, TOO_MANY_STEPS = 4, 3
+#: Steps one contact phase may take.
+MAX_PHASE_STEPS = 2_000_000
+#: The contact's event columns (as the modal engine's log): onset (3) and exit (4).
+KIND_ONSET, KIND_EXIT = 3, 4
+#: A damper's law code for rigid impacts (the others: :data:`symimpact.forced._compliant.CODES`)
+RIGID = -1
+
+
+@njit(cache=True)
+def _rhs(pm, Phi, md, hd, code, lq, chi, xb, t, w, out, N, K):
+    """(q̇, q̈, ẏ, ÿ, the ledger's rates) at time t (module text): the ledger's rates are the
+    power of the modal forces (with the masses' inertia −mₖẍ_b under base motion, the ledger
+    being the one seen from the supports), of the Cᵢ and of the contacts' damping."""
+    W, phi = pm[0, P_W], pm[0, P_PHI]
+    th = W * t + phi
+    c, s = math.cos(th), math.sin(th)
+    x_b, v_b, a_b = xb * c, -xb * W * s, -xb * W * W * c
+    power, d_c, d_k = 0.0, 0.0, 0.0
+    for i in range(N):
+        v = w[N + i]
+        Kf, Cf = pm[i, P_K], pm[i, P_C]
+        thi = pm[i, P_W] * t + pm[i, P_PHI]
+        P = pm[i, P_F0] + Kf * pm[i, P_XB]
+        Q = -Cf * pm[i, P_W] * pm[i, P_XB]
+        f = P * math.cos(thi) + Q * math.sin(thi)
+        out[i] = v
+        out[N + i] = (f - Cf * v - Kf * w[i]) / pm[i, P_M]
+        power += f * v
+        d_c += Cf * v * v
+    for k in range(K):
+        xa, va = x_b, v_b
+        for i in range(N):
+            xa += Phi[k, i] * w[i]
+            va += Phi[k, i] * w[N + i]
+        y, u = w[2 * N + k], w[2 * N + K + k]
+        side = 1.0 if y > xa else -1.0
+        delta = side * (y - xa) - hd[k]
+        out[2 * N + k] = u
+        acc = 0.0
+        if delta > 0.0 and code[k] != RIGID:
+            dd = side * (u - va)
+            F, _, _, damp = _force(code[k], lq[k], chi[k], delta, dd)
+            for i in range(N):
+                out[N + i] += Phi[k, i] * side * F / pm[i, P_M]
+            acc = -side * F / md[k]
+            d_k += damp * dd
+        out[2 * N + K + k] = acc
+        if xb != 0.0:
+            power -= md[k] * (u - v_b) * a_b
+    out[2 * N + 2 * K] = power
+    out[2 * N + 2 * K + 1] = d_c
+    out[2 * N + 2 * K + 2] = d_k
+
+
+@njit(cache=True)
+def _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h, n, tmp, out, kout, atol, N, K):
+    """One Dormand–Prince step of length h from w at t, kk[0] = f(t, w): the state after it in
+    ``out``, f there in ``kout``; returns the error norm of the motion (q, q̇, y, ẏ against
+    ``atol`` and :data:`RTOL`)."""
+    for st in range(1, 6):
+        for i in range(n):
+            acc = 0.0
+            for j in range(st):
+                acc += _DP_A[st, j] * kk[j, i]
+            tmp[i] = w[i] + h * acc
+        _rhs(pm, Phi, md, hd, code, lq, chi, xb, t + _DP_C[st] * h, tmp, kk[st], N, K)
+    for i in range(n):
+        acc = 0.0
+        for j in range(6):
+            acc += _DP_B[j] * kk[j, i]
+        out[i] = w[i] + h * acc
+    _rhs(pm, Phi, md, hd, code, lq, chi, xb, t + h, out, kout, N, K)
+    m = 2 * N + 2 * K
+    err = 0.0
+    for i in range(m):
+        acc = _DP_E[6] * kout[i]
+        for j in range(6):
+            acc += _DP_E[j] * kk[j, i]
+        sc = atol[i] + RTOL * max(abs(w[i]), abs(out[i]))
+        err += (h * acc / sc) ** 2
+    return math.sqrt(err / m)
+
+
+@njit(cache=True)
+def _delta(pm, Phi, hd, xb, t, w, k, side, N, K):
+    """δₖ on wall ``side`` of the state w at time t."""
+    xa = xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
+    for i in range(N):
+        xa += Phi[k, i] * w[i]
+    return side * (w[2 * N + k] - xa) - hd[k]
+
+
+@njit(cache=True)
+def _locate(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h_hi, g_hi, k, side, n, tmp, out,
+            kout, atol, N, K):  # fmt: skip
+    """The θ in (0, h_hi] where δₖ on wall ``side`` changes sign on the step from w at t (δₖ(0)
+    is of the other sign or 0), re-stepped with the shorter length (Illinois regula falsi);
+    ``out``, ``kout`` hold the state there.  While no point of δₖ's starting sign is known
+    (δₖ(0) = 0 at an onset just handed over) it bisects."""
+    g0 = _delta(pm, Phi, hd, xb, t, w, k, side, N, K)
+    lo, hi = 0.0, h_hi
+    flo, fhi = g0, g_hi
+    unknown = flo == 0.0
+    kept = 0
+    for _ in range(300):
+        theta = 0.5 * (lo + hi) if unknown else secant_point(lo, hi, flo, fhi)
+        _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, theta, n, tmp, out, kout, atol, N, K)
+        g = _delta(pm, Phi, hd, xb, t + theta, out, k, side, N, K)
+        if unknown:
+            if g != 0.0 and (g > 0.0) != (fhi > 0.0):
+                unknown = False
+                lo, flo = theta, g
+            else:
+                hi, fhi = theta, g
+            if hi <= 4e-16 * (t + hi):
+                break
+            continue
+        if g == 0.0:
+            return theta
+        if (g > 0.0) == (flo > 0.0):
+            lo, flo = theta, g
+            if kept == -1:
+                fhi *= 0.5
+            kept = -1
+        else:
+            hi, fhi = theta, g
+            if kept == 1:
+                flo *= 0.5
+            kept = 1
+        if hi - lo <= 4e-16 * (t + hi):
+            break
+    _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, hi, n, tmp, out, kout, atol, N, K)
+    return hi
+
+
+@njit(cache=True)
+def _note(period_max, n_periods, T_f, t0, h, Pout, pm, xb, w0, w1, N):
+    """Raise each output point's per-period maximum of abs(x) over the step [t0, t0 + h] by the
+    cubic Hermite interpolant of its x and ẋ at both ends (its extreme where ẋ's quadratic
+    vanishes)."""
+    W, phi = pm[0, P_W], pm[0, P_PHI]
+    for p in range(Pout.shape[0]):
+        x0, v0, x1, v1 = 0.0, 0.0, 0.0, 0.0
+        for i in range(N):
+            x0 += Pout[p, i] * w0[i]
+            v0 += Pout[p, i] * w0[N + i]
+            x1 += Pout[p, i] * w1[i]
+            v1 += Pout[p, i] * w1[N + i]
+        if xb != 0.0:
+            x0 += xb * math.cos(W * t0 + phi)
+            x1 += xb * math.cos(W * (t0 + h) + phi)
+            v0 -= xb * W * math.sin(W * t0 + phi)
+            v1 -= xb * W * math.sin(W * (t0 + h) + phi)
+        cands = np.array([0.0, 1.0, -1.0, -1.0])
+        # x(s) = h00 x0 + h10 h v0 + h01 x1 + h11 h v1, s in [0, 1]; x'(s) = a s² + b s + c
+        a = 6.0 * (x0 - x1) + 3.0 * h * (v0 + v1)
+        b = -6.0 * (x0 - x1) - 2.0 * h * (2.0 * v0 + v1)
+        c = h * v0
+        if a != 0.0:
+            disc = b * b - 4.0 * a * c
+            if disc >= 0.0:
+                r = math.sqrt(disc)
+                cands[2] = (-b + r) / (2.0 * a)
+                cands[3] = (-b - r) / (2.0 * a)
+        elif b != 0.0:
+            cands[2] = -c / b
+        for j in range(4):
+            sv = cands[j]
+            if sv < 0.0 or sv > 1.0:
+                continue
+            s2, s3 = sv * sv, sv * sv * sv
+            x = ((2 * s3 - 3 * s2 + 1) * x0 + (s3 - 2 * s2 + sv) * h * v0
+                 + (-2 * s3 + 3 * s2) * x1 + (s3 - s2) * h * v1)  # fmt: skip
+            kp = int(math.floor((t0 + sv * h) / T_f))  # noqa: RUF046 (numba)
+            if 0 <= kp < n_periods:
+                period_max[kp, p] = max(period_max[kp, p], abs(x))
+
+
+@njit(cache=True)
+def _ended(events, n_ev, pm, Phi, xb, t, w, k, sides, pressing, N, K):
+    """Damper k's contact begins or ends at t (``pressing[k]`` flips): logged as (t, damper,
+    wall, kind, δ̇, the point's x and ẋ, the mass's ẏ).  Returns (count, log)."""
+    pressing[k] = 1 - pressing[k]
+    xa = xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
+    va = -xb * pm[0, P_W] * math.sin(pm[0, P_W] * t + pm[0, P_PHI])
+    for i in range(N):
+        xa += Phi[k, i] * w[i]
+        va += Phi[k, i] * w[N + i]
+    if n_ev == events.shape[0]:
+        grown = np.zeros((2 * n_ev, 8))
+        grown[:n_ev] = events
+        events = grown
+    events[n_ev, 0] = t
+    events[n_ev, 1] = k
+    events[n_ev, 2] = sides[k]
+    events[n_ev, 3] = KIND_ONSET if pressing[k] else KIND_EXIT
+    events[n_ev, 4] = sides[k] * (w[2 * N + K + k] - va)
+    events[n_ev, 5] = xa
+    events[n_ev, 6] = va
+    events[n_ev, 7] = w[2 * N + K + k]
+    return n_ev + 1, events
+
+
+@njit(cache=True)
+def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
+          atol):  # fmt: skip
+    """Integrate from (q, q̇, y, ẏ) at t, where damper k0's contact on wall s0 has just begun,
+    until no damper presses a wall or t_end (module text).  Returns (status, t, state, ledger
+    rises (work, C's dissipation, the contacts' dissipation), events (t, damper, wall, kind,
+    δ̇, the point's x and ẋ, the mass's ẏ) of every onset and exit after k0's, their count,
+    steps taken)."""
+    N, K = q.shape[0], y.shape[0]
+    n = 2 * N + 2 * K + 3
+    T_f = 2.0 * math.pi / pm[0, P_W]
+    n_periods = period_max.shape[0]
+    w = np.zeros(n)
+    w[:N], w[N : 2 * N], w[2 * N : 2 * N + K], w[2 * N + K : 2 * N + 2 * K] = q, v, y, u
+    kk = np.empty((7, n))
+    tmp, out, kout = np.empty(n), np.empty(n), np.empty(n)
+    sides = np.zeros(K)
+    pressing = np.zeros(K, dtype=np.int64)
+    g1 = np.zeros(K)
+    for k in range(K):
+        xa = xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
+        for i in range(N):
+            xa += Phi[k, i] * q[i]
+        sides[k] = 1.0 if y[k] > xa else -1.0
+        g1[k] = sides[k] * (y[k] - xa) - hd[k]
+    sides[k0] = s0
+    for k in range(K):  # pressing: past its wall, or as far as k0 on the same side
+        if code[k] != RIGID and (g1[k] > 0.0 or (g1[k] >= g1[k0] and sides[k] == s0)):
+            pressing[k] = 1
+    pressing[k0] = 1
+    events = np.zeros((16 + K, 8))
+    n_ev = 0
+    for k in range(K):  # another damper that reaches its wall at the same instant begins too
+        if k != k0 and pressing[k]:
+            xa = xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
+            va = -xb * pm[0, P_W] * math.sin(pm[0, P_W] * t + pm[0, P_PHI])
+            for i in range(N):
+                xa += Phi[k, i] * q[i]
+                va += Phi[k, i] * v[i]
+            events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, k, sides[k]
+            events[n_ev, 3], events[n_ev, 4] = KIND_ONSET, sides[k] * (u[k] - va)
+            events[n_ev, 5], events[n_ev, 6], events[n_ev, 7] = xa, va, u[k]
+            n_ev += 1
+    _rhs(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk[0], N, K)
+    h = T_f * 1e-4
+    status = 0
+    steps = 0
+    while t < t_end:
+        steps += 1
+        if steps > MAX_PHASE_STEPS:
+            status = TOO_MANY_STEPS
+            break
+        # a damper already at its wall and leaving it (one that left with the last located
+        # exit, at the same instant) ends here, not a step later
+        which = -1
+        for k in range(K):
+            if pressing[k] and _delta(pm, Phi, hd, xb, t, w, k, sides[k], N, K) <= 0.0:
+                va = -xb * pm[0, P_W] * math.sin(pm[0, P_W] * t + pm[0, P_PHI])
+                for i in range(N):
+                    va += Phi[k, i] * w[N + i]
+                if sides[k] * (w[2 * N + K + k] - va) < 0.0:
+                    which = k
+                    break
+        if which >= 0:
+            n_ev, events = _ended(events, n_ev, pm, Phi, xb, t, w, which, sides, pressing, N, K)
+            if pressing.sum() == 0:
+                break
+            continue
+        h = min(h, t_end - t)
+        err = _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h, n, tmp, out, kout, atol, N,
+                    K)  # fmt: skip
+        if err > 1.0:
+            h *= max(0.2, 0.9 * err**-0.2)
+            if h < 1e-14 * T_f:
+                status = STEP_UNDERFLOW
+                break
+            continue
+        # each compliant damper's δ at the step's end, on its wall (pressing) or the nearer one
+        xa0 = xb * math.cos(pm[0, P_W] * (t + h) + pm[0, P_PHI])
+        crossed = False
+        for k in range(K):
+            g1[k] = 0.0
+            if code[k] == RIGID:
+                continue
+            xa = xa0
+            for i in range(N):
+                xa += Phi[k, i] * out[i]
+            side = sides[k] if pressing[k] else (1.0 if out[2 * N + k] > xa else -1.0)
+            g = side * (out[2 * N + k] - xa) - hd[k]
+            if (pressing[k] and g < 0.0) or (not pressing[k] and g > 0.0):
+                g1[k] = g
+                sides[k] = side
+                crossed = True
+        first, which = h, -1
+        if crossed:  # the earliest onset or exit in the step
+            for k in range(K):
+                if g1[k] == 0.0:
+                    continue
+                theta = _locate(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h, g1[k], k,
+                                sides[k], n, tmp, out, kout, atol, N, K)  # fmt: skip
+                if which < 0 or theta < first:
+                    first, which = theta, k
+            _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, first, n, tmp, out, kout, atol,
+                  N, K)  # fmt: skip
+        _note(period_max, n_periods, T_f, t, first, Pout, pm, xb, w, out, N)
+        t = t + first
+        w[:] = out
+        kk[0, :] = kout
+        if which >= 0:
+            n_ev, events = _ended(events, n_ev, pm, Phi, xb, t, w, which, sides, pressing, N, K)
+            if pressing.sum() == 0:
+                break
+            continue
+        if err < 1e-300:
+            h *= 5.0
+        else:
+            h *= min(5.0, max(0.2, 0.9 * err**-0.2))
+    state = w[: 2 * N + 2 * K].copy()
+    ledger = w[2 * N + 2 * K :].copy()
+    return status, t, state, ledger, events[:n_ev].copy(), n_ev, steps
