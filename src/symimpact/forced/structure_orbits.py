@@ -180,7 +180,7 @@ def _inside(structure: Structure, dampers: Any, s: np.ndarray, step: np.ndarray,
     K = len(dampers)
     if K == 0:
         return 1.0
-    phis = np.array([[m.shape[d.at] for m in structure.modes] for d in dampers]).reshape(K, N)
+    phis = structure.shapes([d.at for d in dampers]).reshape(K, N)
     halves = np.array([d.gap / 2 for d in dampers])
     x_b = float(base) * math.cos(float(phase))
 
@@ -231,7 +231,7 @@ def differenced_monodromy(structure: Structure, dampers: Any, force_at: Any, F0:
     w = float(omega)
     halves = [d.gap / 2 for d in dampers] + [st.gap for st in stops]
     length = min(halves)
-    phis = np.array([[m.shape[d.at] for m in structure.modes] for d in dampers]).reshape(K, N)
+    phis = structure.shapes([d.at for d in dampers]).reshape(K, N)
     peak = max((abs(m.shape[p]) for m in structure.modes for p in m.shape), default=1.0) or 1.0
     q_scale = max(float(np.max(np.abs(s[:N]))), length / peak)
     omegas = np.array([m.omega for m in structure.modes])
