@@ -15,6 +15,14 @@ point's velocity, and the second's is then found at the same instant (to the sea
 the time) with the velocity the first left.  Each impact loses ½μ(1 − e²)ż² at its own approach
 speed, so the pair loses what two impacts in a row lose, not what one impact of their summed
 mass would; the energy ledger closes either way.
+
+*Masses that settle together.*  An impact that would release another, stuck, mass from its wall
+releases it only if its return would take longer than chatter the engine resolves (Step 9's
+test on the speed the impulse gives it and its point's acceleration back): a shorter excursion
+is jumped over, as a short chatter is, and the mass stays on its wall.  Two masses that come to
+rest on their walls together then stick together, instead of releasing each other at every
+closure (:func:`symimpact.forced._modal._returns_at_once`).  A wall met by a mass leaving it at
+a speed below the positions' rounding ends that mass's chatter with a plastic closure.
 """
 
 from __future__ import annotations
