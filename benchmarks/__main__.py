@@ -1,6 +1,7 @@
 """Run every benchmark in turn: ``python -m benchmarks`` from the checkout (about 20 minutes on
 2 cores); ``python -m benchmarks --write benchmarks/RESULTS.md`` also writes what the run printed
-into that file, under a header naming the date and the machine.
+into that file, under a header naming the date and the machine; with ``--only N`` (repeatable)
+it replaces those sections of the file, each stamped with its own run, and keeps the others.
 
 Each benchmark prints its figures (medians of at least five repeats with their spread), the
 baseline measured in the same run and the ratio; none asserts a time.  RESULTS.md is only ever
@@ -88,16 +89,51 @@ def main(argv: list[str] | None = None) -> int:
             run()
             print(f"({time.perf_counter() - t0:.0f} s)")
     if ns.write:
+        text = captured.getvalue().strip()
+        if ns.only:
+            text = _merged(ns.write, text, started)
         with open(ns.write, "w") as f:
             f.write(
-                "# Benchmark figures of one run\n\n"
-                f"Written by `python -m benchmarks --write {ns.write}` from the output of the "
-                f"run started {started:%Y-%m-%d %H:%M} UTC; not edited by hand. Each figure is "
-                "the median of at least five repeats with the spread (fastest–slowest), unless "
-                "the line says otherwise; every baseline was measured in the same run.\n\n"
-                "```text\n" + captured.getvalue().strip() + "\n```\n"
+                "# Benchmark figures\n\n"
+                f"Written by `python -m benchmarks --write {ns.write}` (with `--only N`: the "
+                "sections that run replaced, each under its own run's header) from the runs' "
+                "output; not edited by hand. Each figure is the median of at least five repeats "
+                "with the spread (fastest–slowest), unless the line says otherwise; every "
+                "baseline was measured in the same run as what it is compared with.\n\n"
+                "```text\n" + text + "\n```\n"
             )
     return 0
+
+
+def _sections(text: str) -> tuple[list[str], dict[int, str]]:
+    """The machine lines before the first section and each section's text, by number."""
+    head, sections, number = [], {}, None
+    for line in text.splitlines():
+        if line.startswith("=== "):
+            number = int(line[4:].split(".")[0])
+            sections[number] = line
+        elif number is None:
+            head.append(line)
+        else:
+            sections[number] += "\n" + line
+    return head, sections
+
+
+def _merged(path: str, text: str, started: datetime.datetime) -> str:
+    """The figures already in ``path`` with the sections of this run (``text``) put in their
+    place, each section led by the machine and start time of the run that printed it."""
+    try:
+        with open(path) as f:
+            old = f.read().split("```text\n", 1)[1].rsplit("\n```", 1)[0]
+    except (OSError, IndexError):
+        old = ""
+    head_old, kept = _sections(old)
+    head_new, fresh = _sections(text)
+    stamp = f"(run started {started:%Y-%m-%d %H:%M} UTC; {' '.join(head_new).strip()})"
+    for number, body in fresh.items():
+        title, _, rest = body.partition("\n")
+        kept[number] = f"{title}\n{stamp}\n{rest}".rstrip()
+    return "\n".join(head_old).strip() + "\n\n" + "\n\n".join(kept[k] for k in sorted(kept))
 
 
 if __name__ == "__main__":
