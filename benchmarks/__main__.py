@@ -14,6 +14,7 @@ import argparse
 import contextlib
 import datetime
 import io
+import re
 import sys
 import time
 
@@ -124,10 +125,14 @@ def _merged(path: str, text: str, started: datetime.datetime) -> str:
     place, each section led by the machine and start time of the run that printed it."""
     try:
         with open(path) as f:
-            old = f.read().split("```text\n", 1)[1].rsplit("\n```", 1)[0]
+            whole = f.read()
+        old = whole.split("```text\n", 1)[1].rsplit("\n```", 1)[0]
     except (OSError, IndexError):
-        old = ""
+        whole, old = "", ""
     head_old, kept = _sections(old)
+    when = re.search(r"run started (\d{4}-\d\d-\d\d \d\d:\d\d) UTC;", whole)
+    if head_old and when and not head_old[0].startswith("("):
+        head_old[0] = f"(the sections without a stamp: run started {when[1]} UTC) {head_old[0]}"
     head_new, fresh = _sections(text)
     stamp = f"(run started {started:%Y-%m-%d %H:%M} UTC; {' '.join(head_new).strip()})"
     for number, body in fresh.items():
