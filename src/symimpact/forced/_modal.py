@@ -93,8 +93,7 @@ from ._rigid import (
     _steady_cos,
     _steady_sin,
     _transition,
-    _vf,
-    _xf,
+    _xvf,
     restitution,
 )
 
@@ -440,8 +439,7 @@ def _free_states(pm, t0, q0, v0, tau, q, v):
         W = pm[i, P_W]
         th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
         M, K, C, F0, Xb = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB]
-        q[i] = _xf(tau, M, K, C, F0, Xb, W, th, q0[i], v0[i])
-        v[i] = _vf(tau, M, K, C, F0, Xb, W, th, q0[i], v0[i])
+        q[i], v[i] = _xvf(tau, M, K, C, F0, Xb, W, th, q0[i], v0[i])
 
 
 @njit(cache=True, inline="always")
