@@ -311,12 +311,14 @@ def _tangent(J: np.ndarray, previous: np.ndarray | None) -> np.ndarray:
 GRAZE = "graze"
 
 
-def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float | None = None):
-    """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from y_pred; None when it fails, GRAZE when it
+def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float | None = None,
+             start: np.ndarray | None = None):  # fmt: skip
+    """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from y_pred (or from ``start``, a point of the
+    same hyperplane nearer the branch); None when it fails, GRAZE when it
     lands on an orbit that impacts other than ``count`` times per period, or fails after an
     iterate did (the map's impacts changed on the way: an iterate that wanders across a grazing
     and comes back to an orbit with ``count`` impacts is the orbit)."""
-    y = y_pred.copy()
+    y = (y_pred if start is None else start).copy()
     wandered = False
     for _ in range(MAX_NEWTON):
         try:
@@ -959,14 +961,18 @@ def _grazing(problem, y, t, ds, before: BranchPoint):
     simulation), None where no step with the old count was corrected."""
     lo, hi = 0.0, ds
     last, at_lo = before, None
+    y_lo = y  # the corrected orbit at lo
     while hi - lo > 1e-6 * ds:
         mid = 0.5 * (lo + hi)
-        got = _correct(problem, y + mid * t, t, before.impact_events_per_period)
+        # Newton from the orbit at lo moved along t to mid's hyperplane (tᵀ(y_lo − y − lo·t)
+        # = 0): a step of the bracket away from the branch, not the predictor's whole chord
+        got = _correct(problem, y + mid * t, t, before.impact_events_per_period,
+                       start=y_lo + (mid - lo) * t)  # fmt: skip
         if got is None or got is GRAZE:
             hi = mid
             continue
         last, at_lo = _point(problem, got[0], got[2], got[3]), got
-        lo = mid
+        lo, y_lo = mid, got[0]
     found = Bifurcation("grazing", last.omega, last.amplitude, last.value, last.state,
                         last.phase, impacts_before=before.impact_events_per_period)  # fmt: skip
     return found, lo, hi, at_lo
