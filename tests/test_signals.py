@@ -165,3 +165,19 @@ def test_a_signal_at_any_moment_ends_the_command_in_one_line(name):
         assert lines == [f"symimpact {command}: {words}"], (name, sig.name, moment, err)
         assert took < BOUND, f"{name}: {sig.name} at {moment:.2f} s ended after {took:.2f} s"
     print(name, seen)
+
+
+def test_a_signal_during_the_import_of_tqdm_still_ends_in_one_line():
+    """The ending handler run while tqdm is half imported (its module in sys.modules, its class
+    not yet defined: a SIGINT at 1.39 s into ``design`` on CI) exits 130 with its one line; it
+    used to raise AttributeError there, reported as an internal error (exit 70)."""
+    code = (
+        "import sys, types\n"
+        "sys.modules['tqdm'] = types.ModuleType('tqdm')\n"
+        "from symimpact.cli import _ending_on_signal\n"
+        "_ending_on_signal('design')(2, None)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=120)  # fmt: skip
+    assert done.returncode == 130, done.stderr
+    assert done.stderr.strip() == "symimpact design: interrupted"

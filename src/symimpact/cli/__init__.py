@@ -137,8 +137,10 @@ def _ending_on_signal(command: str):
 
         for child in multiprocessing.active_children():
             child.terminate()
-        tqdm = sys.modules.get("tqdm")
-        if tqdm is not None and getattr(tqdm.tqdm, "_instances", None):
+        # a signal that lands while tqdm is being imported finds it partially initialized,
+        # without its class yet (the handler then raised AttributeError: exit 70, not 130)
+        bar = getattr(sys.modules.get("tqdm"), "tqdm", None)
+        if bar is not None and getattr(bar, "_instances", None):
             sys.stderr.write("\n")  # a progress bar is open mid-line: the message gets its own
         words = "interrupted" if signum == signal.SIGINT else f"ended by signal {signum}"
         print(f"symimpact {command}: {words}", file=sys.stderr, flush=True)
