@@ -136,8 +136,8 @@ def call(fn: Any, *args: Any) -> Any:
         if defer:
             _signal.signal(_SIGINT, previous)
         _signal.set_wakeup_fd(old_fd)
-        _PIPE.drain()  # (signal.signal above ran a pending SIGINT's handler, _record)
-    if _recorded or watch[2] == int(signal.SIGINT):
+        _PIPE.drain()  # (_signal.signal above ran a pending SIGINT's handler, _record)
+    if _recorded or watch[2] == _SIGINT:
         _recorded.clear()
         if callable(previous):  # Python's own raises KeyboardInterrupt
             previous(signal.SIGINT, None)
