@@ -137,8 +137,12 @@ def _starts(system: ImpactSystem, forcing: Forcing) -> list[tuple[float, float, 
             (0.0, w * A, 0.0, -w * A)][:STARTS]  # fmt: skip
 
 
-def attractor(system: ImpactSystem, forcing: Forcing, e: Any, start) -> Attractor:
-    """The steady motion a run from ``start`` (x, ẋ, z, ẏ) settles on (module text)."""
+def attractor(
+    system: ImpactSystem, forcing: Forcing, e: Any, start, *, exponent: bool = True
+) -> Attractor:
+    """The steady motion a run from ``start`` (x, ẋ, z, ẏ) settles on (module text); without
+    ``exponent`` a motion that does not repeat is "not periodic", its Lyapunov exponent not
+    computed (for a caller that needs only the periodic ones)."""
     x, v, z, u = start
     n = settling_periods(system, forcing, KEPT, WARMUP + KEPT)
     res = simulate_forced(system, forcing, **simulation_arguments(e), periods=n, discard=n - KEPT,
@@ -158,7 +162,7 @@ def attractor(system: ImpactSystem, forcing: Forcing, e: Any, start) -> Attracto
                              st.impacts_per_period, end)  # fmt: skip
         lam = spread = None
         kind = "not settled" if st.settling else "not periodic"
-        if is_rigid(e):
+        if is_rigid(e) and exponent:
             try:
                 lam, spread = lyapunov(system, forcing, e, end)
             except SymimpactError:  # a zero-speed impact on the way: no monodromy there

@@ -11,7 +11,12 @@ several kinds of starting point, so that coexisting motions are found:
   of one and two forcing periods;
 - the periodic attractors of a multi-start brute force at frequencies fixed by the band's ends
   (:mod:`symimpact.forced.coverage`), which also measures the share of them the branches trace;
-- branch switching at every located branch point and period doubling.
+- branch switching at every located branch point and period doubling;
+- jumps: where a branch ends on a stable orbit inside the band, or loses its stability at a
+  fold, branch point, period doubling or Neimark–Sacker point, a run from there just beyond it
+  lands on the motion a slow sweep would jump to, whose branch is traced in turn.  Near the
+  resonance of a heavily impacting damper the curve breaks into many short branches between
+  grazings (6 to 70 impacts a period on the README system), reached this way.
 
 A start that lies on a branch already traced is skipped.  Every start depends on the band's ends
 only, not on its step, so the branches and the located peak (:mod:`symimpact.forced.peak`) do
@@ -45,7 +50,7 @@ from .continuation import (
     orbits_at,
     trace_branch,
 )
-from .coverage import FREQUENCIES, Coverage, attractors
+from .coverage import FREQUENCIES, Coverage, attractor, attractors
 from .forcing import Forcing
 from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
@@ -66,6 +71,10 @@ SWEEP_ACCURACY = 1e-4
 #: Branch switching: at most this many switches for one curve, onto orbits of at most this many
 #: forcing periods (period 1 → 2 → 4).
 MAX_SWITCHES, MAX_SWITCH_PERIODS = 24, 4
+#: Jumps from branch ends (:func:`_jump_from`): at most this many runs for one curve, each at
+#: JUMP of the band beyond a stable end (on the README's curve 0.02 rad/s: the resonance's
+#: short branches lie 0.01–0.02 rad/s apart and are 0.01–0.13 rad/s long).
+MAX_JUMPS, JUMP = 64, 1e-3
 
 
 @dataclass
@@ -210,6 +219,11 @@ def _traced(branches, system, forcing, e, omega: float, amplitude: float, k: int
     agrees to 1e-7 (:func:`symimpact.forced.continuation.orbits_at`: Newton from the branch's
     interpolated state).  The 2 % of :func:`_on_branch` alone would take the asymmetric orbits
     beside a symmetric branch for it (1.2 % apart at 25.39 rad/s on the issue's system)."""
+    if any(len(b.points) == 1 and b.period_multiple == k
+           and abs(b.points[0].omega - omega) <= 1e-9 * omega
+           and abs(b.points[0].amplitude - amplitude) <= 1e-7 * amplitude
+           for b in branches):  # fmt: skip
+        return True  # a branch of one orbit (impacts appear on both sides of it)
     near = [b for b in branches if _on_branch([b], omega, amplitude, k)]
     f = _forcing(forcing, omega)
     return any(abs(o.amplitude - amplitude) <= 1e-7 * amplitude
@@ -265,21 +279,24 @@ def frequency_response(
     failures: dict[str, list[float]] = {}  # reason → the frequencies where it happened
     step = 0.05
 
-    def follow(origin: str, k: int, state, fs: Forcing) -> None:
-        """Shoot from ``state`` and, unless the orbit is on a traced branch, continue it."""
+    def follow(origin: str, k: int, state, fs: Forcing) -> Branch | None:
+        """Shoot from ``state`` and, unless the orbit is on a traced branch, continue it: the
+        new branch, or None."""
         try:
             orbit = shoot(system, fs, e, state, periods=k)
         except SymimpactError as exc:
             failures.setdefault(f"{origin}: {exc}", []).append(fs.omega)
-            return
+            return None
         if k > 1 and _repeats_every_period(system, fs, e, orbit):
-            return  # a period-1 orbit found as period 2
+            return None  # a period-1 orbit found as period 2
         if _traced(out.branches, system, fs, e, fs.omega, orbit.amplitude, k):
-            return
+            return None
         try:
             out.branches.append(_trace(system, fs, e, orbit.state, band, k, step))
         except SymimpactError as exc:
             failures.setdefault(f"{origin}: {exc}", []).append(fs.omega)
+            return None
+        return out.branches[-1]
 
     for omega in np.linspace(band[0], band[1], starts + 2)[1:-1]:
         f = _forcing(forcing, float(omega))
@@ -319,7 +336,7 @@ def frequency_response(
                 follow("sweep", r.period_multiple, r.state, _forcing(forcing, r.omega))
     else:
         out.sweep_up = out.sweep_down = np.zeros((0, 2))
-    _switch_branches(out, system, forcing, e, band, step, failures)
+    _grow(out, system, forcing, e, band, step, failures, follow)
     out.coverage = Coverage(found, [
         _traced(out.branches, system, forcing, e, a.omega, a.amplitude, a.period_multiple)
         for a in found if a.kind == "periodic"
@@ -343,52 +360,146 @@ def frequency_response(
     return out
 
 
-def _switch_branches(out, system, forcing, e, band, step, failures) -> None:
-    """Branch switching: from every branch point and period doubling located on a branch (new
-    branches included, so a period-2 branch's own doubling gives period 4), the branches that
-    leave it (:func:`symimpact.forced.continuation.branch_starts`) are traced unless their start
-    lies on a traced branch; the mirror image of an asymmetric orbit is recognised (the same
-    amplitude at the same Ω, to 1e-8) and marks its branch ``mirrored``.  At most MAX_SWITCHES
-    switches, and periods up to MAX_SWITCH_PERIODS."""
-    done, i = 0, 0
+def _grow(out, system, forcing, e, band, step, failures, follow) -> None:
+    """Every branch in turn, the new ones included (so that a branch found by a switch or a jump
+    is itself switched from and jumped from): branch switching at its located points
+    (:func:`_switch_at`) and jumps from its stable ends (:func:`_jump_from`)."""
+    budget = {"switches": 0, "jumps": 0}
+    sources: list[tuple[float, float, float]] = []
+    i = 0
     while i < len(out.branches):
-        b = out.branches[i]
-        for f in list(b.bifurcations):
-            if f.kind not in SWITCHES or f.state is None:
+        _switch_at(out, i, system, forcing, e, band, step, failures, budget)
+        _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sources)
+        i += 1
+
+
+def _switch_at(out, i, system, forcing, e, band, step, failures, budget) -> None:
+    """Branch switching on branch ``i``: from every branch point and period doubling located on
+    it, the branches that leave it (:func:`symimpact.forced.continuation.branch_starts`) are
+    traced unless their start lies on a traced branch; the mirror image of an asymmetric orbit
+    is recognised (the same amplitude at the same Ω, to 1e-8) and marks its branch
+    ``mirrored``.  At most MAX_SWITCHES switches for the curve, and periods up to
+    MAX_SWITCH_PERIODS."""
+    b = out.branches[i]
+    for f in list(b.bifurcations):
+        if f.kind not in SWITCHES or f.state is None:
+            continue
+        if b.period_multiple * SWITCHES[f.kind][1] > MAX_SWITCH_PERIODS:
+            continue
+        if budget["switches"] == MAX_SWITCHES:
+            failures.setdefault(f"branch switching: stopped after {MAX_SWITCHES} switches",
+                                []).append(f.omega)  # fmt: skip
+            return
+        budget["switches"] += 1
+        fs = forcing.at(f.omega, f.phase)
+        try:
+            starts = branch_starts(system, fs, e, f, band, periods=b.period_multiple, step=step)
+        except SymimpactError as exc:
+            failures.setdefault(f"branch switching: {exc}", []).append(f.omega)
+            continue
+        traced: list[Branch] = []
+        for start in starts:
+            amp = orbit_amplitude(start)
+            w = start.forcing.omega
+            mirror = [t for t in traced if any(abs(o.amplitude - amp) <= 1e-8 * amp
+                      for o in orbits_at(t, start.system, start.forcing, start.e, w))]  # fmt: skip
+            if mirror:  # the mirror image of an orbit just traced
                 continue
-            if b.period_multiple * SWITCHES[f.kind][1] > MAX_SWITCH_PERIODS:
+            if _traced(out.branches, system, forcing, e, w, amp, start.periods):
                 continue
-            if done == MAX_SWITCHES:
-                failures.setdefault(f"branch switching: stopped after {MAX_SWITCHES} switches",
-                                    []).append(f.omega)  # fmt: skip
-                return
-            done += 1
-            fs = forcing.at(f.omega, f.phase)
             try:
-                starts = branch_starts(system, fs, e, f, band, periods=b.period_multiple, step=step)
+                new = leave(start, f, band, step=step)
             except SymimpactError as exc:
                 failures.setdefault(f"branch switching: {exc}", []).append(f.omega)
                 continue
-            traced: list[Branch] = []
-            for start in starts:
-                amp = orbit_amplitude(start)
-                w = start.forcing.omega
-                mirror = [t for t in traced if any(abs(o.amplitude - amp) <= 1e-8 * amp
-                          for o in orbits_at(t, start.system, start.forcing, start.e, w))]  # fmt: skip
-                if mirror:  # the mirror image of an orbit just traced
-                    continue
-                if _traced(out.branches, system, forcing, e, w, amp, start.periods):
-                    continue
-                try:
-                    new = leave(start, f, band, step=step)
-                except SymimpactError as exc:
-                    failures.setdefault(f"branch switching: {exc}", []).append(f.omega)
-                    continue
-                new.origin = f"{f.kind} of branch {i} at Ω = {f.omega:.6g} rad/s"
-                new.origin_omega = f.omega
-                traced.append(new)
-                out.branches.append(new)
-        i += 1
+            new.origin = f"{f.kind} of branch {i} at Ω = {f.omega:.6g} rad/s"
+            new.origin_omega = f.omega
+            traced.append(new)
+            out.branches.append(new)
+
+
+#: The located points where a branch loses its stability, from which a slow sweep jumps.
+LOSSES = ("fold", "branch-point", "period-doubling", "neimark-sacker")
+
+
+def _departures(branch: Branch) -> list[tuple[float, Any, float, float, int]]:
+    """Where a slow sweep along ``branch``'s stable orbits would leave it: (Ω [rad/s], state,
+    phase [rad], amplitude [m], direction in Ω) at its first and last points where they are
+    stable (outward; both ways for a branch of one point), at each grazing it ends at beside a
+    stable point (outward), and at each located fold, branch point, period doubling and
+    Neimark–Sacker point between a stable and an unstable point (beyond a fold; towards the
+    unstable side of the others)."""
+    pts = branch.points
+    out = []
+    if len(pts) == 1:
+        ends = [(pts[0], 1), (pts[0], -1)]
+    else:
+        ends = [(pts[0], int(np.sign(pts[0].omega - pts[1].omega))),
+                (pts[-1], int(np.sign(pts[-1].omega - pts[-2].omega)))]  # fmt: skip
+    for p, d in ends:
+        if p.stable and d:
+            out.append((p.omega, p.state, p.phase, p.amplitude, d))
+    for g in branch.bifurcations:
+        if g.kind != "grazing" or not math.isnan(g.impacts_after) or g.state is None:
+            continue
+        near = min(pts, key=lambda q: abs(q.omega - g.omega))
+        d = int(np.sign(g.omega - near.omega))
+        if near.stable and d:
+            out.append((g.omega, g.state, g.phase, g.amplitude, d))
+    for p, q in itertools.pairwise(pts):
+        if p.stable == q.stable:
+            continue
+        s, u = (p, q) if p.stable else (q, p)
+        lo, hi = sorted((p.amplitude, q.amplitude))
+        for f in branch.bifurcations:
+            if f.kind not in LOSSES or f.state is None:
+                continue
+            if not lo * (1 - 1e-9) <= f.amplitude <= hi * (1 + 1e-9):
+                continue
+            d = int(np.sign((f.omega if f.kind == "fold" else u.omega) - s.omega))
+            if d:
+                out.append((f.omega, f.state, f.phase, f.amplitude, d))
+            break
+    return out
+
+
+def _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sources) -> None:
+    """Where ``branch`` ends inside the band on a stable orbit — at a grazing it does not cross,
+    or where the corrector fails among impacts that appear and vanish (the resonance of a
+    heavily impacting damper breaks into many short branches) — a slow sweep would jump to
+    another motion: a run from the end's orbit at Ω JUMP of the band beyond it, classified by
+    :func:`symimpact.forced.coverage.attractor`, gives that motion, and a periodic one not on a
+    traced branch starts a branch (which is jumped from in turn).  An end met again (the same
+    Ω and amplitude to 1e-6, the same direction: a branch of one orbit found twice) is not
+    jumped from again; at most MAX_JUMPS runs for the curve."""
+    branch = out.branches[i]
+    if branch.parameter != "omega":
+        return
+    width = band[1] - band[0]
+    for omega, state, phase, amp, d in _departures(branch):
+        w = omega + d * JUMP * width
+        if not band[0] < w < band[1]:
+            continue
+        if any(abs(omega - o) <= 0.5 * JUMP * width and abs(amp - a) <= 1e-3 * a and d == dd
+               for o, a, dd in sources):  # fmt: skip
+            continue
+        if budget["jumps"] == MAX_JUMPS:
+            failures.setdefault(f"jumps from branch ends: stopped after {MAX_JUMPS} runs",
+                                []).append(omega)  # fmt: skip
+            return
+        budget["jumps"] += 1
+        sources.append((omega, amp, d))
+        fs = forcing.at(w, phase)
+        try:
+            a = attractor(system, fs, e, state, exponent=False)
+        except SymimpactError as exc:
+            failures.setdefault(f"jump from a branch end: {exc}", []).append(omega)
+            continue
+        if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
+            new = follow("jump", a.period_multiple, a.state, fs)
+            if new is not None:
+                new.origin = f"jump from branch {i} at Ω = {omega:.6g} rad/s"
+                new.origin_omega = omega
 
 
 def _drop_repeated_bifurcations(branches: list[Branch], rtol: float = 1e-6) -> None:
