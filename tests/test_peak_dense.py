@@ -40,3 +40,10 @@ def test_no_stable_motion_of_a_dense_multistart_exceeds_the_located_peak():
     res = simulate_forced(SYSTEM, FORCING.at(p.omega, p.phase), e=E, periods=600, discard=580,
                           x0=x, xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
     assert res.steady.amplitude == pytest.approx(p.amplitude, rel=1e-6)
+
+
+def test_a_negative_number_of_jumps_is_refused_in_one_line():
+    from symimpact.errors import ParameterError
+
+    with pytest.raises(ParameterError, match="jumps"):
+        frequency_response(SYSTEM, FORCING, E, BAND, jumps=-1)

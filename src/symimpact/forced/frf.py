@@ -73,7 +73,9 @@ SWEEP_ACCURACY = 1e-4
 MAX_SWITCHES, MAX_SWITCH_PERIODS = 24, 4
 #: Jumps from branch ends (:func:`_jump_from`): at most this many runs for one curve, each at
 #: JUMP of the band beyond a stable end (on the README's curve 0.02 rad/s: the resonance's
-#: short branches lie 0.01–0.02 rad/s apart and are 0.01–0.13 rad/s long).
+#: short branches lie 0.01–0.02 rad/s apart and are 0.01–0.13 rad/s long).  With a compliant
+#: contact none by default (``jumps``): every run and branch integrates each contact, and on
+#: benchmark 6's band the jumps took its curve from 17.5 s to 114 s.
 MAX_JUMPS, JUMP = 64, 1e-3
 
 
@@ -256,18 +258,24 @@ def frequency_response(
     starts: int = 6,
     sweeps: bool = True,
     multistart: int = FREQUENCIES,
+    jumps: int | None = None,
 ) -> FrequencyResponse:
     """The frequency-response curve over the band ``omegas`` [rad/s] (its first and last values
     bound the branches; the sweeps and the baseline use every value): branches continued from
     ``starts`` frequencies spread over the band (closed-form orbits and brute-force steady
     states of one and two periods), from the periodic attractors of a multi-start at
-    ``multistart`` frequencies (0: none) and by branch switching; the located peak; the linear
+    ``multistart`` frequencies (0: none), by branch switching and by at most ``jumps`` runs
+    from the branches' stable ends and losses of stability (None: MAX_JUMPS with rigid
+    impacts, none with a compliant contact); the located peak; the linear
     response without the damper (Step 8, Eq. F1), the motion without impacts, and, with
     ``sweeps``, the up and down brute-force sweeps."""
     system, forcing, e = checked(system, forcing, e)
     starts = checks.whole_number("starts", starts, 0, 1000)
     sweeps = checks.flag("sweeps", sweeps)
     multistart = checks.whole_number("multistart", multistart, 0, 1000)
+    if jumps is None:
+        jumps = MAX_JUMPS if is_rigid(e) else 0
+    jumps = checks.whole_number("jumps", jumps, 0, 10_000)
     w = checks.numbers("omegas", omegas)
     if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(w <= 0):
         raise ParameterError("omega", "the band needs at least two positive frequencies")
@@ -336,7 +344,7 @@ def frequency_response(
                 follow("sweep", r.period_multiple, r.state, _forcing(forcing, r.omega))
     else:
         out.sweep_up = out.sweep_down = np.zeros((0, 2))
-    _grow(out, system, forcing, e, band, step, failures, follow)
+    _grow(out, system, forcing, e, band, step, failures, follow, jumps)
     out.coverage = Coverage(found, [
         _traced(out.branches, system, forcing, e, a.omega, a.amplitude, a.period_multiple)
         for a in found if a.kind == "periodic"
@@ -360,11 +368,11 @@ def frequency_response(
     return out
 
 
-def _grow(out, system, forcing, e, band, step, failures, follow) -> None:
+def _grow(out, system, forcing, e, band, step, failures, follow, jumps: int) -> None:
     """Every branch in turn, the new ones included (so that a branch found by a switch or a jump
     is itself switched from and jumped from): branch switching at its located points
     (:func:`_switch_at`) and jumps from its stable ends (:func:`_jump_from`)."""
-    budget = {"switches": 0, "jumps": 0}
+    budget = {"switches": 0, "jumps": 0, "max_jumps": jumps}
     sources: list[tuple[float, float, float]] = []
     i = 0
     while i < len(out.branches):
@@ -471,7 +479,7 @@ def _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sourc
     :func:`symimpact.forced.coverage.attractor`, gives that motion, and a periodic one not on a
     traced branch starts a branch (which is jumped from in turn).  An end met again (the same
     Ω and amplitude to 1e-6, the same direction: a branch of one orbit found twice) is not
-    jumped from again; at most MAX_JUMPS runs for the curve."""
+    jumped from again; at most ``budget["max_jumps"]`` runs for the curve."""
     branch = out.branches[i]
     if branch.parameter != "omega":
         return
@@ -483,9 +491,10 @@ def _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sourc
         if any(abs(omega - o) <= 0.5 * JUMP * width and abs(amp - a) <= 1e-3 * a and d == dd
                for o, a, dd in sources):  # fmt: skip
             continue
-        if budget["jumps"] == MAX_JUMPS:
-            failures.setdefault(f"jumps from branch ends: stopped after {MAX_JUMPS} runs",
-                                []).append(omega)  # fmt: skip
+        if budget["jumps"] == budget["max_jumps"]:
+            if budget["max_jumps"]:
+                failures.setdefault(f"jumps from branch ends: stopped after {budget['jumps']} "
+                                    "runs", []).append(omega)  # fmt: skip
             return
         budget["jumps"] += 1
         sources.append((omega, amp, d))
