@@ -176,8 +176,9 @@ def _curves(s: Section, folder: Path, curves: list) -> dict[float, float]:
             "where it grazes a wall: dotted lines) and brute-force sweeps up (▲) and down (▼), "
             "each point run from the previous end state until its transient is 1e-6. The "
             "branches are continued through chatter and sticking too (an accumulation of "
-            "impacts, then the masses moving together), and a periodic swept motion no branch "
-            "holds starts one; a motion shown by sweep markers alone is one no branch holds "
+            "impacts, then the masses moving together); a run from each stable end of a branch "
+            "and each loss of stability, just beyond it, starts a branch where it lands on a "
+            "periodic motion no branch holds, as a periodic swept motion does; a motion shown by sweep markers alone is one no branch holds "
             "(the table below counts the multi-start's attractors the branches hold and those "
             "they do not).",
         )
