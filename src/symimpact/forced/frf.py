@@ -373,7 +373,7 @@ def _grow(out, system, forcing, e, band, step, failures, follow, jumps: int) -> 
     is itself switched from and jumped from): branch switching at its located points
     (:func:`_switch_at`) and jumps from its stable ends (:func:`_jump_from`)."""
     budget = {"switches": 0, "jumps": 0, "max_jumps": jumps}
-    sources: list[tuple[float, float, float]] = []
+    sources: list[tuple[float, float, int]] = []  # (Ω, amplitude, direction) jumped from
     i = 0
     while i < len(out.branches):
         _switch_at(out, i, system, forcing, e, band, step, failures, budget)
@@ -472,14 +472,16 @@ def _departures(branch: Branch) -> list[tuple[float, Any, float, float, int]]:
 
 
 def _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sources) -> None:
-    """Where ``branch`` ends inside the band on a stable orbit — at a grazing it does not cross,
-    or where the corrector fails among impacts that appear and vanish (the resonance of a
-    heavily impacting damper breaks into many short branches) — a slow sweep would jump to
-    another motion: a run from the end's orbit at Ω JUMP of the band beyond it, classified by
+    """Where branch ``i`` ends inside the band on a stable orbit — at a grazing it does not
+    cross, or where the corrector fails among impacts that appear and vanish (the resonance of a
+    heavily impacting damper breaks into many short branches) — or loses its stability
+    (:func:`_departures`), a slow sweep would jump to another motion: a run from the orbit
+    there at Ω JUMP of the band beyond it, classified by
     :func:`symimpact.forced.coverage.attractor`, gives that motion, and a periodic one not on a
-    traced branch starts a branch (which is jumped from in turn).  An end met again (the same
-    Ω and amplitude to 1e-6, the same direction: a branch of one orbit found twice) is not
-    jumped from again; at most ``budget["max_jumps"]`` runs for the curve."""
+    traced branch starts a branch (which is jumped from in turn).  A place met again (within
+    half a jump in Ω and 1e-3 in amplitude, the same direction: the branches of one orbit that
+    the cascades of grazings near 30.9 rad/s on the README system return to) is not jumped
+    from again; at most ``budget["max_jumps"]`` runs for the curve."""
     branch = out.branches[i]
     if branch.parameter != "omega":
         return
