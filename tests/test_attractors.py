@@ -100,12 +100,12 @@ def test_an_attractor_is_reported_with_its_least_period():
     attractor found is that orbit with period 1, its amplitude the closed form's (Eq. F3,
     independent of the simulation; to 1e-9, measured 1e-15)."""
     from symimpact.forced import periodic_orbits
-    from symimpact.forced.coverage import _starts, least_period
+    from symimpact.forced.coverage import initial_states, least_period
 
     f = Forcing(F0=2.0, omega=39.0625)
     closed = [o for o in periodic_orbits(SYSTEM, f, E) if o.admissible and o.stable]
     assert len(closed) == 1
-    found = [attractor(SYSTEM, f, E, s) for s in _starts(SYSTEM, f)]
+    found = [attractor(SYSTEM, f, E, s) for s in initial_states(SYSTEM, f)]
     periodic = [a for a in found if a.kind == "periodic"]
     assert periodic
     for a in periodic:

@@ -75,12 +75,33 @@ def test_without_reachable_walls_the_curve_is_the_linear_response(capsys):
         (["--omega-range", "30:40:0.1", "--freq-range", "5:6:0.1"], "omega-range:"),
         (["--omega-range", "0:40:0.1"], "omega-range:"),
         (["--freq-range", "1:2:1e-6"], "freq-range:"),
+        (["--omega-range", "30:40:1", "--jumps", "-1"], "jumps:"),
+        (["--omega-range", "30:40:1", "--jumps", "2.5"], "jumps:"),
     ],
 )
 def test_bad_bands_are_one_line(capsys, extra, parameter):
     assert main(["frf", *SYSTEM, "--gap", "20 mm", *RIGID, *extra]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and parameter in err
+
+
+def test_jumps_reach_the_curve(capsys, monkeypatch):
+    """``--jumps N`` caps the curve's runs from branch ends (the option is passed on, not
+    dropped: the call is intercepted before any run)."""
+    import symimpact.forced.frf as frf
+
+    seen = {}
+
+    def stop(*args, **kw):
+        seen.update(kw)
+        raise frf.ParameterError("omega", "intercepted")
+
+    monkeypatch.setattr(frf, "frequency_response", stop)
+    assert main(["frf", *SYSTEM, "--gap", "20 mm", *RIGID, "--omega-range", "30:40:1",
+                 "--jumps", "7"]) == 2  # fmt: skip
+    assert seen["jumps"] == 7
+    assert main(["frf", *SYSTEM, "--gap", "20 mm", *RIGID, "--omega-range", "30:40:1"]) == 2
+    assert seen["jumps"] is None  # the default: 256 with rigid impacts, 0 with compliance
 
 
 def test_a_free_vibration_law_is_refused_in_one_line(capsys):

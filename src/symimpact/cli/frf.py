@@ -33,6 +33,10 @@ def add_parser(sub: Any) -> None:
     add_band(g)
     g.add_argument("--no-sweeps", action="store_true",
                    help="skip the brute-force sweeps up and down the band")  # fmt: skip
+    g.add_argument("--jumps", default=None, metavar="N",
+                   help="at most N runs from the branches' ends and losses of stability, whose "
+                   "landings start new branches (default 256 with rigid impacts, 0 with a "
+                   "compliant contact, whose runs integrate every contact)")  # fmt: skip
     p.add_argument(
         "--response",
         default="displacement",
@@ -230,7 +234,10 @@ def run(ns) -> None:
     from ..forced.responses import checked_response, response_key
 
     response = checked_response(ns.response, forcing, rigid=is_rigid(e))
-    frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps)
+    from .loads import count
+
+    jumps = None if ns.jumps is None else count("jumps", ns.jumps, 0, 10_000)
+    frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps)
     if response != "displacement":
         from ..forced.response_curve import response_curve
 

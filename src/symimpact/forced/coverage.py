@@ -45,7 +45,7 @@ from .simulation import settling_periods, simulate_forced
 
 #: Frequencies of the multi-start, spread evenly inside the band (its ends excluded).
 FREQUENCIES = 15
-#: Initial states at each frequency (see :func:`_starts`).
+#: Initial states at each frequency (see :func:`initial_states`).
 STARTS = 4
 #: At most this many forcing periods before the steady state is read; 20 more are kept.
 WARMUP, KEPT = 400, 20
@@ -126,7 +126,9 @@ def frequencies(band: tuple[float, float], n: int = FREQUENCIES) -> np.ndarray:
     return np.linspace(band[0], band[1], n + 2)[1:-1]
 
 
-def _starts(system: ImpactSystem, forcing: Forcing) -> list[tuple[float, float, float, float]]:
+def initial_states(
+    system: ImpactSystem, forcing: Forcing
+) -> list[tuple[float, float, float, float]]:
     """Initial states (x, ẋ, z, ẏ): rest; the primary displaced by A with the impact mass near
     either wall; the primary moving through zero at ΩA with the impact mass moving against it.
     A is the primary's linear amplitude at Ω (Eq. F1), at most two clearances."""
@@ -263,7 +265,7 @@ def attractors(
     for w in frequencies(band, n):
         f = forcing.at(float(w))
         here: list[Attractor] = []
-        for s in _starts(system, f):
+        for s in initial_states(system, f):
             try:
                 a = attractor(system, f, e, s)
             except SymimpactError:

@@ -50,7 +50,7 @@ from .continuation import (
     orbits_at,
     trace_branch,
 )
-from .coverage import FREQUENCIES, Coverage, attractor, attractors
+from .coverage import FREQUENCIES, Coverage, attractor, attractors, initial_states
 from .forcing import Forcing
 from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
@@ -76,7 +76,11 @@ MAX_SWITCHES, MAX_SWITCH_PERIODS = 24, 4
 #: short branches lie 0.01–0.02 rad/s apart and are 0.01–0.13 rad/s long).  With a compliant
 #: contact none by default (``jumps``): every run and branch integrates each contact, and on
 #: benchmark 6's band the jumps took its curve from 17.5 s to 114 s.
-MAX_JUMPS, JUMP = 64, 1e-3
+MAX_JUMPS, JUMP = 256, 1e-3
+#: The multi-start's states are run at branch ends at least this fraction of the band apart
+#: (:func:`_start_at_ends`; 0.04 rad/s on the README's curve, about the length of the
+#: resonance's short branches).
+ENDS_APART = 2e-3
 
 
 @dataclass
@@ -265,8 +269,9 @@ def frequency_response(
     ``starts`` frequencies spread over the band (closed-form orbits and brute-force steady
     states of one and two periods), from the periodic attractors of a multi-start at
     ``multistart`` frequencies (0: none), by branch switching and by at most ``jumps`` runs
-    from the branches' stable ends and losses of stability (None: MAX_JUMPS with rigid
-    impacts, none with a compliant contact); the located peak; the linear
+    from the branches' stable ends and losses of stability and of the multi-start's initial
+    states at the branches' ends (None: MAX_JUMPS with rigid impacts, none with a compliant
+    contact); the located peak; the linear
     response without the damper (Step 8, Eq. F1), the motion without impacts, and, with
     ``sweeps``, the up and down brute-force sweeps."""
     system, forcing, e = checked(system, forcing, e)
@@ -371,14 +376,22 @@ def frequency_response(
 def _grow(out, system, forcing, e, band, step, failures, follow, jumps: int) -> None:
     """Every branch in turn, the new ones included (so that a branch found by a switch or a jump
     is itself switched from and jumped from): branch switching at its located points
-    (:func:`_switch_at`) and jumps from its stable ends (:func:`_jump_from`)."""
+    (:func:`_switch_at`) and jumps from its stable ends (:func:`_jump_from`); then the
+    multi-start's states at the branches' ends (:func:`_start_at_ends`), and the same again on
+    the branches these find, until a round finds none."""
     budget = {"switches": 0, "jumps": 0, "max_jumps": jumps}
     sources: list[tuple[float, float, int]] = []  # (Ω, amplitude, direction) jumped from
+    places: list[float] = []  # the Ω of the branch ends started from (:func:`_start_at_ends`)
     i = 0
-    while i < len(out.branches):
-        _switch_at(out, i, system, forcing, e, band, step, failures, budget)
-        _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sources)
-        i += 1
+    while True:
+        while i < len(out.branches):
+            _switch_at(out, i, system, forcing, e, band, step, failures, budget)
+            _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sources)
+            i += 1
+        known = len(out.branches)
+        _start_at_ends(out, system, forcing, e, band, failures, follow, budget, places)
+        if len(out.branches) == known:
+            return
 
 
 def _switch_at(out, i, system, forcing, e, band, step, failures, budget) -> None:
@@ -511,6 +524,44 @@ def _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sourc
             if new is not None:
                 new.origin = f"jump from branch {i} at Ω = {omega:.6g} rad/s"
                 new.origin_omega = omega
+
+
+def _start_at_ends(out, system, forcing, e, band, failures, follow, budget, places) -> None:
+    """The multi-start's initial states (:func:`symimpact.forced.coverage.initial_states`) run
+    at the Ω of every branch end inside the band, stable or not, at least ENDS_APART of the band
+    from one another and from the places started from before: a branch that ends where no
+    grazing is crossed (the corrector fails among impacts that appear and vanish, or at a sharp
+    turn) marks a stretch whose other motions lie on short branches of their own, which neither
+    a stable end nor a loss of stability leads to (on the README's curve the 4- to 16-impact
+    branches of 29.3–31.9 rad/s).  A periodic attractor not on a traced branch starts a branch.
+    Each run counts against ``budget["max_jumps"]``."""
+    width = band[1] - band[0]
+    ends = sorted({p.omega for i, b in enumerate(out.branches) if b.parameter == "omega"
+                   for p in (b.points[0], b.points[-1])})  # fmt: skip
+    for omega in ends:
+        if not band[0] + JUMP * width < omega < band[1] - JUMP * width:
+            continue
+        if any(abs(omega - w) <= ENDS_APART * width for w in places):
+            continue
+        places.append(omega)
+        fs = forcing.at(omega)
+        for state in initial_states(system, fs):
+            if budget["jumps"] == budget["max_jumps"]:
+                if budget["max_jumps"]:
+                    failures.setdefault(f"runs from branch ends: stopped after {budget['jumps']}"
+                                        " runs", []).append(omega)  # fmt: skip
+                return
+            budget["jumps"] += 1
+            try:
+                a = attractor(system, fs, e, state, exponent=False)
+            except SymimpactError as exc:
+                failures.setdefault(f"run at a branch end: {exc}", []).append(omega)
+                continue
+            if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
+                new = follow("start at a branch end", a.period_multiple, a.state, fs)
+                if new is not None:
+                    new.origin = f"a start at a branch end at Ω = {omega:.6g} rad/s"
+                    new.origin_omega = omega
 
 
 def _drop_repeated_bifurcations(branches: list[Branch], rtol: float = 1e-6) -> None:
