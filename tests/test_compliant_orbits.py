@@ -160,6 +160,7 @@ def test_stiffened_compliant_branches_converge_to_the_rigid_ones():
     assert abs(errors[-1][0]) < 0.01 and abs(errors[-1][1]) < 1e-3
 
 
+@pytest.mark.slow  # run in CI's second step (the README command stays within ~12 min)
 def test_compliant_frf_stable_points_are_brute_force_steady_states():
     """The frequency-response curve with Hertz contact (k_hz 1e9, c1 1 N s/m) over 33–37 rad/s
     without sweeps: on every branch with a stable point, its most strongly attracting one is the

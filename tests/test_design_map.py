@@ -47,6 +47,7 @@ def test_an_unreachable_clearance_gives_the_primary_without_the_damper(contact):
     assert row["uncovered_frequencies"] == 0 and row["linear_frequencies"] == len(w)
 
 
+@pytest.mark.slow  # run in CI's second step (the README command stays within ~12 min)
 def test_a_vanishing_impact_mass_leaves_the_primary_alone():
     """m = 1e-7 kg at d = 20 mm over 29–33 rad/s (the resonance): the impact mass chatters and
     sticks on the primary, whose peak is located on that traced stable orbit at the primary

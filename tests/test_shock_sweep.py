@@ -98,6 +98,7 @@ def test_bad_shock_and_sweep_input_is_refused():
         shock_record("half-sine", 50.0, 0.011, 0.005, 1e-4)
 
 
+@pytest.mark.slow  # run in CI's second step (the README command stays within ~12 min)
 def test_the_steady_curve_beside_a_sweep_holds_the_closed_form_orbits():
     """The steady curve drawn beside a sweep (sweep-sine's JSON "steady"): its stable orbit at
     its highest frequency is the symmetric two-impact orbit of the closed form (Step 10, solved
