@@ -138,7 +138,10 @@ def _merged(path: str, text: str, started: datetime.datetime) -> str:
     for number, body in fresh.items():
         title, _, rest = body.partition("\n")
         kept[number] = f"{title}\n{stamp}\n{rest}".rstrip()
-    return "\n".join(head_old).strip() + "\n\n" + "\n\n".join(kept[k] for k in sorted(kept))
+    # each section without its trailing blank lines: a kept one is joined again as it was
+    return (
+        "\n".join(head_old).strip() + "\n\n" + "\n\n".join(kept[k].rstrip() for k in sorted(kept))
+    )
 
 
 if __name__ == "__main__":
