@@ -508,24 +508,12 @@ def _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sourc
         if any(abs(omega - o) <= 0.5 * JUMP * width and abs(amp - a) <= 1e-3 * a and d == dd
                for o, a, dd in sources):  # fmt: skip
             continue
-        if budget["jumps"] == budget["max_jumps"]:
-            if budget["max_jumps"]:
-                failures.setdefault(f"jumps from branch ends: stopped after {budget['jumps']} "
-                                    "runs", []).append(omega)  # fmt: skip
-            return
-        budget["jumps"] += 1
         sources.append((omega, amp, d))
-        fs = forcing.at(w, phase)
-        try:
-            a = attractor(system, fs, e, state, exponent=False)
-        except SymimpactError as exc:
-            failures.setdefault(f"jump from a branch end: {exc}", []).append(omega)
-            continue
-        if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
-            new = follow("jump", a.period_multiple, a.state, fs)
-            if new is not None:
-                new.origin = f"jump from branch {i} at Ω = {omega:.6g} rad/s"
-                new.origin_omega = omega
+        origin = f"jump from branch {i} at Ω = {omega:.6g} rad/s"
+        if not _run_and_follow(system, e, forcing.at(w, phase), state, omega,
+                               "jump from a branch end", origin, failures, follow,
+                               budget):  # fmt: skip
+            return
 
 
 def _start_at_ends(out, system, forcing, e, band, failures, follow, budget, places) -> None:
@@ -548,22 +536,35 @@ def _start_at_ends(out, system, forcing, e, band, failures, follow, budget, plac
         places.append(omega)
         fs = forcing.at(omega)
         for state in initial_states(system, fs):
-            if budget["jumps"] == budget["max_jumps"]:
-                if budget["max_jumps"]:
-                    failures.setdefault(f"runs from branch ends: stopped after {budget['jumps']}"
-                                        " runs", []).append(omega)  # fmt: skip
+            if not _run_and_follow(system, e, fs, state, omega, "start at a branch end",
+                                   f"a start at a branch end at Ω = {omega:.6g} rad/s",
+                                   failures, follow, budget):  # fmt: skip
                 return
-            budget["jumps"] += 1
-            try:
-                a = attractor(system, fs, e, state, exponent=False)
-            except SymimpactError as exc:
-                failures.setdefault(f"run at a branch end: {exc}", []).append(omega)
-                continue
-            if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
-                new = follow("start at a branch end", a.period_multiple, a.state, fs)
-                if new is not None:
-                    new.origin = f"a start at a branch end at Ω = {omega:.6g} rad/s"
-                    new.origin_omega = omega
+
+
+def _run_and_follow(system, e, fs, state, omega, what, origin, failures, follow, budget) -> bool:
+    """One run from ``state`` under ``fs``, classified by
+    :func:`symimpact.forced.coverage.attractor`; a periodic landing on no traced branch starts
+    one, whose ``origin`` is set (``omega``: the place run from).  False, with a note, when the
+    budget of runs (``budget["max_jumps"]``, shared by the jumps and the starts at branch ends)
+    is spent."""
+    if budget["jumps"] == budget["max_jumps"]:
+        if budget["max_jumps"]:
+            failures.setdefault(f"jumps and starts from branch ends: stopped after "
+                                f"{budget['jumps']} runs", []).append(omega)  # fmt: skip
+        return False
+    budget["jumps"] += 1
+    try:
+        a = attractor(system, fs, e, state, exponent=False)
+    except SymimpactError as exc:
+        failures.setdefault(f"{what}: {exc}", []).append(omega)
+        return True
+    if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
+        new = follow(what, a.period_multiple, a.state, fs)
+        if new is not None:
+            new.origin = origin
+            new.origin_omega = omega
+    return True
 
 
 def _drop_repeated_bifurcations(branches: list[Branch], rtol: float = 1e-6) -> None:

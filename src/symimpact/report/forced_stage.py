@@ -178,7 +178,8 @@ def _curves(s: Section, folder: Path, curves: list) -> dict[float, float]:
             "branches are continued through chatter and sticking too (an accumulation of "
             "impacts, then the masses moving together); a run from each stable end of a branch "
             "and each loss of stability, just beyond it, starts a branch where it lands on a "
-            "periodic motion no branch holds, as a periodic swept motion does; a motion shown "
+            "periodic motion no branch holds, as a periodic swept motion does, and so do the "
+            "multi-start's initial states run at every branch end; a motion shown "
             "by sweep markers alone is one no branch holds "
             "(the table below counts the multi-start's attractors the branches hold and those "
             "they do not).",
