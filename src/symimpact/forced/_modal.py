@@ -281,6 +281,44 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb):
                  _slowest(lam, masses, pm, W, False))  # fmt: skip
 
 
+#: Configurations :func:`run` keeps, one per pattern of stuck dampers and pressed stops met.
+MAX_CONFIGS = 64
+
+
+@njit(cache=True)
+def _pattern(stuck, contact):
+    """The pattern of stuck dampers and pressed stops as one number, each one's −1, 0 or 1 a
+    base-3 digit; −1 where there are too many of them to encode (more than 39)."""
+    if stuck.shape[0] + contact.shape[0] > 39:
+        return -1
+    code = 0
+    for k in range(stuck.shape[0]):
+        code = 3 * code + stuck[k] + 1
+    for k in range(contact.shape[0]):
+        code = 3 * code + contact[k] + 1
+    return code
+
+
+@njit(cache=True)
+def _kept_config(keys, cfgs, pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb):
+    """:func:`_config`, computed once per pattern of stuck dampers and pressed stops
+    (:func:`_pattern`) in a run: a run's configurations differ only by that pattern, and a
+    damper that chatters, sticks and is let go over and over (hundreds of times a second at a
+    cantilever's mid-span) met the eigen-decomposition of the same stuck structure at each
+    stick and each release (190 µs with 10 modes).  ``keys``, ``cfgs``: the run's patterns and
+    their configurations, appended to (at most MAX_CONFIGS kept)."""
+    code = _pattern(stuck, contact)
+    if code >= 0:
+        for j in range(len(keys)):
+            if keys[j] == code:
+                return cfgs[j]
+    cfg = _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+    if code >= 0 and len(keys) < MAX_CONFIGS:
+        keys.append(code)
+        cfgs.append(cfg)
+    return cfg
+
+
 @njit(cache=True)
 def _slowest(lam, masses, pm, W, decoupled):
     """max(Ω, the lowest damped frequency of the flight's modes) [rad/s]: the searches' and the
@@ -446,13 +484,20 @@ def _free_states(pm, t0, q0, v0, tau, q, v):
 def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v: Eq. F1 per mode
     while no mass sticks, else the stuck structure's closed form (module text)."""
-    N = pm.shape[0]
     if cfg[6]:
         _free_states(pm, t0, q0, v0, tau, q, v)
         return
+    _held_states(pm, cfg, _coefficients(pm, cfg, t0, q0, v0), t0, tau, q, v)
+
+
+@njit(cache=True, inline="always")
+def _held_states(pm, cfg, c, t0, tau, q, v):
+    """The stuck structure's (q, q̇) a time τ after t0 from its modal amplitudes c
+    (:func:`_coefficients` of the flight's start, computed once by a search that evaluates
+    many τ of one flight), written into q and v."""
+    N = pm.shape[0]
     lam, V, _, Xhat = _modes_of(cfg)
     qs = cfg[3][1]
-    c = _coefficients(pm, cfg, t0, q0, v0)
     rot = np.exp(1j * (pm[0, P_W] * (t0 + tau) + pm[0, P_PHI]))
     g = c * np.exp(lam * tau)
     X = _cmv(V, g)
@@ -462,16 +507,35 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
 
 
 @njit(cache=True, inline="always")
-def _stuck_acceleration(pm, cfg, t, q, v, i):
-    """q̈ᵢ of the coupled structure: row i of M_s⁻¹(Pcos θ + Qsin θ + f_s − C_sq̇ − K_sq),
-    P = F + K·X_b, Q = −CΩ·X_b per mode (Eq. F1's left side with the stuck mass matrix and the
-    pressed stops' springs, dashpots and load, :func:`_config`)."""
-    Minv, Ks, Cs, fs = cfg[0][0], cfg[0][1], cfg[0][2], cfg[3][0]
+def _flight_amplitudes(pm, cfg, t0, q0, v0):
+    """The flight's modal amplitudes for :func:`_states_from` (none while the modes are
+    uncoupled)."""
+    if cfg[6]:
+        return np.zeros(0, dtype=np.complex128)
+    return _coefficients(pm, cfg, t0, q0, v0)
+
+
+@njit(cache=True, inline="always")
+def _states_from(pm, cfg, c, t0, q0, v0, tau, q, v):
+    """:func:`_states` with the flight's amplitudes ``c`` (:func:`_flight_amplitudes`) computed
+    once: the same numbers, without the 2N × 2N product per evaluation."""
+    if cfg[6]:
+        _free_states(pm, t0, q0, v0, tau, q, v)
+    else:
+        _held_states(pm, cfg, c, t0, tau, q, v)
+
+
+@njit(cache=True, inline="always")
+def _stuck_loads(pm, cfg, t, q, v):
+    """r = Pcos θ + Qsin θ + f_s − C_sq̇ − K_sq of the coupled structure, P = F + K·X_b,
+    Q = −CΩ·X_b per mode (Eq. F1's right side with the pressed stops' springs, dashpots and
+    load, :func:`_config`): q̈ = M_s⁻¹r (:func:`_stuck_acceleration`)."""
+    Ks, Cs, fs = cfg[0][1], cfg[0][2], cfg[3][0]
     N = pm.shape[0]
     W = pm[0, P_W]
     th = W * t + pm[0, P_PHI]
     c, sn = math.cos(th), math.sin(th)
-    g = 0.0
+    r = np.empty(N)
     for j in range(N):
         P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
         Q = -pm[j, P_C] * W * pm[j, P_XB]
@@ -479,7 +543,18 @@ def _stuck_acceleration(pm, cfg, t, q, v, i):
         for m in range(N):
             cv += Cs[j, m] * v[m]
             kq += Ks[j, m] * q[m]
-        g += Minv[i, j] * (P * c + Q * sn + fs[j] - cv - kq)
+        r[j] = P * c + Q * sn + fs[j] - cv - kq
+    return r
+
+
+@njit(cache=True, inline="always")
+def _stuck_acceleration(cfg, r, i):
+    """q̈ᵢ of the coupled structure: row i of M_s⁻¹r, r its loads (:func:`_stuck_loads`,
+    computed once for all i)."""
+    Minv = cfg[0][0]
+    g = 0.0
+    for j in range(r.shape[0]):
+        g += Minv[i, j] * r[j]
     return g
 
 
@@ -502,8 +577,9 @@ def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     if cfg[6]:
         return _free_point_accel(pm, Phi, row, t, q, v, xb)
     a = _base_a(pm, xb, t)
+    r = _stuck_loads(pm, cfg, t, q, v)
     for i in range(pm.shape[0]):
-        a += Phi[row, i] * _stuck_acceleration(pm, cfg, t, q, v, i)
+        a += Phi[row, i] * _stuck_acceleration(cfg, r, i)
     return a
 
 
@@ -524,8 +600,9 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     th = W * t + pm[0, P_PHI]
     c, sn = math.cos(th), math.sin(th)
     acc = np.empty(N)
+    r = _stuck_loads(pm, cfg, t, q, v)
     for i in range(N):
-        acc[i] = _stuck_acceleration(pm, cfg, t, q, v, i)
+        acc[i] = _stuck_acceleration(cfg, r, i)
     for i in range(N):
         g = 0.0
         for j in range(N):
@@ -907,6 +984,7 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, xb):
     K = Phi.shape[0]
     step = 2.0 * math.pi / cfg[8] / 64.0
     q, v, fa = work[3], work[4], work[9]
+    c = _flight_amplitudes(pm, cfg, t0, q0, v0)
     for k in range(K):
         fa[k] = -1.0
         if stuck[k] != 0:
@@ -918,7 +996,7 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, xb):
         if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
             return tau, -1
         tb = min(tau + step, T)
-        _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
+        _states_from(pm, cfg, c, t0, q0, v0, tb, q, v)
         first, which = tb, -1
         for k in range(K):
             if stuck[k] == 0:
@@ -929,7 +1007,7 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, xb):
                 kept = 0
                 for _ in range(200):
                     tm = secant_point(lo, hi, flo, fhi)
-                    _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
+                    _states_from(pm, cfg, c, t0, q0, v0, tm, q, v)
                     fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tm, q, v, xb)
                     if fm > 0.0:
                         hi, fhi = tm, fm
@@ -1136,18 +1214,19 @@ def _expint(k, tau):
 
 
 @njit(cache=True, inline="always")
-def _pair(x, y, E):
-    """∫₀^τ Re(x₀e^{μt} + x₁e^{iΩt})·Re(y₀e^{μt} + y₁e^{iΩt}) dt from ``E`` = ∫ e^{κt} over the
-    exponents κ = 2μ, μ + μ̄, μ + iΩ, μ − iΩ, 2iΩ, 0 (Re a·Re b = (Re ab + Re ab̄)/2)."""
+def _pair(x0, x1, y0, y1, E0, E1, E2, E3, E4, E5):
+    """∫₀^τ Re(x₀e^{μt} + x₁e^{iΩt})·Re(y₀e^{μt} + y₁e^{iΩt}) dt from E₀ … E₅ = ∫ e^{κt} over the
+    exponents κ = 2μ, μ + μ̄, μ + iΩ, μ − iΩ, 2iΩ, 0 (Re a·Re b = (Re ab + Re ab̄)/2); scalars,
+    not arrays, as the ledger of every mode's every flight takes it eight times."""
     return 0.5 * (
-        (x[0] * y[0] * E[0]).real
-        + (x[0] * np.conj(y[0]) * E[1]).real
-        + (x[0] * y[1] * E[2]).real
-        + (x[0] * np.conj(y[1]) * E[3]).real
-        + (x[1] * y[0] * E[2]).real
-        + (x[1] * np.conj(y[0]) * np.conj(E[3])).real
-        + (x[1] * y[1] * E[4]).real
-        + (x[1] * np.conj(y[1]) * E[5]).real
+        (x0 * y0 * E0).real
+        + (x0 * np.conj(y0) * E1).real
+        + (x0 * y1 * E2).real
+        + (x0 * np.conj(y1) * E3).real
+        + (x1 * y0 * E2).real
+        + (x1 * np.conj(y0) * np.conj(E3)).real
+        + (x1 * y1 * E4).real
+        + (x1 * np.conj(y1) * E5).real
     )
 
 
@@ -1158,7 +1237,8 @@ def _mode_ledger(pm, i, t0, x0, v0, tau):
     resonance, over-damped): the flight is Re(αe^{μt}) + Re(βe^{iΩt}) with μ = −σ + iω_d (the
     particular part β from Eq. F1's steady cosine and sine, α from the start), the force's
     terms are Re(γe^{iΩt}), and each product integrates to (e^{κτ} − 1)/κ.  The power is the
-    one-mode engine's, F₀cos θ·ẋ − (K(x − x_b) + C(ẋ − ẋ_b))ẋ_b, the dissipation C(ẋ − ẋ_b)²."""
+    one-mode engine's, F₀cos θ·ẋ − (K(x − x_b) + C(ẋ − ẋ_b))ẋ_b, the dissipation C(ẋ − ẋ_b)².
+    Each two-term signal is a pair of complex scalars (its e^{μt} and e^{iΩt} parts)."""
     M, K, C, F0, Xb, W = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB], pm[i, P_W]
     sigma = C / (2.0 * M)
     wd2 = K / M - sigma * sigma
@@ -1175,30 +1255,27 @@ def _mode_ledger(pm, i, t0, x0, v0, tau):
     mu = complex(-sigma, wd)
     rot = complex(c, sn)
     iw = complex(0.0, W)
-    x = np.empty(2, dtype=np.complex128)  # the displacement's two terms
-    x[0] = complex(dx, -(dv + sigma * dx) / wd)
-    x[1] = complex(A, -B) * rot
-    v = np.empty(2, dtype=np.complex128)
-    v[0] = mu * x[0]
-    v[1] = iw * x[1]
-    cos_t = np.zeros(2, dtype=np.complex128)  # cos θ(t), and the base's displacement and rate
-    cos_t[1] = rot
-    xb = np.zeros(2, dtype=np.complex128)
-    xb[1] = Xb * rot
-    vb = np.zeros(2, dtype=np.complex128)
-    vb[1] = iw * Xb * rot
-    rel = v - vb
-    E = np.empty(6, dtype=np.complex128)
-    E[0] = _expint(2.0 * mu, tau)
-    E[1] = _expint(complex(-2.0 * sigma, 0.0), tau)
-    E[2] = _expint(mu + iw, tau)
-    E[3] = _expint(mu - iw, tau)
-    E[4] = _expint(2.0 * iw, tau)
-    E[5] = tau
-    work = F0 * _pair(cos_t, v, E)
+    zero = 0.0j
+    x_0 = complex(dx, -(dv + sigma * dx) / wd)  # the displacement's two terms
+    x_1 = complex(A, -B) * rot
+    v_0 = mu * x_0
+    v_1 = iw * x_1
+    xb_1 = Xb * rot  # cos θ(t) is (0, rot); the base's displacement and rate
+    vb_1 = iw * Xb * rot
+    rel_0, rel_1 = v_0 - zero, v_1 - vb_1
+    E0 = _expint(2.0 * mu, tau)
+    E1 = _expint(complex(-2.0 * sigma, 0.0), tau)
+    E2 = _expint(mu + iw, tau)
+    E3 = _expint(mu - iw, tau)
+    E4 = _expint(2.0 * iw, tau)
+    E5 = complex(tau, 0.0)
+    work = F0 * _pair(zero, rot, v_0, v_1, E0, E1, E2, E3, E4, E5)
     if Xb != 0.0:
-        work -= K * (_pair(x, vb, E) - _pair(xb, vb, E)) + C * _pair(rel, vb, E)
-    return work, C * _pair(rel, rel, E)
+        work -= K * (
+            _pair(x_0, x_1, zero, vb_1, E0, E1, E2, E3, E4, E5)
+            - _pair(zero, xb_1, zero, vb_1, E0, E1, E2, E3, E4, E5)
+        ) + C * _pair(rel_0, rel_1, zero, vb_1, E0, E1, E2, E3, E4, E5)
+    return work, C * _pair(rel_0, rel_1, rel_0, rel_1, E0, E1, E2, E3, E4, E5)
 
 
 @njit(cache=True)
@@ -1226,6 +1303,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
     hq = 2.0 * math.pi / cfg[8] / 16.0
     q, v = work[3], work[4]
     closed = dec
+    c_fl = _flight_amplitudes(pm, cfg, t0, q0, v0)
     if dec:
         w_sum, d_sum = 0.0, 0.0
         for i in range(N):
@@ -1248,7 +1326,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                 if dec:
                     _free_states(pm, t0, q0, v0, s, q, v)
                 else:
-                    _states(pm, cfg, nstuck, t0, q0, v0, s, q, v)
+                    _states_from(pm, cfg, c_fl, t0, q0, v0, s, q, v)
                 th = W * (t0 + s) + pm[0, P_PHI]
                 c, sn = math.cos(th), math.sin(th)
                 for i in range(N):
@@ -1283,7 +1361,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
         if dec:
             _free_states(pm, t0, q0, v0, b, q, v)
         else:
-            _states(pm, cfg, nstuck, t0, q0, v0, b, q, v)
+            _states_from(pm, cfg, c_fl, t0, q0, v0, b, q, v)
         ka = min(int(math.floor((t0 + a) / T_f)), n_periods)  # noqa: RUF046
         k = int(math.floor((t0 + b) / T_f))  # noqa: RUF046 (int() spelled out for numba)
         taken = True
@@ -1320,7 +1398,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                     if dec:
                         _free_states(pm, t0, q0, v0, tm, q, v)
                     else:
-                        _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
+                        _states_from(pm, cfg, c_fl, t0, q0, v0, tm, q, v)
                     vm = _base_v(pm, xb, t0 + tm)
                     for i in range(N):
                         vm += Pout[p, i] * v[i]
@@ -1339,7 +1417,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                         kept = 1
                     if hi - lo <= 4e-16 * (t0 + hi):
                         break
-                _states(pm, cfg, nstuck, t0, q0, v0, 0.5 * (lo + hi), q, v)
+                _states_from(pm, cfg, c_fl, t0, q0, v0, 0.5 * (lo + hi), q, v)
                 xm = _base_x(pm, xb, t0 + 0.5 * (lo + hi))
                 for i in range(N):
                     xm += Pout[p, i] * q[i]
@@ -1471,12 +1549,13 @@ def _field(pm, cfg, K, t, q, v, u, out):
     """The state's rate f = (q̇, q̈, ẏ, 0) of the free masses' flight (q̈: each mode's Eq. F1, or
     the coupled structure's, :func:`_stuck_acceleration`)."""
     N = pm.shape[0]
+    r = _stuck_loads(pm, cfg, t, q, v) if not cfg[6] else v
     for i in range(N):
         out[i] = v[i]
         if cfg[6]:
             out[N + i] = _mode_accel(pm, i, pm[i, P_M], t, q[i], v[i])
         else:
-            out[N + i] = _stuck_acceleration(pm, cfg, t, q, v, i)
+            out[N + i] = _stuck_acceleration(cfg, r, i)
     for k in range(K):
         out[2 * N + k] = u[k]
         out[2 * N + K + k] = 0.0
@@ -1592,6 +1671,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     nstuck = 0
     cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
     pm = cfg[7]
+    keys = [_pattern(stuck, contact)]
+    cfgs = [cfg]
     P = Pout.shape[0]
     # scratch for the searches and the ledger, allocated once: bounds A, B and the held-off
     # times of the dampers; two state buffers; z at the grid's ends; two more state buffers;
@@ -1670,7 +1751,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 # --- held stop ks is let go: its wall would pull ---
                 wall = contact[ks]
                 contact[ks] = 0
-                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+                cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                   srig, xb)  # fmt: skip
                 pm = cfg[7]
                 fresh, fresh_wall = ks, wall
                 xd = _dot(Sphi, ks, v)
@@ -1702,7 +1784,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 wall = contact[pulled]
                 contact[pulled] = 0
                 held -= 1
-                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+                cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                   srig, xb)  # fmt: skip
                 pm = cfg[7]
                 events, n_ev = _log(events, n_ev, t, _dot(Sphi, pulled, q), 0.0, 0.0, float(wall),
                                     0.0, 0.0, KIND_RELEASE, 0.0, 0.0, K + pulled)  # fmt: skip
@@ -1756,7 +1839,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 # --- the point rests on the wall from here ---
                 smooth = False
                 contact[ks] = ws
-                cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+                cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                   srig, xb)  # fmt: skip
                 pm = cfg[7]
                 if not cfg[5]:
                     status = SINGULAR_STUCK
@@ -1769,7 +1853,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             if smooth:
                 _field(pm, cfg, K, t, q, v, u, fm)
             contact[ks] = ws
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+            cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                               srig, xb)  # fmt: skip
             pm = cfg[7]
             if smooth:  # the state is continuous, the rate jumps by the dashpot's force
                 _field(pm, cfg, K, t, q, v, u, fp)
@@ -1791,7 +1876,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             s = float(stuck[kr])
             stuck[kr] = 0
             nstuck -= 1
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+            cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                               srig, xb)  # fmt: skip
             pm = cfg[7]
             for j in range(K):
                 side0[j] = 0
@@ -1842,7 +1928,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                     wall = contact[gone]
                     contact[gone] = 0
                     held -= 1
-                    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+                    cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                       srig, xb)  # fmt: skip
                     pm = cfg[7]
                     smooth = False
                     events, n_ev = _log(events, n_ev, t, _dot(Sphi, gone, q), 0.0, 0.0,
@@ -1864,7 +1951,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             let_go[pulled] = stuck[pulled]
             stuck[pulled] = 0
             nstuck -= 1
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+            cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                               srig, xb)  # fmt: skip
             pm = cfg[7]
             xa = _dot(Phi, pulled, q) + _base_x(pm, xb, t)
             events, n_ev = _log(events, n_ev, t, xa, u[pulled], u[pulled],
@@ -1935,7 +2023,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             smooth = False
             stuck[k] = side
             nstuck += 1
-            cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+            cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                               srig, xb)  # fmt: skip
             pm = cfg[7]
             if not cfg[5]:
                 status = SINGULAR_STUCK
