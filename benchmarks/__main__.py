@@ -50,7 +50,7 @@ SUITE = (
         random_loads.main,
     ),
     (
-        "10. a structure of several modes with impact dampers: cost against N, against DOP853",
+        "10. a structure of several modes with impact dampers: cost against N, against DOP853, its curve",
         structure.main,
     ),
     (
