@@ -1549,12 +1549,14 @@ def _field(pm, cfg, K, t, q, v, u, out):
     """The state's rate f = (q̇, q̈, ẏ, 0) of the free masses' flight (q̈: each mode's Eq. F1, or
     the coupled structure's, :func:`_stuck_acceleration`)."""
     N = pm.shape[0]
-    r = _stuck_loads(pm, cfg, t, q, v) if not cfg[6] else v
     for i in range(N):
         out[i] = v[i]
-        if cfg[6]:
+    if cfg[6]:
+        for i in range(N):
             out[N + i] = _mode_accel(pm, i, pm[i, P_M], t, q[i], v[i])
-        else:
+    else:
+        r = _stuck_loads(pm, cfg, t, q, v)
+        for i in range(N):
             out[N + i] = _stuck_acceleration(cfg, r, i)
     for k in range(K):
         out[2 * N + k] = u[k]
