@@ -971,8 +971,10 @@ def _grazing(problem, y, t, ds, before: BranchPoint):
         if got is None or got is GRAZE:
             hi = mid
             continue
-        last, at_lo = _point(problem, got[0], got[2], got[3]), got
+        at_lo = got
         lo, y_lo = mid, got[0]
+    if at_lo is not None:  # the point of the last orbit corrected, formed once
+        last = _point(problem, at_lo[0], at_lo[2], at_lo[3])
     found = Bifurcation("grazing", last.omega, last.amplitude, last.value, last.state,
                         last.phase, impacts_before=before.impact_events_per_period)  # fmt: skip
     return found, lo, hi, at_lo

@@ -459,11 +459,32 @@ def doubled_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
     return None
 
 
+#: The periods over which a run from rest's largest displacements are read, after its transient.
+KEPT = 40
+#: A run from rest waits until the structure's slowest free transient has fallen to this share
+#: of its start (the rule of the one-mode runs: :func:`symimpact.forced.simulation.
+#: settling_periods`).
+SETTLED = 1e-6
+#: At most this many periods of transient (an undamped mode never settles).
+MOST = 300
+
+
+def settling_periods(structure: Structure, omega: float, settled: float = SETTLED,
+                     most: int = MOST) -> int:  # fmt: skip
+    """Forcing periods at Ω = ``omega`` [rad/s] for the slowest free transient of the
+    structure's modes, exp(−min ζᵢωᵢ·t) (each mode's free decay, Step 8 per mode), to fall to
+    ``settled`` of its start; at most ``most`` (an undamped mode: ``most``)."""
+    decay = min(m.zeta * m.omega for m in structure.modes)  # [1/s]
+    if not decay > 0:
+        return most
+    return min(most, math.ceil(-math.log(settled) / decay / (2.0 * math.pi / omega)))
+
+
 @dataclass(frozen=True)
 class StructureCurve:
     """A structure's response curve over a band: the traced branches, the runs from rest at
-    each frequency of the band's grid (``settled``: {"omega", "amplitudes": {point: m}}, each
-    point's largest abs(x) over the last quarter of ``warmup`` periods) and notes."""
+    each frequency of the band's grid (``settled``: {"omega", "periods", "amplitudes": {point:
+    m}}, each point's largest abs(x) over the run's last KEPT periods) and notes."""
 
     branches: list[StructureBranch]
     settled: list[dict[str, Any]]
@@ -476,10 +497,12 @@ class StructureCurve:
 
 
 def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega_low: float,
-                    omega_high: float, step: float, stops: Any = (), warmup: int = 300,
+                    omega_high: float, step: float, stops: Any = (), warmup: Any = None,
                     base: Any = 0.0) -> StructureCurve:  # fmt: skip
-    """The structure's response curve over [omega_low, omega_high] [rad/s]: a run of ``warmup``
-    periods from rest at every frequency of the grid of ``step``; a branch continued from each
+    """The structure's response curve over [omega_low, omega_high] [rad/s]: a run from rest at
+    every frequency of the grid of ``step``, ``warmup`` periods of transient (None: until the
+    slowest mode's free transient has fallen to SETTLED, :func:`settling_periods`) and KEPT
+    periods read for the largest displacements; a branch continued from each
     end of the band (steps up to ``step``), each started from the orbit the run there settles
     on, of the fewest periods it comes back after (1 to 8, to 1e-6 of the state); and the
     period-doubled branch of each period doubling they locate (:func:`doubled_branch`).  The
@@ -498,11 +521,15 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
         grid = np.append(grid, omega_high)
     runs = {}
     settled = []
+    if warmup is not None:
+        warmup = whole_number("warmup", warmup, 0)
     for w in grid:
-        run = simulate_structure(*args, float(w), periods=warmup, stops=stops,
+        waited = settling_periods(structure, float(w)) if warmup is None else warmup
+        run = simulate_structure(*args, float(w), periods=waited + KEPT, stops=stops,
                                  base=_base_at(base, float(w)))  # fmt: skip
         runs[float(w)] = run
-        settled.append({"omega": float(w), "amplitudes": run.amplitudes(0.75)})
+        settled.append({"omega": float(w), "periods": waited + KEPT,
+                        "amplitudes": run.amplitudes(waited / (waited + KEPT))})  # fmt: skip
     for w0, w1 in ((omega_low, omega_high), (omega_high, omega_low)):
         start = runs[float(grid[0] if w0 == omega_low else grid[-1])]
         s = start.final_state[1 : 1 + n]
@@ -512,7 +539,7 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
             if np.linalg.norm(back.final_state[1 : 1 + n] - s) <= 1e-6 * np.linalg.norm(s):
                 break
         else:
-            notes.append(f"at Ω {w0:.6g} rad/s the motion {warmup} periods from rest is not an "
+            notes.append(f"at Ω {w0:.6g} rad/s the motion {len(start.period_max)} periods from rest is not an "
                          "orbit of up to 8 periods (quasi-periodic or chaotic): no branch from "
                          "there")  # fmt: skip
             continue
