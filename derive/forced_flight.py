@@ -233,6 +233,72 @@ def derive() -> Board:
         )
         d = sp.Piecewise((lim, at_resonance), (g.diff(W), True))
         board.derivatives(k, ("Omega",), given={"Omega": d})
+    # --- the flight in its own time: its coefficients once, its values at many t -------------
+    # An event-driven run evaluates one flight at many times (an impact search's steps, their
+    # refinement, the periods' maxima), and a structure's modes are all driven at one Ω.  In the
+    # five functions of t that Eq. F1 is made of,
+    #   x(t) = a·cos Ωt + b·sin Ωt + e^(−σt)·(c·cos ω_d t + s·sin ω_d t),
+    # and ẋ(t) in the same five with its own a, b, c, s, every coefficient is a constant of the
+    # flight: a run computes them once a flight and then, at each t, two cosines, two sines
+    # and an exponential (cos Ωt and sin Ωt shared by the modes) instead of Eq. F1's ten.
+    cW, sW, cD, sD, eD = sp.symbols("cW sW cD sD eD", real=True)
+    five = {sp.cos(W * t): cW, sp.sin(W * t): sW, sp.cos(wd * t): cD, sp.sin(wd * t): sD,
+            sp.exp(-sigma * t): eD}  # fmt: skip
+    form_args = (aM, aK, aC, aF, aXb, aW, aphi, ax, axd)
+    form_parts = []
+    for what, expr, lhs, unit, size in (
+        ("displacement", general, "x", "m", (amp_s, amp_d)),
+        ("velocity", general.diff(t), r"\dot{x}", "m/s", (amp_s * W, amp_d * sp.sqrt(K / M))),
+    ):
+        # cos(Ωt + φ) and sin(Ωt + φ) split by the angle-sum formulas; then no t is left
+        in_five = sp.expand_trig(expr).subs(five)
+        coefficients = {
+            "a": in_five.diff(cW).subs({cW: 0, sW: 0, eD: 0}),
+            "b": in_five.diff(sW).subs({cW: 0, sW: 0, eD: 0}),
+            "c": in_five.diff(eD).diff(cD).subs({cD: 0, sD: 0}),
+            "s": in_five.diff(eD).diff(sD).subs({cD: 0, sD: 0}),
+        }
+        rebuilt = (coefficients["a"] * cW + coefficients["b"] * sW
+                   + eD * (coefficients["c"] * cD + coefficients["s"] * sD))  # fmt: skip
+        sample = {M: sp.Rational(13, 10), K: 900, C: sp.Rational(3, 10), F0: 2,
+                  Xb: sp.Rational(1, 1000), W: 27, phi: sp.Rational(3, 10),
+                  x0: sp.Rational(1, 100), xd0: sp.Rational(1, 5), t: sp.Rational(7, 10)}  # fmt: skip
+        back = rebuilt.subs({cW: sp.cos(W * t), sW: sp.sin(W * t), cD: sp.cos(wd * t),
+                             sD: sp.sin(wd * t), eD: sp.exp(-sigma * t)})  # fmt: skip
+        board.check(
+            f"the flight's {what} is a·cos Ωt + b·sin Ωt + e^(−σt)(c·cos ω_d t + s·sin ω_d t) "
+            "with coefficients free of t",
+            "F1",
+            not in_five.has(t)
+            and all(not v.has(t, cW, sW, cD, sD, eD) for v in coefficients.values())
+            and abs(sp.N((back - expr).subs(sample), 60)) < sp.Float(1e-50),
+        )
+        for part, value in coefficients.items():
+            steady = part in "ab"
+            form_parts.append(board.kernel(
+                name=f"flight_{what}_{part}",
+                args=form_args,
+                expr=value,
+                returns=(f"Coefficient {part} of the flight's {what} "
+                         + ("(of cos Ωt" if part == "a" else "(of sin Ωt" if part == "b"
+                            else "(of e^(−σt)cos ω_d t" if part == "c"
+                            else "(of e^(−σt)sin ω_d t")
+                         + ", t since the flight began; off the undamped resonance)"),
+                unit=unit,
+                equation="F1",
+                lhs=f"{part}_{{{lhs}}}",
+                magnitude=size[0] if steady else size[1],
+            ))  # fmt: skip
+    for name, value, what, unit in ((
+            "flight_decay_rate", sigma, "Decay rate σ = C/(2M) of the flight's free part", "1/s"), (
+            "flight_damped_frequency", wd, "Damped frequency ω_d of the flight's free part",
+            "rad/s")):  # fmt: skip
+        form_parts.append(board.kernel(name=name, args=form_args, expr=value, returns=what,
+                                       unit=unit, equation="F1",
+                                       lhs=r"\sigma" if "decay" in name else r"\omega_d"))  # fmt: skip
+    board.bundle("flight_form", form_parts,
+                 "The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ "
+                 "and ω_d")  # fmt: skip
     for name, coefficient, which in (
         ("steady_cosine", A_value, "cos"),
         ("steady_sine", B_value, "sin"),

@@ -105,8 +105,9 @@ def test_two_identical_compliant_dampers_are_one_of_twice_the_mass_and_law():
     together and equal one damper of twice the mass with twice the contact law (k_hz and c1
     doubled), over three periods of the three-mode cantilever: contact onsets to 1e-10 s (the
     issue's bound), the final modal state to 1e-9 of each block's scale (the two runs take their
-    own steps, each to rtol 1e-13, over some hundred steps a contact: measured 1.9e-10).  The
-    pair stays alike to the bit: the same operations on the same numbers."""
+    own steps, each to rtol 1e-13, over some hundred steps a contact: measured 5.5e-10), and the
+    masses' displacement to 1e-9 of the tip's largest (measured 8.3e-10).  The pair stays alike
+    to the bit: the same operations on the same numbers."""
     s = beam_structure(**BEAM, points={"tip": 1.0}, modes=3, zeta=0.01)
     one = {"at": "tip", "m": 0.05, "gap": "10 mm", "contact": "hertz", "k_hz": 1e8, "c1": 5.0}
     pair = dampers(s, [{"name": "a", **one}, {"name": "b", **one}])
@@ -124,7 +125,8 @@ def test_two_identical_compliant_dampers_are_one_of_twice_the_mass_and_law():
         assert np.max(np.abs(f2[block] - f1[block])) < 1e-9 * scale
     y = 1 + 2 * N
     assert f2[y] == f2[y + 1] and f2[y + 2] == f2[y + 3]  # alike to the bit
-    assert abs(f2[y] - f1[y]) < 1e-9 * 5e-3  # of the half clearance
+    # of the scale the mass moves over: the tip's largest displacement, as the blocks' own
+    assert abs(f2[y] - f1[y]) < 1e-9 * r1.amplitudes(0.0)["tip"]
     assert abs(f2[y + 2] - f1[y + 1]) < 1e-9 * abs(f1[y + 1])
     assert r2.energy["relative_residual"] < 1e-10
 

@@ -1537,6 +1537,256 @@ static void check_forced_flight_forced_velocity_d_Omega(void)
     }
 }
 
+/* forced_flight.flight_displacement_a: Coefficient a of the flight's displacement (of cos Ωt, t since the flight... [m] */
+static void check_forced_flight_flight_displacement_a(void)
+{
+    static const double expected[3] = { -0.17371712549422857, -0.00014604732126628048, 0.000732368720220574 };
+    static const double scale[3] = { 0.4127805392794435, 0.007572506903946617, 0.001800046161128193 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_displacement_a", i, symimpact_forced_flight_flight_displacement_a(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_displacement_a_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_displacement_a_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.flight_displacement_b: Coefficient b of the flight's displacement (of sin Ωt, t since the flight... [m] */
+static void check_forced_flight_flight_displacement_b(void)
+{
+    static const double expected[3] = { 0.16423664670427038, 0.007425023374585129, 0.0007768984331722654 };
+    static const double scale[3] = { 0.4033000604894853, 0.014851482957265466, 0.0018445758740798844 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_displacement_b", i, symimpact_forced_flight_flight_displacement_b(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_displacement_b_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_displacement_b_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.flight_displacement_c: Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the... [m] */
+static void check_forced_flight_flight_displacement_c(void)
+{
+    static const double expected[3] = { 0.18089510549422858, -0.0054979926787337196, 0.0008015712797794259 };
+    static const double scale[3] = { 0.5546624670730591, 0.011213635651874311, 0.013663606067238852 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_displacement_c", i, symimpact_forced_flight_flight_displacement_c(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_displacement_c_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_displacement_c_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.flight_displacement_s: Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the... [m] */
+static void check_forced_flight_flight_displacement_s(void)
+{
+    static const double expected[3] = { -0.32707644578879747, -0.0015622583336317444, 0.012837033238145378 };
+    static const double scale[3] = { 0.700843807367628, 0.007277901306772336, 0.0256990680256048 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_displacement_s", i, symimpact_forced_flight_flight_displacement_s(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_displacement_s_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_displacement_s_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.flight_velocity_a: Coefficient a of the flight's velocity (of cos Ωt, t since the flight began;... [m/s] */
+static void check_forced_flight_flight_velocity_a(void)
+{
+    static const double expected[3] = { 0.34050527014609555, 1.0092685772606074, 0.006923501304869941 };
+    static const double scale[3] = { 0.8361458834104302, 2.0187323754151802, 0.016438343708555188 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_velocity_a", i, symimpact_forced_flight_flight_velocity_a(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_velocity_a_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_velocity_a_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.flight_velocity_b: Coefficient b of the flight's velocity (of sin Ωt, t since the flight began;... [m/s] */
+static void check_forced_flight_flight_velocity_b(void)
+{
+    static const double expected[3] = { 0.36016076760216437, 0.019851920285082973, -0.006526664971364095 };
+    static const double scale[3] = { 0.855801380866499, 1.0293157184396557, 0.016041507375049342 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_velocity_b", i, symimpact_forced_flight_flight_velocity_b(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_velocity_b_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_velocity_b_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.flight_velocity_c: Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the... [m/s] */
+static void check_forced_flight_flight_velocity_c(void)
+{
+    static const double expected[3] = { -0.7488422701460956, -1.8259425772606075, 0.7680654986951301 };
+    static const double scale[3] = { 1.603759188058508, 8.51236351476362, 1.5376298598802471 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_velocity_c", i, symimpact_forced_flight_flight_velocity_c(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_velocity_c_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_velocity_c_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.flight_velocity_s: Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the... [m/s] */
+static void check_forced_flight_flight_velocity_s(void)
+{
+    static const double expected[3] = { -0.41245386526895417, 6.432274765432954, -0.04800724654110455 };
+    static const double scale[3] = { 1.2673707831813665, 13.118695702935966, 0.8175716077262216 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_velocity_s", i, symimpact_forced_flight_flight_velocity_s(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_velocity_s_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_velocity_s_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.flight_decay_rate: Decay rate σ = C/(2M) of the flight's free part [1/s] */
+static void check_forced_flight_flight_decay_rate(void)
+{
+    static const double expected[3] = { 0.0039939083944061406, 0.3016946732928096, 0.003695627220972489 };
+    static const double scale[3] = { 0.0039939083944061406, 0.3016946732928096, 0.003695627220972489 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_decay_rate", i, symimpact_forced_flight_flight_decay_rate(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_decay_rate_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_decay_rate_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* forced_flight.flight_damped_frequency: Damped frequency ω_d of the flight's free part [rad/s] */
+static void check_forced_flight_flight_damped_frequency(void)
+{
+    static const double expected[3] = { 2.287293387518456, 1169.845763035236, 59.8322405773203 };
+    static const double scale[3] = { 2.287293387518456, 1169.845763035236, 59.8322405773203 };
+    static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+    static const double a_K[3] = { 144.629, 661467, 30252.6 };
+    static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+    static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+    static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+    static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+    static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+    static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+    static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_damped_frequency", i, symimpact_forced_flight_flight_damped_frequency(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i]), expected[i], scale[i]);
+    }
+    symimpact_forced_flight_flight_damped_frequency_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_forced_flight_flight_damped_frequency_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* forced_flight.steady_cosine: Coefficient of cos(Ωt + φ) in the steady solution of the primary [m] */
 static void check_forced_flight_steady_cosine(void)
 {
@@ -4110,6 +4360,224 @@ static void check_forced_flight_forced_transition(void)
     }
 }
 
+/* forced_flight.flight_form: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_forced_flight_flight_form(void)
+{
+    double out[10];
+    double rows[10 * 3];
+    int i;
+    {
+        static const double expected[3] = { -0.17371712549422857, -0.00014604732126628048, 0.000732368720220574 };
+        static const double scale[3] = { 0.4127805392794435, 0.007572506903946617, 0.001800046161128193 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[0]", i, rows[10 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.16423664670427038, 0.007425023374585129, 0.0007768984331722654 };
+        static const double scale[3] = { 0.4033000604894853, 0.014851482957265466, 0.0018445758740798844 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[1]", i, rows[10 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.18089510549422858, -0.0054979926787337196, 0.0008015712797794259 };
+        static const double scale[3] = { 0.5546624670730591, 0.011213635651874311, 0.013663606067238852 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[2]", i, rows[10 * i + 2], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.32707644578879747, -0.0015622583336317444, 0.012837033238145378 };
+        static const double scale[3] = { 0.700843807367628, 0.007277901306772336, 0.0256990680256048 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[3]", i, out[3], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[3]", i, rows[10 * i + 3], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.34050527014609555, 1.0092685772606074, 0.006923501304869941 };
+        static const double scale[3] = { 0.8361458834104302, 2.0187323754151802, 0.016438343708555188 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[4]", i, out[4], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[4]", i, rows[10 * i + 4], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.36016076760216437, 0.019851920285082973, -0.006526664971364095 };
+        static const double scale[3] = { 0.855801380866499, 1.0293157184396557, 0.016041507375049342 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[5]", i, out[5], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[5]", i, rows[10 * i + 5], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.7488422701460956, -1.8259425772606075, 0.7680654986951301 };
+        static const double scale[3] = { 1.603759188058508, 8.51236351476362, 1.5376298598802471 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[6]", i, out[6], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[6]", i, rows[10 * i + 6], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -0.41245386526895417, 6.432274765432954, -0.04800724654110455 };
+        static const double scale[3] = { 1.2673707831813665, 13.118695702935966, 0.8175716077262216 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[7]", i, out[7], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[7]", i, rows[10 * i + 7], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.0039939083944061406, 0.3016946732928096, 0.003695627220972489 };
+        static const double scale[3] = { 0.0039939083944061406, 0.3016946732928096, 0.003695627220972489 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[8]", i, out[8], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[8]", i, rows[10 * i + 8], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 2.287293387518456, 1169.845763035236, 59.8322405773203 };
+        static const double scale[3] = { 2.287293387518456, 1169.845763035236, 59.8322405773203 };
+        static const double a_M[3] = { 27.6446, 0.483338, 8.45069 };
+        static const double a_K[3] = { 144.629, 661467, 30252.6 };
+        static const double a_C[3] = { 0.22082, 0.291641, 0.0624612 };
+        static const double a_F0[3] = { -7.08497, 5.83005, -1.25492 };
+        static const double a_X_b[3] = { 0.0063325, -0.00733501, -0.00100251 };
+        static const double a_Omega[3] = { 2.07326, 135.928, 8.91172 };
+        static const double a_phi[3] = { 0.775565, 1.55113, 2.3267 };
+        static const double a_x0[3] = { 0.00717798, -0.00564404, 0.00153394 };
+        static const double a_xdot0[3] = { -0.408337, -0.816674, 0.774989 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_forced_flight_flight_form(a_M[i], a_K[i], a_C[i], a_F0[i], a_X_b[i], a_Omega[i], a_phi[i], a_x0[i], a_xdot0[i], out);
+            check("symimpact_forced_flight_flight_form[9]", i, out[9], expected[i], scale[i]);
+        }
+        symimpact_forced_flight_flight_form_batch(3, a_M, a_K, a_C, a_F0, a_X_b, a_Omega, a_phi, a_x0, a_xdot0, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_forced_flight_flight_form_batch[9]", i, rows[10 * i + 9], expected[i], scale[i]);
+        }
+    }
+}
+
 /* rigid_impact.velocities_after_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
 static void check_rigid_impact_velocities_after_and_derivatives(void)
 {
@@ -4754,6 +5222,16 @@ int main(void)
     check_forced_flight_forced_velocity_d_phi();
     check_forced_flight_forced_displacement_d_Omega();
     check_forced_flight_forced_velocity_d_Omega();
+    check_forced_flight_flight_displacement_a();
+    check_forced_flight_flight_displacement_b();
+    check_forced_flight_flight_displacement_c();
+    check_forced_flight_flight_displacement_s();
+    check_forced_flight_flight_velocity_a();
+    check_forced_flight_flight_velocity_b();
+    check_forced_flight_flight_velocity_c();
+    check_forced_flight_flight_velocity_s();
+    check_forced_flight_flight_decay_rate();
+    check_forced_flight_flight_damped_frequency();
     check_forced_flight_steady_cosine();
     check_forced_flight_steady_sine();
     check_forced_flight_linear_amplitude();
@@ -4858,10 +5336,11 @@ int main(void)
     check_closed_forms_linear_contact_duration_and_derivatives();
     check_forced_flight_forced_state();
     check_forced_flight_forced_transition();
+    check_forced_flight_flight_form();
     check_rigid_impact_velocities_after_and_derivatives();
     check_periodic_orbit_phase_residual_and_derivatives();
     check_slow_flow_clearance_for_response_and_derivatives();
     check_sampled_load_ramp_state();
-    printf("symimpact: %ld checks of 165 kernels, 8 bundles and 5 iterations, %ld failed\n", checks, failures);
+    printf("symimpact: %ld checks of 175 kernels, 9 bundles and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1706,6 +1706,224 @@ void symimpact_forced_flight_forced_velocity_d_Omega_batch(size_t n, const doubl
     }
 }
 
+/* Eq. F1: a_{x} = \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} */
+double symimpact_forced_flight_flight_displacement_a(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(C, 2)*_x0;
+    const double _x2 = K - M*_x0;
+    const double _x3 = 1.0/(_x1 + pow(_x2, 2));
+    const double _x4 = F0 + K*X_b;
+    return _x3*(X_b*_x1 + _x2*_x4)*cos(phi) + _x3*(-C*Omega*X_b*_x2 + C*Omega*_x4)*sin(phi);
+}
+
+void symimpact_forced_flight_flight_displacement_a_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_displacement_a(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: b_{x} = - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} */
+double symimpact_forced_flight_flight_displacement_b(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(C, 2)*_x0;
+    const double _x2 = K - M*_x0;
+    const double _x3 = 1.0/(_x1 + pow(_x2, 2));
+    const double _x4 = F0 + K*X_b;
+    return -_x3*(X_b*_x1 + _x2*_x4)*sin(phi) + _x3*(-C*Omega*X_b*_x2 + C*Omega*_x4)*cos(phi);
+}
+
+void symimpact_forced_flight_flight_displacement_b_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_displacement_b(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: c_{x} = x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} */
+double symimpact_forced_flight_flight_displacement_c(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)xdot0;
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(C, 2)*_x0;
+    const double _x2 = K - M*_x0;
+    const double _x3 = 1.0/(_x1 + pow(_x2, 2));
+    const double _x4 = F0 + K*X_b;
+    return -_x3*(X_b*_x1 + _x2*_x4)*cos(phi) - _x3*(-C*Omega*X_b*_x2 + C*Omega*_x4)*sin(phi) + x0;
+}
+
+void symimpact_forced_flight_flight_displacement_c_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_displacement_c(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: s_{x} = \frac{\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}}{\sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} */
+double symimpact_forced_flight_flight_displacement_s(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    const double _x0 = 1.0/M;
+    const double _x1 = pow(C, 2);
+    const double _x2 = sin(phi);
+    const double _x3 = pow(Omega, 2);
+    const double _x4 = _x1*_x3;
+    const double _x5 = K - M*_x3;
+    const double _x6 = 1.0/(_x4 + pow(_x5, 2));
+    const double _x7 = F0 + K*X_b;
+    const double _x8 = _x6*(X_b*_x4 + _x5*_x7);
+    const double _x9 = cos(phi);
+    const double _x10 = _x6*(-C*Omega*X_b*_x5 + C*Omega*_x7);
+    return ((1.0/2.0)*C*_x0*(-_x10*_x2 - _x8*_x9 + x0) - Omega*_x10*_x9 + Omega*_x2*_x8 + xdot0)/sqrt(K*_x0 - 1.0/4.0*_x1/pow(M, 2));
+}
+
+void symimpact_forced_flight_flight_displacement_s_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_displacement_s(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: a_{\dot{x}} = - \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} */
+double symimpact_forced_flight_flight_velocity_a(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(C, 2)*_x0;
+    const double _x2 = F0 + K*X_b;
+    const double _x3 = K - M*_x0;
+    const double _x4 = 1.0/(_x1 + pow(_x3, 2));
+    return -Omega*_x4*(X_b*_x1 + _x2*_x3)*sin(phi) + Omega*_x4*(-C*Omega*X_b*_x3 + C*Omega*_x2)*cos(phi);
+}
+
+void symimpact_forced_flight_flight_velocity_a_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_velocity_a(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: b_{\dot{x}} = - \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} */
+double symimpact_forced_flight_flight_velocity_b(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)x0;
+    (void)xdot0;
+    const double _x0 = F0 + K*X_b;
+    const double _x1 = pow(Omega, 2);
+    const double _x2 = K - M*_x1;
+    const double _x3 = pow(C, 2)*_x1;
+    const double _x4 = Omega/(pow(_x2, 2) + _x3);
+    return -_x4*(X_b*_x3 + _x0*_x2)*cos(phi) - _x4*(-C*Omega*X_b*_x2 + C*Omega*_x0)*sin(phi);
+}
+
+void symimpact_forced_flight_flight_velocity_b_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_velocity_b(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: c_{\dot{x}} = \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0} */
+double symimpact_forced_flight_flight_velocity_c(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)x0;
+    const double _x0 = pow(Omega, 2);
+    const double _x1 = pow(C, 2)*_x0;
+    const double _x2 = F0 + K*X_b;
+    const double _x3 = K - M*_x0;
+    const double _x4 = Omega/(_x1 + pow(_x3, 2));
+    return _x4*(X_b*_x1 + _x2*_x3)*sin(phi) - _x4*(-C*Omega*X_b*_x3 + C*Omega*_x2)*cos(phi) + xdot0;
+}
+
+void symimpact_forced_flight_flight_velocity_c_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_velocity_c(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: s_{\dot{x}} = - \frac{C \left(\frac{C \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right)}{2 M} + \frac{\Omega \left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\Omega \left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} + \dot{x}_{0}\right)}{2 M \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}}} - \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} \left(x_{0} - \frac{\left(C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)\right) \cos{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} - \frac{\left(- C \Omega X_{b} \left(K - M \Omega^{2}\right) + C \Omega \left(F_{0} + K X_{b}\right)\right) \sin{\left(\phi \right)}}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}}\right) */
+double symimpact_forced_flight_flight_velocity_s(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    const double _x0 = 1.0/M;
+    const double _x1 = pow(C, 2);
+    const double _x2 = sqrt(K*_x0 - 1.0/4.0*_x1/pow(M, 2));
+    const double _x3 = sin(phi);
+    const double _x4 = pow(Omega, 2);
+    const double _x5 = _x1*_x4;
+    const double _x6 = K - M*_x4;
+    const double _x7 = 1.0/(_x5 + pow(_x6, 2));
+    const double _x8 = F0 + K*X_b;
+    const double _x9 = _x7*(-C*Omega*X_b*_x6 + C*Omega*_x8);
+    const double _x10 = cos(phi);
+    const double _x11 = _x7*(X_b*_x5 + _x6*_x8);
+    const double _x12 = -_x10*_x11 - _x3*_x9 + x0;
+    const double _x13 = (1.0/2.0)*C*_x0;
+    return -_x12*_x2 - _x13*(-Omega*_x10*_x9 + Omega*_x11*_x3 + _x12*_x13 + xdot0)/_x2;
+}
+
+void symimpact_forced_flight_flight_velocity_s_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_velocity_s(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \sigma = \frac{C}{2 M} */
+double symimpact_forced_flight_flight_decay_rate(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)K;
+    (void)F0;
+    (void)X_b;
+    (void)Omega;
+    (void)phi;
+    (void)x0;
+    (void)xdot0;
+    return (1.0/2.0)*C/M;
+}
+
+void symimpact_forced_flight_flight_decay_rate_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_decay_rate(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
+/* Eq. F1: \omega_d = \sqrt{- \frac{C^{2}}{4 M^{2}} + \frac{K}{M}} */
+double symimpact_forced_flight_flight_damped_frequency(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0)
+{
+    (void)F0;
+    (void)X_b;
+    (void)Omega;
+    (void)phi;
+    (void)x0;
+    (void)xdot0;
+    return sqrt(-1.0/4.0*pow(C, 2)/pow(M, 2) + K/M);
+}
+
+void symimpact_forced_flight_flight_damped_frequency_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_forced_flight_flight_damped_frequency(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i]);
+    }
+}
+
 /* Eq. F1: A = \frac{C^{2} \Omega^{2} X_{b} + \left(F_{0} + K X_{b}\right) \left(K - M \Omega^{2}\right)}{C^{2} \Omega^{2} + \left(K - M \Omega^{2}\right)^{2}} */
 double symimpact_forced_flight_steady_cosine(double M, double K, double C, double F0, double X_b, double Omega)
 {
@@ -1904,6 +2122,51 @@ void symimpact_forced_flight_forced_transition_batch(size_t n, const double *res
     size_t i;
     for (i = 0; i < n; ++i) {
         symimpact_forced_flight_forced_transition(t[i], M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i], out + 6 * i);
+    }
+}
+
+/* The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d (symimpact_forced_flight_flight_displacement_a, symimpact_forced_flight_flight_displacement_b, symimpact_forced_flight_flight_displacement_c, symimpact_forced_flight_flight_displacement_s, symimpact_forced_flight_flight_velocity_a, symimpact_forced_flight_flight_velocity_b, symimpact_forced_flight_flight_velocity_c, symimpact_forced_flight_flight_velocity_s, symimpact_forced_flight_flight_decay_rate, symimpact_forced_flight_flight_damped_frequency) */
+void symimpact_forced_flight_flight_form(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0, double *restrict out)
+{
+    const double _x0 = F0 + K*X_b;
+    const double _x1 = pow(Omega, 2);
+    const double _x2 = K - M*_x1;
+    const double _x3 = -C*Omega*X_b*_x2 + C*Omega*_x0;
+    const double _x4 = pow(C, 2);
+    const double _x5 = _x1*_x4;
+    const double _x6 = 1.0/(pow(_x2, 2) + _x5);
+    const double _x7 = _x6*sin(phi);
+    const double _x8 = _x3*_x7;
+    const double _x9 = X_b*_x5 + _x0*_x2;
+    const double _x10 = cos(phi);
+    const double _x11 = _x10*_x6;
+    const double _x12 = _x11*_x9;
+    const double _x13 = _x12 + _x8;
+    const double _x14 = _x7*_x9;
+    const double _x15 = -_x13 + x0;
+    const double _x16 = 1.0/M;
+    const double _x17 = sqrt(K*_x16 - 1.0/4.0*_x4/pow(M, 2));
+    const double _x18 = (1.0/2.0)*C*_x16;
+    const double _x19 = -Omega*_x11*_x3 + Omega*_x14;
+    const double _x20 = _x19 + xdot0;
+    const double _x21 = (_x15*_x18 + _x20)/_x17;
+    out[0] = _x13;
+    out[1] = _x10*_x3*_x6 - _x14;
+    out[2] = _x15;
+    out[3] = _x21;
+    out[4] = -_x19;
+    out[5] = -Omega*_x12 - Omega*_x8;
+    out[6] = _x20;
+    out[7] = -_x15*_x17 - _x18*_x21;
+    out[8] = _x18;
+    out[9] = _x17;
+}
+
+void symimpact_forced_flight_flight_form_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_forced_flight_flight_form(M[i], K[i], C[i], F0[i], X_b[i], Omega[i], phi[i], x0[i], xdot0[i], out + 10 * i);
     }
 }
 

@@ -745,6 +745,146 @@ program check_kernels
 [0.77033_dp, -0.459341_dp, 0.310989_dp])
     call check("forced_flight_forced_velocity_d_Omega", got, expected, scale)
 
+    ! forced_flight.flight_displacement_a
+    expected = [-0.17371712549422857_dp, -0.00014604732126628048_dp, 0.000732368720220574_dp]
+    scale = [0.4127805392794435_dp, 0.007572506903946617_dp, 0.001800046161128193_dp]
+    got = forced_flight_flight_displacement_a([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_displacement_a", got, expected, scale)
+
+    ! forced_flight.flight_displacement_b
+    expected = [0.16423664670427038_dp, 0.007425023374585129_dp, 0.0007768984331722654_dp]
+    scale = [0.4033000604894853_dp, 0.014851482957265466_dp, 0.0018445758740798844_dp]
+    got = forced_flight_flight_displacement_b([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_displacement_b", got, expected, scale)
+
+    ! forced_flight.flight_displacement_c
+    expected = [0.18089510549422858_dp, -0.0054979926787337196_dp, 0.0008015712797794259_dp]
+    scale = [0.5546624670730591_dp, 0.011213635651874311_dp, 0.013663606067238852_dp]
+    got = forced_flight_flight_displacement_c([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_displacement_c", got, expected, scale)
+
+    ! forced_flight.flight_displacement_s
+    expected = [-0.32707644578879747_dp, -0.0015622583336317444_dp, 0.012837033238145378_dp]
+    scale = [0.700843807367628_dp, 0.007277901306772336_dp, 0.0256990680256048_dp]
+    got = forced_flight_flight_displacement_s([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_displacement_s", got, expected, scale)
+
+    ! forced_flight.flight_velocity_a
+    expected = [0.34050527014609555_dp, 1.0092685772606074_dp, 0.006923501304869941_dp]
+    scale = [0.8361458834104302_dp, 2.0187323754151802_dp, 0.016438343708555188_dp]
+    got = forced_flight_flight_velocity_a([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_velocity_a", got, expected, scale)
+
+    ! forced_flight.flight_velocity_b
+    expected = [0.36016076760216437_dp, 0.019851920285082973_dp, -0.006526664971364095_dp]
+    scale = [0.855801380866499_dp, 1.0293157184396557_dp, 0.016041507375049342_dp]
+    got = forced_flight_flight_velocity_b([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_velocity_b", got, expected, scale)
+
+    ! forced_flight.flight_velocity_c
+    expected = [-0.7488422701460956_dp, -1.8259425772606075_dp, 0.7680654986951301_dp]
+    scale = [1.603759188058508_dp, 8.51236351476362_dp, 1.5376298598802471_dp]
+    got = forced_flight_flight_velocity_c([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_velocity_c", got, expected, scale)
+
+    ! forced_flight.flight_velocity_s
+    expected = [-0.41245386526895417_dp, 6.432274765432954_dp, -0.04800724654110455_dp]
+    scale = [1.2673707831813665_dp, 13.118695702935966_dp, 0.8175716077262216_dp]
+    got = forced_flight_flight_velocity_s([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_velocity_s", got, expected, scale)
+
+    ! forced_flight.flight_decay_rate
+    expected = [0.0039939083944061406_dp, 0.3016946732928096_dp, 0.003695627220972489_dp]
+    scale = [0.0039939083944061406_dp, 0.3016946732928096_dp, 0.003695627220972489_dp]
+    got = forced_flight_flight_decay_rate([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_decay_rate", got, expected, scale)
+
+    ! forced_flight.flight_damped_frequency
+    expected = [2.287293387518456_dp, 1169.845763035236_dp, 59.8322405773203_dp]
+    scale = [2.287293387518456_dp, 1169.845763035236_dp, 59.8322405773203_dp]
+    got = forced_flight_flight_damped_frequency([27.6446_dp, 0.483338_dp, 8.45069_dp], &
+[144.629_dp, 661467.0_dp, 30252.6_dp], &
+[0.22082_dp, 0.291641_dp, 0.0624612_dp], &
+[-7.08497_dp, 5.83005_dp, -1.25492_dp], &
+[0.0063325_dp, -0.00733501_dp, -0.00100251_dp], &
+[2.07326_dp, 135.928_dp, 8.91172_dp], &
+[0.775565_dp, 1.55113_dp, 2.3267_dp], &
+[0.00717798_dp, -0.00564404_dp, 0.00153394_dp], &
+[-0.408337_dp, -0.816674_dp, 0.774989_dp])
+    call check("forced_flight_flight_damped_frequency", got, expected, scale)
+
     ! forced_flight.steady_cosine
     expected = [-0.2390237686564484_dp, -0.007426459582678258_dp, -0.0010676774409069149_dp]
     scale = [0.4780871824416633_dp, 0.014852919165358594_dp, 0.002135354881814534_dp]
@@ -2115,6 +2255,176 @@ row)
     got(3) = row(6)
     call check("forced_flight_forced_transition(6)", got, expected, scale)
 
+    ! forced_flight.flight_form, part 1 (flight_displacement_a), at its own points
+    expected = [-0.17371712549422857_dp, -0.00014604732126628048_dp, 0.000732368720220574_dp]
+    scale = [0.4127805392794435_dp, 0.007572506903946617_dp, 0.001800046161128193_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(1)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(1)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(1)
+    call check("forced_flight_flight_form(1)", got, expected, scale)
+
+    ! forced_flight.flight_form, part 2 (flight_displacement_b), at its own points
+    expected = [0.16423664670427038_dp, 0.007425023374585129_dp, 0.0007768984331722654_dp]
+    scale = [0.4033000604894853_dp, 0.014851482957265466_dp, 0.0018445758740798844_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(2)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(2)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(2)
+    call check("forced_flight_flight_form(2)", got, expected, scale)
+
+    ! forced_flight.flight_form, part 3 (flight_displacement_c), at its own points
+    expected = [0.18089510549422858_dp, -0.0054979926787337196_dp, 0.0008015712797794259_dp]
+    scale = [0.5546624670730591_dp, 0.011213635651874311_dp, 0.013663606067238852_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(3)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(3)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(3)
+    call check("forced_flight_flight_form(3)", got, expected, scale)
+
+    ! forced_flight.flight_form, part 4 (flight_displacement_s), at its own points
+    expected = [-0.32707644578879747_dp, -0.0015622583336317444_dp, 0.012837033238145378_dp]
+    scale = [0.700843807367628_dp, 0.007277901306772336_dp, 0.0256990680256048_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(4)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(4)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(4)
+    call check("forced_flight_flight_form(4)", got, expected, scale)
+
+    ! forced_flight.flight_form, part 5 (flight_velocity_a), at its own points
+    expected = [0.34050527014609555_dp, 1.0092685772606074_dp, 0.006923501304869941_dp]
+    scale = [0.8361458834104302_dp, 2.0187323754151802_dp, 0.016438343708555188_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(5)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(5)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(5)
+    call check("forced_flight_flight_form(5)", got, expected, scale)
+
+    ! forced_flight.flight_form, part 6 (flight_velocity_b), at its own points
+    expected = [0.36016076760216437_dp, 0.019851920285082973_dp, -0.006526664971364095_dp]
+    scale = [0.855801380866499_dp, 1.0293157184396557_dp, 0.016041507375049342_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(6)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(6)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(6)
+    call check("forced_flight_flight_form(6)", got, expected, scale)
+
+    ! forced_flight.flight_form, part 7 (flight_velocity_c), at its own points
+    expected = [-0.7488422701460956_dp, -1.8259425772606075_dp, 0.7680654986951301_dp]
+    scale = [1.603759188058508_dp, 8.51236351476362_dp, 1.5376298598802471_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(7)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(7)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(7)
+    call check("forced_flight_flight_form(7)", got, expected, scale)
+
+    ! forced_flight.flight_form, part 8 (flight_velocity_s), at its own points
+    expected = [-0.41245386526895417_dp, 6.432274765432954_dp, -0.04800724654110455_dp]
+    scale = [1.2673707831813665_dp, 13.118695702935966_dp, 0.8175716077262216_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(8)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(8)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(8)
+    call check("forced_flight_flight_form(8)", got, expected, scale)
+
+    ! forced_flight.flight_form, part 9 (flight_decay_rate), at its own points
+    expected = [0.0039939083944061406_dp, 0.3016946732928096_dp, 0.003695627220972489_dp]
+    scale = [0.0039939083944061406_dp, 0.3016946732928096_dp, 0.003695627220972489_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(9)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(9)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(9)
+    call check("forced_flight_flight_form(9)", got, expected, scale)
+
+    ! forced_flight.flight_form, part 10 (flight_damped_frequency), at its own points
+    expected = [2.287293387518456_dp, 1169.845763035236_dp, 59.8322405773203_dp]
+    scale = [2.287293387518456_dp, 1169.845763035236_dp, 59.8322405773203_dp]
+    call forced_flight_flight_form(27.6446_dp, 144.629_dp, 0.22082_dp, -7.08497_dp, &
+0.0063325_dp, 2.07326_dp, 0.775565_dp, 0.00717798_dp, &
+-0.408337_dp, row)
+    got(1) = row(10)
+    call forced_flight_flight_form(0.483338_dp, 661467.0_dp, 0.291641_dp, 5.83005_dp, &
+-0.00733501_dp, 135.928_dp, 1.55113_dp, -0.00564404_dp, &
+-0.816674_dp, row)
+    got(2) = row(10)
+    call forced_flight_flight_form(8.45069_dp, 30252.6_dp, 0.0624612_dp, -1.25492_dp, &
+-0.00100251_dp, 8.91172_dp, 2.3267_dp, 0.00153394_dp, &
+0.774989_dp, row)
+    got(3) = row(10)
+    call check("forced_flight_flight_form(10)", got, expected, scale)
+
     ! rigid_impact.velocities_after_and_derivatives, part 1 (main_velocity_after), at its own points
     expected = [0.8987997928799252_dp, 0.5823619296499037_dp, -0.12467366836834094_dp]
     scale = [2.240546792879925_dp, 1.8988679296499038_dp, 0.35041666836834096_dp]
@@ -2550,7 +2860,7 @@ row)
     got(3) = row(2)
     call check("sampled_load_ramp_state(2)", got, expected, scale)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 165 kernels, 8 bundles and 5 iterations, ", &
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 175 kernels, 9 bundles and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

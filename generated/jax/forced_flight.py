@@ -29,11 +29,22 @@ __all__ = [
     "forced_velocity_d_phi",
     "forced_displacement_d_Omega",
     "forced_velocity_d_Omega",
+    "flight_displacement_a",
+    "flight_displacement_b",
+    "flight_displacement_c",
+    "flight_displacement_s",
+    "flight_velocity_a",
+    "flight_velocity_b",
+    "flight_velocity_c",
+    "flight_velocity_s",
+    "flight_decay_rate",
+    "flight_damped_frequency",
     "steady_cosine",
     "steady_sine",
     "linear_amplitude",
     "forced_state",
     "forced_transition",
+    "flight_form",
 ]
 
 
@@ -670,6 +681,231 @@ def forced_velocity_d_Omega(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 @jax.jit
+def flight_displacement_a(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Coefficient a of the flight's displacement (of cos Ωt, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega**2
+    _x1 = C**2*_x0
+    _x2 = K - M*_x0
+    _x3 = (_x1 + _x2**2)**(-1.0)
+    _x4 = F0 + K*X_b
+    return _x3*(X_b*_x1 + _x2*_x4)*jax.numpy.cos(phi) + _x3*(-C*Omega*X_b*_x2 + C*Omega*_x4)*jax.numpy.sin(phi)
+
+
+@jax.jit
+def flight_displacement_b(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Coefficient b of the flight's displacement (of sin Ωt, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega**2
+    _x1 = C**2*_x0
+    _x2 = K - M*_x0
+    _x3 = (_x1 + _x2**2)**(-1.0)
+    _x4 = F0 + K*X_b
+    return -_x3*(X_b*_x1 + _x2*_x4)*jax.numpy.sin(phi) + _x3*(-C*Omega*X_b*_x2 + C*Omega*_x4)*jax.numpy.cos(phi)
+
+
+@jax.jit
+def flight_displacement_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega**2
+    _x1 = C**2*_x0
+    _x2 = K - M*_x0
+    _x3 = (_x1 + _x2**2)**(-1.0)
+    _x4 = F0 + K*X_b
+    return -_x3*(X_b*_x1 + _x2*_x4)*jax.numpy.cos(phi) - _x3*(-C*Omega*X_b*_x2 + C*Omega*_x4)*jax.numpy.sin(phi) + x0
+
+
+@jax.jit
+def flight_displacement_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = M**(-1.0)
+    _x1 = C**2
+    _x2 = jax.numpy.sin(phi)
+    _x3 = Omega**2
+    _x4 = _x1*_x3
+    _x5 = K - M*_x3
+    _x6 = (_x4 + _x5**2)**(-1.0)
+    _x7 = F0 + K*X_b
+    _x8 = _x6*(X_b*_x4 + _x5*_x7)
+    _x9 = jax.numpy.cos(phi)
+    _x10 = _x6*(-C*Omega*X_b*_x5 + C*Omega*_x7)
+    return ((1/2)*C*_x0*(-_x10*_x2 - _x8*_x9 + x0) - Omega*_x10*_x9 + Omega*_x2*_x8 + xdot0)/jax.numpy.sqrt(K*_x0 - 1/4*_x1/M**2)
+
+
+@jax.jit
+def flight_velocity_a(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Coefficient a of the flight's velocity (of cos Ωt, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega**2
+    _x1 = C**2*_x0
+    _x2 = F0 + K*X_b
+    _x3 = K - M*_x0
+    _x4 = (_x1 + _x3**2)**(-1.0)
+    return -Omega*_x4*(X_b*_x1 + _x2*_x3)*jax.numpy.sin(phi) + Omega*_x4*(-C*Omega*X_b*_x3 + C*Omega*_x2)*jax.numpy.cos(phi)
+
+
+@jax.jit
+def flight_velocity_b(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Coefficient b of the flight's velocity (of sin Ωt, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = F0 + K*X_b
+    _x1 = Omega**2
+    _x2 = K - M*_x1
+    _x3 = C**2*_x1
+    _x4 = Omega/(_x2**2 + _x3)
+    return -_x4*(X_b*_x3 + _x0*_x2)*jax.numpy.cos(phi) - _x4*(-C*Omega*X_b*_x2 + C*Omega*_x0)*jax.numpy.sin(phi)
+
+
+@jax.jit
+def flight_velocity_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = Omega**2
+    _x1 = C**2*_x0
+    _x2 = F0 + K*X_b
+    _x3 = K - M*_x0
+    _x4 = Omega/(_x1 + _x3**2)
+    return _x4*(X_b*_x1 + _x2*_x3)*jax.numpy.sin(phi) - _x4*(-C*Omega*X_b*_x3 + C*Omega*_x2)*jax.numpy.cos(phi) + xdot0
+
+
+@jax.jit
+def flight_velocity_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    _x0 = M**(-1.0)
+    _x1 = C**2
+    _x2 = jax.numpy.sqrt(K*_x0 - 1/4*_x1/M**2)
+    _x3 = jax.numpy.sin(phi)
+    _x4 = Omega**2
+    _x5 = _x1*_x4
+    _x6 = K - M*_x4
+    _x7 = (_x5 + _x6**2)**(-1.0)
+    _x8 = F0 + K*X_b
+    _x9 = _x7*(-C*Omega*X_b*_x6 + C*Omega*_x8)
+    _x10 = jax.numpy.cos(phi)
+    _x11 = _x7*(X_b*_x5 + _x6*_x8)
+    _x12 = -_x10*_x11 - _x3*_x9 + x0
+    _x13 = (1/2)*C*_x0
+    return -_x12*_x2 - _x13*(-Omega*_x10*_x9 + Omega*_x11*_x3 + _x12*_x13 + xdot0)/_x2
+
+
+@jax.jit
+def flight_decay_rate(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Decay rate σ = C/(2M) of the flight's free part [1/s], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    return (1/2)*C/M
+
+
+@jax.jit
+def flight_damped_frequency(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""Damped frequency ω_d of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
+
+    ``M``: Main mass M [kg]
+    ``K``: Main stiffness K [N/m]
+    ``C``: Main damping C (underdamped: C < 2√(KM)) [N s/m]
+    ``F0``: Force amplitude F0 on the main mass [N]
+    ``X_b``: Base-motion amplitude X_b [m]
+    ``Omega``: Forcing frequency Ω [rad/s]
+    ``phi``: Forcing phase at t = 0, φ [rad]
+    ``x0``: Main-mass displacement at t = 0 [m]
+    ``xdot0``: Main-mass velocity at t = 0 [m/s]
+    """
+    return jax.numpy.sqrt(-1/4*C**2/M**2 + K/M)
+
+
+@jax.jit
 def steady_cosine(M, K, C, F0, X_b, Omega):
     r"""Coefficient of cos(Ωt + φ) in the steady solution of the primary [m], Eq. F1 (derived here, beyond the paper).
 
@@ -825,4 +1061,48 @@ def forced_transition(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
             jax.numpy.select([_x14,True], [_x10*_x13*_x4,-_x25*_x41 + _x26*_x29], default=jax.numpy.nan),
             t, M, K, C, F0, X_b, Omega, phi, x0, xdot0,
         )[:6]
+    )
+
+
+@jax.jit
+def flight_form(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
+    r"""The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d, Eq. F1 (derived here, beyond the paper): the tuple
+    (``flight_displacement_a``, ``flight_displacement_b``, ``flight_displacement_c``, ``flight_displacement_s``, ``flight_velocity_a``, ``flight_velocity_b``, ``flight_velocity_c``, ``flight_velocity_s``, ``flight_decay_rate``, ``flight_damped_frequency``), their common subexpressions computed once.
+    """
+    _x0 = F0 + K*X_b
+    _x1 = Omega**2
+    _x2 = K - M*_x1
+    _x3 = -C*Omega*X_b*_x2 + C*Omega*_x0
+    _x4 = C**2
+    _x5 = _x1*_x4
+    _x6 = (_x2**2 + _x5)**(-1.0)
+    _x7 = _x6*jax.numpy.sin(phi)
+    _x8 = _x3*_x7
+    _x9 = X_b*_x5 + _x0*_x2
+    _x10 = jax.numpy.cos(phi)
+    _x11 = _x10*_x6
+    _x12 = _x11*_x9
+    _x13 = _x12 + _x8
+    _x14 = _x7*_x9
+    _x15 = -_x13 + x0
+    _x16 = M**(-1.0)
+    _x17 = jax.numpy.sqrt(K*_x16 - 1/4*_x4/M**2)
+    _x18 = (1/2)*C*_x16
+    _x19 = -Omega*_x11*_x3 + Omega*_x14
+    _x20 = _x19 + xdot0
+    _x21 = (_x15*_x18 + _x20)/_x17
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            _x13,
+            _x10*_x3*_x6 - _x14,
+            _x15,
+            _x21,
+            -_x19,
+            -Omega*_x12 - Omega*_x8,
+            _x20,
+            -_x15*_x17 - _x18*_x21,
+            _x18,
+            _x17,
+            M, K, C, F0, X_b, Omega, phi, x0, xdot0,
+        )[:10]
     )

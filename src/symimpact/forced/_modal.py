@@ -3,8 +3,9 @@ rigid impacts, chatter and sticking (numba, cached).
 
 Between events everything is closed form.  While no mass sticks, mode i follows Step 8's forced
 flight (Eq. F1) with its own Mᵢ, Kᵢ = ωᵢ²Mᵢ, Cᵢ = 2ζᵢωᵢMᵢ and modal force Fᵢ = Σⱼ F₀ⱼφᵢ(j)
-(Step 15, item 1), through the one-mode engine's own functions (:mod:`symimpact.forced._rigid`);
-each impact mass k flies at constant speed.  An impact of damper k at its point aₖ applies Step
+(Step 15, item 1), written in the flight's own time (Step 8's ``flight_form``: its coefficients
+once a flight, then two trigonometric functions shared by the modes and three per mode at each
+time; :func:`_free_states`); each impact mass k flies at constant speed.  An impact of damper k at its point aₖ applies Step
 15's law (item 4, Eq. F7): the impulse P = (1 + e)·μ·(ẏ − ẋₐ), μ the reduced mass of m and the
 effective mass (Σφᵢ(a)²/Mᵢ)⁻¹, enters each mode as q̇ᵢ += φᵢ(a)P/Mᵢ and leaves the mass as
 ẏ −= P/m.  One mode with φ = 1 is Step 9's impact (Eq. F2).
@@ -62,6 +63,7 @@ from numba import njit
 
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
 from ..free._stepper import secant_point
+from ..generated import forced_flight as _fl
 from ._rigid import (
     _GL_W,
     _GL_X,
@@ -96,6 +98,14 @@ from ._rigid import (
     _xvf,
     restitution,
 )
+
+#: Eq. F1 in the flight's own time (Step 8's ``flight_form``): a, b, c, s of x, then of ẋ, σ, ω_d.
+_form = njit(cache=True)(_fl.flight_form_scalar)
+#: A flight's form cache (:func:`_free_states`), one per configuration: row i holds mode i's ten
+#: coefficients, its start (qᵢ, q̇ᵢ) and whether the form has them (0: an undamped mode driven
+#: at its own frequency, where Eq. F1 grows like t and has no such form); row N holds the
+#: flight's start time and whether the cache is filled.
+FORM_COLS = 13
 
 #: Run status beside OK, TOO_MANY_EVENTS and INTERRUPTED: the stuck structure has no harmonic
 #: response (undamped, driven at one of its own frequencies) or no eigen-decomposition.
@@ -362,7 +372,8 @@ def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, 
     vecs = np.zeros((2, N))
     vecs[0] = fs
     vecs[1] = qs
-    return mats, cplx, n2, vecs, h, ok, decoupled, masses, wmax, wlow
+    form = np.zeros((N + 1, FORM_COLS))  # :func:`_free_states`'s cache, empty
+    return mats, cplx, n2, vecs, h, ok, decoupled, masses, wmax, wlow, form
 
 
 @njit(cache=True, inline="always")
@@ -468,16 +479,50 @@ def _cmv(A, x):
 
 
 @njit(cache=True, inline="always")
-def _free_states(pm, t0, q0, v0, tau, q, v):
+def _free_states(pm, form, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) by Eq. F1 a time τ after (q0, v0) at t0, written into q and v, while
     the modes are uncoupled (:func:`_states`; the searches' and the ledger's innermost loops call
     this one directly: the configuration tuple taken into an inlined function costs a
-    reference count per array at each call)."""
-    for i in range(pm.shape[0]):  # :func:`symimpact.forced._rigid._state` on row i, in place
-        W = pm[i, P_W]
-        th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
-        M, K, C, F0, Xb = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB]
-        q[i], v[i] = _xvf(tau, M, K, C, F0, Xb, W, th, q0[i], v0[i])
+    reference count per array at each call).  A search evaluates one flight at many τ: the
+    flight's form (Step 8's ``flight_form``, x = a·cos Ωτ + b·sin Ωτ + e^(−στ)(c·cos ω_dτ +
+    s·sin ω_dτ) and ẋ alike) is computed once per flight into ``form`` (the configuration's
+    cache, keyed by t0, q0 and v0), and each τ then costs cos Ωτ and sin Ωτ, shared by the
+    modes, and e^(−στ), cos ω_dτ and sin ω_dτ per mode."""
+    N = pm.shape[0]
+    fresh = form[N, 1] == 1.0 and form[N, 0] == t0
+    if fresh:
+        for i in range(N):
+            if form[i, 10] != q0[i] or form[i, 11] != v0[i]:
+                fresh = False
+                break
+    if not fresh:
+        for i in range(N):
+            W = pm[i, P_W]
+            th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
+            M, K, C, F0, Xb = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB]
+            c = _form(M, K, C, F0, Xb, W, th, q0[i], v0[i])
+            ok = True
+            for j in range(10):
+                form[i, j] = c[j]
+                ok = ok and math.isfinite(c[j])
+            form[i, 10] = q0[i]
+            form[i, 11] = v0[i]
+            form[i, 12] = 1.0 if ok else 0.0
+        form[N, 0] = t0
+        form[N, 1] = 1.0
+    W = pm[0, P_W]
+    cw, sw = math.cos(W * tau), math.sin(W * tau)
+    for i in range(N):
+        f = form[i]
+        if f[12] == 0.0:  # :func:`symimpact.forced._rigid._state` on row i: Eq. F1's own branch
+            th = (pm[i, P_W] * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
+            q[i], v[i] = _xvf(tau, pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0],
+                              pm[i, P_XB], pm[i, P_W], th, q0[i], v0[i])  # fmt: skip
+            continue
+        ex = math.exp(-f[8] * tau)
+        cd, sd = math.cos(f[9] * tau), math.sin(f[9] * tau)
+        q[i] = f[0] * cw + f[1] * sw + ex * (f[2] * cd + f[3] * sd)
+        v[i] = f[4] * cw + f[5] * sw + ex * (f[6] * cd + f[7] * sd)
 
 
 @njit(cache=True, inline="always")
@@ -485,7 +530,7 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v: Eq. F1 per mode
     while no mass sticks, else the stuck structure's closed form (module text)."""
     if cfg[6]:
-        _free_states(pm, t0, q0, v0, tau, q, v)
+        _free_states(pm, cfg[10], t0, q0, v0, tau, q, v)
         return
     _held_states(pm, cfg, _coefficients(pm, cfg, t0, q0, v0), t0, tau, q, v)
 
@@ -520,7 +565,7 @@ def _states_from(pm, cfg, c, t0, q0, v0, tau, q, v):
     """:func:`_states` with the flight's amplitudes ``c`` (:func:`_flight_amplitudes`) computed
     once: the same numbers, without the 2N × 2N product per evaluation."""
     if cfg[6]:
-        _free_states(pm, t0, q0, v0, tau, q, v)
+        _free_states(pm, cfg[10], t0, q0, v0, tau, q, v)
     else:
         _held_states(pm, cfg, c, t0, tau, q, v)
 
@@ -675,7 +720,7 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, xb):
         H = min(H, span - tau)
         tb = tau + H
         if dec:
-            _free_states(pm, t0, q0, v0, tb, q, v)
+            _free_states(pm, cfg[10], t0, q0, v0, tb, q, v)
             gb = side * _free_point_accel(pm, Phi, row, t0 + tb, q, v, xb)
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
@@ -704,7 +749,7 @@ def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb,
         if not (lo < tm < hi):
             tm = 0.5 * (lo + hi)
         if dec:
-            _free_states(pm, t0, q0, v0, tm, q, v)
+            _free_states(pm, cfg[10], t0, q0, v0, tm, q, v)
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
         dx = _base_x(pm, xb, t0 + tm) - _base_x(pm, xb, t0)
@@ -738,7 +783,7 @@ def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau
     N, K = pm.shape[0], Phi.shape[0]
     dec = cfg[6]
     if dec:
-        _free_states(pm, t0, q0, v0, tk, q, v)
+        _free_states(pm, cfg[10], t0, q0, v0, tk, q, v)
     else:
         _states(pm, cfg, nstuck, t0, q0, v0, tk, q, v)
     r = wall * (u0[which] - _dot(Phi, which, v) - _base_v(pm, xb, t0 + tk))
@@ -753,7 +798,7 @@ def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau
             dx += Phi[k, i] * (q[i] - q0[i])
         zk[k] = z0[k] + u0[k] * tk - dx
     if dec:
-        _free_states(pm, t0, q0, v0, t1, q, v)
+        _free_states(pm, cfg[10], t0, q0, v0, t1, q, v)
     else:
         _states(pm, cfg, nstuck, t0, q0, v0, t1, q, v)
     shift = _base_x(pm, xb, t0 + t1) - _base_x(pm, xb, t0)
@@ -819,7 +864,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
         H = min(H, T - tau)
         tb = tau + H
         if dec:
-            _free_states(pm, t0, q0, v0, tb, q, v)
+            _free_states(pm, cfg[10], t0, q0, v0, tb, q, v)
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
         clear = True
@@ -918,7 +963,7 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
         H = min(H, T - tau)
         tb = tau + H
         if dec:
-            _free_states(pm, t0, q0, v0, tb, q, v)
+            _free_states(pm, cfg[10], t0, q0, v0, tb, q, v)
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
         clear = True
@@ -1324,7 +1369,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
             for g in range(8):
                 s = a + 0.5 * hs * (1.0 + _GL_X[g])
                 if dec:
-                    _free_states(pm, t0, q0, v0, s, q, v)
+                    _free_states(pm, cfg[10], t0, q0, v0, s, q, v)
                 else:
                     _states_from(pm, cfg, c_fl, t0, q0, v0, s, q, v)
                 th = W * (t0 + s) + pm[0, P_PHI]
@@ -1359,7 +1404,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
         H = min(H, tau - a)
         b = a + H
         if dec:
-            _free_states(pm, t0, q0, v0, b, q, v)
+            _free_states(pm, cfg[10], t0, q0, v0, b, q, v)
         else:
             _states_from(pm, cfg, c_fl, t0, q0, v0, b, q, v)
         ka = min(int(math.floor((t0 + a) / T_f)), n_periods)  # noqa: RUF046
@@ -1396,7 +1441,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                 for _ in range(100):
                     tm = secant_point(lo, hi, flo, fhi)
                     if dec:
-                        _free_states(pm, t0, q0, v0, tm, q, v)
+                        _free_states(pm, cfg[10], t0, q0, v0, tm, q, v)
                     else:
                         _states_from(pm, cfg, c_fl, t0, q0, v0, tm, q, v)
                     vm = _base_v(pm, xb, t0 + tm)
