@@ -244,6 +244,21 @@ def derive() -> Board:
     cW, sW, cD, sD, eD = sp.symbols("cW sW cD sD eD", real=True)
     five = {sp.cos(W * t): cW, sp.sin(W * t): sW, sp.cos(wd * t): cD, sp.sin(wd * t): sD,
             sp.exp(-sigma * t): eD}  # fmt: skip
+    a_, b_, c_, s_ = sp.symbols("a b c s", real=True)
+    sig_, wd_ = sp.symbols("sigma omega_d", positive=True)
+    w(
+        "flight_form",
+        sp.Eq(
+            x(t),
+            a_ * sp.cos(W * t)
+            + b_ * sp.sin(W * t)
+            + sp.exp(-sig_ * t) * (c_ * sp.cos(wd_ * t) + s_ * sp.sin(wd_ * t)),
+        ),
+        r"The same flight in its own time: $\cos(\Omega t+\varphi)$ and $\sin(\Omega t+\varphi)$ "
+        r"split by the angle-sum formulas leave five functions of t, and a, b, c, s (and ẋ's own "
+        r"four) are constants of the flight, computed once by the kernel ``flight_form``.",
+        "F1",
+    )
     form_args = (aM, aK, aC, aF, aXb, aW, aphi, ax, axd)
     form_parts = []
     for what, expr, lhs, unit, size in (
