@@ -528,8 +528,10 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
         run = simulate_structure(*args, float(w), periods=waited + KEPT, stops=stops,
                                  base=_base_at(base, float(w)))  # fmt: skip
         runs[float(w)] = run
+        kept = run.period_max[waited:]  # the KEPT periods after the transient
         settled.append({"omega": float(w), "periods": waited + KEPT,
-                        "amplitudes": run.amplitudes(waited / (waited + KEPT))})  # fmt: skip
+                        "amplitudes": {p: float(kept[:, j].max())
+                                       for j, p in enumerate(run.points)}})  # fmt: skip
     for w0, w1 in ((omega_low, omega_high), (omega_high, omega_low)):
         start = runs[float(grid[0] if w0 == omega_low else grid[-1])]
         s = start.final_state[1 : 1 + n]
@@ -539,9 +541,9 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
             if np.linalg.norm(back.final_state[1 : 1 + n] - s) <= 1e-6 * np.linalg.norm(s):
                 break
         else:
-            notes.append(f"at Ω {w0:.6g} rad/s the motion {len(start.period_max)} periods from rest is not an "
-                         "orbit of up to 8 periods (quasi-periodic or chaotic): no branch from "
-                         "there")  # fmt: skip
+            notes.append(f"at Ω {w0:.6g} rad/s the motion {len(start.period_max)} periods "
+                         "from rest is not an orbit of up to 8 periods (quasi-periodic or "
+                         "chaotic): no branch from there")  # fmt: skip
             continue
         try:
             branches.append(structure_branch(*args, w0, w1, s, k, stops, step=step, base=base))
