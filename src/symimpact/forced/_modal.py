@@ -4,11 +4,11 @@ rigid impacts, chatter and sticking (numba, cached).
 Between events everything is closed form.  While no mass sticks, mode i follows Step 8's forced
 flight (Eq. F1) with its own Mᵢ, Kᵢ = ωᵢ²Mᵢ, Cᵢ = 2ζᵢωᵢMᵢ and modal force Fᵢ = Σⱼ F₀ⱼφᵢ(j)
 (Step 15, item 1), written in the flight's own time (Step 8's ``flight_form``: its coefficients
-once a flight, then two trigonometric functions shared by the modes and three per mode at each
-time; :func:`_free_states`); each impact mass k flies at constant speed.  An impact of damper k at its point aₖ applies Step
-15's law (item 4, Eq. F7): the impulse P = (1 + e)·μ·(ẏ − ẋₐ), μ the reduced mass of m and the
-effective mass (Σφᵢ(a)²/Mᵢ)⁻¹, enters each mode as q̇ᵢ += φᵢ(a)P/Mᵢ and leaves the mass as
-ẏ −= P/m.  One mode with φ = 1 is Step 9's impact (Eq. F2).
+once a flight, then at each time two functions of Ωτ shared by the modes, all driven at one Ω,
+and three per mode; :func:`_free_states`); each impact mass k flies at constant speed.  An
+impact of damper k at its point aₖ applies Step 15's law (item 4, Eq. F7): the impulse
+P = (1 + e)·μ·(ẏ − ẋₐ), μ the reduced mass of m and the effective mass (Σφᵢ(a)²/Mᵢ)⁻¹, enters
+each mode as q̇ᵢ += φᵢ(a)P/Mᵢ and leaves the mass as ẏ −= P/m.  One mode with φ = 1 is Step 9's impact (Eq. F2).
 
 *Chatter and sticking* (Step 15, item 5).  When damper k's impacts on one wall would accumulate
 within a fraction of a forcing period (Step 9's test, Δ = 2w/(a(1 − e)), with the point's
