@@ -281,8 +281,8 @@ def derive() -> Board:
         back = rebuilt.subs({cW: sp.cos(W * t), sW: sp.sin(W * t), cD: sp.cos(wd * t),
                              sD: sp.sin(wd * t), eD: sp.exp(-sigma * t)})  # fmt: skip
         board.check(
-            f"the flight's {what} is a·cos Ωt + b·sin Ωt + e^(−σt)(c·cos ω_d t + s·sin ω_d t) "
-            "with coefficients free of t",
+            f"the flight's {what} in its own time: four coefficients free of t, of cos Ωt, "
+            "sin Ωt and the decaying cosine and sine",
             "F1",
             not in_five.has(t)
             and all(not v.has(t, cW, sW, cD, sD, eD) for v in coefficients.values())
@@ -296,8 +296,8 @@ def derive() -> Board:
                 expr=value,
                 returns=(f"Coefficient {part} of the flight's {what} "
                          + ("(of cos Ωt" if part == "a" else "(of sin Ωt" if part == "b"
-                            else "(of e^(−σt)cos ω_d t" if part == "c"
-                            else "(of e^(−σt)sin ω_d t")
+                            else "(of the decaying cosine" if part == "c"
+                            else "(of the decaying sine")
                          + ", t since the flight began; off the undamped resonance)"),
                 unit=unit,
                 equation="F1",
@@ -306,14 +306,14 @@ def derive() -> Board:
             ))  # fmt: skip
     for name, value, what, unit in ((
             "flight_decay_rate", sigma, "Decay rate σ = C/(2M) of the flight's free part", "1/s"), (
-            "flight_damped_frequency", wd, "Damped frequency ω_d of the flight's free part",
+            "flight_damped_frequency", wd, "Damped frequency of the flight's free part",
             "rad/s")):  # fmt: skip
         form_parts.append(board.kernel(name=name, args=form_args, expr=value, returns=what,
                                        unit=unit, equation="F1",
                                        lhs=r"\sigma" if "decay" in name else r"\omega_d"))  # fmt: skip
     board.bundle("flight_form", form_parts,
                  "The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ "
-                 "and ω_d")  # fmt: skip
+                 "and the damped frequency")  # fmt: skip
     for name, coefficient, which in (
         ("steady_cosine", A_value, "cos"),
         ("steady_sine", B_value, "sin"),

@@ -1921,7 +1921,7 @@ def flight_displacement_b_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_displacement_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m].
+    r"""Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m].
 
     Eq. F1 (derived here, beyond the paper).
 
@@ -1953,7 +1953,7 @@ def flight_displacement_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
     Returns
     -------
     numpy.ndarray
-        Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m], in the broadcast shape of the arguments.
+        Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m], in the broadcast shape of the arguments.
         Operations: 27.
     """
     M, K, C, F0, X_b, Omega, phi, x0, xdot0 = broadcast(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
@@ -1966,7 +1966,7 @@ def flight_displacement_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_displacement_c_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    """Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m]: float twin of `flight_displacement_c` (Eq. F1)."""
+    """Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m]: float twin of `flight_displacement_c` (Eq. F1)."""
     M = numpy.float64(M)
     K = numpy.float64(K)
     C = numpy.float64(C)
@@ -1985,7 +1985,7 @@ def flight_displacement_c_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_displacement_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m].
+    r"""Coefficient s of the flight's displacement (of the decaying sine, t since the flight began; off the undamped resonance) [m].
 
     Eq. F1 (derived here, beyond the paper).
 
@@ -2017,7 +2017,7 @@ def flight_displacement_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
     Returns
     -------
     numpy.ndarray
-        Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m], in the broadcast shape of the arguments.
+        Coefficient s of the flight's displacement (of the decaying sine, t since the flight began; off the undamped resonance) [m], in the broadcast shape of the arguments.
         Operations: 46.
     """
     M, K, C, F0, X_b, Omega, phi, x0, xdot0 = broadcast(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
@@ -2036,7 +2036,7 @@ def flight_displacement_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_displacement_s_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    """Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m]: float twin of `flight_displacement_s` (Eq. F1)."""
+    """Coefficient s of the flight's displacement (of the decaying sine, t since the flight began; off the undamped resonance) [m]: float twin of `flight_displacement_s` (Eq. F1)."""
     M = numpy.float64(M)
     K = numpy.float64(K)
     C = numpy.float64(C)
@@ -2189,7 +2189,7 @@ def flight_velocity_b_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_velocity_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s].
+    r"""Coefficient c of the flight's velocity (of the decaying cosine, t since the flight began; off the undamped resonance) [m/s].
 
     Eq. F1 (derived here, beyond the paper).
 
@@ -2221,7 +2221,7 @@ def flight_velocity_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
     Returns
     -------
     numpy.ndarray
-        Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s], in the broadcast shape of the arguments.
+        Coefficient c of the flight's velocity (of the decaying cosine, t since the flight began; off the undamped resonance) [m/s], in the broadcast shape of the arguments.
         Operations: 27.
     """
     M, K, C, F0, X_b, Omega, phi, x0, xdot0 = broadcast(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
@@ -2234,7 +2234,7 @@ def flight_velocity_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_velocity_c_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    """Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s]: float twin of `flight_velocity_c` (Eq. F1)."""
+    """Coefficient c of the flight's velocity (of the decaying cosine, t since the flight began; off the undamped resonance) [m/s]: float twin of `flight_velocity_c` (Eq. F1)."""
     M = numpy.float64(M)
     K = numpy.float64(K)
     C = numpy.float64(C)
@@ -2253,7 +2253,7 @@ def flight_velocity_c_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_velocity_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s].
+    r"""Coefficient s of the flight's velocity (of the decaying sine, t since the flight began; off the undamped resonance) [m/s].
 
     Eq. F1 (derived here, beyond the paper).
 
@@ -2285,7 +2285,7 @@ def flight_velocity_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
     Returns
     -------
     numpy.ndarray
-        Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s], in the broadcast shape of the arguments.
+        Coefficient s of the flight's velocity (of the decaying sine, t since the flight began; off the undamped resonance) [m/s], in the broadcast shape of the arguments.
         Operations: 50.
     """
     M, K, C, F0, X_b, Omega, phi, x0, xdot0 = broadcast(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
@@ -2307,7 +2307,7 @@ def flight_velocity_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_velocity_s_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    """Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s]: float twin of `flight_velocity_s` (Eq. F1)."""
+    """Coefficient s of the flight's velocity (of the decaying sine, t since the flight began; off the undamped resonance) [m/s]: float twin of `flight_velocity_s` (Eq. F1)."""
     M = numpy.float64(M)
     K = numpy.float64(K)
     C = numpy.float64(C)
@@ -2389,7 +2389,7 @@ def flight_decay_rate_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_damped_frequency(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Damped frequency ω_d of the flight's free part [rad/s].
+    r"""Damped frequency of the flight's free part [rad/s].
 
     Eq. F1 (derived here, beyond the paper).
 
@@ -2421,7 +2421,7 @@ def flight_damped_frequency(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
     Returns
     -------
     numpy.ndarray
-        Damped frequency ω_d of the flight's free part [rad/s], in the broadcast shape of the arguments.
+        Damped frequency of the flight's free part [rad/s], in the broadcast shape of the arguments.
         Operations: 8.
     """
     M, K, C, F0, X_b, Omega, phi, x0, xdot0 = broadcast(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
@@ -2429,7 +2429,7 @@ def flight_damped_frequency(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_damped_frequency_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    """Damped frequency ω_d of the flight's free part [rad/s]: float twin of `flight_damped_frequency` (Eq. F1)."""
+    """Damped frequency of the flight's free part [rad/s]: float twin of `flight_damped_frequency` (Eq. F1)."""
     M = numpy.float64(M)
     K = numpy.float64(K)
     C = numpy.float64(C)
@@ -2884,7 +2884,7 @@ def forced_transition_scalar(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_form(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d: `flight_displacement_a`, `flight_displacement_b`, `flight_displacement_c`, `flight_displacement_s`, `flight_velocity_a`, `flight_velocity_b`, `flight_velocity_c`, `flight_velocity_s`, `flight_decay_rate`, `flight_damped_frequency` in one pass.
+    r"""The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and the damped frequency: `flight_displacement_a`, `flight_displacement_b`, `flight_displacement_c`, `flight_displacement_s`, `flight_velocity_a`, `flight_velocity_b`, `flight_velocity_c`, `flight_velocity_s`, `flight_decay_rate`, `flight_damped_frequency` in one pass.
 
     Eq. F1 (derived here, beyond the paper).  The parts' common subexpressions are
     computed once: 58 operations, against 267 for the parts one by one.
@@ -2915,14 +2915,14 @@ def flight_form(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
     tuple of numpy.ndarray
         Coefficient a of the flight's displacement (of cos Ωt, t since the flight began; off the undamped resonance) [m];
         Coefficient b of the flight's displacement (of sin Ωt, t since the flight began; off the undamped resonance) [m];
-        Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m];
-        Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m];
+        Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m];
+        Coefficient s of the flight's displacement (of the decaying sine, t since the flight began; off the undamped resonance) [m];
         Coefficient a of the flight's velocity (of cos Ωt, t since the flight began; off the undamped resonance) [m/s];
         Coefficient b of the flight's velocity (of sin Ωt, t since the flight began; off the undamped resonance) [m/s];
-        Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s];
-        Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s];
+        Coefficient c of the flight's velocity (of the decaying cosine, t since the flight began; off the undamped resonance) [m/s];
+        Coefficient s of the flight's velocity (of the decaying sine, t since the flight began; off the undamped resonance) [m/s];
         Decay rate σ = C/(2M) of the flight's free part [1/s];
-        Damped frequency ω_d of the flight's free part [rad/s];
+        Damped frequency of the flight's free part [rad/s];
         each in the broadcast shape of the arguments.
     """
     M, K, C, F0, X_b, Omega, phi, x0, xdot0 = broadcast(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
@@ -2963,7 +2963,7 @@ def flight_form(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 
 def flight_form_scalar(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    """The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d: float twin of `flight_form` (Eq. F1)."""
+    """The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and the damped frequency: float twin of `flight_form` (Eq. F1)."""
     M = numpy.float64(M)
     K = numpy.float64(K)
     C = numpy.float64(C)

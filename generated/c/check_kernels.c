@@ -1587,7 +1587,7 @@ static void check_forced_flight_flight_displacement_b(void)
     }
 }
 
-/* forced_flight.flight_displacement_c: Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the... [m] */
+/* forced_flight.flight_displacement_c: Coefficient c of the flight's displacement (of the decaying cosine, t since... [m] */
 static void check_forced_flight_flight_displacement_c(void)
 {
     static const double expected[3] = { 0.18089510549422858, -0.0054979926787337196, 0.0008015712797794259 };
@@ -1612,7 +1612,7 @@ static void check_forced_flight_flight_displacement_c(void)
     }
 }
 
-/* forced_flight.flight_displacement_s: Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the... [m] */
+/* forced_flight.flight_displacement_s: Coefficient s of the flight's displacement (of the decaying sine, t since... [m] */
 static void check_forced_flight_flight_displacement_s(void)
 {
     static const double expected[3] = { -0.32707644578879747, -0.0015622583336317444, 0.012837033238145378 };
@@ -1687,7 +1687,7 @@ static void check_forced_flight_flight_velocity_b(void)
     }
 }
 
-/* forced_flight.flight_velocity_c: Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the... [m/s] */
+/* forced_flight.flight_velocity_c: Coefficient c of the flight's velocity (of the decaying cosine, t since the... [m/s] */
 static void check_forced_flight_flight_velocity_c(void)
 {
     static const double expected[3] = { -0.7488422701460956, -1.8259425772606075, 0.7680654986951301 };
@@ -1712,7 +1712,7 @@ static void check_forced_flight_flight_velocity_c(void)
     }
 }
 
-/* forced_flight.flight_velocity_s: Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the... [m/s] */
+/* forced_flight.flight_velocity_s: Coefficient s of the flight's velocity (of the decaying sine, t since the... [m/s] */
 static void check_forced_flight_flight_velocity_s(void)
 {
     static const double expected[3] = { -0.41245386526895417, 6.432274765432954, -0.04800724654110455 };
@@ -1762,7 +1762,7 @@ static void check_forced_flight_flight_decay_rate(void)
     }
 }
 
-/* forced_flight.flight_damped_frequency: Damped frequency ω_d of the flight's free part [rad/s] */
+/* forced_flight.flight_damped_frequency: Damped frequency of the flight's free part [rad/s] */
 static void check_forced_flight_flight_damped_frequency(void)
 {
     static const double expected[3] = { 2.287293387518456, 1169.845763035236, 59.8322405773203 };

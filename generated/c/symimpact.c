@@ -2125,7 +2125,7 @@ void symimpact_forced_flight_forced_transition_batch(size_t n, const double *res
     }
 }
 
-/* The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d (symimpact_forced_flight_flight_displacement_a, symimpact_forced_flight_flight_displacement_b, symimpact_forced_flight_flight_displacement_c, symimpact_forced_flight_flight_displacement_s, symimpact_forced_flight_flight_velocity_a, symimpact_forced_flight_flight_velocity_b, symimpact_forced_flight_flight_velocity_c, symimpact_forced_flight_flight_velocity_s, symimpact_forced_flight_flight_decay_rate, symimpact_forced_flight_flight_damped_frequency) */
+/* The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and the damped frequency (symimpact_forced_flight_flight_displacement_a, symimpact_forced_flight_flight_displacement_b, symimpact_forced_flight_flight_displacement_c, symimpact_forced_flight_flight_displacement_s, symimpact_forced_flight_flight_velocity_a, symimpact_forced_flight_flight_velocity_b, symimpact_forced_flight_flight_velocity_c, symimpact_forced_flight_flight_velocity_s, symimpact_forced_flight_flight_decay_rate, symimpact_forced_flight_flight_damped_frequency) */
 void symimpact_forced_flight_flight_form(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0, double *restrict out)
 {
     const double _x0 = F0 + K*X_b;

@@ -815,7 +815,7 @@ void symimpact_forced_flight_flight_displacement_a_batch(size_t n, const double 
 double symimpact_forced_flight_flight_displacement_b(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0);
 void symimpact_forced_flight_flight_displacement_b_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out);
 
-/* Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+/* Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
  *   M: Main mass M [kg]
  *   K: Main stiffness K [N/m]
  *   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -829,7 +829,7 @@ void symimpact_forced_flight_flight_displacement_b_batch(size_t n, const double 
 double symimpact_forced_flight_flight_displacement_c(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0);
 void symimpact_forced_flight_flight_displacement_c_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out);
 
-/* Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+/* Coefficient s of the flight's displacement (of the decaying sine, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
  *   M: Main mass M [kg]
  *   K: Main stiffness K [N/m]
  *   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -871,7 +871,7 @@ void symimpact_forced_flight_flight_velocity_a_batch(size_t n, const double *res
 double symimpact_forced_flight_flight_velocity_b(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0);
 void symimpact_forced_flight_flight_velocity_b_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out);
 
-/* Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+/* Coefficient c of the flight's velocity (of the decaying cosine, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
  *   M: Main mass M [kg]
  *   K: Main stiffness K [N/m]
  *   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -885,7 +885,7 @@ void symimpact_forced_flight_flight_velocity_b_batch(size_t n, const double *res
 double symimpact_forced_flight_flight_velocity_c(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0);
 void symimpact_forced_flight_flight_velocity_c_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out);
 
-/* Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+/* Coefficient s of the flight's velocity (of the decaying sine, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
  *   M: Main mass M [kg]
  *   K: Main stiffness K [N/m]
  *   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -913,7 +913,7 @@ void symimpact_forced_flight_flight_velocity_s_batch(size_t n, const double *res
 double symimpact_forced_flight_flight_decay_rate(double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0);
 void symimpact_forced_flight_flight_decay_rate_batch(size_t n, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out);
 
-/* Damped frequency ω_d of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
+/* Damped frequency of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
  *   M: Main mass M [kg]
  *   K: Main stiffness K [N/m]
  *   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -982,7 +982,7 @@ void symimpact_forced_flight_forced_state_batch(size_t n, const double *restrict
 void symimpact_forced_flight_forced_transition(double t, double M, double K, double C, double F0, double X_b, double Omega, double phi, double x0, double xdot0, double *restrict out);
 void symimpact_forced_flight_forced_transition_batch(size_t n, const double *restrict t, const double *restrict M, const double *restrict K, const double *restrict C, const double *restrict F0, const double *restrict X_b, const double *restrict Omega, const double *restrict phi, const double *restrict x0, const double *restrict xdot0, double *restrict out);
 
-/* The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d, Eq. F1 (derived here, beyond the paper): writes out[0..9] =
+/* The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and the damped frequency, Eq. F1 (derived here, beyond the paper): writes out[0..9] =
  *   [0] symimpact_forced_flight_flight_displacement_a
  *   [1] symimpact_forced_flight_flight_displacement_b
  *   [2] symimpact_forced_flight_flight_displacement_c

@@ -2025,7 +2025,7 @@ contains
       *Omega*X_b*cse_2 + C*Omega*cse_4)*cos(phi)
     end function forced_flight_flight_displacement_b
 
-    ! Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+    ! Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
     !   M: Main mass M [kg]
     !   K: Main stiffness K [N/m]
     !   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -2048,7 +2048,7 @@ contains
       *Omega*X_b*cse_2 + C*Omega*cse_4)*sin(phi) + x0
     end function forced_flight_flight_displacement_c
 
-    ! Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+    ! Coefficient s of the flight's displacement (of the decaying sine, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
     !   M: Main mass M [kg]
     !   K: Main stiffness K [N/m]
     !   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -2125,7 +2125,7 @@ contains
       *Omega*X_b*cse_2 + C*Omega*cse_0)*sin(phi)
     end function forced_flight_flight_velocity_b
 
-    ! Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+    ! Coefficient c of the flight's velocity (of the decaying cosine, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
     !   M: Main mass M [kg]
     !   K: Main stiffness K [N/m]
     !   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -2148,7 +2148,7 @@ contains
       Omega*X_b*cse_3 + C *Omega*cse_2)*cos(phi) + xdot0
     end function forced_flight_flight_velocity_c
 
-    ! Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+    ! Coefficient s of the flight's velocity (of the decaying sine, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
     !   M: Main mass M [kg]
     !   K: Main stiffness K [N/m]
     !   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -2197,7 +2197,7 @@ contains
         f_result = ((1.0_dp/2.0_dp))*C/M
     end function forced_flight_flight_decay_rate
 
-    ! Damped frequency ω_d of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
+    ! Damped frequency of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
     !   M: Main mass M [kg]
     !   K: Main stiffness K [N/m]
     !   C: Main damping C (underdamped: C < 2√(KM)) [N s/m]
@@ -2417,7 +2417,7 @@ contains
       cse_29, cse_14)
     end subroutine forced_flight_forced_transition
 
-    ! The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d, Eq. F1 (derived here, beyond the paper): out(1:10) =
+    ! The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and the damped frequency, Eq. F1 (derived here, beyond the paper): out(1:10) =
     !   (1) forced_flight_flight_displacement_a
     !   (2) forced_flight_flight_displacement_b
     !   (3) forced_flight_flight_displacement_c

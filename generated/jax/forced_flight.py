@@ -726,7 +726,7 @@ def flight_displacement_b(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 @jax.jit
 def flight_displacement_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+    r"""Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
 
     ``M``: Main mass M [kg]
     ``K``: Main stiffness K [N/m]
@@ -748,7 +748,7 @@ def flight_displacement_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 @jax.jit
 def flight_displacement_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+    r"""Coefficient s of the flight's displacement (of the decaying sine, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
 
     ``M``: Main mass M [kg]
     ``K``: Main stiffness K [N/m]
@@ -820,7 +820,7 @@ def flight_velocity_b(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 @jax.jit
 def flight_velocity_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+    r"""Coefficient c of the flight's velocity (of the decaying cosine, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
 
     ``M``: Main mass M [kg]
     ``K``: Main stiffness K [N/m]
@@ -842,7 +842,7 @@ def flight_velocity_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 @jax.jit
 def flight_velocity_s(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+    r"""Coefficient s of the flight's velocity (of the decaying sine, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
 
     ``M``: Main mass M [kg]
     ``K``: Main stiffness K [N/m]
@@ -890,7 +890,7 @@ def flight_decay_rate(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 @jax.jit
 def flight_damped_frequency(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""Damped frequency ω_d of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
+    r"""Damped frequency of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
 
     ``M``: Main mass M [kg]
     ``K``: Main stiffness K [N/m]
@@ -1066,7 +1066,7 @@ def forced_transition(t, M, K, C, F0, X_b, Omega, phi, x0, xdot0):
 
 @jax.jit
 def flight_form(M, K, C, F0, X_b, Omega, phi, x0, xdot0):
-    r"""The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d, Eq. F1 (derived here, beyond the paper): the tuple
+    r"""The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and the damped frequency, Eq. F1 (derived here, beyond the paper): the tuple
     (``flight_displacement_a``, ``flight_displacement_b``, ``flight_displacement_c``, ``flight_displacement_s``, ``flight_velocity_a``, ``flight_velocity_b``, ``flight_velocity_c``, ``flight_velocity_s``, ``flight_decay_rate``, ``flight_damped_frequency``), their common subexpressions computed once.
     """
     _x0 = F0 + K*X_b

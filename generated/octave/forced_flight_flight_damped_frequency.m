@@ -1,5 +1,5 @@
 function r = forced_flight_flight_damped_frequency(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
-% FORCED_FLIGHT_FLIGHT_DAMPED_FREQUENCY  Damped frequency ω_d of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
+% FORCED_FLIGHT_FLIGHT_DAMPED_FREQUENCY  Damped frequency of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
 %
 %   r = forced_flight_flight_damped_frequency(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
 %

@@ -1,5 +1,5 @@
 function r = forced_flight_flight_displacement_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
-% FORCED_FLIGHT_FLIGHT_DISPLACEMENT_C  Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+% FORCED_FLIGHT_FLIGHT_DISPLACEMENT_C  Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
 %
 %   r = forced_flight_flight_displacement_c(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
 %

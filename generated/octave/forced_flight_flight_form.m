@@ -1,5 +1,5 @@
 function [r1, r2, r3, r4, r5, r6, r7, r8, r9, r10] = forced_flight_flight_form(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
-% FORCED_FLIGHT_FLIGHT_FORM  The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d, Eq. F1 (derived here, beyond the paper).
+% FORCED_FLIGHT_FLIGHT_FORM  The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and the damped frequency, Eq. F1 (derived here, beyond the paper).
 %
 %   [r1, r2, r3, r4, r5, r6, r7, r8, r9, r10] = forced_flight_flight_form(M, K, C, F0, X_b, Omega, phi, x0, xdot0)
 %
@@ -20,14 +20,14 @@ function [r1, r2, r3, r4, r5, r6, r7, r8, r9, r10] = forced_flight_flight_form(M
 % Returns, each an array of the broadcast size (NaN where not real):
 %   r1: forced_flight_flight_displacement_a, Coefficient a of the flight's displacement (of cos Ωt, t since the flight began; off the undamped resonance) [m]
 %   r2: forced_flight_flight_displacement_b, Coefficient b of the flight's displacement (of sin Ωt, t since the flight began; off the undamped resonance) [m]
-%   r3: forced_flight_flight_displacement_c, Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m]
-%   r4: forced_flight_flight_displacement_s, Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m]
+%   r3: forced_flight_flight_displacement_c, Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m]
+%   r4: forced_flight_flight_displacement_s, Coefficient s of the flight's displacement (of the decaying sine, t since the flight began; off the undamped resonance) [m]
 %   r5: forced_flight_flight_velocity_a, Coefficient a of the flight's velocity (of cos Ωt, t since the flight began; off the undamped resonance) [m/s]
 %   r6: forced_flight_flight_velocity_b, Coefficient b of the flight's velocity (of sin Ωt, t since the flight began; off the undamped resonance) [m/s]
-%   r7: forced_flight_flight_velocity_c, Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s]
-%   r8: forced_flight_flight_velocity_s, Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s]
+%   r7: forced_flight_flight_velocity_c, Coefficient c of the flight's velocity (of the decaying cosine, t since the flight began; off the undamped resonance) [m/s]
+%   r8: forced_flight_flight_velocity_s, Coefficient s of the flight's velocity (of the decaying sine, t since the flight began; off the undamped resonance) [m/s]
 %   r9: forced_flight_flight_decay_rate, Decay rate σ = C/(2M) of the flight's free part [1/s]
-%   r10: forced_flight_flight_damped_frequency, Damped frequency ω_d of the flight's free part [rad/s]
+%   r10: forced_flight_flight_damped_frequency, Damped frequency of the flight's free part [rad/s]
 % The parts' common subexpressions are computed once: 58 operations.
   x_0 = F0 + K.*X_b;
   x_1 = Omega.^2;

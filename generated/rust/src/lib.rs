@@ -1637,7 +1637,7 @@ pub mod forced_flight {
         -_x3*(X_b*_x1 + _x2*_x4)*phi.sin() + _x3*(-C*Omega*X_b*_x2 + C*Omega*_x4)*phi.cos()
     }
 
-    /// Coefficient c of the flight's displacement (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+    /// Coefficient c of the flight's displacement (of the decaying cosine, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
     ///
     /// * `M`: Main mass M [kg]
     /// * `K`: Main stiffness K [N/m]
@@ -1659,7 +1659,7 @@ pub mod forced_flight {
         -_x3*(X_b*_x1 + _x2*_x4)*phi.cos() - _x3*(-C*Omega*X_b*_x2 + C*Omega*_x4)*phi.sin() + x0
     }
 
-    /// Coefficient s of the flight's displacement (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
+    /// Coefficient s of the flight's displacement (of the decaying sine, t since the flight began; off the undamped resonance) [m], Eq. F1 (derived here, beyond the paper).
     ///
     /// * `M`: Main mass M [kg]
     /// * `K`: Main stiffness K [N/m]
@@ -1732,7 +1732,7 @@ pub mod forced_flight {
         -_x4*(X_b*_x3 + _x0*_x2)*phi.cos() - _x4*(-C*Omega*X_b*_x2 + C*Omega*_x0)*phi.sin()
     }
 
-    /// Coefficient c of the flight's velocity (of e^(−σt)cos ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+    /// Coefficient c of the flight's velocity (of the decaying cosine, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
     ///
     /// * `M`: Main mass M [kg]
     /// * `K`: Main stiffness K [N/m]
@@ -1754,7 +1754,7 @@ pub mod forced_flight {
         _x4*(X_b*_x1 + _x2*_x3)*phi.sin() - _x4*(-C*Omega*X_b*_x3 + C*Omega*_x2)*phi.cos() + xdot0
     }
 
-    /// Coefficient s of the flight's velocity (of e^(−σt)sin ω_d t, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
+    /// Coefficient s of the flight's velocity (of the decaying sine, t since the flight began; off the undamped resonance) [m/s], Eq. F1 (derived here, beyond the paper).
     ///
     /// * `M`: Main mass M [kg]
     /// * `K`: Main stiffness K [N/m]
@@ -1807,7 +1807,7 @@ pub mod forced_flight {
         (1_f64/2.0)*C/M
     }
 
-    /// Damped frequency ω_d of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
+    /// Damped frequency of the flight's free part [rad/s], Eq. F1 (derived here, beyond the paper).
     ///
     /// * `M`: Main mass M [kg]
     /// * `K`: Main stiffness K [N/m]
@@ -2033,7 +2033,7 @@ pub mod forced_flight {
         ]
     }
 
-    /// The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and ω_d, Eq. F1 (derived here, beyond the paper): the array
+    /// The flight's coefficients in its own time: a, b, c, s of x, then of ẋ, then σ and the damped frequency, Eq. F1 (derived here, beyond the paper): the array
     /// [`flight_displacement_a`, `flight_displacement_b`, `flight_displacement_c`, `flight_displacement_s`, `flight_velocity_a`, `flight_velocity_b`, `flight_velocity_c`, `flight_velocity_s`, `flight_decay_rate`, `flight_damped_frequency`],
     /// their common subexpressions computed once.
     ///
