@@ -19,8 +19,11 @@ linear, but its modes are no longer the free ones (nor is the modal damping prop
 them), so its flight is the closed form of the first-order system X' = AX + b·cos(Ωt + φ):
 X(τ) = Re(V e^{Λτ} V⁻¹(X₀ − X_p(t₀))) + X_p(t₀ + τ), with A's eigen-decomposition V, Λ and the
 harmonic particular solution X_p = Re(X̂ e^{i(Ωt + φ)}), X̂ = (iΩ − A)⁻¹b, computed once each time
-the set of stuck dampers changes.  A stuck mass is released where sₖ·ẍₐ turns positive (the wall
-would pull), located by sampling at 1/64 of the shortest period and Illinois regula falsi.  An
+the set of stuck dampers changes; a flight's columns Vₗcₗ are formed once per flight, and the
+state is real, so each conjugate pair of Λ costs one exponential (:func:`_held_free`).  A stuck
+mass is released where sₖ·ẍₐ turns positive (the wall would pull), searched on the impact
+search's certified grid (its chord bound on sₖ·ẍₐ) down to 1/64 of the shortest period and
+located by Illinois regula falsi (:func:`_release`).  An
 impact of another damper while masses stick uses the stuck structure's mass matrix; a stuck mass
 whose wall would have to pull it during that impulse is released first and the impulse taken
 again without it, unless its own return would accumulate within the same fraction of a period
@@ -45,8 +48,9 @@ bound B on its second derivative of the same make, |λ|⁴ in place of |λ|²).
 
 *Energy ledger.*  The work of the modal forces and the dissipation of the Cᵢ, in closed form
 while the modes are uncoupled (each flight is a sum of two complex exponentials, and so is its
-force: each product integrates exactly, :func:`_mode_ledger`), else by the one-mode engine's
-Gauss–Legendre rule at a sixteenth of the shortest period, summed over the modes (both hold while
+force: each product integrates exactly, :func:`_mode_ledger`), else by Gauss–Legendre rules on
+steps the structure's fastest rate sets (8 points, or 4 on short steps: :func:`_segment`), summed
+over the modes (both hold while
 masses stick: those only add inertia), and the impacts' and closures' losses.  The searches and
 the periods' maxima step up to a sixteenth of the slowest period (:func:`_slowest`) and down to
 what their bounds allow: a structure's highest modes set their finest step, not their coarsest.
@@ -106,6 +110,9 @@ _form = njit(cache=True)(_fl.flight_form_scalar)
 #: at its own frequency, where Eq. F1 grows like t and has no such form); row N holds the
 #: flight's start time and whether the cache is filled.
 FORM_COLS = 13
+#: The 4-point Gauss–Legendre rule (the one-mode engine's is 8-point, _GL_X, _GL_W), for the
+#: ledger's short steps (:func:`_segment`).
+_GL4_X, _GL4_W = np.polynomial.legendre.leggauss(4)
 
 #: Run status beside OK, TOO_MANY_EVENTS and INTERRUPTED: the stuck structure has no harmonic
 #: response (undamped, driven at one of its own frequencies) or no eigen-decomposition.
@@ -354,7 +361,9 @@ def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, 
     :func:`_slowest`): its arrays packed in three (every array in a tuple that a function takes
     costs a reference count at each call): mats = [M_s⁻¹ (as the walls allow), K_s, C_s,
     M_s⁻¹ unconstrained, (ΦₕM_s⁻¹Φₕᵀ)⁻¹ in its top-left h × h]; cplx holds V (2N × 2n), V⁻¹
-    (2n × 2N), X̂ and Λ in its rows; vecs = [f_s, q_s] (:func:`_config`)."""
+    (2n × 2N), X̂ and Λ in its rows; vecs = [f_s, q_s] (:func:`_config`); then the flights'
+    caches (:func:`_free_states`, :func:`_held_free`) and λ_max, the fastest rate of the
+    configuration's flights (:func:`_segment`'s quadrature step)."""
     N = Ks.shape[0]
     n2 = lam.shape[0]
     h = Pinv.shape[0]
@@ -373,7 +382,48 @@ def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, 
     vecs[0] = fs
     vecs[1] = qs
     form = np.zeros((N + 1, FORM_COLS))  # :func:`_free_states`'s cache, empty
-    return mats, cplx, n2, vecs, h, ok, decoupled, masses, wmax, wlow, form
+    held = np.zeros((2 * N + 3, 2 * N + 1), dtype=np.complex128)  # :func:`_held_free`'s, empty
+    held[2 * N + 2, :n2] = _pair_weights(lam)
+    # λ_max ≥ every rate the flight holds: Ω, abs(λ) of the coupled modes, and ωₙ and Cᵢ/Mᵢ of
+    # the free ones (an over-damped mode's abs(λ) ≤ C/M): the ledger's quadrature step
+    lmax = wmax
+    for m in range(n2):
+        lmax = max(lmax, abs(lam[m]))
+    for i in range(N):
+        lmax = max(
+            lmax, math.sqrt(masses[i, P_K] / masses[i, P_M]), masses[i, P_C] / masses[i, P_M]
+        )
+    return mats, cplx, n2, vecs, h, ok, decoupled, masses, wmax, wlow, form, held, lmax
+
+
+@njit(cache=True)
+def _pair_weights(lam):
+    """wₗ for Re Σₗ wₗVₗcₗe^{λₗτ}, the coupled flight's sum (:func:`_held_free`): the state is
+    real, so the terms of two conjugate eigenvalues are conjugate, and the sum is twice the real
+    part of the one with positive imaginary part (w = 2, its partner 0); a real eigenvalue keeps
+    w = 1.  Where an eigenvalue finds no partner within 1e-8 of its size (not met: A is real)
+    every w is 1, the full sum."""
+    n2 = lam.shape[0]
+    w = np.ones(n2)
+    used = np.zeros(n2, dtype=np.bool_)
+    for m in range(n2):
+        if used[m]:
+            continue
+        used[m] = True
+        size = abs(lam[m])
+        if abs(lam[m].imag) <= 1e-12 * size:
+            continue
+        best, dist = -1, math.inf
+        for k in range(n2):
+            if not used[k] and abs(lam[k] - np.conj(lam[m])) < dist:
+                best, dist = k, abs(lam[k] - np.conj(lam[m]))
+        if best < 0 or dist > 1e-8 * size:
+            w[:] = 1.0
+            return w
+        used[best] = True
+        up, down = (m, best) if lam[m].imag > 0.0 else (best, m)
+        w[up], w[down] = 2.0, 0.0
+    return w
 
 
 @njit(cache=True, inline="always")
@@ -528,46 +578,81 @@ def _free_states(pm, form, t0, q0, v0, tau, q, v):
 @njit(cache=True, inline="always")
 def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v: Eq. F1 per mode
-    while no mass sticks, else the stuck structure's closed form (module text)."""
+    while no mass sticks, else the stuck structure's closed form (module text, :func:`_held_free`)."""
     if cfg[6]:
         _free_states(pm, cfg[10], t0, q0, v0, tau, q, v)
         return
-    _held_states(pm, cfg, _coefficients(pm, cfg, t0, q0, v0), t0, tau, q, v)
+    hf = cfg[11]
+    if not _held_fresh(hf, t0, q0, v0):
+        _held_fill(pm, cfg, t0, q0, v0)
+    _held_free(pm, hf, cfg[1], cfg[2], cfg[3], tau, q, v)
 
 
 @njit(cache=True, inline="always")
-def _held_states(pm, cfg, c, t0, tau, q, v):
-    """The stuck structure's (q, q̇) a time τ after t0 from its modal amplitudes c
-    (:func:`_coefficients` of the flight's start, computed once by a search that evaluates
-    many τ of one flight), written into q and v."""
-    N = pm.shape[0]
-    lam, V, _, Xhat = _modes_of(cfg)
-    qs = cfg[3][1]
-    rot = np.exp(1j * (pm[0, P_W] * (t0 + tau) + pm[0, P_PHI]))
-    g = c * np.exp(lam * tau)
-    X = _cmv(V, g)
+def _held_fresh(hf, t0, q0, v0):
+    """Whether the coupled flight's cache ``hf`` (:func:`_held_free`) holds the flight from
+    (q0, v0) at t0."""
+    N = q0.shape[0]
+    N2 = 2 * N
+    if hf[N2 + 1, 1].real != 1.0 or hf[N2 + 1, 0].real != t0:
+        return False
     for i in range(N):
-        q[i] = X[i].real + (Xhat[i] * rot).real + qs[i]
-        v[i] = X[N + i].real + (Xhat[N + i] * rot).real
+        if hf[N2, i].real != q0[i] or hf[N2, N + i].real != v0[i]:
+            return False
+    return True
 
 
-@njit(cache=True, inline="always")
-def _flight_amplitudes(pm, cfg, t0, q0, v0):
-    """The flight's modal amplitudes for :func:`_states_from` (none while the modes are
-    uncoupled)."""
-    if cfg[6]:
-        return np.zeros(0, dtype=np.complex128)
-    return _coefficients(pm, cfg, t0, q0, v0)
+@njit(cache=True)
+def _held_fill(pm, cfg, t0, q0, v0):
+    """Fill the coupled flight's cache cfg[11] for the flight from (q0, v0) at t0
+    (:func:`_held_free`)."""
+    N = pm.shape[0]
+    n2 = cfg[2]
+    hf = cfg[11]
+    N2 = 2 * N
+    _, V, _, Xhat = _modes_of(cfg)
+    c = _coefficients(pm, cfg, t0, q0, v0)
+    th = pm[0, P_W] * t0 + pm[0, P_PHI]
+    rot = complex(math.cos(th), math.sin(th))
+    for j in range(N2):
+        for m in range(n2):
+            hf[j, m] = hf[N2 + 2, m].real * V[j, m] * c[m]
+        hf[j, n2] = Xhat[j] * rot
+    for i in range(N):
+        hf[N2, i] = q0[i]
+        hf[N2, N + i] = v0[i]
+    hf[N2 + 1, 0] = t0
+    hf[N2 + 1, 1] = 1.0
 
 
-@njit(cache=True, inline="always")
-def _states_from(pm, cfg, c, t0, q0, v0, tau, q, v):
-    """:func:`_states` with the flight's amplitudes ``c`` (:func:`_flight_amplitudes`) computed
-    once: the same numbers, without the 2N × 2N product per evaluation."""
-    if cfg[6]:
-        _free_states(pm, cfg[10], t0, q0, v0, tau, q, v)
-    else:
-        _held_states(pm, cfg, c, t0, tau, q, v)
+@njit(cache=True)
+def _held_free(pm, hf, cplx, n2, vecs, tau, q, v):
+    """The stuck (coupled) structure's (q, q̇) a time τ into the flight whose cache ``hf`` is
+    filled (:func:`_held_fill`), written into q and v: X(τ) = Re Σₗ wₗ(Vₗcₗ)e^{λₗτ} +
+    Re((X̂e^{iθ₀})e^{iΩτ}) + (q_s, 0) (module text; c = V⁻¹(X₀ − X_p(t₀) − (q_s, 0)),
+    :func:`_coefficients`; wₗ of :func:`_pair_weights`).  A search evaluates one flight at many
+    τ: the columns wₗVₗcₗ and X̂e^{iθ₀} are formed once per flight (rows 0 … 2N − 1 of the cache,
+    the last column X̂e^{iθ₀}; row 2N the start (q0, q̇0); row 2N + 1 t0 and whether filled; row
+    2N + 2 the weights), and each τ then costs e^{λₗτ} for the kept half of Λ and a real sum of
+    2N rows.  ``cplx``, ``n2``, ``vecs``: the configuration's (:func:`_pack`), taken one by one
+    (the configuration tuple costs a reference count per array at each call)."""
+    N = pm.shape[0]
+    N2 = 2 * N
+    last = cplx.shape[0] - 1  # Λ's row
+    W = pm[0, P_W]
+    cw, sw = math.cos(W * tau), math.sin(W * tau)
+    for i in range(N):
+        q[i] = vecs[1, i] + hf[i, n2].real * cw - hf[i, n2].imag * sw
+        v[i] = hf[N + i, n2].real * cw - hf[N + i, n2].imag * sw
+    for m in range(n2):
+        if hf[N2 + 2, m].real == 0.0:
+            continue
+        lam = cplx[last, m]
+        ex = math.exp(lam.real * tau)
+        er, ei = ex * math.cos(lam.imag * tau), ex * math.sin(lam.imag * tau)
+        for i in range(N):
+            q[i] += hf[i, m].real * er - hf[i, m].imag * ei
+            v[i] += hf[N + i, m].real * er - hf[N + i, m].imag * ei
 
 
 @njit(cache=True, inline="always")
@@ -621,10 +706,21 @@ def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     (:func:`_stuck_acceleration`)."""
     if cfg[6]:
         return _free_point_accel(pm, Phi, row, t, q, v, xb)
+    # φᵀM_s⁻¹r with each load rⱼ (:func:`_stuck_loads`) formed where it is used: no array
+    Minv, Ks, Cs, fs = cfg[0][0], cfg[0][1], cfg[0][2], cfg[3][0]
+    N = pm.shape[0]
+    W = pm[0, P_W]
+    th = W * t + pm[0, P_PHI]
+    c, sn = math.cos(th), math.sin(th)
     a = _base_a(pm, xb, t)
-    r = _stuck_loads(pm, cfg, t, q, v)
-    for i in range(pm.shape[0]):
-        a += Phi[row, i] * _stuck_acceleration(cfg, r, i)
+    for j in range(N):
+        rj = (pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]) * c - pm[j, P_C] * W * pm[j, P_XB] * sn
+        rj += fs[j]
+        wj = 0.0
+        for m in range(N):
+            rj -= Cs[j, m] * v[m] + Ks[j, m] * q[m]
+            wj += Phi[row, m] * Minv[m, j]
+        a += wj * rj
     return a
 
 
@@ -1023,56 +1119,72 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
 
 @njit(cache=True)
 def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, xb):
-    """(τ, damper): the first τ in (0, T] where a stuck damper's sₖ·ẍₐ turns positive (its wall
-    would pull; ẍₐ the point's absolute acceleration, with ẍ_b), or (T, −1) (or the τ reached
-    when a signal is seen on ``watch``)."""
+    """(τ, damper): the first τ in (0, T] where a stuck damper's g = sₖ·ẍₐ turns positive (its
+    wall would pull; ẍₐ the point's absolute acceleration, with ẍ_b), or (T, −1) (or the τ
+    reached when a signal is seen on ``watch``).  The grid is the impact search's: a step over
+    which every stuck damper's chord bound max(g(a), g(b)) + Bₖh²/8 stays negative (Bₖ ≥ |g''|,
+    :func:`_bounds`) is taken and the next one doubled, up to a sixteenth of the slowest period;
+    any other is halved, down to 1/64 of the shortest period, where it is taken as sampled; the
+    first sample with g > 0 is refined by Illinois regula falsi."""
     K = Phi.shape[0]
-    step = 2.0 * math.pi / cfg[8] / 64.0
-    q, v, fa = work[3], work[4], work[9]
-    c = _flight_amplitudes(pm, cfg, t0, q0, v0)
+    fine = 2.0 * math.pi / cfg[8] / 64.0
+    hmax = max(2.0 * math.pi / cfg[9] / 16.0, fine)
+    A, B, q, v, fa, fb = work[0], work[1], work[3], work[4], work[9], work[2]
+    _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, xb)
     for k in range(K):
         fa[k] = -1.0
         if stuck[k] != 0:
             fa[k] = min(stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0, q0, v0, xb), -1e-300)
     tau = 0.0
+    H = hmax
     looks = 0
     while tau < T:
         looks += 1
         if (looks & (EVERY - 1)) == 0 and stop_requested(watch):
             return tau, -1
-        tb = min(tau + step, T)
-        _states_from(pm, cfg, c, t0, q0, v0, tb, q, v)
+        H = min(H, T - tau)
+        tb = tau + H
+        _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
+        certain, pulls = True, False
+        for k in range(K):
+            if stuck[k] != 0:
+                fb[k] = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tb, q, v, xb)
+                pulls = pulls or fb[k] > 0.0
+                certain = certain and max(fa[k], fb[k]) + B[k] * H * H / 8.0 < 0.0
+        if not certain and H > fine:
+            H *= 0.5
+            continue
         first, which = tb, -1
         for k in range(K):
-            if stuck[k] == 0:
+            if stuck[k] == 0 or not fb[k] > 0.0:
                 continue
-            fb = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tb, q, v, xb)
-            if fb > 0.0:
-                lo, hi, flo, fhi = tau, tb, fa[k], fb
-                kept = 0
-                for _ in range(200):
-                    tm = secant_point(lo, hi, flo, fhi)
-                    _states_from(pm, cfg, c, t0, q0, v0, tm, q, v)
-                    fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tm, q, v, xb)
-                    if fm > 0.0:
-                        hi, fhi = tm, fm
-                        if kept == 1:
-                            flo *= 0.5
-                        kept = 1
-                    else:
-                        lo, flo = tm, fm
-                        if kept == -1:
-                            fhi *= 0.5
-                        kept = -1
-                    if hi - lo <= 4e-16 * (t0 + hi):
-                        break
-                if which < 0 or hi < first:
-                    first, which = hi, k
-            else:
-                fa[k] = fb
-        if which >= 0:
+            lo, hi, flo, fhi = tau, tb, fa[k], fb[k]
+            kept = 0
+            for _ in range(200):
+                tm = secant_point(lo, hi, flo, fhi)
+                _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
+                fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tm, q, v, xb)
+                if fm > 0.0:
+                    hi, fhi = tm, fm
+                    if kept == 1:
+                        flo *= 0.5
+                    kept = 1
+                else:
+                    lo, flo = tm, fm
+                    if kept == -1:
+                        fhi *= 0.5
+                    kept = -1
+                if hi - lo <= 4e-16 * (t0 + hi):
+                    break
+            if which < 0 or hi < first:
+                first, which = hi, k
+        if pulls:
             return first, which
         tau = tb
+        for k in range(K):
+            if stuck[k] != 0:
+                fa[k] = fb[k]
+        H = min(2.0 * H, hmax)
     return T, -1
 
 
@@ -1245,17 +1357,20 @@ def _stop_jump(pm, cfg, Sphi, s, K, e):
 
 
 @njit(cache=True, inline="always")
-def _expint(k, tau):
-    """∫₀^τ e^{κt} dt = (e^{κτ} − 1)/κ for a complex κ, by its series where κτ is small (there
-    the quotient would cancel)."""
+def _expint(k, tau, ek):
+    """∫₀^τ e^{κt} dt = (e^{κτ} − 1)/κ for a complex κ from ek = e^{κτ}, by its series where κτ is
+    small (there the quotient would cancel), summed until a term falls below 1e-17 of the sum
+    (a chatter's flights are short: a few terms)."""
     z = k * tau
-    if abs(z) < 0.5:
+    if abs(z.real) + abs(z.imag) < 0.5:
         term, acc = 1.0 + 0.0j, 1.0 + 0.0j
-        for n in range(2, 20):
+        for n in range(2, 24):
             term = term * z / n
             acc += term
+            if abs(term.real) + abs(term.imag) < 1e-17 * (abs(acc.real) + abs(acc.imag)):
+                break
         return tau * acc
-    return (np.exp(z) - 1.0) / k
+    return (ek - 1.0) / k
 
 
 @njit(cache=True, inline="always")
@@ -1284,6 +1399,16 @@ def _mode_ledger(pm, i, t0, x0, v0, tau):
     terms are Re(γe^{iΩt}), and each product integrates to (e^{κτ} − 1)/κ.  The power is the
     one-mode engine's, F₀cos θ·ẋ − (K(x − x_b) + C(ẋ − ẋ_b))ẋ_b, the dissipation C(ẋ − ẋ_b)².
     Each two-term signal is a pair of complex scalars (its e^{μt} and e^{iΩt} parts)."""
+    W = pm[i, P_W]
+    th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
+    return _mode_ledger_at(pm, i, x0, v0, tau, math.cos(th), math.sin(th),
+                           complex(math.cos(W * tau), math.sin(W * tau)))  # fmt: skip
+
+
+@njit(cache=True)
+def _mode_ledger_at(pm, i, x0, v0, tau, c, sn, eW):
+    """:func:`_mode_ledger` with cos θ₀, sin θ₀ of the flight's start and e^{iΩτ} given (the
+    modes share them): each e^{κτ} is a product of e^{μτ} and e^{iΩτ}, one exponential a mode."""
     M, K, C, F0, Xb, W = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB], pm[i, P_W]
     sigma = C / (2.0 * M)
     wd2 = K / M - sigma * sigma
@@ -1291,10 +1416,8 @@ def _mode_ledger(pm, i, t0, x0, v0, tau):
     if not (wd2 > 0.0 and D > 1e-24 * K * K):
         return math.nan, math.nan
     wd = math.sqrt(wd2)
-    th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
     A = _steady_cos(M, K, C, F0, Xb, W)
     B = _steady_sin(M, K, C, F0, Xb, W)
-    c, sn = math.cos(th), math.sin(th)
     dx = x0 - (A * c + B * sn)
     dv = v0 - W * (B * c - A * sn)
     mu = complex(-sigma, wd)
@@ -1308,11 +1431,13 @@ def _mode_ledger(pm, i, t0, x0, v0, tau):
     xb_1 = Xb * rot  # cos θ(t) is (0, rot); the base's displacement and rate
     vb_1 = iw * Xb * rot
     rel_0, rel_1 = v_0 - zero, v_1 - vb_1
-    E0 = _expint(2.0 * mu, tau)
-    E1 = _expint(complex(-2.0 * sigma, 0.0), tau)
-    E2 = _expint(mu + iw, tau)
-    E3 = _expint(mu - iw, tau)
-    E4 = _expint(2.0 * iw, tau)
+    ex = math.exp(-sigma * tau)
+    eu = complex(ex * math.cos(wd * tau), ex * math.sin(wd * tau))  # e^{μτ}
+    E0 = _expint(2.0 * mu, tau, eu * eu)
+    E1 = _expint(complex(-2.0 * sigma, 0.0), tau, complex(ex * ex, 0.0))
+    E2 = _expint(mu + iw, tau, eu * eW)
+    E3 = _expint(mu - iw, tau, eu * np.conj(eW))
+    E4 = _expint(2.0 * iw, tau, eW * eW)
     E5 = complex(tau, 0.0)
     work = F0 * _pair(zero, rot, v_0, v_1, E0, E1, E2, E3, E4, E5)
     if Xb != 0.0:
@@ -1328,8 +1453,9 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
              sc, contact, xb):  # fmt: skip
     """Account for the flight [t0, t0 + τ]: the work of the modal forces and the dissipation of
     the Cᵢ (ledger[0], ledger[1]) in closed form while the modes are uncoupled
-    (:func:`_mode_ledger`), else by the one-mode engine's Gauss–Legendre rule at a sixteenth of
-    the shortest period, with the pressed stops' dashpots, c₁(φₛᵀq̇)² (ledger[3]); and, for every
+    (:func:`_mode_ledger`), else by Gauss–Legendre rules on steps of at most 0.75/λ_max (8 points;
+    4 where the step is below 0.05/λ_max; λ_max of :func:`_pack`, their errors in the code), with
+    the pressed stops' dashpots, c₁(φₛᵀq̇)² (ledger[3]); and, for every
     output point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period
     crossed (``period_max[k, p]``), at the ends of the steps and at the zeros of ẋₚ inside them.
     Within a step of length h, abs(xₚ) ≤ max(abs(xₚ(a)), abs(xₚ(b))) + Aₚh²/8 (Aₚ ≥ abs(ẍₚ), as
@@ -1348,11 +1474,16 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
     hq = 2.0 * math.pi / cfg[8] / 16.0
     q, v = work[3], work[4]
     closed = dec
-    c_fl = _flight_amplitudes(pm, cfg, t0, q0, v0)
     if dec:
         w_sum, d_sum = 0.0, 0.0
+        th0 = (W * t0 + pm[0, P_PHI]) % (2.0 * math.pi)
+        c0, s0 = math.cos(th0), math.sin(th0)
+        eW = complex(math.cos(W * tau), math.sin(W * tau))
         for i in range(N):
-            wi, di = _mode_ledger(pm, i, t0, q0[i], v0[i], tau)
+            if pm[i, P_W] == W and pm[i, P_PHI] == pm[0, P_PHI]:
+                wi, di = _mode_ledger_at(pm, i, q0[i], v0[i], tau, c0, s0, eW)
+            else:
+                wi, di = _mode_ledger(pm, i, t0, q0[i], v0[i], tau)
             if math.isnan(wi):
                 closed = False
                 break
@@ -1362,16 +1493,21 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
             ledger[0] += w_sum
             ledger[1] += d_sum
     if not closed:
-        n = max(1, int(math.ceil(tau / hq)))  # noqa: RUF046 (int() spelled out for numba)
+        # each product in the power is a sum of e^{κt} with abs(κ) ≤ 2λ_max (cfg[12]): the
+        # n-point rule's error over a step h is h·(κh)^{2n}(n!)⁴/((2n + 1)((2n)!)³) of the
+        # integrand's size, ≤ 1e-20 for 8 points at κh ≤ 1.5 and ≤ 6e-18 for 4 at κh ≤ 0.1
+        n = max(1, int(math.ceil(tau * cfg[12] / 0.75)))  # noqa: RUF046 (int() for numba)
         hs = tau / n
+        four = hs * cfg[12] <= 0.05
         for j in range(n):
             a = j * hs
-            for g in range(8):
-                s = a + 0.5 * hs * (1.0 + _GL_X[g])
+            for g in range(4 if four else 8):
+                node, weight = (_GL4_X[g], _GL4_W[g]) if four else (_GL_X[g], _GL_W[g])
+                s = a + 0.5 * hs * (1.0 + node)
                 if dec:
                     _free_states(pm, cfg[10], t0, q0, v0, s, q, v)
                 else:
-                    _states_from(pm, cfg, c_fl, t0, q0, v0, s, q, v)
+                    _states(pm, cfg, nstuck, t0, q0, v0, s, q, v)
                 th = W * (t0 + s) + pm[0, P_PHI]
                 c, sn = math.cos(th), math.sin(th)
                 for i in range(N):
@@ -1381,13 +1517,13 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                     power_in = (
                         pm[i, P_F0] * c * v[i] - (pm[i, P_K] * (q[i] - xg) + pm[i, P_C] * rel) * vg
                     )
-                    ledger[0] += 0.5 * hs * _GL_W[g] * power_in
-                    ledger[1] += 0.5 * hs * _GL_W[g] * pm[i, P_C] * rel * rel
+                    ledger[0] += 0.5 * hs * weight * power_in
+                    ledger[1] += 0.5 * hs * weight * pm[i, P_C] * rel * rel
                 if not dec:
                     for r in range(Sphi.shape[0]):
                         if contact[r] != 0:
                             rate = _dot(Sphi, r, v)
-                            ledger[3] += 0.5 * hs * _GL_W[g] * sc[r] * rate * rate
+                            ledger[3] += 0.5 * hs * weight * sc[r] * rate * rate
     if P == 0:
         return
     _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp, xb)
@@ -1406,7 +1542,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
         if dec:
             _free_states(pm, cfg[10], t0, q0, v0, b, q, v)
         else:
-            _states_from(pm, cfg, c_fl, t0, q0, v0, b, q, v)
+            _states(pm, cfg, nstuck, t0, q0, v0, b, q, v)
         ka = min(int(math.floor((t0 + a) / T_f)), n_periods)  # noqa: RUF046
         k = int(math.floor((t0 + b) / T_f))  # noqa: RUF046 (int() spelled out for numba)
         taken = True
@@ -1443,7 +1579,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                     if dec:
                         _free_states(pm, cfg[10], t0, q0, v0, tm, q, v)
                     else:
-                        _states_from(pm, cfg, c_fl, t0, q0, v0, tm, q, v)
+                        _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
                     vm = _base_v(pm, xb, t0 + tm)
                     for i in range(N):
                         vm += Pout[p, i] * v[i]
@@ -1462,7 +1598,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                         kept = 1
                     if hi - lo <= 4e-16 * (t0 + hi):
                         break
-                _states_from(pm, cfg, c_fl, t0, q0, v0, 0.5 * (lo + hi), q, v)
+                _states(pm, cfg, nstuck, t0, q0, v0, 0.5 * (lo + hi), q, v)
                 xm = _base_x(pm, xb, t0 + 0.5 * (lo + hi))
                 for i in range(N):
                     xm += Pout[p, i] * q[i]

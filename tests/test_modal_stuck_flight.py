@@ -1,0 +1,126 @@
+"""The stuck (coupled) structure's flight in the modal engine (:func:`_modal._held_free`) and the
+search for a stuck mass's release (:func:`_modal._release`), against the matrix exponential.
+
+While a mass rides on its point the structure is M_s q̈ + Cq̇ + Kq = F cos(Ωt + φ) with
+M_s = diag(Mᵢ) + mφφᵀ.  The engine writes its flight from A's eigen-decomposition, one exponential
+for each conjugate pair of eigenvalues and its columns formed once per flight; the reference here
+is SciPy's ``expm`` of the real first-order matrix (scaling and squaring, no eigenvectors) plus
+the harmonic particular solution, each state to 1e-12 of the motion's scale (V's condition
+number is about 400 here, so rounding may reach 400 ulps; measured: 1.9e-14).  An over-damped mode
+(ζ = 3) gives the coupled structure real eigenvalues, which count once."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.linalg import expm
+from scipy.optimize import brentq
+
+from symimpact.forced import _modal
+from symimpact.forced._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W
+
+W, PHASE = 2 * math.pi * 7.0, 0.4
+SHAPE = np.array([[1.0, -0.7, 0.4]])  # the stuck mass's point
+MASS = np.array([0.2])
+
+
+def _parameters(zetas):
+    """Three modes of 6, 25 and 57 Hz, modal masses 1, 0.8 and 1.2 kg, forced at Ω (7 Hz)."""
+    pm = np.zeros((3, N_PARAMS))
+    for i, (m, w, z) in enumerate(zip((1.0, 0.8, 1.2), (6.0, 25.0, 57.0), zetas, strict=True)):
+        w = 2 * math.pi * w
+        pm[i, P_M], pm[i, P_K], pm[i, P_C] = m, m * w * w, 2 * z * w * m
+        pm[i, P_F0] = (3.0, -1.0, 0.5)[i]
+        pm[i, P_W], pm[i, P_PHI] = W, PHASE
+    return pm
+
+
+def _config(pm):
+    e, nothing = np.zeros(0), np.zeros(0, dtype=np.int64)
+    return _modal._config(pm, SHAPE, MASS, np.array([1]), np.zeros((0, 3)), e, e, e, nothing,
+                          nothing, 0.0)  # fmt: skip
+
+
+def _reference(pm):
+    """(A, b, X̂): X' = AX + b cos(Ωt + φ), X = (q, q̇), and its harmonic solution's amplitude."""
+    Ms = np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0])
+    Mi = np.linalg.inv(Ms)
+    A = np.block([[np.zeros((3, 3)), np.eye(3)],
+                  [-Mi @ np.diag(pm[:, P_K]), -Mi @ np.diag(pm[:, P_C])]])  # fmt: skip
+    b = np.concatenate([np.zeros(3), Mi @ pm[:, P_F0]])
+    Xhat = np.linalg.solve(1j * W * np.eye(6) - A, b)
+    return A, b, Xhat
+
+
+def _exact(pm, t0, X0, tau):
+    A, _, Xhat = _reference(pm)
+
+    def particular(t):
+        return (Xhat * np.exp(1j * (W * t + PHASE))).real
+
+    return expm(A * tau) @ (X0 - particular(t0)) + particular(t0 + tau)
+
+
+def test_conjugate_pairs_count_once_and_real_eigenvalues_once_each():
+    lam = np.array([-1 + 5j, -2.0, -1 - 5j, -3 + 0j, -0.5 - 2j, -0.5 + 2j])
+    w = _modal._pair_weights(lam)
+    assert list(w) == [2.0, 1.0, 0.0, 1.0, 0.0, 2.0]
+    # an eigenvalue without its conjugate (not met for a real A): every term kept once
+    assert list(_modal._pair_weights(np.array([-1 + 5j, -1 - 4j]))) == [1.0, 1.0]
+
+
+def test_a_stuck_flight_is_the_matrix_exponential():
+    for zetas in ((0.01, 0.02, 0.03), (0.01, 3.0, 0.03)):  # the second: an over-damped mode
+        pm = _parameters(zetas)
+        cfg = _config(pm)
+        weights = cfg[11][-1, : cfg[2]].real
+        assert not cfg[6] and cfg[5]
+        if zetas[1] > 1:
+            assert np.any(weights == 1.0)  # real eigenvalues, each once
+        rng = np.random.default_rng(11)
+        starts = [(0.37, rng.normal(size=3) * 1e-3, rng.normal(size=3) * 1e-2) for _ in range(2)]
+        q, v = np.empty(3), np.empty(3)
+        for t0, q0, v0 in (*starts, starts[0]):  # two flights, then the first again: the cache
+            taus = np.linspace(0.0, 3 * 2 * math.pi / W, 17)
+            exact = np.array([_exact(pm, t0, np.concatenate([q0, v0]), tau) for tau in taus])
+            scale_q, scale_v = np.max(np.abs(exact[:, :3])), np.max(np.abs(exact[:, 3:]))
+            for tau, X in zip(taus, exact, strict=True):
+                _modal._states(pm, cfg, 1, t0, q0, v0, tau, q, v)
+                assert np.max(np.abs(q - X[:3])) < 1e-12 * scale_q
+                assert np.max(np.abs(v - X[3:])) < 1e-12 * scale_v
+
+
+def test_the_release_is_the_first_time_the_wall_would_pull():
+    """From rest on the wall s = +1 at a phase where the point accelerates away from the mass
+    (ẍₐ < 0), the release is the first zero of ẍₐ: the engine's certified search against ẍₐ
+    sampled 20 000 times a period from the matrix exponential and the first sign change refined
+    by Brent's method (1e-12 of the period: the engine's regula falsi stops at 4e-16 of the
+    time, the zero's condition is ẍₐ's slope there)."""
+    pm = _parameters((0.01, 0.02, 0.03))
+    cfg = _config(pm)
+    t0, q0, v0 = 0.0, np.zeros(3), np.zeros(3)
+    T = 2 * math.pi / W
+    Ms = np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0])
+    Mi = np.linalg.inv(Ms)
+
+    def accel(tau):
+        X = _exact(pm, t0, np.concatenate([q0, v0]), tau)
+        force = pm[:, P_F0] * math.cos(W * (t0 + tau) + PHASE)
+        load = force - pm[:, P_C] * X[3:] - pm[:, P_K] * X[:3]
+        return SHAPE[0] @ (Mi @ load)
+
+    stuck = np.array([1 if accel(0.0) < 0 else -1])
+    g0 = stuck[0] * accel(0.0)
+    assert g0 < 0
+    grid = np.linspace(0.0, T, 20_001)
+    g = np.array([stuck[0] * accel(t) for t in grid])
+    first = int(np.argmax(g > 0))
+    assert first > 0
+    root = brentq(lambda t: stuck[0] * accel(t), grid[first - 1], grid[first], xtol=1e-16,
+                  rtol=1e-15)  # fmt: skip
+    work = np.empty((22, 3))
+    watch = np.array([-1, 0, 0], dtype=np.int64)
+    tau, which = _modal._release(pm, cfg, 1, stuck, SHAPE, t0, q0, v0, 2 * T, watch, work, 0.0)
+    assert which == 0
+    assert abs(tau - root) < 1e-12 * T
