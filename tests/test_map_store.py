@@ -167,8 +167,8 @@ def test_a_second_map_on_the_same_out_is_refused_while_the_first_runs(tmp_path):
 
 def test_maps_package_imports_flow_one_way():
     """symimpact.maps: each module imports only the modules before it in the map's flow
-    (points → runs → executors → table → store → engine → sweep → design → structure_design →
-    ensemble), at the top or inside
+    (points → runs → executors → table → store → engine → sweep → design → structure_curve →
+    structure_design → ensemble), at the top or inside
     functions — no circle (maps, mapfiles and sweep used to import each other)."""
     import ast
     from pathlib import Path
@@ -184,6 +184,7 @@ def test_maps_package_imports_flow_one_way():
         "engine",
         "sweep",
         "design",
+        "structure_curve",
         "structure_design",
         "ensemble",
     ]

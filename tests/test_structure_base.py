@@ -289,3 +289,27 @@ def test_the_curve_s_runs_from_rest_wait_for_the_slowest_mode_s_transient():
         assert math.exp(-decay * n * T) <= SETTLED < math.exp(-decay * (n - 1) * T)
         exact = abs(model.structure.base_transmissibility("tip", w)) * model.base_at(w)
         assert r["amplitudes"]["tip"] == pytest.approx(exact, rel=1.5e-6)
+
+
+def test_the_curve_s_runs_from_rest_on_two_processes_give_the_same_curve():
+    """:func:`symimpact.maps.structure_curve.structure_curve_map` runs the runs from rest on two
+    worker processes and continues the branches here: the same curve as
+    :func:`structure_curve` in one process, to the bit (each run is the same computation), and
+    its runs' amplitudes are the closed-form transmissibility's (1.5e-6, as above)."""
+    from symimpact.forced.structure_branch import structure_curve
+    from symimpact.maps.structure_curve import structure_curve_map
+    from symimpact.model.structure_model import model_from_dict
+
+    model = model_from_dict(BEAM_FILE | {"dampers": [dict(BEAM_FILE["dampers"][0], gap="1 m")]})
+    args = (model.structure, model.dampers, model.force_at, model.F0)
+    f1 = model.structure.modes[0].omega
+    lo, hi = 0.95 * f1, 1.05 * f1
+    here = structure_curve(*args, lo, hi, (hi - lo) / 4, base=model.base_at)
+    spread = structure_curve_map(*args, lo, hi, (hi - lo) / 4, base=model.base_at,
+                                 executor="processes", workers=2)  # fmt: skip
+    assert spread.settled == here.settled and spread.notes == here.notes
+    assert [b.as_dict() for b in spread.branches] == [b.as_dict() for b in here.branches]
+    for r in spread.settled:
+        w = r["omega"]
+        exact = abs(model.structure.base_transmissibility("tip", w)) * model.base_at(w)
+        assert r["amplitudes"]["tip"] == pytest.approx(exact, rel=1.5e-6)

@@ -74,12 +74,11 @@ def run_structure(ns) -> None:
     from .common import quantity_text
 
     refused = {"mass_ratios": "mass-ratios", "multistart": "multistart", "no_refine": "no-refine",
-               "executor": "executor", "workers": "workers", "scheduler": "scheduler",
                "out": "out", "plot": "plot", "csv": "csv", "chi": "chi"}  # fmt: skip
     for key, flag in refused.items():
         if getattr(ns, key, None) not in (None, False):
             raise ParameterError(flag, "not taken by a structure's design yet (it sweeps one "
-                                       "damper's clearance, in this process)")  # fmt: skip
+                                       "damper's clearance)")  # fmt: skip
     if ns.response not in (None, "displacement"):
         raise ParameterError("response", "a structure's design compares displacements")
     lo, hi, step = structure_band(ns)
@@ -94,7 +93,9 @@ def run_structure(ns) -> None:
         raise ParameterError("point", exc.reason) from None
     gaps = parse_range("gaps", ns.gaps)
     d = structure_design(model.structure, model.dampers, model.force_at, model.F0, damper,
-                         gaps, lo, hi, step, point, model.stops, base=model.base_at)  # fmt: skip
+                         gaps, lo, hi, step, point, model.stops, base=model.base_at,
+                         executor=ns.executor, workers=ns.workers,
+                         scheduler=ns.scheduler)  # fmt: skip
     lines = [f"damper {damper!r}: its clearance against the peak at {point!r} over Ω "
              f"{omega_text(lo)}–{omega_text(hi)}"]  # fmt: skip
     for g, pk in zip(d.gaps, d.peaks, strict=True):

@@ -37,6 +37,9 @@ def add_parser(sub: Any) -> None:
                    help="at most N runs from the branches' ends and losses of stability, whose "
                    "landings start new branches (default 256 with rigid impacts, 0 with a "
                    "compliant contact, whose runs integrate every contact)")  # fmt: skip
+    g.add_argument("--workers", type=int, default=None, metavar="N",
+                   help="with --structure: processes for the runs from rest at each frequency "
+                   "(default all cores; 1 runs them here)")  # fmt: skip
     p.add_argument(
         "--response",
         default="displacement",
@@ -154,12 +157,13 @@ def contact_title(ns, e: Any) -> str:
 
 def run_structure(ns) -> None:
     """A structure file with dampers or stops: its branches of orbits continued over the band
-    from both ends with the period-doubled branches
-    (:func:`symimpact.forced.structure_branch.structure_curve`) and every point's located peak
-    beside the bare structure's (the linear receptance, no damper or stop)."""
+    from both ends with the period-doubled branches, its runs from rest on ``--workers``
+    processes (:func:`symimpact.maps.structure_curve.structure_curve_map`) and every point's
+    located peak beside the bare structure's (the linear receptance, no damper or stop)."""
 
     from ..errors import ParameterError
-    from ..forced.structure_branch import bare_peak, curve_peak, structure_curve
+    from ..forced.structure_branch import bare_peak, curve_peak
+    from ..maps.structure_curve import structure_curve_map
     from ..model.display import omega_text
     from .common import quantity_text
 
@@ -178,7 +182,8 @@ def run_structure(ns) -> None:
     lo, hi, step = structure_band(ns)
     model = ns.structure_model
     args = (model.structure, model.dampers, model.force_at, model.F0)
-    curve = structure_curve(*args, lo, hi, step, model.stops, base=model.base_at)
+    curve = structure_curve_map(*args, lo, hi, step, model.stops, base=model.base_at,
+                                workers=ns.workers)  # fmt: skip
     branches, notes = curve.branches, curve.notes
     peaks, bare = {}, {}
     for p in model.structure.points:
@@ -223,6 +228,11 @@ def run_structure(ns) -> None:
 def run(ns) -> None:
     if getattr(ns, "structure_model", None) is not None:
         return run_structure(ns)
+    if ns.workers is not None:
+        from ..errors import ParameterError
+
+        raise ParameterError("workers", "spreads a --structure curve's runs: this curve's "
+                             "branches run in one process")  # fmt: skip
     from ..forced.frf import frequency_response
     from ..model.display import display_unit, omega_text, shown
 

@@ -496,13 +496,47 @@ class StructureCurve:
                 "settled": self.settled, "notes": self.notes}  # fmt: skip
 
 
+def curve_grid(omega_low: float, omega_high: float, step: float) -> np.ndarray:
+    """The frequencies [rad/s] of a structure's curve over [omega_low, omega_high]: every
+    ``step`` from omega_low, and omega_high last."""
+    lo, hi = positive_float("omega_low", omega_low), positive_float("omega_high", omega_high)
+    step = positive_float("step", step)
+    if not hi > lo:
+        raise ParameterError("omega_high", "must be above omega_low")
+    grid = np.arange(lo, hi + 0.5 * step, step)
+    grid[-1] = min(grid[-1], hi)
+    if grid[-1] < hi:
+        grid = np.append(grid, hi)
+    return grid
+
+
+def settled_run(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega: float,
+                stops: Any = (), warmup: Any = None,
+                base: Any = 0.0) -> tuple[dict[str, Any], np.ndarray]:  # fmt: skip
+    """One run from rest of a structure's curve (:func:`structure_curve`) at ``omega`` [rad/s]:
+    ``warmup`` periods of transient (None: :func:`settling_periods`) and KEPT more; its entry
+    {"omega", "periods", "amplitudes": {point: m}} (each point's largest abs(x) over the KEPT
+    periods) and its final state (t, the N modes' and K dampers' states, ...)."""
+    from .structure_response import simulate_structure
+
+    waited = settling_periods(structure, float(omega)) if warmup is None else warmup
+    run = simulate_structure(structure, dampers, force_at, F0, float(omega), periods=waited + KEPT,
+                             stops=stops, base=_base_at(base, float(omega)))  # fmt: skip
+    kept = run.period_max[waited:]  # the KEPT periods after the transient
+    entry = {"omega": float(omega), "periods": waited + KEPT,
+             "amplitudes": {p: float(kept[:, j].max()) for j, p in enumerate(run.points)}}  # fmt: skip
+    return entry, run.final_state
+
+
 def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, omega_low: float,
                     omega_high: float, step: float, stops: Any = (), warmup: Any = None,
-                    base: Any = 0.0) -> StructureCurve:  # fmt: skip
+                    base: Any = 0.0, runs: Any = None) -> StructureCurve:  # fmt: skip
     """The structure's response curve over [omega_low, omega_high] [rad/s]: a run from rest at
-    every frequency of the grid of ``step``, ``warmup`` periods of transient (None: until the
-    slowest mode's free transient has fallen to SETTLED, :func:`settling_periods`) and KEPT
-    periods read for the largest displacements; a branch continued from each
+    every frequency of the grid of ``step`` (:func:`curve_grid`, :func:`settled_run`: ``warmup``
+    periods of transient, None: until the slowest mode's free transient has fallen to SETTLED,
+    and KEPT periods read for the largest displacements; ``runs``: those runs' results, in the
+    grid's order, computed elsewhere, e.g. on several processes by
+    :func:`symimpact.maps.structure_curve.structure_curve_map`); a branch continued from each
     end of the band (steps up to ``step``), each started from the orbit the run there settles
     on, of the fewest periods it comes back after (1 to 8, to 1e-6 of the state); and the
     period-doubled branch of each period doubling they locate (:func:`doubled_branch`).  The
@@ -515,33 +549,25 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
     n = 2 * len(structure.modes) + 2 * len(tuple(dampers))
     branches: list[StructureBranch] = []
     notes: list[str] = []
-    grid = np.arange(omega_low, omega_high + 0.5 * step, step)
-    grid[-1] = min(grid[-1], omega_high)
-    if grid[-1] < omega_high:
-        grid = np.append(grid, omega_high)
-    runs = {}
-    settled = []
+    grid = curve_grid(omega_low, omega_high, step)
     if warmup is not None:
         warmup = whole_number("warmup", warmup, 0)
-    for w in grid:
-        waited = settling_periods(structure, float(w)) if warmup is None else warmup
-        run = simulate_structure(*args, float(w), periods=waited + KEPT, stops=stops,
-                                 base=_base_at(base, float(w)))  # fmt: skip
-        runs[float(w)] = run
-        kept = run.period_max[waited:]  # the KEPT periods after the transient
-        settled.append({"omega": float(w), "periods": waited + KEPT,
-                        "amplitudes": {p: float(kept[:, j].max())
-                                       for j, p in enumerate(run.points)}})  # fmt: skip
+    if runs is None:
+        runs = [settled_run(*args, float(w), stops, warmup, base) for w in grid]
+    if [r[0]["omega"] for r in runs] != [float(w) for w in grid]:
+        raise ParameterError("runs", "must be the runs at the curve's grid, in its order")
+    settled = [entry for entry, _ in runs]
+    ends = {float(grid[0]): runs[0], float(grid[-1]): runs[-1]}
     for w0, w1 in ((omega_low, omega_high), (omega_high, omega_low)):
-        start = runs[float(grid[0] if w0 == omega_low else grid[-1])]
-        s = start.final_state[1 : 1 + n]
+        start, final = ends[float(grid[0] if w0 == omega_low else grid[-1])]
+        s = final[1 : 1 + n]
         for k in range(1, 9):
             back = simulate_structure(*args, w0, periods=k, state=s, stops=stops,
                                       base=_base_at(base, w0))  # fmt: skip
             if np.linalg.norm(back.final_state[1 : 1 + n] - s) <= 1e-6 * np.linalg.norm(s):
                 break
         else:
-            notes.append(f"at Ω {w0:.6g} rad/s the motion {len(start.period_max)} periods "
+            notes.append(f"at Ω {w0:.6g} rad/s the motion {start['periods']} periods "
                          "from rest is not an orbit of up to 8 periods (quasi-periodic or "
                          "chaotic): no branch from there")  # fmt: skip
             continue

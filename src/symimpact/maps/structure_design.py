@@ -7,8 +7,9 @@ period-doubled branches and run from rest at each frequency of the band's grid
 located on it (:func:`symimpact.forced.structure_branch.curve_peak`: on the branches, or a run
 from rest's where it settled on a larger motion no branch holds);
 the best clearance is the one of the lowest peak, reported beside the bare structure's peak
-(:func:`symimpact.forced.structure_branch.bare_peak`).  The clearances run one after the other
-in this process.
+(:func:`symimpact.forced.structure_branch.bare_peak`).  The clearances run one after the other;
+each curve's runs from rest run on the map engine's executors
+(:func:`symimpact.maps.structure_curve.structure_curve_map`).
 """
 
 from __future__ import annotations
@@ -19,9 +20,10 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
-from ..forced.structure_branch import StructurePeak, bare_peak, curve_peak, structure_curve
+from ..forced.structure_branch import StructurePeak, bare_peak, curve_peak
 from ..model.dampers import Damper
 from ..model.structure import Structure
+from .structure_curve import structure_curve_map
 
 
 @dataclass(frozen=True)
@@ -61,11 +63,14 @@ def _row(gap: float, peak: StructurePeak | None, notes: list[str]) -> dict[str, 
 
 def structure_design(structure: Structure, dampers: Any, force_at: Any, F0: Any, damper: str,
                      gaps: Any, omega_low: float, omega_high: float, step: float,
-                     point: Any = None, stops: Any = (), base: Any = 0.0) -> StructureDesign:  # fmt: skip
+                     point: Any = None, stops: Any = (), base: Any = 0.0, *,
+                     executor: str | None = None, workers: Any = None, client: Any = None,
+                     scheduler: str | None = None) -> StructureDesign:  # fmt: skip
     """The located peak at ``point`` (default: the driven point) over [omega_low, omega_high]
     [rad/s] for each clearance of ``gaps`` [m] given to the damper named ``damper`` (module
     text); ``base``: the supports' displacement amplitude X_b [m], or a function of Ω giving
-    it."""
+    it; ``executor``, ``workers``, ``client``, ``scheduler``: where each curve's runs from rest
+    run (:func:`symimpact.maps.structure_curve.structure_curve_map`)."""
     dampers = tuple(dampers)
     names = [d.name for d in dampers]
     if damper not in names:
@@ -81,8 +86,9 @@ def structure_design(structure: Structure, dampers: Any, force_at: Any, F0: Any,
     for gap in values:
         trial: list[Damper] = list(dampers)
         trial[k] = replace(dampers[k], gap=float(gap))
-        curve = structure_curve(structure, trial, force_at, F0, omega_low, omega_high, step,
-                                stops, base=base)  # fmt: skip
+        curve = structure_curve_map(structure, trial, force_at, F0, omega_low, omega_high, step,
+                                    stops, base=base, executor=executor, workers=workers,
+                                    client=client, scheduler=scheduler)  # fmt: skip
         peaks.append(curve_peak(structure, trial, force_at, F0, curve, at, stops, base=base))
         notes.append(curve.notes)
     bare = bare_peak(structure, force_at, F0, at, omega_low, omega_high, base=base)
