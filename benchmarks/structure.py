@@ -20,10 +20,11 @@ model at the same impact-time accuracy.
    in this run, the impact times' largest relative difference printed beside the ratio (target
    ≥ 100).
 4. The issue's curve: the 10-mode cantilever of item 2 over 0.85–1.15 of its first natural
-   frequency at 200 frequencies (:func:`symimpact.forced.structure_branch.structure_curve`: a
+   frequency at 200 frequencies (:func:`symimpact.maps.structure_curve.structure_curve_map`: a
    run from rest at each, as long as the slowest mode's transient takes to fall to 1e-6 and 40
-   periods more, branches continued from the band's ends; target ≤ 60 s),
-   timed once (it takes minutes), beside one of its runs from rest at the first mode.
+   periods more, on as many processes as the machine has cores, then branches continued from
+   the band's ends; target ≤ 60 s on two cores), timed once (it takes minutes), beside one of
+   its runs from rest at the first mode.
 
 Medians of five with their spread (item 4: one run); asserts nothing.  Run from the checkout:
 python -m benchmarks.structure
@@ -32,13 +33,15 @@ python -m benchmarks.structure
 from __future__ import annotations
 
 import math
+import os
 import time
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from symimpact.forced.structure_branch import KEPT, curve_peak, settling_periods, structure_curve
+from symimpact.forced.structure_branch import KEPT, curve_peak, settling_periods
 from symimpact.forced.structure_response import simulate_structure
+from symimpact.maps.structure_curve import structure_curve_map
 from symimpact.model.dampers import dampers
 from symimpact.model.structure import beam_structure, fe_structure
 
@@ -165,12 +168,13 @@ def _ten_mode_curve(s, ds, points: int = 200) -> None:
     one = simulate_structure(s, ds, "tip", 2.0, 2 * math.pi * f1, periods=n)
     t_one = time.perf_counter() - t
     t = time.perf_counter()
-    c = structure_curve(s, ds, "tip", 2.0, lo, hi, (hi - lo) / (points - 1))
+    c = structure_curve_map(s, ds, "tip", 2.0, lo, hi, (hi - lo) / (points - 1))
     secs = time.perf_counter() - t
     peak = curve_peak(s, ds, "tip", 2.0, c, "tip")
     orbits = sum(len(b.orbits) for b in c.branches)
     print(f"4. its curve, {points} frequencies {lo / 2 / math.pi:.3f}-{hi / 2 / math.pi:.3f} Hz, "
-          f"one run: {secs:.1f} s (target <= 60 s); {len(c.branches)} branches, {orbits} orbits, "
+          f"one run on {os.cpu_count()} processes: {secs:.1f} s (target <= 60 s on 2); "
+          f"{len(c.branches)} branches, {orbits} orbits, "
           f"{len(c.notes)} notes; peak {peak.amplitude * 1e3:.4f} mm at "
           f"{peak.omega / 2 / math.pi:.4f} Hz ({peak.kind})")  # fmt: skip
     print(f"  one of its runs from rest, at the first mode ({f1:.3f} Hz, {n} periods): {t_one:.2f} s, "
