@@ -3,7 +3,9 @@
 (:func:`coverage`).
 
 At each of :data:`FREQUENCIES` frequencies spread over the band (fixed by the band's ends, not
-by its step, so that the curve does not depend on how finely it is sampled) the event-driven
+by its step, so that the curve does not depend on how finely it is sampled; for a curve, each
+initial state's interval halved where it lands on motions of another kind at its ends, down to
+:data:`REFINE` of the band) the event-driven
 simulation (rigid impacts with chatter and sticking, or a compliant contact; Eq. F1, F2) runs
 from :data:`STARTS` initial states until the primary's free transient has decayed to 1e-6
 (exp(−ζω_n·t), at most :data:`WARMUP` periods), and its last periods are classified by
@@ -29,6 +31,7 @@ from :data:`STARTS` initial states until the primary's free transient has decaye
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -255,21 +258,68 @@ def _kind(lam: float, spread: float, period: float) -> str:
     return "not settled" if lam < 0 else "not periodic"
 
 
+#: With ``refine``, the multi-start's interval between two neighbouring frequencies is halved
+#: where one initial state lands on motions of another kind, period or count of impacts at its
+#: ends, down to this share of the band: the stable windows of a resonance broken up by
+#: chatter (the README's 29–33 rad/s) are narrower than the multi-start's spacing.
+REFINE = 1.0 / 256
+
+
+def _landing_key(a: Attractor | None) -> tuple | None:
+    """What a landing is, for the refinement: its kind (a motion that does not repeat counts as
+    one kind, whether or not its exponent was computed), period and impacts a period."""
+    if a is None:
+        return None
+    repeats = a.kind not in ("chaotic", "quasi-periodic", "not periodic", "not settled")
+    kind = a.kind if repeats else "not periodic"
+    return kind, a.period_multiple, round(a.impacts_per_period, 6)
+
+
 def attractors(
     system: ImpactSystem, forcing: Forcing, e: Any, band: tuple[float, float],
-    n: int = FREQUENCIES,
+    n: int = FREQUENCIES, *, refine: bool = False,
 ) -> list[Attractor]:  # fmt: skip
     """The attractors of the multi-start over ``band`` (module text), each distinct one at a
-    frequency once."""
-    found: list[Attractor] = []
-    for w in frequencies(band, n):
-        f = forcing.at(float(w))
-        here: list[Attractor] = []
-        for s in initial_states(system, f):
+    frequency once, in the order of the frequencies.  With ``refine``, each initial state's
+    interval between neighbouring frequencies is halved where its landings at the ends differ
+    (:data:`REFINE`); the shot periodic landings of the halving points are added (those of at
+    most MAX_SHOT_PERIODS periods, which a curve traces; a motion that does not repeat there is
+    not added: its exponent is not computed)."""
+    ws = [float(w) for w in frequencies(band, n)]
+    runs: dict[float, list[Attractor]] = {w: [] for w in ws}
+    landing: dict[tuple[float, int], Attractor | None] = {}
+    for w in ws:
+        f = forcing.at(w)
+        for j, s in enumerate(initial_states(system, f)):
             try:
                 a = attractor(system, f, e, s)
             except SymimpactError:
-                continue
+                a = None
+            landing[w, j] = a
+            if a is not None:
+                runs[w].append(a)
+    if refine:
+        width = band[1] - band[0]
+        for j in range(STARTS):
+            stack = [(a, b, landing.get((a, j)), landing.get((b, j)))
+                     for a, b in itertools.pairwise(ws)]  # fmt: skip
+            while stack:
+                a, b, la, lb = stack.pop()
+                if _landing_key(la) == _landing_key(lb) or b - a < 2 * REFINE * width:
+                    continue
+                m = 0.5 * (a + b)
+                f = forcing.at(m)
+                try:
+                    lm = attractor(system, f, e, initial_states(system, f)[j], exponent=False)
+                except (SymimpactError, IndexError):
+                    lm = None
+                if lm is not None and lm.kind == "periodic" and lm.stable is not None:
+                    runs.setdefault(m, []).append(lm)
+                stack += [(a, m, la, lm), (m, b, lm, lb)]
+    found: list[Attractor] = []
+    for w in sorted(runs):
+        here: list[Attractor] = []
+        for a in runs[w]:
             # a periodic motion found again: the same period and amplitude to 1e-9; a chaotic,
             # quasi-periodic or not periodic one: its amplitude is a sample of its envelope, so
             # the same kind within 5 % is the same attractor (the largest sample kept)

@@ -270,7 +270,9 @@ def frequency_response(
     bound the branches; the sweeps and the baseline use every value): branches continued from
     ``starts`` frequencies spread over the band (closed-form orbits and brute-force steady
     states of one and two periods), from the periodic attractors of a multi-start at
-    ``multistart`` frequencies (0: none), by branch switching and by at most ``jumps`` runs
+    ``multistart`` frequencies (0: none), with rigid impacts refined where an initial state
+    lands on motions of another kind at neighbouring frequencies
+    (:func:`symimpact.forced.coverage.attractors`, ``refine``), by branch switching and by at most ``jumps`` runs
     from the branches' stable ends and losses of stability and of the multi-start's initial
     states at the branches' ends (None: MAX_JUMPS with rigid impacts, none with a compliant
     contact); the located peak; the linear
@@ -334,7 +336,10 @@ def frequency_response(
     out.baseline = np.column_stack([w, linear_amplitude(system, forcing, w)])
     out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
     # the multi-start: every periodic attractor that no branch traces starts one
-    found = attractors(system, forcing, e, band, multistart) if multistart else []
+    # refined with rigid impacts (whose resonance breaks into narrow stable windows between
+    # grazings); a compliant contact's runs integrate every contact, at far greater cost
+    found = (attractors(system, forcing, e, band, multistart, refine=is_rigid(e))
+             if multistart else [])  # fmt: skip
     for a in found:
         if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
             follow("multi-start", a.period_multiple, a.state, _forcing(forcing, a.omega))
