@@ -79,7 +79,7 @@ def main() -> None:
     periodic = [a for a in found if a.kind == "periodic"]
     print(f"the curve with switching and coverage (symimpact frf's default): {full.s()}  "
           "(target <= 15 s)")  # fmt: skip
-    print(f"  {len(r.branches)} branches; multi-start at 15 frequencies: {len(cov.attractors)} "
+    print(f"  {len(r.branches)} branches; multi-start at 15 frequencies, refined: {len(cov.attractors)} "
           f"attractors, {sum(cov.traced)} of {len(cov.traced)} periodic ones on a traced branch; "
           f"peak {r.peak.amplitude * 1e3:.4g} mm ({r.peak.motion})")  # fmt: skip
     print(f"multi-start brute force at all {len(BAND)} frequencies (baseline): {brute.s()}  "

@@ -314,34 +314,39 @@ GRAZE = "graze"
 def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float | None = None,
              start: np.ndarray | None = None):  # fmt: skip
     """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from y_pred (or from ``start``, a point of the
-    same hyperplane nearer the branch); None when it fails, GRAZE as soon as an iterate impacts
-    other than ``count`` times per period (the map's impacts changed on the way: measured on the
-    README's curve, 109 of 2790 such corrections came back to an orbit with ``count`` impacts,
-    each found again from the shorter step the caller then takes, at a third of the cost)."""
+    same hyperplane nearer the branch); None when it fails, GRAZE when it lands on an orbit
+    that impacts other than ``count`` times per period — with rigid impacts as soon as an
+    iterate does (the map's impacts changed on the way: measured on the README's curve, 109 of
+    2790 such corrections came back to an orbit with ``count`` impacts, each found again from
+    the shorter step the caller then takes, at a third of the cost); with a compliant contact,
+    whose contacts a period change smoothly, when it fails after an iterate did."""
     y = (y_pred if start is None else start).copy()
+    rigid, wandered = is_rigid(problem.e), False
     for _ in range(MAX_NEWTON):
         try:
             r, J, mono, res = problem.evaluate(y)
         except SymimpactError:  # no impacts, a zero-speed impact, a state through a wall
-            return None
+            return GRAZE if wandered else None
         if count is not None and _events(res, problem.periods) != count:
-            return GRAZE
+            if rigid:
+                return GRAZE
+            wandered = True
         A = np.vstack([J, t])
         b = np.concatenate([-r, [-(t @ (y - y_pred))]])
         try:
             dy = np.linalg.solve(A, b)
         except np.linalg.LinAlgError:
-            return None
+            return GRAZE if wandered else None
         y = y + dy
         if np.max(np.abs(dy)) < max(TOL, problem.noise * np.linalg.cond(A)):
             try:
                 r, J, mono, res = problem.evaluate(y)
             except SymimpactError:
-                return None
+                return GRAZE if wandered else None
             if count is not None and _events(res, problem.periods) != count:
                 return GRAZE
             return y, J, mono, res
-    return None
+    return GRAZE if wandered else None
 
 
 def _events(res, periods: int) -> float:
@@ -451,7 +456,7 @@ def continue_orbit(
             point = _point(problem, y, mono, res)
             back = None  # the section moved: the point before is in the old one
         attempt = _correct(problem, y + ds * t, t, point.impact_events_per_period)
-        if attempt is GRAZE and ds > step / 64:
+        if attempt is GRAZE and ds > step / 64 and is_rigid(problem.e):
             # Newton's iterates met other impacts: beside an orbit that nearly grazes, the
             # basin of Newton's method is as narrow as its distance from grazing, and a shorter
             # step lands on the branch; at the shortest step the grazing is located
