@@ -311,7 +311,7 @@ def attractors(
                 f = forcing.at(m)
                 try:
                     lm = attractor(system, f, e, initial_states(system, f)[j], exponent=False)
-                except (SymimpactError, IndexError):
+                except SymimpactError:
                     lm = None
                 if lm is not None and lm.kind == "periodic" and lm.stable is not None:
                     runs.setdefault(m, []).append(lm)

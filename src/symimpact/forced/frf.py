@@ -272,8 +272,8 @@ def frequency_response(
     states of one and two periods), from the periodic attractors of a multi-start at
     ``multistart`` frequencies (0: none), with rigid impacts refined where an initial state
     lands on motions of another kind at neighbouring frequencies
-    (:func:`symimpact.forced.coverage.attractors`, ``refine``), by branch switching and by at most ``jumps`` runs
-    from the branches' stable ends and losses of stability and of the multi-start's initial
+    (:func:`symimpact.forced.coverage.attractors`, ``refine``), by branch switching and by at
+    most ``jumps`` runs from the branches' stable ends and losses of stability and of the multi-start's initial
     states at the branches' ends (None: MAX_JUMPS with rigid impacts, none with a compliant
     contact); the located peak; the linear
     response without the damper (Step 8, Eq. F1), the motion without impacts, and, with
