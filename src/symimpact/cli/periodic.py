@@ -225,8 +225,9 @@ def _structure_orbit(ns) -> None:
         f"Ω {omega_text(forcing.omega)}: an orbit of {multiple} forcing period(s) of the "
         f"{len(model.structure.modes)}-mode structure by shooting from {warmup} periods from rest "
         f"({o.iterations} Newton steps, residual {o.residual:.1e}"
-        + (", Jacobian by central differences: the orbit chatters or sticks"
-           if o.jacobian == "differenced" else "")
+        + (", Jacobian by central differences: the section falls where a mass rests on its "
+           "wall, or the orbit sticks beside stops, lets a stuck mass go at an impact or has "
+           "e(v)" if o.jacobian == "differenced" else "")
         + f"), {'stable' if o.stable else 'unstable'} (largest |multiplier| {big:.6g})\n"
         + "".join(f"{name}: {count} {'contacts' if name in {s.name for s in model.stops} else 'impacts'}"
                   f" in the orbit"

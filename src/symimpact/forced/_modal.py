@@ -1801,6 +1801,75 @@ def _impact_jump(pm, cfg, Phi, k, K, m, e, mu):
 
 
 @njit(cache=True)
+def _slaved(G, Phi, stuck, N, K):
+    """G's rows of each stuck mass k set from its point: while it rides on it, yₖ = φₖᵀq + x_b ± dₖ/2
+    and ẏₖ = φₖᵀq̇ + ẋ_b for every motion near this one, so at a fixed time δyₖ = φₖᵀδq and
+    δẏₖ = φₖᵀδq̇ (the state (q, q̇, y, ẏ): 2N + 2K)."""
+    for k in range(K):
+        if stuck[k] == 0:
+            continue
+        for c in range(G.shape[1]):
+            dy, du = 0.0, 0.0
+            for i in range(N):
+                dy += Phi[k, i] * G[i, c]
+                du += Phi[k, i] * G[N + i, c]
+            G[2 * N + k, c] = dy
+            G[2 * N + K + k, c] = du
+
+
+@njit(cache=True)
+def _accel_gradient(pm, cfg, Phi, row, t, xb, out):
+    """∂A/∂t, with ∇A written into ``out`` (its q and q̇ entries; the rest 0): A = φᵀq̈ + ẍ_b, the
+    acceleration of the point of row ``row`` of ``Phi``, q̈ = M_s⁻¹(Pcos θ + Qsin θ + f_s − C_sq̇
+    − K_sq) (:func:`_stuck_loads`), so ∂A/∂q = −φᵀM_s⁻¹K_s, ∂A/∂q̇ = −φᵀM_s⁻¹C_s and
+    ∂A/∂t = φᵀM_s⁻¹Ω(Qcos θ − Psin θ) + Ω³X_b sin θ."""
+    N = pm.shape[0]
+    Minv, Ks, Cs = cfg[0][0], cfg[0][1], cfg[0][2]
+    W = pm[0, P_W]
+    th = W * t + pm[0, P_PHI]
+    c, sn = math.cos(th), math.sin(th)
+    out[:] = 0.0
+    dt = xb * W * W * W * sn if xb != 0.0 else 0.0
+    for i in range(N):
+        for j in range(N):
+            wij = Phi[row, i] * Minv[i, j]
+            if wij == 0.0:
+                continue
+            P = pm[j, P_F0] + pm[j, P_K] * pm[j, P_XB]
+            Q = -pm[j, P_C] * W * pm[j, P_XB]
+            dt += wij * W * (Q * c - P * sn)
+            for m in range(N):
+                out[m] -= wij * Ks[j, m]
+                out[N + m] -= wij * Cs[j, m]
+    return dt
+
+
+@njit(cache=True)
+def _accumulation_row(pm, cfg, Phi, k, K, t, s, w, a, delta, xb, r_i, fp, G, grad, r_inf):
+    """r_inf ← δt∞, the row of the accumulation time's change in the run's starting state, for a
+    chatter of damper k on its wall s that begins with the impact at t (Step 9's accumulation
+    point, :func:`run`): t∞ = t + Δ, Δ = 2w/(a(1 − e)) with the separation speed
+    w = −s(ẏₖ − φᵀq̇ − ẋ_b) and a = −s·A (:func:`_accel_gradient`) just after the impact, so
+    ∇Δ = Δ(∇w/w − ∇a/a) and ∂Δ/∂t = Δ(sẍ_b/w + s(∂A/∂t)/a).  The impact itself comes δt = r_i·δ
+    later, where the state just after it is X⁺ + f⁺δt (f⁺ = ``fp``, X⁺'s perturbation G·δ at the
+    unperturbed time), so δt∞ = r_i(1 + ∂Δ/∂t + ∇Δ·f⁺) + ∇Δ·G.  A plastic impact (w = 0) has
+    Δ = 0 for every nearby motion: δt∞ = δt."""
+    N = pm.shape[0]
+    if w == 0.0:
+        r_inf[:] = r_i
+        return
+    At = _accel_gradient(pm, cfg, Phi, k, t, xb, grad)
+    for j in range(grad.shape[0]):
+        grad[j] = delta * s * grad[j] / a
+    for i in range(N):
+        grad[N + i] += delta * s * Phi[k, i] / w
+    grad[2 * N + K + k] -= delta * s / w
+    Dt = delta * (s * _base_a(pm, xb, t) / w + s * At / a)
+    scale = 1.0 + Dt + grad @ fp
+    r_inf[:] = scale * r_i + grad @ G
+
+
+@njit(cache=True)
 def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0,
         Pout, xb, t0, t_end, max_events, variational, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
@@ -1832,8 +1901,13 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     stops' dashpots), final = (t, q…, q̇…, y…, ẏ…, stuck…, contact…), and with
     ``variational`` G = ∂(q, q̇, y, ẏ)(t_end)/∂(q, q̇, y, ẏ)(0), the chain of the flights'
     transition matrices and the events' saltation matrices (:func:`_flight_jacobian`,
-    :func:`_saltation`); NaN where the run is not differentiable so (a mass sticks or its
-    chatter accumulates, e varies with the speed, or an event meets its surface at zero rate).
+    :func:`_saltation`), through a chatter's accumulation point, the plastic closure and the
+    stuck structure's flight (:func:`_accumulation_row`, :func:`_slaved`) and a release (where
+    the wall would pull, the mass's acceleration and the point's are 0: the identity); NaN where
+    the run is not differentiable so (a mass starts on a wall, within 1e-9 of its half
+    clearance: the map's sides differ there; an impulse lets a stuck mass go; a mass sticks
+    while stops are in the run, or a stop holds its point; e varies with the speed; or an event
+    meets its surface at zero rate).
     """
     N, K = pm0.shape[0], Phi.shape[0]
     T_f = 2.0 * math.pi / pm0[0, P_W]
@@ -1874,6 +1948,10 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     D = 2 * N + 2 * K
     G = np.eye(D)
     fm, fp, gh = np.empty(D), np.empty(D), np.zeros(D)
+    # through a chatter: G through the closure's jump, the impact's and the accumulation's
+    # time rows, the gradient of the accumulation time, the closure's time column
+    Gjump = np.empty((D, D))
+    r_i, r_inf, grad, closing = np.zeros(D), np.zeros(D), np.empty(D), np.zeros(D)
     smooth = variational
     v_before = np.empty(N)
     let_go = np.zeros(K, dtype=np.int64)
@@ -1884,6 +1962,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
         if abs(z[k]) >= hd[k]:
             side0[k] = 1 if z[k] > 0 else -1
             z[k] = side0[k] * hd[k]
+        if abs(z[k]) >= hd[k] * (1.0 - 1e-9):
+            smooth = False  # on its wall at the start: the map's two sides differ
     status = OK
     looks = 0
     while t < t_end:
@@ -1919,10 +1999,9 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                  sc, contact, xb)  # fmt: skip
         _states(pm, cfg, nstuck, t, q, v, tau, qn, vn)
         if smooth:
+            _flight_jacobian(pm, cfg, K, tau, G)
             if nstuck > 0:
-                smooth = False
-            else:
-                _flight_jacobian(pm, cfg, K, tau, G)
+                _slaved(G, Phi, stuck, N, K)
         shift = _base_x(pm, xb, t + tau) - _base_x(pm, xb, t)
         vb0, vb1 = _base_v(pm, xb, t), _base_v(pm, xb, t + tau)
         for j in range(K):
@@ -2062,8 +2141,9 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 break
             continue
         if k < 0 and kr >= 0 and tau >= T and t < t_end:
-            # --- release of damper kr: it leaves its wall with the point's velocity ---
-            smooth = False
+            # --- release of damper kr: it leaves its wall with the point's velocity (where its
+            # wall would begin to pull: the mass's and the point's accelerations are both 0
+            # there, so the two vector fields agree and the saltation is the identity) ---
             s = float(stuck[kr])
             stuck[kr] = 0
             nstuck -= 1
@@ -2098,7 +2178,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
         # the two close plastically (with e, the impulse would throw the mass into its wall)
         e = restitution(ed[k], vyd[k], vrel) if vrel > 0.0 else 0.0
         if smooth:
-            if vyd[k] > 0.0:
+            if vyd[k] > 0.0 or not vrel > 0.0:
                 smooth = False
             else:
                 _field(pm, cfg, K, t, q, v, u, fm)
@@ -2135,6 +2215,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                     break
             if pulled < 0:
                 break
+            smooth = False  # a stuck mass let go by the impulse: not differentiated
             if _returns_at_once(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb, pulled,
                                 k, e, u[k], t, q, v_before, ed, vyd, chat * T_f, v_trial):  # fmt: skip
                 kept[pulled] = 1
@@ -2164,7 +2245,12 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             ku = 2 * N + K + k
             jt = -_base_a(pm, xb, t) * DJ[:, ku]
             jt[ku] += _base_a(pm, xb, t)
-            _timed_saltation(DJ, fm, fp, gh, -s * _base_v(pm, xb, t), jt, G)
+            gt = -s * _base_v(pm, xb, t)
+            # the impact time's row δt = −∇h·δX⁻/(∇h·f⁻ + ∂h/∂t), for the chatter that may follow
+            r_i[:] = -(gh @ G) / (gh @ fm + gt)
+            _timed_saltation(DJ, fm, fp, gh, gt, jt, G)
+            if nstuck > 0:
+                _slaved(G, Phi, stuck, N, K)
         lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
         ledger[2] += lost
         events, n_ev = _log(events, n_ev, t, _dot(Phi, k, q) + _base_x(pm, xb, t), xd, u_before,
@@ -2179,7 +2265,14 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
         if a > 0.0 and e < 1.0 and vyd[k] <= 0.0:
             delta = 2.0 * w / (a * (1.0 - e))
             if delta <= chat * T_f and t + delta < t_end:
-                smooth = False
+                if smooth and S > 0:
+                    smooth = False  # sticking beside stops: not differentiated
+                if smooth:
+                    _accumulation_row(pm, cfg, Phi, k, K, t, s, w, a, delta, xb, r_i, fp, G,
+                                      grad, r_inf)  # fmt: skip
+                    _flight_jacobian(pm, cfg, K, delta, G)
+                    if nstuck > 0:
+                        _slaved(G, Phi, stuck, N, K)
                 # jump to the accumulation point (the other masses fly on), close plastically
                 _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods,
                          work, Sphi, sc, contact, xb)  # fmt: skip
@@ -2197,7 +2290,16 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 q[:] = qn
                 v[:] = vn
                 xd = _dot(Phi, k, v) + _base_v(pm, xb, t)
+                if smooth:  # the rate just before the plastic closure
+                    _field(pm, cfg, K, t, q, v, u, fm)
                 P, mu = _impulse(pm, cfg, nstuck, Phi, k, md[k], 0.0, u[k], v, _base_v(pm, xb, t))
+                if smooth:
+                    DJ = _impact_jump(pm, cfg, Phi, k, K, md[k], 0.0, mu)
+                    ku = 2 * N + K + k
+                    jt = -_base_a(pm, xb, t) * DJ[:, ku]
+                    jt[ku] += _base_a(pm, xb, t)
+                    Gjump[:, :] = DJ @ G
+                    closing = DJ @ fm + jt
                 lost = 0.5 * mu * (u[k] - xd) ** 2
                 ledger[2] += lost
                 u_before = u[k]
@@ -2210,8 +2312,9 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                                     lost, KIND_ACCUMULATION, u[k], u[k], k)  # fmt: skip
             elif w != 0.0 and delta != 0.0:
                 continue
+            else:
+                smooth = False  # sticking at once where no accumulation is taken: rounding
             # --- the mass rides on its point from here ---
-            smooth = False
             stuck[k] = side
             nstuck += 1
             cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
@@ -2222,6 +2325,12 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 break
             u[k] = _dot(Phi, k, v) + _base_v(pm, xb, t)
             z[k] = s * hd[k]
+            if smooth:  # the closure at t∞ (:func:`_accumulation_row`), into the stuck flow
+                _field(pm, cfg, K, t, q, v, u, fp)
+                for i in range(D):
+                    closing[i] -= fp[i]
+                G[:, :] = Gjump + np.outer(closing, r_inf)
+                _slaved(G, Phi, stuck, N, K)
     final = np.empty(1 + 2 * N + 3 * K + S)
     final[0] = t
     final[1 : 1 + N] = q

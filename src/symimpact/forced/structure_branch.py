@@ -5,7 +5,8 @@ located.
 
 Each point is an orbit shot on the state of the N modes and K dampers
 (:func:`symimpact.forced.structure_orbits.shoot_structure`, the monodromy carried through every
-flight, impact and stop contact, and differenced through chatter and sticking).  The next value's
+flight, impact, stop contact, chatter's accumulation, sticking phase and release, and differenced
+where the run is not differentiated so: that function's text).  The next value's
 Newton starts from the secant extrapolation of the last two orbits (natural-parameter
 continuation); where it fails the step is halved, down to a floor, where the branch ends and says
 why (a fold turns it back).  Between two orbits whose count of multipliers outside

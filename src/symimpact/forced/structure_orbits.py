@@ -14,19 +14,30 @@ is continuous there, the rate jumps by the dashpot's force).  Newton's method on
 with the Jacobian (monodromy − I) converges quadratically from a state near the orbit (a settled
 state of a long run); the eigenvalues of the monodromy are the Floquet multipliers.
 
-*Through chatter and sticking.*  Where a mass's chatter accumulates, it sticks on its point, a
-rigid stop holds its point, or e varies with the speed, the chain is not carried to N modes yet
-(the one-mode engine's is, :func:`symimpact.forced.shooting.rigid_monodromy`).  There the
-Jacobian is P's central differences (:func:`differenced_monodromy`: 2(2N + 2K) runs, steps of
-1e-5 of each block's scale, :data:`DIFFERENCE_STEP`, accurate to ~1e-9 of the map's scales; a
-mass resting on its wall at the section is differenced one-sided, into its clearance, with a
-step of 1e-8).
-The map is differentiable through those events — the accumulation time, the sticking phase's
-flight and the release time all move smoothly with the state (the one-mode engine's carried chain
-equals the same differences to 1e-9) — so Newton converges as it does with the carried
-Jacobian, and the multipliers are the differenced map's eigenvalues (a sticking phase makes two
-of them vanish per stuck mass).  :attr:`StructureOrbit.jacobian` says which was used.  An event
-met at zero rate (grazing) is refused in one line: the map has no derivative there.
+*Through chatter and sticking.*  The chain is carried on through a chatter taken to its
+accumulation point and the sticking that follows (:func:`symimpact.forced._modal.run`): the
+accumulation time t∞ = t₀ + Δ, Δ = 2w/(a(1 − e)), moves with the state just after the impact that
+starts the chatter and with that impact's own time, so its row δt∞ is the chain rule of Δ's
+closed form; the structure flies Δ (its Φ(τ)); the plastic closure at t∞ is a jump D with
+S = D + (D f⁻ + ∂J/∂t − f⁺)δt∞, f⁺ the stuck structure's rate; while a mass rides on its point
+its rows are its point's, δyₖ = φₖᵀδq and δẏₖ = φₖᵀδq̇, through the stuck structure's flights
+(Re(V e^{Λτ} V⁻¹) of M + Σmₖφₖφₖᵀ) and the other dampers' impacts; and a release, where the wall
+would begin to pull, has the identity as its saltation (the mass's and the point's accelerations
+are both 0 there).  On one mode this is the one-mode engine's chain from its event log
+(:func:`symimpact.forced.shooting.rigid_monodromy`) to 8e-11, and on three modes with two dampers
+it is the limit of the map's central differences, which approach it as h²
+(tests/test_structure_sticking_orbits.py).  Where the run is not differentiated so — a mass on
+its wall at the section (the map's two sides differ there), an impulse that lets a stuck mass
+go, sticking beside stops or a rigid stop holding its point, or e that varies with the speed —
+the Jacobian is P's central differences (:func:`differenced_monodromy`: 2(2N + 2K) runs, steps
+of 1e-5 of each block's scale, :data:`DIFFERENCE_STEP`, accurate to ~1e-9 of the map's scales on
+one mode; a mass resting on its wall at the section is differenced one-sided, into its
+clearance, with a step of 1e-8).  The map is differentiable through those events — the
+accumulation time, the sticking phase's flight and the release time all move smoothly with the
+state — so Newton converges as it does with the carried Jacobian, and the multipliers are the
+differenced map's eigenvalues (a sticking phase makes two of them vanish per stuck mass).
+:attr:`StructureOrbit.jacobian` says which was used.  An event met at zero rate (grazing) is
+refused in one line: the map has no derivative there.
 """
 
 from __future__ import annotations
@@ -131,8 +142,9 @@ def shoot_structure(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
     """The period-``periods`` orbit near ``state`` (q…, q̇…, y…, ẏ…): Newton's method on
     P(s) − s = 0 with the carried monodromy (module text), to ‖P(s) − s‖ ≤ tol·‖s‖.  Refused in
     one line: an event met at zero rate (grazing), or no convergence in ``max_iterations``.
-    Through chatter and sticking the Jacobian is differenced and Newton stops at
-    max(``tol``, :data:`DIFFERENCED_TOL`) (module text)."""
+    Where the run is not differentiated (a mass on its wall at the section, a stuck mass let go
+    by an impulse, sticking beside stops, e(v): module text) the Jacobian is differenced and
+    Newton stops at max(``tol``, :data:`DIFFERENCED_TOL`)."""
     k = whole_number("periods", periods, 1)
     s = np.array(state, dtype=float).ravel()
     residual = math.inf
