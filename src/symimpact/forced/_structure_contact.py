@@ -16,7 +16,13 @@ dissipation of the Cᵢ and of the contacts' damping carried along, so the energ
 Any damper's onset or exit inside a step is located by re-stepping from the step's start
 (Illinois regula falsi on the step's length), so that the law's kink at δ = 0 falls on a step's
 end.  Between phases the flight is the closed form of :mod:`symimpact.forced._modal`, which hands
-over at an onset.  Each output point's largest abs(x) in each forcing period is taken over the
+over at an onset.  A rigid damper flies through a phase as a free mass (ÿₖ = 0); where it meets
+a wall of its clearance (located as an onset is) Step 15's impact law (Eq. F7) acts at once:
+P = (1 + e)μ(ẏₖ − ẋₐ), μ = (1/mₖ + Σφᵢ²/Mᵢ)⁻¹, q̇ᵢ += φᵢP/Mᵢ, ẏₖ −= P/mₖ, its loss
+½μ(1 − e²)(ẏₖ − ẋₐ)² in the ledger, the mass set on its wall.  A chatter that would accumulate
+there (Step 9's test, as in the modal engine: 2w/(a(1 − e)) within its limit) ends the phase
+with :data:`CHATTER_IN_CONTACT`: a mass riding on its point during a compliant contact is not
+integrated.  Each output point's largest abs(x) in each forcing period is taken over the
 steps' cubic Hermite interpolant (its position and velocity at both ends).
 
 Private: :mod:`symimpact.forced.structure_response` runs the alternation.
@@ -36,10 +42,17 @@ from ._rigid import P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
 #: Status beside OK (0): the step fell below 1e-14 of the forcing period (a contact too stiff
 #: for its time scale), or a phase took more than its budget of steps.
 STEP_UNDERFLOW, TOO_MANY_STEPS = 4, 3
+#: Status: a rigid damper's chatter would accumulate, and its mass ride on its point, during a
+#: compliant contact (module text).
+CHATTER_IN_CONTACT = 6
 #: Steps one contact phase may take.
 MAX_PHASE_STEPS = 2_000_000
-#: The contact's event columns (as the modal engine's log): onset (3) and exit (4).
-KIND_ONSET, KIND_EXIT = 3, 4
+#: The contact's event columns (as the modal engine's log): onset (3) and exit (4), and a rigid
+#: damper's impact (0).
+KIND_ONSET, KIND_EXIT, KIND_IMPACT = 3, 4, 0
+#: Columns of a phase's event log: (t, damper, wall, kind, δ̇, the point's x and ẋ, the mass's
+#: ẏ, the point's ẋ and the mass's ẏ after the event, the energy it took).
+N_PHASE_COLS = 11
 #: A damper's law code for rigid impacts (the others: :data:`symimpact.forced._compliant.CODES`)
 RIGID = -1
 
@@ -130,12 +143,13 @@ def _delta(pm, Phi, hd, xb, t, w, k, side, N, K):
 
 @njit(cache=True)
 def _locate(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h_hi, g_hi, k, side, n, tmp, out,
-            kout, atol, N, K):  # fmt: skip
+            kout, atol, N, K, from_wall):  # fmt: skip
     """The θ in (0, h_hi] where δₖ on wall ``side`` changes sign on the step from w at t (δₖ(0)
     is of the other sign or 0), re-stepped with the shorter length (Illinois regula falsi);
     ``out``, ``kout`` hold the state there.  While no point of δₖ's starting sign is known
-    (δₖ(0) = 0 at an onset just handed over) it bisects."""
-    g0 = _delta(pm, Phi, hd, xb, t, w, k, side, N, K)
+    (δₖ(0) = 0 at an onset just handed over, or ``from_wall``: a rigid damper that left this wall
+    at the step's start, δₖ(0) its rounding) it bisects."""
+    g0 = 0.0 if from_wall else _delta(pm, Phi, hd, xb, t, w, k, side, N, K)
     lo, hi = 0.0, h_hi
     flo, fhi = g0, g_hi
     unknown = flo == 0.0
@@ -225,7 +239,7 @@ def _ended(events, n_ev, pm, Phi, xb, t, w, k, sides, pressing, N, K):
         xa += Phi[k, i] * w[i]
         va += Phi[k, i] * w[N + i]
     if n_ev == events.shape[0]:
-        grown = np.zeros((2 * n_ev, 8))
+        grown = np.zeros((2 * n_ev, N_PHASE_COLS))
         grown[:n_ev] = events
         events = grown
     events[n_ev, 0] = t
@@ -236,17 +250,58 @@ def _ended(events, n_ev, pm, Phi, xb, t, w, k, sides, pressing, N, K):
     events[n_ev, 5] = xa
     events[n_ev, 6] = va
     events[n_ev, 7] = w[2 * N + K + k]
+    events[n_ev, 8] = va
+    events[n_ev, 9] = w[2 * N + K + k]
+    events[n_ev, 10] = 0.0
     return n_ev + 1, events
 
 
 @njit(cache=True)
+def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K):
+    """Rigid damper k meets its wall ``side`` at t (module text): the impulse applied to w, the
+    mass set on its wall, the loss added to the contacts' dissipation and the impact logged.
+    Returns (count, log, the separation speed e·(approach speed))."""
+    W, phi = pm[0, P_W], pm[0, P_PHI]
+    th = W * t + phi
+    xa, va = xb * math.cos(th), -xb * W * math.sin(th)
+    inv = 1.0 / md[k]
+    for i in range(N):
+        xa += Phi[k, i] * w[i]
+        va += Phi[k, i] * w[N + i]
+        inv += Phi[k, i] * Phi[k, i] / pm[i, P_M]
+    mu = 1.0 / inv
+    u = w[2 * N + K + k]
+    vrel = side * (u - va)  # the approach speed
+    e = ed[k] if vrel > 0.0 else 0.0
+    P = (1.0 + e) * mu * (u - va)
+    va1 = -xb * W * math.sin(th)
+    for i in range(N):
+        w[N + i] += Phi[k, i] * P / pm[i, P_M]
+        va1 += Phi[k, i] * w[N + i]
+    w[2 * N + K + k] = u - P / md[k]
+    w[2 * N + k] = xa + side * hd[k]  # on its wall
+    lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
+    w[2 * N + 2 * K + 2] += lost
+    if n_ev == events.shape[0]:
+        grown = np.zeros((2 * n_ev, N_PHASE_COLS))
+        grown[:n_ev] = events
+        events = grown
+    events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, k, side
+    events[n_ev, 3], events[n_ev, 4], events[n_ev, 5] = KIND_IMPACT, vrel, xa
+    events[n_ev, 6], events[n_ev, 7], events[n_ev, 8] = va, u, va1
+    events[n_ev, 9], events[n_ev, 10] = w[2 * N + K + k], lost
+    return n_ev + 1, events, e * vrel
+
+
+@njit(cache=True)
 def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
-          atol):  # fmt: skip
+          atol, ed, chat_limit):  # fmt: skip
     """Integrate from (q, q̇, y, ẏ) at t, where damper k0's contact on wall s0 has just begun,
-    until no damper presses a wall or t_end (module text).  Returns (status, t, state, ledger
-    rises (work, C's dissipation, the contacts' dissipation), events (t, damper, wall, kind,
-    δ̇, the point's x and ẋ, the mass's ẏ) of every onset and exit after k0's, their count,
-    steps taken)."""
+    until no damper presses a wall or t_end (module text); the rigid dampers' impacts on the way
+    with restitution ``ed`` (their chatter's limit ``chat_limit`` [s], Step 9's test).  Returns
+    (status, t, state, ledger rises (work, C's dissipation, the contacts' dissipation and the
+    rigid impacts' losses), events (:data:`N_PHASE_COLS` columns) of every onset, exit and
+    impact after k0's onset, their count, steps taken)."""
     N, K = q.shape[0], y.shape[0]
     n = 2 * N + 2 * K + 3
     T_f = 2.0 * math.pi / pm[0, P_W]
@@ -269,7 +324,8 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
         if code[k] != RIGID and (g1[k] > 0.0 or (g1[k] >= g1[k0] and sides[k] == s0)):
             pressing[k] = 1
     pressing[k0] = 1
-    events = np.zeros((16 + K, 8))
+    events = np.zeros((16 + K, N_PHASE_COLS))
+    left = np.zeros(K, dtype=np.int64)  # a rigid damper that left its wall at the step's start
     n_ev = 0
     for k in range(K):  # another damper that reaches its wall at the same instant begins too
         if k != k0 and pressing[k]:
@@ -281,7 +337,11 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
             events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, k, sides[k]
             events[n_ev, 3], events[n_ev, 4] = KIND_ONSET, sides[k] * (u[k] - va)
             events[n_ev, 5], events[n_ev, 6], events[n_ev, 7] = xa, va, u[k]
+            events[n_ev, 8], events[n_ev, 9] = va, u[k]
             n_ev += 1
+    for k in range(K):  # a rigid damper on a wall at the start has just left it
+        if code[k] == RIGID and g1[k] >= -1e-9 * hd[k]:
+            left[k] = 1
     _rhs(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk[0], N, K)
     h = T_f * 1e-4
     status = 0
@@ -321,14 +381,14 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
         crossed = False
         for k in range(K):
             g1[k] = 0.0
-            if code[k] == RIGID:
-                continue
             xa = xa0
             for i in range(N):
                 xa += Phi[k, i] * out[i]
             side = sides[k] if pressing[k] else (1.0 if out[2 * N + k] > xa else -1.0)
             g = side * (out[2 * N + k] - xa) - hd[k]
             if (pressing[k] and g < 0.0) or (not pressing[k] and g > 0.0):
+                if code[k] == RIGID and left[k] and side != sides[k]:
+                    left[k] = 0  # it crossed to the other wall: a start inside the clearance
                 g1[k] = g
                 sides[k] = side
                 crossed = True
@@ -338,7 +398,8 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
                 if g1[k] == 0.0:
                     continue
                 theta = _locate(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h, g1[k], k,
-                                sides[k], n, tmp, out, kout, atol, N, K)  # fmt: skip
+                                sides[k], n, tmp, out, kout, atol, N, K,
+                                code[k] == RIGID and left[k] == 1)  # fmt: skip
                 if which < 0 or theta < first:
                     first, which = theta, k
             _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, first, n, tmp, out, kout, atol,
@@ -347,6 +408,22 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
         t = t + first
         w[:] = out
         kk[0, :] = kout
+        for k in range(K):
+            left[k] = 0
+        if which >= 0 and code[which] == RIGID:
+            n_ev, events, wsep = _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, which,
+                                               sides[which], N, K)  # fmt: skip
+            _rhs(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk[0], N, K)
+            acc = -xb * pm[0, P_W] ** 2 * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
+            for i in range(N):
+                acc += Phi[which, i] * kk[0, N + i]
+            a = -sides[which] * acc  # the point's acceleration toward the mass on its wall
+            e = ed[which]
+            if a > 0.0 and e < 1.0 and (wsep == 0.0 or 2.0 * wsep / (a * (1.0 - e)) <= chat_limit):
+                status = CHATTER_IN_CONTACT
+                break
+            left[which] = 1
+            continue
         if which >= 0:
             n_ev, events = _ended(events, n_ev, pm, Phi, xb, t, w, which, sides, pressing, N, K)
             if pressing.sum() == 0:

@@ -186,7 +186,11 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     enters the modes through their shapes (Eq. F7); its contact phases are integrated over the
     whole state (:mod:`symimpact.forced._structure_contact`), its onsets and exits logged
     (kinds "contact onset", "contact exit"), and :meth:`StructureResult.impacts` gives its
-    onsets.  Compliant dampers act alone so far: not beside rigid dampers or stops.  ``stops``: a sequence of
+    onsets.  Rigid dampers beside compliant ones fly through a contact phase as free masses and
+    meet their walls there by Eq. F7 at once (:mod:`symimpact.forced._structure_contact`).
+    Refused in one line: compliant dampers beside stops, and a rigid damper's mass that would
+    ride on its point during a compliant contact (its chatter accumulating then, or its mass
+    riding when a contact begins).  ``stops``: a sequence of
     :class:`~symimpact.model.stops.Stop`, walls fixed to the ground with a linear contact law;
     a pressed stop adds its spring and dashpot to the structure, whose flight stays closed form
     (:mod:`symimpact.model.stops`).  A structure with stops may carry no damper.  Refused in one
@@ -269,9 +273,9 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
                                         f"{budgets.MAX_NATURAL_PERIODS:.0e}")  # fmt: skip
     law = np.array([-1 if d.rigid else _compliant.CODES[d.contact] for d in dampers],
                    dtype=np.int64)  # fmt: skip
-    if np.any(law >= 0) and (np.any(law < 0) or stops):
-        raise ParameterError("dampers", "compliant dampers act on a structure alone so far: not "
-                                        "beside rigid dampers or stops")  # fmt: skip
+    if np.any(law >= 0) and stops:
+        raise ParameterError("dampers", "compliant dampers act on a structure without stops so "
+                                        "far: not beside stops")  # fmt: skip
     status, events, n_ev, period_max, ledger, final, G = _alternation(
         pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0,
         u0, Pout, X_b, t_end, bool(variational),
@@ -363,14 +367,29 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, s
         onset = events[n_ev - 1]
         k, s = int(onset[_modal.E_DAMPER]), float(onset[_rigid.E_SIDE])
         t = float(final[0])
+        riding = [j for j in range(K) if final[1 + 2 * N + 2 * K + j] != 0]
+        if riding:
+            raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the contact of "
+                                      f"damper {dampers[k].name!r} begins while rigid damper "
+                                      f"{dampers[riding[0]].name!r} rides on its point (its "
+                                      "chatter accumulated): a mass riding on its point during "
+                                      "a compliant contact is not integrated yet")  # fmt: skip
         q, v = final[1 : 1 + N].copy(), final[1 + N : 1 + 2 * N].copy()
         y, u = (
             final[1 + 2 * N : 1 + 2 * N + K].copy(),
             final[1 + 2 * N + K : 1 + 2 * N + 2 * K].copy(),
         )
         st, t, state, rise, found, n_found, _ = _structure_contact.phase(
-            pm, Phi, md, hd, law, lq, chi, X_b, Pout, t, q, v, y, u, k, s, t_end, period_max, atol
+            pm, Phi, md, hd, law, lq, chi, X_b, Pout, t, q, v, y, u, k, s, t_end, period_max, atol,
+            ed, chat * 2.0 * math.pi / pm[0, _rigid.P_W],
         )  # fmt: skip
+        if st == _structure_contact.CHATTER_IN_CONTACT:
+            j = int(found[n_found - 1][1])
+            raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the chatter of "
+                                      f"rigid damper {dampers[j].name!r} would accumulate during "
+                                      f"the contact of compliant damper {dampers[k].name!r}: a "
+                                      "mass riding on its point during a compliant contact is "
+                                      "not integrated yet")  # fmt: skip
         if st != 0:
             raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the contact of "
                                       f"damper {dampers[k].name!r} is too stiff for the "
@@ -378,7 +397,7 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, s
                                       "the period, or it takes 2e6 steps)")  # fmt: skip
         ledger[:3] += rise
         rows = np.zeros((n_found, _modal.N_MODAL_EVENT_COLS))
-        for j, (te, kd, side, kind, rate, xa, va, ua) in enumerate(found):
+        for j, (te, kd, side, kind, rate, xa, va, ua, va1, ua1, lost) in enumerate(found):
             rows[j, [_rigid.E_T, _rigid.E_X, _rigid.E_XD, _rigid.E_YD, _rigid.E_SIDE]] = (
                 te,
                 xa,
@@ -386,11 +405,12 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, s
                 ua,
                 side,
             )
-            rows[j, [_rigid.E_VREL, _rigid.E_KIND, _rigid.E_XD1, _rigid.E_YD1]] = (
+            rows[j, [_rigid.E_VREL, _rigid.E_KIND, _rigid.E_XD1, _rigid.E_YD1, _rigid.E_LOST]] = (
                 abs(rate),
                 kind,
-                va,
-                ua,
+                va1,
+                ua1,
+                lost,
             )
             rows[j, _modal.E_DAMPER] = kd
         logs.append(rows)
