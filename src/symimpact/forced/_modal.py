@@ -1950,8 +1950,9 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     fm, fp, gh = np.empty(D), np.empty(D), np.zeros(D)
     # through a chatter: G through the closure's jump, the impact's and the accumulation's
     # time rows, the gradient of the accumulation time, the closure's time column
-    Gjump = np.empty((D, D))
-    r_i, r_inf, grad, closing = np.zeros(D), np.zeros(D), np.empty(D), np.zeros(D)
+    Dv = D if variational else 0  # none of them without the chain
+    Gjump = np.empty((Dv, Dv))
+    r_i, r_inf, grad, closing = np.zeros(Dv), np.zeros(Dv), np.empty(Dv), np.zeros(Dv)
     smooth = variational
     v_before = np.empty(N)
     let_go = np.zeros(K, dtype=np.int64)
