@@ -158,7 +158,7 @@ def test_compliant_dampers_bad_input_is_one_line():
         dampers(s, [base | {"contact": "linear", "k1": 1e5, "e": 0.5}])
     with pytest.raises(ParameterError, match=r"dampers\.d\.contact"):
         dampers(s, [base | {"contact": "steel"}])
-    with pytest.raises(ParameterError, match="not beside stops"):
+    with pytest.raises(ParameterError, match="not beside rigid stops"):
         simulate_structure(s, dampers(s, [base | {"contact": "hertz", "k_hz": 1e8}]), "tip", 1.0,
-                           50.0, periods=1, stops=[stop(s, "s", "mid", 0.01, "+", "linear",
-                                                        1e4, 0.0)])  # fmt: skip
+                           50.0, periods=1, stops=[stop(s, "s", "mid", 0.01, "+", "rigid",
+                                                        e=0.5)])  # fmt: skip

@@ -22,7 +22,10 @@ P = (1 + e)μ(ẏₖ − ẋₐ), μ = (1/mₖ + Σφᵢ²/Mᵢ)⁻¹, q̇ᵢ +=
 ½μ(1 − e²)(ẏₖ − ẋₐ)² in the ledger, the mass set on its wall.  A chatter that would accumulate
 there (Step 9's test, as in the modal engine: 2w/(a(1 − e)) within its limit) ends the phase
 with :data:`CHATTER_IN_CONTACT`: a mass riding on its point during a compliant contact is not
-integrated.  Each output point's largest abs(x) in each forcing period is taken over the
+integrated.  A linear stop acts in a phase by its law, k₁(xₛ ∓ g) + c₁ẋₛ on its point while the
+point is past its gap (the modal engine's law, which the closed form takes between phases), its
+onsets and exits located as a damper's, its dashpot's dissipation in the ledger; a phase ends
+when no damper presses a wall, whatever the stops do.  Each output point's largest abs(x) in each forcing period is taken over the
 steps' cubic Hermite interpolant (its position and velocity at both ends).
 
 Private: :mod:`symimpact.forced.structure_response` runs the alternation.
@@ -58,10 +61,14 @@ RIGID = -1
 
 
 @njit(cache=True)
-def _rhs(pm, Phi, md, hd, code, lq, chi, xb, t, w, out, N, K):
+def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K):
     """(q̇, q̈, ẏ, ÿ, the ledger's rates) at time t (module text): the ledger's rates are the
     power of the modal forces (with the masses' inertia −mₖẍ_b under base motion, the ledger
-    being the one seen from the supports), of the Cᵢ and of the contacts' damping."""
+    being the one seen from the supports), of the Cᵢ, of the contacts' damping and of the
+    stops' dashpots.  ``stp``: the linear stops, a row each (φ at the point, gap g, k₁, c₁,
+    walls +1, −1 or 0 for both): a point past its gap, xₛ = φᵀq beyond ±g on a wall it has,
+    is pushed back by k₁(xₛ ∓ g) + c₁ẋₛ (the modal engine's law, :func:`symimpact.forced.
+    _modal._config`)."""
     W, phi = pm[0, P_W], pm[0, P_PHI]
     th = W * t + phi
     c, s = math.cos(th), math.sin(th)
@@ -98,13 +105,27 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, xb, t, w, out, N, K):
         out[2 * N + K + k] = acc
         if xb != 0.0:
             power -= md[k] * (u - v_b) * a_b
+    d_s = 0.0
+    for r in range(stp.shape[0]):  # a linear stop pressed past its gap (its walls: column N + 3)
+        xs, vs = 0.0, 0.0
+        for i in range(N):
+            xs += stp[r, i] * w[i]
+            vs += stp[r, i] * w[N + i]
+        side = 1.0 if xs > 0.0 else -1.0
+        if side * stp[r, N + 3] < 0.0 or side * xs - stp[r, N] <= 0.0:
+            continue
+        F = stp[r, N + 1] * (xs - side * stp[r, N]) + stp[r, N + 2] * vs
+        for i in range(N):
+            out[N + i] -= stp[r, i] * F / pm[i, P_M]
+        d_s += stp[r, N + 2] * vs * vs
     out[2 * N + 2 * K] = power
     out[2 * N + 2 * K + 1] = d_c
     out[2 * N + 2 * K + 2] = d_k
+    out[2 * N + 2 * K + 3] = d_s
 
 
 @njit(cache=True)
-def _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h, n, tmp, out, kout, atol, N, K):
+def _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, n, tmp, out, kout, atol, N, K):
     """One Dormand–Prince step of length h from w at t, kk[0] = f(t, w): the state after it in
     ``out``, f there in ``kout``; returns the error norm of the motion (q, q̇, y, ẏ against
     ``atol`` and :data:`RTOL`)."""
@@ -114,13 +135,13 @@ def _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h, n, tmp, out, kout, at
             for j in range(st):
                 acc += _DP_A[st, j] * kk[j, i]
             tmp[i] = w[i] + h * acc
-        _rhs(pm, Phi, md, hd, code, lq, chi, xb, t + _DP_C[st] * h, tmp, kk[st], N, K)
+        _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t + _DP_C[st] * h, tmp, kk[st], N, K)
     for i in range(n):
         acc = 0.0
         for j in range(6):
             acc += _DP_B[j] * kk[j, i]
         out[i] = w[i] + h * acc
-    _rhs(pm, Phi, md, hd, code, lq, chi, xb, t + h, out, kout, N, K)
+    _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t + h, out, kout, N, K)
     m = 2 * N + 2 * K
     err = 0.0
     for i in range(m):
@@ -133,8 +154,14 @@ def _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h, n, tmp, out, kout, at
 
 
 @njit(cache=True)
-def _delta(pm, Phi, hd, xb, t, w, k, side, N, K):
-    """δₖ on wall ``side`` of the state w at time t."""
+def _delta(pm, Phi, hd, stp, xb, t, w, k, side, N, K):
+    """δₖ on wall ``side`` of the state w at time t (k ≥ K: stop k − K of ``stp``, its
+    side·xₛ − g)."""
+    if k >= K:
+        xs = 0.0
+        for i in range(N):
+            xs += stp[k - K, i] * w[i]
+        return side * xs - stp[k - K, N]
     xa = xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
     for i in range(N):
         xa += Phi[k, i] * w[i]
@@ -142,22 +169,24 @@ def _delta(pm, Phi, hd, xb, t, w, k, side, N, K):
 
 
 @njit(cache=True)
-def _locate(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h_hi, g_hi, k, side, n, tmp, out,
+def _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h_hi, g_hi, k, side, n, tmp, out,
             kout, atol, N, K, from_wall):  # fmt: skip
     """The θ in (0, h_hi] where δₖ on wall ``side`` changes sign on the step from w at t (δₖ(0)
     is of the other sign or 0), re-stepped with the shorter length (Illinois regula falsi);
     ``out``, ``kout`` hold the state there.  While no point of δₖ's starting sign is known
     (δₖ(0) = 0 at an onset just handed over, or ``from_wall``: a rigid damper that left this wall
     at the step's start, δₖ(0) its rounding) it bisects."""
-    g0 = 0.0 if from_wall else _delta(pm, Phi, hd, xb, t, w, k, side, N, K)
+    g0 = 0.0 if from_wall else _delta(pm, Phi, hd, stp, xb, t, w, k, side, N, K)
     lo, hi = 0.0, h_hi
     flo, fhi = g0, g_hi
     unknown = flo == 0.0
     kept = 0
     for _ in range(300):
         theta = 0.5 * (lo + hi) if unknown else secant_point(lo, hi, flo, fhi)
-        _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, theta, n, tmp, out, kout, atol, N, K)
-        g = _delta(pm, Phi, hd, xb, t + theta, out, k, side, N, K)
+        _step(
+            pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, theta, n, tmp, out, kout, atol, N, K
+        )
+        g = _delta(pm, Phi, hd, stp, xb, t + theta, out, k, side, N, K)
         if unknown:
             if g != 0.0 and (g > 0.0) != (fhi > 0.0):
                 unknown = False
@@ -181,7 +210,7 @@ def _locate(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h_hi, g_hi, k, side, n
             kept = 1
         if hi - lo <= 4e-16 * (t + hi):
             break
-    _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, hi, n, tmp, out, kout, atol, N, K)
+    _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, hi, n, tmp, out, kout, atol, N, K)
     return hi
 
 
@@ -257,6 +286,26 @@ def _ended(events, n_ev, pm, Phi, xb, t, w, k, sides, pressing, N, K):
 
 
 @njit(cache=True)
+def _stop_ended(events, n_ev, stp, t, w, j, sides, pressing, N, K):
+    """Stop j − K's contact begins or ends at t (``pressing[j]`` flips): logged as damper j with
+    its wall, kind, speed and the point's x and ẋ.  Returns (count, log)."""
+    pressing[j] = 1 - pressing[j]
+    xs, vs = 0.0, 0.0
+    for i in range(N):
+        xs += stp[j - K, i] * w[i]
+        vs += stp[j - K, i] * w[N + i]
+    if n_ev == events.shape[0]:
+        grown = np.zeros((2 * n_ev, N_PHASE_COLS))
+        grown[:n_ev] = events
+        events = grown
+    events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, j, sides[j]
+    events[n_ev, 3] = KIND_ONSET if pressing[j] else KIND_EXIT
+    events[n_ev, 4], events[n_ev, 5], events[n_ev, 6] = abs(vs), xs, vs
+    events[n_ev, 8] = vs
+    return n_ev + 1, events
+
+
+@njit(cache=True)
 def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K):
     """Rigid damper k meets its wall ``side`` at t (module text): the impulse applied to w, the
     mass set on its wall, the loss added to the contacts' dissipation and the impact logged.
@@ -294,25 +343,32 @@ def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K):
 
 
 @njit(cache=True)
-def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
-          atol, ed, chat_limit):  # fmt: skip
+def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
+          atol, ed, chat_limit, contact0):  # fmt: skip
     """Integrate from (q, q̇, y, ẏ) at t, where damper k0's contact on wall s0 has just begun,
     until no damper presses a wall or t_end (module text); the rigid dampers' impacts on the way
-    with restitution ``ed`` (their chatter's limit ``chat_limit`` [s], Step 9's test).  Returns
-    (status, t, state, ledger rises (work, C's dissipation, the contacts' dissipation and the
-    rigid impacts' losses), events (:data:`N_PHASE_COLS` columns) of every onset, exit and
-    impact after k0's onset, their count, steps taken)."""
+    with restitution ``ed`` (their chatter's limit ``chat_limit`` [s], Step 9's test), and the
+    linear stops of ``stp`` (:func:`_rhs`), each pressed on wall ``contact0[s]`` at the start
+    (0: not), their contacts' onsets and exits on the way.  Returns (status, t, state, ledger
+    rises (work, C's dissipation, the contacts' dissipation and the rigid impacts' losses, the
+    stops' dashpots' dissipation), events (:data:`N_PHASE_COLS` columns; a stop's as damper
+    K + s) of every onset, exit and impact after k0's onset, their count, steps taken, each
+    stop's wall pressed at the end)."""
     N, K = q.shape[0], y.shape[0]
-    n = 2 * N + 2 * K + 3
+    S = stp.shape[0]
+    n = 2 * N + 2 * K + 4
     T_f = 2.0 * math.pi / pm[0, P_W]
     n_periods = period_max.shape[0]
     w = np.zeros(n)
     w[:N], w[N : 2 * N], w[2 * N : 2 * N + K], w[2 * N + K : 2 * N + 2 * K] = q, v, y, u
     kk = np.empty((7, n))
     tmp, out, kout = np.empty(n), np.empty(n), np.empty(n)
-    sides = np.zeros(K)
-    pressing = np.zeros(K, dtype=np.int64)
-    g1 = np.zeros(K)
+    sides = np.zeros(K + S)
+    pressing = np.zeros(K + S, dtype=np.int64)
+    g1 = np.zeros(K + S)
+    for r in range(S):
+        sides[K + r] = 1.0 if contact0[r] >= 0 else -1.0
+        pressing[K + r] = 1 if contact0[r] != 0 else 0
     for k in range(K):
         xa = xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
         for i in range(N):
@@ -342,7 +398,7 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
     for k in range(K):  # a rigid damper on a wall at the start has just left it
         if code[k] == RIGID and g1[k] >= -1e-9 * hd[k]:
             left[k] = 1
-    _rhs(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk[0], N, K)
+    _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K)
     h = T_f * 1e-4
     status = 0
     steps = 0
@@ -355,7 +411,7 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
         # exit, at the same instant) ends here, not a step later
         which = -1
         for k in range(K):
-            if pressing[k] and _delta(pm, Phi, hd, xb, t, w, k, sides[k], N, K) <= 0.0:
+            if pressing[k] and _delta(pm, Phi, hd, stp, xb, t, w, k, sides[k], N, K) <= 0.0:
                 va = -xb * pm[0, P_W] * math.sin(pm[0, P_W] * t + pm[0, P_PHI])
                 for i in range(N):
                     va += Phi[k, i] * w[N + i]
@@ -364,11 +420,11 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
                     break
         if which >= 0:
             n_ev, events = _ended(events, n_ev, pm, Phi, xb, t, w, which, sides, pressing, N, K)
-            if pressing.sum() == 0:
+            if pressing[:K].sum() == 0:
                 break
             continue
         h = min(h, t_end - t)
-        err = _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h, n, tmp, out, kout, atol, N,
+        err = _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, n, tmp, out, kout, atol, N,
                     K)  # fmt: skip
         if err > 1.0:
             h *= max(0.2, 0.9 * err**-0.2)
@@ -392,17 +448,31 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
                 g1[k] = g
                 sides[k] = side
                 crossed = True
+        for r in range(S):  # each stop's point: past its gap (pressed) or back inside it
+            j = K + r
+            g1[j] = 0.0
+            xs = 0.0
+            for i in range(N):
+                xs += stp[r, i] * out[i]
+            side = sides[j] if pressing[j] else (1.0 if xs > 0.0 else -1.0)
+            if not pressing[j] and side * stp[r, N + 3] < 0.0:
+                continue  # no wall on that side
+            g = side * xs - stp[r, N]
+            if (pressing[j] and g < 0.0) or (not pressing[j] and g > 0.0):
+                g1[j] = g
+                sides[j] = side
+                crossed = True
         first, which = h, -1
         if crossed:  # the earliest onset or exit in the step
-            for k in range(K):
+            for k in range(K + S):
                 if g1[k] == 0.0:
                     continue
-                theta = _locate(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, h, g1[k], k,
+                theta = _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, g1[k], k,
                                 sides[k], n, tmp, out, kout, atol, N, K,
-                                code[k] == RIGID and left[k] == 1)  # fmt: skip
+                                k < K and code[k] == RIGID and left[k] == 1)  # fmt: skip
                 if which < 0 or theta < first:
                     first, which = theta, k
-            _step(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk, first, n, tmp, out, kout, atol,
+            _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, first, n, tmp, out, kout, atol,
                   N, K)  # fmt: skip
         _note(period_max, n_periods, T_f, t, first, Pout, pm, xb, w, out, N)
         t = t + first
@@ -410,10 +480,13 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
         kk[0, :] = kout
         for k in range(K):
             left[k] = 0
+        if which >= K:  # a stop's contact begins or ends
+            n_ev, events = _stop_ended(events, n_ev, stp, t, w, which, sides, pressing, N, K)
+            continue
         if which >= 0 and code[which] == RIGID:
             n_ev, events, wsep = _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, which,
                                                sides[which], N, K)  # fmt: skip
-            _rhs(pm, Phi, md, hd, code, lq, chi, xb, t, w, kk[0], N, K)
+            _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K)
             acc = -xb * pm[0, P_W] ** 2 * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
             for i in range(N):
                 acc += Phi[which, i] * kk[0, N + i]
@@ -426,7 +499,7 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
             continue
         if which >= 0:
             n_ev, events = _ended(events, n_ev, pm, Phi, xb, t, w, which, sides, pressing, N, K)
-            if pressing.sum() == 0:
+            if pressing[:K].sum() == 0:
                 break
             continue
         if err < 1e-300:
@@ -435,4 +508,8 @@ def phase(pm, Phi, md, hd, code, lq, chi, xb, Pout, t, q, v, y, u, k0, s0, t_end
             h *= min(5.0, max(0.2, 0.9 * err**-0.2))
     state = w[: 2 * N + 2 * K].copy()
     ledger = w[2 * N + 2 * K :].copy()
-    return status, t, state, ledger, events[:n_ev].copy(), n_ev, steps
+    walls = np.zeros(S)
+    for r in range(S):
+        if pressing[K + r]:
+            walls[r] = sides[K + r]
+    return status, t, state, ledger, events[:n_ev].copy(), n_ev, steps, walls

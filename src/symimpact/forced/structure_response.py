@@ -188,9 +188,10 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     (kinds "contact onset", "contact exit"), and :meth:`StructureResult.impacts` gives its
     onsets.  Rigid dampers beside compliant ones fly through a contact phase as free masses and
     meet their walls there by Eq. F7 at once (:mod:`symimpact.forced._structure_contact`).
-    Refused in one line: compliant dampers beside stops, and a rigid damper's mass that would
-    ride on its point during a compliant contact (its chatter accumulating then, or its mass
-    riding when a contact begins).  ``stops``: a sequence of
+    A linear stop acts in the contact phases by its law, its onsets and exits located there.
+    Refused in one line: compliant dampers beside rigid stops, and a rigid damper's mass that
+    would ride on its point during a compliant contact (its chatter accumulating then, or its
+    mass riding when a contact begins).  ``stops``: a sequence of
     :class:`~symimpact.model.stops.Stop`, walls fixed to the ground with a linear contact law;
     a pressed stop adds its spring and dashpot to the structure, whose flight stays closed form
     (:mod:`symimpact.model.stops`).  A structure with stops may carry no damper.  Refused in one
@@ -273,9 +274,9 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
                                         f"{budgets.MAX_NATURAL_PERIODS:.0e}")  # fmt: skip
     law = np.array([-1 if d.rigid else _compliant.CODES[d.contact] for d in dampers],
                    dtype=np.int64)  # fmt: skip
-    if np.any(law >= 0) and stops:
-        raise ParameterError("dampers", "compliant dampers act on a structure without stops so "
-                                        "far: not beside stops")  # fmt: skip
+    if np.any(law >= 0) and any(st.contact == "rigid" for st in stops):
+        raise ParameterError("dampers", "compliant dampers act beside linear stops so far: not "
+                                        "beside rigid stops")  # fmt: skip
     status, events, n_ev, period_max, ledger, final, G = _alternation(
         pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0,
         u0, Pout, X_b, t_end, bool(variational),
@@ -344,6 +345,8 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, s
     them."""
     N, K = len(q0), len(y0)
     lq, chi = _law_parameters(dampers)
+    # the linear stops as the contact phases read them: φ at the point, gap, k₁, c₁, walls
+    stp = np.column_stack([Sphi.reshape(len(sg), N), sg, sk, sc, sside]).astype(float)
     scale = float(np.min(hd)) if K else 1.0
     peak = float(np.max(np.abs(Phi))) if K else 1.0
     fastest = max(float(np.max(np.sqrt(pm[:, _rigid.P_K] / pm[:, _rigid.P_M]))), pm[0, _rigid.P_W])
@@ -379,9 +382,10 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, s
             final[1 + 2 * N : 1 + 2 * N + K].copy(),
             final[1 + 2 * N + K : 1 + 2 * N + 2 * K].copy(),
         )
-        st, t, state, rise, found, n_found, _ = _structure_contact.phase(
-            pm, Phi, md, hd, law, lq, chi, X_b, Pout, t, q, v, y, u, k, s, t_end, period_max, atol,
-            ed, chat * 2.0 * math.pi / pm[0, _rigid.P_W],
+        walls0 = final[1 + 2 * N + 3 * K :].copy()
+        st, t, state, rise, found, n_found, _, walls = _structure_contact.phase(
+            pm, Phi, md, hd, law, lq, chi, stp, X_b, Pout, t, q, v, y, u, k, s, t_end, period_max,
+            atol, ed, chat * 2.0 * math.pi / pm[0, _rigid.P_W], walls0,
         )  # fmt: skip
         if st == _structure_contact.CHATTER_IN_CONTACT:
             j = int(found[n_found - 1][1])
@@ -395,7 +399,7 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, s
                                       f"damper {dampers[k].name!r} is too stiff for the "
                                       "integrator's steps (its time scale is below 1e-14 of "
                                       "the period, or it takes 2e6 steps)")  # fmt: skip
-        ledger[:3] += rise
+        ledger += rise
         rows = np.zeros((n_found, _modal.N_MODAL_EVENT_COLS))
         for j, (te, kd, side, kind, rate, xa, va, ua, va1, ua1, lost) in enumerate(found):
             rows[j, [_rigid.E_T, _rigid.E_X, _rigid.E_XD, _rigid.E_YD, _rigid.E_SIDE]] = (
@@ -418,7 +422,7 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, s
         q, v = state[:N], state[N : 2 * N]
         y, u = state[2 * N : 2 * N + K], state[2 * N + K :]
         if t >= t_end:
-            final = np.concatenate([[t], state, np.zeros(K + len(sg))])
+            final = np.concatenate([[t], state, np.zeros(K), walls])
             status = _rigid.OK
             break
         if total + 2 > budgets.MAX_EVENTS:
