@@ -258,6 +258,16 @@ def _note(period_max, n_periods, T_f, t0, h, Pout, pm, xb, w0, w1, N):
 
 
 @njit(cache=True)
+def _room(events, n_ev):
+    """The phase's event log with room for one more row (doubled when full)."""
+    if n_ev < events.shape[0]:
+        return events
+    grown = np.zeros((2 * n_ev, N_PHASE_COLS))
+    grown[:n_ev] = events
+    return grown
+
+
+@njit(cache=True)
 def _ended(events, n_ev, pm, Phi, xb, t, w, k, sides, pressing, N, K):
     """Damper k's contact begins or ends at t (``pressing[k]`` flips): logged as (t, damper,
     wall, kind, δ̇, the point's x and ẋ, the mass's ẏ).  Returns (count, log)."""
@@ -267,10 +277,7 @@ def _ended(events, n_ev, pm, Phi, xb, t, w, k, sides, pressing, N, K):
     for i in range(N):
         xa += Phi[k, i] * w[i]
         va += Phi[k, i] * w[N + i]
-    if n_ev == events.shape[0]:
-        grown = np.zeros((2 * n_ev, N_PHASE_COLS))
-        grown[:n_ev] = events
-        events = grown
+    events = _room(events, n_ev)
     events[n_ev, 0] = t
     events[n_ev, 1] = k
     events[n_ev, 2] = sides[k]
@@ -294,10 +301,7 @@ def _stop_ended(events, n_ev, stp, t, w, j, sides, pressing, N, K):
     for i in range(N):
         xs += stp[j - K, i] * w[i]
         vs += stp[j - K, i] * w[N + i]
-    if n_ev == events.shape[0]:
-        grown = np.zeros((2 * n_ev, N_PHASE_COLS))
-        grown[:n_ev] = events
-        events = grown
+    events = _room(events, n_ev)
     events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, j, sides[j]
     events[n_ev, 3] = KIND_ONSET if pressing[j] else KIND_EXIT
     events[n_ev, 4], events[n_ev, 5], events[n_ev, 6] = abs(vs), xs, vs
@@ -331,10 +335,7 @@ def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K):
     w[2 * N + k] = xa + side * hd[k]  # on its wall
     lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
     w[2 * N + 2 * K + 2] += lost
-    if n_ev == events.shape[0]:
-        grown = np.zeros((2 * n_ev, N_PHASE_COLS))
-        grown[:n_ev] = events
-        events = grown
+    events = _room(events, n_ev)
     events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, k, side
     events[n_ev, 3], events[n_ev, 4], events[n_ev, 5] = KIND_IMPACT, vrel, xa
     events[n_ev, 6], events[n_ev, 7], events[n_ev, 8] = va, u, va1
