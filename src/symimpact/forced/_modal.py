@@ -2348,9 +2348,14 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
 
 
 @njit(cache=True)
-def one_mode_run(p, state0, t_end, max_events, watch):
+def one_mode_run(p, state0, t_end, max_events, variational, watch):
     """The paper's primary through :func:`run`: one mode of mass M and shape 1 (parameters
     ``p`` in :mod:`symimpact.forced._rigid`'s layout), one damper, from state0 = (x, ẋ, y, ẏ).
+    ``variational`` is passed on to :func:`run` as it came (callers give False: the one-mode
+    chain is built from the event log, :mod:`symimpact.forced._chain`).  It is an argument, not
+    a constant written here, because numba compiles a callee once for each literal it is given:
+    a ``False`` typed here would compile the whole engine a second time (minutes on a 2-core
+    machine) beside the structure's own signature, which this one now shares.
 
     Returns (status, events, n_events, period_max, ledger, final) in the one-mode layout: events
     with :mod:`symimpact.forced._rigid`'s ten columns, the largest abs(x) of every period, the
@@ -2362,7 +2367,8 @@ def one_mode_run(p, state0, t_end, max_events, watch):
         np.array([p[P_VY]]), np.array([-1]), p[P_CHAT], np.zeros((0, 1)), np.zeros(0),
         np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
         np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
-        state0[2:3].copy(), state0[3:4].copy(), one, 0.0, 0.0, t_end, max_events, False, watch,
+        state0[2:3].copy(), state0[3:4].copy(), one, 0.0, 0.0, t_end, max_events, variational,
+        watch,
     )  # fmt: skip
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
     if final[5] != 0.0:
