@@ -319,7 +319,24 @@ def report_page(folder: Path) -> str:
 
 
 def write_pages(app=None) -> None:
-    """Write every generated page (called at ``builder-inited``)."""
+    """Write every generated page (called at ``builder-inited``).
+
+    The walk-through notebook (a changed copy derived and its tests run, the longest page: over
+    ten minutes on a 2-core machine) executes in a second process from the start, while this one
+    writes the other pages (the notebooks' own run of every step, the tutorial's commands, the
+    report): the build takes about the longer of the two instead of their sum."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
+        from derive import walkthrough
+
+        walk = pool.submit(walkthrough.executed, HERE.parent)
+        _write_pages(walk.result)
+
+
+def _write_pages(walkthrough_executed) -> None:
+    """Every generated page; ``walkthrough_executed()`` returns the executed walk-through."""
     from forced_page import forced_checks_page
     from tutorial_page import tutorial_page
 
@@ -344,14 +361,15 @@ def write_pages(app=None) -> None:
 
     from derive import walkthrough
 
-    # executed once, here: the page shows its cells' output, the download carries it
-    walk = walkthrough.executed(HERE.parent)
-    nbformat.write(walk, OUT / "notebooks" / walkthrough.NOTEBOOK)
-    (OUT / "regenerating.md").write_text(walkthrough.page(walk), encoding="utf-8")
     (OUT / "cli.md").write_text(cli_page(), encoding="utf-8")
     (OUT / "tutorial.md").write_text(tutorial_page(OUT / "tutorial", _run_cli), encoding="utf-8")
     (OUT / "report.md").write_text(report_page(OUT / "report"), encoding="utf-8")
     (OUT / "forced.md").write_text(forced_checks_page(), encoding="utf-8")
+    # executed once (in the second process): the page shows its cells' output, the download
+    # carries it
+    walk = walkthrough_executed()
+    nbformat.write(walk, OUT / "notebooks" / walkthrough.NOTEBOOK)
+    (OUT / "regenerating.md").write_text(walkthrough.page(walk), encoding="utf-8")
 
 
 def setup(app):
