@@ -1,8 +1,10 @@
-"""``python -m derive [--check] [--notebooks DIR]``: re-derive everything and write ``generated/``.
+"""``python -m derive [--check] [--reuse] [--notebooks DIR]``: re-derive and write ``generated/``.
 
-Prints one row per derived result (name, paper equation, check status, time).  With ``--check``
-nothing is written: the files are regenerated in memory and compared with ``generated/``; any
-difference, missing or stale file is shown as a unified diff and the exit status is 1.
+Prints one row per derived result (name, paper equation, check status, time).  With ``--reuse``
+the steps whose code did not change since their boards were kept (derive/cache.py) are read back
+and only the others derived.  With ``--check`` nothing is written: the files are regenerated in
+memory and compared with ``generated/``; any difference, missing or stale file is shown as a
+unified diff and the exit status is 1.
 """
 
 from __future__ import annotations
@@ -35,30 +37,40 @@ ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
 
 
-def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True):
-    """Run the steps; return ({relative path: text}, [boards], all checks passed)."""
-    boards = []
+def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True, reuse: bool = False):
+    """Run the steps; return ({relative path: text}, [boards], all checks passed, [the steps
+    derived, not read back]).
+
+    Each derived board is kept for the docs build and the tests (derive/cache.py).  With
+    ``reuse`` a step whose code is unchanged since its board was kept is read back, not derived;
+    its rows show ``kept`` for a time."""
+    boards, derived = [], []
     ok = True
     if verbose:
         print(f"{'result':<52} {'paper Eq.':<10} {'status':<13} {'time':>8}")
         print("-" * 86)
     for step in steps:
         t0 = time.perf_counter()
-        b = board(step)
+        b = cache.kept(step) if reuse else None
+        was_kept = b is not None
+        if b is None:
+            b = board(step)
+            off = cache.store(step, b)
+            if off:  # the docs build and the tests would read another board than this one
+                ok = False
+                print(f"{step}: its board read back from .cache/ differs at {', '.join(off[:3])}")
+            derived.append(step)
         boards.append(b)
         for c in b.checks:
             ok &= c.ok
             if verbose:
-                print(f"{c.name[:52]:<52} {c.equation:<10} {c.status:<13} {c.seconds:>7.2f}s")
+                seconds = f"{'kept':>8}" if was_kept else f"{c.seconds:>7.2f}s"
+                print(f"{c.name[:52]:<52} {c.equation:<10} {c.status:<13} {seconds}")
                 if not c.ok:
                     print(f"    {c.detail}")
         if verbose:
-            print(
-                f"{'  = step ' + step:<52} {b.equations:<10} {'':<13} "
-                f"{time.perf_counter() - t0:>7.2f}s"
-            )
-    if tuple(steps) == STEPS:  # kept for the docs build and the tests (derive/cache.py)
-        cache.store(dict(zip(steps, boards, strict=True)))
+            seconds = f"{'kept':>8}" if was_kept else f"{time.perf_counter() - t0:>7.2f}s"
+            print(f"{'  = step ' + step:<52} {b.equations:<10} {'':<13} {seconds}")
     files = {f"{b.module}.py": render_module(b) for b in boards}
     files["_broadcast.py"] = render_template("broadcast.py.j2")
     files["__init__.py"] = render_package_init(boards)
@@ -75,7 +87,7 @@ def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True):
     files.update(backend_rust.render(boards))
     files.update(backend_fortran.render(boards))
     files.update(backend_jax.render(boards))
-    return files, boards, ok
+    return files, boards, ok, derived
 
 
 def _present(folder: Path) -> set[str]:
@@ -136,6 +148,12 @@ def main(argv: list[str] | None = None) -> int:
         action="store_true",
         help="regenerate in memory; exit 1 with a diff if generated/ differs",
     )
+    parser.add_argument(
+        "--reuse",
+        action="store_true",
+        help="read back the board of every step whose code is unchanged since it was kept in "
+        ".cache/ (derive/cache.py) and derive only the others",
+    )
     parser.add_argument("--quiet", action="store_true", help="print no summary table")
     parser.add_argument(
         "--notebooks",
@@ -147,13 +165,15 @@ def main(argv: list[str] | None = None) -> int:
     if args.notebooks is not None:
         return _notebooks(args.notebooks)
     t0 = time.perf_counter()
-    files, boards, ok = generate(verbose=not args.quiet)
+    files, boards, ok, derived = generate(verbose=not args.quiet, reuse=args.reuse)
     n_errata = sum(len(b.errata) for b in boards)
     n_kernels = sum(len(b.kernels) for b in boards)
     print(
         f"\n{len(boards)} steps, {n_kernels} kernels, {n_errata} errata; "
         f"derived in {time.perf_counter() - t0:.1f}s"
     )
+    if args.reuse:
+        print(f"derived again: {', '.join(derived) or 'none'}; the other steps' boards read back")
     if not ok:
         print("some derivation checks FAILED", file=sys.stderr)
     if args.check:

@@ -23,8 +23,13 @@ numbers a compiler reads are the numbers mpmath was given, on any machine.
 
 from __future__ import annotations
 
+import hashlib
 import math
+import os
+import pickle
+import tempfile
 from dataclasses import dataclass
+from pathlib import Path
 
 import mpmath as mp
 import sympy as sp
@@ -139,26 +144,91 @@ def iteration_points(fp: FixedPoint) -> list[CheckPoint]:
 _FOUND: dict[int, tuple[object, list[CheckPoint]]] = {}
 
 
-def _once(item, find) -> list[CheckPoint]:
+def digest(item: Kernel | FixedPoint) -> str:
+    """A hex digest of everything the points of ``item`` are found from: its arguments and their
+    ranges, and its expressions as ``sympy.srepr`` writes them (the kernel, its magnitude and
+    constraints; the iteration's start, step, tolerance and step limit)."""
+    parts = [type(item).__name__]
+    parts += [f"{sp.srepr(a.symbol)}|{a.low!r}|{a.high!r}|{a.log}" for a in item.args]
+    if isinstance(item, Kernel):
+        exprs = (item.expr, item.magnitude or 0, *item.constraints)
+    else:
+        exprs = (item.iterate, item.start, item.step)
+        parts += [repr(item.tol), repr(item.max_iter)]
+    parts += [sp.srepr(e) for e in exprs]
+    return hashlib.sha256("\0".join(parts).encode()).hexdigest()
+
+
+def _kept_path() -> Path:
+    """The file that keeps the points found by this module's code (``.cache/`` of the checkout,
+    beside the boards of derive/cache.py), under a hash of this file and mpmath's and SymPy's
+    versions: points found by other code are never read back."""
+    from .cache import FOLDER
+
+    versions = f"{mp.__version__}|{sp.__version__}".encode()
+    code = hashlib.sha256(Path(__file__).read_bytes() + b"\0" + versions).hexdigest()[:32]
+    return FOLDER / f"points-{code}.pickle"
+
+
+def _read_kept() -> dict[str, list[CheckPoint]]:
+    try:
+        with _kept_path().open("rb") as f:
+            return pickle.load(f)
+    except (OSError, EOFError, pickle.UnpicklingError, AttributeError):
+        return {}
+
+
+def _keep(found: dict[str, list[CheckPoint]]) -> None:
+    """Add ``found`` ({digest: points}) to the kept file (written to a temporary name and
+    renamed: a process reading it never sees half a file; two writing it at once each write all
+    they found with what was there)."""
+    target = _kept_path()
+    try:
+        target.parent.mkdir(exist_ok=True)
+        for old in target.parent.glob("points-*.pickle"):
+            if old != target:
+                old.unlink(missing_ok=True)  # points of code that has since changed
+        merged = {**_read_kept(), **found}
+        fd, tmp = tempfile.mkstemp(dir=target.parent, suffix=".tmp")
+        with os.fdopen(fd, "wb") as out:
+            pickle.dump(merged, out, protocol=pickle.HIGHEST_PROTOCOL)
+        os.replace(tmp, target)
+    except OSError:
+        pass  # a read-only checkout: the points are found again next time
+
+
+def _once(item, find, kept: dict, found: dict) -> list[CheckPoint]:
     got = _FOUND.get(id(item))
     if got is None or got[0] is not item:
-        got = _FOUND[id(item)] = (item, find(item))
+        key = digest(item)
+        points = kept.get(key)
+        if points is None:
+            points = found[key] = find(item)
+        got = _FOUND[id(item)] = (item, points)
     return got[1]
 
 
 def recorded(boards: list[Board]) -> dict:
     """``{"kernels": [(module, kernel, points)], "iterations": [(module, fp, points)],
     "bundles": [(module, bundle, [(index, part, points)])]}``; each kernel's and iteration's
-    points found once per process (:data:`_FOUND`)."""
-    return {
-        "kernels": [(b.module, k, _once(k, kernel_points)) for b in boards for k in b.kernels],
-        "iterations": [
-            (b.module, fp, _once(fp, iteration_points)) for b in boards for fp in b.fixed_points
-        ],
+    points found once per process (:data:`_FOUND`) and kept on disk for the next one, under the
+    :func:`digest` of what they are found from."""
+    kept, found = _read_kept(), {}
+
+    def points(item):
+        return _once(item, kernel_points if isinstance(item, Kernel) else iteration_points,
+                     kept, found)  # fmt: skip
+
+    out = {
+        "kernels": [(b.module, k, points(k)) for b in boards for k in b.kernels],
+        "iterations": [(b.module, fp, points(fp)) for b in boards for fp in b.fixed_points],
         # a bundle is checked part by part, at each part's own points
         "bundles": [
-            (b.module, bu, [(j, k, _once(k, kernel_points)) for j, k in enumerate(bu.parts)])
+            (b.module, bu, [(j, k, points(k)) for j, k in enumerate(bu.parts)])
             for b in boards
             for bu in b.bundles
         ],
     }
+    if found:
+        _keep(found)
+    return out

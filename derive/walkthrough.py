@@ -34,7 +34,8 @@ class Snippet:
 SNIPPETS = (
     Snippet(
         "Work in a copy of the checkout, so nothing here touches your files: the derivation "
-        "package, what it generates, the tests and the project file.",
+        "package, what it generates, the tests, the project file and the boards that earlier "
+        "derivations kept (`.cache/`, when there is one).",
         """import difflib
 import os
 import shutil
@@ -48,6 +49,8 @@ skip = shutil.ignore_patterns("__pycache__")
 for part in ("derive", "generated", "tests"):
     shutil.copytree(root / part, work / part, ignore=skip)
 shutil.copy(root / "pyproject.toml", work / "pyproject.toml")
+if (root / ".cache").is_dir():
+    shutil.copytree(root / ".cache", work / ".cache")
 print("copied:", ", ".join(sorted(p.name for p in work.iterdir())))""",
     ),
     Snippet(
@@ -70,17 +73,22 @@ diff = difflib.unified_diff(before.splitlines(True),
 print("".join(diff))""",
     ),
     Snippet(
-        "Regenerate in memory and compare with `generated/`: `python -m derive --check`. The "
+        "Regenerate in memory and compare with `generated/`: `python -m derive --check --reuse`. "
+        "`--reuse` derives again only the steps whose code changed (a step's boards are kept "
+        "under a hash of its own module and of the code it depends on, `derive/cache.py`) and "
+        "reads the others back; without `.cache/` every step is derived, minutes. The "
         "step's own checks fail — the one that compares two free bodies with their reduced mass "
         "catches the wrong relation — and every generated file that holds the contact-duration "
         "kernels differs.",
         """# derive seeds SymPy's random numbers (derive.SYMPY_SEED) and this
 # fixes the hash seed: the time SymPy's factorisation takes on the
-# wrong relation depends on both (about 6 minutes of CPU here)
-run = subprocess.run([sys.executable, "-m", "derive", "--check"],
+# wrong relation depends on both
+command = ["-m", "derive", "--check", "--reuse"]
+run = subprocess.run([sys.executable, *command],
                      cwd=work, capture_output=True, text=True,
                      env=dict(os.environ, PYTHONHASHSEED="4242"))
 lines = run.stdout.splitlines()
+print(next(x for x in lines if x.startswith("derived again:")))
 failed = []  # the table's FAIL rows, each with its detail line
 for k, line in enumerate(lines):
     detail = line.startswith("    ") and "FAIL" in lines[k - 1]
@@ -158,8 +166,9 @@ INTRO = (
 def executed(root: Path):
     """The walk-through notebook of :func:`notebook`, executed with nbclient on a fresh kernel
     in ``root`` (the checkout) — what the docs page shows and offers for download.  A cell may
-    take 1800 s, as in tests/test_notebooks.py: its ``derive --check`` of the changed copy ran
-    past 900 s alone on the 2-core machine once (a fresh clone's documentation build)."""
+    take 1800 s, as in tests/test_notebooks.py: without kept boards (a fresh clone's first
+    documentation build) its ``derive --check --reuse`` derives every step, and a whole
+    derivation ran past 900 s alone on the 2-core machine once."""
     import nbclient
 
     nb = notebook()

@@ -97,6 +97,9 @@ def test_docs_build_has_every_page_and_offline_mathjax(site):
     assert "files of generated/ differ" in regenerating and "erratum 5" in regenerating
     assert "FAILED test_each_erratum_is_a_real_difference[eq21_factor]" in regenerating
     assert "3 failed" in regenerating
+    # --reuse derived the changed step again (and, without kept boards, every other one)
+    again = next(line for line in regenerating.splitlines() if line.startswith("derived again:"))
+    assert "multiple_scales" in again
     assert "+ erratum 5" in regenerating and "copy as the checkout again: True" in regenerating
     html = (site / PAGE).read_text(encoding="utf-8")
     scripts = re.findall(r'<script[^>]+src="([^"]+)"', html)
