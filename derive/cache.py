@@ -14,6 +14,10 @@ the code that derived it changed; a change to one step leaves the other steps' b
 ``python -m derive --check --reuse`` derives again only what changed. ``--check`` alone always
 derives: it is the check that the derivations emit ``generated/``. A file is written to a
 temporary name and renamed, so a process never reads half a file.
+
+A board is read back as it was stored (:func:`load`: expressions rebuilt from their stored
+arguments, not evaluated again), and :func:`store` reads each board back before keeping it and
+keeps it only when every value and expression came back the same (:func:`differences`).
 """
 
 from __future__ import annotations

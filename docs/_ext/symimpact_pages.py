@@ -23,6 +23,7 @@ import io
 import pprint
 import re
 import shutil
+import time
 from pathlib import Path
 
 import sympy as sp
@@ -319,57 +320,76 @@ def report_page(folder: Path) -> str:
 
 
 def write_pages(app=None) -> None:
-    """Write every generated page (called at ``builder-inited``).
+    """Write every generated page (called at ``builder-inited``), on both cores.
 
-    The walk-through notebook (a changed copy derived and its tests run, the longest page: over
-    ten minutes on a 2-core machine) executes in a second process from the start, while this one
-    writes the other pages (the notebooks' own run of every step, the tutorial's commands, the
-    report): the build takes about the longer of the two instead of their sum."""
+    The pages that run the simulations (the tutorial's commands, the quick report, the forced
+    checks; the first to compile the engine's numba code on a fresh machine, minutes) are written
+    in a second process from the start, while this one writes the pages of the derivations (the
+    boards, the notebooks' own run of every step, the regenerating walk-through): the build takes
+    about the longer of the two instead of their sum."""
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
+    if OUT.exists():
+        shutil.rmtree(OUT)
+    OUT.mkdir(parents=True)
     with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
-        from derive import walkthrough
+        simulated = pool.submit(_write_simulated_pages)
+        _write_derived_pages()
+        simulated.result()
 
-        walk = pool.submit(walkthrough.executed, HERE.parent)
-        _write_pages(walk.result)
+
+def _timed(name: str, text) -> None:
+    """Write ``OUT/name`` from ``text()`` and print how long that took (the build's log shows
+    where its time went)."""
+    t0 = time.perf_counter()
+    (OUT / name).write_text(text(), encoding="utf-8")
+    print(f"docs: {name} written in {time.perf_counter() - t0:.0f} s", flush=True)
 
 
-def _write_pages(walkthrough_executed) -> None:
-    """Every generated page; ``walkthrough_executed()`` returns the executed walk-through."""
+def _write_simulated_pages() -> None:
+    """The pages computed with the runtime: the command line, the tutorial, the report, the
+    forced-response checks."""
     from forced_page import forced_checks_page
     from tutorial_page import tutorial_page
 
-    import derive
+    _timed("cli.md", cli_page)
+    _timed("tutorial.md", lambda: tutorial_page(OUT / "tutorial", _run_cli))
+    _timed("report.md", lambda: report_page(OUT / "report"))
+    _timed("forced.md", forced_checks_page)
 
-    if OUT.exists():
-        shutil.rmtree(OUT)
+
+def _write_derived_pages() -> None:
+    """The pages of the derivations: one per step, the errata, the notebooks and the executed
+    walk-through."""
+    import nbformat
+
+    import derive
+    from derive import walkthrough
+
     (OUT / "derivations").mkdir(parents=True)
     names = []
+    t0 = time.perf_counter()
     for step in derive.STEPS:
         (OUT / "derivations" / f"{step}.md").write_text(derivation_page(step), encoding="utf-8")
         names.append(step)
+    print(f"docs: derivations/*.md written in {time.perf_counter() - t0:.0f} s", flush=True)
     index = ["# Derivations", "",
              "One page per step of `derive/`, in lecture order. Every formula on these pages is "
              "rendered from the SymPy object the step produced (`derive.board(step).lines`); the "
              "prose is the step's own module text.", "", "```{toctree}", ":maxdepth: 1", "",
              *names, "```", ""]  # fmt: skip
     (OUT / "derivations" / "index.md").write_text("\n".join(index), encoding="utf-8")
-    (OUT / "errata.md").write_text(errata_page(), encoding="utf-8")
-    (OUT / "notebooks.md").write_text(notebooks_page(OUT / "notebooks"), encoding="utf-8")
-    import nbformat
+    _timed("errata.md", errata_page)
+    _timed("notebooks.md", lambda: notebooks_page(OUT / "notebooks"))
 
-    from derive import walkthrough
+    def regenerating() -> str:
+        # executed once: the page shows its cells' output, the download carries it
+        walk = walkthrough.executed(HERE.parent)
+        nbformat.write(walk, OUT / "notebooks" / walkthrough.NOTEBOOK)
+        return walkthrough.page(walk)
 
-    (OUT / "cli.md").write_text(cli_page(), encoding="utf-8")
-    (OUT / "tutorial.md").write_text(tutorial_page(OUT / "tutorial", _run_cli), encoding="utf-8")
-    (OUT / "report.md").write_text(report_page(OUT / "report"), encoding="utf-8")
-    (OUT / "forced.md").write_text(forced_checks_page(), encoding="utf-8")
-    # executed once (in the second process): the page shows its cells' output, the download
-    # carries it
-    walk = walkthrough_executed()
-    nbformat.write(walk, OUT / "notebooks" / walkthrough.NOTEBOOK)
-    (OUT / "regenerating.md").write_text(walkthrough.page(walk), encoding="utf-8")
+    _timed("regenerating.md", regenerating)
 
 
 def setup(app):
