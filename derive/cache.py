@@ -109,9 +109,7 @@ def store(step: str, kept_board) -> list[str]:
             old.unlink(missing_ok=True)  # the board of code that has since changed
     for old in target.parent.glob("boards-*.pickle"):
         old.unlink(missing_ok=True)  # the one file of every step that this layout replaced
-    fd, tmp = tempfile.mkstemp(dir=target.parent, suffix=".tmp")
-    with os.fdopen(fd, "wb") as out:
-        pickle.dump(kept_board, out, protocol=pickle.HIGHEST_PROTOCOL)
+    tmp = written(target.parent, kept_board)
     with open(tmp, "rb") as f:
         off = differences(kept_board, load(f))
     if off:
@@ -119,6 +117,15 @@ def store(step: str, kept_board) -> list[str]:
     else:
         os.replace(tmp, target)
     return off
+
+
+def written(folder: Path, obj) -> str:
+    """The path of a new temporary file in ``folder`` holding ``obj`` pickled; the caller renames
+    it into place (``os.replace``), so a process reading the kept file never sees half of it."""
+    fd, tmp = tempfile.mkstemp(dir=folder, suffix=".tmp")
+    with os.fdopen(fd, "wb") as out:
+        pickle.dump(obj, out, protocol=pickle.HIGHEST_PROTOCOL)
+    return tmp
 
 
 def _as_stored(cls):
