@@ -10,6 +10,7 @@ prints ``board.checks`` as the summary table.
 
 from __future__ import annotations
 
+import sys
 import time
 from dataclasses import dataclass, field
 from typing import Any
@@ -173,6 +174,10 @@ class Constant:
     digits: tuple[str, ...] = ()
 
 
+#: The records of a board a notebook's text cells describe, in the order they describe them.
+RECORDS = ("lines", "checks", "errata", "kernels", "constants")
+
+
 class Board:
     """An ordered record of one derivation step."""
 
@@ -188,7 +193,23 @@ class Board:
         self.fixed_points: list[FixedPoint] = []
         self.bundles: list[Bundle] = []
         self.values: dict[str, Any] = {}
+        #: For each record a notebook describes (its lines, checks, errata, kernels, constants),
+        #: the line of the step's ``derive()`` whose statement wrote it, in order (None where no
+        #: ``derive()`` of this step was running: a notebook's cells): :mod:`derive.notebooks`
+        #: places each record after its cell without running the step again.
+        self.written_at: dict[str, list[int | None]] = {k: [] for k in RECORDS}
         self._clock = time.perf_counter()
+
+    def _note(self, records: str) -> None:
+        """Note in :attr:`written_at` the line of this step's ``derive()`` now running (the
+        statement that called, directly or through helpers, the board method writing to
+        ``records``)."""
+        frame, module = sys._getframe(2), f"derive.{self.module}"
+        while frame is not None and not (
+            frame.f_code.co_name == "derive" and frame.f_globals.get("__name__") == module
+        ):
+            frame = frame.f_back
+        self.written_at[records].append(None if frame is None else frame.f_lineno)
 
     def write(
         self,
@@ -204,6 +225,7 @@ class Board:
         ``shown`` and ``names``: the form a reader sees, when it differs from the value's own
         (see :class:`Line`); :mod:`derive.present` writes either on the page."""
         self.lines.append(Line(name, value, text, equation, shown, names))
+        self._note("lines")
         self.values[name] = value
         return value
 
@@ -211,16 +233,19 @@ class Board:
         """Record a checked result; the time is the wall time since the previous check."""
         now = time.perf_counter()
         self.checks.append(Check(name, equation, bool(ok), detail, now - self._clock, erratum))
+        self._note("checks")
         self._clock = now
 
     def erratum(self, **kwargs: Any) -> Erratum:
         e = Erratum(**kwargs)
         self.errata.append(e)
+        self._note("errata")
         return e
 
     def kernel(self, **kwargs: Any) -> Kernel:
         k = Kernel(**kwargs)
         self.kernels.append(k)
+        self._note("kernels")
         return k
 
     def derivatives(
@@ -290,6 +315,7 @@ class Board:
     def constant(self, **kwargs: Any) -> Constant:
         c = Constant(**kwargs)
         self.constants.append(c)
+        self._note("constants")
         return c
 
 

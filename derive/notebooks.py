@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from . import STEPS
+from .board import RECORDS
 from .exercises import EXERCISES
 from .teach import ANSWER_RTOL
 
@@ -37,6 +38,8 @@ class _Cell:
     code: list[str] = field(default_factory=list)
     added: tuple[list, ...] = ([], [], [], [], [])
     headings: list[str] = field(default_factory=list)
+    #: The lines of the step's module its statements span, (first, last) each.
+    spans: list[tuple[int, int]] = field(default_factory=list)
 
 
 def _writes(stmt: ast.stmt) -> bool:
@@ -83,6 +86,7 @@ def cells_of(step: str) -> list[_Cell]:
             elif stripped:
                 comments.append(text)
         cells[-1].code += comments + lines[stmt.lineno - 1 : stmt.end_lineno]
+        cells[-1].spans.append((stmt.lineno, stmt.end_lineno or stmt.lineno))
         previous_end = stmt.end_lineno or stmt.lineno
         if _writes(stmt):
             cells.append(_Cell(None))
@@ -93,6 +97,28 @@ def cells_of(step: str) -> list[_Cell]:
     for c in cells:
         c.code = textwrap.dedent("\n".join(c.code)).splitlines()
     return cells
+
+
+def _placed(cells: list[_Cell], kept) -> bool:
+    """Note what each cell adds to the board from ``kept``, the step's board derived by its
+    ``derive()``, whose :attr:`~derive.board.Board.written_at` names the statement that wrote
+    each record: no derivation runs.  False (nothing noted) where a record's statement is in no
+    cell (a board that does not say where its records come from)."""
+    lists = [getattr(kept, name) for name in RECORDS]
+    where = getattr(kept, "written_at", None)
+    if where is None or any(
+        len(where.get(n, ())) != len(x) for n, x in zip(RECORDS, lists, strict=True)
+    ):
+        return False
+    owner = {line: k for k, c in enumerate(cells) for a, b in c.spans for line in range(a, b + 1)}
+    if not all(line in owner for name in RECORDS for line in where[name]):
+        return False
+    for k, c in enumerate(cells):
+        c.added = tuple(
+            [item for item, line in zip(items, where[name], strict=True) if owner[line] == k]
+            for name, items in zip(RECORDS, lists, strict=True)
+        )
+    return True
 
 
 def _record(step: str, cells: list[_Cell]) -> None:
@@ -182,8 +208,12 @@ def notebook(step: str):
     import nbformat
 
     module = importlib.import_module(f"derive.{step}")
+    from .cache import kept
+
     cells = cells_of(step)
-    _record(step, cells)
+    board = kept(step)  # the board the last derivation of this code kept, if any
+    if board is None or not _placed(cells, board):
+        _record(step, cells)
     cells = _merged(cells)
     doc = inspect.getdoc(module) or ""
     heading, _, body = doc.partition("\n")

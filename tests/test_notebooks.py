@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import ast
 import decimal
+import re
 import subprocess
 import sys
 import time
@@ -133,6 +134,18 @@ def test_notebook_runs_and_rederives_its_step(notebooks, boards, step, tmp_path,
     last = _outputs_text(code[-1])
     n = len(board.lines)
     assert f"{n} of {n} board lines identical" in last, last
+    # each text cell says what the code cell after it writes, in order: the results and checks
+    # its show(board) displayed in this run (the text is placed from the kept board's note of
+    # the statement that wrote each record, derive/notebooks.py, without running the step)
+    for text, cell in zip(nb.cells, nb.cells[1:], strict=False):
+        if text.cell_type != "markdown" or not cell.source.endswith("show(board)"):
+            continue
+        displayed = "\n".join(o.get("data", {}).get("text/markdown", "") for o in cell.outputs)
+        said = re.findall(r"\*\*`([^`]+)`\*\*", text.source)
+        said += re.findall(r"^- check: (.+) \(Eq\. [^)]*\)$", text.source, re.M)
+        seen = re.findall(r"\*\*`([^`]+)`\*\*", displayed)
+        seen += re.findall(r"check \*(.+?)\* \(Eq\. ", displayed)
+        assert said == seen, (cell.source[:200], said, seen)
     markdown = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
     equations = {line.equation for line in board.lines if line.equation}
     assert all(f"(Eq. {eq})" in markdown for eq in equations), equations
@@ -196,3 +209,26 @@ def test_walkthrough_code_fits_the_docs_code_column():
 
     widths = [len(line) for s in SNIPPETS for line in s.code.splitlines()]
     assert max(widths) <= 69, max(widths)
+
+
+@pytest.mark.parametrize("step", ["contact_fits", "free_flight"])
+def test_cells_text_from_the_kept_board_is_the_text_of_running_the_cells(step, monkeypatch):
+    """A notebook's text cells are placed from the board's note of the statement that wrote each
+    record (no derivation runs); the notebook is the one written by running its cells one by one
+    and watching what each adds to the board, the way it was written before (two steps that
+    derive in seconds)."""
+    from derive import cache, notebooks
+
+    board = derive.board(step)
+    assert all(line is not None for lines in board.written_at.values() for line in lines)
+    ran = []
+    monkeypatch.setattr(notebooks, "_record", lambda *a, _run=notebooks._record: ran.append(a))
+    monkeypatch.setattr(cache, "kept", lambda _: board)
+    placed = notebooks.notebook(step)
+    assert not ran  # placed from the board: no cell was run
+    monkeypatch.undo()
+    monkeypatch.setattr(cache, "kept", lambda _: None)
+    ran = notebooks.notebook(step)
+    assert len(placed.cells) == len(ran.cells) > 10
+    for a, b in zip(placed.cells, ran.cells, strict=True):  # every cell but its random id
+        assert {**a, "id": None} == {**b, "id": None}

@@ -325,8 +325,9 @@ def write_pages(app=None) -> None:
     The pages that run the simulations (the tutorial's commands, the quick report, the forced
     checks; the first to compile the engine's numba code on a fresh machine, minutes) are written
     in a second process from the start, while this one writes the pages of the derivations (the
-    boards, the notebooks' own run of every step, the regenerating walk-through): the build takes
-    about the longer of the two instead of their sum."""
+    boards; the notebooks, placed from the boards' notes of where each record was written, no
+    step run again; the regenerating walk-through): the build takes about the longer of the two
+    instead of their sum."""
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
