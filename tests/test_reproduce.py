@@ -406,10 +406,15 @@ def test_compare_knows_rounding_from_truncation(ours, printed, rounds, truncates
 
 
 # --- folder behaviour ------------------------------------------------------------------------------
-@pytest.mark.slow  # two quick reports (~50 s): in the slow set
+@pytest.mark.slow  # a quick report (70 s on CI's 2 cores): in the slow set
 def test_refuses_a_nonempty_folder_and_force_replaces_only_its_own(tmp_path, capsys):
     """Issue 16, item 5: --force removed any non-empty folder (a thesis.tex went with it); now it
-    replaces only a folder symimpact wrote (it holds the .symimpact-output marker)."""
+    replaces only a folder symimpact wrote (it holds the .symimpact-output marker).  The folder
+    symimpact wrote before is written by the staging every output folder goes through
+    (:func:`symimpact.io.staged_folder`, which a report's run uses); one report is then run, with
+    --force, over it (a second report, 70 s of CI's slow set, wrote the same folder)."""
+    from symimpact.io import staged_folder
+
     out = tmp_path / "rep"
     out.mkdir()
     (out / "thesis.tex").write_text("x")
@@ -420,10 +425,12 @@ def test_refuses_a_nonempty_folder_and_force_replaces_only_its_own(tmp_path, cap
         assert (out / "thesis.tex").exists()
     assert "not written by symimpact" in err
     mine = tmp_path / "mine"
-    assert main(["reproduce", str(mine), "--quick", "--quiet"]) == 0
+    with staged_folder(mine) as staged:
+        (staged / "index.html").write_text("an earlier report")
     (mine / "extra.txt").write_text("x")
     assert main(["reproduce", str(mine), "--quick", "--quiet", "--force"]) == 0
     assert not (mine / "extra.txt").exists() and (mine / "index.html").exists()
+    assert "an earlier report" not in (mine / "index.html").read_text(encoding="utf-8")
     assert (mine / ".symimpact-output").is_file()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["mine", "rep"]  # no leftovers
 
