@@ -20,6 +20,7 @@ import time
 
 from . import (
     contact_duration_kernel,
+    design_map,
     frc,
     map_throughput,
     million_map,
@@ -57,6 +58,7 @@ SUITE = (
         "11. the one-mode system through the engine of several modes against the engine it replaced",
         one_mode_engine.main,
     ),
+    ("12. a clearance design map of 20 clearances, refined to 0.01 mm", design_map.main),
 )
 
 

@@ -44,7 +44,9 @@ def main() -> None:
     t0 = time.perf_counter()
     serial_table = design_map(SYSTEM, FORCING, E, BAND, grid, workers=1)
     serial = time.perf_counter() - t0
-    same = np.array_equal(table["peak_amplitude"].to_numpy(), serial_table["peak_amplitude"].to_numpy())
+    same = np.array_equal(
+        table["peak_amplitude"].to_numpy(), serial_table["peak_amplitude"].to_numpy()
+    )
     grid_best = table.loc[table["peak_amplitude"].idxmin()]
     print(f"the 12 Hz system of issue 33, e {E}, {len(BAND)} frequencies 8-16 Hz, "
           f"{len(GAPS)} clearances {GAPS[0] * 1e3:g}-{GAPS[-1] * 1e3:g} mm; each map timed once")  # fmt: skip
