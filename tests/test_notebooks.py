@@ -222,7 +222,7 @@ def test_cells_text_from_the_kept_board_is_the_text_of_running_the_cells(step, m
     board = derive.board(step)
     assert all(line is not None for lines in board.written_at.values() for line in lines)
     ran = []
-    monkeypatch.setattr(notebooks, "_record", lambda *a, _run=notebooks._record: ran.append(a))
+    monkeypatch.setattr(notebooks, "_record", lambda *a: ran.append(a))
     monkeypatch.setattr(cache, "kept", lambda _: board)
     placed = notebooks.notebook(step)
     assert not ran  # placed from the board: no cell was run
