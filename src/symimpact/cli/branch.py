@@ -42,6 +42,10 @@ def add_parser(sub: Any) -> None:
                    help="forcing periods simulated from rest before shooting; default 300")  # fmt: skip
     g.add_argument("--multiple", default=None, metavar="K",
                    help="an orbit of K forcing periods (K > 1: a subharmonic); default 1")  # fmt: skip
+    g.add_argument("--folds", default=None, metavar="N",
+                   help="rigid impacts: at most N times in each direction the branch turns back "
+                   "at a grazing beyond which no orbit continues it, onto the orbits with the "
+                   "new impact (a non-smooth fold); default 0: the branch ends there")  # fmt: skip
     add_output(p, plot=True)
 
 
@@ -90,9 +94,13 @@ def run(ns) -> None:
     multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
     if not 1 <= multiple <= MAX_MULTIPLE:
         raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
+    folds = 0 if ns.folds is None else ns.folds.strip()
+    if not (isinstance(folds, int) or folds.isdigit()):
+        raise ParameterError("folds", f"must be a whole number ≥ 0, got {ns.folds!r}")
+    folds = int(folds)
     orbit = shoot_from_rest(system, forcing, e, warmup=warmup, periods=multiple)
     branch = trace_branch(system, forcing, e, orbit.state, bounds, parameter=ns.parameter,
-                          periods=multiple)  # fmt: skip
+                          periods=multiple, folds=folds)  # fmt: skip
     name = ns.parameter
     out = {
         "parameter": name,
@@ -162,7 +170,9 @@ def run_structure(ns) -> None:
 
     for key, why in (("plot", "a structure's branch has no plot yet: --json gives every orbit"),
                      ("csv", "a structure's branch has no CSV yet: --json gives every orbit"),
-                     ("chi", "the file gives each damper's and stop's contact")):  # fmt: skip
+                     ("chi", "the file gives each damper's and stop's contact"),
+                     ("folds", "a structure's branch ends at a grazing no orbit continues "
+                               "beyond; turning back there is the one-mode model's")):  # fmt: skip
         if getattr(ns, key, None) is not None:
             raise ParameterError(key, why)
     model = ns.structure_model

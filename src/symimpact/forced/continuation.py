@@ -24,7 +24,9 @@ modulus − 1).  Where the set of impacts changes (an impact appears or vanishes
 the grazing is located and the branch goes on with the new impacts where an impacting orbit
 continues it.  A located change is a grazing only where the orbit there touches a wall (a
 flight turns at it, or an impact's speed vanishes, :data:`GRAZING_MARGIN`); elsewhere Newton
-from the predictor merely left the branch, which ends there saying so.  A chatter sequence that
+from the predictor merely left the branch, which ends there saying so.  Where no orbit continues
+a branch beyond a grazing, the orbits with the new low-speed impact may lie on the same side (a
+non-smooth fold): with ``folds`` the branch turns back onto them (:func:`_fold_back`).  A chatter sequence that
 accumulates counts as one impact event, so a branch is
 followed into and through chatter and sticking (rigid impacts, :func:`.shooting.rigid_monodromy`);
 where the motion stops impacting or the corrector fails, the branch ends there and says why.
@@ -396,6 +398,7 @@ def continue_orbit(
     direction: int = 1,
     step: float = 0.02,
     max_points: int = budgets.MAX_POINTS,
+    folds: int = 0,
 ) -> Branch:
     """Continue the period-``periods`` orbit through ``state`` = (x, ẋ, z, ẏ) at t = 0 (an orbit
     of ``system`` under ``forcing`` with restitution ``e``, e.g. from
@@ -403,9 +406,13 @@ def continue_orbit(
     ``"gap"`` (d [m]), ``"F0"`` [N], ``"X_b"`` [m] or ``"e"`` — over ``bounds`` = (low, high) in
     SI, first towards increasing values (``direction`` 1) or decreasing (−1); ``step``: the
     arclength step in scaled unknowns (adapted between step/64 and 4·step, and shortened where
-    the branch curves so that the drawn line between points stays within :data:`CHORD`).
-    Eq. F1 and F2 along the orbits (Step 8, Step 9)."""
+    the branch curves so that the drawn line between points stays within :data:`CHORD`);
+    ``folds``: at most this many times the branch turns back at a grazing beyond which no orbit
+    continues it, onto the orbits with the new impact on the same side (a non-smooth fold,
+    :func:`_fold_back`; rigid impacts; 0: the branch ends there, as :func:`.frf.frequency_response`
+    has it).  Eq. F1 and F2 along the orbits (Step 8, Step 9)."""
     system, forcing, e = checked(system, forcing, e)
+    folds = checks.whole_number("folds", folds, 0, 1000)
     checks.choice("parameter", parameter, tuple(PARAMETERS))
     lo, hi = checks.bounds("bounds", bounds)
     periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
@@ -447,6 +454,8 @@ def continue_orbit(
     tests = _tests(t, mono)
     ds = step
     crossings = 0
+    fine = False  # steps below step/16 growing from a fold at a grazing
+    turned_back = 0
     before: BranchPoint | None = None  # the point before ``point``: the drawn curve's curvature
     back = None  # (y, t, ds) at ``before``: the step that led to ``point``
     while len(branch.points) < max_points:
@@ -456,15 +465,29 @@ def continue_orbit(
             point = _point(problem, y, mono, res)
             back = None  # the section moved: the point before is in the old one
         attempt = _correct(problem, y + ds * t, t, point.impact_events_per_period)
-        if attempt is GRAZE and ds > step / 64 and is_rigid(problem.e):
+        if attempt is GRAZE and ds > step / 64 and is_rigid(problem.e) and not fine:
             # Newton's iterates met other impacts: beside an orbit that nearly grazes, the
             # basin of Newton's method is as narrow as its distance from grazing, and a shorter
             # step lands on the branch; at the shortest step the grazing is located
             ds *= 0.5
             continue
+        if attempt is GRAZE and fine:
+            # Newton's iterates left the orbits with these impacts: beside a grazing their region
+            # is narrow (an impact's speed, or a flight's distance from a wall, is small); from
+            # the point itself, Newton's steps halved to stay within the region walk along the
+            # branch to the orbit where there is one
+            attempt = _correct_within(problem, y + ds * t, t, y,
+                                      point.impact_events_per_period) or GRAZE  # fmt: skip
         if attempt is GRAZE:
             located = _grazing(problem, y, t, ds, point)
             at_lo = located[3]
+            if fine and _passes_by(problem, res, located, ds):
+                # the orbit at the bracket's end is no nearer a wall than the point was: the
+                # predictor's whole step left the narrow region of orbits with these impacts
+                # beside the fold, while the bisection's shorter steps stayed on this branch,
+                # which goes on from there
+                attempt, ds = at_lo, located[1]
+        if attempt is GRAZE:
             if (at_lo is not None and is_rigid(problem.e)
                     and _wall_margin(problem, at_lo[3]) > GRAZING_MARGIN):  # fmt: skip
                 # no wall is touched where the corrector stops landing with the old impacts:
@@ -475,14 +498,15 @@ def continue_orbit(
                                   "orbit within the step)")  # fmt: skip
                 return branch
             crossings += 1
-            crossed = _cross(problem, y, t, ds, point, branch, located, crossings <= MAX_CROSSINGS)
+            crossed = _cross(problem, y, t, ds, point, branch, located, crossings <= MAX_CROSSINGS,
+                             turned_back < folds)  # fmt: skip
             if crossed is None:
                 branch.stopped = f"grazing at {problem.where(branch.bifurcations[-1].value)}"
                 if crossings > MAX_CROSSINGS:
                     branch.stopped += (f" (after {MAX_CROSSINGS} grazings crossed: impacts keep "
                                        "appearing and vanishing, as before chatter)")  # fmt: skip
                 return branch
-            y, t, mono, res, point = crossed
+            y, t, mono, res, point, turned = crossed
             if _rejoins(problem, point):
                 # the orbit beyond the grazing is one of period k/2: this branch does not go on
                 branch.bifurcations[-1] = replace(branch.bifurcations[-1], impacts_after=math.nan)
@@ -490,6 +514,14 @@ def continue_orbit(
                                   f"{problem.where(point.value)} (across a grazing)")  # fmt: skip
                 return branch
             before = back = None
+            if turned is not None:
+                turned_back += 1
+                # the branch turned back at the grazing: the new impact's speed grows in
+                # proportion to the distance from it, and the region of orbits with that impact
+                # around the branch as its square, so the steps start at a share of the distance
+                # and grow by half each (measured at the README's fold at 30.4438 rad/s: the
+                # region spans 3e-5 along the tangent 1e-4 from the grazing)
+                ds, fine = FOLD_STEP * turned, True
             tests = _tests(t, mono)  # the multipliers jump at a grazing: no test across it
             branch.points.append(point)
             continue
@@ -558,8 +590,10 @@ def continue_orbit(
             branch.stopped = f"the range's edge at {problem.where(point.value)}"
             return branch
         ds = min(ds * 1.5, 4 * step)
+        fine = fine and ds < step / 16
         if kappa > 0 and reach > 0:  # the next segment within the drawn bound, if it can be
-            ds = max(min(ds, 0.9 * math.sqrt(8 * CHORD / kappa) / reach), step / 16)
+            ds = max(min(ds, 0.9 * math.sqrt(8 * CHORD / kappa) / reach),
+                     ds if fine else step / 16)  # fmt: skip
     branch.stopped = f"{max_points} points"
     return branch
 
@@ -649,11 +683,13 @@ def trace_branch(
     parameter: str = "omega",
     periods: int = 1,
     step: float = 0.02,
+    folds: int = 0,
 ) -> Branch:
     """The whole branch through ``state`` within ``bounds``: :func:`continue_orbit` towards
-    decreasing and towards increasing values of ``parameter``, joined into one branch in the
-    order of the arclength (the decreasing part reversed), with both parts' bifurcations."""
-    kw = {"parameter": parameter, "periods": periods, "step": step}
+    decreasing and towards increasing values of ``parameter`` (each turning back at most
+    ``folds`` times at a grazing), joined into one branch in the order of the arclength (the
+    decreasing part reversed), with both parts' bifurcations."""
+    kw = {"parameter": parameter, "periods": periods, "step": step, "folds": folds}
     down = continue_orbit(system, forcing, e, state, bounds, direction=-1, **kw)
     up = continue_orbit(system, forcing, e, state, bounds, direction=1, **kw)
     joined = Branch(period_multiple=periods, phase=forcing.phase, parameter=parameter)
@@ -1016,39 +1052,74 @@ GRAZING_MARGIN = 1e-4
 def _wall_margin(problem: _Problem, res) -> float:
     """How far the rigid-impact orbit of the simulation ``res`` (one run of the problem's k
     periods) is from touching a wall: the smaller of (d/2 − abs(z))/(d/2) at the flights'
-    turning points of z = y − x (ż = 0, bisected between samples at 1/512 of a period where ż
-    changes sign away from the walls) and the square of the slowest impact's relative speed over
-    the fastest's.  0 where the orbit chatters or sticks (the accumulation of impacts
+    turning points of z = y − x (:func:`_turns`) and the square of the slowest impact's relative
+    speed over the fastest's.  0 where the orbit chatters or sticks (the accumulation of impacts
     touches with speed zero)."""
     ev = res.events
     kinds = ev[:, _rigid.E_KIND]
     if np.any(kinds != _rigid.KIND_IMPACT):
         return 0.0
-    h = problem.system.gap / 2.0
     speeds = np.abs(ev[:, _rigid.E_VREL])
     # an impact born at a grazing gains speed as the square root of the distance from it (the
     # turning point it was moves linearly): squared, both sides are measured alike
     margin = float((speeds.min() / speeds.max()) ** 2) if len(speeds) else math.inf
+    _, gaps = _turns(problem, res)
+    return min(margin, float(gaps.min())) if len(gaps) else margin
+
+
+def _turns(problem: _Problem, res) -> tuple[np.ndarray, np.ndarray]:
+    """The flights' turning points of z = y − x in the simulation ``res`` of the problem's k
+    periods (rigid impacts): their instants [s] and their distances from the nearer wall over
+    d/2, (d/2 − abs(z))/(d/2).  ż = 0 is bisected between samples at 1/512 of a period where ż
+    changes sign away from the walls with no event between (30 times, to 1e-9 of a sample's
+    interval: z is flat there, its error ~z̈·(that)², far below the margins looked at)."""
+    ev = res.events
+    h = problem.system.gap / 2.0
     period = res.forcing.period * problem.periods
     ts = np.linspace(0.0, period, 512 * problem.periods + 1)
     s = state_at(res, ts)
     zdot = s[:, 3] - s[:, 1]
     free = np.abs(s[:, 2]) < h * (1.0 - 1e-9)
-    # a sign change of ż with no event between the samples: a turning point in flight, bisected
-    # on all of them at once 30 times (to 1e-9 of a sample's interval: z is flat there, its
-    # error is ~z̈·(that)², far below the margin's resolution)
     between = np.searchsorted(ev[:, _rigid.E_T], ts)
     i = np.nonzero((zdot[:-1] * zdot[1:] < 0) & free[:-1] & free[1:]
                    & (between[:-1] == between[1:]))[0]  # fmt: skip
-    if len(i):
-        a, b, fa = ts[i], ts[i + 1], zdot[i]
-        for _ in range(30):
-            c = 0.5 * (a + b)
-            r = state_at(res, c)
-            same = fa * (r[:, 3] - r[:, 1]) > 0  # the turn lies in [c, b]
-            a, b = np.where(same, c, a), np.where(same, b, c)
-        margin = min(margin, float(np.min((h - np.abs(r[:, 2])) / h)))
-    return margin
+    if not len(i):
+        return np.zeros(0), np.zeros(0)
+    a, b, fa = ts[i], ts[i + 1], zdot[i]
+    for _ in range(30):
+        c = 0.5 * (a + b)
+        r = state_at(res, c)
+        same = fa * (r[:, 3] - r[:, 1]) > 0  # the turn lies in [c, b]
+        a, b = np.where(same, c, a), np.where(same, b, c)
+    return c, (h - np.abs(r[:, 2])) / h
+
+
+#: A located change of the impacts is no grazing where the orbit at the bracket's end keeps more
+#: than this share of the point's margin from the walls (:func:`_wall_margin`): approaching a
+#: grazing, the margin falls in proportion to the distance left, which the bisection leaves at
+#: 1e-6 of the step.  Measured over the README's curve (462 located changes): at the grazings
+#: the share is at most 0.2 (most below 1e-4), where the predictor met a neighbouring orbit
+#: 0.37 to 1.
+PASSING_SHARE = 0.3
+
+#: The bracket's end is taken as the next point only where it lies this share of the step or more
+#: beyond the point (progress along the branch); nearer, the change is treated as a grazing.
+PASSING_STEP = 0.25
+
+
+def _passes_by(problem: _Problem, res, located, ds: float) -> bool:
+    """Whether the change of impacts that :func:`_grazing` ``located`` along a step of length
+    ``ds`` from the point whose simulation is ``res`` is no grazing (rigid impacts): the point is
+    near a wall (its margin at most GRAZING_MARGIN, else nothing grazes) and the orbit at the
+    bracket's end lies at least PASSING_STEP·ds along and keeps more than PASSING_SHARE of the
+    point's margin."""
+    _, lo, _, at_lo = located
+    if at_lo is None or not is_rigid(problem.e) or lo < PASSING_STEP * ds:
+        return False
+    here = _wall_margin(problem, res)
+    if not 0 < here <= GRAZING_MARGIN:
+        return False
+    return _wall_margin(problem, at_lo[3]) > PASSING_SHARE * here
 
 
 #: At most this many grazings are crossed in one direction of a continuation: near the onset of
@@ -1057,7 +1128,8 @@ def _wall_margin(problem: _Problem, res) -> float:
 MAX_CROSSINGS = 3
 
 
-def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, located, go_on: bool = True):
+def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, located, go_on: bool = True,
+           turn: bool = True):  # fmt: skip
     """Continuation through a grazing: the grazing ``located`` by :func:`_grazing` (listed on
     ``branch``), the orbit just beyond it with its new impacts (Newton from a little past the
     located step, the count free), whose tangent is oriented along t.  Returns (y, t,
@@ -1076,5 +1148,131 @@ def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, located, go_o
         if p1.impact_events_per_period == before.impact_events_per_period:
             continue
         branch.bifurcations[-1] = replace(found, impacts_after=p1.impact_events_per_period)
-        return y1, _tangent(J1, t), mono1, res1, p1
+        return y1, _tangent(J1, t), mono1, res1, p1, None
+    back = _fold_back(problem, y, t, ds, before, located) if turn and is_rigid(problem.e) else None
+    if back is not None:
+        branch.bifurcations[-1] = replace(found, impacts_after=back[4].impact_events_per_period)
+    return back
+
+
+#: The distances behind a grazing (shares of the located step) at which :func:`_fold_back` looks
+#: for the orbits with the new impact, and how far past the wall (multiples of the old orbit's
+#: distance from it) the turning point is pushed to start Newton's method there.
+FOLD_BACK = (0.3, 1.0, 0.1)
+FOLD_PUSH = (1.5, 4.0, 1.1)
+#: The first step from a fold at a grazing, a share of the distance from it.
+FOLD_STEP = 0.25
+
+
+def _fold_back(problem: _Problem, y, t, ds, before: BranchPoint, located):
+    """The branch turned back at a grazing (rigid impacts): where no orbit continues the branch
+    beyond the grazing ``located`` along t, the orbits with the new low-speed impact may lie on
+    the same side — a non-smooth fold, at which the two branches meet (measured on the README's
+    curve: the symmetric four-impact orbits grazing both walls at 30.4438 rad/s meet the
+    asymmetric five-impact ones there).  On the hyperplane a share FOLD_BACK of the step behind
+    the grazing, the old orbit's flight turning point nearest a wall (:func:`_turns`) is pushed
+    past that wall along the gradient of its distance within the hyperplane (central
+    differences of the flight, Eq. F1), and Newton's method with the count free starts there.
+    Returns (y, t, monodromy, simulation, point) of an orbit with other impacts, its tangent
+    oriented away from the grazing, or None."""
+    _, lo, hi, _ = located
+    count = before.impact_events_per_period
+    y_graze = y + hi * t
+    for share in FOLD_BACK:
+        s_back = lo - share * ds  # (behind the point itself where it was near the grazing)
+        got = _correct(problem, y + s_back * t, t, count)
+        if got is None or got is GRAZE:
+            continue
+        y0, _, _, res0 = got
+        times, gaps = _turns(problem, res0)
+        if not len(gaps):
+            return None
+        tau, gap = float(times[np.argmin(gaps)]), float(gaps.min())
+        side = math.copysign(1.0, float(state_at(res0, np.array([tau]))[0, 2]))
+        grad = _reach_gradient(problem, y0, len(res0.events), tau, side)
+        if grad is None:
+            continue
+        grad = grad - (grad @ t) * t  # within the hyperplane
+        norm2 = float(grad @ grad)
+        if not norm2 > 0:
+            continue
+        for push in FOLD_PUSH:
+            new = _correct_within(problem, y + s_back * t, t, y0 + push * gap / norm2 * grad)
+            if new is None:
+                continue
+            y1, J1, mono1, res1 = new
+            p1 = _point(problem, y1, mono1, res1)
+            if p1.impact_events_per_period == count:
+                continue
+            return (
+                y1,
+                _tangent(J1, y1 - y_graze),
+                mono1,
+                res1,
+                p1,
+                float(np.linalg.norm(y1 - y_graze)),
+            )
     return None
+
+
+def _correct_within(problem: _Problem, y_pred, t, start, count: float | None = None):
+    """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from ``start`` kept among the orbits with the
+    impact events a period that ``start`` has (None unless that is ``count``, where given): each
+    step is halved until its end has the same impacts.  Beside a grazing the new impact's speed goes as the square root
+    of the turning point's overreach, so F is steep at the region's edge and a full step from
+    inside leaves it (measured at the README's fold at 30.4438 rad/s: from every push Newton
+    undamped fell back to the old orbit; damped it took 6 to 8 steps).  (y, J, monodromy,
+    simulation), or None."""
+    y = start.copy()
+    try:
+        r, J, mono, res = problem.evaluate(y)
+    except SymimpactError:
+        return None
+    if count is None:
+        count = _events(res, problem.periods)
+    elif _events(res, problem.periods) != count:
+        return None
+    for _ in range(2 * MAX_NEWTON):
+        A = np.vstack([J, t])
+        b = np.concatenate([-r, [-(t @ (y - y_pred))]])
+        try:
+            dy = np.linalg.solve(A, b)
+        except np.linalg.LinAlgError:
+            return None
+        lam = 1.0
+        while True:
+            try:
+                r1, J1, mono1, res1 = problem.evaluate(y + lam * dy)
+                if _events(res1, problem.periods) == count:
+                    break
+            except SymimpactError:
+                pass
+            lam *= 0.5
+            if lam < 1e-3:
+                return None
+        y, r, J, mono, res = y + lam * dy, r1, J1, mono1, res1
+        if lam == 1.0 and np.max(np.abs(dy)) < max(TOL, problem.noise * np.linalg.cond(A)):
+            return y, J, mono, res
+    return None
+
+
+def _reach_gradient(problem: _Problem, y0, events: int, tau: float, side: float):
+    """∂(side·z(τ)/(d/2))/∂y at y0 in the scaled unknowns: how the flight's reach towards the
+    wall at ``side`` at the instant τ changes (central differences, steps 1e-7 of the scaled
+    unknowns; None where a step meets other than the orbit's ``events``)."""
+    h = problem.system.gap / 2.0
+    grad = np.zeros(5)
+    for j in range(5):
+        d = np.zeros(5)
+        d[j] = 1e-7
+        vals = []
+        for sign in (1.0, -1.0):
+            try:
+                res = problem.evaluate(y0 + sign * d)[3]
+            except SymimpactError:
+                return None
+            if len(res.events) != events:
+                return None
+            vals.append(side * float(state_at(res, np.array([tau]))[0, 2]) / h)
+        grad[j] = (vals[0] - vals[1]) / 2e-7
+    return grad
