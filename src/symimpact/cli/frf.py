@@ -37,6 +37,11 @@ def add_parser(sub: Any) -> None:
                    help="at most N runs from the branches' ends and losses of stability, whose "
                    "landings start new branches (default 256 with rigid impacts, 0 with a "
                    "compliant contact, whose runs integrate every contact)")  # fmt: skip
+    g.add_argument("--folds", action="store_true",
+                   help="rigid impacts: turn each branch that ends at a grazing beyond which no "
+                   "orbit continues it back onto the orbits with the new impact (a non-smooth "
+                   "fold); more of the curve's orbits, at more cost (1.6 times on the README's "
+                   "system, issue 33's benchmark band)")  # fmt: skip
     g.add_argument("--workers", type=int, default=None, metavar="N",
                    help="with --structure: processes for the runs from rest at each frequency "
                    "(default all cores; 1 runs them here)")  # fmt: skip
@@ -176,6 +181,10 @@ def run_structure(ns) -> None:
                            ("chi", "chi", "the file gives each damper's and stop's contact")):  # fmt: skip
         if getattr(ns, key, None) not in (None, False, "displacement"):
             raise ParameterError(flag, why)
+    if ns.folds:
+        raise ParameterError("folds", "a structure's branches end at a grazing no orbit "
+                                      "continues beyond; turning back there is the one-mode "
+                                      "model's")  # fmt: skip
     if ns.no_sweeps:
         raise ParameterError("no-sweeps", "a structure's curve runs no sweeps: its branches start "
                                           "from the motions settled at the band's ends")  # fmt: skip
@@ -228,9 +237,9 @@ def run_structure(ns) -> None:
 def run(ns) -> None:
     if getattr(ns, "structure_model", None) is not None:
         return run_structure(ns)
-    if ns.workers is not None:
-        from ..errors import ParameterError
+    from ..errors import ParameterError
 
+    if ns.workers is not None:
         raise ParameterError("workers", "spreads a --structure curve's runs: this curve's "
                              "branches run in one process")  # fmt: skip
     from ..forced.frf import frequency_response
@@ -247,7 +256,11 @@ def run(ns) -> None:
     from .loads import count
 
     jumps = None if ns.jumps is None else count("jumps", ns.jumps, 0, 10_000)
-    frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps)
+    if ns.folds and not is_rigid(e):
+        raise ParameterError("folds", "turning back at a grazing is for rigid impacts: a "
+                                      "compliant contact's orbits change smoothly there")  # fmt: skip
+    frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps,
+                             folds=ns.folds)  # fmt: skip
     if response != "displacement":
         from ..forced.response_curve import response_curve
 
