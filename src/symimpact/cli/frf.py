@@ -40,8 +40,8 @@ def add_parser(sub: Any) -> None:
     g.add_argument("--folds", action="store_true",
                    help="rigid impacts: turn each branch that ends at a grazing beyond which no "
                    "orbit continues it back onto the orbits with the new impact (a non-smooth "
-                   "fold); more of the curve's orbits, at more cost (1.6 times on the README's "
-                   "system, issue 33's benchmark band)")  # fmt: skip
+                   "fold); more of the curve's orbits, at more cost (about twice the time on "
+                   "the README's system over 25-45 rad/s, benchmark 6)")  # fmt: skip
     g.add_argument("--workers", type=int, default=None, metavar="N",
                    help="with --structure: processes for the runs from rest at each frequency "
                    "(default all cores; 1 runs them here)")  # fmt: skip

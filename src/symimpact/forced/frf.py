@@ -415,8 +415,8 @@ def _turn_at_grazing_ends(out, system, forcing, e, band, step, failures) -> None
     :func:`symimpact.forced.continuation.continue_orbit` with ``folds`` 1); the part beyond the
     fold is a new branch unless its first orbit lies on a traced one.  On the README's curve the
     symmetric four-impact orbits' grazing at 30.4438 rad/s leads to the stable five-impact motion
-    near 29.876 rad/s, which nothing else reaches (benchmark 6's band: 57 more branches, 125 →
-    126 of the brute force's 128 periodic attractors on the curve, the curve 1.6 times as
+    near 29.876 rad/s, which nothing else reaches (benchmark 6's band: 45 more branches, 125 →
+    126 of the brute force's 128 periodic attractors on the curve, the curve 1.98 times as
     long).  Done after the other starts (their budgets spent as before); the new branches are
     not switched or jumped from."""
     width = band[1] - band[0]
