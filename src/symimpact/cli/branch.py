@@ -73,6 +73,7 @@ def run(ns) -> None:
     from ..forced.simulation import MAX_MULTIPLE, period_count
     from ..model.display import display_unit, omega_text, shown
     from .frf import contact_of, contact_title
+    from .loads import count
 
     if ns.parameter == "m":
         raise ParameterError("parameter", "m, a damper's mass, is continued on a --structure "
@@ -94,10 +95,7 @@ def run(ns) -> None:
     multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
     if not 1 <= multiple <= MAX_MULTIPLE:
         raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
-    folds = 0 if ns.folds is None else ns.folds.strip()
-    if not (isinstance(folds, int) or folds.isdigit()):
-        raise ParameterError("folds", f"must be a whole number ≥ 0, got {ns.folds!r}")
-    folds = int(folds)
+    folds = 0 if ns.folds is None else count("folds", ns.folds, 0, 1000)
     orbit = shoot_from_rest(system, forcing, e, warmup=warmup, periods=multiple)
     branch = trace_branch(system, forcing, e, orbit.state, bounds, parameter=ns.parameter,
                           periods=multiple, folds=folds)  # fmt: skip

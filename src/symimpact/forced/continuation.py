@@ -1173,9 +1173,10 @@ def _fold_back(problem: _Problem, y, t, ds, before: BranchPoint, located):
     asymmetric five-impact ones there).  On the hyperplane a share FOLD_BACK of the step behind
     the grazing, the old orbit's flight turning point nearest a wall (:func:`_turns`) is pushed
     past that wall along the gradient of its distance within the hyperplane (central
-    differences of the flight, Eq. F1), and Newton's method with the count free starts there.
-    Returns (y, t, monodromy, simulation, point) of an orbit with other impacts, its tangent
-    oriented away from the grazing, or None."""
+    differences of the flight, Eq. F1), and Newton's method starts there, its steps kept among
+    the orbits with the new impact (:func:`_correct_within`).  Returns (y, t, monodromy,
+    simulation, point, distance from the grazing in the scaled unknowns) of an orbit with other
+    impacts, its tangent oriented away from the grazing, or None."""
     _, lo, hi, _ = located
     count = before.impact_events_per_period
     y_graze = y + hi * t
@@ -1219,9 +1220,9 @@ def _fold_back(problem: _Problem, y, t, ds, before: BranchPoint, located):
 def _correct_within(problem: _Problem, y_pred, t, start, count: float | None = None):
     """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from ``start`` kept among the orbits with the
     impact events a period that ``start`` has (None unless that is ``count``, where given): each
-    step is halved until its end has the same impacts.  Beside a grazing the new impact's speed goes as the square root
-    of the turning point's overreach, so F is steep at the region's edge and a full step from
-    inside leaves it (measured at the README's fold at 30.4438 rad/s: from every push Newton
+    step is halved until its end has the same impacts (:func:`_correct` gives up instead).
+    Beside a grazing the new impact's speed goes as the square root of the turning point's
+    overreach, so F is steep at the region's edge and a full step from inside leaves it (measured at the README's fold at 30.4438 rad/s: from every push Newton
     undamped fell back to the old orbit; damped it took 6 to 8 steps).  (y, J, monodromy,
     simulation), or None."""
     y = start.copy()
@@ -1260,7 +1261,8 @@ def _correct_within(problem: _Problem, y_pred, t, start, count: float | None = N
 def _reach_gradient(problem: _Problem, y0, events: int, tau: float, side: float):
     """∂(side·z(τ)/(d/2))/∂y at y0 in the scaled unknowns: how the flight's reach towards the
     wall at ``side`` at the instant τ changes (central differences, steps 1e-7 of the scaled
-    unknowns; None where a step meets other than the orbit's ``events``)."""
+    unknowns, each a run of the map alone, no Jacobian; None where a step meets other than the
+    orbit's ``events``)."""
     h = problem.system.gap / 2.0
     grad = np.zeros(5)
     for j in range(5):
@@ -1268,8 +1270,10 @@ def _reach_gradient(problem: _Problem, y0, events: int, tau: float, side: float)
         d[j] = 1e-7
         vals = []
         for sign in (1.0, -1.0):
+            y = y0 + sign * d
             try:
-                res = problem.evaluate(y0 + sign * d)[3]
+                res = monodromy(*problem.at(y[4] * problem.unit), y[:4] * problem.scale,
+                                problem.periods, jacobian=False)[2]  # fmt: skip
             except SymimpactError:
                 return None
             if len(res.events) != events:

@@ -432,10 +432,9 @@ def _turn_at_grazing_ends(out, system, forcing, e, band, step, failures) -> None
         for g in b.bifurcations:
             if g.kind != "grazing" or not math.isnan(g.impacts_after) or seen(g):
                 continue
-            (end, near), d = min((((b.points[0], b.points[1]), abs(b.points[0].omega - g.omega)),
-                                  ((b.points[-1], b.points[-2]), abs(b.points[-1].omega - g.omega))),
-                                 key=lambda c: c[1])  # fmt: skip
-            if d > 1e-3 * width:
+            end, near = min(((b.points[0], b.points[1]), (b.points[-1], b.points[-2])),
+                            key=lambda pair: abs(pair[0].omega - g.omega))  # fmt: skip
+            if abs(end.omega - g.omega) > 1e-3 * width:
                 continue
             direction = int(np.sign(g.omega - end.omega) or np.sign(end.omega - near.omega))
             if not direction:
