@@ -42,6 +42,11 @@ def add_parser(sub: Any) -> None:
                    "orbit continues it back onto the orbits with the new impact (a non-smooth "
                    "fold); more of the curve's orbits, at more cost (about twice the time on "
                    "the README's system over 25-45 rad/s, benchmark 6)")  # fmt: skip
+    g.add_argument("--embedded", action="store_true",
+                   help="also trace the periodic orbits embedded in the multi-start's chaotic "
+                   "motions (shot from the close returns of their Poincaré sections): stable "
+                   "windows inside a chaotic band that the multi-start steps over; more of the "
+                   "curve's orbits, at more cost (benchmark 6)")  # fmt: skip
     g.add_argument("--workers", type=int, default=None, metavar="N",
                    help="with --structure: processes for the runs from rest at each frequency "
                    "(default all cores; 1 runs them here)")  # fmt: skip
@@ -185,6 +190,9 @@ def run_structure(ns) -> None:
         raise ParameterError("folds", "a structure's branches end at a grazing no orbit "
                                       "continues beyond; turning back there is the one-mode "
                                       "model's")  # fmt: skip
+    if ns.embedded:
+        raise ParameterError("embedded", "a structure's curve runs no multi-start: its branches "
+                                         "start from the motions settled at the band's ends")  # fmt: skip
     if ns.no_sweeps:
         raise ParameterError("no-sweeps", "a structure's curve runs no sweeps: its branches start "
                                           "from the motions settled at the band's ends")  # fmt: skip
@@ -260,7 +268,7 @@ def run(ns) -> None:
         raise ParameterError("folds", "turning back at a grazing is for rigid impacts: a "
                                       "compliant contact's orbits change smoothly there")  # fmt: skip
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps,
-                             folds=ns.folds)  # fmt: skip
+                             folds=ns.folds, embedded=ns.embedded)  # fmt: skip
     if response != "displacement":
         from ..forced.response_curve import response_curve
 

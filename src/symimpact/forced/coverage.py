@@ -216,6 +216,56 @@ def least_period(
     return k
 
 
+#: Periods of a non-periodic motion's Poincaré section searched for close returns
+#: (:func:`close_returns`), and how many distinct returns per period k are kept: the chaotic
+#: motion at 28.75 rad/s on the README system holds eight period-3 orbits among the ten best
+#: returns of 1000 periods, one of them on the branch through the stable period-3 window at
+#: 28.125–28.199 rad/s (not among the four best returns of 300 periods).
+RETURN_PERIODS, RETURNS = 1000, 10
+#: Two returns are distinct when their states differ by more than this share of the section's
+#: spread (its standard deviation per coordinate) in some coordinate.
+RETURNS_APART = 0.05
+
+
+def section_states(
+    system: ImpactSystem, forcing: Forcing, e: Any, state: Any, periods: int = RETURN_PERIODS
+) -> np.ndarray:
+    """The Poincaré section of the motion from ``state`` (x, ẋ, z, ẏ) at the forcing phase of
+    ``forcing``, rigid impacts of restitution ``e``: ``periods`` + 1 states, one a forcing
+    period apart (the stroboscopic map, Eq. F1 between impacts and Step 9's impact law,
+    :func:`symimpact.forced.monodromy` without its Jacobian).  Raises where the map does."""
+    out = [np.asarray(state, dtype=float)]
+    for _ in range(periods):
+        out.append(monodromy(system, forcing, e, out[-1], 1, jacobian=False)[0])
+    return np.array(out)
+
+
+def close_returns(sections: np.ndarray, k: int, count: int = RETURNS) -> list[np.ndarray]:
+    """Starts for shooting the period-``k`` orbits embedded in a motion that does not repeat,
+    from its Poincaré ``sections`` (:func:`section_states`): the ``count`` states s_n whose
+    return s_(n+k) comes closest, max over the coordinates of abs(s_(n+k) − s_n) in units of
+    the section's spread, apart by RETURNS_APART from each other and from the k − 1 states that
+    follow each (the same cycle at another phase) (the method of close returns: a chaotic
+    attractor is the closure of the unstable periodic orbits in it, and its motion shadows each
+    for a while; Auerbach, Cvitanović, Eckmann, Gunaratne and Procaccia, "Exploring chaotic
+    motion through periodic orbits", Phys. Rev. Lett. 58, 2387, 1987).  A stable window of
+    period k inside a chaotic band is the continuation of such an orbit."""
+    if k < 1 or len(sections) <= k:
+        return []
+    scale = np.std(sections, axis=0)
+    scale = np.where(scale > 0, scale, 1.0)
+    gaps = np.max(np.abs((sections[k:] - sections[:-k]) / scale), axis=1)
+    picked: list[int] = []
+    for n in np.argsort(gaps, kind="stable"):
+        # another phase of a picked return's cycle is the same orbit
+        if all(np.max(np.abs((sections[n] - sections[j + i]) / scale)) > RETURNS_APART
+               for j in picked for i in range(k)):  # fmt: skip
+            picked.append(int(n))
+            if len(picked) == count:
+                break
+    return [sections[n] for n in picked]
+
+
 def lyapunov(
     system: ImpactSystem, forcing: Forcing, e: Any, state: Any,
     periods: int = LYAPUNOV_PERIODS,

@@ -51,7 +51,15 @@ from .continuation import (
     orbits_at,
     trace_branch,
 )
-from .coverage import FREQUENCIES, Coverage, attractor, attractors, initial_states
+from .coverage import (
+    FREQUENCIES,
+    Coverage,
+    attractor,
+    attractors,
+    close_returns,
+    initial_states,
+    section_states,
+)
 from .forcing import Forcing
 from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
@@ -267,6 +275,7 @@ def frequency_response(
     multistart: int = FREQUENCIES,
     jumps: int | None = None,
     folds: bool = False,
+    embedded: bool = False,
 ) -> FrequencyResponse:
     """The frequency-response curve over the band ``omegas`` [rad/s] (its first and last values
     bound the branches; the sweeps and the baseline use every value): branches continued from
@@ -279,7 +288,8 @@ def frequency_response(
     states at the branches' ends (None: MAX_JUMPS with rigid impacts, none with a compliant
     contact); with ``folds`` (rigid impacts), each branch that ends at a grazing beyond which
     no orbit continues it turned back there onto the orbits with the new impact
-    (:func:`_turn_at_grazing_ends`); the located peak; the linear
+    (:func:`_turn_at_grazing_ends`); with ``embedded``, the periodic orbits embedded in the
+    multi-start's chaotic motions (:func:`_embedded`); the located peak; the linear
     response without the damper (Step 8, Eq. F1), the motion without impacts, and, with
     ``sweeps``, the up and down brute-force sweeps."""
     system, forcing, e = checked(system, forcing, e)
@@ -290,6 +300,7 @@ def frequency_response(
         jumps = MAX_JUMPS if is_rigid(e) else 0
     jumps = checks.whole_number("jumps", jumps, 0, 10_000)
     folds = checks.flag("folds", folds)
+    embedded = checks.flag("embedded", embedded)
     w = checks.numbers("omegas", omegas)
     if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(w <= 0):
         raise ParameterError("omega", "the band needs at least two positive frequencies")
@@ -301,16 +312,18 @@ def frequency_response(
     failures: dict[str, list[float]] = {}  # reason → the frequencies where it happened
     step = 0.05
 
-    def follow(origin: str, k: int, state, fs: Forcing) -> Branch | None:
+    def follow(origin: str, k: int, state, fs: Forcing, guess: bool = False) -> Branch | None:
         """Shoot from ``state`` and, unless the orbit is on a traced branch, continue it: the
-        new branch, or None."""
+        new branch, or None (with a note where shooting fails, unless the start is a
+        ``guess``)."""
         try:
             orbit = shoot(system, fs, e, state, periods=k)
         except SymimpactError as exc:
-            failures.setdefault(f"{origin}: {exc}", []).append(fs.omega)
+            if not guess:
+                failures.setdefault(f"{origin}: {exc}", []).append(fs.omega)
             return None
-        if k > 1 and _repeats_every_period(system, fs, e, orbit):
-            return None  # a period-1 orbit found as period 2
+        if k > 1 and _repeats_sooner(system, fs, e, orbit, k):
+            return None  # an orbit of fewer periods (one found as two, two as four)
         if _traced(out.branches, system, fs, e, fs.omega, orbit.amplitude, k):
             return None
         try:
@@ -364,6 +377,8 @@ def frequency_response(
     _grow(out, system, forcing, e, band, step, failures, follow, jumps)
     if folds and is_rigid(e):
         _turn_at_grazing_ends(out, system, forcing, e, band, step, failures)
+    if embedded:
+        _embedded(found, system, forcing, e, failures, follow)
     out.coverage = Coverage(found, [
         _traced(out.branches, system, forcing, e, a.omega, a.amplitude, a.period_multiple)
         for a in found if a.kind == "periodic"
@@ -385,6 +400,37 @@ def frequency_response(
         for reason, ws in failures.items()
     ]
     return out
+
+
+#: The multi-start's motions whose embedded periodic orbits are searched for (:func:`_embedded`).
+EMBEDDING = ("chaotic", "not periodic")
+
+
+def _embedded(found, system, forcing, e, failures, follow) -> None:
+    """The periodic orbits of 1 to MAX_SWITCH_PERIODS periods embedded in each chaotic or not
+    periodic motion the multi-start found (rigid impacts): shot from the close returns of its
+    Poincaré section (:func:`symimpact.forced.coverage.close_returns`) and traced unless on a
+    traced branch (a close return that shooting does not converge from is a guess, and no
+    note).  Unstable where they are found, they lead to the stable windows inside a chaotic
+    band that lie between the multi-start's frequencies: on the README system the period-3
+    window at 28.125–28.199 rad/s, from the chaotic motion at 28.75 rad/s (benchmark 6's band:
+    30 more branches, the curve 1.7 times as long)."""
+    for a in found:
+        if a.kind not in EMBEDDING:
+            continue
+        fs = _forcing(forcing, a.omega)
+        try:
+            sections = section_states(system, fs, e, a.state)
+        except SymimpactError as exc:
+            failures.setdefault(f"orbits in a non-periodic motion: {exc}", []).append(a.omega)
+            continue
+        for k in range(1, MAX_SWITCH_PERIODS + 1):
+            for state in close_returns(sections, k):
+                new = follow("orbits in a non-periodic motion", k, state, fs, guess=True)
+                if new is not None:
+                    new.origin = (f"a period-{k} orbit in the {a.kind} motion at "
+                                  f"Ω = {a.omega:.6g} rad/s")  # fmt: skip
+                    new.origin_omega = a.omega
 
 
 def _grow(out, system, forcing, e, band, step, failures, follow, jumps: int) -> None:
@@ -681,12 +727,13 @@ def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):
     return intervals, ends
 
 
-def _repeats_every_period(system, forcing, e, orbit) -> bool:
-    """Whether a period-k orbit's state comes back after one period already (a period-1 orbit
-    found again as period k): to 1e-8 of its scale."""
+def _repeats_sooner(system, forcing, e, orbit, k: int) -> bool:
+    """Whether a period-``k`` orbit's state comes back after a divisor d < k of its periods
+    already (an orbit of d periods found again as one of k): to 1e-8 of its scale."""
     scale = np.array([orbit.amplitude, orbit.amplitude * forcing.omega, system.gap / 2,
                       orbit.amplitude * forcing.omega])  # fmt: skip
-    return _repeats((system, forcing, e), orbit.state, 1, scale)
+    return any(_repeats((system, forcing, e), orbit.state, d, scale)
+               for d in range(1, k) if k % d == 0)  # fmt: skip
 
 
 @dataclass(frozen=True)
