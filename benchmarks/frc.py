@@ -18,7 +18,8 @@ attractors frequency by frequency without continuation; target ratio ≥ 10).  T
 also measures the curve: the share of its periodic attractors that lie on a traced branch
 (issue 33's target ≥ 99 %), those missed, and its highest stable motion beside the located peak;
 then the same for the curve with folds (``frf --folds``: branches turned back at the grazings
-where they end), with its cost against the default curve's.
+where they end) and for the curve with the orbits embedded in the multi-start's chaotic motions
+(``frf --embedded``), each with its cost against the default curve's.
 
 The same comparison follows with the contact compliant: the linear law (k1 1e6 N/m, c1 from
 Step 9 for the same e), every contact integrated, the curve's shooting carrying the contact's
@@ -108,6 +109,19 @@ def main() -> None:
     print(f"the curve with folds (symimpact frf --folds): {folded.s()}  ({len(rf.branches)} "
           f"branches, {turned} of them turned back at a grazing); ratio to the default curve "
           f"{folded.median / full.median:.2f}")  # fmt: skip
+    missed = sorted({round(a.omega, 2) for a, t in zip(shot, on, strict=True) if not t})
+    print(f"  the brute force's periodic attractors on its branches: {sum(on)} of {len(shot)} "
+          f"({sum(on) / len(shot):.1%}); missed at Ω (rad/s): "
+          f"{', '.join(f'{w:g}' for w in missed)}")  # fmt: skip
+    embedded = timed(lambda: frequency_response(SYSTEM, FORCING, E, BAND, sweeps=False,
+                                                embedded=True))  # fmt: skip
+    re = embedded.out
+    found_in = sum(" motion at Ω = " in b.origin for b in re.branches)
+    on = [_traced(re.branches, SYSTEM, FORCING.at(a.omega), E, a.omega, a.amplitude,
+                  a.period_multiple) for a in shot]  # fmt: skip
+    print(f"the curve with embedded orbits (symimpact frf --embedded): {embedded.s()}  "
+          f"({len(re.branches)} branches, {found_in} of them from orbits embedded in a chaotic "
+          f"motion); ratio to the default curve {embedded.median / full.median:.2f}")  # fmt: skip
     missed = sorted({round(a.omega, 2) for a, t in zip(shot, on, strict=True) if not t})
     print(f"  the brute force's periodic attractors on its branches: {sum(on)} of {len(shot)} "
           f"({sum(on) / len(shot):.1%}); missed at Ω (rad/s): "

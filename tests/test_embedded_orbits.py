@@ -24,7 +24,7 @@ from symimpact.forced.coverage import (
     least_period,
     section_states,
 )
-from symimpact.forced.frf import _trace
+from symimpact.forced.frf import _trace, frequency_response
 from symimpact.model.system import ImpactSystem
 
 
@@ -137,3 +137,25 @@ def test_embedded_orbits_are_refused_for_a_structure(tmp_path, capsys):
     code = main(["frf", "--structure", str(path), "--freq-range", "4:6:1", "--embedded"])
     err = capsys.readouterr().err
     assert code == 2 and err.count("\n") == 1 and "error: embedded:" in err
+
+
+def test_the_curve_with_embedded_orbits_holds_the_window():
+    # the curve from one multi-start frequency, 28.75 rad/s (chaotic) and nothing else: without
+    # embedded orbits it traces no orbit of the window; with them a branch from one of the
+    # chaotic motion's orbits holds the stable period-3 motion the runs at 28.184 rad/s settle on
+    inside = Forcing(F0=2.0, omega=WINDOW)
+    landed = {round(a.amplitude, 12) for a in
+              (attractor(SYSTEM, inside, E, s, exponent=False)
+               for s in initial_states(SYSTEM, inside))
+              if a.kind == "periodic" and a.period_multiple == 3 and a.stable}  # fmt: skip
+    assert landed
+    for embedded in (False, True):
+        curve = frequency_response(SYSTEM, inside, E, [28.0, 29.5], starts=0, sweeps=False,
+                                   multistart=1, jumps=0, embedded=embedded)  # fmt: skip
+        held = [o.amplitude for b in curve.branches if b.period_multiple == 3
+                for o in orbits_at(b, SYSTEM, inside.at(WINDOW, b.phase), E, WINDOW)]  # fmt: skip
+        on = all(any(abs(h - a) <= 1e-7 * a for h in held) for a in landed)
+        assert on == embedded, (embedded, held, landed)
+        if embedded:
+            assert any(b.origin.startswith("a period-3 orbit in the chaotic motion at Ω = 28.75")
+                       for b in curve.branches)  # fmt: skip

@@ -27,6 +27,10 @@ from :data:`STARTS` initial states until the primary's free transient has decaye
   with fewer than one impact a period where the motion without impacts exists (the floating
   mass is neutral: with e < 1 it creeps towards rest over many more periods).  Not an attractor:
   counted, not listed as missed.
+
+The periodic orbits embedded in a chaotic motion are found from the close returns of its
+Poincaré section (:func:`section_states`, :func:`close_returns`): starts for shooting whose
+branches lead to stable windows narrower than the multi-start's spacing (``frf --embedded``).
 """
 
 from __future__ import annotations
