@@ -51,6 +51,17 @@ K1 = 1e6
 COMPLIANT = SYSTEM.with_(k1=K1, c1=float(ri.linear_c1_for_restitution(SYSTEM.m, SYSTEM.M, K1, E)))
 
 
+def _coverage_line(curve, shot) -> str:
+    """The brute force's periodic attractors ``shot`` that lie on ``curve``'s branches, and the
+    frequencies of those missed."""
+    on = [_traced(curve.branches, SYSTEM, FORCING.at(a.omega), E, a.omega, a.amplitude,
+                  a.period_multiple) for a in shot]  # fmt: skip
+    missed = sorted({round(a.omega, 2) for a, t in zip(shot, on, strict=True) if not t})
+    return (f"  the brute force's periodic attractors on its branches: {sum(on)} of {len(shot)} "
+            f"({sum(on) / len(shot):.1%}); missed at Ω (rad/s): "
+            f"{', '.join(f'{w:g}' for w in missed)}")  # fmt: skip
+
+
 def main() -> None:
     # numba compiles on the first call: one small curve before timing
     frequency_response(SYSTEM, FORCING, E, np.linspace(34.0, 36.0, 3), starts=1, sweeps=False,
@@ -104,28 +115,18 @@ def main() -> None:
     folded = timed(lambda: frequency_response(SYSTEM, FORCING, E, BAND, sweeps=False, folds=True))
     rf = folded.out
     turned = sum(b.origin.startswith("turned back") for b in rf.branches)
-    on = [_traced(rf.branches, SYSTEM, FORCING.at(a.omega), E, a.omega, a.amplitude,
-                  a.period_multiple) for a in shot]  # fmt: skip
     print(f"the curve with folds (symimpact frf --folds): {folded.s()}  ({len(rf.branches)} "
           f"branches, {turned} of them turned back at a grazing); ratio to the default curve "
           f"{folded.median / full.median:.2f}")  # fmt: skip
-    missed = sorted({round(a.omega, 2) for a, t in zip(shot, on, strict=True) if not t})
-    print(f"  the brute force's periodic attractors on its branches: {sum(on)} of {len(shot)} "
-          f"({sum(on) / len(shot):.1%}); missed at Ω (rad/s): "
-          f"{', '.join(f'{w:g}' for w in missed)}")  # fmt: skip
+    print(_coverage_line(rf, shot))
     embedded = timed(lambda: frequency_response(SYSTEM, FORCING, E, BAND, sweeps=False,
                                                 embedded=True))  # fmt: skip
-    re = embedded.out
-    found_in = sum(" motion at Ω = " in b.origin for b in re.branches)
-    on = [_traced(re.branches, SYSTEM, FORCING.at(a.omega), E, a.omega, a.amplitude,
-                  a.period_multiple) for a in shot]  # fmt: skip
+    curve = embedded.out
+    found_in = sum(" motion at Ω = " in b.origin for b in curve.branches)
     print(f"the curve with embedded orbits (symimpact frf --embedded): {embedded.s()}  "
-          f"({len(re.branches)} branches, {found_in} of them from orbits embedded in a chaotic "
+          f"({len(curve.branches)} branches, {found_in} of them from orbits embedded in a chaotic "
           f"motion); ratio to the default curve {embedded.median / full.median:.2f}")  # fmt: skip
-    missed = sorted({round(a.omega, 2) for a, t in zip(shot, on, strict=True) if not t})
-    print(f"  the brute force's periodic attractors on its branches: {sum(on)} of {len(shot)} "
-          f"({sum(on) / len(shot):.1%}); missed at Ω (rad/s): "
-          f"{', '.join(f'{w:g}' for w in missed)}")  # fmt: skip
+    print(_coverage_line(curve, shot))
     law = CompliantContact("linear")
     soft = timed(lambda: frequency_response(COMPLIANT, FORCING, law, BAND, sweeps=False,
                                             multistart=0))  # fmt: skip
