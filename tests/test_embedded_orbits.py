@@ -159,3 +159,11 @@ def test_the_curve_with_embedded_orbits_holds_the_window():
         if embedded:
             assert any(b.origin.startswith("a period-3 orbit in the chaotic motion at Ω = 28.75")
                        for b in curve.branches)  # fmt: skip
+
+
+def test_embedded_orbits_are_refused_for_a_compliant_contact(capsys):
+    code = main(["frf", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap",
+                 "20 mm", "--force", "2 N", "--omega-range", "25:26:0.5", "--contact",
+                 "linear", "--k1", "1e6", "--c1", "1", "--embedded"])  # fmt: skip
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1 and "error: embedded:" in err

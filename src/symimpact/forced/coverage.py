@@ -235,7 +235,7 @@ def section_states(
     system: ImpactSystem, forcing: Forcing, e: Any, state: Any, periods: int = RETURN_PERIODS
 ) -> np.ndarray:
     """The Poincaré section of the motion from ``state`` (x, ẋ, z, ẏ) at the forcing phase of
-    ``forcing``, rigid impacts of restitution ``e``: ``periods`` + 1 states, one a forcing
+    ``forcing``, contact ``e`` (a restitution: rigid impacts): ``periods`` + 1 states, one a forcing
     period apart (the stroboscopic map, Eq. F1 between impacts and Step 9's impact law,
     :func:`symimpact.forced.monodromy` without its Jacobian).  Raises where the map does."""
     out = [np.asarray(state, dtype=float)]
@@ -249,11 +249,11 @@ def close_returns(sections: np.ndarray, k: int, count: int = RETURNS) -> list[np
     from its Poincaré ``sections`` (:func:`section_states`): the ``count`` states s_n whose
     return s_(n+k) comes closest, max over the coordinates of abs(s_(n+k) − s_n) in units of
     the section's spread, apart by RETURNS_APART from each other and from the k − 1 states that
-    follow each (the same cycle at another phase) (the method of close returns: a chaotic
-    attractor is the closure of the unstable periodic orbits in it, and its motion shadows each
-    for a while; Auerbach, Cvitanović, Eckmann, Gunaratne and Procaccia, "Exploring chaotic
-    motion through periodic orbits", Phys. Rev. Lett. 58, 2387, 1987).  A stable window of
-    period k inside a chaotic band is the continuation of such an orbit."""
+    follow each, which are the same cycle at another phase.  This is the method of close
+    returns: a chaotic attractor is the closure of the unstable periodic orbits in it, and its
+    motion shadows each for a while (Auerbach, Cvitanović, Eckmann, Gunaratne and Procaccia,
+    "Exploring chaotic motion through periodic orbits", Phys. Rev. Lett. 58, 2387, 1987).  A
+    stable window of period k inside a chaotic band is the continuation of such an orbit."""
     if k < 1 or len(sections) <= k:
         return []
     scale = np.std(sections, axis=0)

@@ -301,6 +301,11 @@ def frequency_response(
     jumps = checks.whole_number("jumps", jumps, 0, 10_000)
     folds = checks.flag("folds", folds)
     embedded = checks.flag("embedded", embedded)
+    if embedded and not is_rigid(e):
+        raise ParameterError("embedded", "the orbits embedded in chaotic motions are searched "
+                                         "with rigid impacts, whose multi-start tells chaos by "
+                                         "its Lyapunov exponent; a compliant contact's motions "
+                                         "that do not repeat are not classified")  # fmt: skip
     w = checks.numbers("omegas", omegas)
     if w.ndim != 1 or len(w) < 2 or not np.all(np.isfinite(w)) or np.any(w <= 0):
         raise ParameterError("omega", "the band needs at least two positive frequencies")
@@ -377,7 +382,7 @@ def frequency_response(
     _grow(out, system, forcing, e, band, step, failures, follow, jumps)
     if folds and is_rigid(e):
         _turn_at_grazing_ends(out, system, forcing, e, band, step, failures)
-    if embedded:
+    if embedded:  # rigid impacts (checked above)
         _embedded(found, system, forcing, e, failures, follow)
     out.coverage = Coverage(found, [
         _traced(out.branches, system, forcing, e, a.omega, a.amplitude, a.period_multiple)
