@@ -420,7 +420,7 @@ def _embedded(found, system, forcing, e, failures, follow) -> None:
     band that lie between the multi-start's frequencies: on the README system the period-3
     window at 28.125–28.199 rad/s, from the chaotic motion at 28.75 rad/s (benchmark 6's band:
     32 more branches, 125 → 127 of the 200-frequency brute force's 128 periodic attractors on
-    the curve, the curve 1.8 times as long).  Done after the other starts (their budgets spent
+    the curve, the curve 1.7 times as long).  Done after the other starts (their budgets spent
     as before); the new branches are not switched or jumped from."""
     for a in found:
         if a.kind not in EMBEDDING:
@@ -469,7 +469,7 @@ def _turn_at_grazing_ends(out, system, forcing, e, band, step, failures) -> None
     fold is a new branch unless its first orbit lies on a traced one.  On the README's curve the
     symmetric four-impact orbits' grazing at 30.4438 rad/s leads to the stable five-impact motion
     near 29.876 rad/s, which nothing else reaches (benchmark 6's band: 45 more branches, 125 →
-    126 of the brute force's 128 periodic attractors on the curve, the curve 1.98 times as
+    126 of the brute force's 128 periodic attractors on the curve, the curve 1.86 times as
     long).  Done after the other starts (their budgets spent as before); the new branches are
     not switched or jumped from."""
     width = band[1] - band[0]
