@@ -161,9 +161,12 @@ def test_the_curve_with_embedded_orbits_holds_the_window():
                        for b in curve.branches)  # fmt: skip
 
 
-def test_embedded_orbits_are_refused_for_a_compliant_contact(capsys):
+@pytest.mark.parametrize("flag", ["folds", "embedded"])
+def test_folds_and_embedded_orbits_are_refused_for_a_compliant_contact(flag, capsys):
+    # both search what rigid impacts have: a grazing no orbit continues beyond (a compliant
+    # contact's orbits change smoothly there), motions classified chaotic by their exponent
     code = main(["frf", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap",
                  "20 mm", "--force", "2 N", "--omega-range", "25:26:0.5", "--contact",
-                 "linear", "--k1", "1e6", "--c1", "1", "--embedded"])  # fmt: skip
+                 "linear", "--k1", "1e6", "--c1", "1", f"--{flag}"])  # fmt: skip
     err = capsys.readouterr().err
-    assert code == 2 and err.count("\n") == 1 and "error: embedded:" in err
+    assert code == 2 and err.count("\n") == 1 and f"error: {flag}:" in err

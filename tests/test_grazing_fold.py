@@ -107,13 +107,3 @@ def test_the_curve_with_folds_holds_the_motion_the_default_curve_misses():
         if folds:
             turned = [b for b in curve.branches if b.origin.startswith("turned back")]
             assert turned
-
-
-def test_folds_are_refused_for_a_compliant_contact(capsys):
-    from symimpact.cli import main
-
-    code = main(["frf", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap",
-                 "20 mm", "--force", "2 N", "--omega-range", "25:26:0.5", "--contact",
-                 "linear", "--k1", "1e6", "--c1", "1", "--folds"])  # fmt: skip
-    err = capsys.readouterr().err
-    assert code == 2 and err.count("\n") == 1 and "error: folds:" in err
