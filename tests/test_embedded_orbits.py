@@ -157,7 +157,7 @@ def test_the_curve_with_embedded_orbits_holds_the_window():
         on = all(any(abs(h - a) <= 1e-7 * a for h in held) for a in landed)
         assert on == embedded, (embedded, held, landed)
         if embedded:
-            assert any(b.origin.startswith("a period-3 orbit in the chaotic motion at Ω = 28.75")
+            assert any(b.origin.startswith("period-3 orbit in the chaotic motion at Ω = 28.75")
                        for b in curve.branches)  # fmt: skip
 
 

@@ -435,7 +435,7 @@ def _embedded(found, system, forcing, e, failures, follow) -> None:
             for state in close_returns(sections, k):
                 new = follow("orbits in a non-periodic motion", k, state, fs, guess=True)
                 if new is not None:
-                    new.origin = (f"a period-{k} orbit in the {a.kind} motion at "
+                    new.origin = (f"period-{k} orbit in the {a.kind} motion at "
                                   f"Ω = {a.omega:.6g} rad/s")  # fmt: skip
                     new.origin_omega = a.omega
 
