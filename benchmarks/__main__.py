@@ -20,6 +20,7 @@ import time
 
 from . import (
     contact_duration_kernel,
+    coverage,
     design_map,
     frc,
     map_throughput,
@@ -59,6 +60,10 @@ SUITE = (
         one_mode_engine.main,
     ),
     ("12. a clearance design map of 20 clearances, refined to 0.01 mm", design_map.main),
+    (
+        "13. the curves' coverage of the brute force's motions on the 12 Hz and report systems",
+        coverage.main,
+    ),
 )
 
 
