@@ -43,7 +43,6 @@ from .contact_law import checked, is_constant, is_rigid, simulation_arguments
 from .continuation import (
     SWITCHES,
     Branch,
-    _repeats,
     branch_starts,
     continue_orbit,
     leave,
@@ -58,6 +57,7 @@ from .coverage import (
     attractors,
     close_returns,
     initial_states,
+    least_period,
     section_states,
 )
 from .forcing import Forcing
@@ -327,7 +327,7 @@ def frequency_response(
             if not guess:
                 failures.setdefault(f"{origin}: {exc}", []).append(fs.omega)
             return None
-        if k > 1 and _repeats_sooner(system, fs, e, orbit, k):
+        if k > 1 and least_period(system, fs, e, orbit.state, k, orbit.amplitude) < k:
             return None  # an orbit of fewer periods (one found as two, two as four)
         if _traced(out.branches, system, fs, e, fs.omega, orbit.amplitude, k):
             return None
@@ -732,15 +732,6 @@ def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):
             intervals.append((lo, hi))
         state = not state
     return intervals, ends
-
-
-def _repeats_sooner(system, forcing, e, orbit, k: int) -> bool:
-    """Whether a period-``k`` orbit's state comes back after a divisor d < k of its periods
-    already (an orbit of d periods found again as one of k): to 1e-8 of its scale."""
-    scale = np.array([orbit.amplitude, orbit.amplitude * forcing.omega, system.gap / 2,
-                      orbit.amplitude * forcing.omega])  # fmt: skip
-    return any(_repeats((system, forcing, e), orbit.state, d, scale)
-               for d in range(1, k) if k % d == 0)  # fmt: skip
 
 
 @dataclass(frozen=True)
