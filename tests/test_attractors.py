@@ -114,3 +114,29 @@ def test_an_attractor_is_reported_with_its_least_period():
     four = shoot(SYSTEM, f, E, periodic[0].state, periods=4)
     assert four.amplitude == pytest.approx(closed[0].amplitude, rel=1e-9)
     assert least_period(SYSTEM, f, E, four.state, 4, four.amplitude) == 1
+
+
+def test_the_band_s_end_intervals_are_refined():
+    # the report's curve at d 9 mm (its chosen reading: M 1 kg, K 100 N/m, C 1 N s/m, m 0.25 kg,
+    # e 0.1594, F0 0.2 N): a stable period-3 motion at 14.60–14.95 rad/s lies between the last
+    # frequency of the curve's multi-start over 5–15 rad/s (14.375) and the band's end, which
+    # the multi-start's refinement now runs and halves towards.  Over 14–15 rad/s with one
+    # frequency (14.5, where every start lands elsewhere), the curve holds every period-3 motion
+    # of the 200-frequency brute force's runs there (independent runs from its initial states)
+    from symimpact.forced.coverage import frequencies, initial_states
+    from symimpact.forced.frf import _traced
+
+    system = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, contact="linear", k1=1e6)
+    e, forcing = 0.1594, Forcing(F0=0.2, omega=14.5)
+    at_middle = [attractor(system, forcing, e, s, exponent=False)
+                 for s in initial_states(system, forcing)]  # fmt: skip
+    assert not any(a.kind == "periodic" for a in at_middle)
+    brute = [a for w in frequencies((5.0, 15.0), 200) if w > 14.5
+             for s in initial_states(system, forcing.at(w))
+             for a in [attractor(system, forcing.at(w), e, s, exponent=False)]
+             if a.kind == "periodic" and a.period_multiple == 3]  # fmt: skip
+    assert len({a.omega for a in brute}) >= 6
+    curve = frequency_response(system, forcing, e, [14.0, 15.0], starts=0, sweeps=False,
+                               multistart=1, jumps=0)  # fmt: skip
+    for a in brute:
+        assert _traced(curve.branches, system, forcing.at(a.omega), e, a.omega, a.amplitude, 3)

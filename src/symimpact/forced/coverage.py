@@ -4,7 +4,8 @@
 
 At each of :data:`FREQUENCIES` frequencies spread over the band (fixed by the band's ends, not
 by its step, so that the curve does not depend on how finely it is sampled; for a curve, each
-initial state's interval halved where it lands on motions of another kind at its ends, down to
+initial state's interval between neighbouring frequencies, or between a band's end and its
+nearest frequency, halved where it lands on motions of another kind at its ends, down to
 :data:`REFINE` of the band) the event-driven
 simulation (rigid impacts with chatter and sticking, or a compliant contact; Eq. F1, F2) runs
 from :data:`STARTS` initial states until the primary's free transient has decayed to 1e-6
@@ -312,9 +313,9 @@ def _kind(lam: float, spread: float, period: float) -> str:
     return "not settled" if lam < 0 else "not periodic"
 
 
-#: With ``refine``, the multi-start's interval between two neighbouring frequencies is halved
-#: where one initial state lands on motions of another kind, period or count of impacts at its
-#: ends, down to this share of the band: the stable windows of a resonance broken up by
+#: With ``refine``, the multi-start's interval between two neighbouring frequencies (or a band's
+#: end and its nearest frequency) is halved where one initial state lands on motions of another
+#: kind, period or count of impacts at its ends, down to this share of the band: the stable windows of a resonance broken up by
 #: chatter (the README's 29–33 rad/s) are narrower than the multi-start's spacing.
 REFINE = 1.0 / 256
 
@@ -335,8 +336,9 @@ def attractors(
 ) -> list[Attractor]:  # fmt: skip
     """The attractors of the multi-start over ``band`` (module text), each distinct one at a
     frequency once, in the order of the frequencies.  With ``refine``, each initial state's
-    interval between neighbouring frequencies is halved where its landings at the ends differ
-    (:data:`REFINE`); the shot periodic landings of the halving points are added (those of at
+    interval between neighbouring frequencies (and between each of the band's ends and its nearest
+    frequency) is halved where its landings at the ends differ (:data:`REFINE`); the shot
+    periodic landings at the band's ends and the halving points are added (those of at
     most MAX_SHOT_PERIODS periods, which a curve traces; a motion that does not repeat there is
     not added: its exponent is not computed)."""
     ws = [float(w) for w in frequencies(band, n)]
@@ -354,21 +356,33 @@ def attractors(
                 runs[w].append(a)
     if refine:
         width = band[1] - band[0]
+
+        def landed(w: float, j: int) -> Attractor | None:
+            """Where initial state j lands at ``w``, its exponent not computed; a shot periodic
+            landing is added to the multi-start's attractors."""
+            f = forcing.at(w)
+            try:
+                a = attractor(system, f, e, initial_states(system, f)[j], exponent=False)
+            except SymimpactError:
+                return None
+            if a.kind == "periodic" and a.stable is not None:
+                runs.setdefault(w, []).append(a)
+            return a
+
+        # the band's ends bound the first and last intervals, which are halved like the others
+        # (a stable window between the last frequency and the band's end is otherwise never run)
+        for j in range(STARTS):
+            for w in band:
+                landing[w, j] = landed(w, j)
         for j in range(STARTS):
             stack = [(a, b, landing.get((a, j)), landing.get((b, j)))
-                     for a, b in itertools.pairwise(ws)]  # fmt: skip
+                     for a, b in itertools.pairwise([band[0], *ws, band[1]])]  # fmt: skip
             while stack:
                 a, b, la, lb = stack.pop()
                 if _landing_key(la) == _landing_key(lb) or b - a < 2 * REFINE * width:
                     continue
                 m = 0.5 * (a + b)
-                f = forcing.at(m)
-                try:
-                    lm = attractor(system, f, e, initial_states(system, f)[j], exponent=False)
-                except SymimpactError:
-                    lm = None
-                if lm is not None and lm.kind == "periodic" and lm.stable is not None:
-                    runs.setdefault(m, []).append(lm)
+                lm = landed(m, j)
                 stack += [(a, m, la, lm), (m, b, lm, lb)]
     found: list[Attractor] = []
     for w in sorted(runs):
