@@ -385,6 +385,34 @@ def _segment(p, mass, t0, x0, v0, tau, ledger, period_max, n_periods):
 
 
 @njit(cache=True)
+def states_at(ev, times, initial, final_stuck, h, M, m, K, C, F0, X_b, W, phi):
+    """The states (x, ẋ, z = y − x, ẏ) at ``times`` [s] of a run whose event log is ``ev``,
+    started at ``initial`` (x, ẋ, y, ẏ) at t = 0: the closed-form flight (Eq. F1, the forcing
+    phase Ω·t0 + φ of the last event before each time) from that event's state after it, with
+    the mass M + m where the next event is a release (or the run ended stuck after the last);
+    at an event's time, the state after it."""
+    n = ev.shape[0]
+    out = np.empty((times.shape[0], 4))
+    for i in range(times.shape[0]):
+        j = np.searchsorted(ev[:, E_T], times[i], side="right") - 1
+        if j < 0:
+            t0, x0, v0, stuck = 0.0, initial[0], initial[1], False
+            z0, u0 = initial[2] - initial[0], initial[3]
+        else:
+            t0, x0, v0 = ev[j, E_T], ev[j, E_X], ev[j, E_XD1]
+            z0, u0 = ev[j, E_SIDE] * h, ev[j, E_YD1]
+            stuck = ev[j + 1, E_KIND] == KIND_RELEASE if j + 1 < n else final_stuck
+        mass = M + m if stuck else M
+        tau = times[i] - t0
+        x = _xf(tau, mass, K, C, F0, X_b, W, W * t0 + phi, x0, v0)
+        v = _vf(tau, mass, K, C, F0, X_b, W, W * t0 + phi, x0, v0)
+        out[i, 0], out[i, 1] = x, v
+        out[i, 2] = z0 if stuck else z0 + u0 * tau - (x - x0)
+        out[i, 3] = v if stuck else u0
+    return out
+
+
+@njit(cache=True)
 def _grow(a, n):
     """``a`` if it has a row ``n``, else a copy with twice the rows."""
     if n < a.shape[0]:
