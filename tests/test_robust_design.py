@@ -21,8 +21,10 @@ BAND = np.arange(28.0, 36.01, 1.0)
 
 @pytest.fixture(scope="module")
 def robust():
-    # multistart 0: the curve's branches and the sweeps, as each separate design below
-    return robust_design(SYSTEM, FORCING, (0.2, 0.9), BAND, [0.005, 0.04], samples=3,
+    # multistart 0: the curve's branches and the sweeps, as each separate design below.  The range
+    # ends at 0.6: near e 0.9 each curve took ten times as long (38.7 s against 3.3 s at 0.2, d 40
+    # mm), and the fixture 297 s of a CI-like run's slow set; over 0.2–0.6 the design took 111 s
+    return robust_design(SYSTEM, FORCING, (0.2, 0.6), BAND, [0.005, 0.04], samples=3,
                          multistart=0, workers=1)  # fmt: skip
 
 
@@ -30,21 +32,21 @@ def robust():
 def test_worst_case_against_separate_designs(robust):
     for row in robust["rows"]:
         # the nominal sample (the middle of the range) designed on its own: the same computation,
-        # equal to rounding of the restitution's middle (0.5·(0.2 + 0.9)).  The ends are the same
+        # equal to rounding of the restitution's middle (0.5·(0.2 + 0.6)).  The ends are the same
         # call at another e (six separate designs took 163 s on the 2-core machine)
-        nominal = design_row(SYSTEM.with_(gap=row["gap"]), FORCING, 0.55, BAND, multistart=0)
+        nominal = design_row(SYSTEM.with_(gap=row["gap"]), FORCING, 0.4, BAND, multistart=0)
         assert row["peaks"][1] == pytest.approx(nominal["peak_amplitude"], rel=1e-12)
         separate = row["peaks"]
         assert len(separate) == 3 and row["worst_peak"] >= max(separate)
         if row["worst_peak"] > max(separate):
-            # Brent's method found more between the samples (measured at d = 40 mm: 88.4 mm at
-            # e = 0.893 against 86.7 mm at 0.9 — the peak is not monotone between samples that
-            # are): a real motion, the same design run at that e gives it again
+            # Brent's method found more between the samples (measured at d = 40 mm: 74.9 mm at
+            # e = 0.589 against 67.3 mm at 0.6 and 54.5 mm at 0.4 — the peak is not monotone
+            # between samples): a real motion, the same design run at that e gives it again
             again = design_row(SYSTEM.with_(gap=row["gap"]), FORCING, row["worst_e"], BAND,
                                multistart=0)["peak_amplitude"]  # fmt: skip
             assert again == pytest.approx(row["worst_peak"], rel=1e-12)
         else:  # nothing above the samples: the worst case is the largest sample
-            assert row["worst_e"] in (0.2, 0.55, 0.9)
+            assert row["worst_e"] in (0.2, 0.4, 0.6)
         assert row["nominal_peak"] == row["peaks"][1]
     assert robust["robust_best"]["worst_peak"] == min(r["worst_peak"] for r in robust["rows"])
     assert robust["nominal_best"]["nominal_peak"] == min(r["nominal_peak"] for r in robust["rows"])

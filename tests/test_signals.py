@@ -3,7 +3,7 @@
 SIGINT inside a compiled run was a segmentation fault, or exit 70 with "SystemError ... returned
 a result with an exception set"), never an internal error.
 
-Slow (about seven minutes): the README's test command leaves it out; CI runs it in its second step
+Slow (about four minutes): the README's test command leaves it out; CI runs it in its second step
 (``python -m pytest -m slow``).  The moments are drawn from a generator seeded by the command's
 name, so a failure names a reproducible moment; they start after the start-up this machine needs
 to reach ``main``'s handlers (before them a signal meets Python's default handler: measured as
@@ -99,8 +99,9 @@ COMMANDS = {
     # Welch between them
     "random": (_random(duration=100, realisations=500), _random(duration=10, realisations=1)),
 }
-#: Moments per command.
-MOMENTS = 20
+#: Moments per command: each of the three signals at least twice (SIGINT, SIGTERM, SIGINT,
+#: SIGHUP in turn).  Twenty took 8.5 min of a CI-like run alone, beside a CI run near its limit.
+MOMENTS = 10
 #: The window the moments are drawn from [s] after the process starts: from the start-up this
 #: machine needs to reach the handlers (:func:`_start_up`), at least EARLIEST, for WINDOW seconds.
 #: (A fixed 0.3 s held on one machine, where main ran 0.15 s after the start; on another the
