@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import importlib
 
+import mpmath as _mp
 from sympy.core.random import seed as _sympy_seed
 
 # Load the submodule derive.board before the function board() below is defined: the first import
@@ -45,8 +46,18 @@ SYMPY_SEED = 20261128
 _sympy_seed(SYMPY_SEED)
 
 
+#: mpmath's working precision [bits] outside a step's own ``workdps`` blocks: mpmath's default,
+#: as in a fresh ``python -m derive``.  A step's arithmetic on mpmath numbers outside such a
+#: block (Step 1's (β₁L)⁴ in its Eq. 6 erratum and the tip-stiffness kernel) rounds to it; a
+#: process that had raised mpmath's global precision (a test module setting ``mp.dps = 40``)
+#: derived another last digit there, and its boards differed from ``generated/``.
+MPMATH_PREC = 53
+
+
 def board(step: str):
-    """Run one derivation step and return its board (SymPy's random numbers seeded first, so a
-    step's work does not depend on the steps before it nor on the run)."""
+    """Run one derivation step and return its board (SymPy's random numbers seeded first and
+    mpmath's precision set to MPMATH_PREC, so a step's work does not depend on the steps before it,
+    on the process it runs in, nor on the run)."""
     _sympy_seed(SYMPY_SEED)
-    return importlib.import_module(f"derive.{step}").derive()
+    with _mp.workprec(MPMATH_PREC):
+        return importlib.import_module(f"derive.{step}").derive()

@@ -174,3 +174,26 @@ def test_a_point_s_digest_follows_what_it_is_found_from(boards):
     digests = {checkpoints.digest(x) for x in (k, wider, other)}
     assert len(digests) == 3
     assert checkpoints.digest(renamed) == checkpoints.digest(k)  # the name finds no point
+
+
+def test_a_step_derived_where_mpmath_s_precision_was_raised_is_the_one_in_generated():
+    # Step 1 raises (β₁L)⁴ to the fourth power outside its own workdps blocks: in a process that
+    # had set mpmath's global precision higher (a test module's mp.dps = 40, an xdist worker's
+    # earlier tests), the Eq. 6 erratum and the tip-stiffness kernel got another last digit, and
+    # the walk-through page built from that board showed erratum 1 as changed.  derive.board
+    # derives at mpmath's default precision whatever the process set
+    import mpmath
+    import sympy as sp
+
+    errata = (Path(derive.__file__).resolve().parent.parent / "generated" / "errata.md").read_text(
+        encoding="utf-8"
+    )
+    before = mpmath.mp.dps
+    try:
+        mpmath.mp.dps = 50
+        ritz = derive.board("ritz")
+        assert mpmath.mp.dps == 50  # the process's own setting is left as it was
+    finally:
+        mpmath.mp.dps = before
+    (derived,) = [e.derived for e in ritz.errata if e.key == "eq6_constant"]
+    assert sp.latex(derived) in errata
