@@ -315,8 +315,9 @@ def _kind(lam: float, spread: float, period: float) -> str:
 
 #: With ``refine``, the multi-start's interval between two neighbouring frequencies (or a band's
 #: end and its nearest frequency) is halved where one initial state lands on motions of another
-#: kind, period or count of impacts at its ends, down to this share of the band: the stable windows of a resonance broken up by
-#: chatter (the README's 29–33 rad/s) are narrower than the multi-start's spacing.
+#: kind, period or count of impacts at its ends, down to this share of the band: the stable
+#: windows of a resonance broken up by chatter (the README's 29–33 rad/s) are narrower than the
+#: multi-start's spacing.
 REFINE = 1.0 / 256
 
 
