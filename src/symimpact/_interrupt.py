@@ -25,6 +25,8 @@ import _signal
 import os
 import signal
 import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import numba
@@ -104,8 +106,22 @@ def _record(signum: int, frame: Any) -> None:
 def call(fn: Any, *args: Any) -> Any:
     """``fn(*args, watch)``: a compiled loop, given the pipe to watch, with SIGINT deferred to its
     return (see the module text).  The previous SIGINT handler is called there if a SIGINT came,
-    so a KeyboardInterrupt is raised from here, in Python, with the result discarded."""
+    so a KeyboardInterrupt is raised from here, in Python, with the result discarded.  Inside a
+    :func:`stretch` the stretch's deferral and pipe serve the call."""
     global _compiled_depth
+    st = _stretch
+    if st is not None and not _compiled_depth and _recorded:
+        _end_stretch(st)  # came while the stretch ran Python: delivered before the run
+        st = None
+    if st is not None and not _compiled_depth:
+        _compiled_depth = 1
+        try:
+            out = fn(*args, st.watch)
+        finally:
+            _compiled_depth = 0
+        if _recorded or st.watch[2]:
+            _end_stretch(st)
+        return out
     if (
         threading.current_thread() is not threading.main_thread()
         or _compiled_depth
@@ -137,6 +153,14 @@ def call(fn: Any, *args: Any) -> Any:
             _signal.signal(_SIGINT, previous)
         _signal.set_wakeup_fd(old_fd)
         _PIPE.drain()  # (_signal.signal above ran a pending SIGINT's handler, _record)
+    _deliver(previous, watch)
+    return out
+
+
+def _deliver(previous: Any, watch: np.ndarray) -> None:
+    """Once the deferral has ended: call the previous SIGINT handler if a SIGINT came (Python's
+    own raises KeyboardInterrupt), and raise KeyboardInterrupt if a compiled run was cut short
+    by a signal (its result is not one)."""
     if _recorded or watch[2] == _SIGINT:
         _recorded.clear()
         if callable(previous):  # Python's own raises KeyboardInterrupt
@@ -145,4 +169,66 @@ def call(fn: Any, *args: Any) -> Any:
             signal.raise_signal(signal.SIGINT)
     if watch[2]:  # the run was cut short: its result is not one
         raise KeyboardInterrupt(f"signal {int(watch[2])}")
-    return out
+
+
+class _Stretch:
+    """The deferral of a :func:`stretch`: the handler and wakeup descriptor it replaced, and
+    the watch its calls share."""
+
+    def __init__(self, previous: Any, defer: bool, old_fd: int, read_end: int) -> None:
+        self.previous, self.defer, self.old_fd = previous, defer, old_fd
+        self.watch = np.array([read_end, 0, 0], dtype=np.int64)
+
+
+_stretch: _Stretch | None = None
+
+
+def _end_stretch(st: _Stretch) -> None:
+    """Restore what the stretch replaced, then deliver what came (:func:`_deliver`)."""
+    global _stretch
+    if _stretch is not st:
+        return
+    _stretch = None
+    if st.defer:
+        _signal.signal(_SIGINT, st.previous)
+    _signal.set_wakeup_fd(st.old_fd)
+    _PIPE.drain()
+    _deliver(st.previous, st.watch)
+
+
+@contextmanager
+def stretch() -> Iterator[None]:
+    """A stretch of Python that makes many short compiled calls through :func:`call` — a
+    continuation's Newton steps, tens of thousands of one-period runs of 30 µs — under one
+    deferral: the SIGINT handler and the wakeup pipe are set once, where setting them around
+    each call cost as much as the run.  A SIGINT that comes is delivered as :func:`call`
+    delivers it, by the next call once its run has returned (or before it starts, if it came
+    while Python ran), or when the stretch ends; the stretch's deferral then ends.  Nested
+    stretches, other threads and runs as Python (``NUMBA_DISABLE_JIT``) leave each call to its
+    own deferral."""
+    global _stretch
+    if (
+        _stretch is not None
+        or _compiled_depth
+        or threading.current_thread() is not threading.main_thread()
+        or numba.config.DISABLE_JIT
+    ):
+        yield
+        return
+    r, w = _PIPE.ends()
+    previous = _signal.getsignal(_SIGINT)
+    defer = previous not in (_SIG_IGN, None)
+    try:
+        old_fd = _signal.set_wakeup_fd(w, warn_on_full_buffer=False)
+    except ValueError:  # a signal-less interpreter (embedded)
+        yield
+        return
+    _recorded.clear()
+    if defer:
+        _signal.signal(_SIGINT, _record)
+    st = _Stretch(previous, defer, old_fd, r)
+    _stretch = st
+    try:
+        yield
+    finally:
+        _end_stretch(st)

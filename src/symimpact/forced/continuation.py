@@ -51,7 +51,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
-from .. import budgets
+from .. import _interrupt, budgets
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..model import checks
 from ..model.system import ImpactSystem
@@ -66,6 +66,7 @@ from .shooting import (
     mid_free_flight,
     monodromy,
     shoot,
+    stroboscopic_map,
 )
 from .simulation import impact_counts, state_at
 
@@ -170,6 +171,10 @@ class Branch:
 PARAMETERS = {"omega": "rad/s", "gap": "m", "F0": "N", "X_b": "m", "e": ""}
 
 
+#: The 4×4 identity (the monodromy less it is the map's Jacobian minus the unknowns').
+_I4 = np.eye(4)
+
+
 class _Problem:
     """The scaled residual and Jacobian of the continuation at y = (s/scale, p/unit)."""
 
@@ -195,6 +200,17 @@ class _Problem:
         """The forcing frequency at y."""
         return float(y[4] * self.unit) if self.parameter == "omega" else self.forcing.omega
 
+    def map(self, value: float, s: np.ndarray, jacobian: bool = True,
+            parameter: str | None = None):  # fmt: skip
+        """:func:`~symimpact.forced.shooting.monodromy` at the parameter ``value`` from the
+        state ``s``: the system, forcing and contact were checked when the problem was made, so
+        only a restitution the Newton step moved (parameter e) is checked again."""
+        system, forcing, e = self.at(value)
+        if self.parameter == "e":  # a restitution beyond [0, 1] is refused there
+            return monodromy(system, forcing, e, s, self.periods, jacobian, parameter)
+        state = (float(s[0]), float(s[1]), float(s[2]), float(s[3]))
+        return stroboscopic_map(system, forcing, e, state, self.periods, jacobian, parameter)
+
     #: ∂P/∂p of rigid impacts carried along the monodromy's chain; False: by central
     #: differences as for a compliant contact (what the tests and the benchmark compare it with)
     carried = True
@@ -203,16 +219,16 @@ class _Problem:
         """(residual, Jacobian 4×5, monodromy, the simulation) at y, all scaled."""
         s, value = y[:4] * self.scale, y[4] * self.unit
         if is_rigid(self.e) and self.carried:  # ∂P/∂p carried along the monodromy's chain
-            ps, J5, res = monodromy(*self.at(value), s, self.periods, parameter=self.parameter)
+            ps, J5, res = self.map(value, s, parameter=self.parameter)
             mono, dp = J5[:, :4], J5[:, 4] * self.unit
         else:  # a compliant contact: by central differences of the map
-            ps, mono, res = monodromy(*self.at(value), s, self.periods)
+            ps, mono, res = self.map(value, s)
             d = 1e-6 * max(abs(value), self.unit)
-            plus = monodromy(*self.at(value + d), s, self.periods, jacobian=False)[0]
-            minus = monodromy(*self.at(value - d), s, self.periods, jacobian=False)[0]
+            plus = self.map(value + d, s, jacobian=False)[0]
+            minus = self.map(value - d, s, jacobian=False)[0]
             dp = (plus - minus) / (2 * d) * self.unit
         J = np.zeros((4, 5))
-        J[:, :4] = (mono - np.eye(4)) * self.scale[None, :] / self.scale[:, None]
+        J[:, :4] = (mono - _I4) * self.scale[None, :] / self.scale[:, None]
         J[:, 4] = dp / self.scale
         return (ps - s) / self.scale, J, mono, res
 
@@ -386,6 +402,7 @@ def _tests(t: np.ndarray, mono: np.ndarray) -> dict[str, float]:
     }
 
 
+@_interrupt.stretch()
 def continue_orbit(
     system: ImpactSystem,
     forcing: Forcing,
@@ -673,6 +690,7 @@ def _revisited(points: list[BranchPoint], problem: _Problem, ds: float) -> Branc
     return None
 
 
+@_interrupt.stretch()
 def trace_branch(
     system: ImpactSystem,
     forcing: Forcing,

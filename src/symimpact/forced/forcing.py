@@ -71,6 +71,20 @@ class Forcing:
     def at(self, omega: float, phase: float | None = None) -> Forcing:
         """The same forcing at the frequency ``omega`` [rad/s] (and ``phase``, default this
         one's): F0 and whichever of X_b, V_b, A_b was given stay constant (Eq. F1)."""
+        if (
+            self.V_b is None
+            and self.A_b is None
+            and isinstance(omega, float)
+            and 0.0 < omega < math.inf
+            and (phase is None or (isinstance(phase, float) and math.isfinite(phase)))
+        ):  # a frequency in SI, as the continuation's Newton steps give it: nothing to convert
+            out = object.__new__(Forcing)
+            for name, value in (("F0", self.F0), ("X_b", self.X_b), ("omega", float(omega)),
+                                ("freq", float(omega) / (2.0 * math.pi)),
+                                ("phase", self.phase if phase is None else float(phase)),
+                                ("V_b", None), ("A_b", None)):  # fmt: skip
+                object.__setattr__(out, name, value)
+            return out
         kept = {"V_b": self.V_b} if self.V_b is not None else {}
         kept |= {"A_b": self.A_b} if self.A_b is not None else {}
         return Forcing(

@@ -35,6 +35,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import _interrupt
 from ..errors import ParameterError, SymimpactError
 from ..generated import forced_flight as ff
 from ..model import checks
@@ -264,6 +265,7 @@ def _section_state(orbit, omega: float, h: float, system: ImpactSystem, forcing:
     return state, f.at(omega, orbit.impact_phase + math.pi / 2)
 
 
+@_interrupt.stretch()
 def frequency_response(
     system: ImpactSystem,
     forcing: Forcing,

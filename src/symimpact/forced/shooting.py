@@ -34,8 +34,8 @@ from typing import Any
 
 import numpy as np
 
-from .. import budgets
-from ..errors import MethodNotApplicable
+from .. import _interrupt, budgets
+from ..errors import MethodNotApplicable, ParameterError
 from ..model import checks
 from ..model.system import ImpactSystem
 from . import _chain, _rigid
@@ -137,12 +137,34 @@ def monodromy(
     system, forcing, e = checked(system, forcing, e)
     x, v, z, u = (float(c) for c in checks.state("state", state))
     periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
+    if is_rigid(e):
+        contact_arguments(system, "rigid", e, None)  # e in [0, 1], or the materials' law
+    return stroboscopic_map(system, forcing, e, (x, v, z, u), periods, jacobian, parameter)
+
+
+def stroboscopic_map(
+    system: ImpactSystem,
+    forcing: Forcing,
+    e: Any,
+    state: tuple[float, float, float, float],
+    periods: int,
+    jacobian: bool = True,
+    parameter: str | None = None,
+) -> tuple[np.ndarray, np.ndarray | None, Any]:
+    """:func:`monodromy` (Step 8's flights and Step 9's saltations along the motion) for
+    arguments already checked by it or by the caller's own entry: ``system``, ``forcing`` and
+    ``e`` as :func:`~symimpact.forced.contact_law.checked` returns them, ``state`` four floats,
+    ``periods`` a whole number in [1, MAX_PERIODS].  The continuation's Newton steps call it
+    tens of thousands of times a curve, where checking the same arguments again cost more than
+    the compiled run.  A state that is not finite or lies beyond a wall is still refused."""
+    x, v, z, u = state
+    if not (math.isfinite(x) and math.isfinite(v) and math.isfinite(z) and math.isfinite(u)):
+        raise ParameterError("state", f"must be 4 finite numbers (x, ẋ, z, ẏ), got {state}")
     if not is_rigid(e):
         return _compliant_monodromy(system, forcing, e, (x, v, z, u), periods, jacobian)
-    _, _, law = contact_arguments(system, "rigid", e, None)
     within_walls("state", x, x + z, system.gap / 2.0)
     try:  # at most MAX_IMPACTS_PER_PERIOD impacts a period; chatter taken to its accumulation
-        res, _ = _simulate(system, forcing, "rigid", e, None, law, [x, v, x + z, u], periods,
+        res, _ = _simulate(system, forcing, "rigid", e, None, _NO_LAW, [x, v, x + z, u], periods,
                            max_contacts=MAX_IMPACTS_PER_PERIOD * periods)  # fmt: skip
     except TooManyContacts:
         raise MethodNotApplicable(
@@ -163,6 +185,10 @@ def monodromy(
             "not stick) has no saltation: the monodromy is not defined there",
         )
     return np.array([fx, fv, fy - fx, fu]), J, res
+
+
+#: The rigid contact's law parameters: none (what :func:`contact_arguments` gives for "rigid").
+_NO_LAW = np.zeros(0)
 
 
 def rigid_monodromy(
@@ -247,6 +273,7 @@ def _compliant_monodromy(system, forcing, contact: CompliantContact, state, peri
     return np.array([fx, fv, fy - fx, fu]), J, res
 
 
+@_interrupt.stretch()
 def shoot(
     system: ImpactSystem,
     forcing: Forcing,

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -87,7 +88,9 @@ class ForcedResult:
     t_end: float
     events: np.ndarray  # (n, 10): columns named by EVENT_COLUMNS
     period_max: np.ndarray  # largest abs(x) in each whole forcing period
-    energy: dict[str, float]
+    #: what :attr:`energy` is computed from, with the initial state: the engine's final row, its
+    #: ledger terms, the contact's elastic energy at the end and at the start
+    ledger_terms: tuple = field(repr=False, compare=False)
     final_state: tuple[float, float, float, float]
     initial_state: tuple[float, float, float, float]
     final_stuck: bool
@@ -101,6 +104,12 @@ class ForcedResult:
     samples: np.ndarray | None = None
     #: compliant runs: the evaluations of the equations of motion the contacts took
     contact_evaluations: int = 0
+
+    @cached_property
+    def energy(self) -> dict[str, float]:
+        """The energy balance of the run (:func:`_ledger`), formed when first read: the
+        continuation's tens of thousands of one-period runs never read it."""
+        return _ledger(self.system, self.forcing, self.initial_state, *self.ledger_terms)
 
     @property
     def impacts(self) -> np.ndarray:
@@ -249,11 +258,15 @@ def settling_periods(
     return min(most, math.ceil(-math.log(settled) / decay / forcing.period) + kept)
 
 
+#: The spacing of doubles at 1 (numpy.finfo(float).eps, read once: 3 µs a call).
+_EPS = float(np.finfo(float).eps)
+
+
 def within_walls(name: str, x: float, y: float, h: float) -> None:
     """Refuse a start of rigid impacts with the impact mass beyond a wall, abs(y − x) > d/2 = h,
     allowing the rounding y − x carries (a few units in the last place of the larger), which a
     clearance far below the motion does not dwarf."""
-    slack = h * 1e-12 + 4.0 * np.finfo(float).eps * max(abs(x), abs(y))
+    slack = h * 1e-12 + 4.0 * _EPS * max(abs(x), abs(y))
     if abs(y - x) > h + slack:
         raise ParameterError(name, f"abs(y0 − x0) must not exceed d/2 = {h:g} m")
 
@@ -292,8 +305,8 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
               max_work=None):  # fmt: skip
     """The checked run of :func:`simulate_forced` from ``state`` = (x, ẋ, y, ẏ) at t = 0 (a
     compliant run may start inside a wall), and, compliant with ``variational``, the Jacobian Ψ of
-    the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced._compliant`);
-    ``max_contacts`` in place of :data:`MAX_CONTACTS`; ``max_work`` (evaluations of the
+    the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced._compliant`; None
+    with rigid impacts, whose chain is built from the event log); ``max_contacts`` in place of :data:`MAX_CONTACTS`; ``max_work`` (evaluations of the
     contacts' equations) in place of :data:`symimpact.budgets.RHS_BUDGET`, met with
     :class:`TooMuchContactWork`."""
     _refuse_cancelling_flight(system, forcing, contact)
@@ -313,7 +326,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             f"{natural:.3g} natural periods of the primary; at most {MAX_NATURAL_PERIODS:.0e}",
         )
     samples = None
-    psi = np.eye(4)
+    psi = None
     potential = potential0 = 0.0
     work = 0
     if contact == "rigid":
@@ -378,7 +391,6 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             "fraction or shorten the run"
         )
     events = events[:n_ev].copy()
-    energy = _ledger(system, forcing, state, final, ledger, potential, potential0)
     result = ForcedResult(
         system=system,
         forcing=forcing,
@@ -386,7 +398,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
         t_end=float(final[0]),
         events=events,
         period_max=period_max[:n_periods],
-        energy=energy,
+        ledger_terms=(final, ledger, potential, potential0),
         final_state=(float(final[1]), float(final[2]), float(final[3]), float(final[4])),
         initial_state=tuple(state),
         final_stuck=bool(final[5]) if contact == "rigid" else False,
