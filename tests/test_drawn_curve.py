@@ -37,11 +37,15 @@ STEPS = 8
 def _followed(p, q, mid, forcing, periods):
     """The orbit of the branch at Ω = ``mid`` between its points ``p`` and ``q``: followed from
     p in STEPS equal steps of Ω, each Newton's method (:func:`orbit_between`) from the state
-    interpolated between the last orbit reached and q; None where a step fails."""
+    interpolated between the last orbit reached and q; None where a step fails or lands on an
+    orbit with other impacts a period than p's."""
     last = p
     for w in np.linspace(p.omega, mid, STEPS + 1)[1:]:
         o = orbit_between(last, q, w, (SYSTEM, forcing.at(w), E), periods)
-        if o is None:
+        if o is None or o.impact_events_per_period != p.impact_events_per_period:
+            # (Newton landed on another orbit: beside a period-4 branch of multipliers near
+            # -1e6 at 31.86 rad/s, the first step lands on a stable period-4 orbit with four
+            # impacts a period, not the branch's three)
             return None
         last = replace(p, value=w, omega=w, state=tuple(o.state), amplitude=o.amplitude)
     return o

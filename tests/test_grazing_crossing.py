@@ -65,9 +65,12 @@ def test_branches_go_on_through_grazings_with_the_impacts_they_name(base_curve):
                 back = np.array([x, v, y - x, u])
                 scale = np.array([p.amplitude, p.amplitude * p.omega, BASE.gap / 2,
                                   p.amplitude * p.omega])  # fmt: skip
-                # it repeats (1e-8: Newton's tolerance times the map's conditioning) with the
-                # impacts the grazing names on this side
-                assert np.max(np.abs((back - np.array(p.state)) / scale)) < 1e-8
+                # it repeats (1e-8: Newton's tolerance times the map's conditioning; a state
+                # known to the map's rounding, ~1e-15 of its scale, comes back within ten times
+                # that times the largest multiplier, 1e7 beside the grazing at 20.343 rad/s)
+                # with the impacts the grazing names on this side
+                bound = max(1e-8, 1e-14 * max(abs(m) for m in p.multipliers))
+                assert np.max(np.abs((back - np.array(p.state)) / scale)) < bound
                 assert impact_counts(res.events, -math.inf, math.inf)[1] == round(count * k)
                 if p.stable and max(abs(m) for m in p.multipliers) < 0.95:
                     st = _run(p, k, 600).steady
