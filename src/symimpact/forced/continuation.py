@@ -478,6 +478,7 @@ def continue_orbit(
     point = _point(problem, y, mono, res)
     branch.points.append(point)
     tests = _tests(t, mono)
+    tips: list[BranchPoint] = []  # a fold located within the step (:func:`_locate`)
     ds = step
     crossings = 0
     fine = False  # steps below step/16 growing from a fold at a grazing
@@ -602,9 +603,11 @@ def continue_orbit(
             if kind == "branch-point" and (tests["fold"] > 0) != (tests1["fold"] > 0):
                 continue  # a multiplier through +1 at a fold is the fold itself
             if math.isfinite(a) and math.isfinite(b) and (a > 0) != (b > 0):
-                found = _locate(problem, kind, y, t, ds, a, b)
+                found = _locate(problem, kind, y, t, ds, a, b, tips)
                 if found is not None:
                     branch.bifurcations.append(found)
+        branch.points.extend(tips)  # a fold's own orbit, between the two points it lies between
+        tips.clear()
         back = (y, t, ds)
         y, t, mono, point, before, tests = y1, t1, mono1, p1, point, tests1
         branch.points.append(point)
@@ -1009,9 +1012,13 @@ def orbits_at(
     return found
 
 
-def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
+def _locate(problem, kind, y, t, ds, a, b, tips=None) -> Bifurcation | None:
     """The bifurcation of ``kind`` between y and the step ds along t: Brent's method on the
-    step length σ, each σ corrected onto the branch."""
+    step length σ, each σ corrected onto the branch.  A fold's orbit is put in ``tips`` (a
+    list) as a point of the branch: the turn in the parameter is drawn where it is, not cut
+    across by the segment between the points on either side, and an orbit beyond the last of
+    them (the stable five-impact orbit at 29.8756 rad/s on the README's curve, between the fold
+    at 29.874 and the point at 29.879) lies on the branch's drawn line."""
     cache = {}
 
     def at(sigma):
@@ -1025,7 +1032,9 @@ def _locate(problem, kind, y, t, ds, a, b) -> Bifurcation | None:
 
     try:
         sigma = brentq(lambda s: at(s)[3] if s > 0 else a, 0.0, ds, xtol=1e-12 * ds)
-        y1, _, res1, _ = at(sigma)
+        y1, mono1, res1, _ = at(sigma)
+        if kind == "fold" and tips is not None:
+            tips.append(_point(problem, y1, mono1, res1))
         return Bifurcation(kind, problem.omega(y1), float(np.max(res1.period_max)),
                            float(y1[4] * problem.unit), _si_state(problem, y1),
                            problem.forcing.phase)  # fmt: skip
