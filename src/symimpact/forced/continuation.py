@@ -11,8 +11,10 @@ the generated flight kernels ``forced_*_d_{F0,X_b,Omega,phi}``, the impact law's
 wall's move with d, the chatter's Δ and the end of the k periods in Ω,
 :func:`.shooting.rigid_monodromy`); for a compliant contact by central differences (step 1e-6
 of the parameter, or of a tenth of its range where that is larger; ~1e-10 of the map).  Each
-step predicts along the branch's unit tangent and corrects by Newton's method with the
-pseudo-arclength condition, so the branch is followed around folds.
+step predicts along the branch's unit tangent, with the branch's curvature from the tangent's
+change over the step before (:func:`_predicted`), and corrects by Newton's method with the
+pseudo-arclength condition, so the branch is followed around folds; a located fold's orbit is a
+point of the branch.
 
 Along the branch the Floquet multipliers are watched: a real multiplier through +1 where the
 tangent's parameter component changes sign is a *fold*, through +1 without a turn a *branch point* (on
