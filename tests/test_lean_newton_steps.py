@@ -122,3 +122,25 @@ def test_a_stretch_leaves_the_results_as_they_are(python_sigint):
             inside = stroboscopic_map(SYSTEM, f, E, s, 3)
     assert np.array_equal(alone[0], inside[0]) and np.array_equal(alone[1], inside[1])
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+
+def test_a_process_forked_within_a_stretch_defers_on_its_own(python_sigint):
+    """A child forked inside a stretch neither uses the parent's stretch (its pipe and handler
+    are the parent's) nor is kept by it from opening its own."""
+    import multiprocessing
+
+    s = (0.004, -0.05, 0.003, 0.2)
+    alone = stroboscopic_map(SYSTEM, Forcing(F0=2.0, omega=34.0), E, s, 2)[0]
+    with _interrupt.stretch():
+        parent = _interrupt._stretch.pid
+        with multiprocessing.get_context("fork").Pool(1) as pool:
+            result, own = pool.apply(_forked_map, (s,))
+    assert np.array_equal(result, alone)
+    assert own != parent
+
+
+def _forked_map(s):
+    """In the child: the map within a stretch of its own, and that stretch's process."""
+    with _interrupt.stretch():
+        out = stroboscopic_map(SYSTEM, Forcing(F0=2.0, omega=34.0), E, s, 2)[0]
+        return out, _interrupt._stretch.pid

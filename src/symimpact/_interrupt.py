@@ -110,6 +110,8 @@ def call(fn: Any, *args: Any) -> Any:
     :func:`stretch` the stretch's deferral and pipe serve the call."""
     global _compiled_depth
     st = _stretch
+    if st is not None and st.pid != os.getpid():
+        st = None  # a process forked within a stretch: the stretch and its pipe are the parent's
     if st is not None and not _compiled_depth and _recorded:
         _end_stretch(st)  # came while the stretch ran Python: delivered before the run
         st = None
@@ -178,6 +180,7 @@ class _Stretch:
     def __init__(self, previous: Any, defer: bool, old_fd: int, read_end: int) -> None:
         self.previous, self.defer, self.old_fd = previous, defer, old_fd
         self.watch = np.array([read_end, 0, 0], dtype=np.int64)
+        self.pid = os.getpid()
 
 
 _stretch: _Stretch | None = None
@@ -186,7 +189,7 @@ _stretch: _Stretch | None = None
 def _end_stretch(st: _Stretch) -> None:
     """Restore what the stretch replaced, then deliver what came (:func:`_deliver`)."""
     global _stretch
-    if _stretch is not st:
+    if _stretch is not st or st.pid != os.getpid():
         return
     _stretch = None
     if st.defer:
@@ -205,10 +208,10 @@ def stretch() -> Iterator[None]:
     delivers it, by the next call once its run has returned (or before it starts, if it came
     while Python ran), or when the stretch ends; the stretch's deferral then ends.  Nested
     stretches, other threads and runs as Python (``NUMBA_DISABLE_JIT``) leave each call to its
-    own deferral."""
+    own deferral, and so does a process forked within a stretch (its calls defer on their own)."""
     global _stretch
     if (
-        _stretch is not None
+        (_stretch is not None and _stretch.pid == os.getpid())
         or _compiled_depth
         or threading.current_thread() is not threading.main_thread()
         or numba.config.DISABLE_JIT
