@@ -207,6 +207,13 @@ class _Problem:
         X_b = value if self.parameter == "X_b" else f.X_b
         return system, Forcing(F0=F0, X_b=X_b, omega=f.omega, phase=f.phase), e
 
+    def converged(self, dy: np.ndarray, A: np.ndarray) -> bool:
+        """Whether Newton's step ``dy`` on the extended system ``A`` ends the correction: below
+        TOL, or below the map's noise amplified by A's conditioning, cond·NOISE, capped at
+        STALL."""
+        step = float(np.max(np.abs(dy)))
+        return step < TOL or step < min(self.noise * np.linalg.cond(A), self.stall)
+
     def omega(self, y: np.ndarray) -> float:
         """The forcing frequency at y."""
         return float(y[4] * self.unit) if self.parameter == "omega" else self.forcing.omega
@@ -367,7 +374,7 @@ def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float 
         except np.linalg.LinAlgError:
             return GRAZE if wandered else None
         y = y + dy
-        if np.max(np.abs(dy)) < max(TOL, min(problem.noise * np.linalg.cond(A), problem.stall)):
+        if problem.converged(dy, A):
             try:
                 r, J, mono, res = problem.evaluate(y)
             except SymimpactError:
@@ -1321,9 +1328,7 @@ def _correct_within(problem: _Problem, y_pred, t, start, count: float | None = N
             if lam < 1e-3:
                 return None
         y, r, J, mono, res = y + lam * dy, r1, J1, mono1, res1
-        if lam == 1.0 and np.max(np.abs(dy)) < max(
-            TOL, min(problem.noise * np.linalg.cond(A), problem.stall)
-        ):
+        if lam == 1.0 and problem.converged(dy, A):
             return y, J, mono, res
     return None
 

@@ -306,9 +306,9 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
     """The checked run of :func:`simulate_forced` from ``state`` = (x, ẋ, y, ẏ) at t = 0 (a
     compliant run may start inside a wall), and, compliant with ``variational``, the Jacobian Ψ of
     the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced._compliant`; None
-    with rigid impacts, whose chain is built from the event log); ``max_contacts`` in place of :data:`MAX_CONTACTS`; ``max_work`` (evaluations of the
-    contacts' equations) in place of :data:`symimpact.budgets.RHS_BUDGET`, met with
-    :class:`TooMuchContactWork`."""
+    with rigid impacts, whose chain is built from the event log); ``max_contacts`` in place of
+    :data:`MAX_CONTACTS`; ``max_work`` (evaluations of the contacts' equations) in place of
+    :data:`symimpact.budgets.RHS_BUDGET`, met with :class:`TooMuchContactWork`."""
     _refuse_cancelling_flight(system, forcing, contact)
     h = system.gap / 2.0
     p = np.zeros(_rigid.N_PARAMS)
