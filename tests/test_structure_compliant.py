@@ -18,7 +18,6 @@ from symimpact.forced import Forcing, simulate_forced
 from symimpact.forced.structure_orbits import shoot_structure
 from symimpact.forced.structure_response import simulate_structure
 from symimpact.model.dampers import dampers
-from symimpact.model.stops import stop
 from symimpact.model.structure import beam_structure, structure_from_dict
 from symimpact.model.system import ImpactSystem
 
@@ -158,7 +157,3 @@ def test_compliant_dampers_bad_input_is_one_line():
         dampers(s, [base | {"contact": "linear", "k1": 1e5, "e": 0.5}])
     with pytest.raises(ParameterError, match=r"dampers\.d\.contact"):
         dampers(s, [base | {"contact": "steel"}])
-    with pytest.raises(ParameterError, match="not beside rigid stops"):
-        simulate_structure(s, dampers(s, [base | {"contact": "hertz", "k_hz": 1e8}]), "tip", 1.0,
-                           50.0, periods=1, stops=[stop(s, "s", "mid", 0.01, "+", "rigid",
-                                                        e=0.5)])  # fmt: skip

@@ -24,8 +24,12 @@ there (Step 9's test, as in the modal engine: 2w/(a(1 − e)) within its limit) 
 with :data:`CHATTER_IN_CONTACT`: a mass riding on its point during a compliant contact is not
 integrated.  A linear stop acts in a phase by its law, k₁(xₛ ∓ g) + c₁ẋₛ on its point while the
 point is past its gap (the modal engine's law, which the closed form takes between phases), its
-onsets and exits located as a damper's, its dashpot's dissipation in the ledger; a phase ends
-when no damper presses a wall, whatever the stops do.  Each output point's largest abs(x) in each forcing period is taken over the
+onsets and exits located as a damper's, its dashpot's dissipation in the ledger.  A rigid
+stop's point that meets its wall in a phase (located as an onset is) takes Newton's law there
+at once, φᵀq̇⁺ = −e·φᵀq̇⁻ through the structure's effective mass at the point (Step 15's impact
+against the ground, the modal engine's law), its loss in the ledger; a chatter of the point that
+would accumulate on the stop (the same test) ends the phase with :data:`CHATTER_IN_CONTACT`.  A
+phase ends when no damper presses a wall, whatever the stops do.  Each output point's largest abs(x) in each forcing period is taken over the
 steps' cubic Hermite interpolant (its position and velocity at both ends).
 
 Private: :mod:`symimpact.forced.structure_response` runs the alternation.
@@ -45,8 +49,8 @@ from ._rigid import P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
 #: Status beside OK (0): the step fell below 1e-14 of the forcing period (a contact too stiff
 #: for its time scale), or a phase took more than its budget of steps.
 STEP_UNDERFLOW, TOO_MANY_STEPS = 4, 3
-#: Status: a rigid damper's chatter would accumulate, and its mass ride on its point, during a
-#: compliant contact (module text).
+#: Status: a rigid damper's chatter would accumulate, and its mass ride on its point, or a rigid
+#: stop's would, holding the point, during a compliant contact (module text).
 CHATTER_IN_CONTACT = 6
 #: Steps one contact phase may take.
 MAX_PHASE_STEPS = 2_000_000
@@ -65,10 +69,10 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K):
     """(q̇, q̈, ẏ, ÿ, the ledger's rates) at time t (module text): the ledger's rates are the
     power of the modal forces (with the masses' inertia −mₖẍ_b under base motion, the ledger
     being the one seen from the supports), of the Cᵢ, of the contacts' damping and of the
-    stops' dashpots.  ``stp``: the linear stops, a row each (φ at the point, gap g, k₁, c₁,
-    walls +1, −1 or 0 for both): a point past its gap, xₛ = φᵀq beyond ±g on a wall it has,
-    is pushed back by k₁(xₛ ∓ g) + c₁ẋₛ (the modal engine's law, :func:`symimpact.forced.
-    _modal._config`)."""
+    stops' dashpots.  ``stp``: the stops, a row each (φ at the point, gap g, k₁, c₁, walls +1,
+    −1 or 0 for both, 1 for a rigid stop else 0, its e): a point past a linear stop's gap,
+    xₛ = φᵀq beyond ±g on a wall it has, is pushed back by k₁(xₛ ∓ g) + c₁ẋₛ (the modal engine's
+    law, :func:`symimpact.forced._modal._config`); a rigid stop adds no force."""
     W, phi = pm[0, P_W], pm[0, P_PHI]
     th = W * t + phi
     c, s = math.cos(th), math.sin(th)
@@ -107,6 +111,8 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K):
             power -= md[k] * (u - v_b) * a_b
     d_s = 0.0
     for r in range(stp.shape[0]):  # a linear stop pressed past its gap (its walls: column N + 3)
+        if stp[r, N + 4] != 0.0:
+            continue  # a rigid stop acts by impulses only (:func:`_stop_impact`)
         xs, vs = 0.0, 0.0
         for i in range(N):
             xs += stp[r, i] * w[i]
@@ -344,13 +350,43 @@ def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K):
 
 
 @njit(cache=True)
+def _stop_impact(events, n_ev, pm, stp, t, w, r, side, N, K):
+    """The point of rigid stop r meets its wall ``side`` at t (module text): Newton's law at the
+    point, φᵀq̇⁺ = −e·φᵀq̇⁻, through P = −(1 + e)·m_eff·φᵀq̇, m_eff = (Σφᵢ²/Mᵢ)⁻¹, q̇ᵢ += φᵢP/Mᵢ
+    (Step 15's impact at a point against the ground: no mass rides on the point in a phase),
+    its loss ½m_eff(1 − e²)(φᵀq̇)² added to the impacts' dissipation and the impact logged as
+    the modal engine logs a stop's (damper K + r).  Returns (count, log, the separation speed
+    e·(approach speed))."""
+    inv, xs, vs = 0.0, 0.0, 0.0
+    for i in range(N):
+        inv += stp[r, i] * stp[r, i] / pm[i, P_M]
+        xs += stp[r, i] * w[i]
+        vs += stp[r, i] * w[N + i]
+    vapp = side * vs  # the approach speed
+    e = stp[r, N + 5] if vapp > 0.0 else 0.0  # ≤ 0: a rounding-level meeting (the engine's rule)
+    P = -(1.0 + e) * vs / inv
+    vs1 = 0.0
+    for i in range(N):
+        w[N + i] += stp[r, i] * P / pm[i, P_M]
+        vs1 += stp[r, i] * w[N + i]
+    lost = 0.5 / inv * (1.0 - e * e) * vapp * vapp
+    w[2 * N + 2 * K + 2] += lost
+    events = _room(events, n_ev)
+    events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, K + r, side
+    events[n_ev, 3], events[n_ev, 4], events[n_ev, 5] = KIND_IMPACT, vapp, xs
+    events[n_ev, 6], events[n_ev, 8], events[n_ev, 10] = vs, vs1, lost
+    return n_ev + 1, events, e * vapp
+
+
+@njit(cache=True)
 def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
           atol, ed, chat_limit, contact0):  # fmt: skip
     """Integrate from (q, q̇, y, ẏ) at t, where damper k0's contact on wall s0 has just begun,
     until no damper presses a wall or t_end (module text); the rigid dampers' impacts on the way
     with restitution ``ed`` (their chatter's limit ``chat_limit`` [s], Step 9's test), and the
-    linear stops of ``stp`` (:func:`_rhs`), each pressed on wall ``contact0[s]`` at the start
-    (0: not), their contacts' onsets and exits on the way.  Returns (status, t, state, ledger
+    stops of ``stp`` (:func:`_rhs`), each linear one pressed on wall ``contact0[s]`` at the
+    start (0: not; a rigid one starts free), their contacts' onsets and exits and the rigid
+    ones' impacts (:func:`_stop_impact`) on the way.  Returns (status, t, state, ledger
     rises (work, C's dissipation, the contacts' dissipation and the rigid impacts' losses, the
     stops' dashpots' dissipation), events (:data:`N_PHASE_COLS` columns; a stop's as damper
     K + s) of every onset, exit and impact after k0's onset, their count, steps taken, each
@@ -382,7 +418,8 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
             pressing[k] = 1
     pressing[k0] = 1
     events = np.zeros((16 + K, N_PHASE_COLS))
-    left = np.zeros(K, dtype=np.int64)  # a rigid damper that left its wall at the step's start
+    left = np.zeros(K + S, dtype=np.int64)  # a rigid damper or stop that left its wall at the
+    # step's start
     n_ev = 0
     for k in range(K):  # another damper that reaches its wall at the same instant begins too
         if k != k0 and pressing[k]:
@@ -460,6 +497,8 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
                 continue  # no wall on that side
             g = side * xs - stp[r, N]
             if (pressing[j] and g < 0.0) or (not pressing[j] and g > 0.0):
+                if left[j] and side != sides[j]:
+                    left[j] = 0  # a rigid stop's point crossed to its other wall
                 g1[j] = g
                 sides[j] = side
                 crossed = True
@@ -470,7 +509,7 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
                     continue
                 theta = _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, g1[k], k,
                                 sides[k], n, tmp, out, kout, atol, N, K,
-                                k < K and code[k] == RIGID and left[k] == 1)  # fmt: skip
+                                left[k] == 1)  # fmt: skip
                 if which < 0 or theta < first:
                     first, which = theta, k
             _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, first, n, tmp, out, kout, atol,
@@ -479,9 +518,22 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
         t = t + first
         w[:] = out
         kk[0, :] = kout
-        for k in range(K):
-            left[k] = 0
-        if which >= K:  # a stop's contact begins or ends
+        left[:] = 0
+        if which >= K and stp[which - K, N + 4] != 0.0:  # a rigid stop's impact
+            r = which - K
+            n_ev, events, wsep = _stop_impact(events, n_ev, pm, stp, t, w, r, sides[which], N, K)
+            _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K)
+            acc = 0.0
+            for i in range(N):
+                acc += stp[r, i] * kk[0, N + i]
+            a = sides[which] * acc  # the point's acceleration toward the wall
+            e = stp[r, N + 5]
+            if a > 0.0 and e < 1.0 and (wsep == 0.0 or 2.0 * wsep / (a * (1.0 - e)) <= chat_limit):
+                status = CHATTER_IN_CONTACT
+                break
+            left[which] = 1
+            continue
+        if which >= K:  # a linear stop's contact begins or ends
             n_ev, events = _stop_ended(events, n_ev, stp, t, w, which, sides, pressing, N, K)
             continue
         if which >= 0 and code[which] == RIGID:

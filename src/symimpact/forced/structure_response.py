@@ -188,13 +188,14 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     (kinds "contact onset", "contact exit"), and :meth:`StructureResult.impacts` gives its
     onsets.  Rigid dampers beside compliant ones fly through a contact phase as free masses and
     meet their walls there by Eq. F7 at once (:mod:`symimpact.forced._structure_contact`).
-    A linear stop acts in the contact phases by its law, its onsets and exits located there.
-    Refused in one line: compliant dampers beside rigid stops, and a rigid damper's mass that
-    would ride on its point during a compliant contact (its chatter accumulating then, or its
-    mass riding when a contact begins).  ``stops``: a sequence of
-    :class:`~symimpact.model.stops.Stop`, walls fixed to the ground with a linear contact law;
-    a pressed stop adds its spring and dashpot to the structure, whose flight stays closed form
-    (:mod:`symimpact.model.stops`).  A structure with stops may carry no damper.  Refused in one
+    A linear stop acts in the contact phases by its law, its onsets and exits located there; a
+    rigid stop by Newton's law at its point there (the structure's effective mass at the point,
+    Step 15), its impacts located as onsets are.  Refused in one line: a rigid damper's mass
+    that would ride on its point, or a point held on a rigid stop, during a compliant contact
+    (a chatter accumulating then, or a mass riding or a point held when a contact begins).
+    ``stops``: a sequence of :class:`~symimpact.model.stops.Stop`, walls fixed to the ground,
+    rigid or with a linear contact law; a pressed linear stop adds its spring and dashpot to the
+    structure, whose flight stays closed form (:mod:`symimpact.model.stops`).  A structure with stops may carry no damper.  Refused in one
     line: an undamped mode driven at its own frequency (Eq. F1 cancels there, as in
     :func:`~symimpact.forced.simulate_forced`).  ``variational``: carry the state's Jacobian
     (:attr:`StructureResult.monodromy`).
@@ -274,12 +275,9 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
                                         f"{budgets.MAX_NATURAL_PERIODS:.0e}")  # fmt: skip
     law = np.array([-1 if d.rigid else _compliant.CODES[d.contact] for d in dampers],
                    dtype=np.int64)  # fmt: skip
-    if np.any(law >= 0) and any(st.contact == "rigid" for st in stops):
-        raise ParameterError("dampers", "compliant dampers act beside linear stops so far: not "
-                                        "beside rigid stops")  # fmt: skip
     status, events, n_ev, period_max, ledger, final, G = _alternation(
-        pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0,
-        u0, Pout, X_b, t_end, bool(variational),
+        pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside, sk, sc, srig, se, q0,
+        v0, y0, u0, Pout, X_b, t_end, bool(variational),
     )  # fmt: skip
     events = events[:n_ev]
     if status == _modal.SINGULAR_STUCK:
@@ -337,16 +335,16 @@ def _law_parameters(dampers: tuple[Damper, ...]) -> tuple[np.ndarray, np.ndarray
     return lq, np.array([d.chi for d in dampers])
 
 
-def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, sc, srig, se, q0,
-                 v0, y0, u0, Pout, X_b, t_end, variational):  # fmt: skip
+def _alternation(pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside, sk, sc, srig, se,
+                 q0, v0, y0, u0, Pout, X_b, t_end, variational):  # fmt: skip
     """The modal engine's closed-form flights and rigid events, alternating with the compliant
     dampers' contact phases (:mod:`symimpact.forced._structure_contact`): (status, events, their
     count, period maxima, ledger, final, G) as :func:`symimpact.forced._modal.run` returns
     them."""
     N, K = len(q0), len(y0)
     lq, chi = _law_parameters(dampers)
-    # the linear stops as the contact phases read them: φ at the point, gap, k₁, c₁, walls
-    stp = np.column_stack([Sphi.reshape(len(sg), N), sg, sk, sc, sside]).astype(float)
+    # the stops as the contact phases read them: φ at the point, gap, k₁, c₁, walls, rigid, e
+    stp = np.column_stack([Sphi.reshape(len(sg), N), sg, sk, sc, sside, srig, se]).astype(float)
     scale = float(np.min(hd)) if K else 1.0
     peak = float(np.max(np.abs(Phi))) if K else 1.0
     fastest = max(float(np.max(np.sqrt(pm[:, _rigid.P_K] / pm[:, _rigid.P_M]))), pm[0, _rigid.P_W])
@@ -383,10 +381,24 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, s
             final[1 + 2 * N + K : 1 + 2 * N + 2 * K].copy(),
         )
         walls0 = final[1 + 2 * N + 3 * K :].copy()
+        held = [j for j in range(len(sg)) if walls0[j] != 0 and srig[j]]
+        if held:
+            raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the contact of "
+                                      f"damper {dampers[k].name!r} begins while rigid stop "
+                                      f"{stops[held[0]].name!r} holds its point (its chatter "
+                                      "accumulated): a point held on a rigid stop during a "
+                                      "compliant contact is not integrated yet")  # fmt: skip
         st, t, state, rise, found, n_found, _, walls = _structure_contact.phase(
             pm, Phi, md, hd, law, lq, chi, stp, X_b, Pout, t, q, v, y, u, k, s, t_end, period_max,
             atol, ed, chat * 2.0 * math.pi / pm[0, _rigid.P_W], walls0,
         )  # fmt: skip
+        if st == _structure_contact.CHATTER_IN_CONTACT and int(found[n_found - 1][1]) >= K:
+            j = int(found[n_found - 1][1]) - K
+            raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the chatter of "
+                                      f"the point of rigid stop {stops[j].name!r} would "
+                                      f"accumulate during the contact of compliant damper "
+                                      f"{dampers[k].name!r}: a point held on a rigid stop during "
+                                      "a compliant contact is not integrated yet")  # fmt: skip
         if st == _structure_contact.CHATTER_IN_CONTACT:
             j = int(found[n_found - 1][1])
             raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the chatter of "
