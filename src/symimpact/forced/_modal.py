@@ -1871,7 +1871,7 @@ def _accumulation_row(pm, cfg, Phi, k, K, t, s, w, a, delta, xb, r_i, fp, G, gra
 
 @njit(cache=True)
 def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0,
-        Pout, xb, t0, t_end, max_events, variational, watch):  # fmt: skip
+        Pout, xb, t0, t_end, max_events, variational, stuck0, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
@@ -1966,6 +1966,19 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
         if abs(z[k]) >= hd[k] * (1.0 - 1e-9):
             smooth = False  # on its wall at the start: the map's two sides differ
     status = OK
+    for k in range(K):  # a mass riding on its point at the start (a contact phase left it so)
+        if stuck0[k] != 0:
+            stuck[k] = 1 if stuck0[k] > 0 else -1
+            side0[k] = stuck[k]
+            z[k] = stuck[k] * hd[k]
+            u[k] = _dot(Phi, k, v) + _base_v(pm0, xb, t0)
+            nstuck += 1
+    if nstuck > 0:
+        cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+        pm = cfg[7]
+        if not cfg[5]:
+            status = SINGULAR_STUCK
+            t_end = t0
     looks = 0
     while t < t_end:
         if n_ev + 2 > max_events:
@@ -2368,7 +2381,7 @@ def one_mode_run(p, state0, t_end, max_events, variational, watch):
         np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
         np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
         state0[2:3].copy(), state0[3:4].copy(), one, 0.0, 0.0, t_end, max_events, variational,
-        watch,
+        np.zeros(1), watch,
     )  # fmt: skip
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
     if final[5] != 0.0:

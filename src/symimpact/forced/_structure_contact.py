@@ -54,18 +54,21 @@ STEP_UNDERFLOW, TOO_MANY_STEPS = 4, 3
 CHATTER_IN_CONTACT = 6
 #: Steps one contact phase may take.
 MAX_PHASE_STEPS = 2_000_000
-#: The contact's event columns (as the modal engine's log): onset (3) and exit (4), and a rigid
-#: damper's impact (0).
-KIND_ONSET, KIND_EXIT, KIND_IMPACT = 3, 4, 0
+#: The contact's event kinds (as the modal engine's log): onset (3) and exit (4), a rigid
+#: damper's impact (0), its chatter's accumulation (1) and its release (2).
+KIND_ONSET, KIND_EXIT, KIND_IMPACT, KIND_ACCUMULATION, KIND_RELEASE = 3, 4, 0, 1, 2
 #: Columns of a phase's event log: (t, damper, wall, kind, δ̇, the point's x and ẋ, the mass's
 #: ẏ, the point's ẋ and the mass's ẏ after the event, the energy it took).
 N_PHASE_COLS = 11
 #: A damper's law code for rigid impacts (the others: :data:`symimpact.forced._compliant.CODES`)
 RIGID = -1
+#: The code of a rigid damper whose mass rides on its point (its chatter accumulated): the
+#: structure carries it there (module text).
+STUCK = -2
 
 
 @njit(cache=True)
-def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K):
+def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K, Ainv):
     """(q̇, q̈, ẏ, ÿ, the ledger's rates) at time t (module text): the ledger's rates are the
     power of the modal forces (with the masses' inertia −mₖẍ_b under base motion, the ledger
     being the one seen from the supports), of the Cᵢ, of the contacts' damping and of the
@@ -99,7 +102,7 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K):
         delta = side * (y - xa) - hd[k]
         out[2 * N + k] = u
         acc = 0.0
-        if delta > 0.0 and code[k] != RIGID:
+        if delta > 0.0 and code[k] >= 0:
             dd = side * (u - va)
             F, _, _, damp = _force(code[k], lq[k], chi[k], delta, dd)
             for i in range(N):
@@ -124,6 +127,27 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K):
         for i in range(N):
             out[N + i] -= stp[r, i] * F / pm[i, P_M]
         d_s += stp[r, N + 2] * vs * vs
+    riding = False
+    for k in range(K):
+        riding = riding or code[k] == STUCK
+    if riding:  # (diag(Mᵢ) + Σ mₖφₖφₖᵀ)q̈ = the forces, less the riding masses' −mₖẍ_b
+        g = np.empty(N)
+        for i in range(N):
+            g[i] = out[N + i] * pm[i, P_M]
+            for k in range(K):
+                if code[k] == STUCK:
+                    g[i] -= md[k] * Phi[k, i] * a_b
+        for i in range(N):
+            acc = 0.0
+            for j in range(N):
+                acc += Ainv[i, j] * g[j]
+            out[N + i] = acc
+        for k in range(K):
+            if code[k] == STUCK:  # the mass goes with its point
+                acc = a_b
+                for i in range(N):
+                    acc += Phi[k, i] * out[N + i]
+                out[2 * N + K + k] = acc
     out[2 * N + 2 * K] = power
     out[2 * N + 2 * K + 1] = d_c
     out[2 * N + 2 * K + 2] = d_k
@@ -131,7 +155,8 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K):
 
 
 @njit(cache=True)
-def _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, n, tmp, out, kout, atol, N, K):
+def _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, n, tmp, out, kout, atol, N, K,
+          Ainv):  # fmt: skip
     """One Dormand–Prince step of length h from w at t, kk[0] = f(t, w): the state after it in
     ``out``, f there in ``kout``; returns the error norm of the motion (q, q̇, y, ẏ against
     ``atol`` and :data:`RTOL`)."""
@@ -141,13 +166,13 @@ def _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, n, tmp, out, kou
             for j in range(st):
                 acc += _DP_A[st, j] * kk[j, i]
             tmp[i] = w[i] + h * acc
-        _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t + _DP_C[st] * h, tmp, kk[st], N, K)
+        _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t + _DP_C[st] * h, tmp, kk[st], N, K, Ainv)
     for i in range(n):
         acc = 0.0
         for j in range(6):
             acc += _DP_B[j] * kk[j, i]
         out[i] = w[i] + h * acc
-    _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t + h, out, kout, N, K)
+    _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t + h, out, kout, N, K, Ainv)
     m = 2 * N + 2 * K
     err = 0.0
     for i in range(m):
@@ -175,24 +200,43 @@ def _delta(pm, Phi, hd, stp, xb, t, w, k, side, N, K):
 
 
 @njit(cache=True)
+def _pull(pm, Phi, xb, t, f, k, side, N):
+    """side·ẍₐ of riding damper k's point at t from the rates ``f`` there: positive where its
+    wall would pull the mass (Step 15, item 5: the mass is then let go)."""
+    W = pm[0, P_W]
+    acc = -xb * W * W * math.cos(W * t + pm[0, P_PHI])
+    for i in range(N):
+        acc += Phi[k, i] * f[N + i]
+    return side * acc
+
+
+@njit(cache=True)
 def _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h_hi, g_hi, k, side, n, tmp, out,
-            kout, atol, N, K, from_wall):  # fmt: skip
+            kout, atol, N, K, from_wall, Ainv):  # fmt: skip
     """The θ in (0, h_hi] where δₖ on wall ``side`` changes sign on the step from w at t (δₖ(0)
     is of the other sign or 0), re-stepped with the shorter length (Illinois regula falsi);
     ``out``, ``kout`` hold the state there.  While no point of δₖ's starting sign is known
     (δₖ(0) = 0 at an onset just handed over, or ``from_wall``: a rigid damper that left this wall
     at the step's start, δₖ(0) its rounding) it bisects."""
-    g0 = 0.0 if from_wall else _delta(pm, Phi, hd, stp, xb, t, w, k, side, N, K)
+    held = k < K and code[k] == STUCK  # its root: where the wall would pull (:func:`_pull`)
+    if from_wall:
+        g0 = 0.0
+    elif held:
+        g0 = _pull(pm, Phi, xb, t, kk[0], k, side, N)
+    else:
+        g0 = _delta(pm, Phi, hd, stp, xb, t, w, k, side, N, K)
     lo, hi = 0.0, h_hi
     flo, fhi = g0, g_hi
     unknown = flo == 0.0
     kept = 0
     for _ in range(300):
         theta = 0.5 * (lo + hi) if unknown else secant_point(lo, hi, flo, fhi)
-        _step(
-            pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, theta, n, tmp, out, kout, atol, N, K
-        )
-        g = _delta(pm, Phi, hd, stp, xb, t + theta, out, k, side, N, K)
+        _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, theta, n, tmp, out, kout, atol,
+              N, K, Ainv)  # fmt: skip
+        if held:
+            g = _pull(pm, Phi, xb, t + theta, kout, k, side, N)
+        else:
+            g = _delta(pm, Phi, hd, stp, xb, t + theta, out, k, side, N, K)
         if unknown:
             if g != 0.0 and (g > 0.0) != (fhi > 0.0):
                 unknown = False
@@ -216,7 +260,8 @@ def _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h_hi, g_hi, k, si
             kept = 1
         if hi - lo <= 4e-16 * (t + hi):
             break
-    _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, hi, n, tmp, out, kout, atol, N, K)
+    _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, hi, n, tmp, out, kout, atol, N, K,
+          Ainv)  # fmt: skip
     return hi
 
 
@@ -316,86 +361,176 @@ def _stop_ended(events, n_ev, stp, t, w, j, sides, pressing, N, K):
 
 
 @njit(cache=True)
-def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K):
-    """Rigid damper k meets its wall ``side`` at t (module text): the impulse applied to w, the
-    mass set on its wall, the loss added to the contacts' dissipation and the impact logged.
-    Returns (count, log, the separation speed e·(approach speed))."""
-    W, phi = pm[0, P_W], pm[0, P_PHI]
-    th = W * t + phi
-    xa, va = xb * math.cos(th), -xb * W * math.sin(th)
-    inv = 1.0 / md[k]
+def mass_inverse(pm, Phi, md, code, N, K):
+    """(diag(Mᵢ) + Σ mₖφₖφₖᵀ)⁻¹ over the riding dampers (code :data:`STUCK`): the structure's
+    inverse modal mass matrix while they ride on their points (Step 15, item 5)."""
+    A = np.zeros((N, N))
+    for i in range(N):
+        A[i, i] = pm[i, P_M]
+    for k in range(K):
+        if code[k] == STUCK:
+            for i in range(N):
+                for j in range(N):
+                    A[i, j] += md[k] * Phi[k, i] * Phi[k, j]
+    return np.linalg.inv(A)
+
+
+@njit(cache=True)
+def _log_row(events, n_ev, t, k, side, kind, rate, x, xd, yd, xd1, yd1, lost):
+    """One row of the phase's log (:data:`N_PHASE_COLS`).  Returns (count, log)."""
+    events = _room(events, n_ev)
+    events[n_ev, 0], events[n_ev, 1], events[n_ev, 2], events[n_ev, 3] = t, k, side, kind
+    events[n_ev, 4], events[n_ev, 5], events[n_ev, 6], events[n_ev, 7] = rate, x, xd, yd
+    events[n_ev, 8], events[n_ev, 9], events[n_ev, 10] = xd1, yd1, lost
+    return n_ev + 1, events
+
+
+@njit(cache=True)
+def _point(pm, Phi, xb, t, w, k, N):
+    """Damper k's point: (xₐ, ẋₐ) = x_b + φₖᵀq, ẋ_b + φₖᵀq̇ at t."""
+    W, ph = pm[0, P_W], pm[0, P_PHI]
+    xa, va = xb * math.cos(W * t + ph), -xb * W * math.sin(W * t + ph)
     for i in range(N):
         xa += Phi[k, i] * w[i]
         va += Phi[k, i] * w[N + i]
-        inv += Phi[k, i] * Phi[k, i] / pm[i, P_M]
-    mu = 1.0 / inv
+    return xa, va
+
+
+@njit(cache=True)
+def _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv, phi, minv, d, e, N, K):
+    """An impulse at a point of the structure of shape ``phi`` against a body of inverse mass
+    ``minv`` (a damper's 1/mₖ, or 0: the ground) whose speed exceeds the point's by ``d``:
+    Newton's law with restitution e, P = (1 + e)·d/(minv + φᵀA⁻¹φ), q̇ += A⁻¹φP, with the
+    riding masses' A (:func:`mass_inverse`).  A riding mass whose wall would have to pull it
+    during the impulse (sⱼ·ΔẋⱼP > 0) is let go first (logged, its code back to RIGID) and the
+    impulse taken again without it, as the modal engine does; the masses still riding go with
+    their points.  Returns (P, 1/(minv + φᵀA⁻¹φ), A⁻¹, count, log); ``w``'s q̇ changed."""
+    wv = np.empty(N)
+    while True:
+        inv = minv
+        for i in range(N):
+            acc = 0.0
+            for j in range(N):
+                acc += Ainv[i, j] * phi[j]
+            wv[i] = acc
+            inv += phi[i] * acc
+        P = (1.0 + e) * d / inv
+        pulled = -1
+        for j in range(K):
+            if code[j] == STUCK:
+                dv = 0.0
+                for i in range(N):
+                    dv += Phi[j, i] * wv[i]
+                if sides[j] * dv * P > 0.0:
+                    pulled = j
+                    break
+        if pulled < 0:
+            break
+        code[pulled] = RIGID
+        Ainv = mass_inverse(pm, Phi, md, code, N, K)
+        xa, va = _point(pm, Phi, xb, t, w, pulled, N)
+        u = w[2 * N + K + pulled]
+        n_ev, events = _log_row(events, n_ev, t, pulled, sides[pulled], KIND_RELEASE, 0.0, xa,
+                                va, u, va, u, 0.0)  # fmt: skip
+    for i in range(N):
+        w[N + i] += wv[i] * P
+    for j in range(K):
+        if code[j] == STUCK:
+            w[2 * N + K + j] = _point(pm, Phi, xb, t, w, j, N)[1]
+    return P, 1.0 / inv, Ainv, n_ev, events
+
+
+@njit(cache=True)
+def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K, code, sides, Ainv):
+    """Rigid damper k meets its wall ``side`` at t (module text): the impulse applied to w
+    (:func:`_kick`, μ = (1/mₖ + φₖᵀA⁻¹φₖ)⁻¹), the mass set on its wall, the loss
+    ½μ(1 − e²)(approach speed)² added to the contacts' dissipation and the impact logged.
+    Returns (count, log, the separation speed e·(approach speed), A⁻¹)."""
+    xa, va = _point(pm, Phi, xb, t, w, k, N)
     u = w[2 * N + K + k]
     vrel = side * (u - va)  # the approach speed
     e = ed[k] if vrel > 0.0 else 0.0
-    P = (1.0 + e) * mu * (u - va)
-    va1 = -xb * W * math.sin(th)
-    for i in range(N):
-        w[N + i] += Phi[k, i] * P / pm[i, P_M]
-        va1 += Phi[k, i] * w[N + i]
+    P, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv,
+                                      Phi[k], 1.0 / md[k], u - va, e, N, K)  # fmt: skip
+    va1 = _point(pm, Phi, xb, t, w, k, N)[1]
     w[2 * N + K + k] = u - P / md[k]
     w[2 * N + k] = xa + side * hd[k]  # on its wall
     lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
     w[2 * N + 2 * K + 2] += lost
-    events = _room(events, n_ev)
-    events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, k, side
-    events[n_ev, 3], events[n_ev, 4], events[n_ev, 5] = KIND_IMPACT, vrel, xa
-    events[n_ev, 6], events[n_ev, 7], events[n_ev, 8] = va, u, va1
-    events[n_ev, 9], events[n_ev, 10] = w[2 * N + K + k], lost
-    return n_ev + 1, events, e * vrel
+    n_ev, events = _log_row(events, n_ev, t, k, side, KIND_IMPACT, vrel, xa, va, u, va1,
+                            w[2 * N + K + k], lost)  # fmt: skip
+    return n_ev, events, e * vrel, Ainv
 
 
 @njit(cache=True)
-def _stop_impact(events, n_ev, pm, stp, t, w, r, side, N, K):
+def _closure(events, n_ev, pm, Phi, md, hd, xb, t, w, k, side, N, K, code, sides, Ainv):
+    """Damper k's chatter on its wall ``side`` reaches its accumulation point at t: the mass and
+    its point close plastically (:func:`_kick` with e = 0, the loss ½μ(ẏₖ − ẋₐ)²), and the
+    mass then rides on its point (code :data:`STUCK`, Step 15, item 5, as the modal engine
+    takes it).  Returns (count, log, A⁻¹)."""
+    xa, va = _point(pm, Phi, xb, t, w, k, N)
+    u = w[2 * N + K + k]
+    _, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv,
+                                      Phi[k], 1.0 / md[k], u - va, 0.0, N, K)  # fmt: skip
+    va1 = _point(pm, Phi, xb, t, w, k, N)[1]
+    lost = 0.5 * mu * (u - va) * (u - va)
+    w[2 * N + 2 * K + 2] += lost
+    w[2 * N + K + k] = va1
+    w[2 * N + k] = xa + side * hd[k]
+    code[k] = STUCK
+    Ainv = mass_inverse(pm, Phi, md, code, N, K)
+    n_ev, events = _log_row(events, n_ev, t, k, side, KIND_ACCUMULATION, side * (u - va), xa, va,
+                            u, va1, va1, lost)  # fmt: skip
+    return n_ev, events, Ainv
+
+
+@njit(cache=True)
+def _stop_impact(events, n_ev, pm, Phi, md, stp, xb, t, w, r, side, N, K, code, sides, Ainv):
     """The point of rigid stop r meets its wall ``side`` at t (module text): Newton's law at the
-    point, φᵀq̇⁺ = −e·φᵀq̇⁻, through P = −(1 + e)·m_eff·φᵀq̇, m_eff = (Σφᵢ²/Mᵢ)⁻¹, q̇ᵢ += φᵢP/Mᵢ
-    (Step 15's impact at a point against the ground: no mass rides on the point in a phase),
-    its loss ½m_eff(1 − e²)(φᵀq̇)² added to the impacts' dissipation and the impact logged as
-    the modal engine logs a stop's (damper K + r).  Returns (count, log, the separation speed
-    e·(approach speed))."""
-    inv, xs, vs = 0.0, 0.0, 0.0
+    point, φᵀq̇⁺ = −e·φᵀq̇⁻, through P = −(1 + e)·m_eff·φᵀq̇, m_eff = (φᵀA⁻¹φ)⁻¹, q̇ += A⁻¹φP
+    (Step 15's impact at a point against the ground, :func:`_kick`), its loss
+    ½m_eff(1 − e²)(φᵀq̇)² added to the impacts' dissipation and the impact logged as the modal
+    engine logs a stop's (damper K + r).  Returns (count, log, the separation speed
+    e·(approach speed), A⁻¹)."""
+    xs, vs = 0.0, 0.0
     for i in range(N):
-        inv += stp[r, i] * stp[r, i] / pm[i, P_M]
         xs += stp[r, i] * w[i]
         vs += stp[r, i] * w[N + i]
     vapp = side * vs  # the approach speed
     e = stp[r, N + 5] if vapp > 0.0 else 0.0  # ≤ 0: a rounding-level meeting (the engine's rule)
-    P = -(1.0 + e) * vs / inv
+    _, meff, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv,
+                                        stp[r, :N], 0.0, -vs, e, N, K)  # fmt: skip
     vs1 = 0.0
     for i in range(N):
-        w[N + i] += stp[r, i] * P / pm[i, P_M]
         vs1 += stp[r, i] * w[N + i]
-    lost = 0.5 / inv * (1.0 - e * e) * vapp * vapp
+    lost = 0.5 * meff * (1.0 - e * e) * vapp * vapp
     w[2 * N + 2 * K + 2] += lost
-    events = _room(events, n_ev)
-    events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, K + r, side
-    events[n_ev, 3], events[n_ev, 4], events[n_ev, 5] = KIND_IMPACT, vapp, xs
-    events[n_ev, 6], events[n_ev, 8], events[n_ev, 10] = vs, vs1, lost
-    return n_ev + 1, events, e * vapp
+    n_ev, events = _log_row(events, n_ev, t, K + r, side, KIND_IMPACT, vapp, xs, vs, 0.0, vs1,
+                            0.0, lost)  # fmt: skip
+    return n_ev, events, e * vapp, Ainv
 
 
 @njit(cache=True)
-def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
-          atol, ed, chat_limit, contact0):  # fmt: skip
+def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
+          atol, ed, chat_limit, contact0, stuck0):  # fmt: skip
     """Integrate from (q, q̇, y, ẏ) at t, where damper k0's contact on wall s0 has just begun,
     until no damper presses a wall or t_end (module text); the rigid dampers' impacts on the way
-    with restitution ``ed`` (their chatter's limit ``chat_limit`` [s], Step 9's test), and the
-    stops of ``stp`` (:func:`_rhs`), each linear one pressed on wall ``contact0[s]`` at the
-    start (0: not; a rigid one starts free), their contacts' onsets and exits and the rigid
-    ones' impacts (:func:`_stop_impact`) on the way.  Returns (status, t, state, ledger
-    rises (work, C's dissipation, the contacts' dissipation and the rigid impacts' losses, the
-    stops' dashpots' dissipation), events (:data:`N_PHASE_COLS` columns; a stop's as damper
-    K + s) of every onset, exit and impact after k0's onset, their count, steps taken, each
-    stop's wall pressed at the end)."""
+    with restitution ``ed``, their chatter taken to its accumulation point where it would end
+    within ``chat_limit`` [s] (Step 9's test) and the mass then riding on its point until its
+    wall would pull (each riding at the start on wall ``stuck0[k]``, 0: free), and the stops of
+    ``stp`` (:func:`_rhs`), each linear one pressed on wall ``contact0[s]`` at the start (0:
+    not; a rigid one starts free), their contacts' onsets and exits and the rigid ones' impacts
+    (:func:`_stop_impact`) on the way.  Returns (status, t, state, ledger rises (work, C's
+    dissipation, the contacts' dissipation and the rigid impacts' losses, the stops' dashpots'
+    dissipation), events (:data:`N_PHASE_COLS` columns; a stop's as damper K + s) of every
+    onset, exit, impact, accumulation and release after k0's onset, their count, steps taken,
+    each stop's wall pressed at the end, each damper's wall it rides on at the end)."""
     N, K = q.shape[0], y.shape[0]
     S = stp.shape[0]
     n = 2 * N + 2 * K + 4
     T_f = 2.0 * math.pi / pm[0, P_W]
     n_periods = period_max.shape[0]
+    code = code0.copy()
     w = np.zeros(n)
     w[:N], w[N : 2 * N], w[2 * N : 2 * N + K], w[2 * N + K : 2 * N + 2 * K] = q, v, y, u
     kk = np.empty((7, n))
@@ -403,6 +538,7 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
     sides = np.zeros(K + S)
     pressing = np.zeros(K + S, dtype=np.int64)
     g1 = np.zeros(K + S)
+    t_acc = np.full(K, np.inf)  # a rigid damper's chatter's accumulation point, once decided
     for r in range(S):
         sides[K + r] = 1.0 if contact0[r] >= 0 else -1.0
         pressing[K + r] = 1 if contact0[r] != 0 else 0
@@ -412,31 +548,28 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
             xa += Phi[k, i] * q[i]
         sides[k] = 1.0 if y[k] > xa else -1.0
         g1[k] = sides[k] * (y[k] - xa) - hd[k]
+        if stuck0[k] != 0:
+            code[k] = STUCK
+            sides[k] = stuck0[k]
     sides[k0] = s0
     for k in range(K):  # pressing: past its wall, or as far as k0 on the same side
-        if code[k] != RIGID and (g1[k] > 0.0 or (g1[k] >= g1[k0] and sides[k] == s0)):
+        if code[k] >= 0 and (g1[k] > 0.0 or (g1[k] >= g1[k0] and sides[k] == s0)):
             pressing[k] = 1
     pressing[k0] = 1
+    Ainv = mass_inverse(pm, Phi, md, code, N, K)
     events = np.zeros((16 + K, N_PHASE_COLS))
     left = np.zeros(K + S, dtype=np.int64)  # a rigid damper or stop that left its wall at the
     # step's start
     n_ev = 0
     for k in range(K):  # another damper that reaches its wall at the same instant begins too
         if k != k0 and pressing[k]:
-            xa = xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
-            va = -xb * pm[0, P_W] * math.sin(pm[0, P_W] * t + pm[0, P_PHI])
-            for i in range(N):
-                xa += Phi[k, i] * q[i]
-                va += Phi[k, i] * v[i]
-            events[n_ev, 0], events[n_ev, 1], events[n_ev, 2] = t, k, sides[k]
-            events[n_ev, 3], events[n_ev, 4] = KIND_ONSET, sides[k] * (u[k] - va)
-            events[n_ev, 5], events[n_ev, 6], events[n_ev, 7] = xa, va, u[k]
-            events[n_ev, 8], events[n_ev, 9] = va, u[k]
-            n_ev += 1
+            xa, va = _point(pm, Phi, xb, t, w, k, N)
+            n_ev, events = _log_row(events, n_ev, t, k, sides[k], KIND_ONSET, sides[k] *
+                                    (u[k] - va), xa, va, u[k], va, u[k], 0.0)  # fmt: skip
     for k in range(K):  # a rigid damper on a wall at the start has just left it
         if code[k] == RIGID and g1[k] >= -1e-9 * hd[k]:
             left[k] = 1
-    _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K)
+    _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K, Ainv)
     h = T_f * 1e-4
     status = 0
     steps = 0
@@ -450,31 +583,38 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
         which = -1
         for k in range(K):
             if pressing[k] and _delta(pm, Phi, hd, stp, xb, t, w, k, sides[k], N, K) <= 0.0:
-                va = -xb * pm[0, P_W] * math.sin(pm[0, P_W] * t + pm[0, P_PHI])
-                for i in range(N):
-                    va += Phi[k, i] * w[N + i]
+                va = _point(pm, Phi, xb, t, w, k, N)[1]
                 if sides[k] * (w[2 * N + K + k] - va) < 0.0:
                     which = k
                     break
         if which >= 0:
             n_ev, events = _ended(events, n_ev, pm, Phi, xb, t, w, which, sides, pressing, N, K)
-            if pressing[:K].sum() == 0:
+            if pressing[:K].sum() == 0 and np.all(np.isinf(t_acc)):
                 break
             continue
-        h = min(h, t_end - t)
+        h = min(h, t_end - t, np.min(t_acc) - t)
         err = _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, n, tmp, out, kout, atol, N,
-                    K)  # fmt: skip
+                    K, Ainv)  # fmt: skip
         if err > 1.0:
             h *= max(0.2, 0.9 * err**-0.2)
             if h < 1e-14 * T_f:
                 status = STEP_UNDERFLOW
                 break
             continue
-        # each compliant damper's δ at the step's end, on its wall (pressing) or the nearer one
+        # each compliant damper's δ at the step's end, on its wall (pressing) or the nearer one;
+        # a riding mass's pull on its wall (:func:`_pull`)
         xa0 = xb * math.cos(pm[0, P_W] * (t + h) + pm[0, P_PHI])
         crossed = False
         for k in range(K):
             g1[k] = 0.0
+            if code[k] == STUCK:
+                g = _pull(pm, Phi, xb, t + h, kout, k, sides[k], N)
+                if g > 0.0:
+                    g1[k] = g
+                    crossed = True
+                continue
+            if not np.isinf(t_acc[k]):
+                continue  # its chatter is being taken to its accumulation point
             xa = xa0
             for i in range(N):
                 xa += Phi[k, i] * out[i]
@@ -503,26 +643,37 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
                 sides[j] = side
                 crossed = True
         first, which = h, -1
-        if crossed:  # the earliest onset or exit in the step
+        if crossed:  # the earliest onset, exit, impact or release in the step
             for k in range(K + S):
                 if g1[k] == 0.0:
                     continue
                 theta = _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, g1[k], k,
                                 sides[k], n, tmp, out, kout, atol, N, K,
-                                left[k] == 1)  # fmt: skip
+                                left[k] == 1, Ainv)  # fmt: skip
                 if which < 0 or theta < first:
                     first, which = theta, k
             _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, first, n, tmp, out, kout, atol,
-                  N, K)  # fmt: skip
+                  N, K, Ainv)  # fmt: skip
         _note(period_max, n_periods, T_f, t, first, Pout, pm, xb, w, out, N)
         t = t + first
         w[:] = out
         kk[0, :] = kout
         left[:] = 0
-        if which >= K and stp[which - K, N + 4] != 0.0:  # a rigid stop's impact
+        riding = code.copy()
+        closing = -1
+        if which < 0:
+            for k in range(K):
+                if t >= t_acc[k] - 4e-16 * t_acc[k]:
+                    closing = k
+            if closing >= 0:  # a chatter's accumulation point: the mass rides from here
+                t_acc[closing] = np.inf
+                n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, hd, xb, t, w, closing,
+                                              sides[closing], N, K, code, sides, Ainv)  # fmt: skip
+        elif which >= K and stp[which - K, N + 4] != 0.0:  # a rigid stop's impact
             r = which - K
-            n_ev, events, wsep = _stop_impact(events, n_ev, pm, stp, t, w, r, sides[which], N, K)
-            _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K)
+            n_ev, events, wsep, Ainv = _stop_impact(events, n_ev, pm, Phi, md, stp, xb, t, w, r,
+                                                    sides[which], N, K, code, sides, Ainv)  # fmt: skip
+            _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K, Ainv)
             acc = 0.0
             for i in range(N):
                 acc += stp[r, i] * kk[0, N + i]
@@ -532,27 +683,45 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
                 status = CHATTER_IN_CONTACT
                 break
             left[which] = 1
-            continue
-        if which >= K:  # a linear stop's contact begins or ends
+        elif which >= K:  # a linear stop's contact begins or ends
             n_ev, events = _stop_ended(events, n_ev, stp, t, w, which, sides, pressing, N, K)
-            continue
-        if which >= 0 and code[which] == RIGID:
-            n_ev, events, wsep = _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, which,
-                                               sides[which], N, K)  # fmt: skip
-            _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K)
+        elif code[which] == STUCK:  # the riding mass's wall would pull: it is let go
+            code[which] = RIGID
+            Ainv = mass_inverse(pm, Phi, md, code, N, K)
+            xa, va = _point(pm, Phi, xb, t, w, which, N)
+            ua = w[2 * N + K + which]
+            n_ev, events = _log_row(events, n_ev, t, which, sides[which], KIND_RELEASE, 0.0, xa,
+                                    va, ua, va, ua, 0.0)  # fmt: skip
+            left[which] = 1
+        elif code[which] == RIGID:
+            n_ev, events, wsep, Ainv = _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w,
+                                                     which, sides[which], N, K, code, sides,
+                                                     Ainv)  # fmt: skip
+            _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K, Ainv)
             acc = -xb * pm[0, P_W] ** 2 * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
             for i in range(N):
                 acc += Phi[which, i] * kk[0, N + i]
             a = -sides[which] * acc  # the point's acceleration toward the mass on its wall
             e = ed[which]
-            if a > 0.0 and e < 1.0 and (wsep == 0.0 or 2.0 * wsep / (a * (1.0 - e)) <= chat_limit):
-                status = CHATTER_IN_CONTACT
-                break
             left[which] = 1
-            continue
-        if which >= 0:
+            if a > 0.0 and e < 1.0:  # would the chatter accumulate (Step 9's test)?
+                delta = 2.0 * wsep / (a * (1.0 - e))
+                if delta <= chat_limit and t + delta < t_end:
+                    t_acc[which] = t + delta
+                    if delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
+                        t_acc[which] = np.inf
+                        left[which] = 0
+                        n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, hd, xb, t, w,
+                                                      which, sides[which], N, K, code, sides,
+                                                      Ainv)  # fmt: skip
+        else:
             n_ev, events = _ended(events, n_ev, pm, Phi, xb, t, w, which, sides, pressing, N, K)
-            if pressing[:K].sum() == 0:
+        for k in range(K):  # a mass let go by an impulse leaves its wall
+            if riding[k] == STUCK and code[k] == RIGID:
+                left[k] = 1
+        if which >= 0 or closing >= 0:
+            _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K, Ainv)
+            if pressing[:K].sum() == 0 and np.all(np.isinf(t_acc)):
                 break
             continue
         if err < 1e-300:
@@ -565,4 +734,8 @@ def phase(pm, Phi, md, hd, code, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, 
     for r in range(S):
         if pressing[K + r]:
             walls[r] = sides[K + r]
-    return status, t, state, ledger, events[:n_ev].copy(), n_ev, steps, walls
+    stuck = np.zeros(K)
+    for k in range(K):
+        if code[k] == STUCK:
+            stuck[k] = sides[k]
+    return status, t, state, ledger, events[:n_ev].copy(), n_ev, steps, walls, stuck

@@ -354,10 +354,12 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside
     t = 0.0
     q, v, y, u = q0, v0, y0, u0
     logs, total, ledger, period_max = [], 0, np.zeros(4), None
+    riding = np.zeros(K)  # the wall each rigid mass rides on as a contact phase ends, or 0
     while True:
         status, events, n_ev, pmx, led, final, G = _interrupt.call(
             _modal.run, pm, Phi, md, hd, ed, np.zeros(K), law, chat, Sphi, sg, sside, sk, sc,
             srig, se, q, v, y, u, Pout, X_b, t, t_end, budgets.MAX_EVENTS - total, variational,
+            riding,
         )  # fmt: skip
         logs.append(events[:n_ev])
         total += n_ev
@@ -368,13 +370,7 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside
         onset = events[n_ev - 1]
         k, s = int(onset[_modal.E_DAMPER]), float(onset[_rigid.E_SIDE])
         t = float(final[0])
-        riding = [j for j in range(K) if final[1 + 2 * N + 2 * K + j] != 0]
-        if riding:
-            raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the contact of "
-                                      f"damper {dampers[k].name!r} begins while rigid damper "
-                                      f"{dampers[riding[0]].name!r} rides on its point (its "
-                                      "chatter accumulated): a mass riding on its point during "
-                                      "a compliant contact is not integrated yet")  # fmt: skip
+        riding = final[1 + 2 * N + 2 * K : 1 + 2 * N + 3 * K].copy()
         q, v = final[1 : 1 + N].copy(), final[1 + N : 1 + 2 * N].copy()
         y, u = (
             final[1 + 2 * N : 1 + 2 * N + K].copy(),
@@ -388,24 +384,17 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside
                                       f"{stops[held[0]].name!r} holds its point (its chatter "
                                       "accumulated): a point held on a rigid stop during a "
                                       "compliant contact is not integrated yet")  # fmt: skip
-        st, t, state, rise, found, n_found, _, walls = _structure_contact.phase(
+        st, t, state, rise, found, n_found, _, walls, riding = _structure_contact.phase(
             pm, Phi, md, hd, law, lq, chi, stp, X_b, Pout, t, q, v, y, u, k, s, t_end, period_max,
-            atol, ed, chat * 2.0 * math.pi / pm[0, _rigid.P_W], walls0,
+            atol, ed, chat * 2.0 * math.pi / pm[0, _rigid.P_W], walls0, riding,
         )  # fmt: skip
-        if st == _structure_contact.CHATTER_IN_CONTACT and int(found[n_found - 1][1]) >= K:
+        if st == _structure_contact.CHATTER_IN_CONTACT:
             j = int(found[n_found - 1][1]) - K
             raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the chatter of "
                                       f"the point of rigid stop {stops[j].name!r} would "
                                       f"accumulate during the contact of compliant damper "
                                       f"{dampers[k].name!r}: a point held on a rigid stop during "
                                       "a compliant contact is not integrated yet")  # fmt: skip
-        if st == _structure_contact.CHATTER_IN_CONTACT:
-            j = int(found[n_found - 1][1])
-            raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the chatter of "
-                                      f"rigid damper {dampers[j].name!r} would accumulate during "
-                                      f"the contact of compliant damper {dampers[k].name!r}: a "
-                                      "mass riding on its point during a compliant contact is "
-                                      "not integrated yet")  # fmt: skip
         if st != 0:
             raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the contact of "
                                       f"damper {dampers[k].name!r} is too stiff for the "
@@ -434,7 +423,7 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside
         q, v = state[:N], state[N : 2 * N]
         y, u = state[2 * N : 2 * N + K], state[2 * N + K :]
         if t >= t_end:
-            final = np.concatenate([[t], state, np.zeros(K), walls])
+            final = np.concatenate([[t], state, riding, walls])
             status = _rigid.OK
             break
         if total + 2 > budgets.MAX_EVENTS:
