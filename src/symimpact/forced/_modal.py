@@ -1871,7 +1871,7 @@ def _accumulation_row(pm, cfg, Phi, k, K, t, s, w, a, delta, xb, r_i, fp, G, gra
 
 @njit(cache=True)
 def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0,
-        Pout, xb, t0, t_end, max_events, variational, stuck0, watch):  # fmt: skip
+        Pout, xb, t0, t_end, max_events, variational, stuck0, held0, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
@@ -1923,6 +1923,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             contact[r] = 1
         elif sside[r] <= 0 and xs < -sg[r]:
             contact[r] = -1
+        if srig[r] != 0 and held0[r] != 0:  # a rigid stop holding its point (a contact phase
+            contact[r] = 1 if held0[r] > 0 else -1  # left it so), its point on its wall
     fresh, fresh_wall = -1, 0
     pulls = np.empty(S)
     n_ev = 0
@@ -2381,7 +2383,7 @@ def one_mode_run(p, state0, t_end, max_events, variational, watch):
         np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
         np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
         state0[2:3].copy(), state0[3:4].copy(), one, 0.0, 0.0, t_end, max_events, variational,
-        np.zeros(1), watch,
+        np.zeros(1), np.zeros(0), watch,
     )  # fmt: skip
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
     if final[5] != 0.0:

@@ -18,18 +18,24 @@ Any damper's onset or exit inside a step is located by re-stepping from the step
 end.  Between phases the flight is the closed form of :mod:`symimpact.forced._modal`, which hands
 over at an onset.  A rigid damper flies through a phase as a free mass (ÿₖ = 0); where it meets
 a wall of its clearance (located as an onset is) Step 15's impact law (Eq. F7) acts at once:
-P = (1 + e)μ(ẏₖ − ẋₐ), μ = (1/mₖ + Σφᵢ²/Mᵢ)⁻¹, q̇ᵢ += φᵢP/Mᵢ, ẏₖ −= P/mₖ, its loss
-½μ(1 − e²)(ẏₖ − ẋₐ)² in the ledger, the mass set on its wall.  A chatter that would accumulate
-there (Step 9's test, as in the modal engine: 2w/(a(1 − e)) within its limit) ends the phase
-with :data:`CHATTER_IN_CONTACT`: a mass riding on its point during a compliant contact is not
-integrated.  A linear stop acts in a phase by its law, k₁(xₛ ∓ g) + c₁ẋₛ on its point while the
-point is past its gap (the modal engine's law, which the closed form takes between phases), its
-onsets and exits located as a damper's, its dashpot's dissipation in the ledger.  A rigid
-stop's point that meets its wall in a phase (located as an onset is) takes Newton's law there
-at once, φᵀq̇⁺ = −e·φᵀq̇⁻ through the structure's effective mass at the point (Step 15's impact
-against the ground, the modal engine's law), its loss in the ledger; a chatter of the point that
-would accumulate on the stop (the same test) ends the phase with :data:`CHATTER_IN_CONTACT`.  A
-phase ends when no damper presses a wall, whatever the stops do.  Each output point's largest abs(x) in each forcing period is taken over the
+P = (1 + e)μ(ẏₖ − ẋₐ), μ = (1/mₖ + φₖᵀBφₖ)⁻¹, q̇ += BφₖP, ẏₖ −= P/mₖ, its loss
+½μ(1 − e²)(ẏₖ − ẋₐ)² in the ledger, the mass set on its wall (B = diag(1/Mᵢ) while nothing
+rides or is held, :func:`mass_inverse`).  A chatter that would accumulate there (Step 9's test,
+as in the modal engine: 2w/(a(1 − e)) within its limit) is taken to its accumulation point,
+where the mass and its point close plastically, and the mass then rides on its point, the
+structure carrying it ((diag(Mᵢ) + Σmₖφₖφₖᵀ)q̈ = the forces), until sₖ·ẍₐ turns positive (its
+wall would pull; located as an onset is).  A linear stop acts in a phase by its law,
+k₁(xₛ ∓ g) + c₁ẋₛ on its point while the point is past its gap (the modal engine's law, which
+the closed form takes between phases), its onsets and exits located as a damper's, its
+dashpot's dissipation in the ledger.  A rigid stop's point that meets its wall in a phase
+takes Newton's law there at once, φᵀq̇⁺ = −e·φᵀq̇⁻ through the structure's effective mass at the
+point (φᵀBφ)⁻¹ (Step 15's impact against the ground, the modal engine's law), its loss in the
+ledger; its chatter accumulates as a damper's, and its wall then holds the point (Ψᵀq̈ = 0 over
+the held points Ψ, B the constrained inverse) until the wall's reaction would pull.  An impulse
+that would pull a riding mass or a held point lets it go first, as in the modal engine.  A phase
+ends when no damper presses a wall and no chatter is on its way to its accumulation point,
+whatever the stops do; a mass still riding and a point still held are handed to the modal
+engine so.  Each output point's largest abs(x) in each forcing period is taken over the
 steps' cubic Hermite interpolant (its position and velocity at both ends).
 
 Private: :mod:`symimpact.forced.structure_response` runs the alternation.
@@ -49,9 +55,6 @@ from ._rigid import P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
 #: Status beside OK (0): the step fell below 1e-14 of the forcing period (a contact too stiff
 #: for its time scale), or a phase took more than its budget of steps.
 STEP_UNDERFLOW, TOO_MANY_STEPS = 4, 3
-#: Status: a rigid damper's chatter would accumulate, and its mass ride on its point, or a rigid
-#: stop's would, holding the point, during a compliant contact (module text).
-CHATTER_IN_CONTACT = 6
 #: Steps one contact phase may take.
 MAX_PHASE_STEPS = 2_000_000
 #: The contact's event kinds (as the modal engine's log): onset (3) and exit (4), a rigid
@@ -130,7 +133,9 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K, Ainv):
     riding = False
     for k in range(K):
         riding = riding or code[k] == STUCK
-    if riding:  # (diag(Mᵢ) + Σ mₖφₖφₖᵀ)q̈ = the forces, less the riding masses' −mₖẍ_b
+    for r in range(stp.shape[0]):
+        riding = riding or stp[r, N + 6] != 0.0
+    if riding:  # q̈ = B·(the forces, less the riding masses' −mₖẍ_b) (:func:`mass_inverse`)
         g = np.empty(N)
         for i in range(N):
             g[i] = out[N + i] * pm[i, P_M]
@@ -142,12 +147,21 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K, Ainv):
             for j in range(N):
                 acc += Ainv[i, j] * g[j]
             out[N + i] = acc
+        for r in range(stp.shape[0]):  # a held stop's wall's reaction −R·g, after the ledger
+            lam = 0.0
+            if stp[r, N + 6] != 0.0:
+                for j in range(N):
+                    lam -= Ainv[N + r, j] * g[j]
+            out[2 * N + 2 * K + 4 + r] = lam
         for k in range(K):
             if code[k] == STUCK:  # the mass goes with its point
                 acc = a_b
                 for i in range(N):
                     acc += Phi[k, i] * out[N + i]
                 out[2 * N + K + k] = acc
+    if not riding:
+        for r in range(stp.shape[0]):
+            out[2 * N + 2 * K + 4 + r] = 0.0
     out[2 * N + 2 * K] = power
     out[2 * N + 2 * K + 1] = d_c
     out[2 * N + 2 * K + 2] = d_k
@@ -219,10 +233,13 @@ def _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h_hi, g_hi, k, si
     (δₖ(0) = 0 at an onset just handed over, or ``from_wall``: a rigid damper that left this wall
     at the step's start, δₖ(0) its rounding) it bisects."""
     held = k < K and code[k] == STUCK  # its root: where the wall would pull (:func:`_pull`)
+    holds = k >= K and stp[k - K, N + 6] != 0.0  # a held stop's: its reaction turns to a pull
     if from_wall:
         g0 = 0.0
     elif held:
         g0 = _pull(pm, Phi, xb, t, kk[0], k, side, N)
+    elif holds:
+        g0 = stp[k - K, N + 6] * kk[0, 2 * N + 2 * K + 4 + k - K]
     else:
         g0 = _delta(pm, Phi, hd, stp, xb, t, w, k, side, N, K)
     lo, hi = 0.0, h_hi
@@ -235,6 +252,8 @@ def _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h_hi, g_hi, k, si
               N, K, Ainv)  # fmt: skip
         if held:
             g = _pull(pm, Phi, xb, t + theta, kout, k, side, N)
+        elif holds:
+            g = stp[k - K, N + 6] * kout[2 * N + 2 * K + 4 + k - K]
         else:
             g = _delta(pm, Phi, hd, stp, xb, t + theta, out, k, side, N, K)
         if unknown:
@@ -361,9 +380,14 @@ def _stop_ended(events, n_ev, stp, t, w, j, sides, pressing, N, K):
 
 
 @njit(cache=True)
-def mass_inverse(pm, Phi, md, code, N, K):
-    """(diag(Mᵢ) + Σ mₖφₖφₖᵀ)⁻¹ over the riding dampers (code :data:`STUCK`): the structure's
-    inverse modal mass matrix while they ride on their points (Step 15, item 5)."""
+def mass_inverse(pm, Phi, md, code, stp, N, K):
+    """The structure's inverse mass while the riding dampers (code :data:`STUCK`) ride on their
+    points and the held rigid stops (``stp``'s column N + 6: the wall, or 0) hold theirs (Step
+    15, item 5): with A = diag(Mᵢ) + Σ mₖφₖφₖᵀ and Ψ the held points' shapes, rows 0 … N − 1 are
+    B = A⁻¹ − A⁻¹Ψ(ΨᵀA⁻¹Ψ)⁻¹ΨᵀA⁻¹, so that q̈ = B·(the forces) keeps Ψᵀq̈ = 0 and an impulse
+    φP moves q̇ by BφP; row N + r is stop r's row of R = (ΨᵀA⁻¹Ψ)⁻¹ΨᵀA⁻¹, its wall's reaction
+    to the forces g being −R·g (0 for a stop that does not hold)."""
+    S = stp.shape[0]
     A = np.zeros((N, N))
     for i in range(N):
         A[i, i] = pm[i, P_M]
@@ -372,7 +396,29 @@ def mass_inverse(pm, Phi, md, code, N, K):
             for i in range(N):
                 for j in range(N):
                     A[i, j] += md[k] * Phi[k, i] * Phi[k, j]
-    return np.linalg.inv(A)
+    Ai = np.linalg.inv(A)
+    out = np.zeros((N + S, N))
+    out[:N] = Ai
+    H = 0
+    for r in range(S):
+        if stp[r, N + 6] != 0.0:
+            H += 1
+    if H == 0:
+        return out
+    rows = np.empty(H, dtype=np.int64)
+    Psi = np.empty((N, H))
+    h = 0
+    for r in range(S):
+        if stp[r, N + 6] != 0.0:
+            rows[h] = r
+            Psi[:, h] = stp[r, :N]
+            h += 1
+    Y = Ai @ Psi
+    R = np.linalg.solve(Psi.T @ Y, Y.T)
+    out[:N] = Ai - Y @ R
+    for h in range(H):
+        out[N + rows[h]] = R[h]
+    return out
 
 
 @njit(cache=True)
@@ -397,14 +443,14 @@ def _point(pm, Phi, xb, t, w, k, N):
 
 
 @njit(cache=True)
-def _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv, phi, minv, d, e, N, K):
+def _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides, Ainv, phi, minv, d, e, N, K):
     """An impulse at a point of the structure of shape ``phi`` against a body of inverse mass
     ``minv`` (a damper's 1/mₖ, or 0: the ground) whose speed exceeds the point's by ``d``:
     Newton's law with restitution e, P = (1 + e)·d/(minv + φᵀA⁻¹φ), q̇ += A⁻¹φP, with the
-    riding masses' A (:func:`mass_inverse`).  A riding mass whose wall would have to pull it
-    during the impulse (sⱼ·ΔẋⱼP > 0) is let go first (logged, its code back to RIGID) and the
-    impulse taken again without it, as the modal engine does; the masses still riding go with
-    their points.  Returns (P, 1/(minv + φᵀA⁻¹φ), A⁻¹, count, log); ``w``'s q̇ changed."""
+    riding masses' and the held stops' B (:func:`mass_inverse`).  A riding mass or a held stop
+    whose wall would have to pull during the impulse (sⱼ·ΔẋⱼP > 0, or its reaction −R·φP
+    toward its wall) is let go first (logged) and the impulse taken again without it, as the
+    modal engine does; the masses still riding go with their points.  Returns (P, 1/(minv + φᵀA⁻¹φ), A⁻¹, count, log); ``w``'s q̇ changed."""
     wv = np.empty(N)
     while True:
         inv = minv
@@ -424,10 +470,28 @@ def _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv, phi, minv, d, 
                 if sides[j] * dv * P > 0.0:
                     pulled = j
                     break
+        for r in range(stp.shape[0]):  # a held stop's reaction −R·φP, a push only
+            if pulled < 0 and stp[r, N + 6] != 0.0:
+                lam = 0.0
+                for i in range(N):
+                    lam -= Ainv[N + r, i] * phi[i] * P
+                if stp[r, N + 6] * lam > 0.0:
+                    pulled = K + r
         if pulled < 0:
             break
+        if pulled >= K:
+            r = pulled - K
+            xs, vs = 0.0, 0.0
+            for i in range(N):
+                xs += stp[r, i] * w[i]
+                vs += stp[r, i] * w[N + i]
+            n_ev, events = _log_row(events, n_ev, t, pulled, stp[r, N + 6], KIND_RELEASE, 0.0,
+                                    xs, vs, 0.0, vs, 0.0, 0.0)  # fmt: skip
+            stp[r, N + 6] = 0.0
+            Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
+            continue
         code[pulled] = RIGID
-        Ainv = mass_inverse(pm, Phi, md, code, N, K)
+        Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
         xa, va = _point(pm, Phi, xb, t, w, pulled, N)
         u = w[2 * N + K + pulled]
         n_ev, events = _log_row(events, n_ev, t, pulled, sides[pulled], KIND_RELEASE, 0.0, xa,
@@ -441,7 +505,8 @@ def _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv, phi, minv, d, 
 
 
 @njit(cache=True)
-def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K, code, sides, Ainv):
+def _rigid_impact(events, n_ev, pm, Phi, md, stp, hd, ed, xb, t, w, k, side, N, K, code, sides,
+                  Ainv):  # fmt: skip
     """Rigid damper k meets its wall ``side`` at t (module text): the impulse applied to w
     (:func:`_kick`, μ = (1/mₖ + φₖᵀA⁻¹φₖ)⁻¹), the mass set on its wall, the loss
     ½μ(1 − e²)(approach speed)² added to the contacts' dissipation and the impact logged.
@@ -450,7 +515,7 @@ def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K, co
     u = w[2 * N + K + k]
     vrel = side * (u - va)  # the approach speed
     e = ed[k] if vrel > 0.0 else 0.0
-    P, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv,
+    P, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides, Ainv,
                                       Phi[k], 1.0 / md[k], u - va, e, N, K)  # fmt: skip
     va1 = _point(pm, Phi, xb, t, w, k, N)[1]
     w[2 * N + K + k] = u - P / md[k]
@@ -463,14 +528,14 @@ def _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w, k, side, N, K, co
 
 
 @njit(cache=True)
-def _closure(events, n_ev, pm, Phi, md, hd, xb, t, w, k, side, N, K, code, sides, Ainv):
+def _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, k, side, N, K, code, sides, Ainv):
     """Damper k's chatter on its wall ``side`` reaches its accumulation point at t: the mass and
     its point close plastically (:func:`_kick` with e = 0, the loss ½μ(ẏₖ − ẋₐ)²), and the
     mass then rides on its point (code :data:`STUCK`, Step 15, item 5, as the modal engine
     takes it).  Returns (count, log, A⁻¹)."""
     xa, va = _point(pm, Phi, xb, t, w, k, N)
     u = w[2 * N + K + k]
-    _, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv,
+    _, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides, Ainv,
                                       Phi[k], 1.0 / md[k], u - va, 0.0, N, K)  # fmt: skip
     va1 = _point(pm, Phi, xb, t, w, k, N)[1]
     lost = 0.5 * mu * (u - va) * (u - va)
@@ -478,7 +543,7 @@ def _closure(events, n_ev, pm, Phi, md, hd, xb, t, w, k, side, N, K, code, sides
     w[2 * N + K + k] = va1
     w[2 * N + k] = xa + side * hd[k]
     code[k] = STUCK
-    Ainv = mass_inverse(pm, Phi, md, code, N, K)
+    Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
     n_ev, events = _log_row(events, n_ev, t, k, side, KIND_ACCUMULATION, side * (u - va), xa, va,
                             u, va1, va1, lost)  # fmt: skip
     return n_ev, events, Ainv
@@ -498,7 +563,7 @@ def _stop_impact(events, n_ev, pm, Phi, md, stp, xb, t, w, r, side, N, K, code, 
         vs += stp[r, i] * w[N + i]
     vapp = side * vs  # the approach speed
     e = stp[r, N + 5] if vapp > 0.0 else 0.0  # ≤ 0: a rounding-level meeting (the engine's rule)
-    _, meff, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, xb, t, w, code, sides, Ainv,
+    _, meff, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides, Ainv,
                                         stp[r, :N], 0.0, -vs, e, N, K)  # fmt: skip
     vs1 = 0.0
     for i in range(N):
@@ -511,23 +576,62 @@ def _stop_impact(events, n_ev, pm, Phi, md, stp, xb, t, w, r, side, N, K, code, 
 
 
 @njit(cache=True)
-def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
+def _inside(stp, w, r, side, N):
+    """Move stop r's point, just off its wall ``side`` (an impact or a release located on the
+    wall's far side by rounding), to four units in the last place inside it, q −= cψ (ψ the
+    point's shape), so that its next meeting of the wall is a crossing, not the root just
+    located met again (the dampers' masses are set on their walls for the same reason)."""
+    xs, pp = 0.0, 0.0
+    for i in range(N):
+        xs += stp[r, i] * w[i]
+        pp += stp[r, i] * stp[r, i]
+    c = (side * stp[r, N] * (1.0 - 4e-16) - xs) / pp
+    if side * c < 0.0:
+        for i in range(N):
+            w[i] += c * stp[r, i]
+
+
+@njit(cache=True)
+def _stop_closure(events, n_ev, pm, Phi, md, stp, xb, t, w, r, side, N, K, code, sides, Ainv):
+    """The chatter of rigid stop r's point on its wall ``side`` reaches its accumulation point at
+    t: the point stops there plastically (:func:`_kick` with e = 0 against the ground, the loss
+    ½m_eff(φᵀq̇)²), and the wall then holds it (``stp``'s column N + 6) until it would pull, as
+    the modal engine holds it.  Returns (count, log, B)."""
+    xs, vs = 0.0, 0.0
+    for i in range(N):
+        xs += stp[r, i] * w[i]
+        vs += stp[r, i] * w[N + i]
+    _, meff, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides,
+                                        Ainv, stp[r, :N], 0.0, -vs, 0.0, N, K)  # fmt: skip
+    lost = 0.5 * meff * vs * vs
+    w[2 * N + 2 * K + 2] += lost
+    stp[r, N + 6] = side
+    Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
+    n_ev, events = _log_row(events, n_ev, t, K + r, side, KIND_ACCUMULATION, side * vs, xs, vs,
+                            0.0, 0.0, 0.0, lost)  # fmt: skip
+    return n_ev, events, Ainv
+
+
+@njit(cache=True)
+def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
           atol, ed, chat_limit, contact0, stuck0):  # fmt: skip
     """Integrate from (q, q̇, y, ẏ) at t, where damper k0's contact on wall s0 has just begun,
     until no damper presses a wall or t_end (module text); the rigid dampers' impacts on the way
     with restitution ``ed``, their chatter taken to its accumulation point where it would end
     within ``chat_limit`` [s] (Step 9's test) and the mass then riding on its point until its
     wall would pull (each riding at the start on wall ``stuck0[k]``, 0: free), and the stops of
-    ``stp`` (:func:`_rhs`), each linear one pressed on wall ``contact0[s]`` at the start (0:
-    not; a rigid one starts free), their contacts' onsets and exits and the rigid ones' impacts
-    (:func:`_stop_impact`) on the way.  Returns (status, t, state, ledger rises (work, C's
+    ``stp0`` (:func:`_rhs`), each pressed (linear) or held (rigid) on wall ``contact0[s]`` at
+    the start (0: not), their contacts' onsets and exits and the rigid ones' impacts
+    (:func:`_stop_impact`), their chatter's accumulation and their holding until the wall
+    would pull on the way, as the dampers'.  Returns (status, t, state, ledger rises (work, C's
     dissipation, the contacts' dissipation and the rigid impacts' losses, the stops' dashpots'
     dissipation), events (:data:`N_PHASE_COLS` columns; a stop's as damper K + s) of every
     onset, exit, impact, accumulation and release after k0's onset, their count, steps taken,
-    each stop's wall pressed at the end, each damper's wall it rides on at the end)."""
+    each stop's wall pressed or held at the end, each damper's wall it rides on at the end)."""
     N, K = q.shape[0], y.shape[0]
-    S = stp.shape[0]
-    n = 2 * N + 2 * K + 4
+    S = stp0.shape[0]
+    n = 2 * N + 2 * K + 4 + S  # the state, the ledger, the held stops' reactions (:func:`_rhs`)
+    stp = stp0.copy()
     T_f = 2.0 * math.pi / pm[0, P_W]
     n_periods = period_max.shape[0]
     code = code0.copy()
@@ -538,10 +642,13 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0,
     sides = np.zeros(K + S)
     pressing = np.zeros(K + S, dtype=np.int64)
     g1 = np.zeros(K + S)
-    t_acc = np.full(K, np.inf)  # a rigid damper's chatter's accumulation point, once decided
+    t_acc = np.full(K + S, np.inf)  # a rigid chatter's accumulation point, once decided
     for r in range(S):
         sides[K + r] = 1.0 if contact0[r] >= 0 else -1.0
-        pressing[K + r] = 1 if contact0[r] != 0 else 0
+        if stp[r, N + 4] != 0.0:
+            stp[r, N + 6] = contact0[r]  # a rigid stop holding its point
+        else:
+            pressing[K + r] = 1 if contact0[r] != 0 else 0
     for k in range(K):
         xa = xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
         for i in range(N):
@@ -556,7 +663,7 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0,
         if code[k] >= 0 and (g1[k] > 0.0 or (g1[k] >= g1[k0] and sides[k] == s0)):
             pressing[k] = 1
     pressing[k0] = 1
-    Ainv = mass_inverse(pm, Phi, md, code, N, K)
+    Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
     events = np.zeros((16 + K, N_PHASE_COLS))
     left = np.zeros(K + S, dtype=np.int64)  # a rigid damper or stop that left its wall at the
     # step's start
@@ -629,6 +736,14 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0,
         for r in range(S):  # each stop's point: past its gap (pressed) or back inside it
             j = K + r
             g1[j] = 0.0
+            if stp[r, N + 6] != 0.0:  # held: does its wall's reaction turn to a pull?
+                g = stp[r, N + 6] * kout[2 * N + 2 * K + 4 + r]
+                if g > 0.0:
+                    g1[j] = g
+                    crossed = True
+                continue
+            if not np.isinf(t_acc[j]):
+                continue  # its chatter is being taken to its accumulation point
             xs = 0.0
             for i in range(N):
                 xs += stp[r, i] * out[i]
@@ -660,15 +775,33 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0,
         kk[0, :] = kout
         left[:] = 0
         riding = code.copy()
+        holding = stp[:, N + 6].copy()
         closing = -1
         if which < 0:
-            for k in range(K):
+            for k in range(K + S):
                 if t >= t_acc[k] - 4e-16 * t_acc[k]:
                     closing = k
-            if closing >= 0:  # a chatter's accumulation point: the mass rides from here
+            if closing >= K:  # a stop's chatter's accumulation point: the wall holds from here
                 t_acc[closing] = np.inf
-                n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, hd, xb, t, w, closing,
+                n_ev, events, Ainv = _stop_closure(events, n_ev, pm, Phi, md, stp, xb, t, w,
+                                                   closing - K, sides[closing], N, K, code, sides,
+                                                   Ainv)  # fmt: skip
+            elif closing >= 0:  # a chatter's accumulation point: the mass rides from here
+                t_acc[closing] = np.inf
+                n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, closing,
                                               sides[closing], N, K, code, sides, Ainv)  # fmt: skip
+        elif which >= K and stp[which - K, N + 6] != 0.0:  # a held stop's wall would pull
+            r = which - K
+            xs, vs = 0.0, 0.0
+            for i in range(N):
+                xs += stp[r, i] * w[i]
+                vs += stp[r, i] * w[N + i]
+            n_ev, events = _log_row(events, n_ev, t, which, stp[r, N + 6], KIND_RELEASE, 0.0, xs,
+                                    vs, 0.0, vs, 0.0, 0.0)  # fmt: skip
+            stp[r, N + 6] = 0.0
+            Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
+            left[which] = 1
+            _inside(stp, w, r, sides[which], N)
         elif which >= K and stp[which - K, N + 4] != 0.0:  # a rigid stop's impact
             r = which - K
             n_ev, events, wsep, Ainv = _stop_impact(events, n_ev, pm, Phi, md, stp, xb, t, w, r,
@@ -679,23 +812,32 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0,
                 acc += stp[r, i] * kk[0, N + i]
             a = sides[which] * acc  # the point's acceleration toward the wall
             e = stp[r, N + 5]
-            if a > 0.0 and e < 1.0 and (wsep == 0.0 or 2.0 * wsep / (a * (1.0 - e)) <= chat_limit):
-                status = CHATTER_IN_CONTACT
-                break
             left[which] = 1
+            _inside(stp, w, r, sides[which], N)
+            if a > 0.0 and e < 1.0:  # would the chatter accumulate (Step 9's test)?
+                delta = 2.0 * wsep / (a * (1.0 - e))
+                if delta <= chat_limit and t + delta < t_end:
+                    t_acc[which] = t + delta
+                    if delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
+                        t_acc[which] = np.inf
+                        left[which] = 0
+                        n_ev, events, Ainv = _stop_closure(events, n_ev, pm, Phi, md, stp, xb, t,
+                                                           w, r, sides[which], N, K, code, sides,
+                                                           Ainv)  # fmt: skip
         elif which >= K:  # a linear stop's contact begins or ends
             n_ev, events = _stop_ended(events, n_ev, stp, t, w, which, sides, pressing, N, K)
         elif code[which] == STUCK:  # the riding mass's wall would pull: it is let go
             code[which] = RIGID
-            Ainv = mass_inverse(pm, Phi, md, code, N, K)
+            Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
             xa, va = _point(pm, Phi, xb, t, w, which, N)
+            w[2 * N + which] = xa + sides[which] * hd[which]  # on its wall
             ua = w[2 * N + K + which]
             n_ev, events = _log_row(events, n_ev, t, which, sides[which], KIND_RELEASE, 0.0, xa,
                                     va, ua, va, ua, 0.0)  # fmt: skip
             left[which] = 1
         elif code[which] == RIGID:
-            n_ev, events, wsep, Ainv = _rigid_impact(events, n_ev, pm, Phi, md, hd, ed, xb, t, w,
-                                                     which, sides[which], N, K, code, sides,
+            n_ev, events, wsep, Ainv = _rigid_impact(events, n_ev, pm, Phi, md, stp, hd, ed, xb, t,
+                                                     w, which, sides[which], N, K, code, sides,
                                                      Ainv)  # fmt: skip
             _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K, Ainv)
             acc = -xb * pm[0, P_W] ** 2 * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
@@ -711,7 +853,7 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0,
                     if delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
                         t_acc[which] = np.inf
                         left[which] = 0
-                        n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, hd, xb, t, w,
+                        n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w,
                                                       which, sides[which], N, K, code, sides,
                                                       Ainv)  # fmt: skip
         else:
@@ -719,6 +861,10 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0,
         for k in range(K):  # a mass let go by an impulse leaves its wall
             if riding[k] == STUCK and code[k] == RIGID:
                 left[k] = 1
+        for r in range(S):  # and so does a point let go by its stop
+            if holding[r] != 0.0 and stp[r, N + 6] == 0.0:
+                left[K + r] = 1
+                _inside(stp, w, r, holding[r], N)
         if which >= 0 or closing >= 0:
             _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K, Ainv)
             if pressing[:K].sum() == 0 and np.all(np.isinf(t_acc)):
@@ -729,11 +875,12 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp, xb, Pout, t, q, v, y, u, k0, s0,
         else:
             h *= min(5.0, max(0.2, 0.9 * err**-0.2))
     state = w[: 2 * N + 2 * K].copy()
-    ledger = w[2 * N + 2 * K :].copy()
+    ledger = w[2 * N + 2 * K : 2 * N + 2 * K + 4].copy()
     walls = np.zeros(S)
     for r in range(S):
         if pressing[K + r]:
             walls[r] = sides[K + r]
+        walls[r] += stp[r, N + 6]
     stuck = np.zeros(K)
     for k in range(K):
         if code[k] == STUCK:

@@ -343,8 +343,10 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside
     them."""
     N, K = len(q0), len(y0)
     lq, chi = _law_parameters(dampers)
-    # the stops as the contact phases read them: φ at the point, gap, k₁, c₁, walls, rigid, e
-    stp = np.column_stack([Sphi.reshape(len(sg), N), sg, sk, sc, sside, srig, se]).astype(float)
+    # the stops as the contact phases read them: φ at the point, gap, k₁, c₁, walls, rigid, e,
+    # the wall a rigid one holds its point on (set in a phase)
+    stp = np.column_stack([Sphi.reshape(len(sg), N), sg, sk, sc, sside, srig, se,
+                           np.zeros(len(sg))]).astype(float)  # fmt: skip
     scale = float(np.min(hd)) if K else 1.0
     peak = float(np.max(np.abs(Phi))) if K else 1.0
     fastest = max(float(np.max(np.sqrt(pm[:, _rigid.P_K] / pm[:, _rigid.P_M]))), pm[0, _rigid.P_W])
@@ -354,12 +356,14 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside
     t = 0.0
     q, v, y, u = q0, v0, y0, u0
     logs, total, ledger, period_max = [], 0, np.zeros(4), None
-    riding = np.zeros(K)  # the wall each rigid mass rides on as a contact phase ends, or 0
+    # the wall each rigid mass rides on, and each rigid stop holds its point on, as a contact
+    # phase ends (or 0)
+    riding, held = np.zeros(K), np.zeros(len(sg))
     while True:
         status, events, n_ev, pmx, led, final, G = _interrupt.call(
             _modal.run, pm, Phi, md, hd, ed, np.zeros(K), law, chat, Sphi, sg, sside, sk, sc,
             srig, se, q, v, y, u, Pout, X_b, t, t_end, budgets.MAX_EVENTS - total, variational,
-            riding,
+            riding, held,
         )  # fmt: skip
         logs.append(events[:n_ev])
         total += n_ev
@@ -377,29 +381,16 @@ def _alternation(pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside
             final[1 + 2 * N + K : 1 + 2 * N + 2 * K].copy(),
         )
         walls0 = final[1 + 2 * N + 3 * K :].copy()
-        held = [j for j in range(len(sg)) if walls0[j] != 0 and srig[j]]
-        if held:
-            raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the contact of "
-                                      f"damper {dampers[k].name!r} begins while rigid stop "
-                                      f"{stops[held[0]].name!r} holds its point (its chatter "
-                                      "accumulated): a point held on a rigid stop during a "
-                                      "compliant contact is not integrated yet")  # fmt: skip
         st, t, state, rise, found, n_found, _, walls, riding = _structure_contact.phase(
             pm, Phi, md, hd, law, lq, chi, stp, X_b, Pout, t, q, v, y, u, k, s, t_end, period_max,
             atol, ed, chat * 2.0 * math.pi / pm[0, _rigid.P_W], walls0, riding,
         )  # fmt: skip
-        if st == _structure_contact.CHATTER_IN_CONTACT:
-            j = int(found[n_found - 1][1]) - K
-            raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the chatter of "
-                                      f"the point of rigid stop {stops[j].name!r} would "
-                                      f"accumulate during the contact of compliant damper "
-                                      f"{dampers[k].name!r}: a point held on a rigid stop during "
-                                      "a compliant contact is not integrated yet")  # fmt: skip
         if st != 0:
             raise MethodNotApplicable("simulate_structure", f"at t = {t:.6g} s the contact of "
                                       f"damper {dampers[k].name!r} is too stiff for the "
                                       "integrator's steps (its time scale is below 1e-14 of "
                                       "the period, or it takes 2e6 steps)")  # fmt: skip
+        held = np.where(srig != 0, walls, 0.0)
         ledger += rise
         rows = np.zeros((n_found, _modal.N_MODAL_EVENT_COLS))
         for j, (te, kd, side, kind, rate, xa, va, ua, va1, ua1, lost) in enumerate(found):
