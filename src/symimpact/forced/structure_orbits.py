@@ -94,12 +94,16 @@ class StructureOrbit:
         """Each damper's impacts and each stop's contacts in the orbit's periods with a chatter
         sequence (impacts on one wall that its accumulation point ends) counted once: unlike
         :attr:`impacts`, independent of how many impacts of a sequence are resolved before the
-        jump to its limit (:func:`~symimpact.forced.simulation.impact_counts`)."""
+        jump to its limit (:func:`~symimpact.forced.simulation.impact_counts`).  A compliant
+        damper's or linear stop's: its contacts, as :attr:`impacts` counts them."""
         run = self.run
         out = {}
         for row, name in enumerate([d.name for d in run.dampers] + [s.name for s in run.stops]):
             if row >= len(run.dampers) and run.stops[row - len(run.dampers)].contact != "rigid":
                 out[name] = len(run.contacts(name))
+                continue
+            if row < len(run.dampers) and not run.dampers[row].rigid:
+                out[name] = len(run.impacts(name))  # its onsets; an exit ends no impact
                 continue
             mine = run.events[run.events[:, _modal.E_DAMPER] == row]
             out[name] = impact_counts(mine, -math.inf, math.inf)[1]
