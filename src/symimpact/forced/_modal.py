@@ -1034,9 +1034,10 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
     when none does, (τ so far, −2, 0) when a signal is seen on ``watch``.  The search is the
     impact search's (a grid every bound A ≥ abs(ẍₛ) certifies, halved where it cannot, Illinois
     regula falsi on the crossing); stop ``fresh``, which switched at t0 with the point's speed r,
-    cannot switch again before 2·abs(r)/A (its penetration, or its gap, grows as rτ − Aτ²/2),
-    nor, when it just left its wall ``fresh_wall`` (a rigid stop's rebound or release), while its
-    point's acceleration is certified to point away (:func:`_held_off`).  A held rigid stop does
+    cannot switch again on the same wall before 2·abs(r)/A (its penetration, or its gap, grows
+    as rτ − Aτ²/2), nor, when it just left its wall ``fresh_wall`` (a rigid stop's rebound or
+    release), while its point's acceleration is certified to point away (:func:`_held_off`);
+    a two-sided stop's other wall is watched meanwhile.  A held rigid stop does
     not switch here (:func:`_stop_release`)."""
     S = Sphi.shape[0]
     hmax = 2.0 * math.pi / cfg[9] / 16.0
@@ -1073,7 +1074,8 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
         clear = True
         for s in range(S):
             fb[s] = _dot(Sphi, s, q)
-            if tb <= hold[s]:
+            held_off = tb <= hold[s]
+            if held_off and contact[s] != 0:
                 continue
             slack = A[s] * H * H / 8.0
             top = max(fa[s], fb[s]) + slack
@@ -1082,8 +1084,11 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
                 stays = low > sg[s]
             elif contact[s] == -1:
                 stays = top < -sg[s]
-            else:
-                stays = (sside[s] < 0 or top < sg[s]) and (sside[s] > 0 or low > -sg[s])
+            else:  # held off, only from the wall it has just left: the other is watched
+                near = _dot(Sphi, s, q0) > 0.0
+                stays = (sside[s] < 0 or top < sg[s] or (held_off and near)) and (
+                    sside[s] > 0 or low > -sg[s] or (held_off and not near)
+                )
             if not stays:
                 clear = False
         if clear:
@@ -1097,17 +1102,21 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
             continue
         first, which, wall = tb, -1, 0
         for s in range(S):
-            if tb <= hold[s]:
+            held_off = tb <= hold[s]
+            if held_off and contact[s] != 0:
                 continue
+            near = _dot(Sphi, s, q0) > 0.0  # the wall a held-off point has just left
             # the crossing as the impact search's: z = −x reaching the level h on the side d
             d, h, to = 0.0, 0.0, 0
             if contact[s] == 1 and fb[s] <= sg[s]:
                 d, h, to = 1.0, -sg[s], 0
             elif contact[s] == -1 and fb[s] >= -sg[s]:
                 d, h, to = -1.0, -sg[s], 0
-            elif contact[s] == 0 and sside[s] >= 0 and fb[s] >= sg[s]:
+            elif (contact[s] == 0 and sside[s] >= 0 and fb[s] >= sg[s]
+                  and not (held_off and near)):  # fmt: skip
                 d, h, to = -1.0, sg[s], 1
-            elif contact[s] == 0 and sside[s] <= 0 and fb[s] <= -sg[s]:
+            elif (contact[s] == 0 and sside[s] <= 0 and fb[s] <= -sg[s]
+                  and not (held_off and not near)):  # fmt: skip
                 d, h, to = 1.0, sg[s], -1
             if d == 0.0:
                 continue
