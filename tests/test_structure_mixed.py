@@ -33,6 +33,30 @@ SOFT = {"name": "d", "at": "tip", "m": 0.05, "gap": "10 mm", "contact": "hertz",
         "c1": 5.0}  # fmt: skip
 
 
+def _modal(structure, F0, force_at, *bodies):
+    """The modal equations' data, written out for the references: each mode's Mᵢ, Kᵢ = ωᵢ²Mᵢ,
+    Cᵢ = 2ζᵢωᵢMᵢ, the modal force amplitudes F₀φᵢ(force_at), and the shapes at each damper's or
+    stop's point."""
+    modes = structure.modes
+    Mi = np.array([md.mass for md in modes])
+    Ki = np.array([md.omega**2 * md.mass for md in modes])
+    Ci = np.array([2 * md.zeta * md.omega * md.mass for md in modes])
+    fi = F0 * np.array([md.shape[force_at] for md in modes])
+    return (Mi, Ki, Ci, fi, *[np.array([md.shape[b.at] for md in modes]) for b in bodies])
+
+
+def _law(d, y, u, x, xd):
+    """A compliant damper's law written out: the wall s its mass is nearer (at y, ẏ = u; its point
+    at x, ẋ) and the force it presses with, k₁δ + c₁δ̇ (linear) or k_hz·δ^1.5 + c₁δ̇ (Hertz),
+    δ = s(y − x) − d/2 (0 off its wall)."""
+    side = 1.0 if y > x else -1.0
+    delta = side * (y - x) - d.gap / 2
+    if delta <= 0:
+        return side, 0.0
+    spring = d.k1 * delta if d.contact == "linear" else d.k_hz * delta**1.5
+    return side, spring + d.c1 * side * (u - xd)
+
+
 def _structure():
     return beam_structure(**BEAM, points={"tip": 1.0, "mid": 0.5}, modes=3, zeta=0.01)
 
@@ -42,27 +66,17 @@ def _reference(structure, ds, F0, omega, t_end):
     onsets and exits located as events; damper 1 rigid, each meeting of its walls a terminal
     event where Eq. F7's impulse is applied and the integration restarts.  Returns the
     compliant events' times and the rigid impacts' times."""
-    modes = structure.modes
-    N = len(modes)
-    Mi = np.array([md.mass for md in modes])
-    Ki = np.array([md.omega**2 * md.mass for md in modes])
-    Ci = np.array([2 * md.zeta * md.omega * md.mass for md in modes])
+    N = len(structure.modes)
     d, r = ds
-    phi_d = np.array([md.shape[d.at] for md in modes])
-    phi_r = np.array([md.shape[r.at] for md in modes])
-    fi = F0 * np.array([md.shape["tip"] for md in modes])
+    Mi, Ki, Ci, fi, phi_d, phi_r = _modal(structure, F0, "tip", d, r)
     hd, hr = d.gap / 2, r.gap / 2
     mu = 1.0 / (1.0 / r.m + float(np.sum(phi_r**2 / Mi)))
 
     def rhs(t, s):
         q, v = s[:N], s[N : 2 * N]
-        y, u = s[2 * N], s[2 * N + 2]
-        x, xd = phi_d @ q, phi_d @ v
-        side = 1.0 if y > x else -1.0
-        delta = side * (y - x) - hd
-        F = d.k_hz * delta**1.5 + d.c1 * side * (u - xd) if delta > 0 else 0.0
+        side, F = _law(d, s[2 * N], s[2 * N + 2], phi_d @ q, phi_d @ v)
         a = (fi * math.cos(omega * t) - Ci * v - Ki * q + phi_d * side * F) / Mi
-        return np.concatenate([v, a, [u, s[2 * N + 3], -side * F / d.m, 0.0]])
+        return np.concatenate([v, a, [s[2 * N + 2], s[2 * N + 3], -side * F / d.m, 0.0]])
 
     def contact(t, s):
         return abs(s[2 * N] - phi_d @ s[:N]) - hd
@@ -148,25 +162,15 @@ def _riding_reference(structure, ds, F0, omega, t_end):
     = the forces with the Hertz force, until s·ẍₐ turns positive (a terminal event: the wall
     would pull).  Returns the Hertz damper's onsets and exits, and the rigid damper's impacts,
     accumulations and releases, each with whether the Hertz contact was on."""
-    modes = structure.modes
-    N = len(modes)
-    Mi = np.array([md.mass for md in modes])
-    Ki = np.array([md.omega**2 * md.mass for md in modes])
-    Ci = np.array([2 * md.zeta * md.omega * md.mass for md in modes])
+    N = len(structure.modes)
     d, r = ds
-    phi_d = np.array([md.shape[d.at] for md in modes])
-    phi_r = np.array([md.shape[r.at] for md in modes])
-    fi = F0 * np.array([md.shape["tip"] for md in modes])
+    Mi, Ki, Ci, fi, phi_d, phi_r = _modal(structure, F0, "tip", d, r)
     hd, hr = d.gap / 2, r.gap / 2
     Ms = np.diag(Mi) + r.m * np.outer(phi_r, phi_r)
 
     def forces(t, s):
         q, v = s[:N], s[N : 2 * N]
-        y, u = s[2 * N], s[2 * N + 2]
-        x, xd = phi_d @ q, phi_d @ v
-        side = 1.0 if y > x else -1.0
-        delta = side * (y - x) - hd
-        F = d.k_hz * delta**1.5 + d.c1 * side * (u - xd) if delta > 0 else 0.0
+        side, F = _law(d, s[2 * N], s[2 * N + 2], phi_d @ q, phi_d @ v)
         return fi * math.cos(omega * t) - Ci * v - Ki * q + phi_d * side * F, -side * F / d.m
 
     def free(t, s):
@@ -285,25 +289,16 @@ def _chain_reference(structure, d, st, F0, omega, t_end):
     """DOP853 (rtol 1e-13) on the chain's modal equations: the compliant damper's linear law and
     the stop's spring and dashpot (both walls) in the right side, every contact's onset and exit
     located as an event."""
-    modes = structure.modes
-    Mi = np.array([md.mass for md in modes])
-    Ki = np.array([md.omega**2 * md.mass for md in modes])
-    Ci = np.array([2 * md.zeta * md.omega * md.mass for md in modes])
-    phi_d = np.array([md.shape[d.at] for md in modes])
-    phi_s = np.array([md.shape[st.at] for md in modes])
-    fi = F0 * np.array([md.shape["1"] for md in modes])
-    h, N = d.gap / 2, len(modes)
+    Mi, Ki, Ci, fi, phi_d, phi_s = _modal(structure, F0, "1", d, st)
+    h, N = d.gap / 2, len(structure.modes)
 
     def rhs(t, s):
-        q, v, y, u = s[:N], s[N : 2 * N], s[2 * N], s[2 * N + 1]
-        x, xd = phi_d @ q, phi_d @ v
-        side = 1.0 if y > x else -1.0
-        delta = side * (y - x) - h
-        F = d.k1 * delta + d.c1 * side * (u - xd) if delta > 0 else 0.0
+        q, v = s[:N], s[N : 2 * N]
+        side, F = _law(d, s[2 * N], s[2 * N + 1], phi_d @ q, phi_d @ v)
         xs, vs = phi_s @ q, phi_s @ v
         Fs = st.k1 * (xs - math.copysign(st.gap, xs)) + st.c1 * vs if abs(xs) > st.gap else 0.0
         a = (fi * math.cos(omega * t) - Ci * v - Ki * q + phi_d * side * F - phi_s * Fs) / Mi
-        return np.concatenate([v, a, [u, -side * F / d.m]])
+        return np.concatenate([v, a, [s[2 * N + 1], -side * F / d.m]])
 
     def damper_wall(t, s):
         return abs(s[2 * N] - phi_d @ s[:N]) - h
@@ -351,24 +346,15 @@ def _chain_rigid_stop_reference(structure, d, st, F0, omega, t_end):
     walls a terminal event where Newton's law at the point, φᵀq̇⁺ = −e·φᵀq̇⁻, is applied by the
     impulse through the point's effective mass (Σφᵢ²/Mᵢ)⁻¹ and the integration restarts.
     Returns the damper's events' times, the stop's impacts' times and the impacts' losses."""
-    modes = structure.modes
-    Mi = np.array([md.mass for md in modes])
-    Ki = np.array([md.omega**2 * md.mass for md in modes])
-    Ci = np.array([2 * md.zeta * md.omega * md.mass for md in modes])
-    phi_d = np.array([md.shape[d.at] for md in modes])
-    phi_s = np.array([md.shape[st.at] for md in modes])
-    fi = F0 * np.array([md.shape["1"] for md in modes])
-    h, N = d.gap / 2, len(modes)
+    Mi, Ki, Ci, fi, phi_d, phi_s = _modal(structure, F0, "1", d, st)
+    h, N = d.gap / 2, len(structure.modes)
     m_eff = 1.0 / float(np.sum(phi_s**2 / Mi))
 
     def rhs(t, s):
-        q, v, y, u = s[:N], s[N : 2 * N], s[2 * N], s[2 * N + 1]
-        x, xd = phi_d @ q, phi_d @ v
-        side = 1.0 if y > x else -1.0
-        delta = side * (y - x) - h
-        F = d.k1 * delta + d.c1 * side * (u - xd) if delta > 0 else 0.0
+        q, v = s[:N], s[N : 2 * N]
+        side, F = _law(d, s[2 * N], s[2 * N + 1], phi_d @ q, phi_d @ v)
         a = (fi * math.cos(omega * t) - Ci * v - Ki * q + phi_d * side * F) / Mi
-        return np.concatenate([v, a, [u, -side * F / d.m]])
+        return np.concatenate([v, a, [s[2 * N + 1], -side * F / d.m]])
 
     def damper_wall(t, s):
         return abs(s[2 * N] - phi_d @ s[:N]) - h
@@ -436,21 +422,12 @@ def _held_reference(structure, d, st, F0, omega, t_end):
     wall holds it: q̈ = M⁻¹(g + φλ) with φᵀq̈ = 0, λ = −φᵀM⁻¹g/(φᵀM⁻¹φ), until s·λ turns
     positive (a terminal event: the wall would pull).  Returns the damper's onsets and exits,
     and the stop's impacts and releases, each with whether the damper's contact was on."""
-    modes = structure.modes
-    Mi = np.array([md.mass for md in modes])
-    Ki = np.array([md.omega**2 * md.mass for md in modes])
-    Ci = np.array([2 * md.zeta * md.omega * md.mass for md in modes])
-    phi_d = np.array([md.shape[d.at] for md in modes])
-    phi_s = np.array([md.shape[st.at] for md in modes])
-    fi = F0 * np.array([md.shape["1"] for md in modes])
-    h, N = d.gap / 2, len(modes)
+    Mi, Ki, Ci, fi, phi_d, phi_s = _modal(structure, F0, "1", d, st)
+    h, N = d.gap / 2, len(structure.modes)
 
     def forces(t, s):
-        q, v, y, u = s[:N], s[N : 2 * N], s[2 * N], s[2 * N + 1]
-        x, xd = phi_d @ q, phi_d @ v
-        side = 1.0 if y > x else -1.0
-        delta = side * (y - x) - h
-        F = d.k1 * delta + d.c1 * side * (u - xd) if delta > 0 else 0.0
+        q, v = s[:N], s[N : 2 * N]
+        side, F = _law(d, s[2 * N], s[2 * N + 1], phi_d @ q, phi_d @ v)
         return fi * math.cos(omega * t) - Ci * v - Ki * q + phi_d * side * F, -side * F / d.m
 
     def reaction(t, s):

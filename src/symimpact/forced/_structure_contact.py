@@ -576,6 +576,19 @@ def _stop_impact(events, n_ev, pm, Phi, md, stp, xb, t, w, r, side, N, K, code, 
 
 
 @njit(cache=True)
+def _accumulation(a, e, wsep, chat_limit, t, t_end):
+    """Step 9's test after an impact with restitution e that leaves the point (or the mass) at
+    the separation speed ``wsep``, the wall accelerating toward it at a: the time 2·wsep/(a(1 −
+    e)) in which its rebounds accumulate, when that is within ``chat_limit`` and ends before
+    t_end (0 for a plastic impact), else −1 (no accumulation is taken)."""
+    if a > 0.0 and e < 1.0:
+        delta = 2.0 * wsep / (a * (1.0 - e))
+        if delta <= chat_limit and t + delta < t_end:
+            return delta
+    return -1.0
+
+
+@njit(cache=True)
 def _inside(stp, w, r, side, N):
     """Move stop r's point, just off its wall ``side`` (an impact or a release located on the
     wall's far side by rounding), to four units in the last place inside it, q −= cψ (ψ the
@@ -814,16 +827,13 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
             e = stp[r, N + 5]
             left[which] = 1
             _inside(stp, w, r, sides[which], N)
-            if a > 0.0 and e < 1.0:  # would the chatter accumulate (Step 9's test)?
-                delta = 2.0 * wsep / (a * (1.0 - e))
-                if delta <= chat_limit and t + delta < t_end:
-                    t_acc[which] = t + delta
-                    if delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
-                        t_acc[which] = np.inf
-                        left[which] = 0
-                        n_ev, events, Ainv = _stop_closure(events, n_ev, pm, Phi, md, stp, xb, t,
-                                                           w, r, sides[which], N, K, code, sides,
-                                                           Ainv)  # fmt: skip
+            delta = _accumulation(a, e, wsep, chat_limit, t, t_end)
+            if delta > 0.0:
+                t_acc[which] = t + delta
+            elif delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
+                left[which] = 0
+                n_ev, events, Ainv = _stop_closure(events, n_ev, pm, Phi, md, stp, xb, t, w, r,
+                                                   sides[which], N, K, code, sides, Ainv)  # fmt: skip
         elif which >= K:  # a linear stop's contact begins or ends
             n_ev, events = _stop_ended(events, n_ev, stp, t, w, which, sides, pressing, N, K)
         elif code[which] == STUCK:  # the riding mass's wall would pull: it is let go
@@ -846,16 +856,13 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
             a = -sides[which] * acc  # the point's acceleration toward the mass on its wall
             e = ed[which]
             left[which] = 1
-            if a > 0.0 and e < 1.0:  # would the chatter accumulate (Step 9's test)?
-                delta = 2.0 * wsep / (a * (1.0 - e))
-                if delta <= chat_limit and t + delta < t_end:
-                    t_acc[which] = t + delta
-                    if delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
-                        t_acc[which] = np.inf
-                        left[which] = 0
-                        n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w,
-                                                      which, sides[which], N, K, code, sides,
-                                                      Ainv)  # fmt: skip
+            delta = _accumulation(a, e, wsep, chat_limit, t, t_end)
+            if delta > 0.0:
+                t_acc[which] = t + delta
+            elif delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
+                left[which] = 0
+                n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, which,
+                                              sides[which], N, K, code, sides, Ainv)  # fmt: skip
         else:
             n_ev, events = _ended(events, n_ev, pm, Phi, xb, t, w, which, sides, pressing, N, K)
         for k in range(K):  # a mass let go by an impulse leaves its wall
