@@ -2175,8 +2175,9 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
                                srig, xb)  # fmt: skip
             pm = cfg[7]
-            for j in range(K):
-                side0[j] = 0
+            for j in range(K):  # a mass let go at this same instant keeps its wall
+                if stuck[j] != 0 or abs(z[j]) < hd[j]:
+                    side0[j] = 0
             side0[kr] = int(s)
             xd = _dot(Phi, kr, v) + _base_v(pm, xb, t)
             xa = _dot(Phi, kr, q) + _base_x(pm, xb, t)
