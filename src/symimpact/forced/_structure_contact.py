@@ -443,14 +443,49 @@ def _point(pm, Phi, xb, t, w, k, N):
 
 
 @njit(cache=True)
-def _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides, Ainv, phi, minv, d, e, N, K):
+def _stop_point(stp, w, r, N):
+    """Stop r's point: (xₛ, ẋₛ) = φᵀq, φᵀq̇ (relative to the ground, which its wall is fixed to)."""
+    xs, vs = 0.0, 0.0
+    for i in range(N):
+        xs += stp[r, i] * w[i]
+        vs += stp[r, i] * w[N + i]
+    return xs, vs
+
+
+@njit(cache=True)
+def _let_go(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, j, sides, code, N, K):
+    """Let go, at t, riding damper j (its mass set on its wall) or, for j ≥ K, the point held by
+    stop j − K (moved just inside its wall, :func:`_inside`), where its wall would pull: logged
+    (kind :data:`KIND_RELEASE`).  Returns (count, log, B)."""
+    if j >= K:
+        r = j - K
+        wall = stp[r, N + 6]
+        xs, vs = _stop_point(stp, w, r, N)
+        n_ev, events = _log_row(events, n_ev, t, j, wall, KIND_RELEASE, 0.0, xs, vs, 0.0, vs,
+                                0.0, 0.0)  # fmt: skip
+        stp[r, N + 6] = 0.0
+        _inside(stp, w, r, wall, N)
+    else:
+        code[j] = RIGID
+        xa, va = _point(pm, Phi, xb, t, w, j, N)
+        w[2 * N + j] = xa + sides[j] * hd[j]  # on its wall
+        u = w[2 * N + K + j]
+        n_ev, events = _log_row(events, n_ev, t, j, sides[j], KIND_RELEASE, 0.0, xa, va, u, va, u,
+                                0.0)  # fmt: skip
+    return n_ev, events, mass_inverse(pm, Phi, md, code, stp, N, K)
+
+
+@njit(cache=True)
+def _kick(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, code, sides, Ainv, phi, minv, d, e, N,
+          K):  # fmt: skip
     """An impulse at a point of the structure of shape ``phi`` against a body of inverse mass
     ``minv`` (a damper's 1/mₖ, or 0: the ground) whose speed exceeds the point's by ``d``:
     Newton's law with restitution e, P = (1 + e)·d/(minv + φᵀA⁻¹φ), q̇ += A⁻¹φP, with the
     riding masses' and the held stops' B (:func:`mass_inverse`).  A riding mass or a held stop
     whose wall would have to pull during the impulse (sⱼ·ΔẋⱼP > 0, or its reaction −R·φP
-    toward its wall) is let go first (logged) and the impulse taken again without it, as the
-    modal engine does; the masses still riding go with their points.  Returns (P, 1/(minv + φᵀA⁻¹φ), A⁻¹, count, log); ``w``'s q̇ changed."""
+    toward its wall) is let go first (:func:`_let_go`) and the impulse taken again without it,
+    as the modal engine does; the masses still riding go with their points.  Returns (P,
+    1/(minv + φᵀBφ), B, count, log); ``w``'s q̇ changed."""
     wv = np.empty(N)
     while True:
         inv = minv
@@ -479,23 +514,8 @@ def _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides, Ainv, phi, minv
                     pulled = K + r
         if pulled < 0:
             break
-        if pulled >= K:
-            r = pulled - K
-            xs, vs = 0.0, 0.0
-            for i in range(N):
-                xs += stp[r, i] * w[i]
-                vs += stp[r, i] * w[N + i]
-            n_ev, events = _log_row(events, n_ev, t, pulled, stp[r, N + 6], KIND_RELEASE, 0.0,
-                                    xs, vs, 0.0, vs, 0.0, 0.0)  # fmt: skip
-            stp[r, N + 6] = 0.0
-            Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
-            continue
-        code[pulled] = RIGID
-        Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
-        xa, va = _point(pm, Phi, xb, t, w, pulled, N)
-        u = w[2 * N + K + pulled]
-        n_ev, events = _log_row(events, n_ev, t, pulled, sides[pulled], KIND_RELEASE, 0.0, xa,
-                                va, u, va, u, 0.0)  # fmt: skip
+        n_ev, events, Ainv = _let_go(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, pulled, sides,
+                                     code, N, K)  # fmt: skip
     for i in range(N):
         w[N + i] += wv[i] * P
     for j in range(K):
@@ -515,7 +535,7 @@ def _rigid_impact(events, n_ev, pm, Phi, md, stp, hd, ed, xb, t, w, k, side, N, 
     u = w[2 * N + K + k]
     vrel = side * (u - va)  # the approach speed
     e = ed[k] if vrel > 0.0 else 0.0
-    P, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides, Ainv,
+    P, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, code, sides, Ainv,
                                       Phi[k], 1.0 / md[k], u - va, e, N, K)  # fmt: skip
     va1 = _point(pm, Phi, xb, t, w, k, N)[1]
     w[2 * N + K + k] = u - P / md[k]
@@ -535,7 +555,7 @@ def _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, k, side, N, K, code, 
     takes it).  Returns (count, log, A⁻¹)."""
     xa, va = _point(pm, Phi, xb, t, w, k, N)
     u = w[2 * N + K + k]
-    _, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides, Ainv,
+    _, mu, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, code, sides, Ainv,
                                       Phi[k], 1.0 / md[k], u - va, 0.0, N, K)  # fmt: skip
     va1 = _point(pm, Phi, xb, t, w, k, N)[1]
     lost = 0.5 * mu * (u - va) * (u - va)
@@ -550,20 +570,17 @@ def _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, k, side, N, K, code, 
 
 
 @njit(cache=True)
-def _stop_impact(events, n_ev, pm, Phi, md, stp, xb, t, w, r, side, N, K, code, sides, Ainv):
+def _stop_impact(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, r, side, N, K, code, sides, Ainv):
     """The point of rigid stop r meets its wall ``side`` at t (module text): Newton's law at the
     point, φᵀq̇⁺ = −e·φᵀq̇⁻, through P = −(1 + e)·m_eff·φᵀq̇, m_eff = (φᵀA⁻¹φ)⁻¹, q̇ += A⁻¹φP
     (Step 15's impact at a point against the ground, :func:`_kick`), its loss
     ½m_eff(1 − e²)(φᵀq̇)² added to the impacts' dissipation and the impact logged as the modal
     engine logs a stop's (damper K + r).  Returns (count, log, the separation speed
     e·(approach speed), A⁻¹)."""
-    xs, vs = 0.0, 0.0
-    for i in range(N):
-        xs += stp[r, i] * w[i]
-        vs += stp[r, i] * w[N + i]
+    xs, vs = _stop_point(stp, w, r, N)
     vapp = side * vs  # the approach speed
     e = stp[r, N + 5] if vapp > 0.0 else 0.0  # ≤ 0: a rounding-level meeting (the engine's rule)
-    _, meff, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides, Ainv,
+    _, meff, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, code, sides, Ainv,
                                         stp[r, :N], 0.0, -vs, e, N, K)  # fmt: skip
     vs1 = 0.0
     for i in range(N):
@@ -605,16 +622,14 @@ def _inside(stp, w, r, side, N):
 
 
 @njit(cache=True)
-def _stop_closure(events, n_ev, pm, Phi, md, stp, xb, t, w, r, side, N, K, code, sides, Ainv):
+def _stop_closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, r, side, N, K, code, sides,
+                  Ainv):  # fmt: skip
     """The chatter of rigid stop r's point on its wall ``side`` reaches its accumulation point at
     t: the point stops there plastically (:func:`_kick` with e = 0 against the ground, the loss
     ½m_eff(φᵀq̇)²), and the wall then holds it (``stp``'s column N + 6) until it would pull, as
     the modal engine holds it.  Returns (count, log, B)."""
-    xs, vs = 0.0, 0.0
-    for i in range(N):
-        xs += stp[r, i] * w[i]
-        vs += stp[r, i] * w[N + i]
-    _, meff, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, xb, t, w, code, sides,
+    xs, vs = _stop_point(stp, w, r, N)
+    _, meff, Ainv, n_ev, events = _kick(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, code, sides,
                                         Ainv, stp[r, :N], 0.0, -vs, 0.0, N, K)  # fmt: skip
     lost = 0.5 * meff * vs * vs
     w[2 * N + 2 * K + 2] += lost
@@ -796,28 +811,20 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
                     closing = k
             if closing >= K:  # a stop's chatter's accumulation point: the wall holds from here
                 t_acc[closing] = np.inf
-                n_ev, events, Ainv = _stop_closure(events, n_ev, pm, Phi, md, stp, xb, t, w,
+                n_ev, events, Ainv = _stop_closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w,
                                                    closing - K, sides[closing], N, K, code, sides,
                                                    Ainv)  # fmt: skip
             elif closing >= 0:  # a chatter's accumulation point: the mass rides from here
                 t_acc[closing] = np.inf
                 n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, closing,
                                               sides[closing], N, K, code, sides, Ainv)  # fmt: skip
-        elif which >= K and stp[which - K, N + 6] != 0.0:  # a held stop's wall would pull
-            r = which - K
-            xs, vs = 0.0, 0.0
-            for i in range(N):
-                xs += stp[r, i] * w[i]
-                vs += stp[r, i] * w[N + i]
-            n_ev, events = _log_row(events, n_ev, t, which, stp[r, N + 6], KIND_RELEASE, 0.0, xs,
-                                    vs, 0.0, vs, 0.0, 0.0)  # fmt: skip
-            stp[r, N + 6] = 0.0
-            Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
-            left[which] = 1
-            _inside(stp, w, r, sides[which], N)
+        elif (which >= K and stp[which - K, N + 6] != 0.0) or (which < K and code[which] == STUCK):
+            # a held stop's or a riding mass's wall would pull: it is let go
+            n_ev, events, Ainv = _let_go(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, which,
+                                         sides, code, N, K)  # fmt: skip
         elif which >= K and stp[which - K, N + 4] != 0.0:  # a rigid stop's impact
             r = which - K
-            n_ev, events, wsep, Ainv = _stop_impact(events, n_ev, pm, Phi, md, stp, xb, t, w, r,
+            n_ev, events, wsep, Ainv = _stop_impact(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, r,
                                                     sides[which], N, K, code, sides, Ainv)  # fmt: skip
             _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K, Ainv)
             acc = 0.0
@@ -832,19 +839,10 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
                 t_acc[which] = t + delta
             elif delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
                 left[which] = 0
-                n_ev, events, Ainv = _stop_closure(events, n_ev, pm, Phi, md, stp, xb, t, w, r,
+                n_ev, events, Ainv = _stop_closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, r,
                                                    sides[which], N, K, code, sides, Ainv)  # fmt: skip
         elif which >= K:  # a linear stop's contact begins or ends
             n_ev, events = _stop_ended(events, n_ev, stp, t, w, which, sides, pressing, N, K)
-        elif code[which] == STUCK:  # the riding mass's wall would pull: it is let go
-            code[which] = RIGID
-            Ainv = mass_inverse(pm, Phi, md, code, stp, N, K)
-            xa, va = _point(pm, Phi, xb, t, w, which, N)
-            w[2 * N + which] = xa + sides[which] * hd[which]  # on its wall
-            ua = w[2 * N + K + which]
-            n_ev, events = _log_row(events, n_ev, t, which, sides[which], KIND_RELEASE, 0.0, xa,
-                                    va, ua, va, ua, 0.0)  # fmt: skip
-            left[which] = 1
         elif code[which] == RIGID:
             n_ev, events, wsep, Ainv = _rigid_impact(events, n_ev, pm, Phi, md, stp, hd, ed, xb, t,
                                                      w, which, sides[which], N, K, code, sides,
@@ -865,13 +863,12 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
                                               sides[which], N, K, code, sides, Ainv)  # fmt: skip
         else:
             n_ev, events = _ended(events, n_ev, pm, Phi, xb, t, w, which, sides, pressing, N, K)
-        for k in range(K):  # a mass let go by an impulse leaves its wall
+        for k in range(K):  # a mass let go (:func:`_let_go`) leaves its wall
             if riding[k] == STUCK and code[k] == RIGID:
                 left[k] = 1
         for r in range(S):  # and so does a point let go by its stop
             if holding[r] != 0.0 and stp[r, N + 6] == 0.0:
                 left[K + r] = 1
-                _inside(stp, w, r, holding[r], N)
         if which >= 0 or closing >= 0:
             _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk[0], N, K, Ainv)
             if pressing[:K].sum() == 0 and np.all(np.isinf(t_acc)):
