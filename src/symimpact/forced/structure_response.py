@@ -190,15 +190,16 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     meet their walls there by Eq. F7 at once (:mod:`symimpact.forced._structure_contact`).
     A linear stop acts in the contact phases by its law, its onsets and exits located there; a
     rigid stop by Newton's law at its point there (the structure's effective mass at the point,
-    Step 15), its impacts located as onsets are.  Refused in one line: a rigid damper's mass
-    that would ride on its point, or a point held on a rigid stop, during a compliant contact
-    (a chatter accumulating then, or a mass riding or a point held when a contact begins).
+    Step 15), its impacts located as onsets are.  A rigid damper's chatter accumulates in a
+    contact phase as in flight, and its mass then rides on its point; a rigid stop's chatter
+    accumulates there too, and its wall then holds the point; each until its wall would pull.
     ``stops``: a sequence of :class:`~symimpact.model.stops.Stop`, walls fixed to the ground,
     rigid or with a linear contact law; a pressed linear stop adds its spring and dashpot to the
-    structure, whose flight stays closed form (:mod:`symimpact.model.stops`).  A structure with stops may carry no damper.  Refused in one
-    line: an undamped mode driven at its own frequency (Eq. F1 cancels there, as in
-    :func:`~symimpact.forced.simulate_forced`).  ``variational``: carry the state's Jacobian
-    (:attr:`StructureResult.monodromy`).
+    structure, whose flight stays closed form (:mod:`symimpact.model.stops`).  A structure with
+    stops may carry no damper.  Refused in one line: an undamped mode driven at its own
+    frequency (Eq. F1 cancels there, as in :func:`~symimpact.forced.simulate_forced`), and a
+    run whose contact phase cannot be integrated (a contact too stiff for its time scale).
+    ``variational``: carry the state's Jacobian (:attr:`StructureResult.monodromy`).
 
     ``base``: the supports' displacement amplitude X_b [m], moving as X_b·cos(Ωt + φ) (with or
     without the force).  The modal coordinates are then relative to the supports, each mode
@@ -276,8 +277,8 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     law = np.array([-1 if d.rigid else _compliant.CODES[d.contact] for d in dampers],
                    dtype=np.int64)  # fmt: skip
     status, events, n_ev, period_max, ledger, final, G = _alternation(
-        pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside, sk, sc, srig, se, q0,
-        v0, y0, u0, Pout, X_b, t_end, bool(variational),
+        pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0,
+        u0, Pout, X_b, t_end, bool(variational),
     )  # fmt: skip
     events = events[:n_ev]
     if status == _modal.SINGULAR_STUCK:
@@ -335,8 +336,8 @@ def _law_parameters(dampers: tuple[Damper, ...]) -> tuple[np.ndarray, np.ndarray
     return lq, np.array([d.chi for d in dampers])
 
 
-def _alternation(pm, Phi, md, hd, ed, law, dampers, stops, chat, Sphi, sg, sside, sk, sc, srig, se,
-                 q0, v0, y0, u0, Pout, X_b, t_end, variational):  # fmt: skip
+def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, sc, srig, se, q0,
+                 v0, y0, u0, Pout, X_b, t_end, variational):  # fmt: skip
     """The modal engine's closed-form flights and rigid events, alternating with the compliant
     dampers' contact phases (:mod:`symimpact.forced._structure_contact`): (status, events, their
     count, period maxima, ledger, final, G) as :func:`symimpact.forced._modal.run` returns
