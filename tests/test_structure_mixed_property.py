@@ -9,11 +9,10 @@ the energy (seen from the supports when they move), to 1e-9 of the largest term 
 phase integrates the ledger's rates at rtol 1e-13, and a run has up to a few hundred phases);
 every event time lies in the run and the log is in time order.  The ledger is kept by the
 engines from the rates and impulses, the energies come from the state alone: two independent
-sums.  The two dampers sit at different DOFs: two rigid masses at one point can interleave
-their chatter for minutes in the modal engine alone (one such draw of another seed took 4.5 min
-after the fix of two masses let go at one instant), which says nothing of the mixtures.
-The ``ci`` profile draws the same examples every run; any other seed must pass too (400
-examples of two other seeds passed, one of them with the supports moving)."""
+sums.  The two dampers may sit at one DOF: two rigid masses at one point, let go together, once
+passed rounding-level impacts back and forth for minutes (fixed: a mass on its wall keeps it
+through the other's impact; tests/test_structure_response.py).
+The ``ci`` profile draws the same examples every run; any other seed must pass too."""
 
 from __future__ import annotations
 
@@ -49,10 +48,8 @@ def _damper(draw, name: str, at: int) -> dict:
 
 
 @given(
-    st.permutations([0, 1]).flatmap(
-        lambda ats: st.lists(st.just(0), min_size=1, max_size=2).flatmap(
-            lambda ks: st.tuples(*[_damper(f"d{i}", ats[i]) for i in range(len(ks))])
-        )
+    st.lists(st.sampled_from([0, 1]), min_size=1, max_size=2).flatmap(
+        lambda ats: st.tuples(*[_damper(f"d{i}", at) for i, at in enumerate(ats)])
     ),
     st.lists(
         st.tuples(

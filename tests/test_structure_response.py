@@ -327,6 +327,29 @@ def test_two_masses_let_go_at_one_instant_leave_their_walls():
     assert r.energy["relative_residual"] < 1e-11
 
 
+def test_a_mass_on_its_wall_keeps_it_through_the_other_masss_impact():
+    """Two different masses at the second DOF of the issue's two-DOF chain (0.2 in 0.5, plastic;
+    0.05 in 0.3, e 0.2), 0.2 at 0.62 rad/s: both ride on the point and are let go at one instant
+    (15.72 s, and eight times more).  The first of them meets its wall again 5e-15 s later at a
+    rounding-level speed (1e-15 m/s: the zero-length flight between the two releases re-rounds
+    the point's velocity), and at that impact the other mass, still on its wall, now keeps it.
+    Before, the impact forgot it, the search met it again at once, and the two passed such
+    impacts back and forth, 1.6 million of them (27 s) in six periods; now the run has 343
+    events.  At most one impact at a rounding-level speed (below 1e-12 m/s) follows each double
+    release, the run has hundreds of events, and the ledger closes (1e-11)."""
+    s = structure_from_dict({"fe": {"M": [[1, 0], [0, 1]], "K": [[1, -1], [-1, 2]], "zeta": 0.015}})
+    pair = [{"name": "a", "at": 1, "m": 0.2, "gap": 0.5, "e": 0.0},
+            {"name": "b", "at": 1, "m": 0.05, "gap": 0.3, "e": 0.2}]  # fmt: skip
+    r = simulate_structure(s, dampers(s, pair), "1", 0.2, 0.62, periods=6)
+    t, kind, vrel = r.events[:, 0], r.events[:, 7].astype(int), r.events[:, 5]
+    releases = np.flatnonzero(kind == 2)
+    together = [i for i in releases[:-1] if kind[i + 1] == 2 and t[i + 1] == t[i]]
+    assert together  # both let go at one instant
+    assert np.count_nonzero((kind == 0) & (vrel < 1e-12)) <= len(together)
+    assert len(t) < 5000
+    assert r.energy["relative_residual"] < 1e-11
+
+
 def test_plastic_sticking_on_two_modes_against_dop853():
     """A plastic damper (e = 0) at the tip of the two-mode cantilever (ζ 0.02), 2 N at 8 Hz: every
     impact sticks, the tip carrying the mass (the two modes coupled through diag(Mᵢ) + mφφᵀ,
