@@ -38,7 +38,7 @@ from ..errors import MethodNotApplicable, ParameterError
 from ..free import _stepper
 from ..model.checks import instance, whole_number
 from ..model.dampers import Damper
-from ..model.stops import Stop
+from ..model.stops import Stop, check_walls
 from ..model.structure import Structure
 from ..model.units import nonnegative_float, positive_float, si_float
 from . import _compliant, _modal, _rigid, _structure_contact
@@ -226,6 +226,7 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     names = [d.name for d in dampers] + [st.name for st in stops]
     if len(set(names)) < len(names):
         raise ParameterError("dampers", "two dampers or stops have the same name")
+    check_walls(stops)
     point = structure._point(force_at)
     F0 = nonnegative_float("F0", F0, "N")
     X_b = si_float("base", base, "m")

@@ -124,4 +124,25 @@ def stops(structure: Structure, entries: Any) -> tuple[Stop, ...]:
         if any(o.name == s.name for o in out):
             raise ParameterError(f"stops.{s.name}", "two stops have this name")
         out.append(s)
+    check_walls(out)
     return tuple(out)
+
+
+def check_walls(stops: Any) -> None:
+    """Refuse, in one line naming the second stop, two rigid stops with a wall at one place (one
+    point, one side, one gap).  Such walls are one constraint written twice: a point held on one
+    is held on the other with the same reaction, so the two holds cannot be told apart (their
+    constraint matrix is singular), and the engine passed the point from one to the other at
+    rounding-level speeds, ten million times in three periods.  One rigid wall there is enough;
+    a linear stop beside a rigid one, or rigid walls at other gaps or sides, are kept."""
+    seen: dict[tuple[str, int, float], str] = {}
+    for st in stops:
+        if st.contact != "rigid":
+            continue
+        for wall in (1, -1) if st.walls == 0 else (st.walls,):
+            other = seen.setdefault((st.at, wall, st.gap), st.name)
+            if other != st.name:
+                where = f"{'+' if wall > 0 else '-'}{st.gap * 1e3:g} mm at point {st.at!r}"
+                raise ParameterError(f"stops.{st.name}", f"its rigid wall ({where}) is stop "
+                                                         f"{other!r}'s wall too: one rigid wall "
+                                                         "there is enough")  # fmt: skip
