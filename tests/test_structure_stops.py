@@ -17,7 +17,7 @@ from symimpact.errors import ParameterError
 from symimpact.forced.structure_response import simulate_structure
 from symimpact.model.dampers import damper
 from symimpact.model.stops import stop
-from symimpact.model.structure import structure_from_dict
+from symimpact.model.structure import modal_structure, structure_from_dict
 from symimpact.model.structure_model import model_from_dict
 
 # the issue's two-DOF chain: masses [1, 1], springs [0, 1, 1], modal damping 1.5 %
@@ -355,7 +355,9 @@ def test_two_rigid_stops_with_one_wall_are_refused_and_walls_apart_are_kept(tmp_
     """Two rigid stops with a wall at one place (one point, side, gap) are one constraint written
     twice: held on both, the point was passed from one to the other at rounding-level speeds,
     ten million times in three periods of a cantilever, before the run gave up.  They are
-    refused in one line naming the second stop, from a structure file (exit 2) and from Python;
+    refused in one line naming the second stop, from a structure file (exit 2) and from Python,
+    and so are two points' walls that coincide in the modes kept (one mode: gaps in the ratio of
+    the shapes), while gaps 10 % off that ratio run;
     a "+" and a "-" stop at one point are two walls, kept, and give the events of one two-sided
     stop there (equal to the bit on the machine this was written on: the same walls, searched
     alike; the test asks 1e-12, for other compilers' rounding)."""
@@ -377,6 +379,18 @@ def test_two_rigid_stops_with_one_wall_are_refused_and_walls_apart_are_kept(tmp_
     one = simulate_structure(structure, [], "1", F0, 0.62, periods=6, stops=[a])
     assert len(one.events) > 10 and pair.events.shape == one.events.shape
     assert np.allclose(pair.events[:, :10], one.events[:, :10], rtol=1e-12, atol=1e-15)
+    # one mode: the walls of two points whose gaps are in the ratio of their shapes coincide
+    one_mode = modal_structure([{"f": 1.0, "mass": 1.0, "zeta": 0.01,
+                                 "shape": {"tip": 1.0, "mid": 0.25}}])  # fmt: skip
+    tip = stop(one_mode, "tip", "tip", 0.004, "+", "rigid", e=0.0)
+    for gap, refused in ((0.001, True), (0.0011, False)):
+        mid = stop(one_mode, "mid", "mid", gap, "+", "rigid", e=0.0)
+        try:
+            simulate_structure(one_mode, [], "tip", 1.0, 2 * math.pi, periods=2, stops=[tip, mid])
+        except ParameterError as exc:
+            assert refused and exc.parameter == "stops.mid" and "'tip'" in exc.reason
+        else:
+            assert not refused
 
 
 def test_a_start_beyond_a_rigid_wall_is_refused():

@@ -226,7 +226,7 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     names = [d.name for d in dampers] + [st.name for st in stops]
     if len(set(names)) < len(names):
         raise ParameterError("dampers", "two dampers or stops have the same name")
-    check_walls(stops)
+    check_walls(structure, stops)
     point = structure._point(force_at)
     F0 = nonnegative_float("F0", F0, "N")
     X_b = si_float("base", base, "m")

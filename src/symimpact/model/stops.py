@@ -24,6 +24,8 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from ..errors import ParameterError
 from .checks import bounded
 from .structure import Structure
@@ -124,25 +126,33 @@ def stops(structure: Structure, entries: Any) -> tuple[Stop, ...]:
         if any(o.name == s.name for o in out):
             raise ParameterError(f"stops.{s.name}", "two stops have this name")
         out.append(s)
-    check_walls(out)
+    check_walls(structure, out)
     return tuple(out)
 
 
-def check_walls(stops: Any) -> None:
-    """Refuse, in one line naming the second stop, two rigid stops with a wall at one place (one
-    point, one side, one gap).  Such walls are one constraint written twice: a point held on one
-    is held on the other with the same reaction, so the two holds cannot be told apart (their
-    constraint matrix is singular), and the engine passed the point from one to the other at
-    rounding-level speeds, ten million times in three periods.  One rigid wall there is enough;
-    a linear stop beside a rigid one, or rigid walls at other gaps or sides, are kept."""
-    seen: dict[tuple[str, int, float], str] = {}
+def check_walls(structure: Structure, stops: Any) -> None:
+    """Refuse, in one line naming the second stop, two rigid stops with a wall at one place in the
+    modes kept.  Wall w (±1) of a stop of gap g at a point of shapes φ keeps wφᵀq ≤ g; two walls
+    whose aₛ = wφ/g agree (to 1e-9 of their size) are one constraint written twice: one point,
+    side and gap, or, with few modes, two points whose shapes are proportional and gaps in that
+    ratio (one mode: any two points).  A point held on one is then held on the other with the
+    same reaction, the two holds cannot be told apart (their constraint matrix is singular), and
+    the engine passed the point from one to the other at rounding-level speeds, ten million
+    times in three periods, or stopped on a singular matrix.  One rigid wall there is enough;
+    a linear stop beside a rigid one, and rigid walls elsewhere, are kept."""
+    seen: list[tuple[np.ndarray, str, str]] = []
     for st in stops:
         if st.contact != "rigid":
             continue
+        phi = structure.shapes([st.at])[0]
         for wall in (1, -1) if st.walls == 0 else (st.walls,):
-            other = seen.setdefault((st.at, wall, st.gap), st.name)
-            if other != st.name:
-                where = f"{'+' if wall > 0 else '-'}{st.gap * 1e3:g} mm at point {st.at!r}"
-                raise ParameterError(f"stops.{st.name}", f"its rigid wall ({where}) is stop "
-                                                         f"{other!r}'s wall too: one rigid wall "
-                                                         "there is enough")  # fmt: skip
+            a = wall * phi / st.gap
+            where = f"{'+' if wall > 0 else '-'}{st.gap * 1e3:g} mm at point {st.at!r}"
+            for b, name, there in seen:
+                if name != st.name and np.linalg.norm(a - b) <= 1e-9 * np.linalg.norm(a):
+                    same = (" too" if there == where
+                            else f" ({there}) in every motion of the modes kept")  # fmt: skip
+                    raise ParameterError(f"stops.{st.name}", f"its rigid wall ({where}) is the "
+                                                             f"wall of stop {name!r}{same}: one "
+                                                             "rigid wall there is enough")  # fmt: skip
+            seen.append((a, st.name, where))
