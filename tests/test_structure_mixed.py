@@ -515,3 +515,33 @@ def test_a_point_held_on_a_rigid_stop_during_a_compliant_contact_against_dop853(
         assert len(got) == len(want) >= least, name
         assert np.max(np.abs(got - want)) < 1e-8 * period, name
     assert res.energy["relative_residual"] < 1e-10
+
+
+def test_a_contact_phase_with_a_riding_mass_and_a_holding_stop_at_one_point_runs():
+    """The 3-mode cantilever at 0.9 of its first mode, 1 N at the tip and the supports moving
+    1 mm: a linear damper (50 g in 2 mm, k₁ 1000 N/m) at mid-span presses its wall while, at the
+    tip, a plastic rigid damper (20 g in 2 mm) rides on its point and a rigid stop (e 0.6, 2 mm)
+    chatters and holds it.  Before, at 0.26096 s the mass's impact let the stop go, the stop's
+    point met its wall again 1e-16 s later at a rounding-level speed, that impact let the mass
+    go, and the contact phase then stood at that instant until it gave up after two million
+    steps ("too stiff"): the mass was set on its wall to the bit, an ulp beyond it by the
+    rounding of y − xₐ, and met it again at once, over and over; and the stop's rebounds
+    accumulated within the time's resolution, where the step, cut to that point, became zero
+    and stayed zero.  Now a mass let go or met is set four ulps inside its wall, an
+    accumulation within the time's resolution closes at once, and a step cut short leaves the
+    step control's length alone.  The run ends (with these changes the rounding no longer
+    leads to that instant's double release), its ledger closes (1e-11), and it has about a
+    hundred events."""
+    structure = _structure()
+    ds = dampers(structure, [
+        {"name": "d0", "at": "mid", "m": 0.05, "gap": "2 mm", "contact": "linear", "k1": 1000.0,
+         "c1": 1.0},
+        {"name": "d1", "at": "tip", "m": 0.02, "gap": "2 mm", "e": 0.0}])  # fmt: skip
+    sts = [stop(structure, "s0", "tip", 0.002, "+", "rigid", e=0.6),
+           stop(structure, "s1", "mid", 0.004, "+", "linear", 10000.0, 1.0)]  # fmt: skip
+    omega = 2 * math.pi * structure.modes[0].frequency * 0.9
+    r = simulate_structure(structure, ds, "tip", 1.0, omega, periods=2, stops=sts, base=0.001)
+    kind = r.events[:, 7].astype(int)
+    assert np.count_nonzero(kind == 1) > 2 and np.count_nonzero(kind == 2) > 2  # holds, releases
+    assert len(r.events) < 1000
+    assert r.energy["relative_residual"] < 1e-11

@@ -453,6 +453,17 @@ def _stop_point(stp, w, r, N):
 
 
 @njit(cache=True)
+def _on_wall(xa, side, h):
+    """The position of a free mass just off its wall ``side`` (its point at xa, half clearance
+    h), after an impact or where it is let go: four units in the last place of max(h, abs(xa))
+    inside, so that δ = side·(y − xa) − h starts below zero despite the rounding of y − xa (as
+    :func:`_inside` does for a stop's point).  Set on the wall to the bit, δ could start an ulp
+    beyond it, and a mass let go where its wall draws away met it again at once, over and over
+    at one instant."""
+    return xa + side * (h - 4e-16 * max(h, abs(xa)))
+
+
+@njit(cache=True)
 def _let_go(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, j, sides, code, N, K):
     """Let go, at t, riding damper j (its mass set on its wall) or, for j ≥ K, the point held by
     stop j − K (moved just inside its wall, :func:`_inside`), where its wall would pull: logged
@@ -468,7 +479,7 @@ def _let_go(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, j, sides, code, N, K):
     else:
         code[j] = RIGID
         xa, va = _point(pm, Phi, xb, t, w, j, N)
-        w[2 * N + j] = xa + sides[j] * hd[j]  # on its wall
+        w[2 * N + j] = _on_wall(xa, sides[j], hd[j])
         u = w[2 * N + K + j]
         n_ev, events = _log_row(events, n_ev, t, j, sides[j], KIND_RELEASE, 0.0, xa, va, u, va, u,
                                 0.0)  # fmt: skip
@@ -539,7 +550,7 @@ def _rigid_impact(events, n_ev, pm, Phi, md, stp, hd, ed, xb, t, w, k, side, N, 
                                       Phi[k], 1.0 / md[k], u - va, e, N, K)  # fmt: skip
     va1 = _point(pm, Phi, xb, t, w, k, N)[1]
     w[2 * N + K + k] = u - P / md[k]
-    w[2 * N + k] = xa + side * hd[k]  # on its wall
+    w[2 * N + k] = _on_wall(xa, side, hd[k])
     lost = 0.5 * mu * (1.0 - e * e) * vrel * vrel
     w[2 * N + 2 * K + 2] += lost
     n_ev, events = _log_row(events, n_ev, t, k, side, KIND_IMPACT, vrel, xa, va, u, va1,
@@ -727,23 +738,25 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
             if pressing[:K].sum() == 0 and np.all(np.isinf(t_acc)):
                 break
             continue
-        h = min(h, t_end - t, np.min(t_acc) - t)
-        err = _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, n, tmp, out, kout, atol, N,
-                    K, Ainv)  # fmt: skip
+        # the step, cut short at the run's end or an accumulation point (the controller's h
+        # stands: cut to zero at an accumulation point, it would have stayed zero)
+        hs = min(h, t_end - t, np.min(t_acc) - t)
+        err = _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, hs, n, tmp, out, kout, atol,
+                    N, K, Ainv)  # fmt: skip
         if err > 1.0:
-            h *= max(0.2, 0.9 * err**-0.2)
+            h = hs * max(0.2, 0.9 * err**-0.2)
             if h < 1e-14 * T_f:
                 status = STEP_UNDERFLOW
                 break
             continue
         # each compliant damper's δ at the step's end, on its wall (pressing) or the nearer one;
         # a riding mass's pull on its wall (:func:`_pull`)
-        xa0 = xb * math.cos(pm[0, P_W] * (t + h) + pm[0, P_PHI])
+        xa0 = xb * math.cos(pm[0, P_W] * (t + hs) + pm[0, P_PHI])
         crossed = False
         for k in range(K):
             g1[k] = 0.0
             if code[k] == STUCK:
-                g = _pull(pm, Phi, xb, t + h, kout, k, sides[k], N)
+                g = _pull(pm, Phi, xb, t + hs, kout, k, sides[k], N)
                 if g > 0.0:
                     g1[k] = g
                     crossed = True
@@ -785,12 +798,12 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
                 g1[j] = g
                 sides[j] = side
                 crossed = True
-        first, which = h, -1
+        first, which = hs, -1
         if crossed:  # the earliest onset, exit, impact or release in the step
             for k in range(K + S):
                 if g1[k] == 0.0:
                     continue
-                theta = _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, g1[k], k,
+                theta = _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, hs, g1[k], k,
                                 sides[k], n, tmp, out, kout, atol, N, K,
                                 left[k] == 1, Ainv)  # fmt: skip
                 if which < 0 or theta < first:
@@ -835,9 +848,9 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
             left[which] = 1
             _inside(stp, w, r, sides[which], N)
             delta = _accumulation(a, e, wsep, chat_limit, t, t_end)
-            if delta > 0.0:
+            if delta > 4e-16 * (t + delta):
                 t_acc[which] = t + delta
-            elif delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
+            elif delta >= 0.0:  # plastic, or accumulating within the time's resolution: now
                 left[which] = 0
                 n_ev, events, Ainv = _stop_closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, r,
                                                    sides[which], N, K, code, sides, Ainv)  # fmt: skip
@@ -855,9 +868,9 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
             e = ed[which]
             left[which] = 1
             delta = _accumulation(a, e, wsep, chat_limit, t, t_end)
-            if delta > 0.0:
+            if delta > 4e-16 * (t + delta):
                 t_acc[which] = t + delta
-            elif delta == 0.0:  # a plastic impact: its closure is now (lost: 0)
+            elif delta >= 0.0:  # plastic, or accumulating within the time's resolution: now
                 left[which] = 0
                 n_ev, events, Ainv = _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, which,
                                               sides[which], N, K, code, sides, Ainv)  # fmt: skip
@@ -874,10 +887,12 @@ def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0
             if pressing[:K].sum() == 0 and np.all(np.isinf(t_acc)):
                 break
             continue
+        if hs < h:
+            continue  # a step cut short: the controller's h stands
         if err < 1e-300:
-            h *= 5.0
+            h = hs * 5.0
         else:
-            h *= min(5.0, max(0.2, 0.9 * err**-0.2))
+            h = hs * min(5.0, max(0.2, 0.9 * err**-0.2))
     state = w[: 2 * N + 2 * K].copy()
     ledger = w[2 * N + 2 * K : 2 * N + 2 * K + 4].copy()
     walls = np.zeros(S)
