@@ -353,7 +353,8 @@ def test_a_stop_s_law_takes_its_own_fields(entry, parameter):
 
 def test_two_rigid_stops_with_one_wall_are_refused_and_walls_apart_are_kept(tmp_path, capsys):
     """Two rigid stops with a wall at one place (one point, side, gap) are one constraint written
-    twice: held on both, the point was passed from one to the other at rounding-level speeds,
+    twice (and a linear stop at a rigid wall never presses: refused too; two linear walls at one
+    place are springs side by side, kept): held on both, the point was passed from one to the other at rounding-level speeds,
     ten million times in three periods of a cantilever, before the run gave up.  They are
     refused in one line naming the second stop, from a structure file (exit 2) and from Python,
     and so are two points' walls that coincide in the modes kept (one mode: gaps in the ratio of
@@ -373,6 +374,12 @@ def test_two_rigid_stops_with_one_wall_are_refused_and_walls_apart_are_kept(tmp_
     with pytest.raises(ParameterError) as exc:
         simulate_structure(structure, [], "1", F0, 0.62, periods=3, stops=[a, b])
     assert exc.value.parameter == "stops.b"
+    soft = stop(structure, "soft", 0, 0.2, "+", "linear", 100.0, 0.0)
+    with pytest.raises(ParameterError) as exc:  # never pressed but for rounding (ledger 3e-9)
+        simulate_structure(structure, [], "1", F0, 0.62, periods=3, stops=[a, soft])
+    assert exc.value.parameter == "stops.soft" and "never presses" in exc.value.reason
+    twin = stop(structure, "twin", 0, 0.2, "both", "linear", 50.0, 0.0)  # springs side by side
+    assert simulate_structure(structure, [], "1", F0, 0.62, periods=3, stops=[soft, twin]).t_end > 0
     plus, minus = (stop(structure, n, 0, 0.2, side, "rigid", e=0.0)
                    for n, side in (("p", "+"), ("m", "-")))  # fmt: skip
     pair = simulate_structure(structure, [], "1", F0, 0.62, periods=6, stops=[plus, minus])

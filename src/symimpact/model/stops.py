@@ -131,28 +131,33 @@ def stops(structure: Structure, entries: Any) -> tuple[Stop, ...]:
 
 
 def check_walls(structure: Structure, stops: Any) -> None:
-    """Refuse, in one line naming the second stop, two rigid stops with a wall at one place in the
-    modes kept.  Wall w (±1) of a stop of gap g at a point of shapes φ keeps wφᵀq ≤ g; two walls
-    whose aₛ = wφ/g agree (to 1e-9 of their size) are one constraint written twice: one point,
+    """Refuse, in one line naming the second stop, a rigid stop's wall at the place of another
+    stop's wall in the modes kept.  Wall w (±1) of a stop of gap g at a point of shapes φ keeps
+    wφᵀq ≤ g; two walls whose wφ/g agree (to 1e-9 of their size) are at one place: one point,
     side and gap, or, with few modes, two points whose shapes are proportional and gaps in that
-    ratio (one mode: any two points).  A point held on one is then held on the other with the
-    same reaction, the two holds cannot be told apart (their constraint matrix is singular), and
-    the engine passed the point from one to the other at rounding-level speeds, ten million
-    times in three periods, or stopped on a singular matrix.  One rigid wall there is enough;
-    a linear stop beside a rigid one, and rigid walls elsewhere, are kept."""
-    seen: list[tuple[np.ndarray, str, str]] = []
+    ratio (one mode: any two points).  Two rigid walls there are one constraint written twice:
+    a point held on one is held on the other with the same reaction, the two holds cannot be
+    told apart (their constraint matrix is singular), and the engine passed the point from one
+    to the other at rounding-level speeds, ten million times in three periods, or stopped on a
+    singular matrix.  A linear stop there never presses (the rigid wall keeps the point from
+    it) but for rounding, whose contacts at the held point left the ledger open by 3e-9.  Two
+    linear walls at one place (springs side by side) are kept, and so are walls elsewhere."""
+    seen: list[tuple[np.ndarray, str, str, bool]] = []
     for st in stops:
-        if st.contact != "rigid":
-            continue
+        rigid = st.contact == "rigid"
         phi = structure.shapes([st.at])[0]
         for wall in (1, -1) if st.walls == 0 else (st.walls,):
             a = wall * phi / st.gap
             where = f"{'+' if wall > 0 else '-'}{st.gap * 1e3:g} mm at point {st.at!r}"
-            for b, name, there in seen:
-                if name != st.name and np.linalg.norm(a - b) <= 1e-9 * np.linalg.norm(a):
+            for b, name, there, other_rigid in seen:
+                if (rigid or other_rigid) and name != st.name and (
+                        np.linalg.norm(a - b) <= 1e-9 * np.linalg.norm(a)):  # fmt: skip
                     same = (" too" if there == where
                             else f" ({there}) in every motion of the modes kept")  # fmt: skip
-                    raise ParameterError(f"stops.{st.name}", f"its rigid wall ({where}) is the "
-                                                             f"wall of stop {name!r}{same}: one "
-                                                             "rigid wall there is enough")  # fmt: skip
-            seen.append((a, st.name, where))
+                    why = ("one rigid wall there is enough" if rigid and other_rigid
+                           else "a linear stop at a rigid wall never presses")  # fmt: skip
+                    kind = "rigid" if rigid else "linear"
+                    raise ParameterError(f"stops.{st.name}", f"its {kind} wall ({where}) is the "
+                                                             f"wall of stop {name!r}{same}: "
+                                                             f"{why}")  # fmt: skip
+            seen.append((a, st.name, where, rigid))
