@@ -1,7 +1,8 @@
 """Any mixture of contacts on a structure (issue 36: "K impact dampers, each with its mass,
 total clearance, attachment point and contact law; plus stops"), drawn by hypothesis: rigid
 dampers (e from 0, plastic, to 0.9, so that chatter accumulates and masses ride on their points)
-beside compliant ones (linear, Hertz), and rigid or linear stops, on the issue's two-DOF chain,
+beside compliant ones (linear, Hertz), and up to two rigid or linear stops (two walls at one
+place are refused in one line: ``symimpact.model.stops.check_walls``), on the issue's two-DOF chain,
 driven at a DOF near its modes, now and then with moving supports.  Whatever is drawn, the run
 either ends or says in one line why not, and if it ends, its energy ledger closes: the work of
 the force less what the modes' dampers, the contacts and the impacts took equals the change of
@@ -58,7 +59,7 @@ def _damper(draw, name: str, at: int) -> dict:
             st.sampled_from(["+", "both"]),
             st.sampled_from([("rigid", 0.0), ("rigid", 0.6), ("linear", 50.0)]),
         ),
-        max_size=1,
+        max_size=2,
     ),
     st.sampled_from([0.55, 0.62, 0.7, 1.6]),
     st.sampled_from([0.05, 0.1, 0.2]),
