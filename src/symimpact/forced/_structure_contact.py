@@ -465,9 +465,9 @@ def _on_wall(xa, side, h):
 
 @njit(cache=True)
 def _let_go(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, j, sides, code, N, K):
-    """Let go, at t, riding damper j (its mass set on its wall) or, for j ≥ K, the point held by
-    stop j − K (moved just inside its wall, :func:`_inside`), where its wall would pull: logged
-    (kind :data:`KIND_RELEASE`).  Returns (count, log, B)."""
+    """Let go, at t, riding damper j (its mass set just inside its wall, :func:`_on_wall`) or,
+    for j ≥ K, the point held by stop j − K (moved just inside its wall, :func:`_inside`), where
+    its wall would pull: logged (kind :data:`KIND_RELEASE`).  Returns (count, log, B)."""
     if j >= K:
         r = j - K
         wall = stp[r, N + 6]
@@ -621,7 +621,8 @@ def _inside(stp, w, r, side, N):
     """Move stop r's point, just off its wall ``side`` (an impact or a release located on the
     wall's far side by rounding), to four units in the last place inside it, q −= cψ (ψ the
     point's shape), so that its next meeting of the wall is a crossing, not the root just
-    located met again (the dampers' masses are set on their walls for the same reason)."""
+    located met again (a damper's mass is set just inside its wall for the same reason,
+    :func:`_on_wall`)."""
     xs, pp = 0.0, 0.0
     for i in range(N):
         xs += stp[r, i] * w[i]
