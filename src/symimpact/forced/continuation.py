@@ -1292,6 +1292,64 @@ def _fold_back(problem: _Problem, y, t, ds, before: BranchPoint, located):
     return None
 
 
+#: The pushes of :func:`orbit_beside_grazing`: how far past the wall (multiples of the turning
+#: point's distance from it) Newton's method starts.
+BESIDE_PUSH = (1.5, 4.0)
+
+
+def orbit_beside_grazing(
+    system: ImpactSystem, forcing: Forcing, e: Any, state: Any, bounds: tuple[float, float],
+    *, periods: int = 1,
+) -> tuple[tuple[float, float, float, float], Forcing] | None:  # fmt: skip
+    """The orbit with one more impact beside the rigid-impact orbit through ``state`` that nearly
+    grazes: the flight's turning point nearest a wall (:func:`_turns`) is pushed past it along
+    the gradient of its reach (:func:`_reach_gradient`, Eq. F1) within the hyperplane through
+    the orbit normal to its branch in Ω, and Newton's method starts there, its steps kept among
+    the orbits with the new impact (:func:`_correct_within`), as :func:`_fold_back` does at a
+    grazing.  Such orbits lie on the same side as the old one near a non-smooth fold (measured
+    on the README's curve: beside the asymmetric 13-impact orbits at 30.6901 rad/s, whose
+    other half-period's chatter sequence ends 4e-4 of d/2 from its wall, lie the symmetric
+    14-impact ones, stable over 30.6672–30.6768 rad/s).  Returns (the orbit's state at t = 0,
+    the forcing at its Ω), or None where the orbit has no turning point, the reach's gradient
+    meets other impacts, or Newton's method finds no orbit with other impacts.  ``bounds``: the
+    band in Ω [rad/s] (the unknowns' scaling)."""
+    system, forcing, e = checked(system, forcing, e)
+    if not is_rigid(e):
+        raise MethodNotApplicable("orbit_beside_grazing", "flights between rigid impacts only")
+    s0 = checks.state("state", state)
+    periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
+    problem = _problem(system, forcing, e, s0, periods, bounds, "omega")
+    axis = np.array([0, 0, 0, 0, 1.0])
+    got = _correct(problem, np.concatenate([s0 / problem.scale, [forcing.omega / problem.unit]]),
+                   axis)  # fmt: skip
+    if got is None or got is GRAZE:
+        return None
+    y0, J, _, res0 = got
+    t = _tangent(J, axis)
+    times, gaps = _turns(problem, res0)
+    if not len(gaps):
+        return None
+    tau, gap = float(times[np.argmin(gaps)]), float(gaps.min())
+    side = math.copysign(1.0, float(state_at(res0, np.array([tau]))[0, 2]))
+    grad = _reach_gradient(problem, y0, len(res0.events), tau, side)
+    if grad is None:
+        return None
+    grad = grad - (grad @ t) * t
+    norm2 = float(grad @ grad)
+    if not norm2 > 0:
+        return None
+    count = _events(res0, periods)
+    for push in BESIDE_PUSH:
+        new = _correct_within(problem, y0, t, y0 + push * gap / norm2 * grad)
+        if new is None:
+            continue
+        y1, _, _, res1 = new
+        if _events(res1, periods) != count:
+            return (tuple(float(c) for c in y1[:4] * problem.scale),
+                    forcing.at(problem.omega(y1)))  # fmt: skip
+    return None
+
+
 def _correct_within(problem: _Problem, y_pred, t, start, count: float | None = None):
     """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from ``start`` kept among the orbits with the
     impact events a period that ``start`` has (None unless that is ``count``, where given): each

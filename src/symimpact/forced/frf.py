@@ -48,6 +48,7 @@ from .continuation import (
     continue_orbit,
     leave,
     orbit_amplitude,
+    orbit_beside_grazing,
     orbits_at,
     trace_branch,
 )
@@ -468,12 +469,16 @@ def _turn_at_grazing_ends(out, system, forcing, e, band, step, failures) -> None
     continued from its end again, turning back there onto the orbits with the new low-speed
     impact on the same side (a non-smooth fold,
     :func:`symimpact.forced.continuation.continue_orbit` with ``folds`` 1); the part beyond the
-    fold is a new branch unless its first orbit lies on a traced one.  On the README's curve the
-    symmetric four-impact orbits' grazing at 30.4438 rad/s leads to the stable five-impact motion
-    near 29.876 rad/s, which nothing else reaches (benchmark 6's band: 45 more branches, 125 →
-    126 of the brute force's 128 periodic attractors on the curve, the curve 1.86 times as
-    long).  Done after the other starts (their budgets spent as before); the new branches are
-    not switched or jumped from."""
+    fold is a new branch unless its first orbit lies on a traced one; each end turns at its own
+    grazing (a branch folded between two grazings of one Ω turns at both), and beside each
+    turned branch the orbits with one more impact are traced (:func:`_beside`).  On the
+    README's curve the symmetric four-impact orbits' grazing at 30.4438 rad/s leads to the
+    stable five-impact motion near 29.876 rad/s, and the symmetric 12-impact orbits' at
+    30.6907 rad/s, through the 13-impact orbits it turns onto, to the stable 14-impact motion
+    near 30.672 rad/s; nothing else reaches either (benchmark 6's band: 52 more branches, 124
+    → 126 of the brute force's 128 periodic attractors on the curve, the curve twice as long).
+    Done after the other starts (their budgets spent as before); the new branches are not
+    switched or jumped from."""
     width = band[1] - band[0]
     reached: list[tuple[float, float]] = []  # (Ω, amplitude) of the grazings a turn ended at
 
@@ -484,12 +489,15 @@ def _turn_at_grazing_ends(out, system, forcing, e, band, step, failures) -> None
     for i, b in enumerate(list(out.branches)):
         if b.parameter != "omega" or len(b.points) < 2:
             continue
-        for g in b.bifurcations:
-            if g.kind != "grazing" or not math.isnan(g.impacts_after) or seen(g):
-                continue
-            end, near = min(((b.points[0], b.points[1]), (b.points[-1], b.points[-2])),
-                            key=lambda pair: abs(pair[0].omega - g.omega))  # fmt: skip
-            if abs(end.omega - g.omega) > 1e-3 * width:
+        ends = [g for g in b.bifurcations
+                if g.kind == "grazing" and math.isnan(g.impacts_after)]  # fmt: skip
+        for end, near in ((b.points[0], b.points[1]), (b.points[-1], b.points[-2])):
+            # each end turns at its own grazing: the nearest in Ω and amplitude (a branch whose
+            # two ends stop at grazings of one Ω, either side of a fold, turns at both)
+            g = min(ends, default=None,
+                    key=lambda g: (abs(g.omega - end.omega) / width
+                                   + abs(g.amplitude - end.amplitude) / end.amplitude))  # fmt: skip
+            if g is None or seen(g) or abs(end.omega - g.omega) > 1e-3 * width:
                 continue
             direction = int(np.sign(g.omega - end.omega) or np.sign(end.omega - near.omega))
             if not direction:
@@ -517,6 +525,50 @@ def _turn_at_grazing_ends(out, system, forcing, e, band, step, failures) -> None
             turned.origin = f"turned back at the grazing of branch {i} at Ω = {g.omega:.6g} rad/s"
             turned.origin_omega = g.omega
             out.branches.append(turned)
+            _beside(out, system, forcing, e, band, step, turned, failures)
+
+
+#: How many of the turned branch's points :func:`_beside` looks beside, the nearest the turn first,
+#: and the share of the curve's step its branch is traced with.
+BESIDE_TRIES = 6
+BESIDE_STEP = 1 / 8
+
+
+def _beside(out, system, forcing, e, band, step, turned, failures) -> None:
+    """The branch of the orbits with one more impact beside the branch ``turned`` back at a
+    grazing (:func:`symimpact.forced.continuation.orbit_beside_grazing` at its points past the
+    turn, the first found), traced unless on a traced branch.  A symmetric orbit grazing both
+    walls at once turns onto the asymmetric orbits with one new impact, beside which lie the
+    symmetric ones with two.  The points looked beside lie at least the continuation's shortest
+    step (step/64, in Ω a tenth of the band each unit) from the turn: the new impact's region is
+    as narrow as its distance from the grazing, and from an orbit nearer than that the
+    continuation meets the grazing within its shortest step; the branch is traced with
+    BESIDE_STEP of the step for the same reason (measured on the README's curve, the turn at
+    30.6907 rad/s: from the orbits beside 4e-4 and 7e-4 rad/s from it the continuation crosses
+    onto other orbits at once with either step; from those 1.6e-3 and 2.4e-3 rad/s away it
+    does so with the curve's step and follows the 14-impact orbits down through their fold and
+    stable stretch with an eighth of it, as from 3.7e-3 rad/s away with either)."""
+    n = turned.period_multiple
+    shortest = step / 64 * (band[1] - band[0]) / 10.0
+    away = [p for p in turned.points[1:] if abs(p.omega - turned.origin_omega) >= shortest]
+    for p in away[:BESIDE_TRIES]:
+        got = orbit_beside_grazing(system, forcing.at(p.omega, p.phase), e, p.state, band,
+                                   periods=n)  # fmt: skip
+        if got is None:
+            continue
+        state, fs = got
+        try:
+            orbit = shoot(system, fs, e, state, periods=n)
+            if _traced(out.branches, system, fs, e, fs.omega, orbit.amplitude, n):
+                return
+            new = _trace(system, fs, e, orbit.state, band, n, step * BESIDE_STEP)
+        except SymimpactError as exc:
+            failures.setdefault(f"beside a turned branch: {exc}", []).append(fs.omega)
+            return
+        new.origin = f"beside the branch turned back at Ω = {turned.origin_omega:.6g} rad/s"
+        new.origin_omega = fs.omega
+        out.branches.append(new)
+        return
 
 
 def _switch_at(out, i, system, forcing, e, band, step, failures, budget) -> None:
