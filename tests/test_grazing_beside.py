@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symimpact.errors import MethodNotApplicable
+from symimpact.errors import MethodNotApplicable, ParameterError
 from symimpact.forced import CompliantContact, Forcing, shoot, simulate_forced
 from symimpact.forced.continuation import (
     continue_orbit,
@@ -106,7 +106,9 @@ def test_the_branch_beside_holds_the_motion_a_long_run_settles_on(beside):
     )
 
 
-def test_beside_refuses_a_compliant_contact():
+def test_beside_refuses_a_compliant_contact_and_a_band_without_the_frequency():
     with pytest.raises(MethodNotApplicable, match="rigid"):
         orbit_beside_grazing(SYSTEM, Forcing(F0=2.0, omega=OMEGA), CompliantContact("linear"),
                              START, BAND)  # fmt: skip
+    with pytest.raises(ParameterError, match="bounds"):
+        orbit_beside_grazing(SYSTEM, Forcing(F0=2.0, omega=OMEGA), E, START, (40.0, 45.0))

@@ -1318,7 +1318,11 @@ def orbit_beside_grazing(
         raise MethodNotApplicable("orbit_beside_grazing", "flights between rigid impacts only")
     s0 = checks.state("state", state)
     periods = checks.whole_number("periods", periods, 1, MAX_PERIODS)
-    problem = _problem(system, forcing, e, s0, periods, bounds, "omega")
+    lo, hi = checks.bounds("bounds", bounds)
+    if not 0 < lo <= forcing.omega <= hi:
+        raise ParameterError("bounds", f"a positive band holding Ω = {forcing.omega:g} rad/s, "
+                                       f"got {lo:g}–{hi:g}")  # fmt: skip
+    problem = _problem(system, forcing, e, s0, periods, (lo, hi), "omega")
     axis = np.array([0, 0, 0, 0, 1.0])
     got = _correct(problem, np.concatenate([s0 / problem.scale, [forcing.omega / problem.unit]]),
                    axis)  # fmt: skip
