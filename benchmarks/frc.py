@@ -19,7 +19,8 @@ also measures the curve: the share of its periodic attractors that lie on a trac
 (issue 33's target ≥ 99 %), those missed, and its highest stable motion beside the located peak;
 then the same for the curve with folds (``frf --folds``: branches turned back at the grazings
 where they end) and for the curve with the orbits embedded in the multi-start's chaotic motions
-(``frf --embedded``), each with its cost against the default curve's.
+(``frf --embedded``) and for the curve with both, each with its cost against the default
+curve's.
 
 The same comparison follows with the contact compliant: the linear law (k1 1e6 N/m, c1 from
 Step 9 for the same e), every contact integrated, the curve's shooting carrying the contact's
@@ -127,6 +128,12 @@ def main() -> None:
           f"({len(curve.branches)} branches, {found_in} of them from orbits embedded in a chaotic "
           f"motion); ratio to the default curve {embedded.median / full.median:.2f}")  # fmt: skip
     print(_coverage_line(curve, shot))
+    both = timed(lambda: frequency_response(SYSTEM, FORCING, E, BAND, sweeps=False, folds=True,
+                                            embedded=True))  # fmt: skip
+    print(f"the curve with both (symimpact frf --folds --embedded): {both.s()}  "
+          f"({len(both.out.branches)} branches); ratio to the default curve "
+          f"{both.median / full.median:.2f}")  # fmt: skip
+    print(_coverage_line(both.out, shot))
     law = CompliantContact("linear")
     soft = timed(lambda: frequency_response(COMPLIANT, FORCING, law, BAND, sweeps=False,
                                             multistart=0))  # fmt: skip
