@@ -16,7 +16,11 @@ multi-start brute force of the same band: the same four starts at every one of t
 frequencies, each run settled to 1e-6 and its periodic motion shot (what it takes to list the
 attractors frequency by frequency without continuation; target ratio ≥ 10).  The brute force
 also measures the curve: the share of its periodic attractors that lie on a traced branch
-(issue 33's target ≥ 99 %), those missed, and its highest stable motion beside the located peak;
+(issue 33's target ≥ 99 %), those missed, and its highest stable motion beside the located peak.
+The 200-frequency brute force finds the peak to 1 % only; matched to the curve's accuracy on the
+peak (1e-6, issue 33's tolerance) it needs a frequency inside the peak's window on the branch,
+whose width gives the frequencies it takes (checked by a run at that spacing around the peak)
+and, at its measured cost a frequency, its time over the band (projected, not run);
 then the same for the curve with folds (``frf --folds``: branches turned back at the grazings
 where they end) and for the curve with the orbits embedded in the multi-start's chaotic motions
 (``frf --embedded``) and for the curve with both, each with its cost against the default
@@ -31,10 +35,13 @@ python -m benchmarks.frc
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from symimpact.generated import rigid_impact as ri
 
 from symimpact.forced.contact_law import CompliantContact
+from symimpact.forced.continuation import orbits_at
 from symimpact.forced.coverage import attractors
 from symimpact.forced.forcing import Forcing
 from symimpact.forced.frf import MAX_SWITCH_PERIODS, _sweep, _traced, frequency_response
@@ -61,6 +68,57 @@ def _coverage_line(curve, shot) -> str:
     return (f"  the brute force's periodic attractors on its branches: {sum(on)} of {len(shot)} "
             f"({sum(on) / len(shot):.1%}); missed at Ω (rad/s): "
             f"{', '.join(f'{w:g}' for w in missed)}")  # fmt: skip
+
+
+#: The accuracy of the located peak the brute force is matched to: issue 33's tolerance for an
+#: attractor on a branch (amplitude within 1e-6 relative).
+PEAK_ACCURACY = 1e-6
+
+
+def _peak_window(curve, tau: float) -> tuple[float, float]:
+    """The Ω interval around the curve's located peak where its branch's stable amplitude is
+    within ``tau`` of the peak (each end by bisection on the branch's exact orbits,
+    :func:`orbits_at`): a grid finds the peak to ``tau`` only with a frequency inside it."""
+    pk = curve.peak
+    b = curve.branches[pk.branch]
+    target = (1.0 - tau) * pk.amplitude
+
+    def held(w: float) -> bool:
+        stable = [o.amplitude for o in orbits_at(b, SYSTEM, FORCING.at(w, b.phase), E, w)
+                  if o.stable]  # fmt: skip
+        return bool(stable) and min(stable, key=lambda a: abs(a - pk.amplitude)) >= target
+
+    ends = []
+    for sign in (-1.0, 1.0):
+        inner, d = pk.omega, 1e-6
+        while held(pk.omega + sign * d):
+            inner, d = pk.omega + sign * d, 2.0 * d
+        outer = pk.omega + sign * d
+        for _ in range(50):
+            m = 0.5 * (inner + outer)
+            inner, outer = (m, outer) if held(m) else (inner, m)
+        ends.append(inner)
+    return ends[0], ends[1]
+
+
+def _equal_accuracy(curve, per_frequency: float, curve_time: float) -> None:
+    """The multi-start brute force matched to the curve's accuracy on the peak (PEAK_ACCURACY):
+    the grid spacing it needs (the peak's window, :func:`_peak_window`), checked by a run of
+    the brute force at that spacing around the peak, and its cost over the whole band at the
+    200-frequency brute force's measured cost a frequency (projected, not run: ~18 minutes)."""
+    lo, hi = _peak_window(curve, PEAK_ACCURACY)
+    w = hi - lo
+    n = math.ceil((BAND[-1] - BAND[0]) / w)
+    pk = curve.peak
+    local = attractors(SYSTEM, FORCING, E, (pk.omega - 3 * w, pk.omega + 3 * w), 5)
+    top = max(a.amplitude for a in local if a.kind == "periodic" and a.stable)
+    print(f"  the brute force matched to the located peak (to {PEAK_ACCURACY:g}): the peak's "
+          f"window is {w:.3g} rad/s wide, so {n} frequencies; at that spacing around the peak "
+          f"its highest stable motion is within {abs(top - pk.amplitude) / pk.amplitude:.1e} of "
+          f"the located peak; at {per_frequency * 1e3:.1f} ms a frequency (measured above) the "
+          f"band takes {n * per_frequency:.0f} s (projected): {n * per_frequency / curve_time:.0f} "
+          "times the default curve, which also gives stability, unstable orbits and "
+          "bifurcations")  # fmt: skip
 
 
 def main() -> None:
@@ -113,6 +171,7 @@ def main() -> None:
           f"{r.peak.amplitude * 1e3:.4g} mm at {r.peak.omega:.4g} rad/s")  # fmt: skip
     missed = sorted({round(a.omega, 2) for a, t in zip(shot, on, strict=True) if not t})
     print(f"  missed at Ω (rad/s): {', '.join(f'{w:g}' for w in missed)}")
+    _equal_accuracy(r, brute.median / len(BAND), full.median)
     folded = timed(lambda: frequency_response(SYSTEM, FORCING, E, BAND, sweeps=False, folds=True))
     rf = folded.out
     turned = sum(b.origin.startswith("turned back") for b in rf.branches)
