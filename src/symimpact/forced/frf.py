@@ -554,8 +554,8 @@ def _beside(out, system, forcing, e, band, step, turned, failures) -> None:
     for p in away[:BESIDE_TRIES]:
         got = orbit_beside_grazing(system, forcing.at(p.omega, p.phase), e, p.state, band,
                                    periods=n)  # fmt: skip
-        if got is None:
-            continue
+        if got is None or not band[0] <= got[1].omega <= band[1]:
+            continue  # (Newton's method within the hyperplane may leave the band)
         state, fs = got
         try:
             orbit = shoot(system, fs, e, state, periods=n)
