@@ -1231,6 +1231,27 @@ def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, located, go_o
     return back
 
 
+def _wall_push(problem: _Problem, y0, res0, t):
+    """The flight's turning point nearest a wall in the orbit y0 (its simulation ``res0``): its
+    distance from the wall over d/2 and the gradient of its reach towards the wall within the
+    hyperplane normal to t (:func:`_reach_gradient`) with its squared norm, (gap, grad, norm2):
+    a step push·gap/norm2·grad puts it (push − 1)·gap past the wall to first order.  False where
+    no flight turns, None where the gradient meets other impacts or vanishes."""
+    times, gaps = _turns(problem, res0)
+    if not len(gaps):
+        return False
+    tau, gap = float(times[np.argmin(gaps)]), float(gaps.min())
+    side = math.copysign(1.0, float(state_at(res0, np.array([tau]))[0, 2]))
+    grad = _reach_gradient(problem, y0, len(res0.events), tau, side)
+    if grad is None:
+        return None
+    grad = grad - (grad @ t) * t  # within the hyperplane
+    norm2 = float(grad @ grad)
+    if not norm2 > 0:
+        return None
+    return gap, grad, norm2
+
+
 #: The distances behind a grazing (shares of the located step) at which :func:`_fold_back` looks
 #: for the orbits with the new impact, and how far past the wall (multiples of the old orbit's
 #: distance from it) the turning point is pushed to start Newton's method there.
@@ -1261,18 +1282,12 @@ def _fold_back(problem: _Problem, y, t, ds, before: BranchPoint, located):
         if got is None or got is GRAZE:
             continue
         y0, _, _, res0 = got
-        times, gaps = _turns(problem, res0)
-        if not len(gaps):
+        push_dir = _wall_push(problem, y0, res0, t)
+        if push_dir is False:
             return None
-        tau, gap = float(times[np.argmin(gaps)]), float(gaps.min())
-        side = math.copysign(1.0, float(state_at(res0, np.array([tau]))[0, 2]))
-        grad = _reach_gradient(problem, y0, len(res0.events), tau, side)
-        if grad is None:
+        if push_dir is None:
             continue
-        grad = grad - (grad @ t) * t  # within the hyperplane
-        norm2 = float(grad @ grad)
-        if not norm2 > 0:
-            continue
+        gap, grad, norm2 = push_dir
         for push in FOLD_PUSH:
             new = _correct_within(problem, y + s_back * t, t, y0 + push * gap / norm2 * grad)
             if new is None:
@@ -1330,18 +1345,10 @@ def orbit_beside_grazing(
         return None
     y0, J, _, res0 = got
     t = _tangent(J, axis)
-    times, gaps = _turns(problem, res0)
-    if not len(gaps):
+    push_dir = _wall_push(problem, y0, res0, t)
+    if not push_dir:
         return None
-    tau, gap = float(times[np.argmin(gaps)]), float(gaps.min())
-    side = math.copysign(1.0, float(state_at(res0, np.array([tau]))[0, 2]))
-    grad = _reach_gradient(problem, y0, len(res0.events), tau, side)
-    if grad is None:
-        return None
-    grad = grad - (grad @ t) * t
-    norm2 = float(grad @ grad)
-    if not norm2 > 0:
-        return None
+    gap, grad, norm2 = push_dir
     count = _events(res0, periods)
     for push in BESIDE_PUSH:
         new = _correct_within(problem, y0, t, y0 + push * gap / norm2 * grad)
