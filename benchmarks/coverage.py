@@ -7,7 +7,7 @@ linear contact, d 9, 15 and 25 mm).
 Each system's multi-start brute force (four initial states at each of 200 frequencies, each
 periodic motion shot; :func:`symimpact.forced.coverage.attractors`) lists its periodic
 attractors of at most four periods, and each curve (``symimpact frf --no-sweeps``, by default
-and with ``--embedded``) is measured against them: the share on a traced branch (amplitude
+with ``--embedded`` and with ``--folds --embedded``) is measured against them: the share on a traced branch (amplitude
 within 1e-7 relative, :func:`symimpact.forced.frf._traced`) and the frequencies of those missed.
 These are coverage figures, not speed targets: each curve and brute force runs once, and its
 time is that one run's.  Run from the checkout: python -m benchmarks.coverage
@@ -59,7 +59,9 @@ def main() -> None:
     cases = [twelve_hertz(), *report_curves()]
     # numba compiles on the first call: one small curve before timing
     frequency_response(*cases[0][1:4], cases[0][4][:3], starts=1, sweeps=False, multistart=1)
-    totals = {False: [0, 0], True: [0, 0]}
+    modes = {"frf (default)": {}, "frf --embedded": {"embedded": True},
+             "frf --folds --embedded": {"folds": True, "embedded": True}}  # fmt: skip
+    totals = {mode: [0, 0] for mode in modes}
     for name, system, forcing, e, band in cases:
         t0 = time.perf_counter()
         found = attractors(system, forcing, e, (band[0], band[-1]), BRUTE)
@@ -71,23 +73,22 @@ def main() -> None:
               f"multi-start brute force at {BRUTE} frequencies {brute:.1f} s (one run), "
               f"{len(found)} attractors, {len(shot)} periodic of at most "
               f"{MAX_SWITCH_PERIODS} periods")  # fmt: skip
-        for embedded in (False, True):
+        for mode, options in modes.items():
             t0 = time.perf_counter()
-            r = frequency_response(system, forcing, e, band, sweeps=False, embedded=embedded)
+            r = frequency_response(system, forcing, e, band, sweeps=False, **options)
             took = time.perf_counter() - t0
             on = [_traced(r.branches, system, forcing.at(a.omega), e, a.omega, a.amplitude,
                           a.period_multiple) for a in shot]  # fmt: skip
-            totals[embedded][0] += sum(on)
-            totals[embedded][1] += len(shot)
+            totals[mode][0] += sum(on)
+            totals[mode][1] += len(shot)
             missed = sorted({round(a.omega, 2) for a, t in zip(shot, on, strict=True) if not t})
             share = f"{sum(on) / len(shot):.1%}" if shot else "none to find"
-            print(f"  {'frf --embedded' if embedded else 'frf (default)':>14}: {took:.1f} s "
+            print(f"  {mode:>22}: {took:.1f} s "
                   f"(one run), {len(r.branches)} branches, {sum(on)} of {len(shot)} on them "
                   f"({share}); missed at Ω (rad/s): {', '.join(f'{w:g}' for w in missed) or '-'}; "
                   f"located peak {r.peak.amplitude * 1e3:.4g} mm ({r.peak.motion})")  # fmt: skip
-    for embedded, (on, n) in totals.items():
-        print(f"all four: {'frf --embedded' if embedded else 'frf (default)'} {on} of {n} "
-              f"({on / n:.1%}; target >= 99 %)")  # fmt: skip
+    for mode, (on, n) in totals.items():
+        print(f"all four: {mode} {on} of {n} ({on / n:.1%}; target >= 99 %)")
 
 
 if __name__ == "__main__":

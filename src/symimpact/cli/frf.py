@@ -43,7 +43,7 @@ def add_parser(sub: Any) -> None:
                    "fold), and trace the orbits with one more impact beside each turned branch; "
                    "more of the curve's orbits, at more cost (about twice the time on the "
                    "README's system over 25-45 rad/s, benchmark 6; with --embedded as well, "
-                   "2.6 times and 127 of the 128 periodic motions a 200-frequency brute force "
+                   "2.5 times and 127 of the 128 periodic motions a 200-frequency brute force "
                    "finds on the curve)")  # fmt: skip
     g.add_argument("--embedded", action="store_true",
                    help="also trace the periodic orbits embedded in the multi-start's chaotic "

@@ -422,9 +422,9 @@ def _embedded(found, system, forcing, e, failures, follow) -> None:
     note).  Unstable where they are found, they lead to the stable windows inside a chaotic
     band that lie between the multi-start's frequencies: on the README system the period-3
     window at 28.125–28.199 rad/s, from the chaotic motion at 28.75 rad/s (benchmark 6's band:
-    32 more branches, 125 → 127 of the 200-frequency brute force's 128 periodic attractors on
-    the curve, the curve 1.7 times as long).  Done after the other starts (their budgets spent
-    as before); the new branches are not switched or jumped from."""
+    32 more branches, 124 → 126 of the 200-frequency brute force's 128 periodic attractors on
+    the curve, the curve 1.5 times as long; with ``folds`` as well, 127).  Done after the other
+    starts (their budgets spent as before); the new branches are not switched or jumped from."""
     for a in found:
         if a.kind not in EMBEDDING:
             continue
