@@ -271,6 +271,28 @@ def test_the_energy_ledger_closes_for_three_modes_and_two_dampers():
     assert sticky.energy["relative_residual"] < 1e-11
 
 
+def test_a_run_without_its_energy_ledger_is_the_same_motion_to_the_bit():
+    """``energy=False`` leaves the flights' work and dissipation unintegrated (the Gauss–Legendre
+    rules of the riding mass's flights are most of a run's cost) and changes nothing else: the
+    same events, period maxima and final state, bit for bit, with chatter, sticking and base
+    motion; its ``energy`` is None, and a flag other than True or False is refused."""
+    light = _beam(modes=3)
+    ds = dampers(light, [{"name": "tip", "at": "tip", "m": 0.05, "gap": "10 mm", "e": 0.6},
+                         {"name": "mid", "at": "mid", "m": 0.03, "gap": "3 mm", "e": 0.3}])  # fmt: skip
+    for base in (0.0, 1e-4):
+        kept = simulate_structure(light, ds, "tip", 1.0, 2 * math.pi * 8.0, periods=40, base=base)
+        bare = simulate_structure(light, ds, "tip", 1.0, 2 * math.pi * 8.0, periods=40, base=base,
+                                  energy=False)  # fmt: skip
+        kinds = np.bincount(kept.events[:, 7].astype(int), minlength=3)
+        assert kinds[1] > 5 and kinds[2] > 5  # accumulations and releases: a mass rides
+        assert kept.energy["relative_residual"] < 1e-11 and bare.energy is None
+        assert np.array_equal(kept.events, bare.events)
+        assert np.array_equal(kept.period_max, bare.period_max)
+        assert np.array_equal(kept.final_state, bare.final_state)
+    with pytest.raises(ParameterError, match="energy"):
+        simulate_structure(light, ds, "tip", 1.0, 50.0, periods=2, energy=1)
+
+
 def test_bad_input_is_refused_in_one_line():
     s = _beam()
     good = {"name": "a", "at": "tip", "m": 0.05, "gap": "10 mm", "e": 0.8}

@@ -1466,29 +1466,14 @@ def _mode_ledger_at(pm, i, x0, v0, tau, c, sn, eW):
 
 
 @njit(cache=True)
-def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work, Sphi,
-             sc, contact, xb):  # fmt: skip
-    """Account for the flight [t0, t0 + τ]: the work of the modal forces and the dissipation of
-    the Cᵢ (ledger[0], ledger[1]) in closed form while the modes are uncoupled
-    (:func:`_mode_ledger`), else by Gauss–Legendre rules on steps of at most 0.75/λ_max (8 points;
-    4 where the step is below 0.05/λ_max; λ_max of :func:`_pack`, their errors in the code), with
-    the pressed stops' dashpots, c₁(φₛᵀq̇)² (ledger[3]); and, for every
-    output point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period
-    crossed (``period_max[k, p]``), at the ends of the steps and at the zeros of ẋₚ inside them.
-    Within a step of length h, abs(xₚ) ≤ max(abs(xₚ(a)), abs(xₚ(b))) + Aₚh²/8 (Aₚ ≥ abs(ẍₚ), as
-    the impact search bounds it): a step whose bound cannot raise the period's maximum is taken,
-    so is one over which ẋₚ keeps its sign (ẋₚ(a) + ẋₚ(b) > Aₚh, of one sign: the extremes are
-    its ends), and any other is halved down to a sixteenth of the shortest period, where a zero
-    of ẋₚ is located where its sign changes (with several modes, ẋₚ ripples at the highest
-    mode's frequency and most of its zeros are such).  Under base motion (``xb`` = X_b) the
-    output points' displacements are absolute, x_b + φₚᵀq."""
-    N, P = pm.shape[0], Pout.shape[0]
-    dec = cfg[6]
-    Ap, Bp, v_prev, x_prev = work[10], work[11], work[12], work[13]
-    xs, vs, fine = work[19], work[20], work[21]
+def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, contact, dec):
+    """The energy ledger over the flight [t0, t0 + τ] (:func:`_segment`, which calls it with
+    ``energy``): the work of the modal forces and the dissipation of the Cᵢ (ledger[0],
+    ledger[1]) in closed form while the modes are uncoupled (``dec``, :func:`_mode_ledger`), else
+    by Gauss–Legendre rules, with the pressed stops' dashpots (ledger[3]).  ``work``'s rows 3
+    and 4 are scratch for the states at the nodes."""
+    N = pm.shape[0]
     W = pm[0, P_W]
-    T_f = 2.0 * math.pi / W
-    hq = 2.0 * math.pi / cfg[8] / 16.0
     q, v = work[3], work[4]
     closed = dec
     if dec:
@@ -1541,6 +1526,35 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                         if contact[r] != 0:
                             rate = _dot(Sphi, r, v)
                             ledger[3] += 0.5 * hs * weight * sc[r] * rate * rate
+
+
+@njit(cache=True)
+def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work, Sphi,
+             sc, contact, xb, energy):  # fmt: skip
+    """Account for the flight [t0, t0 + τ]: with ``energy``, the work of the modal forces and the
+    dissipation of the Cᵢ (ledger[0], ledger[1]) in closed form while the modes are uncoupled
+    (:func:`_mode_ledger`), else by Gauss–Legendre rules on steps of at most 0.75/λ_max (8 points;
+    4 where the step is below 0.05/λ_max; λ_max of :func:`_pack`, their errors in the code), with
+    the pressed stops' dashpots, c₁(φₛᵀq̇)² (ledger[3]); and, for every
+    output point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period
+    crossed (``period_max[k, p]``), at the ends of the steps and at the zeros of ẋₚ inside them.
+    Within a step of length h, abs(xₚ) ≤ max(abs(xₚ(a)), abs(xₚ(b))) + Aₚh²/8 (Aₚ ≥ abs(ẍₚ), as
+    the impact search bounds it): a step whose bound cannot raise the period's maximum is taken,
+    so is one over which ẋₚ keeps its sign (ẋₚ(a) + ẋₚ(b) > Aₚh, of one sign: the extremes are
+    its ends), and any other is halved down to a sixteenth of the shortest period, where a zero
+    of ẋₚ is located where its sign changes (with several modes, ẋₚ ripples at the highest
+    mode's frequency and most of its zeros are such).  Under base motion (``xb`` = X_b) the
+    output points' displacements are absolute, x_b + φₚᵀq."""
+    N, P = pm.shape[0], Pout.shape[0]
+    dec = cfg[6]
+    Ap, Bp, v_prev, x_prev = work[10], work[11], work[12], work[13]
+    xs, vs, fine = work[19], work[20], work[21]
+    W = pm[0, P_W]
+    T_f = 2.0 * math.pi / W
+    hq = 2.0 * math.pi / cfg[8] / 16.0
+    q, v = work[3], work[4]
+    if energy:
+        _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, contact, dec)
     if P == 0:
         return
     _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp, xb)
@@ -1892,7 +1906,7 @@ def _accumulation_row(pm, cfg, Phi, k, K, t, s, w, a, delta, xb, r_i, fp, G, gra
 
 @njit(cache=True)
 def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0,
-        Pout, xb, t0, t_end, max_events, variational, stuck0, held0, watch):  # fmt: skip
+        Pout, xb, t0, t_end, max_events, variational, stuck0, held0, energy, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
     :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
@@ -1912,6 +1926,10 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     it; a stop's wall is fixed to the ground, which moves with the supports: it stays relative).
     The ledger then closes on the masses' kinetic energies relative to the supports,
     ½m(ẏ − ẋ_b)²: each free mass's change in flight is the work of its inertia −m·ẍ_b.
+    Without ``energy`` the flights' work and dissipation are not integrated
+    (:func:`_flight_ledger`: with a mass riding on a mode shape's point, Gauss–Legendre rules at
+    the highest mode's rate, measured at 44 % of the 10-mode run of benchmark 10) and the ledger
+    is not whole; the motion is the same to the bit.
 
     Returns (status, events, n_events, period_max, ledger, final): the event log (columns of
     :mod:`symimpact.forced._rigid` and E_DAMPER; columns 1, 2, 3, 8, 9 hold the point's
@@ -2033,7 +2051,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
         tau, k, side = _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t, q, v, z, u, side0, T,
                                     watch, work, xb)  # fmt: skip
         _segment(pm, cfg, nstuck, Pout, t, q, v, tau, ledger, period_max, n_periods, work, Sphi,
-                 sc, contact, xb)  # fmt: skip
+                 sc, contact, xb, energy)  # fmt: skip
         _states(pm, cfg, nstuck, t, q, v, tau, qn, vn)
         if smooth:
             _flight_jacobian(pm, cfg, K, tau, G)
@@ -2117,7 +2135,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 if delta <= chat * T_f and t + delta < t_end:
                     smooth = False
                     _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max,
-                             n_periods, work, Sphi, sc, contact, xb)  # fmt: skip
+                             n_periods, work, Sphi, sc, contact, xb, energy)  # fmt: skip
                     _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
                     shift = _base_x(pm, xb, t + delta) - _base_x(pm, xb, t)
                     vb0, vb1 = _base_v(pm, xb, t), _base_v(pm, xb, t + delta)
@@ -2312,7 +2330,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                         _slaved(G, Phi, stuck, N, K)
                 # jump to the accumulation point (the other masses fly on), close plastically
                 _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods,
-                         work, Sphi, sc, contact, xb)  # fmt: skip
+                         work, Sphi, sc, contact, xb, energy)  # fmt: skip
                 _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
                 shift = _base_x(pm, xb, t + delta) - _base_x(pm, xb, t)
                 vb0, vb1 = _base_v(pm, xb, t), _base_v(pm, xb, t + delta)
@@ -2384,14 +2402,15 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
 
 
 @njit(cache=True)
-def one_mode_run(p, state0, t_end, max_events, variational, watch):
+def one_mode_run(p, state0, t_end, max_events, variational, energy, watch):
     """The paper's primary through :func:`run`: one mode of mass M and shape 1 (parameters
     ``p`` in :mod:`symimpact.forced._rigid`'s layout), one damper, from state0 = (x, ẋ, y, ẏ).
     ``variational`` is passed on to :func:`run` as it came (callers give False: the one-mode
     chain is built from the event log, :mod:`symimpact.forced._chain`).  It is an argument, not
     a constant written here, because numba compiles a callee once for each literal it is given:
     a ``False`` typed here would compile the whole engine a second time (minutes on a 2-core
-    machine) beside the structure's own signature, which this one now shares.
+    machine) beside the structure's own signature, which this one now shares; ``energy`` is
+    passed on so too.
 
     Returns (status, events, n_events, period_max, ledger, final) in the one-mode layout: events
     with :mod:`symimpact.forced._rigid`'s ten columns, the largest abs(x) of every period, the
@@ -2404,7 +2423,7 @@ def one_mode_run(p, state0, t_end, max_events, variational, watch):
         np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
         np.zeros(0), state0[0:1].copy(), state0[1:2].copy(),
         state0[2:3].copy(), state0[3:4].copy(), one, 0.0, 0.0, t_end, max_events, variational,
-        np.zeros(1), np.zeros(0), watch,
+        np.zeros(1), np.zeros(0), energy, watch,
     )  # fmt: skip
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
     if final[5] != 0.0:

@@ -332,7 +332,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
     if contact == "rigid":
         status, events, n_ev, period_max, ledger, final = _interrupt.call(
             _modal.one_mode_run, p, np.array(state, dtype=float), t_end,
-            max_contacts or MAX_EVENTS, False,
+            max_contacts or MAX_EVENTS, False, True,
         )  # fmt: skip
     else:
         status, events, period_max, ledger, final, samples, psi, work = _compliant.run(

@@ -141,8 +141,7 @@ def _returns_after(o: StructureOrbit, periods: int, args: tuple, stops: Any, pha
     from .structure_response import simulate_structure
 
     run = simulate_structure(*args, o.run.omega, periods=periods, phase=phase, state=o.state,
-                             base=o.run.X_b,
-                             stops=stops)  # fmt: skip
+                             base=o.run.X_b, stops=stops, energy=False)  # fmt: skip
     n = len(o.state)
     gap = np.linalg.norm(run.final_state[1 : 1 + n] - o.state)
     return bool(gap <= 1e-6 * np.linalg.norm(o.state))
@@ -522,7 +521,8 @@ def settled_run(structure: Structure, dampers: Any, force_at: Any, F0: Any, omeg
 
     waited = settling_periods(structure, float(omega)) if warmup is None else warmup
     run = simulate_structure(structure, dampers, force_at, F0, float(omega), periods=waited + KEPT,
-                             stops=stops, base=_base_at(base, float(omega)))  # fmt: skip
+                             stops=stops, base=_base_at(base, float(omega)),
+                             energy=False)  # fmt: skip
     kept = run.period_max[waited:]  # the KEPT periods after the transient
     entry = {"omega": float(omega), "periods": waited + KEPT,
              "amplitudes": {p: float(kept[:, j].max()) for j, p in enumerate(run.points)}}  # fmt: skip
@@ -564,7 +564,7 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
         s = final[1 : 1 + n]
         for k in range(1, 9):
             back = simulate_structure(*args, w0, periods=k, state=s, stops=stops,
-                                      base=_base_at(base, w0))  # fmt: skip
+                                      base=_base_at(base, w0), energy=False)  # fmt: skip
             if np.linalg.norm(back.final_state[1 : 1 + n] - s) <= 1e-6 * np.linalg.norm(s):
                 break
         else:

@@ -241,7 +241,8 @@ def differenced_monodromy(structure: Structure, dampers: Any, force_at: Any, F0:
 
     def P(x: np.ndarray) -> np.ndarray:
         res = simulate_structure(structure, dampers, force_at, F0, omega, periods=periods,
-                                 phase=phase, state=x, stops=stops, base=base)  # fmt: skip
+                                 phase=phase, state=x, stops=stops, base=base,
+                                 energy=False)  # fmt: skip
         return res.final_state[1 : 1 + 2 * N + 2 * K]
 
     w = float(omega)
