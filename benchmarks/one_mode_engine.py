@@ -84,7 +84,7 @@ def main() -> None:
             return old.run(p, s0, t_end, 10**6, NO_WATCH.copy())
 
         def current(p=p, s0=s0, t_end=t_end):
-            return one_mode_run(p, s0, t_end, 10**6, False, NO_WATCH.copy())
+            return one_mode_run(p, s0, t_end, 10**6, False, True, NO_WATCH.copy())
 
         previous()  # compiled before timing
         current()
