@@ -1470,8 +1470,10 @@ def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, con
     """The energy ledger over the flight [t0, t0 + τ] (:func:`_segment`, which calls it with
     ``energy``): the work of the modal forces and the dissipation of the Cᵢ (ledger[0],
     ledger[1]) in closed form while the modes are uncoupled (``dec``, :func:`_mode_ledger`), else
-    by Gauss–Legendre rules, with the pressed stops' dashpots (ledger[3]).  ``work``'s rows 3
-    and 4 are scratch for the states at the nodes."""
+    by Gauss–Legendre rules on steps of at most 0.75/λ_max (8 points; 4 where the step is below
+    0.05/λ_max; λ_max of :func:`_pack`, their errors in the code), with the pressed stops'
+    dashpots, c₁(φₛᵀq̇)² (ledger[3]).  ``work``'s rows 3 and 4 are scratch for the states at the
+    nodes."""
     N = pm.shape[0]
     W = pm[0, P_W]
     q, v = work[3], work[4]
@@ -1531,12 +1533,8 @@ def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, con
 @njit(cache=True)
 def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work, Sphi,
              sc, contact, xb, energy):  # fmt: skip
-    """Account for the flight [t0, t0 + τ]: with ``energy``, the work of the modal forces and the
-    dissipation of the Cᵢ (ledger[0], ledger[1]) in closed form while the modes are uncoupled
-    (:func:`_mode_ledger`), else by Gauss–Legendre rules on steps of at most 0.75/λ_max (8 points;
-    4 where the step is below 0.05/λ_max; λ_max of :func:`_pack`, their errors in the code), with
-    the pressed stops' dashpots, c₁(φₛᵀq̇)² (ledger[3]); and, for every
-    output point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period
+    """Account for the flight [t0, t0 + τ]: with ``energy``, its energy ledger
+    (:func:`_flight_ledger`); and, for every output point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period
     crossed (``period_max[k, p]``), at the ends of the steps and at the zeros of ẋₚ inside them.
     Within a step of length h, abs(xₚ) ≤ max(abs(xₚ(a)), abs(xₚ(b))) + Aₚh²/8 (Aₚ ≥ abs(ẍₚ), as
     the impact search bounds it): a step whose bound cannot raise the period's maximum is taken,
@@ -1928,8 +1926,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     ½m(ẏ − ẋ_b)²: each free mass's change in flight is the work of its inertia −m·ẍ_b.
     Without ``energy`` the flights' work and dissipation are not integrated
     (:func:`_flight_ledger`: with a mass riding on a mode shape's point, Gauss–Legendre rules at
-    the highest mode's rate, measured at 44 % of the 10-mode run of benchmark 10) and the ledger
-    is not whole; the motion is the same to the bit.
+    the highest mode's rate, up to 44 % of a 10-mode run of benchmark 10, 21 % at the median of
+    its eight) and the ledger is not whole; the motion is the same to the bit.
 
     Returns (status, events, n_events, period_max, ledger, final): the event log (columns of
     :mod:`symimpact.forced._rigid` and E_DAMPER; columns 1, 2, 3, 8, 9 hold the point's
