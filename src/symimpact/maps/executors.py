@@ -5,11 +5,10 @@ turns one chunk into rows (a map's runs by default, or the design map's frequenc
 
 from __future__ import annotations
 
-import os
-import sys
 from collections.abc import Iterator
 from typing import Any
 
+from .._pool import spread
 from ..errors import ParameterError
 from .runs import _run_chunk
 
@@ -22,41 +21,8 @@ def _serial(payloads: list, chunk=None) -> Iterator[list[dict[str, Any]]]:
         yield chunk(p)
 
 
-def _worker_init(parent: int) -> None:
-    """Pool workers end with the map that started them: on Linux the kernel sends SIGTERM when
-    the parent dies (prctl PR_SET_PDEATHSIG), whatever killed it; Ctrl-C is left to the parent,
-    which then ends the pool."""
-    import signal
-
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    for sig in (signal.SIGTERM, signal.SIGHUP):  # not the handlers a forked worker inherits
-        signal.signal(sig, signal.SIG_DFL)
-    if sys.platform.startswith("linux"):
-        import ctypes
-
-        ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGTERM))  # PR_SET_PDEATHSIG
-    if os.getppid() != parent:  # the parent died before the line above took effect
-        os._exit(1)
-
-
 def _processes(payloads: list, workers: int, chunk=None) -> Iterator[list[dict[str, Any]]]:
-    chunk = chunk or _run_chunk
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-
-    pool = ProcessPoolExecutor(
-        max_workers=workers, initializer=_worker_init, initargs=(os.getpid(),)
-    )
-    finished = False
-    try:
-        futures = [pool.submit(chunk, p) for p in payloads]
-        for f in as_completed(futures):
-            yield f.result()
-        finished = True
-    finally:
-        if not finished:  # interrupted, terminated or failed: do not wait for running chunks
-            for proc in list((getattr(pool, "_processes", None) or {}).values()):
-                proc.terminate()
-        pool.shutdown(wait=True, cancel_futures=True)
+    yield from spread(chunk or _run_chunk, payloads, workers)
 
 
 #: How long a Dask map waits with no worker before it gives up (all workers lost), and how

@@ -1,0 +1,83 @@
+"""Local worker processes shared by the stages that spread independent runs over the machine's
+cores: the maps (:mod:`symimpact.maps.executors`) and the multi-start of a frequency-response
+curve (:func:`symimpact.forced.coverage.attractors`).  A worker ends with the process that
+started it, ignores Ctrl-C (the parent ends the pool), and never starts a pool of its own."""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import sys
+import threading
+from collections.abc import Callable, Iterator
+from typing import Any
+
+#: True inside a worker started here: its own work runs in it, never on a nested pool.
+IN_WORKER = False
+
+
+def worker_init(parent: int) -> None:
+    """Pool workers end with the process that started them: on Linux the kernel sends SIGTERM
+    when the parent dies (prctl PR_SET_PDEATHSIG), whatever killed it; Ctrl-C is left to the
+    parent, which then ends the pool."""
+    import signal
+
+    global IN_WORKER
+    IN_WORKER = True
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    for sig in (signal.SIGTERM, signal.SIGHUP):  # not the handlers a forked worker inherits
+        signal.signal(sig, signal.SIG_DFL)
+    if sys.platform.startswith("linux"):
+        import ctypes
+
+        ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGTERM))  # PR_SET_PDEATHSIG
+    if os.getppid() != parent:  # the parent died before the line above took effect
+        os._exit(1)
+
+
+def can_spread() -> bool:
+    """Whether this process may start worker processes: not a worker itself (of this pool, or a
+    daemonic one such as a Dask worker's), and called from the main thread (a fork copies only
+    the calling thread)."""
+    return (
+        not IN_WORKER
+        and not multiprocessing.current_process().daemon
+        and threading.current_thread() is threading.main_thread()
+    )
+
+
+def spread(fn: Callable[[Any], Any], payloads: list, workers: int) -> Iterator[Any]:
+    """``fn(p)`` for each payload on ``workers`` local processes, yielded as they finish; an
+    interrupted, terminated or failed pool does not wait for the runs still going."""
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    pool = ProcessPoolExecutor(max_workers=workers, initializer=worker_init,
+                               initargs=(os.getpid(),))  # fmt: skip
+    finished = False
+    try:
+        futures = [pool.submit(fn, p) for p in payloads]
+        for f in as_completed(futures):
+            yield f.result()
+        finished = True
+    finally:
+        if not finished:
+            for proc in list((getattr(pool, "_processes", None) or {}).values()):
+                proc.terminate()
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
+def ordered(fn: Callable[[Any], Any], payloads: list, workers: int) -> list[Any]:
+    """``[fn(p) for p in payloads]``, on ``workers`` processes where this process may start them
+    (:func:`can_spread`) and there is more than one payload, else here."""
+    if workers <= 1 or len(payloads) < 2 or not can_spread():
+        return [fn(p) for p in payloads]
+    tagged = [(fn, i, p) for i, p in enumerate(payloads)]
+    out: list[Any] = [None] * len(payloads)
+    for i, r in spread(_tagged, tagged, min(workers, len(payloads))):
+        out[i] = r
+    return out
+
+
+def _tagged(job: tuple) -> tuple[int, Any]:
+    fn, i, p = job
+    return i, fn(p)
