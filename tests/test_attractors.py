@@ -140,3 +140,16 @@ def test_the_band_s_end_intervals_are_refined():
                                multistart=1, jumps=0)  # fmt: skip
     for a in brute:
         assert _traced(curve.branches, system, forcing.at(a.omega), e, a.omega, a.amplitude, 3)
+
+
+def test_the_initial_states_spread_over_processes_land_as_in_one():
+    # each initial state's runs and halvings are independent: two processes return the
+    # attractors one process finds, in the same order, to the bit (28–31 rad/s holds chaotic,
+    # periodic and chattering landings, so the refinement halves in every process)
+    from symimpact.forced.coverage import attractors
+
+    forcing = Forcing(F0=2.0, omega=30.0)
+    one = attractors(SYSTEM, forcing, E, (28.0, 31.0), 3, refine=True, workers=1)
+    two = attractors(SYSTEM, forcing, E, (28.0, 31.0), 3, refine=True, workers=2)
+    assert len(one) > 10
+    assert one == two

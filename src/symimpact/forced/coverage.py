@@ -38,12 +38,15 @@ from __future__ import annotations
 
 import itertools
 import math
+import os
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from .. import _pool
 from ..errors import SymimpactError
+from ..model import checks
 from ..model.system import ImpactSystem
 from .contact_law import is_rigid, simulation_arguments
 from .forcing import Forcing
@@ -331,9 +334,58 @@ def _landing_key(a: Attractor | None) -> tuple | None:
     return kind, a.period_multiple, round(a.impacts_per_period, 6)
 
 
+def _landings(job: tuple) -> tuple[list, list, list]:
+    """One initial state's runs of :func:`attractors`: its landing at each multi-start frequency
+    (None where the run failed), and with ``refine`` the shot periodic landings at the band's
+    ends and at the halving points, each as (Ω, attractor) in the order they were found."""
+    system, forcing, e, band, ws, j, refine = job
+    landing: dict[float, Attractor | None] = {}
+    base: list[Attractor | None] = []
+    for w in ws:
+        f = forcing.at(w)
+        try:
+            a = attractor(system, f, e, initial_states(system, f)[j])
+        except SymimpactError:
+            a = None
+        landing[w] = a
+        base.append(a)
+    ends: list[tuple[float, Attractor]] = []
+    halved: list[tuple[float, Attractor]] = []
+    if not refine:
+        return base, ends, halved
+    width = band[1] - band[0]
+
+    def landed(w: float, into: list) -> Attractor | None:
+        """Where the initial state lands at ``w``, its exponent not computed; a shot periodic
+        landing is kept ``into``."""
+        f = forcing.at(w)
+        try:
+            a = attractor(system, f, e, initial_states(system, f)[j], exponent=False)
+        except SymimpactError:
+            return None
+        if a.kind == "periodic" and a.stable is not None:
+            into.append((w, a))
+        return a
+
+    # the band's ends bound the first and last intervals, which are halved like the others
+    # (a stable window between the last frequency and the band's end is otherwise never run)
+    for w in band:
+        landing[w] = landed(w, ends)
+    stack = [(a, b, landing.get(a), landing.get(b))
+             for a, b in itertools.pairwise([band[0], *ws, band[1]])]  # fmt: skip
+    while stack:
+        a, b, la, lb = stack.pop()
+        if _landing_key(la) == _landing_key(lb) or b - a < 2 * REFINE * width:
+            continue
+        m = 0.5 * (a + b)
+        lm = landed(m, halved)
+        stack += [(a, m, la, lm), (m, b, lm, lb)]
+    return base, ends, halved
+
+
 def attractors(
     system: ImpactSystem, forcing: Forcing, e: Any, band: tuple[float, float],
-    n: int = FREQUENCIES, *, refine: bool = False,
+    n: int = FREQUENCIES, *, refine: bool = False, workers: int | None = None,
 ) -> list[Attractor]:  # fmt: skip
     """The attractors of the multi-start over ``band`` (module text), each distinct one at a
     frequency once, in the order of the frequencies.  With ``refine``, each initial state's
@@ -341,50 +393,24 @@ def attractors(
     frequency) is halved where its landings at the ends differ (:data:`REFINE`); the shot
     periodic landings at the band's ends and the halving points are added (those of at
     most MAX_SHOT_PERIODS periods, which a curve traces; a motion that does not repeat there is
-    not added: its exponent is not computed)."""
-    ws = [float(w) for w in frequencies(band, n)]
+    not added: its exponent is not computed).  The initial states' runs are independent: they
+    are spread over ``workers`` local processes (None: one per core, at most STARTS; one, or a
+    call from a worker or another thread: here), with the same outcome in the same order."""
+    if workers is None:
+        workers = min(STARTS, os.cpu_count() or 1)
+    workers = checks.whole_number("workers", workers, 1, 1024)
+    ws = tuple(float(w) for w in frequencies(band, n))
+    parts = _pool.ordered(_landings, [(system, forcing, e, band, ws, j, refine)
+                                      for j in range(STARTS)], workers)  # fmt: skip
+    # gathered in the order one process would find them: by frequency and then initial state,
+    # then the band ends' and the halvings' landings, initial state by initial state
     runs: dict[float, list[Attractor]] = {w: [] for w in ws}
-    landing: dict[tuple[float, int], Attractor | None] = {}
-    for w in ws:
-        f = forcing.at(w)
-        for j, s in enumerate(initial_states(system, f)):
-            try:
-                a = attractor(system, f, e, s)
-            except SymimpactError:
-                a = None
-            landing[w, j] = a
-            if a is not None:
-                runs[w].append(a)
-    if refine:
-        width = band[1] - band[0]
-
-        def landed(w: float, j: int) -> Attractor | None:
-            """Where initial state j lands at ``w``, its exponent not computed; a shot periodic
-            landing is added to the multi-start's attractors."""
-            f = forcing.at(w)
-            try:
-                a = attractor(system, f, e, initial_states(system, f)[j], exponent=False)
-            except SymimpactError:
-                return None
-            if a.kind == "periodic" and a.stable is not None:
-                runs.setdefault(w, []).append(a)
-            return a
-
-        # the band's ends bound the first and last intervals, which are halved like the others
-        # (a stable window between the last frequency and the band's end is otherwise never run)
-        for j in range(STARTS):
-            for w in band:
-                landing[w, j] = landed(w, j)
-        for j in range(STARTS):
-            stack = [(a, b, landing.get((a, j)), landing.get((b, j)))
-                     for a, b in itertools.pairwise([band[0], *ws, band[1]])]  # fmt: skip
-            while stack:
-                a, b, la, lb = stack.pop()
-                if _landing_key(la) == _landing_key(lb) or b - a < 2 * REFINE * width:
-                    continue
-                m = 0.5 * (a + b)
-                lm = landed(m, j)
-                stack += [(a, m, la, lm), (m, b, lm, lb)]
+    for i, w in enumerate(ws):
+        runs[w] += [base[i] for base, _, _ in parts if base[i] is not None]
+    for w, a in [wa for _, ends, _ in parts for wa in ends] + [
+        wa for _, _, halved in parts for wa in halved
+    ]:
+        runs.setdefault(w, []).append(a)
     found: list[Attractor] = []
     for w in sorted(runs):
         here: list[Attractor] = []
