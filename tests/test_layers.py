@@ -1,7 +1,7 @@
 """The runtime's folders are its pipeline, model → free → forced → maps → report → cli, and
 imports flow that way only: no module imports from a folder after its own (read from the source's
 import statements, lazy ones inside functions included).  ``errors``, ``io``, ``_interrupt``,
-``budgets`` (the forced computations' work budgets, which the command line reads without
+``_pool`` (local worker processes, for the maps and a curve's multi-start), ``budgets`` (the forced computations' work budgets, which the command line reads without
 importing the forced package), ``export`` and the generated kernels serve every folder and import
 none of them."""
 
@@ -16,7 +16,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 PKG = ROOT / "src" / "symimpact"
 LAYERS = ["model", "free", "forced", "maps", "report", "cli"]
-SHARED = {"errors", "io", "_interrupt", "budgets", "export", "generated"}
+SHARED = {"errors", "io", "_interrupt", "_pool", "budgets", "export", "generated"}
 
 
 def _rank(part: str) -> int:

@@ -159,13 +159,12 @@ def test_other_commands_refuse_what_a_file_with_dampers_does_not_take(tmp_path, 
     assert "φ(tip)" in capsys.readouterr().out
 
 
-def test_workers_spread_a_structure_curve_and_are_refused_elsewhere(tmp_path, capsys):
-    """``frf --workers`` spreads a --structure curve's runs from rest over processes; a
-    one-mode curve runs in one process and refuses it in one line, as it refuses zero
-    workers."""
+def test_workers_spread_a_curve_s_runs_and_zero_is_refused(tmp_path, capsys):
+    """``frf --workers`` spreads a --structure curve's runs from rest, and a one-mode curve's
+    multi-start, over processes; zero workers is refused in one line, exit 2, for both."""
     code = main(["frf", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm",
                  "--contact", "rigid", "--e", "0.6", "--force", "2", "--omega-range",
-                 "30:31:0.5", "--workers", "2"])  # fmt: skip
+                 "30:31:0.5", "--workers", "0"])  # fmt: skip
     err = capsys.readouterr().err
     assert code == 2 and err.count("\n") == 1 and "error: workers:" in err
     path = tmp_path / "model.json"

@@ -51,8 +51,9 @@ def add_parser(sub: Any) -> None:
                    "windows inside a chaotic band that the multi-start steps over; more of the "
                    "curve's orbits, at more cost (benchmark 6)")  # fmt: skip
     g.add_argument("--workers", type=int, default=None, metavar="N",
-                   help="with --structure: processes for the runs from rest at each frequency "
-                   "(default all cores; 1 runs them here)")  # fmt: skip
+                   help="processes: with --structure for the runs from rest at each "
+                   "frequency, else for the multi-start's initial states (default all cores; "
+                   "1 runs them here)")  # fmt: skip
     p.add_argument(
         "--response",
         default="displacement",
@@ -250,9 +251,8 @@ def run(ns) -> None:
         return run_structure(ns)
     from ..errors import ParameterError
 
-    if ns.workers is not None:
-        raise ParameterError("workers", "spreads a --structure curve's runs: this curve's "
-                             "branches run in one process")  # fmt: skip
+    if ns.workers is not None and ns.workers < 1:
+        raise ParameterError("workers", f"must be a positive integer, got {ns.workers}")
     from ..forced.frf import frequency_response
     from ..model.display import display_unit, omega_text, shown
 
@@ -271,7 +271,7 @@ def run(ns) -> None:
         raise ParameterError("folds", "turning back at a grazing is for rigid impacts: a "
                                       "compliant contact's orbits change smoothly there")  # fmt: skip
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps,
-                             folds=ns.folds, embedded=ns.embedded)  # fmt: skip
+                             folds=ns.folds, embedded=ns.embedded, workers=ns.workers)  # fmt: skip
     if response != "displacement":
         from ..forced.response_curve import response_curve
 

@@ -6,7 +6,7 @@ At each of :data:`FREQUENCIES` frequencies spread over the band (fixed by the ba
 by its step, so that the curve does not depend on how finely it is sampled; for a curve, each
 initial state's interval between neighbouring frequencies, or between a band's end and its
 nearest frequency, halved where it lands on motions of another kind at its ends, down to
-:data:`REFINE` of the band) the event-driven
+:data:`REFINE` of the band, :data:`REFINE_IRREGULAR` next to a motion that does not repeat) the event-driven
 simulation (rigid impacts with chatter and sticking, or a compliant contact; Eq. F1, F2) runs
 from :data:`STARTS` initial states until the primary's free transient has decayed to 1e-6
 (exp(−ζω_n·t), at most :data:`WARMUP` periods), and its last periods are classified by
@@ -322,6 +322,19 @@ def _kind(lam: float, spread: float, period: float) -> str:
 #: windows of a resonance broken up by chatter (the README's 29–33 rad/s) are narrower than the
 #: multi-start's spacing.
 REFINE = 1.0 / 256
+#: Where one of the two ends lands on a motion that does not repeat, down to this share: the
+#: windows inside chaotic motion are narrower still.  On benchmark 6's band three stable motions
+#: lie in windows that 1/256 passes over (period 3 at 28.18, 5 impacts at 29.88 and 14 at
+#: 30.67 rad/s, the last 0.0096 rad/s wide), each found at 1/1024 from intervals with a chaotic
+#: end; the multi-start on 2 processes takes 6.3 s there against 2.5 s at 1/256.
+REFINE_IRREGULAR = 1.0 / 1024
+
+
+def _finest(la: Attractor | None, lb: Attractor | None) -> float:
+    """The share of the band below which an interval whose ends land on ``la`` and ``lb`` is not
+    halved: REFINE_IRREGULAR where either does not repeat, else REFINE."""
+    keys = (_landing_key(la), _landing_key(lb))
+    return REFINE_IRREGULAR if any(k and k[0] == "not periodic" for k in keys) else REFINE
 
 
 def _landing_key(a: Attractor | None) -> tuple | None:
@@ -375,7 +388,7 @@ def _landings(job: tuple) -> tuple[list, list, list]:
              for a, b in itertools.pairwise([band[0], *ws, band[1]])]  # fmt: skip
     while stack:
         a, b, la, lb = stack.pop()
-        if _landing_key(la) == _landing_key(lb) or b - a < 2 * REFINE * width:
+        if _landing_key(la) == _landing_key(lb) or b - a < 2 * _finest(la, lb) * width:
             continue
         m = 0.5 * (a + b)
         lm = landed(m, halved)
@@ -390,7 +403,8 @@ def attractors(
     """The attractors of the multi-start over ``band`` (module text), each distinct one at a
     frequency once, in the order of the frequencies.  With ``refine``, each initial state's
     interval between neighbouring frequencies (and between each of the band's ends and its nearest
-    frequency) is halved where its landings at the ends differ (:data:`REFINE`); the shot
+    frequency) is halved where its landings at the ends differ (:data:`REFINE`, and
+    :data:`REFINE_IRREGULAR` where one of them does not repeat); the shot
     periodic landings at the band's ends and the halving points are added (those of at
     most MAX_SHOT_PERIODS periods, which a curve traces; a motion that does not repeat there is
     not added: its exponent is not computed).  The initial states' runs are independent: they

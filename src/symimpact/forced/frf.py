@@ -279,6 +279,7 @@ def frequency_response(
     jumps: int | None = None,
     folds: bool = False,
     embedded: bool = False,
+    workers: int | None = None,
 ) -> FrequencyResponse:
     """The frequency-response curve over the band ``omegas`` [rad/s] (its first and last values
     bound the branches; the sweeps and the baseline use every value): branches continued from
@@ -294,7 +295,9 @@ def frequency_response(
     (:func:`_turn_at_grazing_ends`); with ``embedded``, the periodic orbits embedded in the
     multi-start's chaotic motions (:func:`_embedded`); the located peak; the linear
     response without the damper (Step 8, Eq. F1), the motion without impacts, and, with
-    ``sweeps``, the up and down brute-force sweeps."""
+    ``sweeps``, the up and down brute-force sweeps.  The multi-start's initial states run on
+    ``workers`` local processes (:func:`symimpact.forced.coverage.attractors`; None: one per
+    core)."""
     system, forcing, e = checked(system, forcing, e)
     starts = checks.whole_number("starts", starts, 0, 1000)
     sweeps = checks.flag("sweeps", sweeps)
@@ -364,8 +367,8 @@ def frequency_response(
     # the multi-start: every periodic attractor that no branch traces starts one
     # refined with rigid impacts (whose resonance breaks into narrow stable windows between
     # grazings); a compliant contact's runs integrate every contact, at far greater cost
-    found = (attractors(system, forcing, e, band, multistart, refine=is_rigid(e))
-             if multistart else [])  # fmt: skip
+    found = (attractors(system, forcing, e, band, multistart, refine=is_rigid(e),
+                        workers=workers) if multistart else [])  # fmt: skip
     for a in found:
         if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
             follow("multi-start", a.period_multiple, a.state, _forcing(forcing, a.omega))
