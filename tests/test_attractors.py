@@ -142,15 +142,18 @@ def test_the_band_s_end_intervals_are_refined():
         assert _traced(curve.branches, system, forcing.at(a.omega), e, a.omega, a.amplitude, 3)
 
 
-def test_the_initial_states_spread_over_processes_land_as_in_one():
+def test_the_initial_states_spread_over_processes_land_as_in_one(monkeypatch):
     # each initial state's runs and halvings are independent: two processes return the
     # attractors one process finds, in the same order, to the bit (28–31 rad/s holds chaotic,
-    # periodic and chattering landings, so the refinement halves in every process)
-    from symimpact.forced.coverage import attractors
+    # periodic and chattering landings, so the refinement halves in every process; down to
+    # 1/32 of the band here, which the forked workers inherit, to keep the test short)
+    from symimpact.forced import coverage
 
+    monkeypatch.setattr(coverage, "REFINE", 1.0 / 32)
+    monkeypatch.setattr(coverage, "REFINE_IRREGULAR", 1.0 / 32)
     forcing = Forcing(F0=2.0, omega=30.0)
-    one = attractors(SYSTEM, forcing, E, (28.0, 31.0), 3, refine=True, workers=1)
-    two = attractors(SYSTEM, forcing, E, (28.0, 31.0), 3, refine=True, workers=2)
+    one = coverage.attractors(SYSTEM, forcing, E, (28.0, 31.0), 3, refine=True, workers=1)
+    two = coverage.attractors(SYSTEM, forcing, E, (28.0, 31.0), 3, refine=True, workers=2)
     assert len(one) > 10
     assert one == two
 

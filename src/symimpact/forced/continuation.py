@@ -57,10 +57,11 @@ from .. import _interrupt, budgets
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..model import checks
 from ..model.system import ImpactSystem
-from . import _rigid
-from .contact_law import checked, is_constant, is_rigid
+from . import _corrector, _rigid
+from .contact_law import checked, is_constant, is_rigid, restitution_parameters
 from .forcing import Forcing
 from .shooting import (
+    MAX_IMPACTS_PER_PERIOD,
     MAX_PERIODS,
     WALL,
     ShootingOrbit,
@@ -70,7 +71,7 @@ from .shooting import (
     shoot,
     stroboscopic_map,
 )
-from .simulation import impact_counts, state_at
+from .simulation import CHATTER, impact_counts, state_at
 
 #: Newton's corrector stops below this change of the scaled unknowns, or below the map's own
 #: noise amplified by the conditioning of the extended Jacobian, cond·NOISE, where that is larger
@@ -206,6 +207,26 @@ class _Problem:
         F0 = value if self.parameter == "F0" else f.F0
         X_b = value if self.parameter == "X_b" else f.X_b
         return system, Forcing(F0=F0, X_b=X_b, omega=f.omega, phase=f.phase), e
+
+    @property
+    def compiled(self) -> bool:
+        """Whether :func:`_correct` runs compiled (:mod:`._corrector`): rigid impacts with ∂P/∂p
+        carried, continued in Ω, with a base motion of constant amplitude X_b (or none)."""
+        f = self.forcing
+        return (self.parameter == "omega" and is_rigid(self.e) and self.carried
+                and f.V_b is None and f.A_b is None)  # fmt: skip
+
+    def run_parameters(self) -> np.ndarray:
+        """The one-mode engine's parameters (:mod:`._rigid`'s layout), as
+        :func:`~symimpact.forced.simulation.simulate_forced` sets them for this problem."""
+        system, f = self.system, self.forcing
+        p = np.zeros(_rigid.N_PARAMS)
+        p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
+        p[_rigid.P_m], p[_rigid.P_h] = system.m, system.gap / 2.0
+        p[_rigid.P_e], p[_rigid.P_VY] = restitution_parameters(self.e)
+        p[_rigid.P_F0], p[_rigid.P_XB] = f.F0, f.X_b
+        p[_rigid.P_W], p[_rigid.P_PHI], p[_rigid.P_CHAT] = f.omega, f.phase, CHATTER
+        return p
 
     def converged(self, dy: np.ndarray, A: np.ndarray) -> bool:
         """Whether Newton's step ``dy`` on the extended system ``A`` ends the correction: below
@@ -356,6 +377,8 @@ def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float 
     2790 such corrections came back to an orbit with ``count`` impacts, each found again from
     the shorter step the caller then takes, at a third of the cost); with a compliant contact,
     whose contacts a period change smoothly, when it fails after an iterate did."""
+    if problem.compiled:
+        return _correct_compiled(problem, y_pred, t, count, start)
     y = (y_pred if start is None else start).copy()
     rigid, wandered = is_rigid(problem.e), False
     for _ in range(MAX_NEWTON):
@@ -383,6 +406,31 @@ def _correct(problem: _Problem, y_pred: np.ndarray, t: np.ndarray, count: float 
                 return GRAZE
             return y, J, mono, res
     return GRAZE if wandered else None
+
+
+def _correct_compiled(problem: _Problem, y_pred, t, count, start):
+    """:func:`_correct` for rigid impacts in Ω, its Newton steps compiled
+    (:func:`._corrector.correct`: the same steps, refusals and stopping rule); the converged
+    point evaluated here for its orbit, as the Python steps do."""
+    y0 = y_pred if start is None else start
+    outcome, y = _interrupt.call(
+        _corrector.correct, problem.run_parameters(), np.asarray(y_pred, dtype=float),
+        np.asarray(y0, dtype=float), np.asarray(t, dtype=float), problem.scale,
+        float(problem.unit), problem.periods, -1.0 if count is None else float(count),
+        MAX_IMPACTS_PER_PERIOD * problem.periods, MAX_NEWTON, TOL, problem.noise,
+        problem.stall,
+    )  # fmt: skip
+    if outcome == _corrector.GRAZED:
+        return GRAZE
+    if outcome != _corrector.CONVERGED:
+        return None
+    try:
+        _, J, mono, res = problem.evaluate(y)
+    except SymimpactError:
+        return None
+    if count is not None and _events(res, problem.periods) != count:
+        return GRAZE
+    return y, J, mono, res
 
 
 def _events(res, periods: int) -> float:
