@@ -69,15 +69,45 @@ def spread(fn: Callable[[Any], Any], payloads: list, workers: int) -> Iterator[A
 def ordered(fn: Callable[[Any], Any], payloads: list, workers: int) -> list[Any]:
     """``[fn(p) for p in payloads]``, on ``workers`` processes where this process may start them
     (:func:`can_spread`) and there is more than one payload, else here."""
-    if workers <= 1 or len(payloads) < 2 or not can_spread():
-        return [fn(p) for p in payloads]
-    tagged = [(fn, i, p) for i, p in enumerate(payloads)]
-    out: list[Any] = [None] * len(payloads)
-    for i, r in spread(_tagged, tagged, min(workers, len(payloads))):
-        out[i] = r
-    return out
+    return Pending(fn, payloads, workers).result()
 
 
-def _tagged(job: tuple) -> tuple[int, Any]:
-    fn, i, p = job
-    return i, fn(p)
+class Pending:
+    """``[fn(p) for p in payloads]`` started at once on ``workers`` processes (where this
+    process may start them, :func:`can_spread`, and there is more than one payload), while this
+    process goes on; :meth:`result` waits for them, in the payloads' order.  Run here, where it
+    cannot spread, when :meth:`result` is called.  :meth:`cancel` ends the workers (a caller
+    that fails before it needs the result)."""
+
+    def __init__(self, fn: Callable[[Any], Any], payloads: list, workers: int) -> None:
+        self.fn, self.payloads = fn, payloads
+        self.pool: Any = None
+        self.futures: list = []
+        if workers > 1 and len(payloads) > 1 and can_spread():
+            from concurrent.futures import ProcessPoolExecutor
+
+            self.pool = ProcessPoolExecutor(max_workers=min(workers, len(payloads)),
+                                            initializer=worker_init, initargs=(os.getpid(),))  # fmt: skip
+            self.futures = [self.pool.submit(fn, p) for p in payloads]
+
+    def result(self) -> list[Any]:
+        if self.pool is None:
+            return [self.fn(p) for p in self.payloads]
+        finished = False
+        try:
+            out = [f.result() for f in self.futures]
+            finished = True
+        finally:
+            self._end(finished)
+        return out
+
+    def cancel(self) -> None:
+        if self.pool is not None:
+            self._end(False)
+
+    def _end(self, finished: bool) -> None:
+        if not finished:  # interrupted, terminated or failed: do not wait for running runs
+            for proc in list((getattr(self.pool, "_processes", None) or {}).values()):
+                proc.terminate()
+        self.pool.shutdown(wait=True, cancel_futures=True)
+        self.pool = None

@@ -410,12 +410,34 @@ def attractors(
     not added: its exponent is not computed).  The initial states' runs are independent: they
     are spread over ``workers`` local processes (None: one per core, at most STARTS; one, or a
     call from a worker or another thread: here), with the same outcome in the same order."""
-    if workers is None:
-        workers = min(STARTS, os.cpu_count() or 1)
-    workers = checks.whole_number("workers", workers, 1, 1024)
-    ws = tuple(float(w) for w in frequencies(band, n))
-    parts = _pool.ordered(_landings, [(system, forcing, e, band, ws, j, refine)
-                                      for j in range(STARTS)], workers)  # fmt: skip
+    return MultiStart(system, forcing, e, band, n, refine=refine, workers=workers).result()
+
+
+class MultiStart:
+    """:func:`attractors` started on the workers at once (the caller goes on meanwhile: a curve
+    traces its other starts); :meth:`result` waits and gives the attractors, :meth:`cancel`
+    ends the workers."""
+
+    def __init__(self, system: ImpactSystem, forcing: Forcing, e: Any,
+                 band: tuple[float, float], n: int = FREQUENCIES, *, refine: bool = False,
+                 workers: int | None = None) -> None:  # fmt: skip
+        if workers is None:
+            workers = min(STARTS, os.cpu_count() or 1)
+        workers = checks.whole_number("workers", workers, 1, 1024)
+        self.ws = tuple(float(w) for w in frequencies(band, n))
+        self.pending = _pool.Pending(_landings, [(system, forcing, e, band, self.ws, j, refine)
+                                                 for j in range(STARTS)], workers)  # fmt: skip
+
+    def cancel(self) -> None:
+        self.pending.cancel()
+
+    def result(self) -> list[Attractor]:
+        return _gathered(self.ws, self.pending.result())
+
+
+def _gathered(ws: tuple[float, ...], parts: list) -> list[Attractor]:
+    """The initial states' landings (:func:`_landings`), each distinct attractor at a frequency
+    once."""
     # gathered in the order one process would find them: by frequency and then initial state,
     # then the band ends' and the halvings' landings, initial state by initial state
     runs: dict[float, list[Attractor]] = {w: [] for w in ws}

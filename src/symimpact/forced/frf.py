@@ -55,8 +55,8 @@ from .continuation import (
 from .coverage import (
     FREQUENCIES,
     Coverage,
+    MultiStart,
     attractor,
-    attractors,
     close_returns,
     initial_states,
     least_period,
@@ -344,31 +344,38 @@ def frequency_response(
             return None
         return out.branches[-1]
 
-    for omega in np.linspace(band[0], band[1], starts + 2)[1:-1]:
-        f = _forcing(forcing, float(omega))
-        for o in periodic_orbits(system, f, e) if is_constant(e) else ():
-            if o.admissible:
-                follow("closed form", 1, *_section_state(o, float(omega), h, system, forcing))
-        # one run from rest; its end shot as an orbit of one and of two periods
-        try:
-            rest, law = settled_state(system, f, e, warmup=settling_periods(system, f, 20, 300))
-        except SymimpactError as exc:
-            failures.setdefault(f"from rest: {exc}", []).append(omega)
-            continue
-        for k in (1, 2):
+    # the multi-start runs on the workers while this process traces the other starts
+    multi = (MultiStart(system, forcing, e, band, multistart, refine=is_rigid(e), workers=workers)
+             if multistart else None)  # fmt: skip
+    try:
+        for omega in np.linspace(band[0], band[1], starts + 2)[1:-1]:
+            f = _forcing(forcing, float(omega))
+            for o in periodic_orbits(system, f, e) if is_constant(e) else ():
+                if o.admissible:
+                    follow("closed form", 1, *_section_state(o, float(omega), h, system, forcing))
+            # one run from rest; its end shot as an orbit of one and of two periods
             try:
-                shot = shoot(system, f, law, rest, periods=k)
+                rest, law = settled_state(system, f, e, warmup=settling_periods(system, f, 20, 300))
             except SymimpactError as exc:
-                failures.setdefault(f"{k} period(s) from rest: {exc}", []).append(omega)
+                failures.setdefault(f"from rest: {exc}", []).append(omega)
                 continue
-            follow("from rest", k, shot.state, f)
-    out.baseline = np.column_stack([w, linear_amplitude(system, forcing, w)])
-    out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
+            for k in (1, 2):
+                try:
+                    shot = shoot(system, f, law, rest, periods=k)
+                except SymimpactError as exc:
+                    failures.setdefault(f"{k} period(s) from rest: {exc}", []).append(omega)
+                    continue
+                follow("from rest", k, shot.state, f)
+        out.baseline = np.column_stack([w, linear_amplitude(system, forcing, w)])
+        out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
+    except BaseException:
+        if multi is not None:
+            multi.cancel()
+        raise
     # the multi-start: every periodic attractor that no branch traces starts one
     # refined with rigid impacts (whose resonance breaks into narrow stable windows between
     # grazings); a compliant contact's runs integrate every contact, at far greater cost
-    found = (attractors(system, forcing, e, band, multistart, refine=is_rigid(e),
-                        workers=workers) if multistart else [])  # fmt: skip
+    found = multi.result() if multi is not None else []
     for a in found:
         if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
             follow("multi-start", a.period_multiple, a.state, _forcing(forcing, a.omega))
