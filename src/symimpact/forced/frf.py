@@ -431,10 +431,12 @@ def _embedded(found, system, forcing, e, failures, follow) -> None:
     traced branch (a close return that shooting does not converge from is a guess, and no
     note).  Unstable where they are found, they lead to the stable windows inside a chaotic
     band that lie between the multi-start's frequencies: on the README system the period-3
-    window at 28.125–28.199 rad/s, from the chaotic motion at 28.75 rad/s (benchmark 6's band:
-    32 more branches, 124 → 126 of the 200-frequency brute force's 128 periodic attractors on
-    the curve, the curve 1.5 times as long; with ``folds`` as well, 127).  Done after the other
-    starts (their budgets spent as before); the new branches are not switched or jumped from."""
+    window at 28.125–28.199 rad/s, from the chaotic motion at 28.75 rad/s (benchmark 6's band,
+    when the multi-start refined to 1/256 everywhere: 124 → 126 of the 200-frequency brute
+    force's 128 periodic attractors on the curve; refined beside chaos to 1/1024, the default
+    curve holds that window too, 127 of 128 with or without this, which adds 27 branches and 1.4
+    times the time).  Done after the other starts (their budgets spent as before); the new
+    branches are not switched or jumped from."""
     for a in found:
         if a.kind not in EMBEDDING:
             continue
@@ -485,8 +487,10 @@ def _turn_at_grazing_ends(out, system, forcing, e, band, step, failures) -> None
     README's curve the symmetric four-impact orbits' grazing at 30.4438 rad/s leads to the
     stable five-impact motion near 29.876 rad/s, and the symmetric 12-impact orbits' at
     30.6907 rad/s, through the 13-impact orbits it turns onto, to the stable 14-impact motion
-    near 30.672 rad/s; nothing else reaches either (benchmark 6's band: 52 more branches, 124
-    → 126 of the brute force's 128 periodic attractors on the curve, the curve twice as long).
+    near 30.672 rad/s (benchmark 6's band, when the multi-start refined to 1/256 everywhere and
+    nothing else reached either: 124 → 126 of the brute force's 128 periodic attractors on the
+    curve; refined beside chaos to 1/1024, the default curve holds both, 127 of 128 with or
+    without this, which adds 66 branches and 1.7 times the time).
     Done after the other starts (their budgets spent as before); the new branches are not
     switched or jumped from."""
     width = band[1] - band[0]
