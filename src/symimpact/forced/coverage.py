@@ -330,11 +330,18 @@ REFINE = 1.0 / 256
 REFINE_IRREGULAR = 1.0 / 1024
 
 
+#: The landings beside which the refinement goes on to REFINE_IRREGULAR: motions that do not
+#: repeat after the run has settled (a run still settling, or an impact mass drifting with fewer
+#: than one impact a period, "not settled", is not chaos and hides no window).
+IRREGULAR = ("chaotic", "quasi-periodic", "not periodic")
+
+
 def _finest(la: Attractor | None, lb: Attractor | None) -> float:
     """The share of the band below which an interval whose ends land on ``la`` and ``lb`` is not
-    halved: REFINE_IRREGULAR where either does not repeat, else REFINE."""
-    keys = (_landing_key(la), _landing_key(lb))
-    return REFINE_IRREGULAR if any(k and k[0] == "not periodic" for k in keys) else REFINE
+    halved: REFINE_IRREGULAR where either does not repeat once settled (IRREGULAR), else
+    REFINE."""
+    irregular = any(a is not None and a.kind in IRREGULAR for a in (la, lb))
+    return REFINE_IRREGULAR if irregular else REFINE
 
 
 def _landing_key(a: Attractor | None) -> tuple | None:

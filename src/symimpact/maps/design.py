@@ -44,7 +44,7 @@ import itertools
 import math
 import os
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -87,6 +87,9 @@ class _DesignBase:
     omegas: tuple[float, ...]
     multistart: int = FREQUENCIES
     response: str = "displacement"
+    #: processes for each curve's multi-start: the map's own where its clearances run here, one
+    #: where they run on worker processes (which start no pool of their own)
+    curve_workers: int | None = None
 
 
 def _design_system(base: _DesignBase, names: Sequence[str], values: Sequence[float]):
@@ -113,7 +116,7 @@ def _stable_spans(branches) -> list[tuple[float, float]]:
 
 def design_row(
     system: ImpactSystem, forcing: Forcing, e: float, omegas: Any, curve: Any = None,
-    multistart: int = FREQUENCIES, response: str = "displacement",
+    multistart: int = FREQUENCIES, response: str = "displacement", workers: int | None = None,
 ) -> dict[str, Any]:  # fmt: skip
     """The design map's figures for one system over the band ``omegas`` [rad/s] (module text):
     ``peak_amplitude`` [m] and ``peak_omega`` [rad/s] of the worst steady motion, ``peak_motion``
@@ -125,10 +128,11 @@ def design_row(
     multi-start (:mod:`symimpact.forced.coverage`; 0: none).  ``response``
     (:data:`symimpact.forced.responses.RESPONSES`): what the peaks measure [its SI unit] —
     the curve in that response (:func:`symimpact.forced.response_curve.response_curve`), the
-    primary alone's closed form, and the sweeps measured in it over their kept periods."""
+    primary alone's closed form, and the sweeps measured in it over their kept periods.
+    ``workers``: processes for the curve's multi-start (None: one per core)."""
     w = np.asarray(omegas, dtype=float)
     if curve is None:
-        curve = frequency_response(system, forcing, e, w, multistart=multistart)
+        curve = frequency_response(system, forcing, e, w, multistart=multistart, workers=workers)
     if response != "displacement":
         return _response_row(system, forcing, e, w, curve, response)
     if curve.sweep_up is None or not len(curve.sweep_up):
@@ -195,7 +199,8 @@ def _design_chunk(payload: tuple[_DesignBase, tuple[str, ...], list[int], np.nda
         row: dict[str, Any] = {"run": int(run)}
         row.update(zip(names, (float(x) for x in v), strict=True))
         row.update(design_row(system, base.forcing, base.e, np.array(base.omegas),
-                              multistart=base.multistart, response=base.response))  # fmt: skip
+                              multistart=base.multistart, response=base.response,
+                              workers=base.curve_workers))  # fmt: skip
         rows.append(row)
     return rows
 
@@ -286,6 +291,9 @@ def design_map(
         todo = [i for i in range(len(points)) if i not in done]
         payloads = [(base, points.names, [i], points.values[[i]]) for i in todo]
         workers = workers or os.cpu_count() or 1
+        here = executor == "serial" or (executor == "processes" and (workers == 1 or len(todo) < 2))
+        payloads = [(replace(base, curve_workers=workers if here else 1), *p[1:])
+                    for p in payloads]  # fmt: skip
         results = _launch(payloads, executor, workers, client, scheduler,
                           workers == 1 or len(todo) < 2, _design_chunk)  # fmt: skip
         _gather(results, store, done, _progress(progress, len(points), len(done), "design map"))
