@@ -41,7 +41,7 @@ def add_parser(sub: Any) -> None:
                    help="rigid impacts: turn each branch that ends at a grazing beyond which no "
                    "orbit continues it back onto the orbits with the new impact (a non-smooth "
                    "fold), and trace the orbits with one more impact beside each turned branch; "
-                   "more of the curve's orbits, at more cost (1.7 times the time on the "
+                   "more of the curve's orbits, at more cost (twice the time on the "
                    "README's system over 25-45 rad/s, benchmark 6, whose default curve already "
                    "holds 127 of the 128 periodic motions a 200-frequency brute force finds, "
                    "as it does with --folds, --embedded or both)")  # fmt: skip

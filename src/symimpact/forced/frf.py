@@ -434,7 +434,7 @@ def _embedded(found, system, forcing, e, failures, follow) -> None:
     window at 28.125–28.199 rad/s, from the chaotic motion at 28.75 rad/s (benchmark 6's band,
     when the multi-start refined to 1/256 everywhere: 124 → 126 of the 200-frequency brute
     force's 128 periodic attractors on the curve; refined beside chaos to 1/1024, the default
-    curve holds that window too, 127 of 128 with or without this, which adds 27 branches and 1.4
+    curve holds that window too, 127 of 128 with or without this, which adds 27 branches and 1.2
     times the time).  Done after the other starts (their budgets spent as before); the new
     branches are not switched or jumped from."""
     for a in found:
@@ -490,7 +490,7 @@ def _turn_at_grazing_ends(out, system, forcing, e, band, step, failures) -> None
     near 30.672 rad/s (benchmark 6's band, when the multi-start refined to 1/256 everywhere and
     nothing else reached either: 124 → 126 of the brute force's 128 periodic attractors on the
     curve; refined beside chaos to 1/1024, the default curve holds both, 127 of 128 with or
-    without this, which adds 66 branches and 1.7 times the time).
+    without this, which adds 66 branches and twice the time).
     Done after the other starts (their budgets spent as before); the new branches are not
     switched or jumped from."""
     width = band[1] - band[0]
