@@ -117,7 +117,10 @@ def correct(p, y_pred, y_start, tangent, scale, unit, periods, count, max_events
         sv = np.linalg.svd(A)[1]
         if not sv[4] > 0.0:
             return FAILED, y  # singular (numpy.linalg.solve's LinAlgError on the Python path)
-        dy = np.linalg.solve(A, b)
+        try:  # an exact zero pivot of the LU factors, which the singular values may not show
+            dy = np.linalg.solve(A, b)
+        except Exception:  # numba raises the LinAlgError as an exception of its own
+            return FAILED, y
         y = y + dy
         step = np.max(np.abs(dy))
         if step < tol or step < min(noise * (sv[0] / sv[4]), stall):
