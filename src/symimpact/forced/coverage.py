@@ -436,9 +436,11 @@ class MultiStart:
                                                  for j in range(STARTS)], workers)  # fmt: skip
 
     def cancel(self) -> None:
+        """End the workers without waiting for their runs."""
         self.pending.cancel()
 
     def result(self) -> list[Attractor]:
+        """The attractors (as :func:`attractors` returns them), once every run has ended."""
         return _gathered(self.ws, self.pending.result())
 
 
