@@ -60,22 +60,13 @@ def spread(fn: Callable[[Any], Any], payloads: list, workers: int) -> Iterator[A
             yield f.result()
         finished = True
     finally:
-        if not finished:
-            for proc in list((getattr(pool, "_processes", None) or {}).values()):
-                proc.terminate()
-        pool.shutdown(wait=True, cancel_futures=True)
-
-
-def ordered(fn: Callable[[Any], Any], payloads: list, workers: int) -> list[Any]:
-    """``[fn(p) for p in payloads]``, on ``workers`` processes where this process may start them
-    (:func:`can_spread`) and there is more than one payload, else here."""
-    return Pending(fn, payloads, workers).result()
+        _close(pool, finished)
 
 
 class Pending:
     """``[fn(p) for p in payloads]`` started at once on ``workers`` processes (where this
     process may start them, :func:`can_spread`, and there is more than one payload), while this
-    process goes on; :meth:`result` waits for them, in the payloads' order.  Run here, where it
+    process goes on (:func:`symimpact.forced.coverage.attractors` waits at once); :meth:`result` waits for them, in the payloads' order.  Run here, where it
     cannot spread, when :meth:`result` is called.  :meth:`cancel` ends the workers (a caller
     that fails before it needs the result)."""
 
@@ -106,8 +97,14 @@ class Pending:
             self._end(False)
 
     def _end(self, finished: bool) -> None:
-        if not finished:  # interrupted, terminated or failed: do not wait for running runs
-            for proc in list((getattr(self.pool, "_processes", None) or {}).values()):
-                proc.terminate()
-        self.pool.shutdown(wait=True, cancel_futures=True)
+        _close(self.pool, finished)
         self.pool = None
+
+
+def _close(pool: Any, finished: bool) -> None:
+    """Shut ``pool`` down; one that did not finish (interrupted, terminated or failed) does not
+    wait for its running runs: its workers are terminated first."""
+    if not finished:
+        for proc in list((getattr(pool, "_processes", None) or {}).values()):
+            proc.terminate()
+    pool.shutdown(wait=True, cancel_futures=True)
