@@ -68,6 +68,7 @@ from numba import njit
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
 from ..free._stepper import secant_point
 from ..generated import forced_flight as _fl
+from ._borrowed import borrowed, borrowed_config
 from ._rigid import (
     _GL_W,
     _GL_X,
@@ -328,11 +329,12 @@ def _kept_config(keys, cfgs, pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig
     if code >= 0:
         for j in range(len(keys)):
             if keys[j] == code:
-                return cfgs[j]
+                return borrowed_config(cfgs[j])
     cfg = _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
     if code >= 0 and len(keys) < MAX_CONFIGS:
         keys.append(code)
         cfgs.append(cfg)
+        return borrowed_config(cfg)
     return cfg
 
 
@@ -1903,6 +1905,13 @@ def _accumulation_row(pm, cfg, Phi, k, K, t, s, w, a, delta, xb, r_i, fp, G, gra
 
 
 @njit(cache=True)
+def _kept_alive(owned, cfgs):
+    """Nothing: its call at the end of :func:`run` keeps the run's own arrays and configurations
+    alive until then, under the borrowed views the run works with (:mod:`._borrowed`)."""
+    return len(owned) + len(cfgs)
+
+
+@njit(cache=True)
 def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0,
         Pout, xb, t0, t_end, max_events, variational, stuck0, held0, energy, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
@@ -1997,6 +2006,26 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     let_go = np.zeros(K, dtype=np.int64)
     kept = np.zeros(K, dtype=np.int64)
     v_trial = np.empty(N)
+    # the run's arrays borrowed (:mod:`._borrowed`): the searches' loops then count no
+    # references to them; ``owned`` keeps the locals alive to the end of the run, the caller
+    # the arguments, and ``cfgs`` the configurations
+    owned = (q, v, qn, vn, u, z, side0, stuck, work, contact, pulls, fm, fp, gh, v_before,
+             let_go, kept, v_trial)  # fmt: skip
+    q, v, qn, vn, u, z = (borrowed(q), borrowed(v), borrowed(qn), borrowed(vn), borrowed(u),
+                          borrowed(z))  # fmt: skip
+    side0, stuck, work, contact = (borrowed(side0), borrowed(stuck), borrowed(work),
+                                   borrowed(contact))  # fmt: skip
+    pulls, fm, fp, gh = borrowed(pulls), borrowed(fm), borrowed(fp), borrowed(gh)
+    v_before, let_go, kept, v_trial = (borrowed(v_before), borrowed(let_go), borrowed(kept),
+                                       borrowed(v_trial))  # fmt: skip
+    pm0, Phi, md, hd, ed, vyd, law = (borrowed(pm0), borrowed(Phi), borrowed(md), borrowed(hd),
+                                      borrowed(ed), borrowed(vyd), borrowed(law))  # fmt: skip
+    Sphi, sg, sside, sk, sc, srig, se = (borrowed(Sphi), borrowed(sg), borrowed(sside),
+                                         borrowed(sk), borrowed(sc), borrowed(srig),
+                                         borrowed(se))  # fmt: skip
+    Pout, watch = borrowed(Pout), borrowed(watch)
+    cfg = borrowed_config(cfg)
+    pm = cfg[7]
     for k in range(K):
         z[k] = y0[k] - _dot(Phi, k, q) - _base_x(pm0, xb, t0)
         if abs(z[k]) >= hd[k]:
@@ -2396,6 +2425,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
         final[1 + 2 * N + 3 * K + r] = contact[r]
     if not smooth:
         G[:, :] = np.nan
+    _kept_alive(owned, cfgs)
     return status, events, n_ev, period_max, ledger, final, G
 
 
@@ -2431,18 +2461,18 @@ def one_mode_run(p, state0, t_end, max_events, variational, energy, watch):
 
 
 def _forget_stale_compilations() -> None:
-    """This module's cached code, dropped when it, the one-mode flight functions it calls, the
-    forced-flight kernels or the stepper's secant changed (numba's cache does not follow a
-    callee into another module)."""
+    """This module's and :mod:`._borrowed`'s cached code, dropped when it, the one-mode flight
+    functions it calls, the borrowed views, the forced-flight kernels or the stepper's secant
+    changed (numba's cache does not follow a callee into another module)."""
     from pathlib import Path
 
     from ..free import _stepper
     from ..generated import forced_flight
-    from . import _rigid
+    from . import _borrowed, _rigid
 
     sources = [Path(__file__), Path(_rigid.__file__), Path(forced_flight.__file__),
-               Path(_stepper.__file__)]  # fmt: skip
-    _stepper.forget_stale_compilations(run, sources, ("_modal.",))
+               Path(_stepper.__file__), Path(_borrowed.__file__)]  # fmt: skip
+    _stepper.forget_stale_compilations(run, sources, ("_modal.", "_borrowed."))
 
 
 _forget_stale_compilations()
