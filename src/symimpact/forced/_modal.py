@@ -329,12 +329,25 @@ def _kept_config(keys, cfgs, pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig
     if code >= 0:
         for j in range(len(keys)):
             if keys[j] == code:
-                return borrowed_config(cfgs[j])
+                return cfgs[j]
     cfg = _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
     if code >= 0 and len(keys) < MAX_CONFIGS:
         keys.append(code)
         cfgs.append(cfg)
-        return borrowed_config(cfg)
+    return cfg
+
+
+@njit(cache=True)
+def _working_config(keys, cfgs, pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb):
+    """:func:`_kept_config` as :func:`run` works with it: borrowed (:mod:`._borrowed`) where
+    ``cfgs`` keeps it, as computed where it does not (a pattern that cannot be encoded, or more
+    than MAX_CONFIGS of them: the run's variable then owns it)."""
+    cfg = _kept_config(keys, cfgs, pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+    code = _pattern(stuck, contact)
+    if code >= 0:
+        for j in range(len(keys)):
+            if keys[j] == code:
+                return borrowed_config(cfgs[j])
     return cfg
 
 
@@ -2042,7 +2055,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             u[k] = _dot(Phi, k, v) + _base_v(pm0, xb, t0)
             nstuck += 1
     if nstuck > 0:
-        cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
+        cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig,
+                              xb)  # fmt: skip
         pm = cfg[7]
         if not cfg[5]:
             status = SINGULAR_STUCK
@@ -2103,8 +2117,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 # --- held stop ks is let go: its wall would pull ---
                 wall = contact[ks]
                 contact[ks] = 0
-                cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                   srig, xb)  # fmt: skip
+                cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                     srig, xb)  # fmt: skip
                 pm = cfg[7]
                 fresh, fresh_wall = ks, wall
                 xd = _dot(Sphi, ks, v)
@@ -2136,8 +2150,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 wall = contact[pulled]
                 contact[pulled] = 0
                 held -= 1
-                cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                   srig, xb)  # fmt: skip
+                cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                     srig, xb)  # fmt: skip
                 pm = cfg[7]
                 events, n_ev = _log(events, n_ev, t, _dot(Sphi, pulled, q), 0.0, 0.0, float(wall),
                                     0.0, 0.0, KIND_RELEASE, 0.0, 0.0, K + pulled)  # fmt: skip
@@ -2191,8 +2205,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 # --- the point rests on the wall from here ---
                 smooth = False
                 contact[ks] = ws
-                cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                   srig, xb)  # fmt: skip
+                cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                     srig, xb)  # fmt: skip
                 pm = cfg[7]
                 if not cfg[5]:
                     status = SINGULAR_STUCK
@@ -2205,8 +2219,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             if smooth:
                 _field(pm, cfg, K, t, q, v, u, fm)
             contact[ks] = ws
-            cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                               srig, xb)  # fmt: skip
+            cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                 srig, xb)  # fmt: skip
             pm = cfg[7]
             if smooth:  # the state is continuous, the rate jumps by the dashpot's force
                 _field(pm, cfg, K, t, q, v, u, fp)
@@ -2229,8 +2243,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             s = float(stuck[kr])
             stuck[kr] = 0
             nstuck -= 1
-            cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                               srig, xb)  # fmt: skip
+            cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                 srig, xb)  # fmt: skip
             pm = cfg[7]
             for j in range(K):  # a mass let go or met at this same instant keeps its wall
                 side0[j] = _wall_kept(stuck, z, hd, j)
@@ -2281,8 +2295,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                     wall = contact[gone]
                     contact[gone] = 0
                     held -= 1
-                    cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                       srig, xb)  # fmt: skip
+                    cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                         srig, xb)  # fmt: skip
                     pm = cfg[7]
                     smooth = False
                     events, n_ev = _log(events, n_ev, t, _dot(Sphi, gone, q), 0.0, 0.0,
@@ -2305,8 +2319,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             let_go[pulled] = stuck[pulled]
             stuck[pulled] = 0
             nstuck -= 1
-            cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                               srig, xb)  # fmt: skip
+            cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                 srig, xb)  # fmt: skip
             pm = cfg[7]
             xa = _dot(Phi, pulled, q) + _base_x(pm, xb, t)
             events, n_ev = _log(events, n_ev, t, xa, u[pulled], u[pulled],
@@ -2399,8 +2413,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             # --- the mass rides on its point from here ---
             stuck[k] = side
             nstuck += 1
-            cfg = _kept_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                               srig, xb)  # fmt: skip
+            cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                 srig, xb)  # fmt: skip
             pm = cfg[7]
             if not cfg[5]:
                 status = SINGULAR_STUCK
