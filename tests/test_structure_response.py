@@ -273,7 +273,7 @@ def test_the_energy_ledger_closes_for_three_modes_and_two_dampers():
 
 def test_a_run_without_its_energy_ledger_is_the_same_motion_to_the_bit():
     """``energy=False`` leaves the flights' work and dissipation unintegrated (the Gauss–Legendre
-    rules of the riding mass's flights are most of a run's cost) and changes nothing else: the
+    rules of the riding mass's flights are much of a run's cost) and changes nothing else: the
     same events, period maxima and final state, bit for bit, with chatter, sticking and base
     motion; its ``energy`` is None, and a flag other than True or False is refused."""
     light = _beam(modes=3)

@@ -1948,8 +1948,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     ½m(ẏ − ẋ_b)²: each free mass's change in flight is the work of its inertia −m·ẍ_b.
     Without ``energy`` the flights' work and dissipation are not integrated
     (:func:`_flight_ledger`: with a mass riding on a mode shape's point, Gauss–Legendre rules at
-    the highest mode's rate, up to 44 % of a 10-mode run of benchmark 10, 21 % at the median of
-    its eight) and the ledger is not whole; the motion is the same to the bit.
+    the highest mode's rate, 40 % of the fastest 10-mode run of benchmark 10, 14 % at the median
+    of its eight) and the ledger is not whole; the motion is the same to the bit.
 
     Returns (status, events, n_events, period_max, ledger, final): the event log (columns of
     :mod:`symimpact.forced._rigid` and E_DAMPER; columns 1, 2, 3, 8, 9 hold the point's

@@ -214,9 +214,9 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     the supports (the masses' speeds relative to them).
 
     ``energy``: keep the energy ledger (:attr:`StructureResult.energy`); without it the flights'
-    work and dissipation are not integrated, which with a mass riding on its point is most of a
-    run's cost (benchmark 10: its 10-mode runs up to 1.8 times as fast, 1.3 at the median), and
-    ``energy`` is None.  The
+    work and dissipation are not integrated, which with a mass riding on its point is much of a
+    run's cost (benchmark 10: its fastest 10-mode run 1.7 times as fast without it, the medians
+    of its eight 1.2 times), and ``energy`` is None.  The
     motion is the same to the bit."""
     structure = instance("structure", structure, Structure, "a Structure")
     energy = flag("energy", energy)
