@@ -66,8 +66,9 @@ def spread(fn: Callable[[Any], Any], payloads: list, workers: int) -> Iterator[A
 class Pending:
     """``[fn(p) for p in payloads]`` started at once on ``workers`` processes (where this
     process may start them, :func:`can_spread`, and there is more than one payload), while this
-    process goes on (:func:`symimpact.forced.coverage.attractors` waits at once); :meth:`result` waits for them, in the payloads' order.  Run here, where it
-    cannot spread, when :meth:`result` is called.  :meth:`cancel` ends the workers (a caller
+    process goes on (:func:`symimpact.forced.coverage.attractors` waits at once); :meth:`result`
+    waits for them, in the payloads' order.  Run here, where it cannot spread, when
+    :meth:`result` is called.  :meth:`cancel` ends the workers (a caller
     that fails before it needs the result)."""
 
     def __init__(self, fn: Callable[[Any], Any], payloads: list, workers: int) -> None:

@@ -2118,7 +2118,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 wall = contact[ks]
                 contact[ks] = 0
                 cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                     srig, xb)  # fmt: skip
+                                      srig, xb)  # fmt: skip
                 pm = cfg[7]
                 fresh, fresh_wall = ks, wall
                 xd = _dot(Sphi, ks, v)
@@ -2151,7 +2151,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 contact[pulled] = 0
                 held -= 1
                 cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                     srig, xb)  # fmt: skip
+                                      srig, xb)  # fmt: skip
                 pm = cfg[7]
                 events, n_ev = _log(events, n_ev, t, _dot(Sphi, pulled, q), 0.0, 0.0, float(wall),
                                     0.0, 0.0, KIND_RELEASE, 0.0, 0.0, K + pulled)  # fmt: skip
@@ -2206,7 +2206,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 smooth = False
                 contact[ks] = ws
                 cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                     srig, xb)  # fmt: skip
+                                      srig, xb)  # fmt: skip
                 pm = cfg[7]
                 if not cfg[5]:
                     status = SINGULAR_STUCK
@@ -2220,7 +2220,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 _field(pm, cfg, K, t, q, v, u, fm)
             contact[ks] = ws
             cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                 srig, xb)  # fmt: skip
+                                  srig, xb)  # fmt: skip
             pm = cfg[7]
             if smooth:  # the state is continuous, the rate jumps by the dashpot's force
                 _field(pm, cfg, K, t, q, v, u, fp)
@@ -2244,7 +2244,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             stuck[kr] = 0
             nstuck -= 1
             cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                 srig, xb)  # fmt: skip
+                                  srig, xb)  # fmt: skip
             pm = cfg[7]
             for j in range(K):  # a mass let go or met at this same instant keeps its wall
                 side0[j] = _wall_kept(stuck, z, hd, j)
@@ -2295,8 +2295,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                     wall = contact[gone]
                     contact[gone] = 0
                     held -= 1
-                    cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                         srig, xb)  # fmt: skip
+                    cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg,
+                                          contact, srig, xb)  # fmt: skip
                     pm = cfg[7]
                     smooth = False
                     events, n_ev = _log(events, n_ev, t, _dot(Sphi, gone, q), 0.0, 0.0,
@@ -2320,7 +2320,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             stuck[pulled] = 0
             nstuck -= 1
             cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                 srig, xb)  # fmt: skip
+                                  srig, xb)  # fmt: skip
             pm = cfg[7]
             xa = _dot(Phi, pulled, q) + _base_x(pm, xb, t)
             events, n_ev = _log(events, n_ev, t, xa, u[pulled], u[pulled],
@@ -2414,7 +2414,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             stuck[k] = side
             nstuck += 1
             cfg = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
-                                 srig, xb)  # fmt: skip
+                                  srig, xb)  # fmt: skip
             pm = cfg[7]
             if not cfg[5]:
                 status = SINGULAR_STUCK
