@@ -91,6 +91,35 @@ def test_a_stuck_flight_is_the_matrix_exponential():
                 assert np.max(np.abs(v - X[3:])) < 1e-12 * scale_v
 
 
+def test_a_stuck_flight_projected_on_points_is_the_matrix_exponential():
+    """The flight read at two points (:func:`_modal._held_rows`, :func:`_modal._rows_at`): φᵀq,
+    φᵀq̇ and φᵀq̈ against the same reference, q̈ from the equation of motion (the residual
+    M_s⁻¹(F cos θ − Cq̇ − Kq)), each to 1e-12 of its scale (as the states: V's condition)."""
+    shapes = np.array([SHAPE[0], [0.3, 1.0, -0.2]])
+    for zetas in ((0.01, 0.02, 0.03), (0.01, 3.0, 0.03)):
+        pm = _parameters(zetas)
+        cfg = _config(pm)
+        Ms = np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0])
+        Mi = np.linalg.inv(Ms)
+        rng = np.random.default_rng(5)
+        t0, q0, v0 = 0.21, rng.normal(size=3) * 1e-3, rng.normal(size=3) * 1e-2
+        rows, out = np.zeros((2, 3, 8), dtype=np.complex128), np.zeros((2, 4))
+        _modal._held_rows(pm, cfg, shapes, t0, q0, v0, rows, out)
+        assert np.allclose(out[:, 3], shapes @ q0, rtol=0, atol=1e-18)
+        taus = np.linspace(0.0, 2 * 2 * math.pi / W, 13)
+        got, want = [], []
+        for tau in taus:
+            X = _exact(pm, t0, np.concatenate([q0, v0]), tau)
+            force = pm[:, P_F0] * math.cos(W * (t0 + tau) + PHASE)
+            acc = Mi @ (force - pm[:, P_C] * X[3:] - pm[:, P_K] * X[:3])
+            _modal._rows_at(rows, cfg[11], cfg[1], cfg[2], W, tau, out)
+            got.append(out[:, :3].copy())
+            want.append(np.stack([shapes @ X[:3], shapes @ X[3:], shapes @ acc], axis=1))
+        got, want = np.array(got), np.array(want)
+        scale = np.max(np.abs(want), axis=(0, 1))
+        assert np.all(np.max(np.abs(got - want), axis=(0, 1)) < 1e-12 * scale)
+
+
 def test_the_release_is_the_first_time_the_wall_would_pull():
     """From rest on the wall s = +1 at a phase where the point accelerates away from the mass
     (ẍₐ < 0), the release is the first zero of ẍₐ: the engine's certified search against ẍₐ
@@ -121,6 +150,14 @@ def test_the_release_is_the_first_time_the_wall_would_pull():
                   rtol=1e-15)  # fmt: skip
     work = np.empty((22, 3))
     watch = np.array([-1, 0, 0], dtype=np.int64)
-    tau, which = _modal._release(pm, cfg, 1, stuck, SHAPE, t0, q0, v0, 2 * T, watch, work, 0.0)
-    assert which == 0
-    assert abs(tau - root) < 1e-12 * T
+    # the flight read whole (the state and the point's acceleration from it), then through its
+    # projection on the point (the closed form's derivatives, :func:`_modal._held_rows`)
+    none, none_out = np.zeros((0, 3, 1), dtype=np.complex128), np.zeros((0, 4))
+    rows, out = np.zeros((1, 3, 8), dtype=np.complex128), np.zeros((1, 4))
+    assert not cfg[6]
+    _modal._held_rows(pm, cfg, SHAPE, t0, q0, v0, rows, out)
+    for r, o in ((none, none_out), (rows, out)):
+        tau, which = _modal._release(pm, cfg, 1, stuck, SHAPE, t0, q0, v0, 2 * T, watch, work, r,
+                                     o, 0.0)  # fmt: skip
+        assert which == 0
+        assert abs(tau - root) < 1e-12 * T

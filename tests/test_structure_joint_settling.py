@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 from symimpact.forced import _rigid
-from symimpact.forced._modal import E_DAMPER, _returns_at_once
+from symimpact.forced._modal import E_DAMPER, _config, _returns_at_once
 from symimpact.forced._rigid import E_KIND, E_LOST, E_T, E_VREL, KIND_IMPACT
 from symimpact.forced.structure_response import simulate_structure
 from symimpact.model.dampers import dampers
@@ -81,8 +81,11 @@ def test_a_release_is_jumped_over_exactly_when_its_return_would_accumulate(facto
     w_star = limit * a * (1 - ej) * M / (2 * (1 + e) * mu)
     w = factor * w_star
     none = np.zeros((0, 1))
-    got = _returns_at_once(pm, np.ones((2, 1)), np.array([mj, mk]), np.array([-1, 0]), none,
-                           np.zeros(0), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
-                           np.zeros(0, dtype=np.int64), 0.0, 0, 1, e, -w, 0.0, np.array([q0]),
-                           np.zeros(1), np.array([ej, e]), np.zeros(2), limit, np.empty(1))  # fmt: skip
+    shapes, masses = np.ones((2, 1)), np.array([mj, mk])
+    nothing = np.zeros(0, dtype=np.int64)
+    without = _config(pm, shapes, masses, np.array([0, 0]), none, np.zeros(0), np.zeros(0),
+                      np.zeros(0), nothing, nothing, 0.0)  # fmt: skip
+    got = _returns_at_once(without, shapes, masses, np.array([-1, 0]), 0.0, 0, 1, e, -w, 0.0,
+                           np.array([q0]), np.zeros(1), np.array([ej, e]), np.zeros(2), limit,
+                           np.empty(1))  # fmt: skip
     assert got is kept

@@ -341,7 +341,8 @@ def test_two_masses_let_go_at_one_instant_leave_their_walls():
     r = simulate_structure(s, dampers(s, pair), "1", 0.1, 0.62, periods=6)
     t, kind = r.events[:, 0], r.events[:, 7].astype(int)
     releases = np.flatnonzero(kind == 2)
-    together = [i for i in releases[:-1] if kind[i + 1] == 2 and t[i + 1] == t[i]]
+    # at one instant: within the release search's tolerance, 4e-16 of the time
+    together = [i for i in releases[:-1] if kind[i + 1] == 2 and t[i + 1] - t[i] <= 4e-16 * t[i]]
     assert len(together) >= 10  # both let go at one instant
     after = [i + 2 for i in together if i + 2 < len(t)]
     assert all(t[j] - t[j - 1] > 1e-9 for j in after if kind[j] == 0)
@@ -365,7 +366,8 @@ def test_a_mass_on_its_wall_keeps_it_through_the_other_masss_impact():
     r = simulate_structure(s, dampers(s, pair), "1", 0.2, 0.62, periods=6)
     t, kind, vrel = r.events[:, 0], r.events[:, 7].astype(int), r.events[:, 5]
     releases = np.flatnonzero(kind == 2)
-    together = [i for i in releases[:-1] if kind[i + 1] == 2 and t[i + 1] == t[i]]
+    # at one instant: within the release search's tolerance, 4e-16 of the time
+    together = [i for i in releases[:-1] if kind[i + 1] == 2 and t[i + 1] - t[i] <= 4e-16 * t[i]]
     assert together  # both let go at one instant
     assert np.count_nonzero((kind == 0) & (vrel < 1e-12)) <= len(together)
     assert len(t) < 5000

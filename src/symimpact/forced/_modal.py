@@ -20,7 +20,12 @@ them), so its flight is the closed form of the first-order system X' = AX + b·c
 X(τ) = Re(V e^{Λτ} V⁻¹(X₀ − X_p(t₀))) + X_p(t₀ + τ), with A's eigen-decomposition V, Λ and the
 harmonic particular solution X_p = Re(X̂ e^{i(Ωt + φ)}), X̂ = (iΩ − A)⁻¹b, computed once each time
 the set of stuck dampers changes; a flight's columns Vₗcₗ are formed once per flight, and the
-state is real, so each conjugate pair of Λ costs one exponential (:func:`_held_free`).  A stuck
+state is real, so each conjugate pair of Λ costs one exponential (:func:`_held_free`).  The
+searches read such a flight at the few points they watch, not in its 2N states: its columns
+projected once per flight on each point's shape give the point's displacement, speed and
+acceleration (the closed form's derivatives) at each τ for one exponential per pair and a sum
+per point (:func:`_held_rows`, :func:`_rows_at`; they halved the cost per event of benchmark
+10's 10-mode runs, where masses ride most of the time).  A stuck
 mass is released where sₖ·ẍₐ turns positive (the wall would pull), searched on the impact
 search's certified grid (its chord bound on sₖ·ẍₐ) down to 1/64 of the shortest period and
 located by Illinois regula falsi (:func:`_release`).  An
@@ -36,7 +41,8 @@ meets the test of either alone (a ten-mode cantilever: 5·10⁴ events in a quar
 *The next event.*  Damper k's relative displacement zₖ = yₖ − φₖᵀq has |zₖ''| ≤ Aₖ: while no mass
 sticks Aₖ = Σ|φᵢ(aₖ)|·Aᵢ, Aᵢ the one-mode bound of mode i's acceleration over the flight
 (:func:`symimpact.forced._rigid._accel_bound`); while masses stick, the sum over the stuck
-system's modes of |φₖᵀVₗ|·|cₗ|·|λₗ|² (each decays, Re λₗ ≤ 0) and the harmonic part Ω²|φₖᵀX̂|.
+system's modes of |φₖᵀVₗcₗ|·|λₗ|² (each decays, Re λₗ ≤ 0; the projections above) and the
+harmonic part Ω²|φₖᵀX̂|.
 All free dampers are marched together: an interval every bound clears is skipped, any other
 halved, and each damper whose z crosses a wall there is bracketed and refined by Illinois regula
 falsi; the earliest crossing is the impact.  A crossing bracketed by a longer step is refined at
@@ -670,6 +676,72 @@ def _held_free(pm, hf, cplx, n2, vecs, tau, q, v):
             v[i] += hf[N + i, m].real * er - hf[N + i, m].imag * ei
 
 
+@njit(cache=True)
+def _held_rows(pm, cfg, shapes, t0, q0, v0, rows, out):
+    """The coupled flight from (q0, v0) at t0 (:func:`_held_free`) projected on each point r of
+    ``shapes`` (its row φᵣ), written into ``rows`` (R × 3 × (2N + 2), complex): for d = 0, 1, 2
+    the coefficients of dᵈ(φᵣᵀq)/dτᵈ = Re Σₗ rows[r, d, l]e^{λₗτ} + Re(rows[r, d, n]e^{iΩτ})
+    (+ rows[r, 0, n + 1] = φᵣᵀq_s for d = 0; n = 2n of the configuration, l < n):
+    rows[r, 0, l] = φᵣᵀ(wₗVₗcₗ) over q's rows, rows[r, 1, l] the same over q̇'s, and
+    rows[r, 2, l] = λₗ·rows[r, 1, l] (iΩ for the forcing's column): the derivatives of the closed
+    form, which solves M_sq̈ + C_sq̇ + K_sq = loads exactly.  out[r, 3] ← φᵣᵀq0.  A search that
+    reads a few points' displacements, speeds or accelerations along one flight then costs, per
+    τ, e^{λₗτ} for the kept half of Λ and three sums of as many terms per point
+    (:func:`_rows_at`), not the 2N rows of the state and the point's acceleration from it
+    (:func:`_point_accel`: 3N² products)."""
+    hf = cfg[11]
+    if not _held_fresh(hf, t0, q0, v0):
+        _held_fill(pm, cfg, t0, q0, v0)
+    N = pm.shape[0]
+    n2 = cfg[2]
+    cplx = cfg[1]
+    last = cplx.shape[0] - 1
+    qs = cfg[3][1]
+    W = pm[0, P_W]
+    for r in range(shapes.shape[0]):
+        for m in range(n2 + 1):
+            x, xv = 0.0j, 0.0j
+            if m == n2 or hf[2 * N + 2, m].real != 0.0:
+                for i in range(N):
+                    x += shapes[r, i] * hf[i, m]
+                    xv += shapes[r, i] * hf[N + i, m]
+            rate = cplx[last, m] if m < n2 else 1j * W
+            rows[r, 0, m] = x
+            rows[r, 1, m] = xv
+            rows[r, 2, m] = rate * xv
+        c, c0 = 0.0, 0.0
+        for i in range(N):
+            c += shapes[r, i] * qs[i]
+            c0 += shapes[r, i] * q0[i]
+        rows[r, 0, n2 + 1] = c
+        out[r, 3] = c0
+
+
+@njit(cache=True)
+def _rows_at(rows, hf, cplx, n2, W, tau, out):
+    """out[r, d] ← dᵈ(φᵣᵀq)/dτᵈ at τ into the flight, d = 0, 1, 2, for each point r of ``rows``
+    (:func:`_held_rows`; ``hf``, ``cplx``, ``n2``: the configuration's cache, arrays and 2n,
+    taken one by one as :func:`_held_free` takes them)."""
+    N2 = hf.shape[0] - 3
+    last = cplx.shape[0] - 1
+    cw, sw = math.cos(W * tau), math.sin(W * tau)
+    for r in range(rows.shape[0]):
+        for d in range(3):
+            c = rows[r, d, n2]
+            out[r, d] = c.real * cw - c.imag * sw
+        out[r, 0] += rows[r, 0, n2 + 1].real
+    for m in range(n2):
+        if hf[N2 + 2, m].real == 0.0:
+            continue
+        lam = cplx[last, m]
+        ex = math.exp(lam.real * tau)
+        er, ei = ex * math.cos(lam.imag * tau), ex * math.sin(lam.imag * tau)
+        for r in range(rows.shape[0]):
+            for d in range(3):
+                c = rows[r, d, m]
+                out[r, d] += c.real * er - c.imag * ei
+
+
 @njit(cache=True, inline="always")
 def _stuck_loads(pm, cfg, t, q, v):
     """r = Pcos θ + Qsin θ + f_s − C_sq̇ − K_sq of the coupled structure, P = F + K·X_b,
@@ -774,9 +846,11 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v, xb):
 
 
 @njit(cache=True)
-def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, xb):
+def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, rows, xb):
     """(A, B): for every damper's point, A ≥ |ẍₐ| and B ≥ |d⁴xₐ/dt⁴| over [t0, t0 + T] of the
-    flight (module text), written into A and B (with the base's Ω²X_b and Ω⁴X_b)."""
+    flight (module text), written into A and B (with the base's Ω²X_b and Ω⁴X_b).  ``rows``:
+    the coupled flight projected on the points (:func:`_held_rows`), or none (shape 0): each
+    term's |φᵀwₗVₗcₗ| is then read there (wₗ = 2 counts a conjugate pair)."""
     N, K = pm.shape[0], Phi.shape[0]
     W = pm[0, P_W]
     A[:] = abs(xb) * W * W
@@ -790,6 +864,18 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, xb):
                 B[k] += abs(Phi[k, i]) * 2.0 * Ai * max(W, wn) ** 2
         return A, B
     lam, V, _, Xhat = _modes_of(cfg)
+    if rows.shape[0] == K:
+        for k in range(K):
+            for m in range(lam.shape[0]):
+                amp = abs(rows[k, 0, m]) * abs(lam[m]) ** 2
+                A[k] += amp
+                B[k] += amp * abs(lam[m]) ** 2
+            r = abs(rows[k, 0, lam.shape[0]])
+            A[k] += r * W * W
+            B[k] += r * W**4
+            A[k] = A[k] * (1.0 + 1e-9) + 1e-300
+            B[k] = B[k] * (1.0 + 1e-9) + 1e-300
+        return A, B
     c = _coefficients(pm, cfg, t0, q0, v0)
     for k in range(K):
         for m in range(lam.shape[0]):
@@ -810,12 +896,15 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, xb):
 
 
 @njit(cache=True)
-def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, xb):
+def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, rows, out, xb):
     """A τ up to which the wall ``side`` the damper of row ``row`` of ``Phi`` just left cannot be
     reached: :func:`symimpact.forced._rigid._held_off` with the point's acceleration
-    g = side·ẍₐ, A ≥ |ẍₐ| and B ≥ |g''| (q, v: scratch)."""
+    g = side·ẍₐ, A ≥ |ẍₐ| and B ≥ |g''| (q, v: scratch; ``rows``, ``out``: the coupled flight
+    projected on ``Phi``'s points and their scratch, :func:`_held_rows`, or none, shape 0)."""
     period = 2.0 * math.pi / cfg[8]
     dec = cfg[6]
+    proj = not dec and rows.shape[0] > 0
+    hf, cplx, n2, W = cfg[11], cfg[1], cfg[2], pm[0, P_W]
     span = min(T, period)
     ga = side * _point_accel(pm, cfg, nstuck, Phi, row, t0, q0, v0, xb)
     if ga < -1e-12 * A:
@@ -823,7 +912,10 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, xb):
     ga = max(ga, 0.0)
     g1 = side * _point_jerk(pm, cfg, nstuck, Phi, row, t0, q0, v0, xb)
     tau = min((g1 + math.sqrt(g1 * g1 + 2.0 * B * ga)) / B, span)
-    if tau > 0.0:
+    if tau > 0.0 and proj:
+        _rows_at(rows, hf, cplx, n2, W, tau, out)
+        ga = side * (out[row, 2] + _base_a(pm, xb, t0 + tau))
+    elif tau > 0.0:
         _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v)
         ga = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tau, q, v, xb)
     H = period / 64.0
@@ -833,6 +925,9 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, xb):
         if dec:
             _free_states(pm, cfg[10], t0, q0, v0, tb, q, v)
             gb = side * _free_point_accel(pm, Phi, row, t0 + tb, q, v, xb)
+        elif proj:
+            _rows_at(rows, hf, cplx, n2, W, tb, out)
+            gb = side * (out[row, 2] + _base_a(pm, xb, t0 + tb))
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
             gb = side * _point_accel(pm, cfg, nstuck, Phi, row, t0 + tb, q, v, xb)
@@ -847,10 +942,13 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, xb):
 
 
 @njit(cache=True)
-def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v, xb):
+def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v, rows, out,
+            xb):  # fmt: skip
     """The first τ in (lo, hi] where s·z reaches h (z(lo) = za inside, z(hi) = zb beyond), by
-    Illinois regula falsi to 4e-16 of the time."""
+    Illinois regula falsi to 4e-16 of the time (``rows``, ``out``: as :func:`_held_off`'s)."""
     dec = cfg[6]
+    proj = not dec and rows.shape[0] > 0
+    hf, cplx, n2, W = cfg[11], cfg[1], cfg[2], pm[0, P_W]
     flo = min(s * za - h, 0.0)
     fhi = s * zb - h
     kept = 0
@@ -859,13 +957,17 @@ def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb,
         tm = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
         if not (lo < tm < hi):
             tm = 0.5 * (lo + hi)
-        if dec:
-            _free_states(pm, cfg[10], t0, q0, v0, tm, q, v)
-        else:
-            _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
         dx = _base_x(pm, xb, t0 + tm) - _base_x(pm, xb, t0)
-        for i in range(pm.shape[0]):
-            dx += Phi[row, i] * (q[i] - q0[i])
+        if proj:
+            _rows_at(rows, hf, cplx, n2, W, tm, out)
+            dx += out[row, 0] - out[row, 3]
+        else:
+            if dec:
+                _free_states(pm, cfg[10], t0, q0, v0, tm, q, v)
+            else:
+                _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
+            for i in range(pm.shape[0]):
+                dx += Phi[row, i] * (q[i] - q0[i])
         fm = s * (z0 + u0 * tm - dx) - h
         if fm >= 0.0:
             hi, fhi = tm, fm
@@ -884,20 +986,26 @@ def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb,
 
 @njit(cache=True)
 def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau_safe, A, tau, za,
-                 which, wall, tk, q, v, xb):  # fmt: skip
+                 which, wall, tk, q, v, rows, out, xb):  # fmt: skip
     """Whether no free damper meets a wall in [τ, τₖ) when damper ``which`` meets wall ``wall``
     at τₖ (refined) and every z was inside at τ (``za``): near τₖ that damper's s·z ≤ h − r(τₖ − t)
     + Aₖ(τₖ − t)²/2 < h while τₖ − t ≤ r/Aₖ (r its rate at τₖ), and over [τ, t₁] and [t₁, τₖ],
     t₁ = τₖ − r/Aₖ, each damper's chord bound (:func:`_next_impact`'s) must clear both walls
     (a wall just left also while the interval ends before its held-off time).  False (not
-    certified) sends the search back to halving its step."""
+    certified) sends the search back to halving its step.  ``rows``, ``out``: as
+    :func:`_held_off`'s."""
     N, K = pm.shape[0], Phi.shape[0]
     dec = cfg[6]
+    proj = not dec and rows.shape[0] > 0
+    hf, cplx, n2, W = cfg[11], cfg[1], cfg[2], pm[0, P_W]
     if dec:
         _free_states(pm, cfg[10], t0, q0, v0, tk, q, v)
+    elif proj:
+        _rows_at(rows, hf, cplx, n2, W, tk, out)
     else:
         _states(pm, cfg, nstuck, t0, q0, v0, tk, q, v)
-    r = wall * (u0[which] - _dot(Phi, which, v) - _base_v(pm, xb, t0 + tk))
+    xd = out[which, 1] if proj else _dot(Phi, which, v)
+    r = wall * (u0[which] - xd - _base_v(pm, xb, t0 + tk))
     if not r > 0.0:
         return False
     t1 = max(tau, tk - r / A[which])
@@ -905,11 +1013,16 @@ def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau
     shift = _base_x(pm, xb, t0 + tk) - _base_x(pm, xb, t0)
     for k in range(K):
         dx = shift
-        for i in range(N):
-            dx += Phi[k, i] * (q[i] - q0[i])
+        if proj:
+            dx += out[k, 0] - out[k, 3]
+        else:
+            for i in range(N):
+                dx += Phi[k, i] * (q[i] - q0[i])
         zk[k] = z0[k] + u0[k] * tk - dx
     if dec:
         _free_states(pm, cfg[10], t0, q0, v0, t1, q, v)
+    elif proj:
+        _rows_at(rows, hf, cplx, n2, W, t1, out)
     else:
         _states(pm, cfg, nstuck, t0, q0, v0, t1, q, v)
     shift = _base_x(pm, xb, t0 + t1) - _base_x(pm, xb, t0)
@@ -917,8 +1030,11 @@ def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau
         if stuck[k] != 0:
             continue
         dx = shift
-        for i in range(N):
-            dx += Phi[k, i] * (q[i] - q0[i])
+        if proj:
+            dx += out[k, 0] - out[k, 3]
+        else:
+            for i in range(N):
+                dx += Phi[k, i] * (q[i] - q0[i])
         z1 = z0[k] + u0[k] * t1 - dx
         for w in (1.0, -1.0):
             first = max(w * za[k], w * z1) + A[k] * (t1 - tau) ** 2 / 8.0 < hd[k]
@@ -933,17 +1049,22 @@ def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau
 
 
 @njit(cache=True)
-def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch, work, xb):
+def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch, work, rows,
+                 out, xb):  # fmt: skip
     """(τ, damper, side): the first τ in (0, T] at which a free damper's abs(z) reaches its half
     clearance, that damper and its wall (±1); (T, −1, 0) when there is none, or (τ so far, −1, 0)
-    when a signal is seen on ``watch``.  ``side0[k]``: the wall damper k starts on (0: none)."""
+    when a signal is seen on ``watch``.  ``side0[k]``: the wall damper k starts on (0: none).
+    While a mass rides, the flight is read through its projection on the dampers' points,
+    ``rows`` (:func:`_held_rows`, filled by the caller for this flight; ``out``: its scratch)."""
     N, K = pm.shape[0], Phi.shape[0]
     if nstuck == K:  # every mass rides on its point: nothing to meet
         return T, -1, 0
     hmax = 2.0 * math.pi / cfg[9] / 16.0
     dec = cfg[6]
+    proj = not dec and rows.shape[0] > 0
+    hf, cplx, n2, W = cfg[11], cfg[1], cfg[2], pm[0, P_W]
     A, B, tau_safe, q, v, za, zb = work[0], work[1], work[2], work[3], work[4], work[5], work[6]
-    _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, xb)
+    _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, rows, xb)
     hmin = 1e-6 * hmax
     tau_safe[:] = 0.0
     for k in range(K):
@@ -961,7 +1082,8 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             if fd0 <= 8e-16 * (abs(u0[k]) + abs(xd)):
                 fd0 = min(fd0, 0.0)
                 tau_safe[k] = max(-2.0 * fd0 / A[k], _held_off(pm, cfg, nstuck, Phi, k, t0, q0,
-                                  v0, side0[k], T, A[k], B[k], work[7], work[8], xb))  # fmt: skip
+                                  v0, side0[k], T, A[k], B[k], work[7], work[8], rows, out,
+                                  xb))  # fmt: skip
     for k in range(K):
         za[k] = z0[k]
         zb[k] = z0[k]
@@ -984,6 +1106,8 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
         tb = tau + H
         if dec:
             _free_states(pm, cfg[10], t0, q0, v0, tb, q, v)
+        elif proj:
+            _rows_at(rows, hf, cplx, n2, W, tb, out)
         else:
             _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
         clear = True
@@ -992,8 +1116,11 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             if stuck[k] != 0:
                 continue
             dx = shift
-            for i in range(N):
-                dx += Phi[k, i] * (q[i] - q0[i])
+            if proj:
+                dx += out[k, 0] - out[k, 3]
+            else:
+                for i in range(N):
+                    dx += Phi[k, i] * (q[i] - q0[i])
             zb[k] = z0[k] + u0[k] * tb - dx
             slack = A[k] * H * H / 8.0
             up = max(za[k], zb[k]) + slack < hd[k] or (side0[k] == 1 and tb <= tau_safe[k])
@@ -1014,12 +1141,12 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
                 if stuck[k] == 0 and abs(zb[k]) >= hd[k] and abs(za[k]) < hd[k] and tau > 0.0:
                     s = 1.0 if zb[k] > 0 else -1.0
                     tk = _refine(pm, cfg, nstuck, Phi, k, hd[k], t0, q0, v0, z0[k], u0[k], s,
-                                 tau, tb, za[k], zb[k], q, v, xb)  # fmt: skip
+                                 tau, tb, za[k], zb[k], q, v, rows, out, xb)  # fmt: skip
                     if which < 0 or tk < first:
                         first, which, wall = tk, k, int(s)
             if which >= 0 and _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0,
                                            side0, tau_safe, A, tau, za, which, wall, first, q,
-                                           v, xb):  # fmt: skip
+                                           v, rows, out, xb):  # fmt: skip
                 return first, which, wall
             H *= 0.5
             continue
@@ -1028,7 +1155,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
             if stuck[k] == 0 and abs(zb[k]) >= hd[k]:
                 s = 1.0 if zb[k] > 0 else -1.0
                 tk = _refine(pm, cfg, nstuck, Phi, k, hd[k], t0, q0, v0, z0[k], u0[k], s, tau,
-                             tb, za[k], zb[k], q, v, xb)  # fmt: skip
+                             tb, za[k], zb[k], q, v, rows, out, xb)  # fmt: skip
                 if which < 0 or tk < first:
                     first, which, wall = tk, k, int(s)
         if which >= 0:
@@ -1059,7 +1186,9 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
     dec = cfg[6]
     A, B, fa, fb, hold = work[14], work[15], work[16], work[17], work[18]
     q, v = work[3], work[4]
-    _bounds(pm, cfg, nstuck, Sphi, t0, q0, v0, T, A, B, 0.0)
+    none = np.zeros((0, 3, 1), dtype=np.complex128)  # the flight read whole (no projection)
+    none_out = np.zeros((0, 4))
+    _bounds(pm, cfg, nstuck, Sphi, t0, q0, v0, T, A, B, none, 0.0)
     hmin = 1e-6 * hmax
     for s in range(S):
         hmin = min(hmin, max(1e-12 * hmax, math.sqrt(8e-20 * sg[s] / A[s])))
@@ -1070,7 +1199,7 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
             if fresh_wall != 0:
                 hold[s] = max(hold[s], _held_off(pm, cfg, nstuck, Sphi, s, t0, q0, v0,
                                                  -fresh_wall, T, A[s], B[s], work[7], work[8],
-                                                 0.0))  # fmt: skip
+                                                 none, none_out, 0.0))  # fmt: skip
         if contact[s] != 0 and srig[s] != 0:
             hold[s] = math.inf  # held on its wall: the constraint keeps it there
     tau = 0.0
@@ -1137,7 +1266,7 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
                 continue
             x0 = _dot(Sphi, s, q0)
             ts = _refine(pm, cfg, nstuck, Sphi, s, h, t0, q0, v0, -x0, 0.0, d, tau, tb, -fa[s],
-                         -fb[s], q, v, 0.0)  # fmt: skip
+                         -fb[s], q, v, none, none_out, 0.0)  # fmt: skip
             if which < 0 or ts < first:
                 first, which, wall = ts, s, to
         if which >= 0:
@@ -1150,19 +1279,24 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
 
 
 @njit(cache=True)
-def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, xb):
+def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, rows, out, xb):
     """(τ, damper): the first τ in (0, T] where a stuck damper's g = sₖ·ẍₐ turns positive (its
     wall would pull; ẍₐ the point's absolute acceleration, with ẍ_b), or (T, −1) (or the τ
     reached when a signal is seen on ``watch``).  The grid is the impact search's: a step over
     which every stuck damper's chord bound max(g(a), g(b)) + Bₖh²/8 stays negative (Bₖ ≥ |g''|,
     :func:`_bounds`) is taken and the next one doubled, up to a sixteenth of the slowest period;
     any other is halved, down to 1/64 of the shortest period, where it is taken as sampled; the
-    first sample with g > 0 is refined by Illinois regula falsi."""
+    first sample with g > 0 is refined by Illinois regula falsi.  A coupled flight is read
+    through its projection on the dampers' points, ``rows`` (:func:`_held_rows`, filled by the
+    caller for this flight; ``out``: its scratch; none, shape 0: the state and
+    :func:`_point_accel`)."""
     K = Phi.shape[0]
     fine = 2.0 * math.pi / cfg[8] / 64.0
     hmax = max(2.0 * math.pi / cfg[9] / 16.0, fine)
+    proj = not cfg[6] and rows.shape[0] > 0
+    hf, cplx, n2, W = cfg[11], cfg[1], cfg[2], pm[0, P_W]
     A, B, q, v, fa, fb = work[0], work[1], work[3], work[4], work[9], work[2]
-    _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, xb)
+    _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, rows, xb)
     for k in range(K):
         fa[k] = -1.0
         if stuck[k] != 0:
@@ -1176,11 +1310,17 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, xb):
             return tau, -1
         H = min(H, T - tau)
         tb = tau + H
-        _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
+        if proj:
+            _rows_at(rows, hf, cplx, n2, W, tb, out)
+        else:
+            _states(pm, cfg, nstuck, t0, q0, v0, tb, q, v)
         certain, pulls = True, False
         for k in range(K):
-            if stuck[k] != 0:
+            if stuck[k] != 0 and proj:
+                fb[k] = stuck[k] * (out[k, 2] + _base_a(pm, xb, t0 + tb))
+            elif stuck[k] != 0:
                 fb[k] = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tb, q, v, xb)
+            if stuck[k] != 0:
                 pulls = pulls or fb[k] > 0.0
                 certain = certain and max(fa[k], fb[k]) + B[k] * H * H / 8.0 < 0.0
         if not certain and H > fine:
@@ -1194,8 +1334,12 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, xb):
             kept = 0
             for _ in range(200):
                 tm = secant_point(lo, hi, flo, fhi)
-                _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
-                fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tm, q, v, xb)
+                if proj:
+                    _rows_at(rows, hf, cplx, n2, W, tm, out)
+                    fm = stuck[k] * (out[k, 2] + _base_a(pm, xb, t0 + tm))
+                else:
+                    _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
+                    fm = stuck[k] * _point_accel(pm, cfg, nstuck, Phi, k, t0 + tm, q, v, xb)
                 if fm > 0.0:
                     hi, fhi = tm, fm
                     if kept == 1:
@@ -1547,7 +1691,7 @@ def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, con
 
 @njit(cache=True)
 def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work, Sphi,
-             sc, contact, xb, energy):  # fmt: skip
+             sc, contact, rows, out, xb, energy):  # fmt: skip
     """Account for the flight [t0, t0 + τ]: with ``energy``, its energy ledger
     (:func:`_flight_ledger`); and, for every output point p (rows of ``Pout``, its shapes), the largest abs(xₚ) of every forcing period
     crossed (``period_max[k, p]``), at the ends of the steps and at the zeros of ẋₚ inside them.
@@ -1557,9 +1701,12 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
     its ends), and any other is halved down to a sixteenth of the shortest period, where a zero
     of ẋₚ is located where its sign changes (with several modes, ẋₚ ripples at the highest
     mode's frequency and most of its zeros are such).  Under base motion (``xb`` = X_b) the
-    output points' displacements are absolute, x_b + φₚᵀq."""
+    output points' displacements are absolute, x_b + φₚᵀq.  A coupled flight is read through
+    its projection on the output points (:func:`_held_rows`, into ``rows``; ``out``: its
+    scratch)."""
     N, P = pm.shape[0], Pout.shape[0]
     dec = cfg[6]
+    hf, cplx, n2, W = cfg[11], cfg[1], cfg[2], pm[0, P_W]
     Ap, Bp, v_prev, x_prev = work[10], work[11], work[12], work[13]
     xs, vs, fine = work[19], work[20], work[21]
     W = pm[0, P_W]
@@ -1570,7 +1717,9 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
         _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, contact, dec)
     if P == 0:
         return
-    _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp, xb)
+    if not dec:
+        _held_rows(pm, cfg, Pout, t0, q0, v0, rows, out)
+    _bounds(pm, cfg, nstuck, Pout, t0, q0, v0, tau, Ap, Bp, rows, xb)
     for p in range(P):
         v_prev[p] = _base_v(pm, xb, t0)
         x_prev[p] = _base_x(pm, xb, t0)
@@ -1586,16 +1735,20 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
         if dec:
             _free_states(pm, cfg[10], t0, q0, v0, b, q, v)
         else:
-            _states(pm, cfg, nstuck, t0, q0, v0, b, q, v)
+            _rows_at(rows, hf, cplx, n2, W, b, out)
         ka = min(int(math.floor((t0 + a) / T_f)), n_periods)  # noqa: RUF046
         k = int(math.floor((t0 + b) / T_f))  # noqa: RUF046 (int() spelled out for numba)
         taken = True
         xbb, vbb = _base_x(pm, xb, t0 + b), _base_v(pm, xb, t0 + b)
         for p in range(P):
             xp, vp = xbb, vbb
-            for i in range(N):
-                xp += Pout[p, i] * q[i]
-                vp += Pout[p, i] * v[i]
+            if dec:
+                for i in range(N):
+                    xp += Pout[p, i] * q[i]
+                    vp += Pout[p, i] * v[i]
+            else:
+                xp += out[p, 0]
+                vp += out[p, 1]
             xs[p], vs[p], fine[p] = xp, vp, 0.0
             top = max(abs(x_prev[p]), abs(xp)) + Ap[p] * H * H / 8.0
             low = period_max[ka, p]
@@ -1620,13 +1773,14 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                 kept = 0
                 for _ in range(100):
                     tm = secant_point(lo, hi, flo, fhi)
+                    vm = _base_v(pm, xb, t0 + tm)
                     if dec:
                         _free_states(pm, cfg[10], t0, q0, v0, tm, q, v)
+                        for i in range(N):
+                            vm += Pout[p, i] * v[i]
                     else:
-                        _states(pm, cfg, nstuck, t0, q0, v0, tm, q, v)
-                    vm = _base_v(pm, xb, t0 + tm)
-                    for i in range(N):
-                        vm += Pout[p, i] * v[i]
+                        _rows_at(rows, hf, cplx, n2, W, tm, out)
+                        vm += out[p, 1]
                     if vm == 0.0:
                         lo = hi = tm  # the zero itself: x is read there
                         break
@@ -1642,10 +1796,14 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
                         kept = 1
                     if hi - lo <= 4e-16 * (t0 + hi):
                         break
-                _states(pm, cfg, nstuck, t0, q0, v0, 0.5 * (lo + hi), q, v)
                 xm = _base_x(pm, xb, t0 + 0.5 * (lo + hi))
-                for i in range(N):
-                    xm += Pout[p, i] * q[i]
+                if dec:
+                    _free_states(pm, cfg[10], t0, q0, v0, 0.5 * (lo + hi), q, v)
+                    for i in range(N):
+                        xm += Pout[p, i] * q[i]
+                else:
+                    _rows_at(rows, hf, cplx, n2, W, 0.5 * (lo + hi), out)
+                    xm += out[p, 0]
                 km = int(math.floor((t0 + 0.5 * (lo + hi)) / T_f))  # noqa: RUF046
                 if km < n_periods:
                     period_max[km, p] = max(period_max[km, p], abs(xm))
@@ -1656,20 +1814,18 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
 
 
 @njit(cache=True)
-def _returns_at_once(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb, j, k, e, u, t, q,
-                     v_before, ed, vyd, limit, vt):  # fmt: skip
+def _returns_at_once(cfg, Phi, md, stuck, xb, j, k, e, u, t, q, v_before, ed, vyd, limit, vt):
     """Whether stuck damper j, released by damper k's impulse (restitution e, mass speed u, the
     structure's velocities ``v_before``), would be back on its wall within ``limit`` [s]: its
     excursion's chatter would accumulate by Step 9's test, 2σ/(a(1 − eⱼ)) ≤ limit, σ > 0 the speed
     the impulse (taken without j) gives its point away from it and a > 0 its point's acceleration
     back at t (``vt``: scratch).  Such a release is jumped over, as any chatter that short is
-    (module text)."""
+    (module text).  ``cfg``: the structure without j (:func:`_config`; :func:`run` passes the
+    one it keeps for that pattern: formed anew at each such impact, it was 4 % of benchmark 10's
+    10-mode run)."""
     if vyd[j] > 0.0 or ed[j] >= 1.0:
         return False
     side = stuck[j]
-    stuck[j] = 0
-    cfg = _config(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb)
-    stuck[j] = side
     if not cfg[5]:
         return False
     pm = cfg[7]
@@ -2006,6 +2162,10 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     # displacements; the stops' bounds A, B, displacements at the grid's ends and held-off times
     # (one array, its rows: a tuple of arrays costs a reference count per array at every call)
     work = np.empty((22, max(N, K, P, S)))
+    # a coupled flight projected on the dampers' points and on the output points, with their
+    # scratch (:func:`_held_rows`)
+    rows_k, out_k = np.zeros((K, 3, 2 * N + 2), dtype=np.complex128), np.zeros((K, 4))
+    rows_p, out_p = np.zeros((P, 3, 2 * N + 2), dtype=np.complex128), np.zeros((P, 4))
     D = 2 * N + 2 * K
     G = np.eye(D)
     fm, fp, gh = np.empty(D), np.empty(D), np.zeros(D)
@@ -2023,7 +2183,9 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     # references to them; ``owned`` keeps the locals alive to the end of the run, the caller
     # the arguments, and ``cfgs`` the configurations
     owned = (q, v, qn, vn, u, z, side0, stuck, work, contact, pulls, fm, fp, gh, v_before,
-             let_go, kept, v_trial)  # fmt: skip
+             let_go, kept, v_trial, rows_k, out_k, rows_p, out_p)  # fmt: skip
+    rows_k, out_k, rows_p, out_p = (borrowed(rows_k), borrowed(out_k), borrowed(rows_p),
+                                    borrowed(out_p))  # fmt: skip
     q, v, qn, vn, u, z = (borrowed(q), borrowed(v), borrowed(qn), borrowed(vn), borrowed(u),
                           borrowed(z))  # fmt: skip
     side0, stuck, work, contact = (borrowed(side0), borrowed(stuck), borrowed(work),
@@ -2072,8 +2234,11 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             break
         T = t_end - t
         kr = -1
+        if not cfg[6]:
+            _held_rows(pm, cfg, Phi, t, q, v, rows_k, out_k)
         if nstuck > 0:
-            T, kr = _release(pm, cfg, nstuck, stuck, Phi, t, q, v, T, watch, work, xb)
+            T, kr = _release(pm, cfg, nstuck, stuck, Phi, t, q, v, T, watch, work, rows_k,
+                             out_k, xb)  # fmt: skip
         ks, ws = -1, 0
         held = 0
         for r in range(S):
@@ -2090,9 +2255,9 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 T, ks, ws = taus, kc, wc
                 kr = -1
         tau, k, side = _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t, q, v, z, u, side0, T,
-                                    watch, work, xb)  # fmt: skip
+                                    watch, work, rows_k, out_k, xb)  # fmt: skip
         _segment(pm, cfg, nstuck, Pout, t, q, v, tau, ledger, period_max, n_periods, work, Sphi,
-                 sc, contact, xb, energy)  # fmt: skip
+                 sc, contact, rows_p, out_p, xb, energy)  # fmt: skip
         _states(pm, cfg, nstuck, t, q, v, tau, qn, vn)
         if smooth:
             _flight_jacobian(pm, cfg, K, tau, G)
@@ -2176,7 +2341,8 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                 if delta <= chat * T_f and t + delta < t_end:
                     smooth = False
                     _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max,
-                             n_periods, work, Sphi, sc, contact, xb, energy)  # fmt: skip
+                             n_periods, work, Sphi, sc, contact, rows_p, out_p, xb,
+                             energy)  # fmt: skip
                     _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
                     shift = _base_x(pm, xb, t + delta) - _base_x(pm, xb, t)
                     vb0, vb1 = _base_v(pm, xb, t), _base_v(pm, xb, t + delta)
@@ -2312,8 +2478,13 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
             if pulled < 0:
                 break
             smooth = False  # a stuck mass let go by the impulse: not differentiated
-            if _returns_at_once(pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb, pulled,
-                                k, e, u[k], t, q, v_before, ed, vyd, chat * T_f, v_trial):  # fmt: skip
+            side_p = stuck[pulled]
+            stuck[pulled] = 0  # the structure without the mass pulled
+            without = _working_config(keys, cfgs, pm0, Phi, md, stuck, Sphi, sk, sc, sg, contact,
+                                      srig, xb)  # fmt: skip
+            stuck[pulled] = side_p
+            if _returns_at_once(without, Phi, md, stuck, xb, pulled, k, e, u[k], t, q, v_before,
+                                ed, vyd, chat * T_f, v_trial):  # fmt: skip
                 kept[pulled] = 1
                 continue
             let_go[pulled] = stuck[pulled]
@@ -2328,6 +2499,12 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                                 u[pulled], pulled)  # fmt: skip
         u_before = u[k]
         u[k] -= P / md[k]
+        if e == 0.0:
+            # a plastic impact leaves the mass at its point's speed: set so, not left to the
+            # impulse's rounding (a few ulps of the speeds before, beyond the search's allowance
+            # for rounding, 8e-16 of those after: a mass leaving its point after such an impact
+            # was met again within picoseconds, a second impact at 1e-10 m/s)
+            u[k] = _dot(Phi, k, v) + _base_v(pm, xb, t)
         for j in range(K):
             if stuck[j] != 0:
                 u[j] = _dot(Phi, j, v) + _base_v(pm, xb, t)
@@ -2371,7 +2548,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
                         _slaved(G, Phi, stuck, N, K)
                 # jump to the accumulation point (the other masses fly on), close plastically
                 _segment(pm, cfg, nstuck, Pout, t, q, v, delta, ledger, period_max, n_periods,
-                         work, Sphi, sc, contact, xb, energy)  # fmt: skip
+                         work, Sphi, sc, contact, rows_p, out_p, xb, energy)  # fmt: skip
                 _states(pm, cfg, nstuck, t, q, v, delta, qn, vn)
                 shift = _base_x(pm, xb, t + delta) - _base_x(pm, xb, t)
                 vb0, vb1 = _base_v(pm, xb, t), _base_v(pm, xb, t + delta)
