@@ -24,8 +24,9 @@ state is real, so each conjugate pair of Λ costs one exponential (:func:`_held_
 searches read such a flight at the few points they watch, not in its 2N states: its columns
 projected once per flight on each point's shape give the point's displacement, speed and
 acceleration (the closed form's derivatives) at each τ for one exponential per pair and a sum
-per point (:func:`_held_rows`, :func:`_rows_at`; they halved the cost per event of benchmark
-10's 10-mode runs, where masses ride most of the time).  A stuck
+per point (:func:`_held_rows`, :func:`_rows_at`; benchmark 10's 400-period 10-mode runs, whose
+masses ride much of the time, went from 20.1 to 12.8 µs an event at the median of eight, without
+the ledger).  A stuck
 mass is released where sₖ·ẍₐ turns positive (the wall would pull), searched on the impact
 search's certified grid (its chord bound on sₖ·ẍₐ) down to 1/64 of the shortest period and
 located by Illinois regula falsi (:func:`_release`).  An
@@ -2104,7 +2105,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     ½m(ẏ − ẋ_b)²: each free mass's change in flight is the work of its inertia −m·ẍ_b.
     Without ``energy`` the flights' work and dissipation are not integrated
     (:func:`_flight_ledger`: with a mass riding on a mode shape's point, Gauss–Legendre rules at
-    the highest mode's rate, 40 % of the fastest 10-mode run of benchmark 10, 14 % at the median
+    the highest mode's rate, 38 % of the fastest 10-mode run of benchmark 10, 26 % at the median
     of its eight) and the ledger is not whole; the motion is the same to the bit.
 
     Returns (status, events, n_events, period_max, ledger, final): the event log (columns of
