@@ -647,6 +647,13 @@ def _held_fill(pm, cfg, t0, q0, v0):
     hf[N2 + 1, 1] = 1.0
 
 
+@njit(cache=True, inline="always")
+def _growth(lam, tau):
+    """(Re, Im) of e^{λτ}: one term of the coupled flight's sum (:func:`_held_free`)."""
+    ex = math.exp(lam.real * tau)
+    return ex * math.cos(lam.imag * tau), ex * math.sin(lam.imag * tau)
+
+
 @njit(cache=True)
 def _held_free(pm, hf, cplx, n2, vecs, tau, q, v):
     """The stuck (coupled) structure's (q, q̇) a time τ into the flight whose cache ``hf`` is
@@ -669,9 +676,7 @@ def _held_free(pm, hf, cplx, n2, vecs, tau, q, v):
     for m in range(n2):
         if hf[N2 + 2, m].real == 0.0:
             continue
-        lam = cplx[last, m]
-        ex = math.exp(lam.real * tau)
-        er, ei = ex * math.cos(lam.imag * tau), ex * math.sin(lam.imag * tau)
+        er, ei = _growth(cplx[last, m], tau)
         for i in range(N):
             q[i] += hf[i, m].real * er - hf[i, m].imag * ei
             v[i] += hf[N + i, m].real * er - hf[N + i, m].imag * ei
@@ -734,9 +739,7 @@ def _rows_at(rows, hf, cplx, n2, W, tau, out):
     for m in range(n2):
         if hf[N2 + 2, m].real == 0.0:
             continue
-        lam = cplx[last, m]
-        ex = math.exp(lam.real * tau)
-        er, ei = ex * math.cos(lam.imag * tau), ex * math.sin(lam.imag * tau)
+        er, ei = _growth(cplx[last, m], tau)
         for r in range(rows.shape[0]):
             for d in range(3):
                 c = rows[r, d, m]
