@@ -159,6 +159,16 @@ def call(fn: Any, *args: Any) -> Any:
     return out
 
 
+def deliver_pending() -> None:
+    """Where Python waits inside a :func:`stretch` — on worker processes
+    (:class:`symimpact._pool.Pending`), which ignore Ctrl-C — a SIGINT the stretch recorded is
+    delivered now (the stretch ends as :func:`call` ends it), not once the wait is over: the
+    multi-start's workers of ``frf`` had let a Ctrl-C wait up to 4 s for their runs."""
+    st = _stretch
+    if st is not None and st.pid == os.getpid() and not _compiled_depth and _recorded:
+        _end_stretch(st)
+
+
 def _deliver(previous: Any, watch: np.ndarray) -> None:
     """Once the deferral has ended: call the previous SIGINT handler if a SIGINT came (Python's
     own raises KeyboardInterrupt), and raise KeyboardInterrupt if a compiled run was cut short

@@ -12,8 +12,13 @@ import threading
 from collections.abc import Callable, Iterator
 from typing import Any
 
+from ._interrupt import deliver_pending
+
 #: True inside a worker started here: its own work runs in it, never on a nested pool.
 IN_WORKER = False
+#: Seconds between two looks, while this process waits on its workers, for a Ctrl-C that a
+#: :func:`symimpact._interrupt.stretch` recorded (:func:`symimpact._interrupt.deliver_pending`).
+LOOK = 0.05
 
 
 def worker_init(parent: int) -> None:
@@ -49,15 +54,18 @@ def can_spread() -> bool:
 def spread(fn: Callable[[Any], Any], payloads: list, workers: int) -> Iterator[Any]:
     """``fn(p)`` for each payload on ``workers`` local processes, yielded as they finish; an
     interrupted, terminated or failed pool does not wait for the runs still going."""
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
     pool = ProcessPoolExecutor(max_workers=workers, initializer=worker_init,
                                initargs=(os.getpid(),))  # fmt: skip
     finished = False
     try:
-        futures = [pool.submit(fn, p) for p in payloads]
-        for f in as_completed(futures):
-            yield f.result()
+        pending = {pool.submit(fn, p) for p in payloads}
+        while pending:
+            done, pending = wait(pending, timeout=LOOK, return_when=FIRST_COMPLETED)
+            deliver_pending()
+            for f in done:
+                yield f.result()
         finished = True
     finally:
         _close(pool, finished)
@@ -85,8 +93,14 @@ class Pending:
     def result(self) -> list[Any]:
         if self.pool is None:
             return [self.fn(p) for p in self.payloads]
+        from concurrent.futures import wait
+
         finished = False
         try:
+            pending = set(self.futures)
+            while pending:
+                _, pending = wait(pending, timeout=LOOK)
+                deliver_pending()
             out = [f.result() for f in self.futures]
             finished = True
         finally:
