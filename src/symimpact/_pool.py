@@ -93,14 +93,16 @@ class Pending:
     def result(self) -> list[Any]:
         if self.pool is None:
             return [self.fn(p) for p in self.payloads]
-        from concurrent.futures import wait
+        from concurrent.futures import FIRST_EXCEPTION, wait
 
         finished = False
         try:
             pending = set(self.futures)
             while pending:
-                _, pending = wait(pending, timeout=LOOK)
+                done, pending = wait(pending, timeout=LOOK, return_when=FIRST_EXCEPTION)
                 deliver_pending()
+                for f in done:
+                    f.result()  # a failed run raises at once, not after the others
             out = [f.result() for f in self.futures]
             finished = True
         finally:

@@ -215,8 +215,8 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
 
     ``energy``: keep the energy ledger (:attr:`StructureResult.energy`); without it the flights'
     work and dissipation are not integrated, which with a mass riding on its point is much of a
-    run's cost (benchmark 10: its fastest 10-mode run 1.7 times as fast without it, the medians
-    of its eight 1.2 times), and ``energy`` is None.  The
+    run's cost (benchmark 10: its fastest 10-mode run 1.6 times as fast without it, the medians
+    of its eight 1.4 times), and ``energy`` is None.  The
     motion is the same to the bit."""
     structure = instance("structure", structure, Structure, "a Structure")
     energy = flag("energy", energy)
