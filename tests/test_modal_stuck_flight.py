@@ -23,6 +23,7 @@ from symimpact.forced._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W
 W, PHASE = 2 * math.pi * 7.0, 0.4
 SHAPE = np.array([[1.0, -0.7, 0.4]])  # the stuck mass's point
 MASS = np.array([0.2])
+EPS = np.finfo(float).eps
 
 
 def _parameters(zetas):
@@ -105,7 +106,9 @@ def test_a_stuck_flight_projected_on_points_is_the_matrix_exponential():
         t0, q0, v0 = 0.21, rng.normal(size=3) * 1e-3, rng.normal(size=3) * 1e-2
         rows, out = np.zeros((2, 3, 8), dtype=np.complex128), np.zeros((2, 4))
         _modal._held_rows(pm, cfg, shapes, t0, q0, v0, rows, out)
-        assert np.allclose(out[:, 3], shapes @ q0, rtol=0, atol=1e-18)
+        # the sum's own start: φᵀq0 to c's rounding, up to V's condition (400) in ulps of the terms
+        ulp = EPS * np.abs(rows[:, 0]).max(axis=1)
+        assert np.all(np.abs(out[:, 3] - shapes @ q0) < 400 * ulp)
         taus = np.linspace(0.0, 2 * 2 * math.pi / W, 13)
         got, want = [], []
         for tau in taus:
@@ -118,6 +121,47 @@ def test_a_stuck_flight_projected_on_points_is_the_matrix_exponential():
         got, want = np.array(got), np.array(want)
         scale = np.max(np.abs(want), axis=(0, 1))
         assert np.all(np.max(np.abs(got - want), axis=(0, 1)) < 1e-12 * scale)
+
+
+def test_a_stuck_flight_starts_exactly_where_the_last_one_ended():
+    """At τ = 0 the coupled flight gives back its start to the bit, read whole (the state) and
+    projected on points (out[r, 0] − out[r, 3] = 0): its closed form's own value there differs
+    from the start by the rounding of the coefficients c = V⁻¹(…) (the raw sum, checked
+    nonzero here), and a search that measured displacements from the start saw a mass that had
+    just left its wall beyond it.  Over τ of 1e-9 of a period the change in φᵀq then matches
+    its Taylor polynomial φᵀq̇₀τ + φᵀq̈₀τ²/2 (the next term is 1e-16 of it) to 16 ulps of the
+    sum's largest term, the sums' own rounding."""
+    shapes = np.array([SHAPE[0], [0.3, 1.0, -0.2]])
+    T = 2 * math.pi / W
+    offsets = []
+    for zetas in ((0.01, 0.02, 0.03), (0.01, 3.0, 0.03)):
+        pm = _parameters(zetas)
+        cfg = _config(pm)
+        Ms = np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0])
+        Mi = np.linalg.inv(Ms)
+        rng = np.random.default_rng(7)
+        q, v, qr, vr = np.empty(3), np.empty(3), np.empty(3), np.empty(3)
+        rows, out = np.zeros((2, 3, 8), dtype=np.complex128), np.zeros((2, 4))
+        for _ in range(20):
+            t0, q0, v0 = rng.uniform(0, T), rng.normal(size=3) * 1e-3, rng.normal(size=3) * 1e-2
+            _modal._states(pm, cfg, 1, t0, q0, v0, 0.0, q, v)
+            assert np.array_equal(q, q0) and np.array_equal(v, v0)
+            _modal._held_sum(pm, cfg[11], cfg[1], cfg[2], cfg[3], 0.0, qr, vr)
+            offsets.append(np.max(np.abs(qr - q0)))
+            _modal._held_rows(pm, cfg, shapes, t0, q0, v0, rows, out)
+            _modal._rows_at(rows, cfg[11], cfg[1], cfg[2], W, 0.0, out)
+            assert np.array_equal(out[:, 0], out[:, 3])
+            tau = 1e-9 * T
+            force = pm[:, P_F0] * math.cos(W * t0 + PHASE)
+            acc = Mi @ (force - pm[:, P_C] * v0 - pm[:, P_K] * q0)
+            taylor = shapes @ v0 * tau + shapes @ acc * tau**2 / 2
+            _modal._states(pm, cfg, 1, t0, q0, v0, tau, q, v)
+            terms = np.abs(cfg[11][:3, : cfg[2] + 1]).max() * np.abs(shapes).sum(axis=1)
+            assert np.all(np.abs(shapes @ (q - q0) - taylor) < 16 * EPS * terms)
+            _modal._rows_at(rows, cfg[11], cfg[1], cfg[2], W, tau, out)
+            terms = np.abs(rows[:, 0]).max(axis=1)
+            assert np.all(np.abs(out[:, 0] - out[:, 3] - taylor) < 16 * EPS * terms)
+    assert max(offsets) > 0.0  # the raw sum misses the start: what the flight corrects
 
 
 def test_the_release_is_the_first_time_the_wall_would_pull():

@@ -640,9 +640,11 @@ def _held_fill(pm, cfg, t0, q0, v0):
         for m in range(n2):
             hf[j, m] = hf[N2 + 2, m].real * V[j, m] * c[m]
         hf[j, n2] = Xhat[j] * rot
-    for i in range(N):
-        hf[N2, i] = q0[i]
-        hf[N2, N + i] = v0[i]
+    q, v = np.empty(N), np.empty(N)
+    _held_sum(pm, hf, cfg[1], n2, cfg[3], 0.0, q, v)
+    for i in range(N):  # the start, and the sum's own value there (:func:`_held_free`)
+        hf[N2, i] = complex(q0[i], q[i])
+        hf[N2, N + i] = complex(v0[i], v[i])
     hf[N2 + 1, 0] = t0
     hf[N2 + 1, 1] = 1.0
 
@@ -659,12 +661,30 @@ def _held_free(pm, hf, cplx, n2, vecs, tau, q, v):
     """The stuck (coupled) structure's (q, q̇) a time τ into the flight whose cache ``hf`` is
     filled (:func:`_held_fill`), written into q and v: X(τ) = Re Σₗ wₗ(Vₗcₗ)e^{λₗτ} +
     Re((X̂e^{iθ₀})e^{iΩτ}) + (q_s, 0) (module text; c = V⁻¹(X₀ − X_p(t₀) − (q_s, 0)),
-    :func:`_coefficients`; wₗ of :func:`_pair_weights`).  A search evaluates one flight at many
-    τ: the columns wₗVₗcₗ and X̂e^{iθ₀} are formed once per flight (rows 0 … 2N − 1 of the cache,
-    the last column X̂e^{iθ₀}; row 2N the start (q0, q̇0); row 2N + 1 t0 and whether filled; row
-    2N + 2 the weights), and each τ then costs e^{λₗτ} for the kept half of Λ and a real sum of
-    2N rows.  ``cplx``, ``n2``, ``vecs``: the configuration's (:func:`_pack`), taken one by one
-    (the configuration tuple costs a reference count per array at each call)."""
+    :func:`_coefficients`; wₗ of :func:`_pair_weights`), as X₀ + (S(τ) − S(0)), S the sum as
+    :func:`_held_sum` rounds it: the flight starts exactly where the last one ended.  S(0) differs
+    from X₀ by the rounding of c (up to V's condition number in ulps of the terms, 2e-16 m on a
+    ten-mode cantilever's tip), and a search that read S(τ) − X₀ saw a mass that had just left
+    its wall start beyond it: a chatter then met that offset δ at every flight and settled at the
+    approach speed √(2aδ/(1 − e²)), a rebound every few nanoseconds that never accumulated.
+    ``cplx``, ``n2``, ``vecs``: the configuration's (:func:`_pack`), taken one by one (the
+    configuration tuple costs a reference count per array at each call)."""
+    _held_sum(pm, hf, cplx, n2, vecs, tau, q, v)
+    N = pm.shape[0]
+    N2 = 2 * N
+    for i in range(N):
+        q[i] = hf[N2, i].real + (q[i] - hf[N2, i].imag)
+        v[i] = hf[N2, N + i].real + (v[i] - hf[N2, N + i].imag)
+
+
+@njit(cache=True)
+def _held_sum(pm, hf, cplx, n2, vecs, tau, q, v):
+    """S(τ) of :func:`_held_free`, the coupled flight's closed form as its cache's terms sum it,
+    written into q and v.  A search evaluates one flight at many τ: the columns wₗVₗcₗ and
+    X̂e^{iθ₀} are formed once per flight (rows 0 … 2N − 1 of the cache, the last column X̂e^{iθ₀};
+    row 2N the start (q0, q̇0) with S(0) in its imaginary parts; row 2N + 1 t0 and whether
+    filled; row 2N + 2 the weights), and each τ then costs e^{λₗτ} for the kept half of Λ and a
+    real sum of 2N rows."""
     N = pm.shape[0]
     N2 = 2 * N
     last = cplx.shape[0] - 1  # Λ's row
@@ -690,7 +710,9 @@ def _held_rows(pm, cfg, shapes, t0, q0, v0, rows, out):
     (+ rows[r, 0, n + 1] = φᵣᵀq_s for d = 0; n = 2n of the configuration, l < n):
     rows[r, 0, l] = φᵣᵀ(wₗVₗcₗ) over q's rows, rows[r, 1, l] the same over q̇'s, and
     rows[r, 2, l] = λₗ·rows[r, 1, l] (iΩ for the forcing's column): the derivatives of the closed
-    form, which solves M_sq̈ + C_sq̇ + K_sq = loads exactly.  out[r, 3] ← φᵣᵀq0.  A search that
+    form, which solves M_sq̈ + C_sq̇ + K_sq = loads exactly.  out[r, 3] ← the sum's own
+    displacement at τ = 0, which is φᵣᵀq0 but for the rounding of c, so that a search's
+    out[r, 0] − out[r, 3] is exactly 0 at the start (why: :func:`_held_free`).  A search that
     reads a few points' displacements, speeds or accelerations along one flight then costs, per
     τ, e^{λₗτ} for the kept half of Λ and three sums of as many terms per point
     (:func:`_rows_at`), not the 2N rows of the state and the point's acceleration from it
@@ -715,12 +737,13 @@ def _held_rows(pm, cfg, shapes, t0, q0, v0, rows, out):
             rows[r, 0, m] = x
             rows[r, 1, m] = xv
             rows[r, 2, m] = rate * xv
-        c, c0 = 0.0, 0.0
+        c = 0.0
         for i in range(N):
             c += shapes[r, i] * qs[i]
-            c0 += shapes[r, i] * q0[i]
         rows[r, 0, n2 + 1] = c
-        out[r, 3] = c0
+    _rows_at(rows, hf, cplx, n2, W, 0.0, out)
+    for r in range(shapes.shape[0]):
+        out[r, 3] = out[r, 0]
 
 
 @njit(cache=True)
