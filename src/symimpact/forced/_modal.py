@@ -624,6 +624,19 @@ def _held_fresh(hf, t0, q0, v0):
     return True
 
 
+@njit(cache=True, inline="always")
+def _sum_at_start(hf, n2, j, const):
+    """Row j of :func:`_held_sum`'s S(0), without its transcendentals: there cos Ωτ = e^{λτ} = 1
+    and sin = 0 exactly, and x·1 − y·0 = x, so the same additions in the same order give the
+    same double (``const``: q_s's entry for a displacement row, 0 for a speed's)."""
+    N2 = hf.shape[0] - 3
+    acc = const + hf[j, n2].real
+    for m in range(n2):
+        if hf[N2 + 2, m].real != 0.0:
+            acc += hf[j, m].real
+    return acc
+
+
 @njit(cache=True)
 def _held_fill(pm, cfg, t0, q0, v0):
     """Fill the coupled flight's cache cfg[11] for the flight from (q0, v0) at t0
@@ -640,11 +653,10 @@ def _held_fill(pm, cfg, t0, q0, v0):
         for m in range(n2):
             hf[j, m] = hf[N2 + 2, m].real * V[j, m] * c[m]
         hf[j, n2] = Xhat[j] * rot
-    q, v = np.empty(N), np.empty(N)
-    _held_sum(pm, hf, cfg[1], n2, cfg[3], 0.0, q, v)
+    qs = cfg[3][1]
     for i in range(N):  # the start, and the sum's own value there (:func:`_held_free`)
-        hf[N2, i] = complex(q0[i], q[i])
-        hf[N2, N + i] = complex(v0[i], v[i])
+        hf[N2, i] = complex(q0[i], _sum_at_start(hf, n2, i, qs[i]))
+        hf[N2, N + i] = complex(v0[i], _sum_at_start(hf, n2, N + i, 0.0))
     hf[N2 + 1, 0] = t0
     hf[N2 + 1, 1] = 1.0
 
@@ -741,9 +753,12 @@ def _held_rows(pm, cfg, shapes, t0, q0, v0, rows, out):
         for i in range(N):
             c += shapes[r, i] * qs[i]
         rows[r, 0, n2 + 1] = c
-    _rows_at(rows, hf, cplx, n2, W, 0.0, out)
-    for r in range(shapes.shape[0]):
-        out[r, 3] = out[r, 0]
+    for r in range(shapes.shape[0]):  # :func:`_rows_at` at τ = 0, as :func:`_sum_at_start`
+        acc = rows[r, 0, n2].real + rows[r, 0, n2 + 1].real
+        for m in range(n2):
+            if hf[2 * N + 2, m].real != 0.0:
+                acc += rows[r, 0, m].real
+        out[r, 3] = acc
 
 
 @njit(cache=True)
@@ -1652,6 +1667,127 @@ def _mode_ledger_at(pm, i, x0, v0, tau, c, sn, eW):
 
 
 @njit(cache=True)
+def _product_integral(x, y, E, Eh, same):
+    """∫₀^τ Re(Σ_c x_c e^{μ_c t})·Re(Σ_d y_d e^{μ_d t}) dt = ½ Σ_cd Re(x_c y_d E_cd + x_c ȳ_d Ē'_cd)
+    (Re a·Re b = (Re ab + Re ab̄)/2) from E_cd = ∫ e^{(μ_c + μ_d)t} and Eh_cd = ∫ e^{(μ_c + μ̄_d)t}
+    (:func:`_held_ledger`), both filled for c ≤ d: E is symmetric and Eh_dc = conj(Eh_cd), so a
+    pair c ≠ d is read once from the upper triangle.  ``same``: y is x (a square), whose pairs
+    c ≠ d then count twice."""
+    n = x.shape[0]
+    acc = 0.0
+    for c in range(n):
+        for d in range(c, n):
+            if same:
+                term = (x[c] * y[d] * E[c, d]).real + (x[c] * np.conj(y[d]) * Eh[c, d]).real
+                acc += term if c == d else 2.0 * term
+            else:
+                acc += (x[c] * y[d] * E[c, d]).real + (x[c] * np.conj(y[d]) * Eh[c, d]).real
+                if c != d:
+                    acc += (x[d] * y[c] * E[c, d]).real
+                    acc += (x[d] * np.conj(y[c]) * np.conj(Eh[c, d])).real
+    return 0.5 * acc
+
+
+@njit(cache=True)
+def _held_ledger(pm, cfg, t0, q0, v0, tau, ledger, Sphi, sc, contact):
+    """The coupled flight's ledger (:func:`_flight_ledger`'s integrals) in closed form: q and q̇ are
+    sums Re Σ_c x_c e^{μ_c τ} over the flight's kept eigenvalues λₗ, the forcing's iΩ and a
+    constant (μ = 0: q_s and the start's correction, :func:`_held_free`), the force and the base's
+    motion are Re(·e^{iθ₀}e^{iΩτ}), and every product in the power and the dissipation integrates
+    term by term to (e^{κτ} − 1)/κ (:func:`_expint`, κ = μ_c + μ_d or μ_c + μ̄_d).  Work:
+    ∫ cos θ·Fᵀq̇ + ∫ (−X_bΩ sin θ)·Σᵢ Γᵢ(−Kᵢ(qᵢ − Γᵢx_b) − Cᵢ(q̇ᵢ − Γᵢẋ_b)) (ledger[0]); the modes'
+    dissipation Σᵢ Cᵢ(q̇ᵢ − Γᵢẋ_b)² (ledger[1]) and the pressed stops' c(φₛᵀq̇)² (ledger[3]):
+    O(n²N) products a flight where the quadrature's rule takes 8 states a step of 0.75/λ_max."""
+    hf = cfg[11]
+    if not _held_fresh(hf, t0, q0, v0):
+        _held_fill(pm, cfg, t0, q0, v0)
+    N = pm.shape[0]
+    N2 = 2 * N
+    n2 = cfg[2]
+    cplx = cfg[1]
+    last = cplx.shape[0] - 1
+    W = pm[0, P_W]
+    th = W * t0 + pm[0, P_PHI]
+    rot = complex(math.cos(th), math.sin(th))
+    nk = 0
+    for m in range(n2):
+        if hf[N2 + 2, m].real != 0.0:
+            nk += 1
+    nc = nk + 2  # the kept terms, the forcing's, the constant
+    mu = np.empty(nc, dtype=np.complex128)
+    ex = np.empty(nc, dtype=np.complex128)
+    qc = np.zeros((nc, N), dtype=np.complex128)  # qᵢ's coefficients, column by column
+    vc = np.zeros((nc, N), dtype=np.complex128)
+    c = 0
+    for m in range(n2):
+        if hf[N2 + 2, m].real == 0.0:
+            continue
+        mu[c] = cplx[last, m]
+        er, ei = _growth(mu[c], tau)
+        ex[c] = complex(er, ei)
+        for i in range(N):
+            qc[c, i] = hf[i, m]
+            vc[c, i] = hf[N + i, m]
+        c += 1
+    fo, co = nk, nk + 1
+    mu[fo], ex[fo] = complex(0.0, W), complex(math.cos(W * tau), math.sin(W * tau))
+    mu[co], ex[co] = 0.0j, 1.0 + 0.0j
+    qs = cfg[3][1]
+    for i in range(N):
+        qc[fo, i] = hf[i, n2]
+        vc[fo, i] = hf[N + i, n2]
+        qc[co, i] = q0[i] - hf[N2, i].imag + qs[i]
+        vc[co, i] = v0[i] - hf[N2, N + i].imag
+    E = np.zeros((nc, nc), dtype=np.complex128)
+    Eh = np.zeros((nc, nc), dtype=np.complex128)
+    for a in range(nc):
+        for b in range(a, nc):
+            E[a, b] = _expint(mu[a] + mu[b], tau, ex[a] * ex[b])
+            Eh[a, b] = _expint(mu[a] + np.conj(mu[b]), tau, ex[a] * np.conj(ex[b]))
+    # the modes' dissipation, Σᵢ Cᵢ·relᵢ², relᵢ = q̇ᵢ − Γᵢẋ_b (ẋ_b's column: the forcing's)
+    base = False
+    for i in range(N):
+        if pm[i, P_XB] != 0.0:
+            base = True
+    rel = np.empty(nc, dtype=np.complex128)
+    lost = 0.0
+    for i in range(N):
+        if pm[i, P_C] == 0.0:
+            continue
+        for a in range(nc):
+            rel[a] = vc[a, i]
+        rel[fo] -= 1j * W * pm[i, P_XB] * rot
+        lost += pm[i, P_C] * _product_integral(rel, rel, E, Eh, True)
+    # the work: the force against Fᵀq̇, the base's motion against Σᵢ Γᵢ(−Kᵢ(qᵢ − xgᵢ) − Cᵢrelᵢ)
+    y = np.zeros(nc, dtype=np.complex128)
+    for a in range(nc):
+        for i in range(N):
+            y[a] += pm[i, P_F0] * vc[a, i]
+    force = np.zeros(nc, dtype=np.complex128)
+    force[fo] = rot
+    work = _product_integral(force, y, E, Eh, False)
+    if base:
+        y[:] = 0.0
+        for i in range(N):
+            xbi = pm[i, P_XB]
+            for a in range(nc):
+                y[a] += xbi * (-pm[i, P_K] * qc[a, i] - pm[i, P_C] * vc[a, i])
+            y[fo] += xbi * (pm[i, P_K] * xbi * rot + pm[i, P_C] * 1j * W * xbi * rot)
+        force[fo] = 1j * W * rot
+        work += _product_integral(force, y, E, Eh, False)
+    ledger[0] += work
+    ledger[1] += lost
+    for r in range(Sphi.shape[0]):
+        if contact[r] == 0 or sc[r] == 0.0:
+            continue
+        for a in range(nc):
+            rel[a] = 0.0
+            for i in range(N):
+                rel[a] += Sphi[r, i] * vc[a, i]
+        ledger[3] += sc[r] * _product_integral(rel, rel, E, Eh, True)
+
+
+@njit(cache=True)
 def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, contact, dec):
     """The energy ledger over the flight [t0, t0 + τ] (:func:`_segment`, which calls it with
     ``energy``): the work of the modal forces and the dissipation of the Cᵢ (ledger[0],
@@ -1682,6 +1818,9 @@ def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, con
         if closed:
             ledger[0] += w_sum
             ledger[1] += d_sum
+    if not dec and tau * cfg[12] > 0.75:  # more than one of the rule's steps
+        _held_ledger(pm, cfg, t0, q0, v0, tau, ledger, Sphi, sc, contact)
+        return
     if not closed:
         # each product in the power is a sum of e^{κt} with abs(κ) ≤ 2λ_max (cfg[12]): the
         # n-point rule's error over a step h is h·(κh)^{2n}(n!)⁴/((2n + 1)((2n)!)³) of the
