@@ -26,6 +26,7 @@ W, PHASE = 2 * math.pi * 7.0, 0.4
 SHAPE = np.array([[1.0, -0.7, 0.4]])  # the stuck mass's point
 MASS = np.array([0.2])
 EPS = np.finfo(float).eps
+TWO_POINTS = np.array([SHAPE[0], [0.3, 1.0, -0.2]])  # the stuck mass's point and another
 
 
 def _parameters(zetas):
@@ -45,10 +46,14 @@ def _config(pm):
                           nothing, 0.0)  # fmt: skip
 
 
+def _inverse_mass(pm):
+    """M_s⁻¹ of the structure carrying the stuck mass, M_s = diag(Mᵢ) + mφφᵀ."""
+    return np.linalg.inv(np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0]))
+
+
 def _reference(pm):
     """(A, b, X̂): X' = AX + b cos(Ωt + φ), X = (q, q̇), and its harmonic solution's amplitude."""
-    Ms = np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0])
-    Mi = np.linalg.inv(Ms)
+    Mi = _inverse_mass(pm)
     A = np.block([[np.zeros((3, 3)), np.eye(3)],
                   [-Mi @ np.diag(pm[:, P_K]), -Mi @ np.diag(pm[:, P_C])]])  # fmt: skip
     b = np.concatenate([np.zeros(3), Mi @ pm[:, P_F0]])
@@ -98,12 +103,11 @@ def test_a_stuck_flight_projected_on_points_is_the_matrix_exponential():
     """The flight read at two points (:func:`_modal._held_rows`, :func:`_modal._rows_at`): φᵀq,
     φᵀq̇ and φᵀq̈ against the same reference, q̈ from the equation of motion (the residual
     M_s⁻¹(F cos θ − Cq̇ − Kq)), each to 1e-12 of its scale (as the states: V's condition)."""
-    shapes = np.array([SHAPE[0], [0.3, 1.0, -0.2]])
+    shapes = TWO_POINTS
     for zetas in ((0.01, 0.02, 0.03), (0.01, 3.0, 0.03)):
         pm = _parameters(zetas)
         cfg = _config(pm)
-        Ms = np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0])
-        Mi = np.linalg.inv(Ms)
+        Mi = _inverse_mass(pm)
         rng = np.random.default_rng(5)
         t0, q0, v0 = 0.21, rng.normal(size=3) * 1e-3, rng.normal(size=3) * 1e-2
         rows, out = np.zeros((2, 3, 8), dtype=np.complex128), np.zeros((2, 4))
@@ -133,14 +137,13 @@ def test_a_stuck_flight_starts_exactly_where_the_last_one_ended():
     just left its wall beyond it.  Over τ of 1e-9 of a period the change in φᵀq then matches
     its Taylor polynomial φᵀq̇₀τ + φᵀq̈₀τ²/2 (the next term is 1e-16 of it) to 16 ulps of the
     sum's largest term, the sums' own rounding."""
-    shapes = np.array([SHAPE[0], [0.3, 1.0, -0.2]])
+    shapes = TWO_POINTS
     T = 2 * math.pi / W
     offsets = []
     for zetas in ((0.01, 0.02, 0.03), (0.01, 3.0, 0.03)):
         pm = _parameters(zetas)
         cfg = _config(pm)
-        Ms = np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0])
-        Mi = np.linalg.inv(Ms)
+        Mi = _inverse_mass(pm)
         rng = np.random.default_rng(7)
         q, v, qr, vr = np.empty(3), np.empty(3), np.empty(3), np.empty(3)
         rows, out = np.zeros((2, 3, 8), dtype=np.complex128), np.zeros((2, 4))
@@ -176,8 +179,7 @@ def test_the_release_is_the_first_time_the_wall_would_pull():
     cfg = _config(pm)
     t0, q0, v0 = 0.0, np.zeros(3), np.zeros(3)
     T = 2 * math.pi / W
-    Ms = np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0])
-    Mi = np.linalg.inv(Ms)
+    Mi = _inverse_mass(pm)
 
     def accel(tau):
         X = _exact(pm, t0, np.concatenate([q0, v0]), tau)
@@ -213,8 +215,7 @@ def _flight_reference(pm, shape_s, k1, c1, g, t0, X0):
     """The coupled flight with a pressed linear stop (k1, c1 at the point ``shape_s`` on its wall
     +g; k1 = c1 = 0: none) and base motion: M_sq̈ + (C + c1φφᵀ)q̇ + (K + k1φφᵀ)q = P cos θ +
     Q sin θ + k1·g·φ, P = F + K·X_b, Q = −CΩ·X_b per mode, from SciPy's ``expm``."""
-    Ms = np.diag(pm[:, P_M]) + MASS[0] * np.outer(SHAPE[0], SHAPE[0])
-    Mi = np.linalg.inv(Ms)
+    Mi = _inverse_mass(pm)
     Ks = np.diag(pm[:, P_K]) + k1 * np.outer(shape_s, shape_s)
     Cs = np.diag(pm[:, P_C]) + c1 * np.outer(shape_s, shape_s)
     A = np.block([[np.zeros((3, 3)), np.eye(3)], [-Mi @ Ks, -Mi @ Cs]])

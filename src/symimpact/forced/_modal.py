@@ -26,7 +26,9 @@ projected once per flight on each point's shape give the point's displacement, s
 acceleration (the closed form's derivatives) at each τ for one exponential per pair and a sum
 per point (:func:`_held_rows`, :func:`_rows_at`; benchmark 10's 400-period 10-mode runs, whose
 masses ride much of the time, went from 20.1 to 12.8 µs an event at the median of eight, without
-the ledger).  A stuck
+the ledger).  A flight starts exactly where the last one ended: the sum's value at τ = 0, which
+misses the start by the rounding of c, is subtracted (:func:`_held_free`; else a chatter beside
+a riding mass met that offset at every flight and never accumulated).  A stuck
 mass is released where sₖ·ẍₐ turns positive (the wall would pull), searched on the impact
 search's certified grid (its chord bound on sₖ·ẍₐ) down to 1/64 of the shortest period and
 located by Illinois regula falsi (:func:`_release`).  An
@@ -55,9 +57,10 @@ bound B on its second derivative of the same make, |λ|⁴ in place of |λ|²).
 
 *Energy ledger.*  The work of the modal forces and the dissipation of the Cᵢ, in closed form
 while the modes are uncoupled (each flight is a sum of two complex exponentials, and so is its
-force: each product integrates exactly, :func:`_mode_ledger`), else by Gauss–Legendre rules on
-steps the structure's fastest rate sets (8 points, or 4 on short steps: :func:`_segment`), summed
-over the modes (both hold while
+force: each product integrates exactly, :func:`_mode_ledger`); while masses stick, the same in
+the coupled flight's terms (its q and q̇ are sums over Λ, iΩ and a constant: O(n²N) products a
+flight, :func:`_held_ledger`), or by Gauss–Legendre rules on a flight shorter than one step of
+the fastest rate (4 or 8 points, :func:`_flight_ledger`); summed over the modes (both hold while
 masses stick: those only add inertia), and the impacts' and closures' losses.  The searches and
 the periods' maxima step up to a sixteenth of the slowest period (:func:`_slowest`) and down to
 what their bounds allow: a structure's highest modes set their finest step, not their coarsest.
