@@ -2,16 +2,17 @@
 
 The case: benchmark 10's system (``benchmarks/structure.py``: a steel cantilever of 10 modes, up
 to 2.1 kHz; a 50 g damper of 10 mm at the tip, a 30 g one of 3 mm at mid-span, e 0.6; 2 N at
-8 Hz), over 400 periods at its first two forces, 2 N and the next double.  While one mass rides, the other's flights are the
-coupled structure's closed form, whose sum at τ = 0 missed the start by the rounding of its
-coefficients (2e-16 m at the tip).  A search that measured the flight from the start then saw a
-mass that had just left its wall begin beyond it, and a chatter met that offset δ at every flight:
-its approach speed settled at √(2aδ/(1 − e²)), 1e-7 m/s, a rebound every 8 ns that never fell
-and so never met Step 9's test; the benchmark's run held four such sequences of 12 000 to 26 000
-impacts (28 % of its events), and seven of its eight forces held some.  Physically a chatter's approach speed falls by e at each rebound
-while the point's acceleration holds, and with the fastest mode at 2.1 kHz it holds over a
-microsecond: a sequence of flights shorter than 1 µs at under 1e-6 m/s whose approach speed does
-not fall is rounding.
+8 Hz), over 400 periods at its first two forces, 2 N and the next double.  While one mass rides,
+the other's flights are the coupled structure's closed form, whose sum at τ = 0 missed the start
+by the rounding of its coefficients (2e-16 m at the tip).  A search that measured the flight
+from the start then saw a mass that had just left its wall begin beyond it, and a chatter met
+that offset δ at every flight: its approach speed settled at √(2aδ/(1 − e²)), 1e-7 m/s, a
+rebound every 8 ns that never fell and so never met Step 9's test; the benchmark's run held
+four such sequences of 12 000 to 26 000 impacts (28 % of its events), and seven of its eight
+forces held some.  Physically a chatter's approach speed falls by e at each rebound while the
+point's acceleration holds, and with the fastest mode at 2.1 kHz it holds over a microsecond: a
+sequence of flights shorter than 1 µs at under 1e-6 m/s whose approach speed does not fall is
+rounding.
 """
 
 from __future__ import annotations

@@ -628,15 +628,16 @@ def _held_fresh(hf, t0, q0, v0):
 
 
 @njit(cache=True, inline="always")
-def _sum_at_start(hf, n2, j, const):
-    """Row j of :func:`_held_sum`'s S(0), without its transcendentals: there cos Ωτ = e^{λτ} = 1
-    and sin = 0 exactly, and x·1 − y·0 = x, so the same additions in the same order give the
-    same double (``const``: q_s's entry for a displacement row, 0 for a speed's)."""
-    N2 = hf.shape[0] - 3
-    acc = const + hf[j, n2].real
+def _sum_at_start(terms, weights, n2, const):
+    """A coupled flight's sum at τ = 0 without its transcendentals, for one row ``terms`` of its
+    columns (the cache's, :func:`_held_sum`, or a point's projection, :func:`_rows_at`; the
+    forcing's at n2, ``weights`` the cache's row of wₗ): there cos Ωτ = e^{λτ} = 1 and sin = 0
+    exactly, and x·1 − y·0 = x, so the same additions in the same order give the same double
+    (``const``: q_s's entry or φᵀq_s for a displacement, 0 for a speed)."""
+    acc = const + terms[n2].real
     for m in range(n2):
-        if hf[N2 + 2, m].real != 0.0:
-            acc += hf[j, m].real
+        if weights[m].real != 0.0:
+            acc += terms[m].real
     return acc
 
 
@@ -658,8 +659,8 @@ def _held_fill(pm, cfg, t0, q0, v0):
         hf[j, n2] = Xhat[j] * rot
     qs = cfg[3][1]
     for i in range(N):  # the start, and the sum's own value there (:func:`_held_free`)
-        hf[N2, i] = complex(q0[i], _sum_at_start(hf, n2, i, qs[i]))
-        hf[N2, N + i] = complex(v0[i], _sum_at_start(hf, n2, N + i, 0.0))
+        hf[N2, i] = complex(q0[i], _sum_at_start(hf[i], hf[N2 + 2], n2, qs[i]))
+        hf[N2, N + i] = complex(v0[i], _sum_at_start(hf[N + i], hf[N2 + 2], n2, 0.0))
     hf[N2 + 1, 0] = t0
     hf[N2 + 1, 1] = 1.0
 
@@ -756,12 +757,7 @@ def _held_rows(pm, cfg, shapes, t0, q0, v0, rows, out):
         for i in range(N):
             c += shapes[r, i] * qs[i]
         rows[r, 0, n2 + 1] = c
-    for r in range(shapes.shape[0]):  # :func:`_rows_at` at τ = 0, as :func:`_sum_at_start`
-        acc = rows[r, 0, n2].real + rows[r, 0, n2 + 1].real
-        for m in range(n2):
-            if hf[2 * N + 2, m].real != 0.0:
-                acc += rows[r, 0, m].real
-        out[r, 3] = acc
+        out[r, 3] = _sum_at_start(rows[r, 0], hf[2 * N + 2], n2, c)  # :func:`_rows_at` at τ = 0
 
 
 @njit(cache=True)
@@ -1794,8 +1790,9 @@ def _held_ledger(pm, cfg, t0, q0, v0, tau, ledger, Sphi, sc, contact):
 def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, contact, dec):
     """The energy ledger over the flight [t0, t0 + τ] (:func:`_segment`, which calls it with
     ``energy``): the work of the modal forces and the dissipation of the Cᵢ (ledger[0],
-    ledger[1]) in closed form while the modes are uncoupled (``dec``, :func:`_mode_ledger`), else
-    by Gauss–Legendre rules on steps of at most 0.75/λ_max (8 points; 4 where the step is below
+    ledger[1]) in closed form while the modes are uncoupled (``dec``, :func:`_mode_ledger`) and
+    while masses stick on a flight longer than 0.75/λ_max (:func:`_held_ledger`), else by
+    Gauss–Legendre rules on steps of at most 0.75/λ_max (8 points; 4 where the step is below
     0.05/λ_max; λ_max of :func:`_pack`, their errors in the code), with the pressed stops'
     dashpots, c₁(φₛᵀq̇)² (ledger[3]).  ``work``'s rows 3 and 4 are scratch for the states at the
     nodes."""
