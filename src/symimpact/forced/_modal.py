@@ -119,8 +119,12 @@ _form = njit(cache=True)(_fl.flight_form_scalar)
 #: A flight's form cache (:func:`_free_states`), one per configuration: row i holds mode i's ten
 #: coefficients, its start (qᵢ, q̇ᵢ) and whether the form has them (0: an undamped mode driven
 #: at its own frequency, where Eq. F1 grows like t and has no such form); row N holds the
-#: flight's start time and whether the cache is filled.
-FORM_COLS = 13
+#: flight's start time and whether the cache is filled.  Columns 13 … of row i hold mode i's
+#: constants in its configuration (:func:`_mode_constants`), which the bounds and the ledger of
+#: every flight read.
+(FC_STEADY, FC_A, FC_B, FC_AMP, FC_SIGMA, FC_WD, FC_WN2, FC_FAST2, FC_LEDGER, FC_K2MU, FC_K2S,
+ FC_KPLUS, FC_KMINUS) = (13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 24, 25, 27)  # fmt: skip
+FORM_COLS = 29
 #: The 4-point Gauss–Legendre rule (the one-mode engine's is 8-point, _GL_X, _GL_W), for the
 #: ledger's short steps (:func:`_segment`).
 _GL4_X, _GL4_W = np.polynomial.legendre.leggauss(4)
@@ -380,6 +384,47 @@ def _slowest(lam, masses, pm, W, decoupled):
 
 
 @njit(cache=True)
+def _mode_constants(pm, i, row):
+    """Mode i's constants in a configuration (``pm`` its pm_s), written into columns 13 … of its
+    form row (FORM_COLS) once per configuration, not once per flight: whether Eq. F1 has its
+    steady part (D = (K − MΩ²)² + (CΩ)² > 1e-24·K²), that part's cosine and sine amplitudes
+    A, B (Eq. F1's steady cosine and sine) and √(A² + B²), σ = C/2M, ω_d = √(K/M − σ²),
+    ω_n² = K/M and max(Ω, ω_n)² (the acceleration bound's, :func:`_mode_accel_bound`); whether
+    the closed-form ledger applies (ω_d² > 0 and D as above) and 1/(2μ), 1/(−2σ), 1/(μ + iΩ),
+    1/(μ − iΩ), μ = −σ + iω_d (:func:`_mode_ledger_at`: its integrals multiply by them)."""
+    M, K, C, F0, Xb, W = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB], pm[i, P_W]
+    row[FC_STEADY:] = 0.0
+    sigma = C / (2.0 * M)
+    wn2 = K / M
+    wd2 = wn2 - sigma * sigma
+    D = (K - M * W * W) ** 2 + (C * W) ** 2
+    steady = D > 1e-24 * K * K
+    row[FC_SIGMA] = sigma
+    row[FC_WD] = math.sqrt(wd2) if wd2 >= 0.0 else math.nan
+    row[FC_WN2] = wn2
+    row[FC_FAST2] = max(W, math.sqrt(K / M)) ** 2
+    if not steady:
+        return
+    A = _steady_cos(M, K, C, F0, Xb, W)
+    B = _steady_sin(M, K, C, F0, Xb, W)
+    row[FC_STEADY] = 1.0
+    row[FC_A] = A
+    row[FC_B] = B
+    row[FC_AMP] = math.sqrt(A * A + B * B)
+    if not wd2 > 0.0:
+        return
+    mu = complex(-sigma, row[FC_WD])
+    row[FC_LEDGER] = 1.0
+    k = 1.0 / (2.0 * mu)
+    row[FC_K2MU], row[FC_K2MU + 1] = k.real, k.imag
+    row[FC_K2S] = 1.0 / (-2.0 * sigma) if sigma != 0.0 else 0.0
+    k = 1.0 / (mu + complex(0.0, W))
+    row[FC_KPLUS], row[FC_KPLUS + 1] = k.real, k.imag
+    k = 1.0 / (mu - complex(0.0, W))
+    row[FC_KMINUS], row[FC_KMINUS + 1] = k.real, k.imag
+
+
+@njit(cache=True)
 def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses, wmax,
           wlow):  # fmt: skip
     """The configuration tuple (mats, cplx, 2n, vecs, h, ok, decoupled, pm_s, ω_max, ω_low of
@@ -407,6 +452,8 @@ def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, 
     vecs[0] = fs
     vecs[1] = qs
     form = np.zeros((N + 1, FORM_COLS))  # :func:`_free_states`'s cache, empty
+    for i in range(N):
+        _mode_constants(masses, i, form[i])
     held = np.zeros((2 * N + 3, 2 * N + 1), dtype=np.complex128)  # :func:`_held_free`'s, empty
     held[2 * N + 2, :n2] = _pair_weights(lam)
     # λ_max ≥ every rate the flight holds: Ω, abs(λ) of the coupled modes, and ωₙ and Cᵢ/Mᵢ of
@@ -886,6 +933,23 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     return a
 
 
+@njit(cache=True, inline="always")
+def _mode_accel_bound(p, f, c, sn, t0, x0, v0, T):
+    """:func:`symimpact.forced._rigid._accel_bound` of mode row ``p`` from its configuration's
+    constants ``f`` (its form row, :func:`_mode_constants`) and cos θ, sin θ of the flight's
+    start: the same operations on the same doubles, so the same bound, without its division,
+    square roots but one, and transcendentals per mode and flight."""
+    if f[FC_STEADY] == 0.0:
+        return _accel_bound(p, p[P_M], t0, x0, v0, T)
+    A, B, W = f[FC_A], f[FC_B], p[P_W]
+    xp = A * c + B * sn
+    vp = W * (B * c - A * sn)
+    dx, dv = x0 - xp, v0 - vp
+    R = math.sqrt(dx * dx + ((dv + f[FC_SIGMA] * dx) / f[FC_WD]) ** 2)
+    bound = f[FC_AMP] * W * W + R * f[FC_WN2]
+    return bound * (1.0 + 1e-9) + 1e-300
+
+
 @njit(cache=True)
 def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, rows, xb):
     """(A, B): for every damper's point, A ≥ |ẍₐ| and B ≥ |d⁴xₐ/dt⁴| over [t0, t0 + T] of the
@@ -897,12 +961,17 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, rows, xb):
     A[:] = abs(xb) * W * W
     B[:] = abs(xb) * W**4
     if cfg[6]:
+        form = cfg[10]
+        th = (W * t0 + pm[0, P_PHI]) % (2.0 * math.pi)  # _rigid._phase, shared by the modes
+        c, sn = math.cos(th), math.sin(th)
         for i in range(N):
-            Ai = _accel_bound(pm[i], pm[i, P_M], t0, q0[i], v0[i], T)
-            wn = math.sqrt(pm[i, P_K] / pm[i, P_M])
+            if pm[i, P_W] == W and pm[i, P_PHI] == pm[0, P_PHI]:
+                Ai = _mode_accel_bound(pm[i], form[i], c, sn, t0, q0[i], v0[i], T)
+            else:
+                Ai = _accel_bound(pm[i], pm[i, P_M], t0, q0[i], v0[i], T)
             for k in range(K):
                 A[k] += abs(Phi[k, i]) * Ai
-                B[k] += abs(Phi[k, i]) * 2.0 * Ai * max(W, wn) ** 2
+                B[k] += abs(Phi[k, i]) * 2.0 * Ai * form[i, FC_FAST2]
         return A, B
     lam, V, _, Xhat = _modes_of(cfg)
     if rows.shape[0] == K:
@@ -1573,21 +1642,47 @@ def _stop_jump(pm, cfg, Sphi, s, K, e):
     return DJ
 
 
+#: 1/n! and 1/n (n < 30; 1/0 unused) for :func:`_expint_series`.
+_INV_FACT = np.array([1.0 / math.factorial(n) for n in range(30)])
+_INV_N = np.array([0.0] + [1.0 / n for n in range(1, 30)])
+
+
+@njit(cache=True, inline="always")
+def _expint_series(z, tau):
+    """τ·Σₙ zⁿ/(n + 1)! = (e^z − 1)/z·τ for abs(z) < 0.5, z = κτ, by Horner's rule up to the
+    last power whose next term a^(n+1)/(n + 2)! (a = abs(Re z) + abs(Im z) ≥ abs(z)) falls
+    below 5e-18: the terms left out sum to below 1.2 times that, under 1e-17 of the sum
+    (abs((e^z − 1)/z) ≥ (1 − e^(−1/2))/(1/2) = 0.79 there)."""
+    a = abs(z.real) + abs(z.imag)
+    n = 0
+    t = 0.5 * a
+    while t >= 5e-18 and n < 24:
+        n += 1
+        t *= a * _INV_N[n + 2]
+    acc = complex(_INV_FACT[n + 1], 0.0)
+    for j in range(n - 1, -1, -1):
+        acc = acc * z + _INV_FACT[j + 1]
+    return tau * acc
+
+
 @njit(cache=True, inline="always")
 def _expint(k, tau, ek):
     """∫₀^τ e^{κt} dt = (e^{κτ} − 1)/κ for a complex κ from ek = e^{κτ}, by its series where κτ is
-    small (there the quotient would cancel), summed until a term falls below 1e-17 of the sum
-    (a chatter's flights are short: a few terms)."""
+    small (there the quotient would cancel, :func:`_expint_series`; a chatter's flights are
+    short)."""
     z = k * tau
     if abs(z.real) + abs(z.imag) < 0.5:
-        term, acc = 1.0 + 0.0j, 1.0 + 0.0j
-        for n in range(2, 24):
-            term = term * z / n
-            acc += term
-            if abs(term.real) + abs(term.imag) < 1e-17 * (abs(acc.real) + abs(acc.imag)):
-                break
-        return tau * acc
+        return _expint_series(z, tau)
     return (ek - 1.0) / k
+
+
+@njit(cache=True, inline="always")
+def _expint_by(kinv, z, tau, ek):
+    """:func:`_expint` with z = κτ and 1/κ given (a mode's constants, :func:`_mode_constants`):
+    a product where the quotient was."""
+    if abs(z.real) + abs(z.imag) < 0.5:
+        return _expint_series(z, tau)
+    return (ek - 1.0) * kinv
 
 
 @njit(cache=True, inline="always")
@@ -1618,23 +1713,23 @@ def _mode_ledger(pm, i, t0, x0, v0, tau):
     Each two-term signal is a pair of complex scalars (its e^{μt} and e^{iΩt} parts)."""
     W = pm[i, P_W]
     th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
-    return _mode_ledger_at(pm, i, x0, v0, tau, math.cos(th), math.sin(th),
-                           complex(math.cos(W * tau), math.sin(W * tau)))  # fmt: skip
+    f = np.zeros(FORM_COLS)
+    _mode_constants(pm, i, f)
+    eW = complex(math.cos(W * tau), math.sin(W * tau))
+    E4 = _expint(complex(0.0, 2.0 * W), tau, eW * eW)
+    return _mode_ledger_at(pm, i, f, x0, v0, tau, math.cos(th), math.sin(th), eW, E4)
 
 
 @njit(cache=True)
-def _mode_ledger_at(pm, i, x0, v0, tau, c, sn, eW):
-    """:func:`_mode_ledger` with cos θ₀, sin θ₀ of the flight's start and e^{iΩτ} given (the
-    modes share them): each e^{κτ} is a product of e^{μτ} and e^{iΩτ}, one exponential a mode."""
-    M, K, C, F0, Xb, W = pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB], pm[i, P_W]
-    sigma = C / (2.0 * M)
-    wd2 = K / M - sigma * sigma
-    D = (K - M * W * W) ** 2 + (C * W) ** 2
-    if not (wd2 > 0.0 and D > 1e-24 * K * K):
+def _mode_ledger_at(pm, i, f, x0, v0, tau, c, sn, eW, E4):
+    """:func:`_mode_ledger` from mode i's constants ``f`` (its form row, :func:`_mode_constants`)
+    with cos θ₀, sin θ₀ of the flight's start, e^{iΩτ} and E4 = ∫₀^τ e^{2iΩt} dt given (the
+    modes share them): each e^{κτ} is a product of e^{μτ} and e^{iΩτ}, one exponential a mode,
+    and each integral a product with the constant 1/κ."""
+    if f[FC_LEDGER] == 0.0:
         return math.nan, math.nan
-    wd = math.sqrt(wd2)
-    A = _steady_cos(M, K, C, F0, Xb, W)
-    B = _steady_sin(M, K, C, F0, Xb, W)
+    K, C, F0, Xb, W = pm[i, P_K], pm[i, P_C], pm[i, P_F0], pm[i, P_XB], pm[i, P_W]
+    sigma, wd, A, B = f[FC_SIGMA], f[FC_WD], f[FC_A], f[FC_B]
     dx = x0 - (A * c + B * sn)
     dv = v0 - W * (B * c - A * sn)
     mu = complex(-sigma, wd)
@@ -1650,11 +1745,12 @@ def _mode_ledger_at(pm, i, x0, v0, tau, c, sn, eW):
     rel_0, rel_1 = v_0 - zero, v_1 - vb_1
     ex = math.exp(-sigma * tau)
     eu = complex(ex * math.cos(wd * tau), ex * math.sin(wd * tau))  # e^{μτ}
-    E0 = _expint(2.0 * mu, tau, eu * eu)
-    E1 = _expint(complex(-2.0 * sigma, 0.0), tau, complex(ex * ex, 0.0))
-    E2 = _expint(mu + iw, tau, eu * eW)
-    E3 = _expint(mu - iw, tau, eu * np.conj(eW))
-    E4 = _expint(2.0 * iw, tau, eW * eW)
+    E0 = _expint_by(complex(f[FC_K2MU], f[FC_K2MU + 1]), 2.0 * mu * tau, tau, eu * eu)
+    E1 = _expint_by(complex(f[FC_K2S], 0.0), complex(-2.0 * sigma * tau, 0.0), tau,
+                    complex(ex * ex, 0.0))  # fmt: skip
+    E2 = _expint_by(complex(f[FC_KPLUS], f[FC_KPLUS + 1]), (mu + iw) * tau, tau, eu * eW)
+    E3 = _expint_by(complex(f[FC_KMINUS], f[FC_KMINUS + 1]), (mu - iw) * tau, tau,
+                    eu * np.conj(eW))  # fmt: skip
     E5 = complex(tau, 0.0)
     work = F0 * _pair(zero, rot, v_0, v_1, E0, E1, E2, E3, E4, E5)
     if Xb != 0.0:
@@ -1805,9 +1901,11 @@ def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, con
         th0 = (W * t0 + pm[0, P_PHI]) % (2.0 * math.pi)
         c0, s0 = math.cos(th0), math.sin(th0)
         eW = complex(math.cos(W * tau), math.sin(W * tau))
+        E4 = _expint(complex(0.0, 2.0 * W), tau, eW * eW)
+        form = cfg[10]
         for i in range(N):
             if pm[i, P_W] == W and pm[i, P_PHI] == pm[0, P_PHI]:
-                wi, di = _mode_ledger_at(pm, i, q0[i], v0[i], tau, c0, s0, eW)
+                wi, di = _mode_ledger_at(pm, i, form[i], q0[i], v0[i], tau, c0, s0, eW, E4)
             else:
                 wi, di = _mode_ledger(pm, i, t0, q0[i], v0[i], tau)
             if math.isnan(wi):
