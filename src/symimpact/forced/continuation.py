@@ -1279,17 +1279,27 @@ def _cross(problem, y, t, ds, before: BranchPoint, branch: Branch, located, go_o
     return back
 
 
-def _wall_push(problem: _Problem, y0, res0, t):
+def _wall_push(problem: _Problem, y0, res0, t, nth: int = 0):
     """The flight's turning point nearest a wall in the orbit y0 (its simulation ``res0``): its
     distance from the wall over d/2 and the gradient of its reach towards the wall within the
     hyperplane normal to t (:func:`_reach_gradient`) with its squared norm, (gap, grad, norm2):
-    a step push·gap/norm2·grad puts it (push − 1)·gap past the wall to first order.  False where
-    no flight turns, None where the gradient meets other impacts or vanishes."""
+    a step push·gap/norm2·grad puts it (push − 1)·gap past the wall to first order.  ``nth``:
+    0 the turning point nearest either wall, 1 the one nearest the other wall (an orbit that
+    grazes both walls at once, as the README's symmetric orbits at 30.4438 rad/s do, has two
+    such points whose order the rounding decides: on the README's curve the five-impact orbits
+    lay beside one of them only).  False where no flight turns (towards that wall), None where
+    the gradient meets other impacts or vanishes."""
     times, gaps = _turns(problem, res0)
     if not len(gaps):
         return False
-    tau, gap = float(times[np.argmin(gaps)]), float(gaps.min())
-    side = math.copysign(1.0, float(state_at(res0, np.array([tau]))[0, 2]))
+    sides = np.sign(state_at(res0, times)[:, 2])
+    nearest = [int(np.flatnonzero(sides == w)[np.argmin(gaps[sides == w])])
+               for w in (1.0, -1.0) if np.any(sides == w)]  # fmt: skip
+    nearest.sort(key=lambda i: gaps[i])
+    if nth >= len(nearest):
+        return False
+    tau, gap = float(times[nearest[nth]]), float(gaps[nearest[nth]])
+    side = float(sides[nearest[nth]])
     grad = _reach_gradient(problem, y0, len(res0.events), tau, side)
     if grad is None:
         return None
@@ -1315,8 +1325,8 @@ def _fold_back(problem: _Problem, y, t, ds, before: BranchPoint, located):
     the same side — a non-smooth fold, at which the two branches meet (measured on the README's
     curve: the symmetric four-impact orbits grazing both walls at 30.4438 rad/s meet the
     asymmetric five-impact ones there).  On the hyperplane a share FOLD_BACK of the step behind
-    the grazing, the old orbit's flight turning point nearest a wall (:func:`_turns`) is pushed
-    past that wall along the gradient of its distance within the hyperplane (central
+    the grazing, the old orbit's flight turning point nearest a wall (:func:`_turns`; then the one
+    nearest the other wall, :func:`_wall_push`) is pushed past that wall along the gradient of its distance within the hyperplane (central
     differences of the flight, Eq. F1), and Newton's method starts there, its steps kept among
     the orbits with the new impact (:func:`_correct_within`).  Returns (y, t, monodromy,
     simulation, point, distance from the grazing in the scaled unknowns) of an orbit with other
@@ -1330,28 +1340,29 @@ def _fold_back(problem: _Problem, y, t, ds, before: BranchPoint, located):
         if got is None or got is GRAZE:
             continue
         y0, _, _, res0 = got
-        push_dir = _wall_push(problem, y0, res0, t)
-        if push_dir is False:
-            return None
-        if push_dir is None:
-            continue
-        gap, grad, norm2 = push_dir
-        for push in FOLD_PUSH:
-            new = _correct_within(problem, y + s_back * t, t, y0 + push * gap / norm2 * grad)
-            if new is None:
+        for nth in (0, 1):  # the turning point nearest a wall, then the other wall's
+            push_dir = _wall_push(problem, y0, res0, t, nth)
+            if push_dir is False and nth == 0:
+                return None
+            if not push_dir:
                 continue
-            y1, J1, mono1, res1 = new
-            p1 = _point(problem, y1, mono1, res1)
-            if p1.impact_events_per_period == count:
-                continue
-            return (
-                y1,
-                _tangent(J1, y1 - y_graze),
-                mono1,
-                res1,
-                p1,
-                float(np.linalg.norm(y1 - y_graze)),
-            )
+            gap, grad, norm2 = push_dir
+            for push in FOLD_PUSH:
+                new = _correct_within(problem, y + s_back * t, t, y0 + push * gap / norm2 * grad)
+                if new is None:
+                    continue
+                y1, J1, mono1, res1 = new
+                p1 = _point(problem, y1, mono1, res1)
+                if p1.impact_events_per_period == count:
+                    continue
+                return (
+                    y1,
+                    _tangent(J1, y1 - y_graze),
+                    mono1,
+                    res1,
+                    p1,
+                    float(np.linalg.norm(y1 - y_graze)),
+                )
     return None
 
 
@@ -1365,7 +1376,8 @@ def orbit_beside_grazing(
     *, periods: int = 1,
 ) -> tuple[tuple[float, float, float, float], Forcing] | None:  # fmt: skip
     """The orbit with one more impact beside the rigid-impact orbit through ``state`` that nearly
-    grazes: the flight's turning point nearest a wall (:func:`_turns`) is pushed past it along
+    grazes: the flight's turning point nearest a wall (:func:`_turns`; then the other wall's) is
+    pushed past it along
     the gradient of its reach (:func:`_reach_gradient`, Eq. F1) within the hyperplane through
     the orbit normal to its branch in Ω, and Newton's method starts there, its steps kept among
     the orbits with the new impact (:func:`_correct_within`), as :func:`_fold_back` does at a
@@ -1393,19 +1405,20 @@ def orbit_beside_grazing(
         return None
     y0, J, _, res0 = got
     t = _tangent(J, axis)
-    push_dir = _wall_push(problem, y0, res0, t)
-    if not push_dir:
-        return None
-    gap, grad, norm2 = push_dir
     count = _events(res0, periods)
-    for push in BESIDE_PUSH:
-        new = _correct_within(problem, y0, t, y0 + push * gap / norm2 * grad)
-        if new is None:
+    for nth in (0, 1):  # the turning point nearest a wall, then the other wall's
+        push_dir = _wall_push(problem, y0, res0, t, nth)
+        if not push_dir:
             continue
-        y1, _, _, res1 = new
-        if _events(res1, periods) != count:
-            return (tuple(float(c) for c in y1[:4] * problem.scale),
-                    forcing.at(problem.omega(y1)))  # fmt: skip
+        gap, grad, norm2 = push_dir
+        for push in BESIDE_PUSH:
+            new = _correct_within(problem, y0, t, y0 + push * gap / norm2 * grad)
+            if new is None:
+                continue
+            y1, _, _, res1 = new
+            if _events(res1, periods) != count:
+                return (tuple(float(c) for c in y1[:4] * problem.scale),
+                        forcing.at(problem.omega(y1)))  # fmt: skip
     return None
 
 
