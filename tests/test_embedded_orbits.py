@@ -76,30 +76,27 @@ E = 0.6
 CHAOTIC, WINDOW = 28.75, 28.18407960199005
 
 
-#: The multi-start's initial state whose landing at 28.75 rad/s is searched: which of the chaotic
-#: motion's embedded period-3 orbits the best returns of 1000 periods catch depends on the
-#: stretch searched (ten distinct ones over the four landings, one of them on the window's
-#: branch; the landing from this state catches it, the landing from rest does not).
-FROM = 2
-
-
 @pytest.fixture(scope="module")
 def embedded_orbits():
+    """The period-3 orbits shot from the close returns of the chaotic motions the multi-start's
+    initial states land on at 28.75 rad/s (every landing: which of the embedded orbits the best
+    returns of 1000 periods catch depends on the stretch searched, and so on the rounding of
+    the run; some ten distinct ones over the four landings), each phase point once."""
     f = Forcing(F0=2.0, omega=CHAOTIC)
-    a = attractor(SYSTEM, f, E, initial_states(SYSTEM, f)[FROM])
-    assert a.kind == "chaotic" and a.lyapunov > 0
-    sections = section_states(SYSTEM, f, E, a.state)
     orbits = []
-    for s in close_returns(sections, 3):
-        try:
-            o = shoot(SYSTEM, f, E, s, periods=3)
-        except SymimpactError:  # a return Newton does not converge from (a guess)
-            continue
-        if any(abs(o.amplitude - p.amplitude) <= 1e-9 * o.amplitude for p in orbits):
-            continue
-        # the period-1 orbit is among the returns too (it repeats every third period)
-        if least_period(SYSTEM, f, E, o.state, 3, o.amplitude) == 3:
-            orbits.append(o)
+    for start in initial_states(SYSTEM, f):
+        a = attractor(SYSTEM, f, E, start)
+        assert a.kind == "chaotic" and a.lyapunov > 0
+        for s in close_returns(section_states(SYSTEM, f, E, a.state), 3):
+            try:
+                o = shoot(SYSTEM, f, E, s, periods=3)
+            except SymimpactError:  # a return Newton does not converge from (a guess)
+                continue
+            if any(np.allclose(o.state, p.state, rtol=1e-9, atol=1e-12) for p in orbits):
+                continue
+            # the period-1 orbit is among the returns too (it repeats every third period)
+            if least_period(SYSTEM, f, E, o.state, 3, o.amplitude) == 3:
+                orbits.append(o)
     return f, orbits
 
 

@@ -149,6 +149,21 @@ def test_a_plastic_damper_on_the_chain_is_shot():
     assert np.max(np.abs(orbit.state - settled)) < 1e-9 * np.max(np.abs(settled))
 
 
+def _on_the_attractor(s, ds, omega, base):
+    """The state where runs of 200 periods from rest, each from the last one's end, first end
+    on a motion that repeats after one to four periods (the tip's period maxima to 1e-9; at
+    most 2000 periods): at 8 Hz the chattering dampers' transient is chaotic, and how long it
+    lasts depends on the rounding of the run (measured: from under 200 to some 550 periods)."""
+    state = None
+    for _ in range(10):
+        res = simulate_structure(s, ds, "tip", 2.0, omega, periods=200, base=base, state=state)
+        state = res.final_state[1:11]
+        top = res.period_max[:, 0]
+        if any(abs(top[-1] - top[-1 - k]) <= 1e-9 * top[-1] for k in (1, 2, 3, 4)):
+            break
+    return state
+
+
 @pytest.mark.parametrize(("f_hz", "e_tip", "e_mid", "base"),
                          [(8.0, 0.16, 0.6, 0.0), (7.8, 0.16, 0.16, 0.0), (8.0, 0.0, 0.6, 0.0),
                           (8.0, 0.16, 0.6, 0.002)],
@@ -157,21 +172,21 @@ def test_the_monodromy_carried_through_sticking_is_the_limit_of_the_map_s_differ
     f_hz, e_tip, e_mid, base, monkeypatch
 ):
     """Three cantilever modes (8.4, 52 and 147 Hz) with a damper at the tip that chatters to its
-    accumulation point and sticks (or closes plastically) and one at mid-span, 2 N at the tip
-    (with ``base``, 2 mm of the supports' motion as well), one period from where 200 periods from
-    rest end: the monodromy carried through the accumulations, the sticking phases — with the
-    other damper's impacts while the mass rides (where the log has them) — and the releases,
-    against the map's central differences at steps h of 1e-5, 3e-6 and 1e-6 of each block's
-    scale.  Their error is truncation, falling as h² (with e 0.16 and 0.6: 1.1e-7, 9.9e-9,
-    1.6e-9 of the matrix's scale; with e 0: 5.6e-7, 5.0e-8, 5.6e-9), plus rounding growing as
-    1/h, which the chatter's impacts amplify (two chattering dampers: 1.9e-8 at 1e-5 and 8.1e-9
-    at 1e-6; on the moving supports 6.7e-9 at 1e-5 and 1.5e-8 at 1e-6).  The best of the three
-    steps is within 2e-8 of the carried monodromy (measured 1.6e-9 to 8.1e-9)."""
+    accumulation point and sticks (or closes plastically) and one at mid-span, 2 N at the tip (with
+    ``base``, 2 mm of the supports' motion as well), one period from a state on the motion the runs
+    from rest settle on (:func:`_on_the_attractor`): the monodromy carried through the
+    accumulations, the sticking phases — with the other damper's impacts while the mass rides
+    (where the log has them) — and the releases, against the map's central differences at steps h
+    of 1e-5, 3e-6 and 1e-6 of each block's scale. Their error is truncation, falling as h², plus
+    rounding growing as 1/h, which the chatter's impacts amplify (measured at the three steps:
+    2.4e-8, 2.1e-9, 8.3e-10; two chattering dampers 1.9e-8, 4.8e-9, 1.0e-8; e 0 at the tip
+    7.3e-9, 6.8e-10, 7.6e-10; on the moving supports 7.4e-9, 8.1e-9, 4.0e-8). The best of the
+    three steps is within 2e-8 of the carried monodromy (measured 6.8e-10 to 7.4e-9)."""
     s = beam_structure(**BEAM, points={"tip": 1.0, "mid": 0.5}, modes=3, zeta=0.02)
     ds = dampers(s, [{"name": "tip", "at": "tip", "m": 0.05, "gap": "10 mm", "e": e_tip},
                      {"name": "mid", "at": "mid", "m": 0.03, "gap": "3 mm", "e": e_mid}])  # fmt: skip
     omega = 2 * math.pi * f_hz
-    start = simulate_structure(s, ds, "tip", 2.0, omega, periods=200, base=base).final_state[1:11]
+    start = _on_the_attractor(s, ds, omega, base)
     _, G, res = stroboscopic_map(s, ds, "tip", 2.0, omega, start, 1, base=base)
     kinds = set(res.events[:, 7].astype(int).tolist())
     assert {1, 2} <= kinds and np.all(np.isfinite(G))  # accumulations (or closures), releases
