@@ -11,7 +11,7 @@ import math
 
 import mpmath
 import numpy as np
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from symimpact.forced import _modal
@@ -30,6 +30,7 @@ from symimpact.forced._rigid import (
 positive = st.floats(1e-3, 1e3)
 
 
+@settings(deadline=None)  # the first example compiles the engine's functions
 @given(
     M=positive,
     K=st.floats(1.0, 1e8),
@@ -64,6 +65,7 @@ def _exact(k: complex, tau: float) -> complex:
     return complex((mpmath.exp(kk * tau) - 1) / kk)
 
 
+@settings(deadline=None)  # the first example compiles the engine's functions
 @given(
     r=st.floats(1e-6, 3.0),
     angle=st.floats(0.0, 2.0 * math.pi),

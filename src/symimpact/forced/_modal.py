@@ -1051,27 +1051,137 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, rows, 
     return tau
 
 
+#: The highest degree of a point's Taylor polynomial (:func:`_point_taylor`).
+TAYLOR_MAX = 24
+
+
+@njit(cache=True)
+def _point_taylor(pm, cfg, Phi, row, t0, q0, v0, c, h, rows, xb, poly):
+    """The degree n and poly[0 … n] of the Taylor polynomial of the point's displacement since
+    the flight's start, dx(c + ς) = x_b(t0 + c + ς) − x_b(t0) + φᵀ(q(c + ς) − q0) ≈ Σₖ polyₖςᵏ
+    for abs(ς) ≤ h; −1 where it is not formed (a mode without Eq. F1's form, a flight read
+    through neither form nor projection, a cache not holding this flight, or r = ρh ≥ 0.5).
+    The flight is a sum of terms Re(aₗe^{μₗτ}) (Eq. F1 per mode, μ = −σ + iω_d, and its steady
+    part with μ = iΩ; or the projection's columns, :func:`_held_rows`), so polyₖ =
+    Σₗ Re(aₗμₗᵏe^{μₗc})/k! for k ≥ 1, and poly₀ = dx(c) as the flight's own evaluation sums it.
+    With ρ ≥ every abs(μₗ), the terms left out are below Σₗ abs(aₗe^{μₗc})·rⁿ⁺¹/(n + 1)! times
+    1/(1 − r/(n + 2)) ≤ 1.34: n is the least degree that puts them below 1e-17 of the terms'
+    sizes, under the rounding of the sum itself.  A refinement (:func:`_refine`) then reads the
+    point at each look by Horner's rule, not by every mode's exponential, cosine and sine."""
+    N = pm.shape[0]
+    W = pm[0, P_W]
+    dec = cfg[6]
+    rate = W
+    if dec:
+        form = cfg[10]
+        if not (form[N, 1] == 1.0 and form[N, 0] == t0):
+            return -1
+        for i in range(N):
+            f = form[i]
+            if f[12] == 0.0 or f[10] != q0[i] or f[11] != v0[i]:
+                return -1
+            rate = max(rate, math.hypot(f[8], f[9]))
+    elif rows.shape[0] > 0:
+        hf, cplx, n2 = cfg[11], cfg[1], cfg[2]
+        last = cplx.shape[0] - 1
+        for m in range(n2):
+            if hf[2 * N + 2, m].real != 0.0:
+                rate = max(rate, abs(cplx[last, m]))
+    else:
+        return -1
+    r = rate * h
+    if not r < 0.5:
+        return -1
+    n = 0
+    bound = r
+    while bound >= 7.4e-18 and n < TAYLOR_MAX:
+        n += 1
+        bound *= r * _INV_N[n + 1]
+    poly[: n + 1] = 0.0
+    th = W * c
+    ec = complex(math.cos(th), math.sin(th))  # e^{iΩc}
+    iw = complex(0.0, W)
+    d0 = _base_x(pm, xb, t0 + c) - _base_x(pm, xb, t0)
+    if xb != 0.0:  # x_b(t0 + c + ς) = Re(X_b e^{iθ(t0 + c)} e^{iΩς})
+        tb = W * (t0 + c) + pm[0, P_PHI]
+        p = xb * complex(math.cos(tb), math.sin(tb))
+        for k in range(1, n + 1):
+            p *= iw
+            poly[k] += p.real
+    if dec:
+        form = cfg[10]
+        forcing = 0.0j
+        for i in range(N):
+            f = form[i]
+            ex = math.exp(-f[8] * c)
+            cd, sd = math.cos(f[9] * c), math.sin(f[9] * c)
+            qi = f[0] * ec.real + f[1] * ec.imag + ex * (f[2] * cd + f[3] * sd)
+            d0 += Phi[row, i] * (qi - q0[i])
+            forcing += Phi[row, i] * complex(f[0], -f[1])
+            p = Phi[row, i] * complex(f[2], -f[3]) * complex(ex * cd, ex * sd)
+            mu = complex(-f[8], f[9])
+            for k in range(1, n + 1):
+                p *= mu
+                poly[k] += p.real
+        p = forcing * ec
+    else:
+        hf, cplx, n2 = cfg[11], cfg[1], cfg[2]
+        last = cplx.shape[0] - 1
+        R = rows[row, 0]
+        p = R[n2] * ec
+        acc = R[n2 + 1].real + p.real
+        for m in range(n2):
+            if hf[2 * N + 2, m].real == 0.0:
+                continue
+            lam = cplx[last, m]
+            er, ei = _growth(lam, c)
+            a = R[m] * complex(er, ei)
+            acc += a.real
+            for k in range(1, n + 1):
+                a *= lam
+                poly[k] += a.real
+        d0 += acc - _sum_at_start(R, hf[2 * N + 2], n2, R[n2 + 1].real)
+    for k in range(1, n + 1):  # the steady part's (forcing's) column, e^{iΩτ}
+        p *= iw
+        poly[k] += p.real
+    for k in range(1, n + 1):
+        poly[k] *= _INV_FACT[k]
+    poly[0] = d0
+    return n
+
+
 @njit(cache=True)
 def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v, rows, out,
             xb):  # fmt: skip
     """The first τ in (lo, hi] where s·z reaches h (z(lo) = za inside, z(hi) = zb beyond), by
-    Illinois regula falsi to 4e-16 of the time (``rows``, ``out``: as :func:`_held_off`'s)."""
+    Illinois regula falsi to 4e-16 of the time (``rows``, ``out``: as :func:`_held_off`'s).  The
+    point's displacement is read from its Taylor polynomial about the bracket's middle
+    (:func:`_point_taylor`) where it is formed, else from the flight at each look."""
     dec = cfg[6]
     proj = not dec and rows.shape[0] > 0
     hf, cplx, n2, W = cfg[11], cfg[1], cfg[2], pm[0, P_W]
     flo = min(s * za - h, 0.0)
     fhi = s * zb - h
     kept = 0
+    mid = 0.5 * (lo + hi)
+    poly = np.empty(TAYLOR_MAX + 1)
+    deg = _point_taylor(pm, cfg, Phi, row, t0, q0, v0, mid, 0.5 * (hi - lo), rows, xb, poly)
     for _ in range(200):
         den = fhi - flo
         tm = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
         if not (lo < tm < hi):
             tm = 0.5 * (lo + hi)
-        dx = _base_x(pm, xb, t0 + tm) - _base_x(pm, xb, t0)
-        if proj:
+        if deg >= 0:
+            sg = tm - mid
+            dx = poly[deg]
+            for k in range(deg - 1, -1, -1):
+                dx = dx * sg + poly[k]
+        elif proj:
+            dx = _base_x(pm, xb, t0 + tm) - _base_x(pm, xb, t0)
             _rows_at(rows, hf, cplx, n2, W, tm, out)
             dx += out[row, 0] - out[row, 3]
         else:
+            dx = _base_x(pm, xb, t0 + tm) - _base_x(pm, xb, t0)
             if dec:
                 _free_states(pm, cfg[10], t0, q0, v0, tm, q, v)
             else:
