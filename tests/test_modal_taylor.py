@@ -78,20 +78,29 @@ def test_the_polynomial_is_the_uncoupled_flight(row, xb, c, r):
     rate = max(W, *(math.hypot(form[i, 8], form[i, 9]) for i in range(3)))
     h = r / rate
     poly = np.empty(_modal.TAYLOR_MAX + 1)
-    n = _modal._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, np.zeros((0, 3, 1), complex),
-                             xb, poly)  # fmt: skip
+    nothing = np.zeros((0, 3, 1), complex)
+    n = _modal._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, nothing, xb, poly, 0)
     assert 0 <= n <= _modal.TAYLOR_MAX
+    # one degree more where the derivative is read (the speed: Eq. F1's ẋ coefficients)
+    speed = np.empty(_modal.TAYLOR_MAX + 1)
+    n1 = _modal._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, nothing, xb, speed, 1)
+    assert n1 == min(n + 1, _modal.TAYLOR_MAX)
     scale = abs(xb) + sum(abs(SHAPE[row, i]) * np.abs(form[i, :4]).sum() for i in range(3))
+    scale_v = abs(xb) * W + sum(abs(SHAPE[row, i]) * np.abs(form[i, 4:8]).sum() for i in range(3))
     for s in np.linspace(-h, h, 7):
         tau = mpmath.mpf(c) + mpmath.mpf(s)
         exact = _base(xb, t0 + tau) - _base(xb, t0)
+        rate = -xb * W * mpmath.sin(W * (t0 + tau) + PHASE)
         for i in range(3):
             f = [mpmath.mpf(x) for x in form[i, :10]]
-            qi = (f[0] * mpmath.cos(W * tau) + f[1] * mpmath.sin(W * tau)
-                  + mpmath.exp(-f[8] * tau) * (f[2] * mpmath.cos(f[9] * tau)
-                                               + f[3] * mpmath.sin(f[9] * tau)))  # fmt: skip
-            exact += SHAPE[row, i] * (qi - q0[i])
+            ex, cd, sd = mpmath.exp(-f[8] * tau), mpmath.cos(f[9] * tau), mpmath.sin(f[9] * tau)
+            cw, sw = mpmath.cos(W * tau), mpmath.sin(W * tau)
+            exact += SHAPE[row, i] * (f[0] * cw + f[1] * sw + ex * (f[2] * cd + f[3] * sd) - q0[i])
+            rate += SHAPE[row, i] * (f[4] * cw + f[5] * sw + ex * (f[6] * cd + f[7] * sd))
         assert abs(_horner(poly, n, s) - float(exact)) <= 16 * EPS * scale
+        derivative = np.polynomial.polynomial.polyval(s, np.polynomial.polynomial.polyder(
+            speed[: n1 + 1]))  # fmt: skip
+        assert abs(derivative - float(rate)) <= 16 * EPS * scale_v
 
 
 @settings(deadline=None)  # the first example compiles the engine's functions
@@ -109,7 +118,7 @@ def test_the_polynomial_is_the_projected_coupled_flight(row, c, r):
     rate = max(W, *(abs(lam[m]) for m in range(n2) if weights[m] != 0.0))
     h = r / rate
     poly = np.empty(_modal.TAYLOR_MAX + 1)
-    n = _modal._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, rows, 0.0, poly)
+    n = _modal._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, rows, 0.0, poly, 0)
     assert 0 <= n <= _modal.TAYLOR_MAX
     R = rows[row, 0]
     scale = float(np.abs(R).sum())
@@ -136,7 +145,7 @@ def test_no_polynomial_where_it_would_not_converge_or_the_cache_holds_another_fl
     nothing = np.zeros((0, 3, 1), complex)
     rate = max(W, *(math.hypot(cfg[10][i, 8], cfg[10][i, 9]) for i in range(3)))
     args = (pm, cfg, SHAPE, 0)
-    assert _modal._point_taylor(*args, t0, q0, v0, 0.1, 0.49 / rate, nothing, 0.0, poly) >= 0
-    assert _modal._point_taylor(*args, t0, q0, v0, 0.1, 0.5 / rate, nothing, 0.0, poly) == -1
-    assert _modal._point_taylor(*args, t0, q0 * 2, v0, 0.1, 0.1 / rate, nothing, 0.0, poly) == -1
-    assert _modal._point_taylor(*args, t0 + 1, q0, v0, 0.1, 0.1 / rate, nothing, 0.0, poly) == -1
+    assert _modal._point_taylor(*args, t0, q0, v0, 0.1, 0.49 / rate, nothing, 0.0, poly, 0) >= 0
+    assert _modal._point_taylor(*args, t0, q0, v0, 0.1, 0.5 / rate, nothing, 0.0, poly, 0) == -1
+    assert _modal._point_taylor(*args, t0, q0 * 2, v0, 0.1, 0.1 / rate, nothing, 0.0, poly, 0) == -1
+    assert _modal._point_taylor(*args, t0 + 1, q0, v0, 0.1, 0.1 / rate, nothing, 0.0, poly, 0) == -1

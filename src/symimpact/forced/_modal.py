@@ -1056,7 +1056,7 @@ TAYLOR_MAX = 24
 
 
 @njit(cache=True)
-def _point_taylor(pm, cfg, Phi, row, t0, q0, v0, c, h, rows, xb, poly):
+def _point_taylor(pm, cfg, Phi, row, t0, q0, v0, c, h, rows, xb, poly, extra):
     """The degree n and poly[0 … n] of the Taylor polynomial of the point's displacement since
     the flight's start, dx(c + ς) = x_b(t0 + c + ς) − x_b(t0) + φᵀ(q(c + ς) − q0) ≈ Σₖ polyₖςᵏ
     for abs(ς) ≤ h; −1 where it is not formed (a mode without Eq. F1's form, a flight read
@@ -1066,8 +1066,10 @@ def _point_taylor(pm, cfg, Phi, row, t0, q0, v0, c, h, rows, xb, poly):
     Σₗ Re(aₗμₗᵏe^{μₗc})/k! for k ≥ 1, and poly₀ = dx(c) as the flight's own evaluation sums it.
     With ρ ≥ every abs(μₗ), the terms left out are below Σₗ abs(aₗe^{μₗc})·rⁿ⁺¹/(n + 1)! times
     1/(1 − r/(n + 2)) ≤ 1.34: n is the least degree that puts them below 1e-17 of the terms'
-    sizes, under the rounding of the sum itself.  A refinement (:func:`_refine`) then reads the
-    point at each look by Horner's rule, not by every mode's exponential, cosine and sine."""
+    sizes, under the rounding of the sum itself; ``extra`` degrees more for a polynomial whose
+    derivative is read (the speed's terms left out are r·(rⁿ/n!) of its sizes).  A refinement
+    (:func:`_refine`, :func:`_segment`'s zeros of ẋₚ) then reads the point at each look by
+    Horner's rule, not by every mode's exponential, cosine and sine."""
     N = pm.shape[0]
     W = pm[0, P_W]
     dec = cfg[6]
@@ -1097,6 +1099,7 @@ def _point_taylor(pm, cfg, Phi, row, t0, q0, v0, c, h, rows, xb, poly):
     while bound >= 7.4e-18 and n < TAYLOR_MAX:
         n += 1
         bound *= r * _INV_N[n + 1]
+    n = min(n + extra, TAYLOR_MAX)
     poly[: n + 1] = 0.0
     th = W * c
     ec = complex(math.cos(th), math.sin(th))  # e^{iΩc}
@@ -1165,7 +1168,7 @@ def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb,
     kept = 0
     mid = 0.5 * (lo + hi)
     poly = np.empty(TAYLOR_MAX + 1)
-    deg = _point_taylor(pm, cfg, Phi, row, t0, q0, v0, mid, 0.5 * (hi - lo), rows, xb, poly)
+    deg = _point_taylor(pm, cfg, Phi, row, t0, q0, v0, mid, 0.5 * (hi - lo), rows, xb, poly, 0)
     for _ in range(200):
         den = fhi - flo
         tm = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
@@ -2103,6 +2106,7 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
     Hc = 2.0 * math.pi / cfg[9] / 16.0
     a = 0.0
     H = Hc
+    poly = np.empty(TAYLOR_MAX + 1)
     while a < tau:
         H = min(H, tau - a)
         b = a + H
@@ -2145,14 +2149,23 @@ def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_perio
             if fine[p] != 0.0 and (v_prev[p] > 0.0) != (vs[p] > 0.0) and v_prev[p] != 0.0:
                 lo, hi, flo, fhi = a, b, v_prev[p], vs[p]
                 kept = 0
+                mid = 0.5 * (a + b)  # ẋₚ from the derivative of xₚ's Taylor polynomial
+                deg = _point_taylor(pm, cfg, Pout, p, t0, q0, v0, mid, 0.5 * (b - a), rows, xb,
+                                    poly, 1)  # fmt: skip
                 for _ in range(100):
                     tm = secant_point(lo, hi, flo, fhi)
-                    vm = _base_v(pm, xb, t0 + tm)
-                    if dec:
+                    if deg >= 1:
+                        sg = tm - mid
+                        vm = deg * poly[deg]
+                        for j in range(deg - 1, 0, -1):
+                            vm = vm * sg + j * poly[j]
+                    elif dec:
+                        vm = _base_v(pm, xb, t0 + tm)
                         _free_states(pm, cfg[10], t0, q0, v0, tm, q, v)
                         for i in range(N):
                             vm += Pout[p, i] * v[i]
                     else:
+                        vm = _base_v(pm, xb, t0 + tm)
                         _rows_at(rows, hf, cplx, n2, W, tm, out)
                         vm += out[p, 1]
                     if vm == 0.0:
