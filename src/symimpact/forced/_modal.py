@@ -48,7 +48,10 @@ system's modes of |φₖᵀVₗcₗ|·|λₗ|² (each decays, Re λₗ ≤ 0; th
 harmonic part Ω²|φₖᵀX̂|.
 All free dampers are marched together: an interval every bound clears is skipped, any other
 halved, and each damper whose z crosses a wall there is bracketed and refined by Illinois regula
-falsi; the earliest crossing is the impact.  A crossing bracketed by a longer step is refined at
+falsi, which reads the point's displacement from its Taylor polynomial about the bracket's middle
+(:func:`_point_taylor`: the flight is a sum of Re(a·e^{μτ}) terms, so its coefficients cost one
+evaluation and each look a Horner sum, its degree set to leave out less than 1e-17 of the terms);
+the earliest crossing is the impact.  A crossing bracketed by a longer step is refined at
 once and taken where nothing can come before it (:func:`_none_before`: its rate bounds the
 approach, the chord bounds the rest); else the step is halved down to where any excursion beyond
 a wall would be shallower than 1e-20 of the clearance.  The wall just left is kept off as in the

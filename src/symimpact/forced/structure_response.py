@@ -214,10 +214,9 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     the supports (the masses' speeds relative to them).
 
     ``energy``: keep the energy ledger (:attr:`StructureResult.energy`); without it the flights'
-    work and dissipation are not integrated, a part of a run's cost (benchmark 10: its fastest
-    10-mode run and the median of its eight both 1.4 times as fast without it), and ``energy``
-    is None.  The
-    motion is the same to the bit."""
+    work and dissipation are not integrated, a part of a run's cost (benchmark 10: the median of
+    its eight 10-mode runs 1.2 times as fast without it), and ``energy`` is None.  The motion is
+    the same to the bit."""
     structure = instance("structure", structure, Structure, "a Structure")
     energy = flag("energy", energy)
     dampers = tuple(dampers) if isinstance(dampers, (list, tuple)) else dampers
