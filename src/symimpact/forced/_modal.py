@@ -405,7 +405,7 @@ def _mode_constants(pm, i, row):
     row[FC_SIGMA] = sigma
     row[FC_WD] = math.sqrt(wd2) if wd2 >= 0.0 else math.nan
     row[FC_WN2] = wn2
-    row[FC_FAST2] = max(W, math.sqrt(K / M)) ** 2
+    row[FC_FAST2] = max(W, math.sqrt(wn2)) ** 2
     if not steady:
         return
     A = _steady_cos(M, K, C, F0, Xb, W)
@@ -604,6 +604,19 @@ def _cmv(A, x):
 
 
 @njit(cache=True, inline="always")
+def _form_fresh(form, t0, q0, v0):
+    """Whether the flight's form cache ``form`` (:func:`_free_states`) holds the flight from
+    (q0, v0) at t0."""
+    N = q0.shape[0]
+    if not (form[N, 1] == 1.0 and form[N, 0] == t0):
+        return False
+    for i in range(N):
+        if form[i, 10] != q0[i] or form[i, 11] != v0[i]:
+            return False
+    return True
+
+
+@njit(cache=True, inline="always")
 def _free_states(pm, form, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) by Eq. F1 a time τ after (q0, v0) at t0, written into q and v, while
     the modes are uncoupled (:func:`_states`; the searches' and the ledger's innermost loops call
@@ -614,13 +627,7 @@ def _free_states(pm, form, t0, q0, v0, tau, q, v):
     cache, keyed by t0, q0 and v0), and each τ then costs cos Ωτ and sin Ωτ, shared by the
     modes, and e^(−στ), cos ω_dτ and sin ω_dτ per mode."""
     N = pm.shape[0]
-    fresh = form[N, 1] == 1.0 and form[N, 0] == t0
-    if fresh:
-        for i in range(N):
-            if form[i, 10] != q0[i] or form[i, 11] != v0[i]:
-                fresh = False
-                break
-    if not fresh:
+    if not _form_fresh(form, t0, q0, v0):
         for i in range(N):
             W = pm[i, P_W]
             th = (W * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
@@ -1079,13 +1086,12 @@ def _point_taylor(pm, cfg, Phi, row, t0, q0, v0, c, h, rows, xb, poly, extra):
     rate = W
     if dec:
         form = cfg[10]
-        if not (form[N, 1] == 1.0 and form[N, 0] == t0):
+        if not _form_fresh(form, t0, q0, v0):
             return -1
         for i in range(N):
-            f = form[i]
-            if f[12] == 0.0 or f[10] != q0[i] or f[11] != v0[i]:
+            if form[i, 12] == 0.0:
                 return -1
-            rate = max(rate, math.hypot(f[8], f[9]))
+            rate = max(rate, math.hypot(form[i, 8], form[i, 9]))
     elif rows.shape[0] > 0:
         hf, cplx, n2 = cfg[11], cfg[1], cfg[2]
         last = cplx.shape[0] - 1
