@@ -1321,16 +1321,16 @@ FOLD_STEP = 0.25
 
 def _fold_back(problem: _Problem, y, t, ds, before: BranchPoint, located):
     """The branch turned back at a grazing (rigid impacts): where no orbit continues the branch
-    beyond the grazing ``located`` along t, the orbits with the new low-speed impact may lie on
-    the same side — a non-smooth fold, at which the two branches meet (measured on the README's
-    curve: the symmetric four-impact orbits grazing both walls at 30.4438 rad/s meet the
-    asymmetric five-impact ones there).  On the hyperplane a share FOLD_BACK of the step behind
-    the grazing, the old orbit's flight turning point nearest a wall (:func:`_turns`; then the one
-    nearest the other wall, :func:`_wall_push`) is pushed past that wall along the gradient of its distance within the hyperplane (central
-    differences of the flight, Eq. F1), and Newton's method starts there, its steps kept among
-    the orbits with the new impact (:func:`_correct_within`).  Returns (y, t, monodromy,
-    simulation, point, distance from the grazing in the scaled unknowns) of an orbit with other
-    impacts, its tangent oriented away from the grazing, or None."""
+    beyond the grazing ``located`` along t, the orbits with the new low-speed impact may lie on the
+    same side — a non-smooth fold, at which the two branches meet (measured on the README's curve:
+    the symmetric four-impact orbits grazing both walls at 30.4438 rad/s meet the asymmetric
+    five-impact ones there).  On the hyperplane a share FOLD_BACK of the step behind the grazing, the
+    old orbit's flight turning point nearest a wall (:func:`_turns`; then the one nearest the other
+    wall, :func:`_wall_push`) is pushed past that wall along the gradient of its distance within the
+    hyperplane (central differences of the flight, Eq. F1), and Newton's method starts there, its
+    steps kept among the orbits with the new impact (:func:`_correct_within`).  Returns (y, t,
+    monodromy, simulation, point, distance from the grazing in the scaled unknowns) of an orbit with
+    other impacts, its tangent oriented away from the grazing, or None."""
     _, lo, hi, _ = located
     count = before.impact_events_per_period
     y_graze = y + hi * t
@@ -1377,17 +1377,16 @@ def orbit_beside_grazing(
 ) -> tuple[tuple[float, float, float, float], Forcing] | None:  # fmt: skip
     """The orbit with one more impact beside the rigid-impact orbit through ``state`` that nearly
     grazes: the flight's turning point nearest a wall (:func:`_turns`; then the other wall's) is
-    pushed past it along
-    the gradient of its reach (:func:`_reach_gradient`, Eq. F1) within the hyperplane through
-    the orbit normal to its branch in Ω, and Newton's method starts there, its steps kept among
-    the orbits with the new impact (:func:`_correct_within`), as :func:`_fold_back` does at a
-    grazing.  Such orbits lie on the same side as the old one near a non-smooth fold (measured
-    on the README's curve: beside the asymmetric 13-impact orbits at 30.6901 rad/s, whose
-    other half-period's chatter sequence ends 4e-4 of d/2 from its wall, lie the symmetric
-    14-impact ones, stable over 30.6672–30.6768 rad/s).  Returns (the orbit's state at t = 0,
-    the forcing at its Ω), or None where the orbit has no turning point, the reach's gradient
-    meets other impacts, or Newton's method finds no orbit with other impacts.  ``bounds``: the
-    band in Ω [rad/s] (the unknowns' scaling)."""
+    pushed past it along the gradient of its reach (:func:`_reach_gradient`, Eq. F1) within the
+    hyperplane through the orbit normal to its branch in Ω, and Newton's method starts there, its
+    steps kept among the orbits with the new impact (:func:`_correct_within`), as :func:`_fold_back`
+    does at a grazing.  Such orbits lie on the same side as the old one near a non-smooth fold
+    (measured on the README's curve: beside the asymmetric 13-impact orbits at 30.6901 rad/s, whose
+    other half-period's chatter sequence ends 4e-4 of d/2 from its wall, lie the symmetric 14-impact
+    ones, stable over 30.6672–30.6768 rad/s).  Returns (the orbit's state at t = 0, the forcing at
+    its Ω), or None where the orbit has no turning point, the reach's gradient meets other impacts,
+    or Newton's method finds no orbit with other impacts.  ``bounds``: the band in Ω [rad/s] (the
+    unknowns' scaling)."""
     system, forcing, e = checked(system, forcing, e)
     if not is_rigid(e):
         raise MethodNotApplicable("orbit_beside_grazing", "flights between rigid impacts only")
