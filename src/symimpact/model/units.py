@@ -195,8 +195,9 @@ def _pint_factor(unit_text: str, si_unit: str) -> tuple[str, str]:
         parsed = ureg.parse_units("1" + unit_text if unit_text.startswith("/") else unit_text)
     except Exception as exc:  # pint raises assorted error types on malformed or unknown units
         return "unit", str(exc)
-    if si_unit in ANGULAR:
-        return _frequency_factor(ureg, parsed, unit_text, si_unit)
+    target = ureg.parse_units(si_unit)
+    if _angle_count(target)[1] or _angle_count(parsed)[1]:
+        return _angular_factor(parsed, target, unit_text, si_unit)
     try:
         factor = ureg.Quantity(1.0, parsed).to(si_unit).magnitude
     except pint.errors.DimensionalityError:
@@ -208,29 +209,59 @@ def _pint_factor(unit_text: str, si_unit: str) -> tuple[str, str]:
 ANGULAR = ("rad/s", "Hz")
 
 
-def _frequency_factor(ureg: Any, parsed: Any, unit_text: str, si_unit: str) -> tuple[str, str]:
-    """A frequency's factor to rad/s or Hz, by what the unit counts.
+def _angle_count(unit: Any) -> tuple[float, float, dict[str, float]]:
+    """(power of the hertz, power of the angle, the other root units) of a pint unit, the angle
+    counted as a dimension of its own.
 
-    pint takes the radian as dimensionless, so to it Hz and rad/s are both 1/s and "324.7 rpm"
-    in Hz is 34.0 (rad/s), not 5.41.  Here a unit whose root holds an angle (rad/s, deg/s,
-    rpm = revolution/minute, turn/s, cycle/s) is an angular rate, converted through radians; a
-    unit of hertz (Hz, kHz, hertz) counts cycles, 2π rad each; a rate with neither (1/s, 1/min)
-    is ambiguous and refused."""
-    q = ureg.Quantity(1.0, parsed).to_root_units()
-    root = dict(q.units._units)
-    if root == {"radian": 1, "second": -1}:
-        rad_per_s = float(q.magnitude)
-    elif root == {"second": -1} and any("hertz" in str(u) for u in parsed._units):
-        rad_per_s = 2.0 * math.pi * float(q.magnitude)
-    elif root == {"second": -1}:
-        return "unit", (
-            f"{unit_text!r} is a rate that names no angle: write rad/s (or deg/s, rpm) for an "
-            "angular frequency, Hz for cycles per second"
-        )
-    else:
-        return "dimension", str(q.dimensionality)
-    factor = rad_per_s if si_unit == "rad/s" else rad_per_s / (2.0 * math.pi)
-    return "ok", repr(factor)  # all its digits: 2π is no short decimal
+    pint takes the radian as dimensionless, so to it Hz, rad/s and 1/s are all 1/s, and
+    N²/(rad/s) is N² s = N²/Hz.  Here every factor of the unit is read by what it counts: a
+    radian, degree, revolution (rpm, turn, cycle) is an angle, kept as a power of radians; a
+    hertz counts cycles per second, 2π rad/s each; the second, metre, newton, ... are what pint
+    says they are.  The powers are sums over the factors, wherever they stand: numerator,
+    denominator or power (N²/Hz has angle power −1, (rad/s)² power 2)."""
+    ureg = _registry()
+    hertz, angle, rest = 0.0, 0.0, {}
+    for name, power in unit._units.items():
+        root = dict(ureg.Quantity(1.0, name).to_root_units().units._units)
+        a = root.pop("radian", 0.0)
+        if "hertz" in name:  # a cycle per second: 2π rad/s
+            a += 1.0
+            hertz += power
+        angle += a * power
+        for k, v in root.items():
+            rest[k] = rest.get(k, 0.0) + v * power
+    return hertz, angle, {k: v for k, v in rest.items() if v != 0}
+
+
+def _angular_factor(parsed: Any, target: Any, unit_text: str, si_unit: str) -> tuple[str, str]:
+    """The factor from ``parsed`` to ``target`` where either counts an angle (a frequency, or a
+    PSD per frequency), by :func:`_angle_count`: "324.7 rpm" in Hz is 5.41, not 34.0 (pint's
+    answer); "0.02 N^2/(rad/s)" in N²/Hz is 2π·0.02.  pint's factor (the radian as 1, the hertz as
+    1/s) times 2π for each hertz the unit has more than the target.  A unit that names no angle
+    where the target counts one (1/s for a frequency, N² s for a force PSD) is ambiguous and
+    refused."""
+    h_user, a_user, rest_user = _angle_count(parsed)
+    h_target, a_target, rest_target = _angle_count(target)
+    if rest_user != rest_target:
+        return "dimension", str(_registry().Quantity(1.0, parsed).dimensionality)
+    if a_user != a_target:
+        if a_user == 0 and si_unit in ANGULAR:
+            return "unit", (
+                f"{unit_text!r} is a rate that names no angle: write rad/s (or deg/s, rpm) for an "
+                "angular frequency, Hz for cycles per second"
+            )
+        if a_user == 0:
+            per = si_unit.rsplit("/", 1)
+            hint = f": write {per[0]}/Hz or {per[0]}/(rad/s)" if per[-1] == "Hz" else ""
+            return "unit", (
+                f"{unit_text!r} names no frequency where {si_unit} counts one, and per hertz "
+                f"and per rad/s differ by 2π{hint}"
+            )
+        return "dimension", f"an angle to the power {a_user:g} where {si_unit} has {a_target:g}"
+    factor = float(_registry().Quantity(1.0, parsed).to(target).magnitude)
+    if h_user == h_target:  # the same count of cycles: pint's factor, as for any unit
+        return "ok", repr(factor) if si_unit in ANGULAR else f"{factor:.15g}"
+    return "ok", repr(factor * (2.0 * math.pi) ** (h_user - h_target))  # 2π: no short decimal
 
 
 class _FactorFile:
@@ -309,8 +340,8 @@ class _FactorFile:
 
 _FACTOR_KINDS = ("ok", "unit", "dimension")
 #: Version of the rules that turn pint's answers into factors (2: frequencies by what they count,
-#: :func:`_frequency_factor`); part of the stored table's key.
-_RULES = 3
+#: frequency units in any power, :func:`_angle_count`); part of the stored table's key.
+_RULES = 4
 #: Unit texts kept on disk at most (a fuzzing session must not grow the file without bound).
 _MAX_STORED_FACTORS = 2000
 _FACTOR_FILE = _FactorFile()
