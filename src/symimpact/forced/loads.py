@@ -247,11 +247,12 @@ def unit_columns(
     import csv
     import re
 
+    from ..io import input_text
+
     try:
-        with open(path, newline="") as f:
-            rows = list(csv.reader(f))
-    except OSError as err:
-        raise ParameterError(name, f"cannot read {str(path)!r}: {err.strerror}") from None
+        rows = list(csv.reader(input_text(path, name).splitlines()))
+    except csv.Error as err:
+        raise ParameterError(name, f"{str(path)!r} is not a CSV table ({err})") from None
     if len(rows) < 3 or len(rows[0]) != 2:
         raise ParameterError(name, "needs a header of two columns and at least two rows")
     units = [re.search(r"\[(.+)\]", h) for h in rows[0]]

@@ -132,6 +132,8 @@ def material(text: str) -> Material:
             name = {"ν": "nu", "ρ": "rho"}.get(found[1], found[1])
             name = {"e": "E", "y": "Y"}.get(name.lower(), name.lower())
             unit = {"E": "Pa", "nu": None, "rho": "kg/m^3", "Y": "Pa"}[name]
+            if name in values:
+                raise ParameterError(f"material {name}", f"given twice in {str(text)!r}")
             values[name] = si_float(f"material {name}", found[2], unit)
         missing = {"E", "nu", "rho"} - set(values)
         if missing:

@@ -77,7 +77,10 @@ class FEMode:
 
 def _read_one(name: str, path: Path):
     """One matrix from ``path`` (.mtx, .npy or .csv)."""
+    from ..io import input_file
+
     suffix = path.suffix.lower()
+    input_file(path, name)
     try:
         if suffix == ".mtx":
             from scipy.io import mmread
@@ -101,9 +104,12 @@ def read_matrices(fe: Any = None, K: Any = None, M: Any = None) -> tuple[Any, An
     if fe is not None:
         if K is not None or M is not None:
             raise ParameterError("fe", "give either one .npz file of K and M or the two files")
+        from ..io import input_file
+
         path = Path(fe)
         if path.suffix.lower() != ".npz":
             raise ParameterError("fe", f"{path}: an .npz file holding arrays K and M")
+        input_file(path, "fe")
         try:
             with np.load(path, allow_pickle=False) as data:
                 if "K" not in data or "M" not in data:
@@ -151,6 +157,31 @@ def _checked(name: str, A: Any, n: int | None):
     return A
 
 
+#: Largest condition number (largest over smallest eigenvalue) of a mass or stiffness matrix:
+#: beyond it the smallest eigenvalue is rounding (1e13 leaves 3 of a double's 16 digits).
+MAX_CONDITION = 1e13
+
+
+def _definite(name: str, A: Any, remedy: str) -> None:
+    """Refuse a symmetric matrix that is not positive definite, or whose condition number
+    (largest over smallest eigenvalue) exceeds :data:`MAX_CONDITION`, stating the condition."""
+    from scipy import sparse
+    from scipy.linalg import eigvalsh
+
+    Ad = A.toarray() if sparse.issparse(A) else np.asarray(A)
+    if Ad.size == 0:
+        raise ParameterError(name, "is an empty matrix")
+    lam = eigvalsh(Ad)
+    low, high = float(lam[0]), float(lam[-1])
+    if high <= 0 or low <= 0 or high / low > MAX_CONDITION:
+        cond = "infinite" if low <= 0 else f"{high / low:.3g}"
+        raise ParameterError(
+            name,
+            f"the model is not positive definite ({name}'s eigenvalues run from {low:.3g} to "
+            f"{high:.3g}, condition {cond}; at most {MAX_CONDITION:g} is read): {remedy}",
+        )
+
+
 def influence_vector(pattern: Any, size: int) -> np.ndarray:
     """The influence vector r of a model of ``size`` DOFs from ``pattern``: a sequence (or a
     comma-separated text) of numbers repeated to fill the DOFs ("1" for a model of
@@ -182,6 +213,9 @@ def unit_modes(K: Any, M: Any, n: int) -> tuple[np.ndarray, np.ndarray]:
     from scipy.linalg import LinAlgError, eigh
 
     size = K.shape[0]
+    if not (sparse.issparse(K) and size > DENSE):
+        _definite("M", M, "a DOF without mass: condense it out of the model (static condensation)")
+        _definite("K", K, "a rigid-body mode: constrain the model at its supports")
     try:
         if sparse.issparse(K) and size > DENSE:
             from scipy.sparse.linalg import eigsh
@@ -202,6 +236,9 @@ def unit_modes(K: Any, M: Any, n: int) -> tuple[np.ndarray, np.ndarray]:
         ) from None
     if not np.all(lam > 0):
         raise ParameterError("K", "the model has a mode of zero or negative stiffness")
+    if not np.all(np.isfinite(lam)):  # M singular: a mode of infinite frequency
+        raise ParameterError("M", "is singular (a mode of infinite frequency): a DOF without "
+                             "mass; condense it out of the model")  # fmt: skip
     Mv = M @ vec
     vec = vec / np.sqrt(np.einsum("ij,ij->j", vec, Mv))  # unit modal mass
     return lam, vec

@@ -24,7 +24,6 @@ or quantity texts (``"20 mm"``).
 
 from __future__ import annotations
 
-import json
 import math
 import tomllib
 from dataclasses import dataclass, field
@@ -316,6 +315,9 @@ def _matrix(name: str, value: Any, base: Path) -> Any:
 
         path = (base / value) if not Path(value).is_absolute() else Path(value)
         if path.suffix.lower() == ".npz":
+            from ..io import input_file
+
+            input_file(path, f"fe.{name}")
             try:
                 with np.load(path, allow_pickle=False) as data:
                     if name not in data:
@@ -386,17 +388,23 @@ def structure_from_dict(data: Any, base: Path | None = None) -> Structure:
 
 
 def parsed_file(path: Any) -> tuple[Any, Path]:
-    """A structure file's parsed content (JSON, or TOML by its suffix) and its folder."""
+    """A structure file's parsed content (JSON, or TOML by its suffix) and its folder.  A key
+    given twice is refused (JSON as TOML does), and so are paths that are not a regular file of
+    at most :data:`~symimpact.io.MAX_INPUT_BYTES` of UTF-8 text (:func:`~symimpact.io.input_text`)."""
+    from ..io import input_text, strict_json
+
+    text = input_text(path, "structure")
     p = Path(path)
+    if p.suffix.lower() != ".toml":
+        return strict_json(text, "structure", f"{p} "), p.parent
     try:
-        text = p.read_text()
-    except OSError as exc:
-        raise ParameterError("structure", f"cannot read {p} ({exc.strerror})") from None
-    try:
-        data = tomllib.loads(text) if p.suffix.lower() == ".toml" else json.loads(text)
-    except (tomllib.TOMLDecodeError, json.JSONDecodeError) as exc:
-        kind = "TOML" if p.suffix.lower() == ".toml" else "JSON"
-        raise ParameterError("structure", f"{p} is not valid {kind} ({exc})") from None
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ParameterError("structure", f"{p} is not valid TOML ({exc})") from None
+    except RecursionError:
+        raise ParameterError(
+            "structure", f"{p} nests arrays or tables too deeply to read"
+        ) from None
     return data, p.parent
 
 
