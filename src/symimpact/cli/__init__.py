@@ -142,6 +142,9 @@ def _ending_on_signal(command: str):
         bar = getattr(sys.modules.get("tqdm"), "tqdm", None)
         if bar is not None and getattr(bar, "_instances", None):
             sys.stderr.write("\n")  # a progress bar is open mid-line: the message gets its own
+        io = sys.modules.get("symimpact.io")
+        if io is not None:  # os._exit runs no finally: the half-written outputs go here
+            io.remove_in_progress()
         words = "interrupted" if signum == signal.SIGINT else f"ended by signal {signum}"
         print(f"symimpact {command}: {words}", file=sys.stderr, flush=True)
         os._exit(128 + signum)
@@ -192,6 +195,8 @@ def _dashes_as_empty(ns: argparse.Namespace) -> argparse.Namespace:
 
 #: Options that name a file a command writes, checked before the command computes anything.
 OUTPUT_FILES = ("plot", "csv")
+#: Options that name a file a command reads (an output may not replace one).
+INPUT_FILES = ("structure", "record_file", "psd_file", "fe", "stiffness", "mass")
 #: Commands whose --out is a file (a map's table); the others' --out is a folder.
 FILE_OUT = ("sweep", "map", "design")
 
@@ -199,12 +204,27 @@ FILE_OUT = ("sweep", "map", "design")
 def _check_outputs(ns: argparse.Namespace) -> None:
     """Refuse an output path that cannot be written before the computation starts
     (:func:`symimpact.io.output_target`), not after it."""
+    import os
+
+    from ..errors import ParameterError
     from ..io import output_target
 
+    written: dict[str, str] = {}
     for name in OUTPUT_FILES + (("out",) if ns.command in FILE_OUT else ()):
         value = getattr(ns, name, None)
         if value:
             output_target(value, name)
+            where = os.path.realpath(value)
+            if where in written:  # the second file would replace the first
+                raise ParameterError(name, f"{value!r} is already the --{written[where]} file: "
+                                     "give each output its own path")  # fmt: skip
+            written[where] = name
+    for name in INPUT_FILES:
+        value = getattr(ns, name, None)
+        if isinstance(value, str) and value and os.path.realpath(value) in written:
+            out = written[os.path.realpath(value)]
+            raise ParameterError(out, f"{value!r} is the --{name.replace('_', '-')} file read: "
+                                 "writing it would replace the input")  # fmt: skip
 
 
 def main(argv: Sequence[str] | None = None) -> int:
