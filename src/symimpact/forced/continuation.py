@@ -66,6 +66,7 @@ from .shooting import (
     WALL,
     ShootingOrbit,
     _off_the_walls,
+    condition,
     mid_free_flight,
     monodromy,
     shoot,
@@ -233,7 +234,7 @@ class _Problem:
         TOL, or below the map's noise amplified by A's conditioning, cond·NOISE, capped at
         STALL."""
         step = float(np.max(np.abs(dy)))
-        return step < TOL or step < min(self.noise * np.linalg.cond(A), self.stall)
+        return step < TOL or step < min(self.noise * condition(A), self.stall)
 
     def omega(self, y: np.ndarray) -> float:
         """The forcing frequency at y."""
@@ -456,14 +457,25 @@ def _point(problem: _Problem, y, mono, res) -> BranchPoint:
     )
 
 
+def _det(A: np.ndarray) -> float:
+    """det A of a real matrix; where it overflows (a stiff contact's monodromy holds multipliers
+    of 1e200 and more), ±infinity with its sign, which is all the test functions read there."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        d = float(np.real(np.linalg.det(A)))
+    if math.isfinite(d):
+        return d
+    sign, _ = np.linalg.slogdet(A)
+    return float(np.real(sign)) * math.inf if sign != 0 else 0.0
+
+
 def _tests(t: np.ndarray, mono: np.ndarray) -> dict[str, float]:
     """The test functions whose sign changes mark the bifurcations."""
     lam = np.linalg.eigvals(mono)
     pairs = [abs(c) for c in lam if c.imag > 1e-9 * max(1.0, abs(c))]
     return {
         "fold": float(t[4]),
-        "branch-point": float(np.real(np.linalg.det(mono - np.eye(4)))),
-        "period-doubling": float(np.real(np.linalg.det(mono + np.eye(4)))),
+        "branch-point": _det(mono - np.eye(4)),
+        "period-doubling": _det(mono + np.eye(4)),
         "neimark-sacker": (min(pairs, key=lambda a: abs(a - 1.0)) - 1.0) if pairs else math.nan,
     }
 

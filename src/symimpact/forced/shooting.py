@@ -71,6 +71,20 @@ MAX_PERIODS = 64
 MAX_IMPACTS_PER_PERIOD = budgets.MAX_IMPACTS_PER_PERIOD
 
 
+def condition(A: np.ndarray) -> float:
+    """The 2-norm condition number of ``A`` (the ratio of its extreme singular values), or
+    infinity where A is singular, holds a non-finite entry (a Jacobian whose differences
+    overflowed on a stiff contact) or its SVD does not converge: a bound that reads "no
+    accuracy" instead of stopping the curve."""
+    if not np.all(np.isfinite(A)):
+        return math.inf
+    try:
+        c = float(np.linalg.cond(A))
+    except np.linalg.LinAlgError:
+        return math.inf
+    return c if math.isfinite(c) else math.inf
+
+
 @dataclass(frozen=True)
 class ShootingOrbit:
     """A period-k orbit found by :func:`shoot` (SI units).
@@ -333,7 +347,7 @@ def shoot(
         # a compliant map carries ~1e-12 of noise (continuation.NOISE), amplified by the
         # conditioning of (monodromy − I)
         scaled = (J - np.eye(4)) * scale[None, :] / scale[:, None]
-        floor = tol if rigid else max(tol, 1e-12 * float(np.linalg.cond(scaled)))
+        floor = tol if rigid else max(tol, 1e-12 * condition(scaled))
         if size <= floor:
             break
     else:
