@@ -121,7 +121,10 @@ def add_parser(sub: Any) -> None:
         "--duration",
         default=None,
         metavar="Q",
-        help="the run, pulse included; default 20 natural periods of the primary",
+        help="the run from the shock's start, pulse or record included (the rest after it is "
+        "the free vibration, the residual response); default the shock, then 20 natural periods "
+        "of the primary and 3 periods of the SRS's lowest oscillator; the SRS also reads each "
+        "oscillator's residual after the run in closed form",
     )
     g.add_argument(
         "--srs-range",
@@ -353,14 +356,19 @@ def run_shock(ns) -> None:
     fn = system.omega_n / (2 * math.pi)
     if ns.record_file is not None:
         from ..errors import ParameterError
-        from ..forced.loads import read_record
+        from ..forced.loads import followed_by_rest, read_record
 
-        given = [f"--{k.replace('_', '-')}" for k in ("pulse", "duration", "dt") if getattr(ns, k)]
+        given = [f"--{k.replace('_', '-')}" for k in ("pulse", "dt") if getattr(ns, k)]
         if ns.force_load is not None or ns.base_load is not None or given:
-            raise ParameterError("record-file", "the record gives the load, its length and its "
-                                 "samples: drop --force-peak/--base-peak, --pulse, --duration and "
-                                 "--dt")  # fmt: skip
+            raise ParameterError("record-file", "the record gives the load and its samples: "
+                                 "drop --force-peak/--base-peak, --pulse and --dt")  # fmt: skip
         record = read_record(ns.record_file)
+        # the record, then rest: its residual response (default: as after a pulse, 20 natural
+        # periods, and 3 periods of the SRS's lowest oscillator)
+        rest = max(20.0 / fn, 3.0 / _srs_range(ns, fn)[0])
+        total = (positive_float("duration", ns.duration, "s") if ns.duration is not None
+                 else record.duration + rest)  # fmt: skip
+        record = followed_by_rest(record, total)
     else:
         from ..errors import ParameterError
 
@@ -368,14 +376,14 @@ def run_shock(ns) -> None:
         if ns.pulse is None:
             raise ParameterError("pulse", "give the pulse's duration (or --record-file)")
         td = positive_float("pulse", ns.pulse, "s")
-        if ns.duration is None:
-            total = max(20.0 / fn, td)
+        if ns.duration is None:  # the pulse, then 20 natural periods and 3 of the SRS's lowest
+            total = td + max(20.0 / fn, 3.0 / _srs_range(ns, fn)[0])
             total = td / 200.0 * math.ceil(total / (td / 200.0))  # whole default steps
         else:
             total = positive_float("duration", ns.duration, "s")
         dt = _sampling(ns, total, td / 200.0)
         record = shock_record(ns.shape, _height(ns, kind, text), td, total, dt, kind)
-    lo, hi = (0.1 * fn, 10.0 * fn) if ns.srs_range is None else band_from("srs-range", ns.srs_range)
+    lo, hi = _srs_range(ns, fn)
     n = count("srs-points", ns.srs_points, 2, 10_000)
     out = shock_response(system, record, e=e, frequencies=np.geomspace(lo, hi, n),
                          zeta=ns.srs_zeta)  # fmt: skip
@@ -398,6 +406,19 @@ def run_shock(ns) -> None:
         f"{out.srs[i] / G:.4g} g with the damper, {out.baseline_srs[i] / G:.4g} g alone"
     )
     emit(ns, out.as_dict(), text_out)
+
+
+def _srs_range(ns, fn: float) -> tuple[float, float]:
+    """The SRS's frequencies [Hz]: --srs-range, or a decade either side of the primary's fn."""
+    if ns.srs_range is None:
+        return 0.1 * fn, 10.0 * fn
+    lo, hi = band_from("srs-range", ns.srs_range)
+    if lo <= 0:
+        from ..errors import ParameterError
+
+        raise ParameterError("srs-range", f"must start above 0 Hz (an oscillator's frequency), "
+                             f"got {lo:g}")  # fmt: skip
+    return lo, hi
 
 
 def run_sweep(ns) -> None:

@@ -161,6 +161,25 @@ def shock_record(
     return Record(values, dt, kind)
 
 
+def followed_by_rest(record: Record, duration: Any) -> Record:
+    """``record`` followed by zeros up to ``duration`` [s] from its start (at least its own
+    length), at its sample interval: the free vibration after a shock, whose residual response a
+    recorded shock of its own length would leave out (a 20 g, 11 ms half-sine sampled over
+    50 ms had given a peak of 58 mm where the pulse followed by rest gives 132 mm).  A record
+    whose last value is not 0 falls to 0 over one interval."""
+    T = positive_float("duration", duration, "s")
+    if T < record.duration * (1.0 - 1e-12):
+        raise ParameterError(
+            "duration", f"must cover the record, {record.duration:g} s, got {T:g} s"
+        )
+    n = max(round(T / record.dt) + 1, len(record.values))
+    if n > MAX_SAMPLES:
+        raise ParameterError("duration", f"gives {n:,} samples, more than {MAX_SAMPLES:,}")
+    values = np.zeros(n)
+    values[: len(record.values)] = record.values
+    return Record(values, record.dt, record.kind)
+
+
 def sweep_record(
     amplitude: Any, f_start: Any, f_end: Any, rate: Any, dt: Any, law: str = "linear",
     kind: str = "force",

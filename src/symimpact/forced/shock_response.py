@@ -46,12 +46,14 @@ def base_motion(record: Record) -> tuple[np.ndarray, np.ndarray]:
 
 def motion_srs(
     displacement: np.ndarray, velocity: np.ndarray, dt: float, frequencies: Any,
-    zeta: Any = SRS_ZETA,
+    zeta: Any = SRS_ZETA, after: tuple[float, float, float, float] | None = None,
 ) -> np.ndarray:  # fmt: skip
     """Maximax absolute acceleration [m/s²] of oscillators at ``frequencies`` [Hz] (damping
     ratio ``zeta``) on a base moving with ``displacement`` [m] and ``velocity`` [m/s] sampled
     every ``dt`` [s], from relative rest (module docstring; Eq. F8 with the load
-    ω²x_b + 2ζωẋ_b)."""
+    ω²x_b + 2ζωẋ_b).  ``after`` = (x, ẋ, ωp, ζp): beyond the samples the base vibrates freely
+    from x, ẋ (relative to a base that moves on at constant speed, or rests) with ωp, ζp, and
+    the residual response then is read too (:func:`residual_maximax`)."""
     f = checks.numbers("frequencies", frequencies)
     z = checks.bounded("zeta", zeta, 0.0, 1.0)
     if z >= 1.0:
@@ -73,7 +75,55 @@ def motion_srs(
         load = w * w * xb + 2.0 * z * w * vb
         W, Wd = _march(1.0, w * w, 2.0 * z * w, load, dt, xb[0], vb[0])
         out[j] = np.max(np.abs(w * w * (W - xb) + 2.0 * z * w * (Wd - vb)))
+        if after is not None:  # the residual response beyond the samples
+            out[j] = max(out[j], residual_maximax(W[-1] - xb[-1], Wd[-1] - vb[-1], w, z, *after))
     return out
+
+
+def _poles(w: float, z: float) -> tuple[complex, complex]:
+    """The roots of s² + 2ζωs + ω² (kept apart by 1e-9 of ω where they meet: ζ = 1)."""
+    root = complex(z * z - 1.0) ** 0.5
+    if abs(root) < 1e-9:
+        root = 1e-9 + 0j
+    return -z * w + w * root, -z * w - w * root
+
+
+def residual_maximax(r0: float, rd0: float, w: float, z: float, x0: float, v0: float,
+                     wp: float, zp: float) -> float:  # fmt: skip
+    """The largest absolute acceleration [m/s²] of an oscillator (ω [rad/s], ζ) after the
+    samples end, on a primary that then vibrates freely: the primary from x0 [m], v0 [m/s] with
+    natural frequency ωp and damping ratio ζp (the load over, its damper out of reach or at
+    rest), the oscillator from its relative state r0 = W − y [m], rd0 [m/s].  In closed form:
+    y(τ) = Σ a_k e^{λ_k τ} (λ the primary's poles), r'' + 2ζωr' + ω²r = −ÿ so
+    r = Σ b_k e^{λ_k τ} + Σ d_k e^{μ_k τ} with b_k = −a_k λ_k²/(λ_k² + 2ζωλ_k + ω²) and d from
+    r0, rd0; the acceleration −ω²r − 2ζωr' is read on a grid of 256 points in the shorter of
+    the two periods (a peak missed by at most (2π/256)²/8 = 7.5e-5 of its height) until the
+    terms' envelopes fall below the largest value read."""
+    lam = _poles(wp, zp)
+    mu = _poles(w, z)
+    if abs(lam[0] - mu[0]) < 1e-9 * w or abs(lam[0] - mu[1]) < 1e-9 * w:
+        mu = _poles(w * (1.0 + 1e-9), z)  # a double root (ζ = ζp, ω = ωp): kept apart
+    a1 = (v0 - lam[1] * x0) / (lam[0] - lam[1])
+    a = (a1, x0 - a1)
+    b = [-a[k] * lam[k] ** 2 / (lam[k] ** 2 + 2.0 * z * w * lam[k] + w * w) for k in range(2)]
+    r_rest = r0 - b[0] - b[1]
+    rd_rest = rd0 - b[0] * lam[0] - b[1] * lam[1]
+    d1 = (rd_rest - mu[1] * r_rest) / (mu[0] - mu[1])
+    d = (d1, r_rest - d1)
+    nu = np.array([lam[0], lam[1], mu[0], mu[1]])
+    amp = np.array([b[0], b[1], d[0], d[1]])
+    coef = -(w * w + 2.0 * z * w * nu) * amp  # the acceleration's terms
+    fastest = max(abs(lam[0]), abs(mu[0]), w, wp)
+    h = 2.0 * math.pi / fastest / 256.0
+    best, start, chunk = 0.0, 0.0, 4096
+    size, rate = np.abs(coef), nu.real
+    while True:
+        tau = start + h * np.arange(chunk)
+        acc = (coef[None, :] * np.exp(tau[:, None] * nu[None, :])).sum(axis=1).real
+        best = max(best, float(np.max(np.abs(acc))))
+        start = tau[-1] + h
+        if float(np.sum(size * np.exp(rate * start))) < best or start * min(-rate.max(), w) > 1e3:
+            return best
 
 
 @dataclass(frozen=True)
@@ -117,15 +167,24 @@ def shock_response(
     """``record`` (a shock of :func:`~symimpact.forced.loads.shock_record`, or any record) on
     ``system`` with rigid impacts of restitution ``e`` (Eq. F2, flight Eq. F8; or the compliant
     law of a :class:`~symimpact.forced.contact_law.CompliantContact`) and on the
-    primary alone; the SRS of the main mass's absolute motion at ``frequencies`` [Hz]."""
+    primary alone; the SRS of the main mass's absolute motion at ``frequencies`` [Hz], over the
+    record and the residual response after it (the primary vibrating freely from its last
+    sample, in closed form: :func:`residual_maximax`; exact once the damper no longer
+    impacts, which a record followed by enough rest, :func:`~.loads.followed_by_rest`, gives).
+    After the last sample the load is 0."""
     ours = damper_response(system, record, e=e, chatter=chatter)
     alone = primary_response(system, record)
     if record.kind == "base-acceleration":
         xb, vb = base_motion(record)
     else:
         xb = vb = np.zeros(len(record.values))
-    srs = motion_srs(ours.displacement + xb, ours.velocity + vb, record.dt, frequencies, zeta)
-    base = motion_srs(alone.displacement + xb, alone.velocity + vb, record.dt, frequencies, zeta)
+    wp = system.omega_n
+    zp = system.C / (2.0 * math.sqrt(system.K * system.M))
+    ends = [(r.displacement[-1], r.velocity[-1], wp, zp) for r in (ours, alone)]
+    srs = motion_srs(ours.displacement + xb, ours.velocity + vb, record.dt, frequencies, zeta,
+                     after=ends[0])  # fmt: skip
+    base = motion_srs(alone.displacement + xb, alone.velocity + vb, record.dt, frequencies, zeta,
+                      after=ends[1])  # fmt: skip
     return ShockResult(
         peak=float(np.max(np.abs(ours.displacement))),
         baseline_peak=float(np.max(np.abs(alone.displacement))),
