@@ -97,6 +97,7 @@ class RandomStatistics:
             "baseline_rms": dict(self.baseline_rms),
             "reduction": dict(self.reduction),
             "reduction_ci95": {k: list(v) for k, v in self.reduction_ci95.items()},
+            "ci95": INTERVAL,
             "impacts_per_second": self.impacts_per_second,
             "peak": {k: _spread(v) for k, v in self.peak.items()},
             "baseline_peak": {k: _spread(v) for k, v in self.baseline_peak.items()},
@@ -114,6 +115,13 @@ def _spread(values: np.ndarray) -> dict[str, float]:
             "max": float(np.max(values))}  # fmt: skip
 
 
+#: What the intervals are, in the JSON beside them.
+INTERVAL = (
+    "95 % confidence interval of the mean over the realisations: the spread of the simulated "
+    "records (how far the mean of these records may lie from that of infinitely many), the mean "
+    "times e^(±h) with h Student's t half-width on the values' logarithms (RMS) or on those of "
+    "1 − reduction; not a bound on one record's RMS"
+)
 #: Below this many realisations a warning says that the intervals are wide and rest on few
 #: records (Student's t with 7 degrees of freedom is 2.36 standard errors, 20 % wider than 1.96).
 FEW_REALISATIONS = 8

@@ -28,11 +28,16 @@ from .simulation import CHATTER
 
 
 def envelope(
-    displacement: np.ndarray, frequency: np.ndarray, dt: float
-) -> tuple[np.ndarray, np.ndarray]:
+    displacement: np.ndarray, frequency: np.ndarray, dt: float,
+    velocity: np.ndarray | None = None, impacts: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
     """(instantaneous frequency [Hz], largest abs(x) [m]) over each period of a sweep whose
     instantaneous frequency at the samples is ``frequency``: the periods follow one another,
-    each 1/f long at its start."""
+    each 1/f long at its start.  With the ``velocity`` [m/s] at the samples, the largest value
+    is read between them too, on the cubic through x and ẋ at the two samples beside the
+    largest one (its error (ω·dt)⁴/384 of the amplitude, 1e-5 at 25 samples a period, where the
+    samples alone miss up to 1 − cos(ω·dt/2), 0.7 %); not across an interval that holds one of
+    the ``impacts`` [s] (where ẋ jumps)."""
     starts = [0]
     t = 0.0
     n = len(displacement)
@@ -42,11 +47,47 @@ def envelope(
         if i >= n:
             break
         starts.append(i)
+    hits = np.sort(np.asarray(impacts, dtype=float)) if impacts is not None else np.zeros(0)
     centres, peaks = [], []
     for a, b in pairwise(starts):
         centres.append(frequency[(a + b) // 2])
-        peaks.append(np.max(np.abs(displacement[a : b + 1])))
+        i = a + int(np.argmax(np.abs(displacement[a : b + 1])))
+        peak = abs(float(displacement[i]))
+        if velocity is not None:
+            for j in (i - 1, i):
+                if 0 <= j < n - 1 and not _holds_impact(hits, j * dt, (j + 1) * dt):
+                    peak = max(peak, _hermite_peak(displacement[j], velocity[j],
+                                                   displacement[j + 1], velocity[j + 1], dt))  # fmt: skip
+        peaks.append(peak)
     return np.array(centres), np.array(peaks)
+
+
+def _holds_impact(hits: np.ndarray, t0: float, t1: float) -> bool:
+    k = np.searchsorted(hits, t0)
+    return bool(k < len(hits) and hits[k] <= t1)
+
+
+def _hermite_peak(x0: float, v0: float, x1: float, v1: float, h: float) -> float:
+    """The largest abs of the cubic Hermite interpolant through (x0, ẋ0) and (x1, ẋ1) over an
+    interval of h [s]: at its ends, and where its derivative, a quadratic in u = s/h, is 0."""
+    # p(u) = x0 + h v0 u + c2 u² + c3 u³
+    c2 = 3.0 * (x1 - x0) - h * (2.0 * v0 + v1)
+    c3 = 2.0 * (x0 - x1) + h * (v0 + v1)
+    best = max(abs(x0), abs(x1))
+    qa, qb, qc = 3.0 * c3, 2.0 * c2, h * v0
+    if qa == 0.0:
+        roots = [-qc / qb] if qb != 0.0 else []
+    else:
+        disc = qb * qb - 4.0 * qa * qc
+        if disc < 0.0:
+            return best
+        r = disc**0.5
+        q = -0.5 * (qb + (r if qb >= 0.0 else -r))
+        roots = [q / qa] + ([qc / q] if q != 0.0 else [])
+    for u in roots:
+        if 0.0 < u < 1.0:
+            best = max(best, abs(x0 + u * (h * v0 + u * (c2 + u * c3))))
+    return best
 
 
 #: frequencies of the steady curve over the sweep's band (the continuation steps between them;
@@ -178,8 +219,8 @@ def sweep_response(
         freq = sweep_frequency(record.times, fa, fb, rate, law)
         ours = damper_response(system, record, e=e, chatter=chatter)
         alone = primary_response(system, record)
-        f, a = envelope(ours.displacement, freq, record.dt)
-        _, b = envelope(alone.displacement, freq, record.dt)
+        f, a = envelope(ours.displacement, freq, record.dt, ours.velocity, ours.impact_times)
+        _, b = envelope(alone.displacement, freq, record.dt, alone.velocity)
         out[name] = {"frequency": f, "envelope": a, "baseline": b}
     curve = steady_curve(system, amplitude, f_low, f_high, e=e, kind=kind) if steady else None
     return SweepResult(out["up"], out["down"], curve)

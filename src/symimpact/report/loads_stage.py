@@ -83,7 +83,8 @@ def section(folder: Path, quick: bool, tick: Any, earlier: Any = ()) -> Section:
             ],
             rows,
             [None, ".4g", ".4g", ".4g", ".4g", ".1f", ".1f", ".1f"],
-            note=f"Means over the realisations, intervals from Student's t; the reduction "
+            note=f"Means over the realisations, 95 % intervals from Student's t on their "
+            "logarithms (the spread of the simulated records' mean); the reduction "
             "1 − RMS/RMS alone is taken per realisation (paired on its record). "
             f"{st.impacts_per_second:.3g} impacts a second on average. The acceleration is "
             "between impacts (their impulses are instants).",
