@@ -435,3 +435,31 @@ def test_a_sweep_at_the_default_sampling_has_the_exact_chirps_peak():
     t = np.arange(0, T, 1 / (400 * f1))
     want = float(np.max(np.abs(sol.sol(t)[0])))
     assert peak == pytest.approx(want, rel=1e-4)
+
+
+def test_hertz_far_outside_its_validity_is_warned_of_and_absurd_speeds_refused(capsys):
+    """A 20 mm steel ball on a steel flat: at 1 m/s √(Rδ)/R is 0.049 and the speed 34 times first
+    yield (0.0295 m/s), within both
+    bounds; at 500 m/s the contact radius is 0.59 of R and the speed 1.7e4 times first yield:
+    two warnings; at 3e8 m/s Hertz's penetration (144 m) exceeds the radius: refused."""
+    common = ["contact", "--impactor", "steel sphere 20 mm", "--cavity", "steel flat"]
+    assert main([*common, "--v0", "1 m/s"]) == 0
+    out = capsys.readouterr()
+    assert "warning" not in out.err
+    assert "AISI 1045" in out.out and "yield strength 530 MPa" in out.out
+    assert "'bearing steel' (52100)" in out.out  # what a designer of hardened balls should say
+    assert main([*common, "--v0", "500 m/s"]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 2 and "0.59 of R" in err[0] and "1.7e+04 times" in err[1]
+    assert main([*common, "--v0", "3e8 m/s"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "v0:" in err and "beyond the 10 mm radius" in err
+
+
+@pytest.mark.parametrize(
+    ("name", "grade"),
+    [("52100", "AISI 52100"), ("440C", "AISI 440C"), ("mild steel", "AISI 1018"),
+     ("carbide", "WC–6 % Co"), ("nylon", "PA 66"), ("steel", "AISI 1045")],
+)  # fmt: skip
+def test_the_grades_a_designer_buys_are_named(name, grade):
+    assert grade in material(name).grade

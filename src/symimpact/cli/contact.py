@@ -48,9 +48,10 @@ def add_parser(sub: Any) -> None:
         metavar="TEXT",
         help="'<material> flat', '<material> sphere <diameter>', '<material> spherical cavity "
         "<diameter>', '<material> cylindrical bore <diameter>' or '<material> cylinder "
-        "<diameter>'; a material is a name (steel, bearing steel, stainless steel, aluminium "
-        "alloy, brass, bronze, lead, tungsten alloy, cast iron, ptfe, polyurethane, natural "
-        "rubber) or 'E 200 GPa, nu 0.3, rho 7800 kg/m^3, Y 350 MPa'",
+        "<diameter>'; a material is a name (steel = AISI 1045, mild steel = 1018, bearing steel "
+        "= 52100, stainless steel = 304, hardened stainless steel = 440C, aluminium alloy, "
+        "brass, bronze, lead, tungsten alloy, tungsten carbide, cast iron, ptfe, nylon, "
+        "polyurethane, natural rubber) or 'E 200 GPa, nu 0.3, rho 7800 kg/m^3, Y 350 MPa'",
     )
     p.add_argument("--v0", required=True, metavar="Q", help="impact (approach) speed [m/s]")
     p.add_argument(
@@ -82,6 +83,10 @@ def run(ns) -> None:
     for body in dict.fromkeys((c.sources["impactor_material"], c.sources["cavity_material"])):
         lines.append(f"  {body.split(';')[0]}")
     lines.append("  (typical values of these grades; --json: every source)")
+    if "steel" in (c.sources["impactor_material"].split(":")[0],
+                   c.sources["cavity_material"].split(":")[0]):  # fmt: skip
+        lines.append("  'steel' is AISI 1045: hardened bearing balls rebound more (e 0.8–0.95), "
+                     "give 'bearing steel' (52100) or 'hardened stainless steel' (440C)")  # fmt: skip
     if ns.freq is not None:
         f = positive_float("freq", ns.freq, "Hz")
         ratio = 1.0 / (f * c.duration)

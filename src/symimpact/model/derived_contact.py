@@ -249,6 +249,45 @@ def restitution_at(
     )
 
 
+#: Hertz's law assumes a contact small beside the radii (a ≪ R, the bodies half-spaces): the
+#: contact radius a = √(Rδ) beyond this share of R (a penetration beyond its square, 9 %, of R)
+#: is warned of.  The package's bound: elastomer flats under steel balls reach 0.15–0.2 at the
+#: impact speeds of dampers, where Hertz is the usual model; 0.3 is beyond that use.
+HERTZ_SMALL = 0.3
+#: Thornton's elastic–perfectly-plastic restitution (Step 13) is warned of beyond this many
+#: times the speed of first yield: the package's stated bound on extrapolating a law that leaves
+#: out strain hardening, strain rate and the fully plastic indentation of high speeds.
+PLASTIC_RANGE = 100.0
+
+
+def _yield_text(mat: Material) -> str:
+    if mat.yield_strength is None:
+        return f", no yield (rebound resilience {mat.resilience:g})" if mat.resilience else ""
+    return f", yield strength {mat.yield_strength / 1e6:.4g} MPa"
+
+
+def _warn_validity(v0: float, delta: float, R: float, v_y: float | None) -> None:
+    """One warning for each assumption the impact at v0 leaves behind (:data:`HERTZ_SMALL`,
+    :data:`PLASTIC_RANGE`)."""
+    import warnings
+
+    a = math.sqrt(R * delta)
+    if a > HERTZ_SMALL * R:
+        warnings.warn(
+            f"at {v0:g} m/s the contact radius √(Rδ) = {a * 1e3:.3g} mm is {a / R:.2g} of R "
+            f"(Hertz's law assumes below {HERTZ_SMALL:g}): the stiffness and duration are "
+            "extrapolated",
+            stacklevel=3,
+        )
+    if v_y is not None and v0 > PLASTIC_RANGE * v_y:
+        warnings.warn(
+            f"at {v0:g} m/s the impact is {v0 / v_y:.3g} times the speed of first yield "
+            f"({v_y:.3g} m/s): Thornton's elastic–perfectly-plastic e is extrapolated beyond "
+            f"{PLASTIC_RANGE:g} times it",
+            stacklevel=3,
+        )
+
+
 def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> DerivedContact:
     """The contact of ``impactor`` (text or :class:`Body`) in ``cavity`` at the impact speed
     ``v0`` [m/s], against a cavity body of mass ``M`` [kg] (None: massive) — Step 13, Eq. F5."""
@@ -289,6 +328,13 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
             return (pressure / (ell.p0_per_root * E_star)) ** 2
 
     delta = float(closed_forms.hertz_max_penetration_scalar(m, M, k_hz, v0))
+    smallest = min(abs(r) for r in (imp.radius, cav.radius) if r)
+    if delta >= smallest:
+        raise ParameterError(
+            "v0", f"{v0:g} m/s presses the bodies {delta * 1e3:.4g} mm together, beyond the "
+            f"{smallest * 1e3:g} mm radius: no contact law holds there (Hertz's needs a "
+            "penetration far below the radii)"
+        )  # fmt: skip
     pressures = [p for p in (yield_pressure(a), yield_pressure(b)) if p is not None]
     p_y = min(pressures) if pressures else None
     if p_y is None:
@@ -296,6 +342,7 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
     else:  # p₀ reaches p_y at the approach δ_y; Step 13: the impact speed that reaches δ_y
         v_y = float(hz.speed_for_approach_scalar(m, M, k_hz, approach_at(p_y)))
     e, e_source = restitution_at(imp, cav, v0, v_y)
+    _warn_validity(v0, delta, R, v_y)
     from .hunt_crossley import hunt_crossley_chi
 
     chi = hunt_crossley_chi(e, v0) if e < 1.0 else 0.0
@@ -319,8 +366,8 @@ def derived_contact(impactor: Any, cavity: Any, v0: Any, M: Any = None) -> Deriv
         "chi": "Step 11: the Hunt–Crossley χ giving e at v0 (exact)",
         "k1": "Eq. 9's least-squares line over [0, δ_max] (Step 2)",
         "c1": "Step 9: the linear law's c1 giving e with k1 (Eq. 35 inverted)",
-        "impactor_material": f"{a.name}: {a.grade}; {a.source}",
-        "cavity_material": f"{b.name}: {b.grade}; {b.source}",
+        "impactor_material": f"{a.name}: {a.grade}{_yield_text(a)}; {a.source}",
+        "cavity_material": f"{b.name}: {b.grade}{_yield_text(b)}; {b.source}",
     }
     return DerivedContact(
         v0=v0,
