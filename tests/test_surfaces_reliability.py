@@ -463,3 +463,41 @@ def test_hertz_far_outside_its_validity_is_warned_of_and_absurd_speeds_refused(c
 )  # fmt: skip
 def test_the_grades_a_designer_buys_are_named(name, grade):
     assert grade in material(name).grade
+
+
+@pytest.mark.parametrize(
+    ("rate", "why"),
+    [("1e6", "a sweep needs at least 4"), ("1e-9", "more than 50,000,000")],
+)
+def test_a_sweep_too_fast_or_too_slow_is_refused_before_it_allocates(capsys, rate, why):
+    """1e6 Hz/s had met an empty envelope (internal error); 1e-9 Hz/s had asked for 2.4 TiB."""
+    t0 = time.monotonic()
+    argv = ["sweep-sine", *SYS, "--e", "0.6", "--force-amplitude", "2 N", "--band", "4:6.5",
+            "--rate", rate]  # fmt: skip
+    assert main(argv) == 2
+    assert time.monotonic() - t0 < 1.0
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "rate:" in err and why in err
+
+
+def test_coverage_claims_the_lower_of_its_two_samples():
+    """The share a curve prints is the lower of the grid's and the random check's: a check that
+    finds one periodic attractor in two off the branches makes the share 0.5, whatever the
+    grid's; the JSON states the frequencies, the starts and the check's seed."""
+    from symimpact.forced.coverage import CHECK_SEED, Attractor, Coverage, check_frequencies
+
+    def periodic(w):
+        return Attractor(w, 0.01, "periodic", 1, 2.0, (0.0, 0.0, 0.0, 0.0), True)
+
+    grid = Coverage([periodic(30.0), periodic(31.0)], [True, True], (30.0, 31.0))
+    assert grid.share == 1.0
+    grid.check, grid.seed = Coverage([periodic(30.4), periodic(30.7)], [True, False],
+                                     (30.4, 30.7)), CHECK_SEED  # fmt: skip
+    assert grid.share == 0.5 and grid.grid_share == 1.0
+    out = grid.as_dict()
+    assert out["share"] == 0.5 and out["grid_share"] == 1.0 and out["starts"] == 4
+    assert out["check"]["seed"] == CHECK_SEED and out["check"]["frequencies"] == [30.4, 30.7]
+    assert [a["omega"] for a in out["check"]["missed"]] == [30.7]
+    ws = check_frequencies((25.0, 40.0))
+    assert np.all((ws > 25.0) & (ws < 40.0)) and np.all(np.diff(ws) > 0)
+    assert np.array_equal(ws, check_frequencies((25.0, 40.0)))  # seeded: the same each time

@@ -372,8 +372,22 @@ def peak_lines(frf) -> list[str]:
             else (f"{sum(cov.traced)} of {len(cov.traced)} periodic ones on a traced branch")
         )
         kinds = sorted({a.kind for a in cov.missed})
-        lines.append(f"multi-start: {len(cov.attractors)} attractor(s), {share}"
+        lines.append(f"multi-start: {len(cov.attractors)} attractor(s) at {len(cov.frequencies)} "
+                     f"frequencies from {cov.starts} starts each, {share}"
                      + (f"; not traced: {', '.join(kinds)}" if kinds else ""))  # fmt: skip
+        if cov.check is not None:
+            c = cov.check
+            got = (f"{sum(c.traced)} of {len(c.traced)} periodic ones on a traced branch"
+                   if c.traced else "no periodic one")  # fmt: skip
+            from ..model.display import omega_text
+
+            missed = ", ".join(f"{omega_text(a.omega)} ({a.kind}"
+                               + (f", period {a.period_multiple})" if a.period_multiple else ")")
+                               for a in c.missed)  # fmt: skip
+            lines.append(f"check at {len(c.frequencies)} random frequencies (seed {cov.seed}): "
+                         f"{got}" + (f"; missed: {missed}" if missed else ""))  # fmt: skip
+        if not math.isnan(cov.share):
+            lines.append(f"coverage: {100 * cov.share:.3g} % (the lower of the two shares)")
     return lines
 
 

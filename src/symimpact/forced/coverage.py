@@ -101,20 +101,35 @@ class Attractor:
 
 @dataclass
 class Coverage:
-    """:func:`coverage`'s outcome: ``attractors`` found by the multi-start, each periodic one
-    ``traced`` or not (same order as the periodic ones), ``share`` = traced / periodic (NaN with
-    none)."""
+    """:func:`coverage`'s outcome: ``attractors`` found by the multi-start at ``frequencies``
+    [rad/s] from ``starts`` initial states each (and, refined, between them), each periodic one
+    ``traced`` or not (same order as the periodic ones); ``check``: the same measured at a
+    second, independent set of frequencies drawn at random inside the band
+    (:func:`check_frequencies`, seed ``seed``), whose landings start no branch.  ``share`` is the
+    lower of the two shares traced / periodic (NaN with none): it claims no more than either set
+    of samples shows."""
 
     attractors: list[Attractor] = field(default_factory=list)
     traced: list[bool] = field(default_factory=list)
+    frequencies: tuple[float, ...] = ()
+    starts: int = STARTS
+    check: Coverage | None = None
+    seed: int | None = None
 
     @property
     def periodic(self) -> list[Attractor]:
         return [a for a in self.attractors if a.kind == "periodic"]
 
     @property
-    def share(self) -> float:
+    def grid_share(self) -> float:
+        """traced / periodic among this set's own landings (NaN with none)."""
         return sum(self.traced) / len(self.traced) if self.traced else math.nan
+
+    @property
+    def share(self) -> float:
+        shares = [self.grid_share, self.check.grid_share if self.check else math.nan]
+        shares = [v for v in shares if not math.isnan(v)]
+        return min(shares) if shares else math.nan
 
     @property
     def missed(self) -> list[Attractor]:
@@ -124,12 +139,31 @@ class Coverage:
         return periodic + [a for a in self.attractors if a.kind in UNTRACEABLE]
 
     def as_dict(self) -> dict[str, Any]:
-        return {
+        out = {
             "share": None if math.isnan(self.share) else self.share,
+            "grid_share": None if math.isnan(self.grid_share) else self.grid_share,
+            "frequencies": list(self.frequencies),
+            "starts": self.starts,
             "attractors": len(self.attractors),
             "periodic": len(self.periodic),
             "missed": [a.as_dict() for a in self.missed],
         }
+        if self.check is not None:
+            out["check"] = {"seed": self.seed, **self.check.as_dict()}
+            del out["check"]["share"]
+        return out
+
+
+#: The independent check of a curve's coverage: this many frequencies drawn uniformly inside the
+#: band by a generator of this seed (the same for every band: stated, reproducible).
+CHECK_FREQUENCIES, CHECK_SEED = 5, 2026
+
+
+def check_frequencies(band: tuple[float, float], n: int = CHECK_FREQUENCIES,
+                      seed: int = CHECK_SEED) -> np.ndarray:  # fmt: skip
+    """The coverage's check frequencies [rad/s]: ``n`` drawn uniformly inside ``band`` by
+    ``numpy.random.default_rng(seed)``, sorted."""
+    return np.sort(np.random.default_rng(seed).uniform(band[0], band[1], n))
 
 
 def frequencies(band: tuple[float, float], n: int = FREQUENCIES) -> np.ndarray:
@@ -427,11 +461,11 @@ class MultiStart:
 
     def __init__(self, system: ImpactSystem, forcing: Forcing, e: Any,
                  band: tuple[float, float], n: int = FREQUENCIES, *, refine: bool = False,
-                 workers: int | None = None) -> None:  # fmt: skip
+                 workers: int | None = None, ws: Any = None) -> None:  # fmt: skip
         if workers is None:
             workers = min(STARTS, os.cpu_count() or 1)
         workers = checks.whole_number("workers", workers, 1, 1024)
-        self.ws = tuple(float(w) for w in frequencies(band, n))
+        self.ws = tuple(float(w) for w in (frequencies(band, n) if ws is None else ws))
         self.pending = _pool.Pending(_landings, [(system, forcing, e, band, self.ws, j, refine)
                                                  for j in range(STARTS)], workers)  # fmt: skip
 

@@ -53,10 +53,12 @@ from .continuation import (
     trace_branch,
 )
 from .coverage import (
+    CHECK_SEED,
     FREQUENCIES,
     Coverage,
     MultiStart,
     attractor,
+    check_frequencies,
     close_returns,
     initial_states,
     least_period,
@@ -397,10 +399,13 @@ def frequency_response(
         _turn_at_grazing_ends(out, system, forcing, e, band, step, failures)
     if embedded:  # rigid impacts (checked above)
         _embedded(found, system, forcing, e, failures, follow)
-    out.coverage = Coverage(found, [
-        _traced(out.branches, system, forcing, e, a.omega, a.amplitude, a.period_multiple)
-        for a in found if a.kind == "periodic"
-    ])  # fmt: skip
+    out.coverage = _coverage(found, out.branches, system, forcing, e, multi.ws if multi else ())
+    if multi is not None:  # the independent check: random frequencies, their landings traced?
+        check = MultiStart(system, forcing, e, band, workers=workers,
+                           ws=check_frequencies(band)).result()  # fmt: skip
+        out.coverage.check = _coverage(check, out.branches, system, forcing, e,
+                                       tuple(float(w) for w in check_frequencies(band)))  # fmt: skip
+        out.coverage.seed = CHECK_SEED
     _drop_repeated_bifurcations(out.branches, 1e-6 if is_rigid(e) else 1e-5)
     out.baseline_peak = baseline_peak(system, forcing, band)
     out.peak = curve_peak(out.branches, system, forcing, e, band, out.no_impact, found)
@@ -422,6 +427,14 @@ def frequency_response(
 
 #: The multi-start's motions whose embedded periodic orbits are searched for (:func:`_embedded`).
 EMBEDDING = ("chaotic", "not periodic")
+
+
+def _coverage(found, branches, system, forcing, e, ws) -> Coverage:
+    """The share of the periodic attractors ``found`` at ``ws`` that lie on a traced branch."""
+    return Coverage(found, [
+        _traced(branches, system, forcing, e, a.omega, a.amplitude, a.period_multiple)
+        for a in found if a.kind == "periodic"
+    ], tuple(ws))  # fmt: skip
 
 
 def _embedded(found, system, forcing, e, failures, follow) -> None:

@@ -32,6 +32,9 @@ KINDS = {"force": "N", "base-acceleration": "m/s^2"}
 SAMPLES_PER_PERIOD = 10
 #: The largest record accepted, in samples.
 MAX_SAMPLES = 50_000_000
+#: A sweep lasts at least this many periods of its lowest frequency (fewer is a transient, with
+#: no envelope to read).
+SWEEP_PERIODS = 4
 
 
 @dataclass(frozen=True)
@@ -207,19 +210,24 @@ def sweep_record(
             "dt", f"must give {SAMPLES_PER_PERIOD} samples a period at {max(fa, fb):g} Hz"
         )
     sign = 1.0 if fb > fa else -1.0
+    c = sign * r / 60.0 * math.log(2.0)  # the log sweep: f = fa·e^{ct}
+    T = abs(fb - fa) / r if law == "linear" else math.log(fb / fa) / c
+    if T * min(fa, fb) < SWEEP_PERIODS:  # counted before anything is allocated
+        raise ParameterError(
+            "rate", f"sweeps the band in {T:.3g} s, {T * min(fa, fb):.3g} periods of its lowest "
+            f"frequency: a sweep needs at least {SWEEP_PERIODS} (a slower rate)"
+        )  # fmt: skip
+    if T / dt + 1 > MAX_SAMPLES:
+        raise ParameterError(
+            "rate", f"sweeps the band in {T:.3g} s, {math.ceil(T / dt) + 1:,} samples of {dt:g} s: "
+            f"more than {MAX_SAMPLES:,} (a faster rate, or a coarser --dt)"
+        )  # fmt: skip
+    n = math.ceil(T / dt)
+    t = dt * np.arange(n + 1)
     if law == "linear":
-        T = abs(fb - fa) / r
-        n = math.ceil(T / dt)
-        t = dt * np.arange(n + 1)
         phase = 2.0 * np.pi * (fa * t + 0.5 * sign * r * t**2)
     else:
-        c = sign * r / 60.0 * math.log(2.0)  # f = fa·e^{ct}
-        T = math.log(fb / fa) / c
-        n = math.ceil(T / dt)
-        t = dt * np.arange(n + 1)
         phase = 2.0 * np.pi * fa * np.expm1(c * t) / c
-    if n + 1 > MAX_SAMPLES:
-        raise ParameterError("dt", f"gives {n + 1:,} samples, more than {MAX_SAMPLES:,}")
     f = sweep_frequency(t, fa, fb, r, law)
     return Record(A * np.sin(phase) / interpolation_gain(f, dt), dt, kind)
 
