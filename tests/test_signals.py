@@ -185,3 +185,45 @@ def test_a_signal_during_the_import_of_tqdm_still_ends_in_one_line():
                           timeout=120)  # fmt: skip
     assert done.returncode == 130, done.stderr
     assert done.stderr.strip() == "symimpact design: interrupted"
+
+
+#: Moments of the cold-cache test [s] after the process starts: from the start-up (Python and
+#: the console script's first imports, under 0.1 s) to well inside the first compilation.
+COLD_WINDOW = (0.1, 10.0)
+
+
+@pytest.mark.slow
+def test_ctrl_c_ends_a_first_run_while_it_compiles(tmp_path):
+    """A forced ``simulate`` from the installed ``symimpact`` script with an empty numba cache
+    (``NUMBA_CACHE_DIR`` a new folder each time): SIGINT at four moments drawn (seeded) from
+    0.1 s to 10 s, during the imports or numba's compilation of the engine (minutes cold), ends
+    it with exit 130 and one line, no traceback, within BOUND.  The compilation runs inside the
+    compiled call's deferral of SIGINT, which had held a Ctrl-C until the compilation's end
+    (16 minutes); it now delivers at once while numba compiles."""
+    import os
+    from pathlib import Path
+
+    script = Path(sys.executable).with_name("symimpact")
+    if not script.exists():
+        pytest.skip("the symimpact script is not installed beside this interpreter")
+    rng = random.Random("cold")
+    argv = [str(script), "simulate", *SYS, "--omega", "34 rad/s", *RIGID]
+    for k in range(4):
+        moment = rng.uniform(*COLD_WINDOW)
+        env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / f"cache{k}"))
+        p = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                             env=env)  # fmt: skip
+        time.sleep(moment)
+        assert p.poll() is None, f"ended by itself before {moment:.2f} s: {p.stderr.read()}"
+        sent = time.monotonic()
+        p.send_signal(signal.SIGINT)
+        try:
+            _, err = p.communicate(timeout=60)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            pytest.fail(f"SIGINT at {moment:.2f} s did not end the first run within 60 s")
+        took = time.monotonic() - sent
+        assert p.returncode == 130, (moment, err)
+        assert "Traceback" not in err and len(err.strip().splitlines()) == 1, (moment, err)
+        assert err.strip() in ("symimpact simulate: interrupted", "symimpact: interrupted")
+        assert took < BOUND, f"SIGINT at {moment:.2f} s ended after {took:.2f} s"

@@ -8,7 +8,36 @@ The kernels in :mod:`symimpact.generated` are emitted by the SymPy derivations i
 0.1509
 """
 
-from . import generated
+
+def _interrupted_while_starting(signum, frame) -> None:  # pragma: no cover - timing
+    """Ctrl-C (or SIGTERM, SIGHUP) while the command line is still importing: one line and
+    128 + N, not the 40-line KeyboardInterrupt traceback of an import; the command line's
+    own handlers replace this one once its parser is built."""
+    import os
+
+    os.write(2, b"symimpact: interrupted\n" if signum == 2 else b"symimpact: ended by signal\n")
+    os._exit(128 + signum)
+
+
+def _as_the_program() -> bool:
+    """Whether this import starts the ``symimpact`` program (its console script, or
+    ``python -m symimpact.cli``), not a library user's session."""
+    import os
+    import sys
+
+    arg0 = sys.argv[0] if sys.argv else ""
+    return os.path.basename(arg0) == "symimpact" or arg0.endswith(
+        os.path.join("symimpact", "cli", "__main__.py")
+    )
+
+
+if _as_the_program():  # before numpy and the generated kernels are imported
+    import signal as _signal
+
+    for _sig in (_signal.SIGINT, _signal.SIGTERM, _signal.SIGHUP):
+        _signal.signal(_sig, _interrupted_while_starting)
+
+from . import generated  # noqa: E402
 
 __all__ = ["__version__", "generated"]
 

@@ -99,10 +99,6 @@ _SIGINT = int(signal.SIGINT)
 _SIG_IGN = int(signal.SIG_IGN)
 
 
-def _record(signum: int, frame: Any) -> None:
-    _recorded.append(signum)
-
-
 def call(fn: Any, *args: Any) -> Any:
     """``fn(*args, watch)``: a compiled loop, given the pipe to watch, with SIGINT deferred to its
     return (see the module text).  The previous SIGINT handler is called there if a SIGINT came,
@@ -145,6 +141,7 @@ def call(fn: Any, *args: Any) -> Any:
     # run then went on to the end, exit 0)
     _recorded.clear()
     if defer:
+        _deferred[0] = previous
         _signal.signal(_SIGINT, _record)
     _compiled_depth = 1
     try:
@@ -238,6 +235,7 @@ def stretch() -> Iterator[None]:
         return
     _recorded.clear()
     if defer:
+        _deferred[0] = previous
         _signal.signal(_SIGINT, _record)
     st = _Stretch(previous, defer, old_fd, r)
     _stretch = st
@@ -245,3 +243,54 @@ def stretch() -> Iterator[None]:
         yield
     finally:
         _end_stretch(st)
+
+
+# -- signals while numba compiles ------------------------------------------------------------
+#
+# A first call compiles: minutes of numba's passes, in Python, inside :func:`call`'s deferral.
+# A SIGINT recorded there waited for the compilation's end (a Ctrl-C was ignored for 16
+# minutes on a first run).  Nothing half-built can be left by a KeyboardInterrupt raised while
+# numba compiles (the compiled call has not started), so there the deferral delivers at once:
+# numba's compile events (numba.core.event, "numba:compile") count the compilations under way.
+
+_compiling = [0]
+#: The SIGINT handler the deferral replaced (:func:`call`, :func:`stretch`), delivered to at
+#: once while numba compiles.
+_deferred: list[Any] = [None]
+
+
+def _record(signum: int, frame: Any) -> None:
+    """SIGINT while compiled code runs: recorded, delivered once the call returns; while numba
+    compiles (Python, before the compiled call starts), delivered at once."""
+    if _compiling[0] and _deferred[0] is not None:
+        previous = _deferred[0]
+        if callable(previous):  # Python's own raises KeyboardInterrupt; the program's ends it
+            previous(signum, frame)
+            return
+        if previous == signal.SIG_DFL:
+            raise KeyboardInterrupt
+    _recorded.append(signum)
+
+
+class _Compiling:
+    """numba's compile events: the depth of the compilations under way in the main thread."""
+
+    def on_start(self, ev: Any) -> None:
+        if threading.current_thread() is threading.main_thread():
+            _compiling[0] += 1
+
+    def on_end(self, ev: Any) -> None:
+        if threading.current_thread() is threading.main_thread():
+            _compiling[0] = max(0, _compiling[0] - 1)
+
+
+def _listen() -> None:
+    from numba.core import event
+
+    class Listener(_Compiling, event.Listener):
+        pass
+
+    event.register("numba:compile", Listener())
+
+
+_listen()

@@ -121,6 +121,10 @@ def _join_negative_values(parser: argparse.ArgumentParser, argv: Sequence[str]) 
 EXIT_BAD_INPUT, EXIT_FAULT = 2, 3
 
 
+#: Held by whichever of the signal handler and the watcher thread ends the process first.
+_ENDING = __import__("threading").Lock()
+
+
 def _ending_on_signal(command: str):
     """A SIGTERM/SIGHUP (and, run as the program, SIGINT) handler: end the pool workers, say so
     in one line, exit 128 + N (130 for Ctrl-C: "interrupted").
@@ -134,6 +138,9 @@ def _ending_on_signal(command: str):
         import multiprocessing
         import os
         import signal
+
+        if not _ENDING.acquire(blocking=False):  # the watcher or the handler is ending it
+            return
 
         for child in multiprocessing.active_children():
             child.terminate()
@@ -249,9 +256,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     # printed as "Exception ignored" and dropped, and the command ran on to exit 0.  Called with
     # an argv (tests, notebooks), Ctrl-C stays a KeyboardInterrupt, caught below.
     ending = (signal.SIGTERM, signal.SIGHUP) + ((signal.SIGINT,) if argv_given is None else ())
+    end = _ending_on_signal(ns.command)
     for sig in ending:
         try:
-            previous[sig] = signal.signal(sig, _ending_on_signal(ns.command))
+            previous[sig] = signal.signal(sig, end)
         except ValueError:  # not the main thread (e.g. called from a worker thread)
             pass
     try:
