@@ -501,3 +501,12 @@ def test_coverage_claims_the_lower_of_its_two_samples():
     ws = check_frequencies((25.0, 40.0))
     assert np.all((ws > 25.0) & (ws < 40.0)) and np.all(np.diff(ws) > 0)
     assert np.array_equal(ws, check_frequencies((25.0, 40.0)))  # seeded: the same each time
+
+
+def test_an_srs_of_no_frequency_is_refused():
+    from symimpact.forced.loads import shock_record
+    from symimpact.forced.record_flight import srs
+
+    record = shock_record("half-sine", 1.0, 0.01, 0.1, 1e-4, "base-acceleration")
+    with pytest.raises(ParameterError, match="frequencies: give at least one"):
+        srs(record, [])

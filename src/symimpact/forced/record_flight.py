@@ -83,6 +83,8 @@ def srs(record: Record, frequencies: Any, zeta: Any = 0.05) -> np.ndarray:
     if record.kind != "base-acceleration":
         raise ParameterError("record", "an SRS is of a base acceleration record")
     f = checks.numbers("frequencies", frequencies)
+    if f.size == 0:
+        raise ParameterError("frequencies", "give at least one oscillator frequency")
     z = checks.bounded("zeta", zeta, 0.0, 1.0)
     if z >= 1.0:
         raise ParameterError("zeta", "must be below 1 (underdamped)")

@@ -55,6 +55,8 @@ def motion_srs(
     from x, ẋ (relative to a base that moves on at constant speed, or rests) with ωp, ζp, and
     the residual response then is read too (:func:`residual_maximax`)."""
     f = checks.numbers("frequencies", frequencies)
+    if f.size == 0:
+        raise ParameterError("frequencies", "give at least one oscillator frequency")
     z = checks.bounded("zeta", zeta, 0.0, 1.0)
     if z >= 1.0:
         raise ParameterError("zeta", "must be below 1 (underdamped)")
