@@ -130,6 +130,25 @@ def _start_up() -> float:
     return max(times)
 
 
+def _signal_at(argv, moment, sig, name, env=None):
+    """Start ``argv``, send ``sig`` ``moment`` seconds later: (the process, its stderr, the
+    seconds from the signal to its end); a run that ended before the signal or outlives it by
+    60 s fails the test."""
+    p = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                         env=env)  # fmt: skip
+    time.sleep(moment)
+    if p.poll() is not None:
+        pytest.fail(f"{name}: ended by itself before {moment:.2f} s: {p.stderr.read()}")
+    sent = time.monotonic()
+    p.send_signal(sig)
+    try:
+        _, err = p.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        pytest.fail(f"{name}: {sig.name} at {moment:.2f} s did not end it within 60 s")
+    return p, err, time.monotonic() - sent
+
+
 def _cli(args):
     return [sys.executable, "-c", "import sys; from symimpact.cli import main; sys.exit(main())",
             *args]  # fmt: skip
@@ -148,19 +167,7 @@ def test_a_signal_at_any_moment_ends_the_command_in_one_line(name):
     for k in range(MOMENTS):
         sig = (signal.SIGINT, signal.SIGTERM, signal.SIGINT, signal.SIGHUP)[k % 4]
         moment = earliest + rng.uniform(0.0, WINDOW)
-        p = subprocess.Popen(_cli(full), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                             text=True)  # fmt: skip
-        time.sleep(moment)
-        if p.poll() is not None:
-            pytest.fail(f"{name}: ended by itself before {moment:.2f} s: {p.stderr.read()}")
-        sent = time.monotonic()
-        p.send_signal(sig)
-        try:
-            _, err = p.communicate(timeout=60)
-        except subprocess.TimeoutExpired:
-            p.kill()
-            pytest.fail(f"{name}: {sig.name} at {moment:.2f} s did not end it within 60 s")
-        took = time.monotonic() - sent
+        p, err, took = _signal_at(_cli(full), moment, sig, name)
         code, words = EXPECTED[sig]
         # the message, after any progress bar's lines (tqdm's, on stderr: "… | 3/36 [00:02<…]")
         lines = [ln for ln in err.strip().splitlines() if not PROGRESS.search(ln)]
@@ -211,18 +218,7 @@ def test_ctrl_c_ends_a_first_run_while_it_compiles(tmp_path):
     for k in range(4):
         moment = rng.uniform(*COLD_WINDOW)
         env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / f"cache{k}"))
-        p = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                             env=env)  # fmt: skip
-        time.sleep(moment)
-        assert p.poll() is None, f"ended by itself before {moment:.2f} s: {p.stderr.read()}"
-        sent = time.monotonic()
-        p.send_signal(signal.SIGINT)
-        try:
-            _, err = p.communicate(timeout=60)
-        except subprocess.TimeoutExpired:
-            p.kill()
-            pytest.fail(f"SIGINT at {moment:.2f} s did not end the first run within 60 s")
-        took = time.monotonic() - sent
+        p, err, took = _signal_at(argv, moment, signal.SIGINT, "cold simulate", env)
         assert p.returncode == 130, (moment, err)
         assert "Traceback" not in err and len(err.strip().splitlines()) == 1, (moment, err)
         assert err.strip() in ("symimpact simulate: interrupted", "symimpact: interrupted")
