@@ -306,7 +306,9 @@ def run_random(ns) -> None:
             psd = kanai_tajimi(psd, parts[0].strip(), parts[1].strip())
     T = positive_float("duration", ns.duration, "s")
     dt = _sampling(ns, T, 1.0 / (2 * SAMPLES_PER_PERIOD * f2))
-    n = count("realisations", ns.realisations, 1, 100_000_000)
+    from ..forced.random_response import MAX_REALISATIONS
+
+    n = count("realisations", ns.realisations, 1, MAX_REALISATIONS)
     seed = count("seed", ns.seed, 0, 2**63 - 1)
     as_map = any(v is not None for v in (ns.executor, ns.workers, ns.scheduler, ns.out))
     if as_map:

@@ -122,6 +122,9 @@ INTERVAL = (
     "times e^(±h) with h Student's t half-width on the values' logarithms (RMS) or on those of "
     "1 − reduction; not a bound on one record's RMS"
 )
+#: The most realisations an ensemble runs, in one process or as a map (the command line's cap
+#: too): 1e6 records of 100 s are some 1e8 s of simulated time.
+MAX_REALISATIONS = 1_000_000
 #: Below this many realisations a warning says that the intervals are wide and rest on few
 #: records (Student's t with 7 degrees of freedom is 2.36 standard errors, 20 % wider than 1.96).
 FEW_REALISATIONS = 8
@@ -209,7 +212,7 @@ def random_statistics(
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
     T = positive_float("duration", duration, "s")
     dt = positive_float("dt", dt, "s")
-    n = checks.whole_number("realisations", realisations, 1, 1_000_000)
+    n = checks.whole_number("realisations", realisations, 1, MAX_REALISATIONS)
     seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
     e = restitution_or_law(e)
     settle = (

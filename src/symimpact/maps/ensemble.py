@@ -22,7 +22,14 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..forced.contact_law import contact_setting, restitution_or_law
-from ..forced.random_response import KEYS, RandomStatistics, combine, default_settle, realisation
+from ..forced.random_response import (
+    KEYS,
+    MAX_REALISATIONS,
+    RandomStatistics,
+    combine,
+    default_settle,
+    realisation,
+)
 from ..forced.simulation import CHATTER
 from ..model import checks
 from ..model.system import ImpactSystem
@@ -114,7 +121,7 @@ def random_ensemble(
     ``executor``, ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
     :func:`symimpact.maps.parameter_map` (``out``: a resumable CSV or Parquet file)."""
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
-    n = checks.whole_number("realisations", realisations, 1, 100_000_000)
+    n = checks.whole_number("realisations", realisations, 1, MAX_REALISATIONS)
     seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
     e = restitution_or_law(e)
     T = positive_float("duration", duration, "s")
