@@ -510,3 +510,19 @@ def test_an_srs_of_no_frequency_is_refused():
     record = shock_record("half-sine", 1.0, 0.01, 0.1, 1e-4, "base-acceleration")
     with pytest.raises(ParameterError, match="frequencies: give at least one"):
         srs(record, [])
+
+
+def test_the_residual_of_an_undamped_primary_ends():
+    """C = 0: the primary's free vibration never decays, and the residual's reading had no end
+    (shock --C 0 hung); it reads RESIDUAL_PERIODS of the slowest term, and the SRS holds at
+    least the run's own maximax."""
+    from symimpact.forced.loads import shock_record
+    from symimpact.forced.shock_response import shock_response
+    from symimpact.model.system import ImpactSystem
+
+    system = ImpactSystem(M=1.0, K=1000.0, C=0.0, m=0.05, gap=1e3, contact="linear", k1=1e6)
+    pulse = shock_record("half-sine", 20 * G, 0.011, 0.011, 0.011 / 200, "base-acceleration")
+    t0 = time.monotonic()
+    out = shock_response(system, pulse, e=0.6, frequencies=[2.0, 5.0, 50.0])
+    assert time.monotonic() - t0 < 30.0
+    assert np.all(np.isfinite(out.baseline_srs)) and np.all(out.baseline_srs > 0)

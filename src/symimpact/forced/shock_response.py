@@ -82,6 +82,11 @@ def motion_srs(
     return out
 
 
+#: The residual of a motion that does not decay (an undamped primary or oscillator) is read
+#: over this many periods of its slowest term.
+RESIDUAL_PERIODS = 200
+
+
 def _poles(w: float, z: float) -> tuple[complex, complex]:
     """The roots of s² + 2ζωs + ω² (kept apart by 1e-9 of ω where they meet: ζ = 1)."""
     root = complex(z * z - 1.0) ** 0.5
@@ -119,12 +124,16 @@ def residual_maximax(r0: float, rd0: float, w: float, z: float, x0: float, v0: f
     h = 2.0 * math.pi / fastest / 256.0
     best, start, chunk = 0.0, 0.0, 4096
     size, rate = np.abs(coef), nu.real
+    # an undamped primary or oscillator (C = 0, ζ = 0) never decays: read RESIDUAL_PERIODS of the
+    # slowest term at most
+    slowest = min(min(abs(v.imag) for v in nu if abs(v.imag) > 0.0), min(w, wp))
+    horizon = RESIDUAL_PERIODS * 2.0 * math.pi / slowest
     while True:
         tau = start + h * np.arange(chunk)
         acc = (coef[None, :] * np.exp(tau[:, None] * nu[None, :])).sum(axis=1).real
         best = max(best, float(np.max(np.abs(acc))))
         start = tau[-1] + h
-        if float(np.sum(size * np.exp(rate * start))) < best or start * min(-rate.max(), w) > 1e3:
+        if float(np.sum(size * np.exp(rate * start))) < best or start > horizon:
             return best
 
 
