@@ -30,6 +30,7 @@ from contextlib import contextmanager
 from typing import Any
 
 import numba
+import numba.core.event
 import numpy as np
 from numba import njit, types
 
@@ -272,7 +273,7 @@ def _record(signum: int, frame: Any) -> None:
     _recorded.append(signum)
 
 
-class _Compiling:
+class _Compiling(numba.core.event.Listener):
     """numba's compile events: the depth of the compilations under way in the main thread."""
 
     def on_start(self, ev: Any) -> None:
@@ -284,13 +285,4 @@ class _Compiling:
             _compiling[0] = max(0, _compiling[0] - 1)
 
 
-def _listen() -> None:
-    from numba.core import event
-
-    class Listener(_Compiling, event.Listener):
-        pass
-
-    event.register("numba:compile", Listener())
-
-
-_listen()
+numba.core.event.register("numba:compile", _Compiling())

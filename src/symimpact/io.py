@@ -82,10 +82,6 @@ def input_text(path: object, what: str, limit: int = MAX_INPUT_BYTES) -> str:
         ) from None
 
 
-def _line_of(text: str, pos: int) -> int:
-    return text.count("\n", 0, pos) + 1
-
-
 def strict_json(text: str, what: str, source: str = "") -> object:
     """``text`` parsed as JSON, refusing what :func:`json.loads` lets pass silently: a key given
     twice in one object (JSON would keep the last; TOML refuses it), and nesting deeper than
@@ -148,7 +144,7 @@ def _duplicate_line(text: str, key: str) -> int:
         decoder.decode(text)
     except (ValueError, RecursionError):
         return 0
-    return _line_of(text, found[0]) if found else 0
+    return text.count("\n", 0, found[0]) + 1 if found else 0
 
 
 def output_target(path: str | os.PathLike, what: str) -> Path:

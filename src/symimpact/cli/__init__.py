@@ -121,10 +121,6 @@ def _join_negative_values(parser: argparse.ArgumentParser, argv: Sequence[str]) 
 EXIT_BAD_INPUT, EXIT_FAULT = 2, 3
 
 
-#: Held by whichever of the signal handler and the watcher thread ends the process first.
-_ENDING = __import__("threading").Lock()
-
-
 def _ending_on_signal(command: str):
     """A SIGTERM/SIGHUP (and, run as the program, SIGINT) handler: end the pool workers, say so
     in one line, exit 128 + N (130 for Ctrl-C: "interrupted").
@@ -138,9 +134,6 @@ def _ending_on_signal(command: str):
         import multiprocessing
         import os
         import signal
-
-        if not _ENDING.acquire(blocking=False):  # the watcher or the handler is ending it
-            return
 
         for child in multiprocessing.active_children():
             child.terminate()

@@ -401,10 +401,8 @@ def frequency_response(
         _embedded(found, system, forcing, e, failures, follow)
     out.coverage = _coverage(found, out.branches, system, forcing, e, multi.ws if multi else ())
     if multi is not None:  # the independent check: random frequencies, their landings traced?
-        check = MultiStart(system, forcing, e, band, workers=workers,
-                           ws=check_frequencies(band)).result()  # fmt: skip
-        out.coverage.check = _coverage(check, out.branches, system, forcing, e,
-                                       tuple(float(w) for w in check_frequencies(band)))  # fmt: skip
+        check = MultiStart(system, forcing, e, band, workers=workers, ws=check_frequencies(band))
+        out.coverage.check = _coverage(check.result(), out.branches, system, forcing, e, check.ws)
         out.coverage.seed = CHECK_SEED
     _drop_repeated_bifurcations(out.branches, 1e-6 if is_rigid(e) else 1e-5)
     out.baseline_peak = baseline_peak(system, forcing, band)
