@@ -537,6 +537,22 @@ def emit(ns, data: dict[str, Any] | list[Any], text: str) -> None:
         print(text)
 
 
+#: Prose lines of a command's text are wrapped to this many columns: an 80-column terminal with
+#: room, and the tutorial's code blocks, which fit 80 monospace characters in their 720 px column.
+TEXT_WIDTH = 72
+
+
+def wrapped(text: str, indent: str = "  ") -> str:
+    """``text`` as lines of at most :data:`TEXT_WIDTH` columns, the first indented by ``indent``
+    and the rest by two more spaces."""
+    import textwrap
+
+    return textwrap.fill(
+        text, TEXT_WIDTH, initial_indent=indent, subsequent_indent=indent + "  ",
+        break_on_hyphens=False, break_long_words=False,
+    )  # fmt: skip
+
+
 def jsonable(v: Any) -> Any:
     """``v`` with NumPy values as Python ones and non-finite floats as None (JSON null)."""
     import numpy as np

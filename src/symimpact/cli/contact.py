@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .common import add_output, emit
+from .common import add_output, emit, wrapped
 
 #: How each derived value is shown to a person: (label, unit, factor from SI, where it comes
 #: from in short; --json gives the full sentence).
@@ -81,20 +81,21 @@ def run(ns) -> None:
             tag = c.sources[name].split(":")[0].split(" at ")[0].split(" (")[0]
         lines.append(f"  {label:<21} {text:>10} {unit:<8} [{tag}]")
     for body in dict.fromkeys((c.sources["impactor_material"], c.sources["cavity_material"])):
-        lines.append(f"  {body.split(';')[0]}")
+        lines.append(wrapped(body.split(";")[0]))
     lines.append("  (typical values of these grades; --json: every source)")
     if "steel" in (c.sources["impactor_material"].split(":")[0],
                    c.sources["cavity_material"].split(":")[0]):  # fmt: skip
-        lines.append("  'steel' is AISI 1045: hardened bearing balls rebound more (e 0.8–0.95), "
-                     "give 'bearing steel' (52100) or 'hardened stainless steel' (440C)")  # fmt: skip
+        lines.append(wrapped("'steel' is AISI 1045: hardened bearing balls rebound more "
+                             "(e 0.8–0.95), give 'bearing steel' (52100) or 'hardened stainless "
+                             "steel' (440C)"))  # fmt: skip
     if ns.freq is not None:
         f = positive_float("freq", ns.freq, "Hz")
         ratio = 1.0 / (f * c.duration)
         if ratio > STIFF_RATIO:
-            lines.append(
+            lines.append(wrapped(
                 f"a forcing period is {ratio:.3g} contact durations: a compliant simulation "
-                f"would spend its steps in the contacts; use --contact rigid --e {c.e:.3g}"
-            )
+                f"would spend its steps in the contacts; use --contact rigid --e {c.e:.3g}", ""
+            ))  # fmt: skip
         out["period_over_duration"] = ratio
     emit(ns, out, "\n".join(lines))
 
