@@ -598,6 +598,28 @@ def write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
 SYSTEM_DEFAULTS = {flag[2:].replace("-", "_"): default for flag, _, default in SYSTEM_OPTIONS}
 
 
+def add_budget(p: Any) -> None:
+    """``--no-budget``: run a command whose estimate exceeds the budget."""
+    from ..forced.record_cost import MAX_SECONDS
+
+    p.add_argument(
+        "--no-budget", action="store_true",
+        help=f"run even when the estimate, timed on a piece of the first record before the run "
+        f"starts, exceeds {MAX_SECONDS / 3600:g} h (estimates from 10 s up are printed)",
+    )  # fmt: skip
+
+
+def announce(ns: argparse.Namespace, estimate: Any, name: str, also: str = "") -> None:
+    """Refuse ``estimate`` (a :class:`~symimpact.forced.record_cost.Estimate`) beyond the budget
+    unless --no-budget, naming ``name``; print it on stderr from ten seconds up, with ``also``
+    (the work it leaves out, in words)."""
+    from ..forced.record_cost import SAY_SECONDS, within_budget
+
+    within_budget(estimate, name, ns.no_budget)
+    if estimate.seconds >= SAY_SECONDS:
+        print(f"symimpact {ns.command}: {estimate.text()}{also}", file=sys.stderr, flush=True)
+
+
 def notice_first_compilation(command: str) -> None:
     """One line on a terminal before the first run compiles the simulation (10–20 s, then
     cached on disk), so that a person does not wait on a silent command; nothing when the

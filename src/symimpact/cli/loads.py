@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from .common import add_output, add_system, emit, system_from, write_csv
+from .common import add_budget, add_output, add_system, announce, emit, system_from, write_csv
 from .frf import contact_of
 
 G = 9.80665  # standard gravity [m/s²], for the text only (inputs go through pint)
@@ -41,6 +41,7 @@ def _common(p: Any) -> None:
                    "every frequency at its amplitude (a sweep's peak within 1e-4 of the exact "
                    "chirp's at the default; the lines alone had lost (πf·dt)²/3, 0.8 %% at the "
                    "top)")  # fmt: skip
+    add_budget(g)
 
 
 def _events(ns) -> str:
@@ -310,7 +311,13 @@ def run_random(ns) -> None:
 
     n = count("realisations", ns.realisations, 1, MAX_REALISATIONS)
     seed = count("seed", ns.seed, 0, 2**63 - 1)
+    from ..forced.random_response import ensemble_estimate
+
     as_map = any(v is not None for v in (ns.executor, ns.workers, ns.scheduler, ns.out))
+    announce(ns, ensemble_estimate(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
+                                   settle=ns.settle, kind=kind, segment=ns.segment,
+                                   welch=not as_map), "realisations",
+             ", of one core: the map shares it among its workers" if as_map else "")  # fmt: skip
     if as_map:
         from ..maps.ensemble import random_ensemble
 
@@ -396,6 +403,14 @@ def run_shock(ns) -> None:
         record = shock_record(ns.shape, _height(ns, kind, text), td, total, dt, kind)
     lo, hi = _srs_range(ns, fn)
     n = count("srs-points", ns.srs_points, 2, 10_000)
+    from ..forced.record_cost import record_estimate
+    from ..forced.shock_response import srs_oscillators
+
+    srs_oscillators(np.geomspace(lo, hi, n), ns.srs_zeta, record.dt)
+
+    # the record with the damper and without, and each SRS oscillator on both motions
+    estimate = record_estimate(system, record, e=e, marches=2 * n)
+    announce(ns, estimate, "record-file" if ns.record_file else "duration")
     out = shock_response(system, record, e=e, frequencies=np.geomspace(lo, hi, n),
                          zeta=ns.srs_zeta)  # fmt: skip
     if ns.csv:
@@ -444,6 +459,11 @@ def run_sweep(ns) -> None:
     f1, f2 = band_from("band", ns.band)
     # a sweep's length follows from its band and rate: --dt as given, or 20 samples a period
     dt = positive_float("dt", ns.dt, "s") if ns.dt else 1.0 / (2 * SAMPLES_PER_PERIOD * f2)
+    from ..forced.sweep_response import sweep_estimate
+
+    announce(ns, sweep_estimate(system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=e,
+                                law=ns.law, kind=kind), "rate",
+             "" if ns.no_steady else ", and then the steady curve")  # fmt: skip
     out = sweep_response(system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=e,
                          law=ns.law, kind=kind, steady=not ns.no_steady)  # fmt: skip
     if ns.csv:

@@ -20,6 +20,7 @@ gives the same records whatever the order in which realisations are run.
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -32,7 +33,8 @@ from ..model import checks
 from ..model.system import ImpactSystem
 from ..model.units import positive_float
 from .contact_law import restitution_or_law
-from .loads import random_record
+from .loads import Record, random_record
+from .record_cost import Estimate, record_estimate
 from .record_flight import primary_response
 from .record_response import damper_response
 from .simulation import CHATTER
@@ -148,6 +150,62 @@ def _interval(values: np.ndarray, ceiling: float | None = None) -> tuple[float, 
     return (lo, hi) if ceiling is None else (ceiling - hi, ceiling - lo)
 
 
+def realisation_record(
+    psd: float | Callable[[np.ndarray], np.ndarray],
+    band: tuple[Any, Any],
+    duration: float,
+    dt: float,
+    seed: int,
+    i: int,
+    *,
+    settle: float,
+    kind: str = "force",
+) -> Record:
+    """The load of realisation ``i``: ``settle`` [s] (to the sample at or after it) and
+    ``duration`` [s] of :func:`~symimpact.forced.loads.random_record`."""
+    n_settle = math.ceil(settle / dt - 1e-9)
+    return random_record(psd, band, (n_settle + round(duration / dt)) * dt, dt,
+                         realisation_seed(seed, i), kind)  # fmt: skip
+
+
+def ensemble_estimate(
+    system: ImpactSystem,
+    psd: float | Callable[[np.ndarray], np.ndarray],
+    band: tuple[Any, Any],
+    duration: float,
+    dt: float,
+    *,
+    e: Any,
+    realisations: int,
+    seed: int = 0,
+    settle: Any = None,
+    kind: str = "force",
+    segment: Any = None,
+    welch: bool = True,
+    chatter: Any = CHATTER,
+) -> Estimate:
+    """The time an ensemble of ``realisations`` takes on this machine, from a piece of the
+    first realisation (:func:`~symimpact.forced.record_cost.record_estimate`), with the time
+    of drawing its record and of its statistics (``welch``: its PSD too); the arguments those of
+    :func:`random_statistics`."""
+    settle = (
+        default_settle(system)
+        if settle is None
+        else checks.bounded("settle", settle, 0.0, unit="s")
+    )
+    n = checks.whole_number("realisations", realisations, 1, MAX_REALISATIONS)
+    segment = None if segment is None else positive_float("segment", segment, "s")
+    start = time.perf_counter()
+    record = realisation_record(psd, band, duration, dt, seed, 0, settle=settle, kind=kind)
+    drawn = time.perf_counter() - start
+    runs = record_estimate(system, record, n, e=restitution_or_law(e), chatter=chatter)
+    # the statistics of a realisation, timed on the primary's response (as long as the damper's)
+    alone = primary_response(system, record)
+    start = time.perf_counter()
+    _statistics(alone, alone, np.empty(0), settle, dt, duration, segment, welch)
+    return runs.plus(n * (drawn + time.perf_counter() - start))
+
+
 def realisation(
     system: ImpactSystem,
     psd: float | Callable[[np.ndarray], np.ndarray],
@@ -166,19 +224,26 @@ def realisation(
 ) -> dict[str, Any]:
     """One realisation: {"rms": {key: value}, "baseline": {key: value}, "impacts": n,
     "psd": (f, with, without)} over the record after ``settle`` (no "psd" without ``welch``)."""
-    n_settle = math.ceil(settle / dt - 1e-9)  # the settling time, to the sample at or after it
-    record = random_record(psd, band, (n_settle + round(duration / dt)) * dt, dt,
-                           realisation_seed(seed, i), kind)  # fmt: skip
+    record = realisation_record(psd, band, duration, dt, seed, i, settle=settle, kind=kind)
     ours = damper_response(system, record, e=e, chatter=chatter)
     alone = primary_response(system, record)
-    keep = np.arange(len(record.values)) >= n_settle
+    return _statistics(ours, alone, ours.impact_times, settle, dt, duration, segment, welch)
+
+
+def _statistics(
+    ours: Any, alone: Any, impact_times: np.ndarray, settle: float, dt: float, duration: float,
+    segment: float | None, welch: bool,
+) -> dict[str, Any]:  # fmt: skip
+    """:func:`realisation`'s dict from the responses with the damper and without it."""
+    n_settle = math.ceil(settle / dt - 1e-9)  # the settling time, to the sample at or after it
+    keep = np.arange(len(ours.displacement)) >= n_settle
     out: dict[str, Any] = {"rms": {}, "baseline": {}, "peak": {}, "baseline_peak": {}}
     for key in KEYS:
         out["rms"][key] = float(np.sqrt(np.mean(getattr(ours, key)[keep] ** 2)))
         out["peak"][key] = float(np.max(np.abs(getattr(ours, key)[keep])))
         out["baseline_peak"][key] = float(np.max(np.abs(getattr(alone, key)[keep])))
         out["baseline"][key] = float(np.sqrt(np.mean(getattr(alone, key)[keep] ** 2)))
-    out["impacts"] = int(np.sum(ours.impact_times >= n_settle * dt))
+    out["impacts"] = int(np.sum(impact_times >= n_settle * dt))
     if not welch:
         return out
     nper = max(8, round((segment or duration / 8) / dt))

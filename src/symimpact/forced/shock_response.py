@@ -44,16 +44,10 @@ def base_motion(record: Record) -> tuple[np.ndarray, np.ndarray]:
     return np.concatenate(([0.0], np.cumsum(dx))), v
 
 
-def motion_srs(
-    displacement: np.ndarray, velocity: np.ndarray, dt: float, frequencies: Any,
-    zeta: Any = SRS_ZETA, after: tuple[float, float, float, float] | None = None,
-) -> np.ndarray:  # fmt: skip
-    """Maximax absolute acceleration [m/s²] of oscillators at ``frequencies`` [Hz] (damping
-    ratio ``zeta``) on a base moving with ``displacement`` [m] and ``velocity`` [m/s] sampled
-    every ``dt`` [s], from relative rest (module docstring; Eq. F8 with the load
-    ω²x_b + 2ζωẋ_b).  ``after`` = (x, ẋ, ωp, ζp): beyond the samples the base vibrates freely
-    from x, ẋ (relative to a base that moves on at constant speed, or rests) with ωp, ζp, and
-    the residual response then is read too (:func:`residual_maximax`)."""
+def srs_oscillators(frequencies: Any, zeta: Any, dt: float) -> tuple[np.ndarray, float]:
+    """The SRS's ``frequencies`` [Hz] and ``zeta``, checked: at least one, each above 0 and at
+    most :data:`SRS_TOP`/(2π·dt) (a peak read at samples every ``dt`` [s] within 1 %), and
+    0 ≤ ζ < 1."""
     f = checks.numbers("frequencies", frequencies)
     if f.size == 0:
         raise ParameterError("frequencies", "give at least one oscillator frequency")
@@ -69,6 +63,20 @@ def motion_srs(
             f"reach {np.max(f):g} Hz, where samples every {dt:g} s miss a peak by more than 1 %: "
             f"at most {top:.4g} Hz, or a finer record",
         )
+    return f, z
+
+
+def motion_srs(
+    displacement: np.ndarray, velocity: np.ndarray, dt: float, frequencies: Any,
+    zeta: Any = SRS_ZETA, after: tuple[float, float, float, float] | None = None,
+) -> np.ndarray:  # fmt: skip
+    """Maximax absolute acceleration [m/s²] of oscillators at ``frequencies`` [Hz] (damping
+    ratio ``zeta``) on a base moving with ``displacement`` [m] and ``velocity`` [m/s] sampled
+    every ``dt`` [s], from relative rest (module docstring; Eq. F8 with the load
+    ω²x_b + 2ζωẋ_b).  ``after`` = (x, ẋ, ωp, ζp): beyond the samples the base vibrates freely
+    from x, ẋ (relative to a base that moves on at constant speed, or rests) with ωp, ζp, and
+    the residual response then is read too (:func:`residual_maximax`)."""
+    f, z = srs_oscillators(frequencies, zeta, dt)
     xb = np.ascontiguousarray(displacement, dtype=float)
     vb = np.ascontiguousarray(velocity, dtype=float)
     out = np.empty(len(f))
@@ -183,6 +191,7 @@ def shock_response(
     sample, in closed form: :func:`residual_maximax`; exact once the damper no longer
     impacts, which a record followed by enough rest, :func:`~.loads.followed_by_rest`, gives).
     After the last sample the load is 0."""
+    srs_oscillators(frequencies, zeta, record.dt)  # refused before the runs, not after
     ours = damper_response(system, record, e=e, chatter=chatter)
     alone = primary_response(system, record)
     if record.kind == "base-acceleration":

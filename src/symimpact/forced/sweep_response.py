@@ -9,17 +9,19 @@ response is exact for it (Eq. F8 on each interval, Eq. F2 at each impact).
 
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass
-from itertools import pairwise
 from typing import Any
 
 import numpy as np
 
 from ..model.system import ImpactSystem
 from ..model.units import positive_float
+from .contact_law import restitution_or_law
 from .forcing import Forcing
 from .frf import frequency_response
 from .loads import sweep_frequency, sweep_record
+from .record_cost import PIECE_SAMPLES, Estimate, record_estimate
 from .record_flight import primary_response
 from .record_response import damper_response
 from .response_curve import response_curve
@@ -47,46 +49,63 @@ def envelope(
         if i >= n:
             break
         starts.append(i)
-    hits = np.sort(np.asarray(impacts, dtype=float)) if impacts is not None else np.zeros(0)
-    centres, peaks = [], []
-    for a, b in pairwise(starts):
-        centres.append(frequency[(a + b) // 2])
-        i = a + int(np.argmax(np.abs(displacement[a : b + 1])))
-        peak = abs(float(displacement[i]))
-        if velocity is not None:
-            for j in (i - 1, i):
-                if 0 <= j < n - 1 and not _holds_impact(hits, j * dt, (j + 1) * dt):
-                    peak = max(peak, _hermite_peak(displacement[j], velocity[j],
-                                                   displacement[j + 1], velocity[j + 1], dt))  # fmt: skip
-        peaks.append(peak)
-    return np.array(centres), np.array(peaks)
+    if len(starts) < 2:
+        return np.zeros(0), np.zeros(0)
+    s = np.array(starts)
+    a, b = s[:-1], s[1:]
+    ax = np.abs(np.asarray(displacement, dtype=float))
+    # the largest |x| over [a, b) of each period (the last period's slice ends at its b) …
+    inner = np.maximum.reduceat(ax[: s[-1] + 1], a)
+    # … and its first sample: the first j in [a, b) that holds it, or b where |x(b)| is larger
+    j = np.arange(s[-1])
+    period = np.searchsorted(s, j, side="right") - 1
+    first = np.full(len(a), -1)
+    holds = np.flatnonzero(ax[j] == inner[period])
+    seen, where = np.unique(period[holds], return_index=True)
+    first[seen] = holds[where]
+    later = ax[b] > inner
+    i = np.where(later | (first < 0), b, first)
+    peak = np.maximum(inner, ax[b])
+    if velocity is not None:
+        v = np.asarray(velocity, dtype=float)
+        x = np.asarray(displacement, dtype=float)
+        hits = np.sort(np.asarray(impacts, dtype=float)) if impacts is not None else np.zeros(0)
+        for k in (i - 1, i):  # the intervals beside the largest sample
+            ok = (k >= 0) & (k < n - 1)
+            k = np.where(ok, k, 0)
+            t0, t1 = k * dt, (k + 1) * dt
+            if len(hits):  # not across an interval that holds an impact
+                h = np.searchsorted(hits, t0)
+                ok &= ~((h < len(hits)) & (hits[np.minimum(h, len(hits) - 1)] <= t1))
+            cubic = _hermite_peaks(x[k], v[k], x[k + 1], v[k + 1], dt)
+            peak = np.where(ok, np.maximum(peak, cubic), peak)
+    return np.asarray(frequency)[(a + b) // 2], peak
 
 
-def _holds_impact(hits: np.ndarray, t0: float, t1: float) -> bool:
-    k = np.searchsorted(hits, t0)
-    return bool(k < len(hits) and hits[k] <= t1)
-
-
-def _hermite_peak(x0: float, v0: float, x1: float, v1: float, h: float) -> float:
-    """The largest abs of the cubic Hermite interpolant through (x0, ẋ0) and (x1, ẋ1) over an
+def _hermite_peaks(
+    x0: np.ndarray, v0: np.ndarray, x1: np.ndarray, v1: np.ndarray, h: float
+) -> np.ndarray:
+    """The largest abs of each cubic Hermite interpolant through (x0, ẋ0) and (x1, ẋ1) over an
     interval of h [s]: at its ends, and where its derivative, a quadratic in u = s/h, is 0."""
     # p(u) = x0 + h v0 u + c2 u² + c3 u³
     c2 = 3.0 * (x1 - x0) - h * (2.0 * v0 + v1)
     c3 = 2.0 * (x0 - x1) + h * (v0 + v1)
-    best = max(abs(x0), abs(x1))
+    best = np.maximum(np.abs(x0), np.abs(x1))
     qa, qb, qc = 3.0 * c3, 2.0 * c2, h * v0
-    if qa == 0.0:
-        roots = [-qc / qb] if qb != 0.0 else []
-    else:
+    with np.errstate(divide="ignore", invalid="ignore"):
         disc = qb * qb - 4.0 * qa * qc
-        if disc < 0.0:
-            return best
-        r = disc**0.5
-        q = -0.5 * (qb + (r if qb >= 0.0 else -r))
-        roots = [q / qa] + ([qc / q] if q != 0.0 else [])
-    for u in roots:
-        if 0.0 < u < 1.0:
-            best = max(best, abs(x0 + u * (h * v0 + u * (c2 + u * c3))))
+        r = np.sqrt(np.maximum(disc, 0.0))
+        q = -0.5 * (qb + np.where(qb >= 0.0, r, -r))
+        quadratic = qa != 0.0
+        roots = (
+            np.where(quadratic & (disc >= 0.0), q / qa, np.where(qb != 0.0, -qc / qb, np.nan)),
+            np.where(quadratic & (disc >= 0.0) & (q != 0.0), qc / q, np.nan),
+        )
+        for u in roots:
+            inside = (u > 0.0) & (u < 1.0)
+            u = np.where(inside, u, 0.0)
+            value = np.abs(x0 + u * (h * v0 + u * (c2 + u * c3)))
+            best = np.where(inside, np.maximum(best, value), best)
     return best
 
 
@@ -197,6 +216,32 @@ class SweepResult:
                 ],
             }
         return out
+
+
+def sweep_estimate(
+    system: ImpactSystem, amplitude: Any, f_low: Any, f_high: Any, rate: Any, dt: Any, *,
+    e: Any, law: str = "linear", kind: str = "force", chatter: Any = CHATTER,
+) -> Estimate:  # fmt: skip
+    """The time of :func:`sweep_response`'s two sweeps (not its steady curve) on this machine:
+    pieces of the sweep up from its start and from where it crosses the primary's natural
+    frequency (:func:`~symimpact.forced.record_cost.record_estimate`), the time of drawing it
+    and of its envelopes."""
+    f_low = positive_float("f_low", f_low, "Hz")
+    f_high = positive_float("f_high", f_high, "Hz")
+    rate = positive_float("rate", rate)
+    start = time.perf_counter()
+    record = sweep_record(amplitude, f_low, f_high, rate, dt, law, kind)
+    freq = sweep_frequency(record.times, f_low, f_high, rate, law)
+    drawn = time.perf_counter() - start
+    # pieces from the start and from half a piece before the primary's natural frequency
+    crossing = int(np.searchsorted(freq, system.omega_n / (2.0 * np.pi)))
+    runs = record_estimate(system, record, 2, e=restitution_or_law(e), chatter=chatter,
+                           starts=(0, crossing - PIECE_SAMPLES // 2))  # fmt: skip
+    # the envelopes, timed on the primary's response (as long as the damper's)
+    alone = primary_response(system, record)
+    start = time.perf_counter()
+    envelope(alone.displacement, freq, record.dt, alone.velocity, np.zeros(0))
+    return runs.plus(2 * drawn + 4 * (time.perf_counter() - start))
 
 
 def sweep_response(

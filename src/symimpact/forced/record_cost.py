@@ -1,0 +1,131 @@
+"""What a run under a sampled load will cost on this machine, measured before it starts.
+
+A record's run costs about the same for each of its samples (Eq. F8 on each interval, plus the
+impacts or contacts in it), so the time of a piece of the first record, run with the damper
+and without it as the command will run them, times the samples of the whole command, is its
+estimate.  A piece is :data:`PIECE_SAMPLES` samples, or fewer where they take
+:data:`PIECE_SECONDS`, from rest: the record's first (a random record is stationary), and for a
+sweep also those where it crosses the primary's natural frequency (where its impacts crowd).
+The engine is compiled before the piece is timed.  A command whose estimate exceeds
+:data:`MAX_SECONDS` is refused before it starts unless its budget is lifted (``--no-budget``).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, replace
+from typing import Any
+
+from ..errors import ParameterError
+from ..model.system import ImpactSystem
+from .loads import Record
+from .record_flight import primary_response
+from .record_response import damper_response
+from .simulation import CHATTER
+
+#: The piece timed: the first samples of the first record.
+PIECE_SAMPLES = 20_000
+#: ... or as many of them as take this long [s] (a record whose intervals hold many impacts).
+PIECE_SECONDS = 0.2
+#: The longest a command under a sampled load runs without ``--no-budget``, by its estimate [s].
+MAX_SECONDS = 3600.0
+#: Estimates from this many seconds up are printed before the run starts.
+SAY_SECONDS = 10.0
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """``seconds`` [s] of one core for ``samples`` samples in all (records run with the damper
+    and without it), timed on ``piece`` samples of the first record; ``bound``: the costliest
+    of several pieces set it (the estimate errs long)."""
+
+    seconds: float
+    samples: int
+    piece: int
+    bound: bool = False
+
+    def plus(self, seconds: float) -> Estimate:
+        """The estimate with ``seconds`` [s] more (the work around the runs, timed apart)."""
+        return replace(self, seconds=self.seconds + seconds)
+
+    def text(self) -> str:
+        """ "about 3.2 min on this machine (4.1e+06 samples of records, timed on 20,000)"."""
+        return (
+            f"{'up to ' if self.bound else ''}about {duration_text(self.seconds)} on this "
+            f"machine ({self.samples:.3g} samples "
+            f"of records, timed on {self.piece:,})"
+        )
+
+
+def duration_text(seconds: float) -> str:
+    """``seconds`` for people: "40 s", "3.2 min", "5.1 h", "2.4 days"."""
+    if seconds >= 2 * 86400.0:
+        return f"{seconds / 86400.0:.2g} days"
+    if seconds >= 3600.0:
+        return f"{seconds / 3600.0:.2g} h"
+    if seconds >= 60.0:
+        return f"{seconds / 60.0:.2g} min"
+    return f"{seconds:.2g} s"
+
+
+def _piece_times(
+    system: ImpactSystem, record: Record, first: int, e: Any, chatter: Any
+) -> tuple[float, float, int]:
+    """(seconds with the damper and without, seconds without, intervals) of the piece of
+    ``record`` from sample ``first``: :data:`PIECE_SAMPLES` samples, or fewer where they take
+    :data:`PIECE_SECONDS` (pieces of 16, then 2n + 13 samples, until one does)."""
+    last = min(len(record.values) - first, PIECE_SAMPLES + 1)
+    n = min(last, 17)
+    while True:
+        piece = Record(record.values[first : first + n], record.dt, record.kind)
+        start = time.perf_counter()
+        damper_response(system, piece, e=e, chatter=chatter)
+        middle = time.perf_counter()
+        primary_response(system, piece)
+        end = time.perf_counter()
+        if n == last or end - start >= PIECE_SECONDS:
+            return end - start, end - middle, max(1, n - 1)
+        n = min(last, 2 * n + 13)
+
+
+def record_estimate(
+    system: ImpactSystem,
+    record: Record,
+    runs: int = 1,
+    *,
+    e: Any,
+    marches: int = 0,
+    chatter: Any = CHATTER,
+    starts: tuple[int, ...] = (0,),
+) -> Estimate:
+    """The time of ``runs`` runs of records as long as ``record`` — each with the damper
+    (:func:`damper_response`, rigid impacts ``e`` or a compliant law) and without it
+    (:func:`primary_response`), and ``marches`` more marches of a linear oscillator over it (an
+    SRS's oscillators) — from the time of pieces of ``record`` on this machine, each from rest
+    at one of the samples ``starts``: the costliest piece's time a sample, times the samples
+    (an estimate that errs long where a record's impacts crowd into one part of it)."""
+    piece = Record(record.values[:3], record.dt, record.kind)
+    damper_response(system, piece, e=e, chatter=chatter)  # compiles the engines, untimed
+    primary_response(system, piece)
+    per_run = per_march = 0.0
+    timed = 0
+    firsts = sorted({min(max(0, int(k)), len(record.values) - 2) for k in starts})
+    for first in firsts:
+        both, alone, intervals = _piece_times(system, record, first, e, chatter)
+        per_run, per_march = max(per_run, both / intervals), max(per_march, alone / intervals)
+        timed += intervals
+    samples = len(record.values) - 1
+    seconds = runs * samples * (per_run + marches * per_march)
+    return Estimate(seconds, int(runs * len(record.values)), timed, len(firsts) > 1)
+
+
+def within_budget(estimate: Estimate, name: str, lifted: bool = False) -> Estimate:
+    """``estimate``, or a :class:`ParameterError` naming ``name`` (the input that sets the
+    work) when it exceeds :data:`MAX_SECONDS` and the budget is not ``lifted``."""
+    if estimate.seconds > MAX_SECONDS and not lifted:
+        raise ParameterError(
+            name,
+            f"gives a run of {estimate.text()}, beyond the budget of "
+            f"{duration_text(MAX_SECONDS)}: give less work, or --no-budget to run it",
+        )
+    return estimate
