@@ -22,6 +22,7 @@ from . import (
     contact_duration_kernel,
     coverage,
     design_map,
+    estimates,
     frc,
     map_throughput,
     million_map,
@@ -63,6 +64,10 @@ SUITE = (
     (
         "13. the curves' coverage of the brute force's motions on the 12 Hz and report systems",
         coverage.main,
+    ),
+    (
+        "14. the sampled loads' estimates, printed before they run, against their runs",
+        estimates.main,
     ),
 )
 

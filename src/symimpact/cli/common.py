@@ -616,7 +616,7 @@ def announce(ns: argparse.Namespace, estimate: Any, name: str, also: str = "") -
     from ..forced.record_cost import SAY_SECONDS, within_budget
 
     within_budget(estimate, name, ns.no_budget)
-    if estimate.seconds >= SAY_SECONDS:
+    if estimate.high >= SAY_SECONDS:
         print(f"symimpact {ns.command}: {estimate.text()}{also}", file=sys.stderr, flush=True)
 
 

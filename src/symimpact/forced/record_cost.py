@@ -5,7 +5,8 @@ impacts or contacts in it), so the time of a piece of the first record, run with
 and without it as the command will run them, times the samples of the whole command, is its
 estimate.  A piece is :data:`PIECE_SAMPLES` samples, or fewer where they take
 :data:`PIECE_SECONDS`, from rest: the record's first (a random record is stationary), and for a
-sweep also those where it crosses the primary's natural frequency (where its impacts crowd).
+sweep also those where it crosses the primary's natural frequency, where its impacts crowd: the
+estimate is then a span, from the cheaper piece's rate to the costlier's.
 The engine is compiled before the piece is timed.  A command whose estimate exceeds
 :data:`MAX_SECONDS` is refused before it starts unless its budget is lifted (``--no-budget``).
 """
@@ -36,24 +37,27 @@ SAY_SECONDS = 10.0
 @dataclass(frozen=True)
 class Estimate:
     """``seconds`` [s] of one core for ``samples`` samples in all (records run with the damper
-    and without it), timed on ``piece`` samples of the first record; ``bound``: the costliest
-    of several pieces set it (the estimate errs long)."""
+    and without it), timed on ``piece`` samples of the first record; ``high`` [s]: the same
+    at the costliest piece's rate where several pieces were timed (a sweep's impacts crowd near
+    the primary's natural frequency: the run takes between the two), else ``seconds``."""
 
     seconds: float
     samples: int
     piece: int
-    bound: bool = False
+    high: float
 
     def plus(self, seconds: float) -> Estimate:
         """The estimate with ``seconds`` [s] more (the work around the runs, timed apart)."""
-        return replace(self, seconds=self.seconds + seconds)
+        return replace(self, seconds=self.seconds + seconds, high=self.high + seconds)
 
     def text(self) -> str:
-        """ "about 3.2 min on this machine (4.1e+06 samples of records, timed on 20,000)"."""
+        """ "about 3.2 min on this machine (4.1e+06 samples of records, timed on 20,000)", or
+        "about 3 s to 26 s …" where the pieces differ."""
+        low, high = duration_text(self.seconds), duration_text(self.high)
+        span = low if low == high else f"{low} to {high}"
         return (
-            f"{'up to ' if self.bound else ''}about {duration_text(self.seconds)} on this "
-            f"machine ({self.samples:.3g} samples "
-            f"of records, timed on {self.piece:,})"
+            f"about {span} on this machine ({self.samples:.3g} samples of records, timed on "
+            f"{self.piece:,})"
         )
 
 
@@ -102,26 +106,24 @@ def record_estimate(
     (:func:`damper_response`, rigid impacts ``e`` or a compliant law) and without it
     (:func:`primary_response`), and ``marches`` more marches of a linear oscillator over it (an
     SRS's oscillators) — from the time of pieces of ``record`` on this machine, each from rest
-    at one of the samples ``starts``: the costliest piece's time a sample, times the samples
-    (an estimate that errs long where a record's impacts crowd into one part of it)."""
+    at one of the samples ``starts``: the cheapest and the costliest piece's time a sample,
+    times the samples (``seconds`` and ``high``)."""
     piece = Record(record.values[:3], record.dt, record.kind)
     damper_response(system, piece, e=e, chatter=chatter)  # compiles the engines, untimed
     primary_response(system, piece)
-    per_run = per_march = 0.0
-    timed = 0
-    firsts = sorted({min(max(0, int(k)), len(record.values) - 2) for k in starts})
-    for first in firsts:
+    rates, timed = [], 0
+    for first in sorted({min(max(0, int(k)), len(record.values) - 2) for k in starts}):
         both, alone, intervals = _piece_times(system, record, first, e, chatter)
-        per_run, per_march = max(per_run, both / intervals), max(per_march, alone / intervals)
+        rates.append((both + marches * alone) / intervals)  # seconds a sample
         timed += intervals
-    samples = len(record.values) - 1
-    seconds = runs * samples * (per_run + marches * per_march)
-    return Estimate(seconds, int(runs * len(record.values)), timed, len(firsts) > 1)
+    work = runs * (len(record.values) - 1)
+    return Estimate(work * min(rates), int(runs * len(record.values)), timed, work * max(rates))
 
 
 def within_budget(estimate: Estimate, name: str, lifted: bool = False) -> Estimate:
     """``estimate``, or a :class:`ParameterError` naming ``name`` (the input that sets the
-    work) when it exceeds :data:`MAX_SECONDS` and the budget is not ``lifted``."""
+    work) when it exceeds :data:`MAX_SECONDS` (its lower figure, where it has two) and the
+    budget is not ``lifted``."""
     if estimate.seconds > MAX_SECONDS and not lifted:
         raise ParameterError(
             name,
