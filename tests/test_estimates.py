@@ -21,8 +21,8 @@ from itertools import pairwise
 import numpy as np
 import pytest
 
+from symimpact import budgets
 from symimpact.cli import main
-from symimpact.forced import record_cost
 from symimpact.forced.record_cost import duration_text
 from symimpact.forced.sweep_response import envelope
 
@@ -41,8 +41,8 @@ def test_an_ensemble_beyond_the_budget_is_refused_in_one_line(capsys):
 
 
 def test_no_budget_lifts_the_budget_and_the_estimate_is_printed(capsys, monkeypatch):
-    monkeypatch.setattr(record_cost, "MAX_SECONDS", 1e-9)
-    monkeypatch.setattr(record_cost, "SAY_SECONDS", 0.0)
+    monkeypatch.setattr(budgets, "MAX_SECONDS", 1e-9)
+    monkeypatch.setattr(budgets, "SAY_SECONDS", 0.0)
     args = [*RANDOM, "--realisations", "2", "--duration", "20 s"]
     assert main(args) == 2
     assert "beyond the budget" in capsys.readouterr().err

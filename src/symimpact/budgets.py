@@ -34,6 +34,12 @@ SHOOTING_EVALUATIONS_PER_PERIOD = 2_000_000
 MAX_ITER = 30
 #: Continuation points of one branch in one direction.
 MAX_POINTS = 2000
+#: The longest a command under a sampled load (random, shock, sweep-sine) runs without
+#: ``--no-budget``, by the estimate it makes before it starts [s]
+#: (:mod:`symimpact.forced.record_cost`).
+MAX_SECONDS = 3600.0
+#: Estimates from this many seconds up are printed before the run starts.
+SAY_SECONDS = 10.0
 
 
 def text() -> str:

@@ -600,7 +600,7 @@ SYSTEM_DEFAULTS = {flag[2:].replace("-", "_"): default for flag, _, default in S
 
 def add_budget(p: Any) -> None:
     """``--no-budget``: run a command whose estimate exceeds the budget."""
-    from ..forced.record_cost import MAX_SECONDS
+    from ..budgets import MAX_SECONDS
 
     p.add_argument(
         "--no-budget", action="store_true",
@@ -613,7 +613,8 @@ def announce(ns: argparse.Namespace, estimate: Any, name: str, also: str = "") -
     """Refuse ``estimate`` (a :class:`~symimpact.forced.record_cost.Estimate`) beyond the budget
     unless --no-budget, naming ``name``; print it on stderr from ten seconds up, with ``also``
     (the work it leaves out, in words)."""
-    from ..forced.record_cost import SAY_SECONDS, within_budget
+    from ..budgets import SAY_SECONDS
+    from ..forced.record_cost import within_budget
 
     within_budget(estimate, name, ns.no_budget)
     if estimate.high >= SAY_SECONDS:

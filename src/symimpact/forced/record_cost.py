@@ -8,7 +8,7 @@ estimate.  A piece is :data:`PIECE_SAMPLES` samples, or fewer where they take
 sweep also those where it crosses the primary's natural frequency, where its impacts crowd: the
 estimate is then a span, from the cheaper piece's rate to the costlier's.
 The engine is compiled before the piece is timed.  A command whose estimate exceeds
-:data:`MAX_SECONDS` is refused before it starts unless its budget is lifted (``--no-budget``).
+:data:`symimpact.budgets.MAX_SECONDS` is refused before it starts unless its budget is lifted (``--no-budget``).
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ import time
 from dataclasses import dataclass, replace
 from typing import Any
 
+from .. import budgets
 from ..errors import ParameterError
 from ..model.system import ImpactSystem
 from .loads import Record
@@ -28,10 +29,6 @@ from .simulation import CHATTER
 PIECE_SAMPLES = 20_000
 #: ... or as many of them as take this long [s] (a record whose intervals hold many impacts).
 PIECE_SECONDS = 0.2
-#: The longest a command under a sampled load runs without ``--no-budget``, by its estimate [s].
-MAX_SECONDS = 3600.0
-#: Estimates from this many seconds up are printed before the run starts.
-SAY_SECONDS = 10.0
 
 
 @dataclass(frozen=True)
@@ -122,12 +119,12 @@ def record_estimate(
 
 def within_budget(estimate: Estimate, name: str, lifted: bool = False) -> Estimate:
     """``estimate``, or a :class:`ParameterError` naming ``name`` (the input that sets the
-    work) when it exceeds :data:`MAX_SECONDS` (its lower figure, where it has two) and the
+    work) when it exceeds :data:`symimpact.budgets.MAX_SECONDS` (its lower figure, where it has two) and the
     budget is not ``lifted``."""
-    if estimate.seconds > MAX_SECONDS and not lifted:
+    if estimate.seconds > budgets.MAX_SECONDS and not lifted:
         raise ParameterError(
             name,
             f"gives a run of {estimate.text()}, beyond the budget of "
-            f"{duration_text(MAX_SECONDS)}: give less work, or --no-budget to run it",
+            f"{duration_text(budgets.MAX_SECONDS)}: give less work, or --no-budget to run it",
         )
     return estimate
