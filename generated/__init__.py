@@ -7,25 +7,6 @@ Differences between the paper's printed equations and the derivation are listed 
 ``errata.md`` beside this file; kernels ending in ``_printed`` reproduce the printed form.
 """
 
-from . import (
-    ritz,
-    contact_fits,
-    harmonic_balance,
-    lindstedt,
-    multiple_scales,
-    closed_forms,
-    free_flight,
-    forced_flight,
-    rigid_impact,
-    periodic_orbit,
-    hunt_crossley,
-    slow_flow,
-    hertz_contact,
-    beam_modes,
-    modal_structure,
-    sampled_load,
-)
-
 __all__ = [
     "ritz",
     "contact_fits",
@@ -44,3 +25,19 @@ __all__ = [
     "modal_structure",
     "sampled_load",
 ]
+
+
+def __getattr__(name: str):
+    """Each step's module on first use (``symimpact.generated.ritz``): a command imports only
+    the kernels it runs, not all of them at start-up."""
+    if name not in __all__:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    import importlib
+
+    module = importlib.import_module(f"{__name__}.{name}")
+    globals()[name] = module
+    return module
+
+
+def __dir__() -> list[str]:
+    return sorted(list(globals()) + __all__)

@@ -8,12 +8,13 @@ from __future__ import annotations
 import math
 import sys
 from collections.abc import Callable
-from typing import Any
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from .common import add_budget, add_output, add_system, announce, emit, system_from, write_csv
 from .frf import contact_of
+
+if TYPE_CHECKING:
+    import numpy as np
 
 G = 9.80665  # standard gravity [m/s²], for the text only (inputs go through pint)
 
@@ -240,6 +241,8 @@ def count(name: str, text: str, low: int, high: int) -> int:
 
 def psd_table(path: str) -> tuple[Callable[[np.ndarray], np.ndarray], str]:
     """(function of f [Hz] → PSD [SI], kind) from a CSV table (see ``--psd-file``)."""
+    import numpy as np
+
     f, s, kind = _psd_file(path)
     return (lambda x: np.interp(x, f, s, left=0.0, right=0.0)), kind
 
@@ -251,6 +254,8 @@ def psd_points(path: str) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _psd_file(path: str):
+    import numpy as np
+
     from ..errors import ParameterError
     from ..forced.loads import unit_columns
     from ..model.units import ACCELERATION_PSD, si_float
@@ -365,6 +370,8 @@ def run_random(ns) -> None:
 
 def run_shock(ns) -> None:
     """``symimpact shock``."""
+    import numpy as np
+
     from ..forced.loads import shock_record
     from ..forced.shock_response import shock_response
     from ..model.units import positive_float

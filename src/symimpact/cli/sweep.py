@@ -100,7 +100,7 @@ def add_parser(sub: Any) -> None:
 
 
 def _sweepable() -> tuple[str, ...]:
-    from ..maps import SWEEPABLE
+    from ..model.names import SWEEPABLE
 
     return SWEEPABLE
 

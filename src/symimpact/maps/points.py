@@ -16,12 +16,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
+from ..model.names import SWEEPABLE
 from ..model.units import SI_UNITS, si_float, split_quantity, units_alike
-
-INITIAL = ("x0", "xdot0", "y0", "ydot0", "t_end")
-SYSTEM_PARAMETERS = ("M", "K", "C", "zeta", "m", "gap", "a", "b", "k_hz", "k1", "c1")
-#: Every input a map can sweep: initial conditions, system parameters and the mass ratio m/M.
-SWEEPABLE = INITIAL + SYSTEM_PARAMETERS + ("mass_ratio",)
 
 
 def parse_range(name: str, text: str) -> np.ndarray:

@@ -11,8 +11,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
+from ..model.names import INITIAL
 from ..model.system import ImpactSystem
-from .points import INITIAL
 
 #: Output columns of a map row, in table order (after ``run`` and the swept inputs).
 OUTPUTS = (

@@ -15,8 +15,6 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from ..errors import ParameterError
 
 #: SI unit of every named parameter (what a plain number means).
@@ -76,8 +74,6 @@ SI_UNITS: dict[str, str] = {
 #: steel) and keeps the closed forms, whose terms reach the 8th power of a parameter, clear of
 #: overflow and underflow.
 MAGNITUDE = (1e-30, 1e30)
-#: Types read as a plain number without NumPy (bool is not one: it is refused below).
-_PLAIN = (float, int, np.float64)
 
 
 @lru_cache(maxsize=1)
@@ -374,6 +370,8 @@ def _unit_to_si(name: str, text: str, number: float, unit_text: str, unit: str) 
 def _to_si(name: str, q: Any, unit: str) -> Any:
     """A pint quantity (a number or an array with units) in the SI ``unit``, multiplied in
     decimal like :func:`_unit_to_si`."""
+    import numpy as np
+
     kind, info = _factor(str(q.units), unit)
     if kind == "unit":
         raise ParameterError(name, f"cannot read the unit of {q!r} ({info})")
@@ -390,7 +388,11 @@ def si(name: str, value: Any, unit: str | None = None) -> Any:
     the parameter's entry in :data:`SI_UNITS`.  Raises :class:`ParameterError` naming ``name`` for
     a malformed unit, a wrong dimension, a non-numeric value, NaN or infinity.
     """
-    if type(value) in _PLAIN:  # a plain number: the same checks without NumPy (0.5 µs, not 5)
+    import numpy as np
+
+    # a plain number (bool is not one: it is refused below): the same checks without NumPy's
+    # arrays (0.5 µs, not 5)
+    if type(value) in (float, int, np.float64):
         try:
             v = float(value)
         except OverflowError:
@@ -439,6 +441,8 @@ def _out_of_range(name: str, extreme: float, unit: str) -> None:
 
 def positive(name: str, value: Any, unit: str | None = None) -> Any:
     """:func:`si`, then require every value > 0."""
+    import numpy as np
+
     v = si(name, value, unit)
     if type(v) is float:
         if not v > 0:
@@ -456,6 +460,8 @@ def positive(name: str, value: Any, unit: str | None = None) -> Any:
 
 def nonnegative(name: str, value: Any, unit: str | None = None) -> Any:
     """:func:`si`, then require every value ≥ 0."""
+    import numpy as np
+
     v = si(name, value, unit)
     if type(v) is float:
         if v < 0:
@@ -467,6 +473,8 @@ def nonnegative(name: str, value: Any, unit: str | None = None) -> Any:
 
 
 def _show(v: Any) -> str:
+    import numpy as np
+
     if isinstance(v, float):
         return f"{v:g}"
     arr = np.asarray(v)
@@ -475,6 +483,8 @@ def _show(v: Any) -> str:
 
 
 def _one(name: str, v: Any) -> float:
+    import numpy as np
+
     if type(v) is float:
         return v
     if np.size(v) == 0:
