@@ -25,23 +25,43 @@
   record (Eq. F8, Step 16) and a record's shock-response spectrum.
 """
 
-from .contact_law import CompliantContact
-from .continuation import Bifurcation, Branch, BranchPoint, continue_orbit, trace_branch
-from .forcing import Forcing
-from .loads import Record, random_record, shock_record, sweep_record
-from .periodic import PeriodicOrbit, periodic_orbits
-from .record_flight import RecordResponse, primary_response, srs
-from .rigid_limit import RigidLimitRow, rigid_limit
-from .shooting import ShootingOrbit, monodromy, settled_state, shoot, shoot_from_rest
-from .simulation import ForcedResult, Steady, simulate_forced, steady_state
-from .slow_flow import (
-    Backbone,
-    BestClearance,
-    SlowFlowResponse,
-    backbone,
-    best_clearance,
-    slow_flow_responses,
-)
+#: Where each name of the package lives: imported on first use, so that a command loads only
+#: the modules it runs (the continuation and SciPy's optimisers cost a simulation 0.6 s).
+_WHERE = {
+    "CompliantContact": "contact_law",
+    "Bifurcation": "continuation", "Branch": "continuation", "BranchPoint": "continuation",
+    "continue_orbit": "continuation", "trace_branch": "continuation",
+    "Forcing": "forcing",
+    "Record": "loads", "random_record": "loads", "shock_record": "loads",
+    "sweep_record": "loads",
+    "PeriodicOrbit": "periodic", "periodic_orbits": "periodic",
+    "RecordResponse": "record_flight", "primary_response": "record_flight",
+    "srs": "record_flight",
+    "RigidLimitRow": "rigid_limit", "rigid_limit": "rigid_limit",
+    "ShootingOrbit": "shooting", "monodromy": "shooting", "settled_state": "shooting",
+    "shoot": "shooting", "shoot_from_rest": "shooting",
+    "ForcedResult": "simulation", "Steady": "simulation", "simulate_forced": "simulation",
+    "steady_state": "simulation",
+    "Backbone": "slow_flow", "BestClearance": "slow_flow", "SlowFlowResponse": "slow_flow",
+    "backbone": "slow_flow", "best_clearance": "slow_flow",
+    "slow_flow_responses": "slow_flow",
+}  # fmt: skip
+
+
+def __getattr__(name: str):
+    """A name of the package, from its module on first use (:data:`_WHERE`)."""
+    if name not in _WHERE:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    import importlib
+
+    value = getattr(importlib.import_module(f"{__name__}.{_WHERE[name]}"), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(list(globals()) + __all__)
+
 
 __all__ = [
     "Backbone",
