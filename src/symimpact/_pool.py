@@ -51,10 +51,32 @@ def can_spread() -> bool:
     )
 
 
-def spread(fn: Callable[[Any], Any], payloads: list, workers: int) -> Iterator[Any]:
-    """``fn(p)`` for each payload on ``workers`` local processes, yielded as they finish; an
-    interrupted, terminated or failed pool does not wait for the runs still going."""
+#: The functions this process has run on a warm-up payload (:func:`warm_here`).
+_WARMED: set[str] = set()
+
+
+def warm_here(fn: Callable[[Any], Any], warm: Any) -> None:
+    """``fn(warm)`` here, once a process, before workers are forked to run ``fn``: ``warm`` is
+    a small payload that takes the same compiled code (one point, one frequency), so that the
+    compilation happens once, in this process, and the forked workers inherit it; each worker
+    had compiled the same engine at the same time (minutes of every core on a fresh install).
+    Nothing when ``warm`` is None or this process has warmed ``fn`` before."""
+    key = f"{fn.__module__}.{fn.__qualname__}"
+    if warm is None or key in _WARMED:
+        return
+    fn(warm)
+    _WARMED.add(key)
+
+
+def spread(
+    fn: Callable[[Any], Any], payloads: list, workers: int, warm: Any = None
+) -> Iterator[Any]:
+    """``fn(p)`` for each payload on ``workers`` local processes, yielded as they finish, after
+    a warm-up here (:func:`warm_here`); an interrupted, terminated or failed pool does not wait
+    for the runs still going."""
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+
+    warm_here(fn, warm)
 
     pool = ProcessPoolExecutor(max_workers=workers, initializer=worker_init,
                                initargs=(os.getpid(),))  # fmt: skip
@@ -74,17 +96,22 @@ def spread(fn: Callable[[Any], Any], payloads: list, workers: int) -> Iterator[A
 class Pending:
     """``[fn(p) for p in payloads]`` started at once on ``workers`` processes (where this
     process may start them, :func:`can_spread`, and there is more than one payload), while this
-    process goes on (:func:`symimpact.forced.coverage.attractors` waits at once); :meth:`result`
+    process goes on (:func:`symimpact.forced.coverage.attractors` waits at once), after a
+    warm-up here (:func:`warm_here`); :meth:`result`
     waits for them, in the payloads' order.  Run here, where it cannot spread, when
     :meth:`result` is called.  :meth:`cancel` ends the workers (a caller
     that fails before it needs the result)."""
 
-    def __init__(self, fn: Callable[[Any], Any], payloads: list, workers: int) -> None:
+    def __init__(
+        self, fn: Callable[[Any], Any], payloads: list, workers: int, warm: Any = None
+    ) -> None:
         self.fn, self.payloads = fn, payloads
         self.pool: Any = None
         self.futures: list = []
         if workers > 1 and len(payloads) > 1 and can_spread():
             from concurrent.futures import ProcessPoolExecutor
+
+            warm_here(fn, warm)
 
             self.pool = ProcessPoolExecutor(max_workers=min(workers, len(payloads)),
                                             initializer=worker_init, initargs=(os.getpid(),))  # fmt: skip

@@ -466,8 +466,10 @@ class MultiStart:
             workers = min(STARTS, os.cpu_count() or 1)
         workers = checks.whole_number("workers", workers, 1, 1024)
         self.ws = tuple(float(w) for w in (frequencies(band, n) if ws is None else ws))
+        # the warm-up before the workers fork: one initial state at one frequency
         self.pending = _pool.Pending(_landings, [(system, forcing, e, band, self.ws, j, refine)
-                                                 for j in range(STARTS)], workers)  # fmt: skip
+                                                 for j in range(STARTS)], workers,
+                                     warm=(system, forcing, e, band, self.ws[:1], 0, False))  # fmt: skip
 
     def cancel(self) -> None:
         """End the workers without waiting for their runs."""

@@ -22,7 +22,10 @@ def _serial(payloads: list, chunk=None) -> Iterator[list[dict[str, Any]]]:
 
 
 def _processes(payloads: list, workers: int, chunk=None) -> Iterator[list[dict[str, Any]]]:
-    yield from spread(chunk or _run_chunk, payloads, workers)
+    # the warm-up before the workers fork (symimpact._pool.warm_here): the first chunk's first
+    # point (a chunk is (base, names, runs, values))
+    warm = (*payloads[0][:2], payloads[0][2][:1], payloads[0][3][:1]) if payloads else None
+    yield from spread(chunk or _run_chunk, payloads, workers, warm)
 
 
 #: How long a Dask map waits with no worker before it gives up (all workers lost), and how
