@@ -23,6 +23,7 @@ from . import (
     coverage,
     design_map,
     estimates,
+    first_run,
     frc,
     map_throughput,
     million_map,

@@ -34,6 +34,8 @@ import numba.core.event
 import numpy as np
 from numba import njit, types
 
+from . import _notices
+
 #: Status of a compiled run that stopped because a signal asked it to (every loop's own statuses
 #: are small numbers; this one is shared).
 INTERRUPTED = 99
@@ -274,10 +276,13 @@ def _record(signum: int, frame: Any) -> None:
 
 
 class _Compiling(numba.core.event.Listener):
-    """numba's compile events: the depth of the compilations under way in the main thread."""
+    """numba's compile events: the depth of the compilations under way in the main thread (a
+    cache hit is no event: only real compilations count)."""
 
     def on_start(self, ev: Any) -> None:
         if threading.current_thread() is threading.main_thread():
+            if not _compiling[0]:  # the command line's notice (symimpact._notices)
+                _notices.compiling(getattr(ev.data["dispatcher"].py_func, "__module__", ""))
             _compiling[0] += 1
 
     def on_end(self, ev: Any) -> None:

@@ -255,6 +255,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             previous[sig] = signal.signal(sig, end)
         except ValueError:  # not the main thread (e.g. called from a worker thread)
             pass
+    if sys.stderr.isatty():  # a person waits: a first compilation says so (symimpact._notices)
+        from .. import _notices
+
+        _notices.command = ns.command
     try:
         display.parse_show(getattr(ns, "show", []))
         hz = getattr(ns, "freq_range", None) is not None or getattr(ns, "freq", None) is not None

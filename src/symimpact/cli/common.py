@@ -619,19 +619,3 @@ def announce(ns: argparse.Namespace, estimate: Any, name: str, also: str = "") -
     within_budget(estimate, name, ns.no_budget)
     if estimate.high >= SAY_SECONDS:
         print(f"symimpact {ns.command}: {estimate.text()}{also}", file=sys.stderr, flush=True)
-
-
-def notice_first_compilation(command: str) -> None:
-    """One line on a terminal before the first run compiles the simulation (10–20 s, then
-    cached on disk), so that a person does not wait on a silent command; nothing when the
-    output is not a terminal (a pipe, a log, the tests)."""
-    if not sys.stderr.isatty():
-        return
-    from ..free import _stepper
-
-    if not _stepper.compiled_before():
-        print(
-            f"symimpact {command}: compiling the simulation once (10–20 s; cached for later runs)",
-            file=sys.stderr,
-            flush=True,
-        )

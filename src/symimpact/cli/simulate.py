@@ -16,7 +16,6 @@ from .common import (
     fmt,
     forcing_from,
     has_forcing,
-    notice_first_compilation,
     quantity_text,
     structure_forcing,
     system_from,
@@ -93,7 +92,6 @@ def run(ns) -> None:
                 "applies to the forced response (give --force or --base, --omega or "
                 "--freq, and --contact)",
             )
-    notice_first_compilation(ns.command)
     from ..free.simulation import simulate
 
     system = system_from(ns)

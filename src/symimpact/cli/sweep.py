@@ -12,7 +12,6 @@ from .common import (
     add_system,
     emit,
     fmt,
-    notice_first_compilation,
     quantity_text,
     system_from,
     write_csv,
@@ -147,7 +146,6 @@ def _points(ns):
 
 
 def run(ns) -> None:
-    notice_first_compilation(ns.command)
     from ..maps import parameter_map, table_rows
 
     points = _points(ns)

@@ -905,17 +905,6 @@ def one_contact(law, p, v0):
     return status, t, u, e_on, _energy(law, p, u, 1.0)
 
 
-def compiled_before() -> bool:
-    """Whether numba's on-disk cache already holds the compiled stepper (else the first call
-    compiles it, 10–20 s).  True where that cannot be told (numba's cache layout is private)."""
-    import os
-
-    try:
-        return os.path.exists(run._cache._cache_file._index_path)
-    except AttributeError:  # another numba version: no notice rather than a wrong one
-        return True
-
-
 def forget_stale_compilations(dispatcher, sources, prefixes) -> None:
     """Drop numba's cached machine code of the modules named by ``prefixes`` (file-name prefixes
     such as ``"_stepper."``) when any of ``sources`` (paths) changed.
