@@ -70,6 +70,7 @@ SUITE = (
         "14. the sampled loads' estimates, printed before they run, against their runs",
         estimates.main,
     ),
+    ("15. the first run after an install: each engine's compilation, then warm", first_run.main),
 )
 
 
