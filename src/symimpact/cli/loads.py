@@ -10,7 +10,16 @@ import sys
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from .common import add_budget, add_output, add_system, announce, emit, system_from, write_csv
+from .common import (
+    add_budget,
+    add_output,
+    add_system,
+    announce,
+    emit,
+    refuse_reduced_base,
+    system_from,
+    write_csv,
+)
 from .frf import contact_of
 
 if TYPE_CHECKING:
@@ -203,6 +212,8 @@ def _kind(ns) -> tuple[str, str]:
         )
     if ns.force_load is not None:
         return "force", ns.force_load
+    flag = {"random": "psd", "shock": "peak", "sweep-sine": "amplitude"}[ns.command]
+    refuse_reduced_base(ns, f"base-{flag}", harmonic=False)
     return "base-acceleration", ns.base_load
 
 
@@ -293,6 +304,8 @@ def run_random(ns) -> None:
                 "psd-file", "give the PSD once: --psd-file, --force-psd or --base-psd"
             )
         psd, kind = psd_table(ns.psd_file)
+        if kind != "force":
+            refuse_reduced_base(ns, "psd-file", harmonic=False)
     else:
         kind, text = _kind(ns)
         psd = si_float("force-psd" if kind == "force" else "base-psd", text,
@@ -388,6 +401,8 @@ def run_shock(ns) -> None:
             raise ParameterError("record-file", "the record gives the load and its samples: "
                                  "drop --force-peak/--base-peak, --pulse and --dt")  # fmt: skip
         record = read_record(ns.record_file)
+        if record.kind != "force":
+            refuse_reduced_base(ns, "record-file", harmonic=False)
         # the record, then rest: its residual response (default: as after a pulse, 20 natural
         # periods, and 3 periods of the SRS's lowest oscillator)
         rest = max(20.0 / fn, 3.0 / _srs_range(ns, fn)[0])
