@@ -7,8 +7,9 @@ estimate.  A piece is :data:`PIECE_SAMPLES` samples, or fewer where they take
 :data:`PIECE_SECONDS`, from rest: the record's first (a random record is stationary), and for a
 sweep also those where it crosses the primary's natural frequency, where its impacts crowd: the
 estimate is then a span, from the cheaper piece's rate to the costlier's.
-The engine is compiled before the piece is timed.  A command whose estimate exceeds
-:data:`symimpact.budgets.MAX_SECONDS` is refused before it starts unless its budget is lifted (``--no-budget``).
+The engine is compiled before the piece is timed, and a piece during which numba compiled is
+run again.  A command whose estimate exceeds :data:`symimpact.budgets.MAX_SECONDS` is refused
+before it starts unless its budget is lifted (``--no-budget``).
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ from .record_flight import primary_response
 from .record_response import damper_response
 from .simulation import CHATTER
 
-#: The piece timed: the first samples of the first record.
+#: The samples of a piece timed.
 PIECE_SAMPLES = 20_000
 #: ... or as many of them as take this long [s] (a record whose intervals hold many impacts).
 PIECE_SECONDS = 0.2
