@@ -150,6 +150,13 @@ def _interval(values: np.ndarray, ceiling: float | None = None) -> tuple[float, 
     return (lo, hi) if ceiling is None else (ceiling - hi, ceiling - lo)
 
 
+def _settle(system: ImpactSystem, settle: Any) -> float:
+    """The settling time [s]: ``settle`` checked, or :func:`default_settle` where it is None."""
+    if settle is None:
+        return default_settle(system)
+    return checks.bounded("settle", settle, 0.0, unit="s")
+
+
 def realisation_record(
     psd: float | Callable[[np.ndarray], np.ndarray],
     band: tuple[Any, Any],
@@ -188,11 +195,7 @@ def ensemble_estimate(
     first realisation (:func:`~symimpact.forced.record_cost.record_estimate`), with the time
     of drawing its record and of its statistics (``welch``: its PSD too); the arguments those of
     :func:`random_statistics`."""
-    settle = (
-        default_settle(system)
-        if settle is None
-        else checks.bounded("settle", settle, 0.0, unit="s")
-    )
+    settle = _settle(system, settle)
     n = checks.whole_number("realisations", realisations, 1, MAX_REALISATIONS)
     segment = None if segment is None else positive_float("segment", segment, "s")
     start = time.perf_counter()
@@ -280,11 +283,7 @@ def random_statistics(
     n = checks.whole_number("realisations", realisations, 1, MAX_REALISATIONS)
     seed = checks.whole_number("seed", seed, 0, 2**63 - 1)
     e = restitution_or_law(e)
-    settle = (
-        default_settle(system)
-        if settle is None
-        else checks.bounded("settle", settle, 0.0, unit="s")
-    )
+    settle = _settle(system, settle)
     seg = None if segment is None else positive_float("segment", segment, "s")
     if seg is not None and seg > T:
         raise ParameterError("segment", f"must fit in the duration, {T:g} s, got {seg:g} s")
