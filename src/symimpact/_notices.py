@@ -18,12 +18,12 @@ import sys
 #: rule, the compliant contacts' engine and the sampled loads' rigid engine.  The engines not
 #: listed compile in a few seconds, without a notice.
 COMPILE_SECONDS = {
-    "symimpact.free._stepper": 13.0,
-    "symimpact.forced._modal": 230.0,
-    "symimpact.forced._corrector": 114.0,
+    "symimpact.free._stepper": 15.0,
+    "symimpact.forced._modal": 300.0,
+    "symimpact.forced._corrector": 110.0,
     "symimpact.forced._chain": 12.0,
-    "symimpact.forced._compliant": 14.0,
-    "symimpact.forced._record_rigid": 6.4,
+    "symimpact.forced._compliant": 12.0,
+    "symimpact.forced._record_rigid": 5.6,
 }
 
 #: The command whose compilations are announced (set by the command line on a terminal).
