@@ -16,7 +16,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 PKG = ROOT / "src" / "symimpact"
 LAYERS = ["model", "free", "forced", "maps", "report", "cli"]
-SHARED = {"errors", "io", "_interrupt", "_pool", "budgets", "export", "generated"}
+SHARED = {"errors", "io", "_interrupt", "_notices", "_pool", "budgets", "export", "generated"}
 
 
 def _rank(part: str) -> int:

@@ -7,7 +7,9 @@ minutes).
 Here "compiling" is a module-level flag that a process's first call sets, as numba's dispatcher
 keeps its compiled code: with a warm-up every payload runs in a process that had it set (the
 workers are forked from the warmed parent); the control, without one, has workers that set it
-themselves.  In a child process of its own, so that the pools fork a plain interpreter.
+themselves.  Where no smaller payload takes the same code (a design map's clearance), the first
+payload itself runs here and its result is kept.  In a child process of its own, so that the
+pools fork a plain interpreter.
 """
 
 from __future__ import annotations
@@ -39,6 +41,9 @@ SCRIPT = textwrap.dedent(
     def control(x):
         return run(x)
 
+    def first(x):
+        return run(x)
+
     PARENT = os.getpid()
     out = {
         "pending": _pool.Pending(pending, [1, 2, 3, 4], 2, warm=0).result(),
@@ -46,6 +51,8 @@ SCRIPT = textwrap.dedent(
     }
     COMPILED.clear()
     out["control"] = list(_pool.spread(control, [1, 2, 3, 4], 2))
+    COMPILED.clear()
+    out["first"] = list(_pool.spread(first, [1, 2, 3, 4], 2, warm=_pool.FIRST))
     print(json.dumps(out))
     """
 )
@@ -64,3 +71,7 @@ def test_workers_inherit_the_warm_up_instead_of_compiling_each():
     control = out["control"]
     assert all(r[2] for r in control)
     assert not all(r[1] for r in control), control  # without it, workers compile themselves
+    # FIRST: the first payload runs here (its result kept), the others on warmed workers
+    first = out["first"]
+    assert first[0][0] == 1 and sorted(r[0] for r in first) == [1, 2, 3, 4]
+    assert first[0][2] is False and all(r[2] and r[1] for r in first[1:]), first

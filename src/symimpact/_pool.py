@@ -68,16 +68,29 @@ def warm_here(fn: Callable[[Any], Any], warm: Any) -> None:
     _WARMED.add(key)
 
 
+#: ``warm`` of :func:`spread` meaning: run the first payload here and yield its result.
+FIRST = object()
+
+
 def spread(
     fn: Callable[[Any], Any], payloads: list, workers: int, warm: Any = None
 ) -> Iterator[Any]:
     """``fn(p)`` for each payload on ``workers`` local processes, yielded as they finish, after
-    a warm-up here (:func:`warm_here`); an interrupted, terminated or failed pool does not wait
-    for the runs still going."""
+    a warm-up here (:func:`warm_here`; ``warm`` :data:`FIRST`: the first payload itself, run
+    here once a process and its result yielded, where no smaller payload takes the same code);
+    an interrupted, terminated or failed pool does not wait for the runs still going."""
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-    warm_here(fn, warm)
-
+    key = f"{fn.__module__}.{fn.__qualname__}"
+    if warm is FIRST:
+        if payloads and key not in _WARMED:
+            yield fn(payloads[0])
+            _WARMED.add(key)
+            payloads = payloads[1:]
+    else:
+        warm_here(fn, warm)
+    if not payloads:
+        return
     pool = ProcessPoolExecutor(max_workers=workers, initializer=worker_init,
                                initargs=(os.getpid(),))  # fmt: skip
     finished = False

@@ -36,6 +36,7 @@ from ..model.system import ImpactSystem
 from ..model.units import positive_float
 from .engine import _executor, _gather, _launch, _progress
 from .points import MapPoints
+from .runs import _first_point
 from .store import MapStore
 
 #: A row's output columns (after ``run`` and ``realisation``).
@@ -79,6 +80,9 @@ def _ensemble_chunk(payload: tuple[_EnsembleBase, tuple[str, ...], list[int], np
         row["impacts"] = r["impacts"]
         rows.append(row)
     return rows
+
+
+_ensemble_chunk.warm_payload = _first_point  # type: ignore[attr-defined]
 
 
 def ensemble_table(rows: list[dict[str, Any]], names: Any = ("realisation",)) -> Any:

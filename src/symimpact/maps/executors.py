@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from .._pool import spread
+from .._pool import FIRST, spread
 from ..errors import ParameterError
 from .runs import _run_chunk
 
@@ -22,10 +22,12 @@ def _serial(payloads: list, chunk=None) -> Iterator[list[dict[str, Any]]]:
 
 
 def _processes(payloads: list, workers: int, chunk=None) -> Iterator[list[dict[str, Any]]]:
-    # the warm-up before the workers fork (symimpact._pool.warm_here): the first chunk's first
-    # point (a chunk is (base, names, runs, values))
-    warm = (*payloads[0][:2], payloads[0][2][:1], payloads[0][3][:1]) if payloads else None
-    yield from spread(chunk or _run_chunk, payloads, workers, warm)
+    # the warm-up before the workers fork (symimpact._pool.spread): the payload the chunk's
+    # function names for it (warm_payload: one point of a chunk), else the first chunk itself
+    chunk = chunk or _run_chunk
+    make = getattr(chunk, "warm_payload", None)
+    warm = make(payloads[0]) if make is not None and payloads else FIRST
+    yield from spread(chunk, payloads, workers, warm)
 
 
 #: How long a Dask map waits with no worker before it gives up (all workers lost), and how

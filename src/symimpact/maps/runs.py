@@ -255,6 +255,16 @@ def _run_chunk(payload: tuple[_Base, tuple[str, ...], list[int], np.ndarray]):
     return _chunk_rows(base, names, runs, values)
 
 
+def _first_point(payload: tuple) -> tuple:
+    """A chunk (base, names, runs, values) cut to its first point: the warm-up before local
+    workers fork (:func:`symimpact._pool.spread`)."""
+    base, names, runs, values = payload
+    return base, names, runs[:1], values[:1]
+
+
+_run_chunk.warm_payload = _first_point  # type: ignore[attr-defined]
+
+
 def _run_chunk_per_point(payload: tuple[_Base, tuple[str, ...], list[int], np.ndarray]):
     """The same rows, one :func:`run_point` (ImpactSystem, then ``simulate``) per point: the
     path the compiled loop replaced, kept as the reference of the tests and the baseline of
