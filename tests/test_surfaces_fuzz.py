@@ -13,7 +13,7 @@ import tempfile
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from symimpact.errors import ParameterError
@@ -48,6 +48,7 @@ TREES = st.recursive(
 
 @settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(TREES)
+@example({"beam": None, "\n": None})  # a key with a line break had made a two-line refusal
 def test_a_random_structure_file_is_read_or_refused_in_one_line(tree):
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "s.json"

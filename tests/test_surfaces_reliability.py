@@ -526,3 +526,16 @@ def test_the_residual_of_an_undamped_primary_ends():
     out = shock_response(system, pulse, e=0.6, frequencies=[2.0, 5.0, 50.0])
     assert time.monotonic() - t0 < 30.0
     assert np.all(np.isfinite(out.baseline_srs)) and np.all(out.baseline_srs > 0)
+
+
+def test_a_line_break_in_a_files_key_stays_in_the_refusals_one_line(tmp_path, capsys):
+    """Found by the structure-file fuzz (tests/test_surfaces_fuzz.py): an unknown key "\\n" was
+    named as it is, and the refusal took two lines.  Line breaks are written as escapes."""
+    from symimpact.model.structure import read_structure
+
+    path = tmp_path / "s.json"
+    path.write_text(json.dumps({"beam": None, "\n": None, "a\u2028b": 1}))
+    with pytest.raises(ParameterError) as caught:
+        read_structure(path)
+    assert str(caught.value).splitlines() == [str(caught.value)]
+    assert str(caught.value).startswith("\\n: is not a field of a structure file")

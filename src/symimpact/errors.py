@@ -9,13 +9,18 @@ class SymimpactError(ValueError):
     """Base class of every error symimpact raises on bad input or an impossible request."""
 
 
+#: Characters that break a line (str.splitlines), written as escapes in an error's one line.
+_BREAKS = str.maketrans({c: repr(c)[1:-1] for c in "\n\r\v\f\x1c\x1d\x1e\x85\u2028\u2029"})
+
+
 class ParameterError(SymimpactError):
-    """A parameter is invalid: ``parameter`` names it, ``reason`` says why."""
+    """A parameter is invalid: ``parameter`` names it, ``reason`` says why, in one line (a line
+    break in either, e.g. a key of a user's file, is written as its escape: ``\\n``)."""
 
     def __init__(self, parameter: str, reason: str) -> None:
         self.parameter = parameter
         self.reason = reason
-        super().__init__(f"{parameter}: {reason}")
+        super().__init__(f"{parameter}: {reason}".translate(_BREAKS))
 
     def __reduce__(self):  # rebuilt from its fields when it crosses a process boundary
         return (type(self), (self.parameter, self.reason))
