@@ -111,7 +111,9 @@ EARLIEST, WINDOW = 0.3, 3.2
 #: steps (milliseconds) and the interpreter's exit takes 0.1–0.3 s on the reference machine; the
 #: rest is room for a machine busy with other work.
 BOUND = 3.0
-PROGRESS = re.compile(r"\|\s*\d+/\d+ \[")
+#: Lines a command prints on its way that are not its end: a progress bar, the estimate of a
+#: sampled load's run (symimpact.forced.record_cost) and a compilation's notice.
+PROGRESS = re.compile(r"\|\s*\d+/\d+ \[|: about .* on this machine \(|: compiling the")
 EXPECTED = {
     signal.SIGINT: (130, "interrupted"),
     signal.SIGTERM: (143, "ended by signal 15"),
