@@ -61,11 +61,14 @@ def warm_here(fn: Callable[[Any], Any], warm: Any) -> None:
     compilation happens once, in this process, and the forked workers inherit it; each worker
     had compiled the same engine at the same time (minutes of every core on a fresh install).
     Nothing when ``warm`` is None or this process has warmed ``fn`` before."""
-    key = f"{fn.__module__}.{fn.__qualname__}"
-    if warm is None or key in _WARMED:
+    if warm is None or _key(fn) in _WARMED:
         return
     fn(warm)
-    _WARMED.add(key)
+    _WARMED.add(_key(fn))
+
+
+def _key(fn: Callable[[Any], Any]) -> str:
+    return f"{fn.__module__}.{fn.__qualname__}"
 
 
 #: ``warm`` of :func:`spread` meaning: run the first payload here and yield its result.
@@ -81,11 +84,10 @@ def spread(
     an interrupted, terminated or failed pool does not wait for the runs still going."""
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-    key = f"{fn.__module__}.{fn.__qualname__}"
     if warm is FIRST:
-        if payloads and key not in _WARMED:
+        if payloads and _key(fn) not in _WARMED:
             yield fn(payloads[0])
-            _WARMED.add(key)
+            _WARMED.add(_key(fn))
             payloads = payloads[1:]
     else:
         warm_here(fn, warm)

@@ -428,13 +428,13 @@ def run_shock(ns) -> None:
     from ..forced.record_cost import record_estimate
     from ..forced.shock_response import srs_oscillators
 
-    srs_oscillators(np.geomspace(lo, hi, n), ns.srs_zeta, record.dt)
+    frequencies = np.geomspace(lo, hi, n)
+    srs_oscillators(frequencies, ns.srs_zeta, record.dt)  # refused before the estimate's runs
 
     # the record with the damper and without, and each SRS oscillator on both motions
     estimate = record_estimate(system, record, e=e, marches=2 * n)
     announce(ns, estimate, "record-file" if ns.record_file else "duration")
-    out = shock_response(system, record, e=e, frequencies=np.geomspace(lo, hi, n),
-                         zeta=ns.srs_zeta)  # fmt: skip
+    out = shock_response(system, record, e=e, frequencies=frequencies, zeta=ns.srs_zeta)
     if ns.csv:
         write_csv(ns.csv, "csv", [
             {"frequency": f, "srs": a, "baseline_srs": b}

@@ -97,10 +97,12 @@ def _hermite_peaks(
         r = np.sqrt(np.maximum(disc, 0.0))
         q = -0.5 * (qb + np.where(qb >= 0.0, r, -r))
         quadratic = qa != 0.0
+        real = quadratic & (disc >= 0.0)  # a quadratic without real roots has none
         roots = (
-            np.where(quadratic & (disc >= 0.0), q / qa, np.where(qb != 0.0, -qc / qb, np.nan)),
-            np.where(quadratic & (disc >= 0.0) & (q != 0.0), qc / q, np.nan),
-        )
+            np.where(quadratic, np.where(real, q / qa, np.nan),
+                     np.where(qb != 0.0, -qc / qb, np.nan)),
+            np.where(real & (q != 0.0), qc / q, np.nan),
+        )  # fmt: skip
         for u in roots:
             inside = (u > 0.0) & (u < 1.0)
             u = np.where(inside, u, 0.0)
