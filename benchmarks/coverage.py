@@ -5,10 +5,10 @@ rigid curves (the chosen reading of the paper's beam, F0 0.2 N, 0.5–1.5 ω_n, 
 linear contact, d 9, 15 and 25 mm).
 
 Each system's multi-start brute force (four initial states at each of 200 frequencies, each
-periodic motion shot; :func:`symimpact.forced.coverage.attractors`) lists its periodic
+periodic motion shot; :func:`symimpact.forced.orbits.coverage.attractors`) lists its periodic
 attractors of at most four periods, and each curve (``symimpact frf --no-sweeps``, by default
 with ``--embedded`` and with ``--folds --embedded``) is measured against them: the share on a traced branch (amplitude
-within 1e-7 relative, :func:`symimpact.forced.frf._traced`) and the frequencies of those missed.
+within 1e-7 relative, :func:`symimpact.forced.orbits.frf._traced`) and the frequencies of those missed.
 These are coverage figures, not speed targets: each curve and brute force runs once, and its
 time is that one run's.  Run from the checkout: python -m benchmarks.coverage
 """
@@ -21,9 +21,9 @@ import time
 import numpy as np
 from symimpact.generated import closed_forms
 
-from symimpact.forced.coverage import attractors
 from symimpact.forced.forcing import Forcing
-from symimpact.forced.frf import MAX_SWITCH_PERIODS, _traced, frequency_response
+from symimpact.forced.orbits.coverage import attractors
+from symimpact.forced.orbits.frf import MAX_SWITCH_PERIODS, _traced, frequency_response
 from symimpact.model.system import ImpactSystem
 from symimpact.model.units import si
 from symimpact.report import forced_stage, paper

@@ -1,5 +1,5 @@
 """The estimates the sampled-load commands print before they run, against the time the run then
-takes (:mod:`symimpact.forced.record_cost`): a primary of 5.03 Hz (M 1 kg, K 1000 N/m,
+takes (:mod:`symimpact.forced.loads.record_cost`): a primary of 5.03 Hz (M 1 kg, K 1000 N/m,
 C 0.5 N s/m) with a 50 g impact mass in a 20 mm clearance, rigid impacts (e 0.6) or a Hertz
 contact (1e6 N/m^1.5), under a random force (2 N²/Hz over 1–20 Hz, 8 realisations of 500 s)
 and a sine sweep (2 N, 1–20 Hz at 0.003 Hz/s, up and down, without the steady curve).  Each row
@@ -15,9 +15,9 @@ from __future__ import annotations
 import time
 
 from symimpact.forced.contact_law import CompliantContact
-from symimpact.forced.random_response import ensemble_estimate, random_statistics
-from symimpact.forced.record_cost import duration_text
-from symimpact.forced.sweep_response import sweep_estimate, sweep_response
+from symimpact.forced.loads.random_response import ensemble_estimate, random_statistics
+from symimpact.forced.loads.record_cost import duration_text
+from symimpact.forced.loads.sweep_response import sweep_estimate, sweep_response
 from symimpact.model.system import ImpactSystem
 
 RIGID = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e5)

@@ -1,4 +1,4 @@
-"""A 200-frequency frequency-response curve with stability (``symimpact.forced.frf``: shooting,
+"""A 200-frequency frequency-response curve with stability (``symimpact.forced.orbits.frf``: shooting,
 pseudo-arclength continuation, Floquet multipliers and located bifurcations on every branch)
 against the brute-force way of getting a response curve: a frequency sweep of the event-driven
 simulation over the same 200 frequencies, each run started from the previous end state and run
@@ -41,10 +41,10 @@ import numpy as np
 from symimpact.generated import rigid_impact as ri
 
 from symimpact.forced.contact_law import CompliantContact
-from symimpact.forced.continuation import orbits_at
-from symimpact.forced.coverage import attractors
 from symimpact.forced.forcing import Forcing
-from symimpact.forced.frf import MAX_SWITCH_PERIODS, _sweep, _traced, frequency_response
+from symimpact.forced.orbits.continuation import orbits_at
+from symimpact.forced.orbits.coverage import attractors
+from symimpact.forced.orbits.frf import MAX_SWITCH_PERIODS, _sweep, _traced, frequency_response
 from symimpact.model.system import ImpactSystem
 
 from .timing import timed

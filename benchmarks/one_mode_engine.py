@@ -1,6 +1,6 @@
 """The paper's one-mode system through the engine of several modes against the dedicated
 one-mode engine it replaced (issue 36: "no slower").  The previous engine is read from the
-repository's history (``src/symimpact/forced/_rigid.py`` before commit 5d693b1, where its run
+repository's history (``src/symimpact/forced/engine/_rigid.py`` before commit 5d693b1, where its run
 was removed) and compiled in this run beside the current one; both simulate the same rigid-impact
 runs from rest, and the figures are medians of seven repeats each.
 
@@ -28,8 +28,8 @@ from pathlib import Path
 import numpy as np
 
 from symimpact._interrupt import NO_WATCH
-from symimpact.forced._modal import one_mode_run
-from symimpact.forced._rigid import N_PARAMS
+from symimpact.forced.engine._modal import one_mode_run
+from symimpact.forced.engine._rigid import N_PARAMS
 
 from .timing import timed
 
@@ -42,7 +42,7 @@ def _previous_engine():
     relative imports resolve in the package), or None where the history is not at hand."""
     root = Path(__file__).resolve().parents[1]
     try:
-        source = subprocess.run(["git", "show", f"{PREVIOUS}:src/symimpact/forced/_rigid.py"],
+        source = subprocess.run(["git", "show", f"{PREVIOUS}:src/symimpact/forced/engine/_rigid.py"],
                                 cwd=root, capture_output=True, text=True, check=True).stdout  # fmt: skip
     except (OSError, subprocess.CalledProcessError):
         return None

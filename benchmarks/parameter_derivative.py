@@ -15,9 +15,9 @@ import math
 
 import numpy as np
 
-from symimpact.forced import continuation as cont
 from symimpact.forced.forcing import Forcing
-from symimpact.forced.shooting import shoot_from_rest
+from symimpact.forced.orbits import continuation as cont
+from symimpact.forced.orbits.shooting import shoot_from_rest
 from symimpact.model.system import ImpactSystem
 
 from .timing import timed

@@ -20,9 +20,9 @@ from __future__ import annotations
 
 import pandas as pd
 
-from symimpact.forced.loads import random_record
-from symimpact.forced.record_flight import primary_response
-from symimpact.forced.record_response import damper_response
+from symimpact.forced.loads.record_flight import primary_response
+from symimpact.forced.loads.record_response import damper_response
+from symimpact.forced.loads.records import random_record
 from symimpact.maps.ensemble import random_ensemble
 from symimpact.model.system import ImpactSystem
 

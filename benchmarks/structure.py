@@ -33,7 +33,7 @@ model at the same impact-time accuracy.
    its runs from rest at the first mode.
 5. Through sticking: the plastic damper (e 0, 50 g in 10 mm) at the tip of the two-mode
    cantilever of the tests (ζ 0.02, 2 N at the tip), whose mass chatters, sticks and is released
-   twice a period: its branch from 7.5 to 7.75 Hz (:func:`symimpact.forced.structure_branch.
+   twice a period: its branch from 7.5 to 7.75 Hz (:func:`symimpact.forced.orbits.structure_branch.
    structure_branch`, step 0.1 rad/s) with the monodromy carried through the accumulations, the
    sticking phases and the releases, against the same branch with the map's central differences
    in their place (2(2N + 2K) = 12 more runs a Newton step: what the shooting did before the
@@ -53,7 +53,12 @@ import time
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from symimpact.forced.structure_branch import KEPT, curve_peak, settling_periods, structure_branch
+from symimpact.forced.orbits.structure_branch import (
+    KEPT,
+    curve_peak,
+    settling_periods,
+    structure_branch,
+)
 from symimpact.forced.structure_response import simulate_structure
 from symimpact.maps.structure_curve import structure_curve_map
 from symimpact.model.dampers import dampers
@@ -215,7 +220,7 @@ def _through_sticking() -> None:
     """Item 5 (module text): the plastic damper's branch, carried against differenced."""
     from unittest import mock
 
-    from symimpact.forced import structure_orbits
+    from symimpact.forced.orbits import structure_orbits
 
     s = beam_structure(**BEAM, points={"p": 1.0}, modes=2, zeta=0.02)
     ds = dampers(s, [{"name": "p", "at": "p", "m": 0.05, "gap": "10 mm", "e": 0.0}])

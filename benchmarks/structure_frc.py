@@ -1,11 +1,11 @@
 """The tip response of a 3-mode steel cantilever strip around its first mode, bare and with one
 and with two rigid impact dampers (the figure of issue 36's note): the bare curve is the modal
-receptance, each damped curve is :func:`symimpact.forced.structure_branch.structure_curve`'s —
+receptance, each damped curve is :func:`symimpact.forced.orbits.structure_branch.structure_curve`'s —
 periodic orbits continued in Ω with their stability (solid: stable, dashed: unstable) and a run
 from rest at every frequency of the grid (dots), which holds the motions no branch follows
 (chatter, sticking, motions that are not periodic) — and each curve's peak is located
-(:func:`symimpact.forced.structure_branch.curve_peak`, beside the bare structure's
-:func:`symimpact.forced.structure_branch.bare_peak`).  It prints the time each curve took: the
+(:func:`symimpact.forced.orbits.structure_branch.curve_peak`, beside the bare structure's
+:func:`symimpact.forced.orbits.structure_branch.bare_peak`).  It prints the time each curve took: the
 issue's target is a 200-frequency ``frf`` with stability within 60 s (``--points 200``).
 
 Run: ``PYTHONPATH=. python benchmarks/structure_frc.py [--out FIGURE.png] [--points N]``.
@@ -18,7 +18,7 @@ import time
 
 import numpy as np
 
-from symimpact.forced.structure_branch import bare_peak, curve_peak, structure_curve
+from symimpact.forced.orbits.structure_branch import bare_peak, curve_peak, structure_curve
 from symimpact.model.dampers import damper
 from symimpact.model.structure import beam_structure
 

@@ -32,7 +32,7 @@ from symimpact.forced import (
     steady_state,
     trace_branch,
 )
-from symimpact.forced.frf import frequency_response
+from symimpact.forced.orbits.frf import frequency_response
 from symimpact.maps.design import design_map, design_row
 from symimpact.model.system import ImpactSystem
 

@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 
 from symimpact.forced import Forcing, simulate_forced
-from symimpact.forced.coverage import LYAPUNOV_ZERO, attractor, lyapunov
-from symimpact.forced.frf import frequency_response
-from symimpact.forced.shooting import shoot
+from symimpact.forced.orbits.coverage import LYAPUNOV_ZERO, attractor, lyapunov
+from symimpact.forced.orbits.frf import frequency_response
+from symimpact.forced.orbits.shooting import shoot
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
@@ -100,7 +100,7 @@ def test_an_attractor_is_reported_with_its_least_period():
     attractor found is that orbit with period 1, its amplitude the closed form's (Eq. F3,
     independent of the simulation; to 1e-9, measured 1e-15)."""
     from symimpact.forced import periodic_orbits
-    from symimpact.forced.coverage import initial_states, least_period
+    from symimpact.forced.orbits.coverage import initial_states, least_period
 
     f = Forcing(F0=2.0, omega=39.0625)
     closed = [o for o in periodic_orbits(SYSTEM, f, E) if o.admissible and o.stable]
@@ -123,8 +123,8 @@ def test_the_band_s_end_intervals_are_refined():
     # the multi-start's refinement now runs and halves towards.  Over 14–15 rad/s with one
     # frequency (14.5, where every start lands elsewhere), the curve holds every period-3 motion
     # of the 200-frequency brute force's runs there (independent runs from its initial states)
-    from symimpact.forced.coverage import frequencies, initial_states
-    from symimpact.forced.frf import _traced
+    from symimpact.forced.orbits.coverage import frequencies, initial_states
+    from symimpact.forced.orbits.frf import _traced
 
     system = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, contact="linear", k1=1e6)
     e, forcing = 0.1594, Forcing(F0=0.2, omega=14.5)
@@ -147,7 +147,7 @@ def test_the_initial_states_spread_over_processes_land_as_in_one(monkeypatch):
     # attractors one process finds, in the same order, to the bit (28–31 rad/s holds chaotic,
     # periodic and chattering landings, so the refinement halves in every process; down to
     # 1/32 of the band here, which the forked workers inherit, to keep the test short)
-    from symimpact.forced import coverage
+    from symimpact.forced.orbits import coverage
 
     monkeypatch.setattr(coverage, "REFINE", 1.0 / 32)
     monkeypatch.setattr(coverage, "REFINE_IRREGULAR", 1.0 / 32)
@@ -167,7 +167,7 @@ def test_windows_beside_chaos_are_refined_finer():
     # of the multi-start: a 600-period run from the found orbit's state, the impact mass moved by
     # 1e-6 of the clearance, comes back to the same amplitude (1e-6: the orbit is stable, the
     # distance decays geometrically, to below 1e-9 of it over 580 periods)
-    from symimpact.forced.coverage import REFINE, REFINE_IRREGULAR, attractors
+    from symimpact.forced.orbits.coverage import REFINE, REFINE_IRREGULAR, attractors
 
     assert REFINE_IRREGULAR * 20.0 < 0.02 < REFINE * 20.0
     forcing = Forcing(F0=2.0, omega=30.0)

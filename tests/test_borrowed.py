@@ -1,4 +1,4 @@
-"""Borrowed views (:mod:`symimpact.forced._borrowed`): the same memory, shape and strides as the
+"""Borrowed views (:mod:`symimpact.forced.engine._borrowed`): the same memory, shape and strides as the
 array they borrow, in compiled code, for every layout the engines pass (1-D, 2-D, a row, an
 integer and a complex array); writes through one are seen through the other; the modal
 engine's configuration tuple keeps its scalars and borrows its arrays."""
@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from symimpact.forced._borrowed import borrowed, borrowed_config
+from symimpact.forced.engine._borrowed import borrowed, borrowed_config
 
 
 @njit

@@ -18,8 +18,8 @@ import pytest
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, shoot_from_rest, simulate_forced
-from symimpact.forced.continuation import branch_starts, monodromy, orbits_at
-from symimpact.forced.frf import frequency_response
+from symimpact.forced.orbits.continuation import branch_starts, monodromy, orbits_at
+from symimpact.forced.orbits.frf import frequency_response
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)

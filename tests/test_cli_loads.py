@@ -12,9 +12,9 @@ import pytest
 
 from symimpact.cli import main
 from symimpact.forced.contact_law import CompliantContact
-from symimpact.forced.loads import shock_record
-from symimpact.forced.random_response import random_statistics
-from symimpact.forced.shock_response import shock_response
+from symimpact.forced.loads.random_response import random_statistics
+from symimpact.forced.loads.records import shock_record
+from symimpact.forced.loads.shock_response import shock_response
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm", "--e", "0.6"]

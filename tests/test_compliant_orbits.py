@@ -26,7 +26,7 @@ from symimpact.forced import (
     shoot_from_rest,
     simulate_forced,
 )
-from symimpact.forced.frf import frequency_response
+from symimpact.forced.orbits.frf import frequency_response
 from symimpact.model.system import ImpactSystem
 
 # the system; k1 1e7 with c1 for e = 0.6 (Step 9), Hertz 1e9, cubic a, b of the same

@@ -16,7 +16,7 @@ from symimpact.generated import periodic_orbit as po
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, periodic_orbits
-from symimpact.forced.continuation import continue_orbit
+from symimpact.forced.orbits.continuation import continue_orbit
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_shooting import SYSTEM, E, _orbits, _quarter

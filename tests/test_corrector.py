@@ -1,5 +1,5 @@
-"""The continuation's compiled Newton corrector (:mod:`symimpact.forced._corrector`) against its
-Python steps (:func:`symimpact.forced.continuation._correct` with the compiled path switched
+"""The continuation's compiled Newton corrector (:mod:`symimpact.forced.orbits._corrector`) against its
+Python steps (:func:`symimpact.forced.orbits.continuation._correct` with the compiled path switched
 off): the same arithmetic, so the same curve, and the same refusals.  The README's system
 (M 1 kg, K 1000 N/m, C 0.5 N s/m, m 0.05 kg, d 20 mm, F0 2 N, rigid e 0.6)."""
 
@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from symimpact.forced import Forcing
-from symimpact.forced import continuation as cont
-from symimpact.forced._corrector import CONVERGED, FAILED, GRAZED, correct
-from symimpact.forced.frf import frequency_response
+from symimpact.forced.orbits import continuation as cont
+from symimpact.forced.orbits._corrector import CONVERGED, FAILED, GRAZED, correct
+from symimpact.forced.orbits.frf import frequency_response
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
@@ -45,7 +45,7 @@ def test_the_compiled_corrector_draws_the_python_corrector_s_curve(monkeypatch):
 
 
 def _problem_at(omega: float):
-    from symimpact.forced.shooting import settled_state, shoot
+    from symimpact.forced.orbits.shooting import settled_state, shoot
 
     f = FORCING.at(omega)
     rest, _ = settled_state(SYSTEM, f, E, warmup=300)

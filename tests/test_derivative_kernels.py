@@ -106,7 +106,7 @@ def test_the_shooting_chain_s_flight_matrix_is_the_derivative_of_the_flight():
     flight's value kernel in x0 and ẋ0 (steps 1e-6 of the state: error ~1e-10)."""
     from symimpact.generated import forced_flight as ff
 
-    from symimpact.forced import _rigid
+    from symimpact.forced.engine import _rigid
 
     M, K, C = 1.3, 1000.0, 0.7
     for tau in (1e-3, 0.05, 0.4, 2.0):

@@ -104,7 +104,10 @@ def test_a_compilation_is_announced_on_a_terminal_only(monkeypatch, capsys):
     assert err.startswith("symimpact ritz: compiling the simulation engine for this machine")
     assert "about 42 s of one core" in err and "Ctrl-C ends it" in err
     table = _notices.COMPILE_SECONDS
-    assert _notices.expected_seconds("symimpact.forced._modal") == table["symimpact.forced._modal"]
+    assert (
+        _notices.expected_seconds("symimpact.forced.engine._modal")
+        == table["symimpact.forced.engine._modal"]
+    )
     assert _notices.expected_seconds("symimpact.free._stepper") == table["symimpact.free._stepper"]
     assert _notices.expected_seconds("symimpact.forced._modal_x") is None  # a module, not a prefix
     assert _notices.expected_seconds("symimpact.model.units") is None

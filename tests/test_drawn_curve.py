@@ -22,8 +22,8 @@ from dataclasses import replace
 import numpy as np
 
 from symimpact.forced import Forcing
-from symimpact.forced.continuation import CHORD, orbit_between
-from symimpact.forced.frf import frequency_response
+from symimpact.forced.orbits.continuation import CHORD, orbit_between
+from symimpact.forced.orbits.frf import frequency_response
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)

@@ -1,5 +1,5 @@
 """Periodic orbits embedded in a chaotic motion (issue 33, items 4 and 5): the close returns of
-its Poincaré section are starts for shooting (:func:`symimpact.forced.coverage.close_returns`),
+its Poincaré section are starts for shooting (:func:`symimpact.forced.orbits.coverage.close_returns`),
 and the branch through such an unstable orbit leads to a stable window that the multi-start's
 frequencies step over.  Checked against closed forms (the logistic map's orbits) and against
 the simulation alone (a long run at a frequency inside the window settles on the orbit the
@@ -16,15 +16,15 @@ import pytest
 from symimpact.cli import main
 from symimpact.errors import SymimpactError
 from symimpact.forced import Forcing, shoot
-from symimpact.forced.continuation import orbits_at
-from symimpact.forced.coverage import (
+from symimpact.forced.orbits.continuation import orbits_at
+from symimpact.forced.orbits.coverage import (
     attractor,
     close_returns,
     initial_states,
     least_period,
     section_states,
 )
-from symimpact.forced.frf import _trace, frequency_response
+from symimpact.forced.orbits.frf import _trace, frequency_response
 from symimpact.model.system import ImpactSystem
 
 

@@ -24,8 +24,8 @@ import pytest
 
 from symimpact import budgets
 from symimpact.cli import main
-from symimpact.forced.record_cost import duration_text
-from symimpact.forced.sweep_response import envelope
+from symimpact.forced.loads.record_cost import duration_text
+from symimpact.forced.loads.sweep_response import envelope
 
 SYSTEM = ["--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--gap", "20 mm"]
 RANDOM = ["random", *SYSTEM, "--contact", "rigid", "--e", "0.6", "--force-psd", "2 N^2/Hz",
@@ -69,8 +69,8 @@ def test_durations_are_said_in_the_unit_a_person_reads(seconds, text):
 def test_a_shock_the_samples_cannot_resolve_is_refused_before_its_runs(capsys, monkeypatch):
     """A 1e6 s pulse sampled every 5000 s cannot hold the SRS's 50 Hz oscillators: refused
     without running the damper's engine (the engine, if reached, fails the test)."""
-    from symimpact.forced import record_cost as cost
-    from symimpact.forced import shock_response
+    from symimpact.forced.loads import record_cost as cost
+    from symimpact.forced.loads import shock_response
 
     def reached(*args, **kwargs):
         raise AssertionError("the run started before the refusal")
@@ -128,8 +128,8 @@ def test_a_compilation_during_a_timed_piece_is_not_counted(monkeypatch):
     3000 s; the piece is run again instead."""
     import numba
 
-    from symimpact.forced import record_cost
-    from symimpact.forced.loads import Record
+    from symimpact.forced.loads import record_cost
+    from symimpact.forced.loads.records import Record
     from symimpact.model.system import ImpactSystem
 
     calls = []

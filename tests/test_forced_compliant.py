@@ -114,7 +114,7 @@ def test_a_run_past_its_work_budget_stops_and_says_so(monkeypatch):
     """The contacts' work budget (evaluations of the equations of motion) and the length cap in
     natural periods stop a run that would take hours, in one line, instead of hanging."""
     from symimpact.errors import SymimpactError
-    from symimpact.forced import _compliant
+    from symimpact.forced.engine import _compliant
 
     s = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, k_hz=1e9, contact="hertz")
     f = Forcing(F0=2.0, omega=36.0)

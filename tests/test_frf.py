@@ -14,8 +14,8 @@ import pytest
 
 from symimpact.cli import main
 from symimpact.forced.forcing import Forcing
-from symimpact.forced.frf import frequency_response
-from symimpact.forced.peak import linear_amplitude as _linear_amplitude
+from symimpact.forced.orbits.frf import frequency_response
+from symimpact.forced.orbits.peak import linear_amplitude as _linear_amplitude
 from symimpact.forced.simulation import simulate_forced
 from symimpact.model.system import ImpactSystem
 
@@ -88,7 +88,7 @@ def test_bad_bands_are_one_line(capsys, extra, parameter):
 def test_jumps_reach_the_curve(capsys, monkeypatch):
     """``--jumps N`` caps the curve's runs from branch ends (the option is passed on, not
     dropped: the call is intercepted before any run)."""
-    import symimpact.forced.frf as frf
+    import symimpact.forced.orbits.frf as frf
 
     seen = {}
 
@@ -231,8 +231,8 @@ def test_a_point_located_twice_is_listed_once_within_the_contacts_accuracy():
     """The fold located on two overlapping branches of the issue's system with the linear law
     (29.6542732 and 29.6542364 rad/s, 1.2e-6 apart; amplitudes 27.6948 and 27.6951 mm) is one
     point at a compliant contact's 1e-5, two at rigid impacts' 1e-6."""
-    from symimpact.forced.continuation import Bifurcation, Branch
-    from symimpact.forced.frf import _drop_repeated_bifurcations
+    from symimpact.forced.orbits.continuation import Bifurcation, Branch
+    from symimpact.forced.orbits.frf import _drop_repeated_bifurcations
 
     def branches():
         return [Branch(bifurcations=[Bifurcation("fold", 29.65427318685053, 0.027694780535253)]),

@@ -14,7 +14,7 @@ import pytest
 
 from symimpact.errors import MethodNotApplicable, ParameterError
 from symimpact.forced import CompliantContact, Forcing, shoot, simulate_forced
-from symimpact.forced.continuation import (
+from symimpact.forced.orbits.continuation import (
     continue_orbit,
     orbit_beside_grazing,
     orbits_at,

@@ -11,8 +11,9 @@ import math
 import numpy as np
 import pytest
 
-from symimpact.forced import Forcing, _rigid, simulate_forced
-from symimpact.forced.frf import frequency_response
+from symimpact.forced import Forcing, simulate_forced
+from symimpact.forced.engine import _rigid
+from symimpact.forced.orbits.frf import frequency_response
 from symimpact.forced.simulation import impact_counts
 from symimpact.model.system import ImpactSystem
 

@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 from symimpact.forced import Forcing, shoot, simulate_forced
-from symimpact.forced.continuation import continue_orbit, orbits_at
-from symimpact.forced.coverage import attractor
-from symimpact.forced.frf import frequency_response
+from symimpact.forced.orbits.continuation import continue_orbit, orbits_at
+from symimpact.forced.orbits.coverage import attractor
+from symimpact.forced.orbits.frf import frequency_response
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)

@@ -3,7 +3,11 @@ imports flow that way only: no module imports from a folder after its own (read 
 import statements, lazy ones inside functions included).  ``errors``, ``io``, ``_interrupt``,
 ``_pool`` (local worker processes, for the maps and a curve's multi-start), ``budgets`` (the forced computations' work budgets, which the command line reads without
 importing the forced package), ``export`` and the generated kernels serve every folder and import
-none of them."""
+none of them.
+
+Inside forced/ the same holds for its folders, engine → (forced/'s own modules) → orbits → loads:
+the compiled engine imports nothing that checks or analyses its runs, the orbits nothing of the
+sampled loads."""
 
 from __future__ import annotations
 
@@ -17,6 +21,11 @@ ROOT = Path(__file__).resolve().parents[1]
 PKG = ROOT / "src" / "symimpact"
 LAYERS = ["model", "free", "forced", "maps", "report", "cli"]
 SHARED = {"errors", "io", "_interrupt", "_notices", "_pool", "budgets", "export", "generated"}
+
+
+#: forced/'s folders in their order; "" is forced/'s own modules (the forcing, the contact laws,
+#: the checked simulations on the engine).
+FORCED = ["engine", "", "orbits", "loads"]
 
 
 def _rank(part: str) -> int:
@@ -46,6 +55,65 @@ def _layer(path: Path) -> str:
 MODULES = sorted(
     p for p in PKG.rglob("*.py") if "generated" not in p.parts and p != PKG / "__init__.py"
 )
+
+
+def _forced_imports(path: Path):
+    """(line, forced/'s folder imported, "" for its own modules) of every import of a module of
+    forced/ in ``path``, relative or absolute."""
+    rel = path.relative_to(PKG).parts
+    package = ["symimpact", *rel[:-1]]
+    for node in ast.walk(ast.parse(path.read_text())):
+        if not isinstance(node, ast.ImportFrom):
+            continue
+        if node.level > 0:
+            base = package[: len(package) - (node.level - 1)]
+            target = base + (node.module.split(".") if node.module else [])
+        else:
+            target = (node.module or "").split(".")
+        if target[:2] != ["symimpact", "forced"]:
+            continue
+        for alias in node.names:
+            full = target[2:] if len(target) > 2 else [alias.name]
+            yield node.lineno, full[0] if full[0] in FORCED else ""
+
+
+def _forced_folder(path: Path) -> str:
+    rel = path.relative_to(PKG / "forced").parts
+    return rel[0] if len(rel) > 1 else ""
+
+
+FORCED_MODULES = [p for p in MODULES if p.is_relative_to(PKG / "forced")]
+
+
+@pytest.mark.parametrize("path", FORCED_MODULES, ids=lambda p: str(p.relative_to(PKG)))
+def test_forced_imports_flow_down_its_folders(path):
+    folder = _forced_folder(path)
+    for line, part in _forced_imports(path):
+        assert FORCED.index(part) <= FORCED.index(folder), (
+            f"{path.relative_to(PKG)}:{line} imports from forced/{part or '(its own modules)'}, "
+            f"which comes after forced/{folder or '(its own modules)'}"
+        )
+
+
+def test_the_forced_checker_sees_an_upward_import(monkeypatch):
+    """The check above can fail: the engine importing the continuation is caught, and so is a
+    relative import of forced/'s own modules from the engine."""
+    fake = PKG / "forced" / "engine" / "_modal.py"
+    text = "from ..orbits import continuation\nfrom ..simulation import Steady\n"
+    monkeypatch.setattr(Path, "read_text", lambda self, *a, **k: text)
+    assert [part for _, part in _forced_imports(fake)] == ["orbits", ""]
+    assert _forced_folder(fake) == "engine"
+
+
+def test_no_module_of_forced_is_over_its_size():
+    """forced/ shows its pipeline in modules of readable size: none over 1 500 lines but the
+    N-mode engine, which one engine for every load replaces (issue 79)."""
+    over = {
+        p.relative_to(PKG).as_posix(): len(p.read_text().splitlines())
+        for p in FORCED_MODULES
+        if len(p.read_text().splitlines()) > 1500
+    }
+    assert set(over) <= {"forced/engine/_modal.py"}, over
 
 
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))

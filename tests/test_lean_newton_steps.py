@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 from symimpact import _interrupt
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, simulate_forced
-from symimpact.forced.shooting import monodromy, stroboscopic_map
+from symimpact.forced.orbits.shooting import monodromy, stroboscopic_map
 from symimpact.forced.simulation import _ledger
 from symimpact.model.system import ImpactSystem
 

@@ -16,10 +16,11 @@ import pytest
 
 from symimpact.cli import main
 from symimpact.errors import ParameterError
-from symimpact.forced import Forcing, _rigid, simulate_forced
+from symimpact.forced import Forcing, simulate_forced
 from symimpact.forced.contact_law import MaterialRestitution
-from symimpact.forced.loads import Record
-from symimpact.forced.record_response import damper_response
+from symimpact.forced.engine import _rigid
+from symimpact.forced.loads.record_response import damper_response
+from symimpact.forced.loads.records import Record
 from symimpact.model.derived_contact import derived_contact
 from symimpact.model.system import ImpactSystem
 

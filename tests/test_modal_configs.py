@@ -8,8 +8,8 @@ import itertools
 
 import numpy as np
 
-from symimpact.forced import _modal
-from symimpact.forced._rigid import N_PARAMS, P_C, P_K, P_M, P_PHI, P_W
+from symimpact.forced.engine import _modal
+from symimpact.forced.engine._rigid import N_PARAMS, P_C, P_K, P_M, P_PHI, P_W
 
 
 def test_each_pattern_has_its_own_code():

@@ -14,8 +14,8 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from symimpact.forced import _modal
-from symimpact.forced._rigid import (
+from symimpact.forced.engine import _modal
+from symimpact.forced.engine._rigid import (
     N_PARAMS,
     P_C,
     P_F0,

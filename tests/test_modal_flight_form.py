@@ -11,8 +11,8 @@ import math
 import numpy as np
 import pytest
 
-from symimpact.forced import _modal
-from symimpact.forced._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB, _xvf
+from symimpact.forced.engine import _modal
+from symimpact.forced.engine._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB, _xvf
 
 OMEGA = 52.0  # rad/s, every mode driven at it
 

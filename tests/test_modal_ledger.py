@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from symimpact.forced import _modal
-from symimpact.forced._rigid import (
+from symimpact.forced.engine import _modal
+from symimpact.forced.engine._rigid import (
     N_PARAMS,
     P_C,
     P_F0,

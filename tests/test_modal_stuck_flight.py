@@ -19,8 +19,8 @@ from scipy.integrate import quad
 from scipy.linalg import expm
 from scipy.optimize import brentq
 
-from symimpact.forced import _modal
-from symimpact.forced._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
+from symimpact.forced.engine import _modal
+from symimpact.forced.engine._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
 
 W, PHASE = 2 * math.pi * 7.0, 0.4
 SHAPE = np.array([[1.0, -0.7, 0.4]])  # the stuck mass's point

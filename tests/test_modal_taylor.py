@@ -17,8 +17,8 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from symimpact.forced import _modal
-from symimpact.forced._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
+from symimpact.forced.engine import _modal
+from symimpact.forced.engine._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
 
 W, PHASE = 2 * math.pi * 7.0, 0.4
 SHAPE = np.array([[1.0, -0.7, 0.4], [0.3, 1.0, -0.2]])

@@ -1,5 +1,5 @@
 """∂P/∂p of the rigid stroboscopic map carried along the monodromy's chain (issue 38, item 1):
-:func:`symimpact.forced.shooting.monodromy` with ``parameter`` returns a fifth column, built from
+:func:`symimpact.forced.orbits.shooting.monodromy` with ``parameter`` returns a fifth column, built from
 the generated derivative kernels of the flight (in F0, X_b, Ω and the phase), of the impact law (in
 e), the wall's move with d, the chatter's Δ and the end of the k periods.
 
@@ -21,8 +21,8 @@ import pytest
 
 from symimpact.errors import MethodNotApplicable
 from symimpact.forced import Forcing
-from symimpact.forced import continuation as cont
-from symimpact.forced.shooting import monodromy, shoot_from_rest
+from symimpact.forced.orbits import continuation as cont
+from symimpact.forced.orbits.shooting import monodromy, shoot_from_rest
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="hertz", k_hz=1000.0)

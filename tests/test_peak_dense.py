@@ -3,7 +3,7 @@ stable periodic motion that simulation alone finds anywhere in the band exceeds 
 located peak.  On benchmark 6's band the resonance of the README system breaks into short
 branches of 6 to 70 impacts a period, 0.01–0.13 rad/s long; the highest of them (102 mm, a
 chattering orbit) lies between the curve's own multi-start frequencies and is reached only by
-the jumps from the ends of its neighbours (:func:`symimpact.forced.frf._jump_from`)."""
+the jumps from the ends of its neighbours (:func:`symimpact.forced.orbits.frf._jump_from`)."""
 
 from __future__ import annotations
 
@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from symimpact.forced import Forcing, simulate_forced
-from symimpact.forced.coverage import attractors
-from symimpact.forced.frf import frequency_response
+from symimpact.forced.orbits.coverage import attractors
+from symimpact.forced.orbits.frf import frequency_response
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
@@ -62,10 +62,10 @@ def test_the_short_branches_no_stable_end_leads_to_are_traced(curve, found):
     """The brute force's stable 4-impact period-1 orbits at 29.38–29.68 rad/s (22.6–28.0 mm)
     lie on a branch bounded by a fold and by corrector failures that no stable end and no loss
     of stability of another branch leads to; the refined multi-start
-    (:func:`symimpact.forced.coverage.attractors`, ``refine``) and the runs at branch ends
-    (:func:`symimpact.forced.frf._start_at_ends`) start it.  Without them none of the four is on
+    (:func:`symimpact.forced.orbits.coverage.attractors`, ``refine``) and the runs at branch ends
+    (:func:`symimpact.forced.orbits.frf._start_at_ends`) start it.  Without them none of the four is on
     the curve (measured on 8d142e9: 108 of the band's 127 periodic attractors traced)."""
-    from symimpact.forced.frf import _traced
+    from symimpact.forced.orbits.frf import _traced
 
     here = [a for a in found if a.kind == "periodic" and 29.3 < a.omega < 29.7]
     assert len(here) >= 4, here
@@ -78,12 +78,12 @@ def test_the_short_branches_no_stable_end_leads_to_are_traced(curve, found):
 def test_the_curve_holds_the_dense_brute_force_s_periodic_attractors(curve, found):
     """Coverage measured against brute force at 200 frequencies that are not the curve's own:
     the share of the dense multi-start's periodic attractors (of the periods a curve traces,
-    ≤ MAX_SWITCH_PERIODS) that lie on a traced branch (:func:`symimpact.forced.frf._traced`:
+    ≤ MAX_SWITCH_PERIODS) that lie on a traced branch (:func:`symimpact.forced.orbits.frf._traced`:
     Newton from the branch lands on the orbit's amplitude to 1e-7).  Measured 125 of 128 (the
     three missed lie on stable windows 0.003–0.07 rad/s wide); 117 of 128 before the refined
     multi-start and the halved steps beside near-grazing orbits.  Issue 33's target is 99 %; the
     bound is the measured share less one attractor."""
-    from symimpact.forced.frf import MAX_SWITCH_PERIODS, _traced
+    from symimpact.forced.orbits.frf import MAX_SWITCH_PERIODS, _traced
 
     shot = [a for a in found if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS]
     on = [_traced(curve.branches, SYSTEM, FORCING.at(a.omega), E, a.omega, a.amplitude,

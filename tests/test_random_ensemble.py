@@ -7,7 +7,7 @@ import pandas as pd
 import pytest
 
 from symimpact.errors import ParameterError
-from symimpact.forced.random_response import random_statistics
+from symimpact.forced.loads.random_response import random_statistics
 from symimpact.maps.ensemble import random_ensemble
 from symimpact.model.system import ImpactSystem
 

@@ -1,4 +1,4 @@
-"""Random vibration with the impact damper (symimpact.forced.random_response), checked against
+"""Random vibration with the impact damper (symimpact.forced.loads.random_response), checked against
 linear random-vibration theory (the damper out of reach) and against the Gibbs density (elastic
 impacts exchange energy but dissipate none, so the primary's displacement and velocity keep
 their linear distributions, whatever the clearance)."""
@@ -8,7 +8,7 @@ import pytest
 from scipy import integrate
 
 from symimpact.errors import ParameterError
-from symimpact.forced.random_response import (
+from symimpact.forced.loads.random_response import (
     random_statistics,
     realisation,
     realisation_seed,

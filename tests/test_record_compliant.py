@@ -1,4 +1,4 @@
-"""A compliant contact under a sampled load (symimpact.forced._record_compliant): against SciPy's
+"""A compliant contact under a sampled load (symimpact.forced.engine._record_compliant): against SciPy's
 DOP853 on the same record (the load joined by straight lines between its samples, the contact
 laws of Eq. 8, 9, 35 and F4 written out here), restarted at every sample and at every contact
 onset and exit (where the force law has a kink), and the energy ledger that closes."""
@@ -13,8 +13,8 @@ from scipy.integrate import solve_ivp
 
 from symimpact.errors import ParameterError
 from symimpact.forced.contact_law import CompliantContact
-from symimpact.forced.loads import Record
-from symimpact.forced.record_response import damper_response
+from symimpact.forced.loads.record_response import damper_response
+from symimpact.forced.loads.records import Record
 from symimpact.model.system import ImpactSystem
 
 BASE = {"M": 1.0, "K": 1000.0, "C": 0.5, "m": 0.05, "gap": 0.02}

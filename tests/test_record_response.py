@@ -1,4 +1,4 @@
-"""The primary with its impact damper under a sampled load (symimpact.forced.record_response):
+"""The primary with its impact damper under a sampled load (symimpact.forced.loads.record_response):
 checked against a brute-force integration of the same record, against the harmonic engine on a
 finely sampled sine, against the primary alone when the damper is out of reach, and by its energy
 ledger."""
@@ -9,9 +9,9 @@ from scipy.integrate import solve_ivp
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, simulate_forced
-from symimpact.forced.loads import Record, random_record, shock_record
-from symimpact.forced.record_flight import primary_response
-from symimpact.forced.record_response import damper_response
+from symimpact.forced.loads.record_flight import primary_response
+from symimpact.forced.loads.record_response import damper_response
+from symimpact.forced.loads.records import Record, random_record, shock_record
 from symimpact.forced.simulation import state_at
 from symimpact.model.system import ImpactSystem
 
@@ -149,7 +149,7 @@ def test_a_release_at_a_tangency_does_not_loop():
     zero speed, 20 million times without time moving on.  The release now needs the wall to pull
     by more than 1e-12 of the pair's acceleration scale; the record runs through, its ledger
     closed."""
-    from symimpact.forced.random_response import default_settle, realisation_seed
+    from symimpact.forced.loads.random_response import default_settle, realisation_seed
 
     system = ImpactSystem(M=1.0, K=100.0, C=1.0, m=0.25, gap=0.009, contact="linear", k1=122.7)
     n = int(np.ceil(default_settle(system) / 0.005 - 1e-9)) + 20000

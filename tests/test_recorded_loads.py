@@ -9,9 +9,9 @@ from scipy import signal
 
 from symimpact.cli import main
 from symimpact.errors import ParameterError
-from symimpact.forced.loads import kanai_tajimi, read_record, shock_record
-from symimpact.forced.random_response import random_statistics
-from symimpact.forced.shock_response import shock_response
+from symimpact.forced.loads.random_response import random_statistics
+from symimpact.forced.loads.records import kanai_tajimi, read_record, shock_record
+from symimpact.forced.loads.shock_response import shock_response
 from symimpact.maps.ensemble import random_ensemble
 from symimpact.model.system import ImpactSystem
 

@@ -145,8 +145,8 @@ def test_bad_requests_are_one_line_refusals():
 # --- the curve in another response (frf --response) ------------------------------------------
 @pytest.fixture(scope="module")
 def force_curve():
-    from symimpact.forced.frf import frequency_response
-    from symimpact.forced.response_curve import response_curve
+    from symimpact.forced.orbits.frf import frequency_response
+    from symimpact.forced.orbits.response_curve import response_curve
 
     f = Forcing(F0=2.0, omega=33.0)
     w = np.arange(33.0, 36.0001, 0.1)

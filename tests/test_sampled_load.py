@@ -15,8 +15,13 @@ from scipy.integrate import solve_ivp
 from symimpact.generated import sampled_load as sl
 
 from symimpact.errors import ParameterError
-from symimpact.forced.loads import random_record, shock_record, sweep_frequency, sweep_record
-from symimpact.forced.record_flight import primary_response, srs
+from symimpact.forced.loads.record_flight import primary_response, srs
+from symimpact.forced.loads.records import (
+    random_record,
+    shock_record,
+    sweep_frequency,
+    sweep_record,
+)
 from symimpact.model.system import ImpactSystem
 
 #: A 5 Hz primary, ζ = 0.02: M 1 kg, K = (2π·5)² N/m.

@@ -1,5 +1,5 @@
-"""Shocks and sine sweeps on the primary with its impact damper (symimpact.forced.shock_response,
-symimpact.forced.sweep_response): the SRS of a moving base against the SRS of its acceleration,
+"""Shocks and sine sweeps on the primary with its impact damper (symimpact.forced.loads.shock_response,
+symimpact.forced.loads.sweep_response): the SRS of a moving base against the SRS of its acceleration,
 and slow sweeps against the steady responses they pass through."""
 
 import numpy as np
@@ -7,11 +7,11 @@ import pytest
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, simulate_forced
-from symimpact.forced.loads import shock_record
-from symimpact.forced.periodic import periodic_orbits
-from symimpact.forced.record_flight import srs
-from symimpact.forced.shock_response import base_motion, motion_srs, shock_response
-from symimpact.forced.sweep_response import sweep_response
+from symimpact.forced.loads.record_flight import srs
+from symimpact.forced.loads.records import shock_record
+from symimpact.forced.loads.shock_response import base_motion, motion_srs, shock_response
+from symimpact.forced.loads.sweep_response import sweep_response
+from symimpact.forced.orbits.periodic import periodic_orbits
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)

@@ -20,7 +20,7 @@ from symimpact.forced import (
     shoot_from_rest,
     simulate_forced,
 )
-from symimpact.forced.periodic import _flight
+from symimpact.forced.orbits.periodic import _flight
 from symimpact.model.system import ImpactSystem
 
 SYSTEM = ImpactSystem(M=1, K=1000, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)

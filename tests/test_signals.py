@@ -112,7 +112,7 @@ EARLIEST, WINDOW = 0.3, 3.2
 #: rest is room for a machine busy with other work.
 BOUND = 3.0
 #: Lines a command prints on its way that are not its end: a progress bar, the estimate of a
-#: sampled load's run (symimpact.forced.record_cost) and a compilation's notice.
+#: sampled load's run (symimpact.forced.loads.record_cost) and a compilation's notice.
 PROGRESS = re.compile(r"\|\s*\d+/\d+ \[|: about .* on this machine \(|: compiling the")
 EXPECTED = {
     signal.SIGINT: (130, "interrupted"),

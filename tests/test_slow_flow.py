@@ -13,7 +13,7 @@ import pytest
 
 from symimpact.errors import MethodNotApplicable, ParameterError
 from symimpact.forced import Forcing, periodic_orbits
-from symimpact.forced.slow_flow import backbone, best_clearance, slow_flow_responses
+from symimpact.forced.orbits.slow_flow import backbone, best_clearance, slow_flow_responses
 from symimpact.model.system import ImpactSystem
 
 E = 0.6

@@ -154,7 +154,7 @@ def test_the_carried_monodromy_on_moving_supports_is_the_map_s_central_differenc
     (the saltation's ∂h/∂t = −s·ẋ_b and the jump's ∂J/∂t) against central differences of the
     period map (1e-5 of the matrix's scale: the differences' truncation and rounding at a step
     of 1e-6 of the state)."""
-    from symimpact.forced.structure_orbits import stroboscopic_map
+    from symimpact.forced.orbits.structure_orbits import stroboscopic_map
 
     s = structure_from_dict({"fe": FE | {"zeta": 0.05}})
     ds = [damper(s, "d", "0", 0.1, 1.0, 0.6)]
@@ -245,7 +245,7 @@ def test_the_curve_on_a_shaker_with_dampers_out_of_reach_is_the_transmissibility
     |T(tip, Ω)|·A_b/Ω², the closed form (1e-9: the shot orbit's residual is 1e-11 of its
     state), and the located peak is the bare structure's (1e-7 of the amplitude: both are
     Brent maxima of the same smooth curve, one over shot orbits, one over the closed form)."""
-    from symimpact.forced.structure_branch import bare_peak, curve_peak, structure_curve
+    from symimpact.forced.orbits.structure_branch import bare_peak, curve_peak, structure_curve
     from symimpact.model.structure_model import model_from_dict
 
     model = model_from_dict(BEAM_FILE | {"dampers": [dict(BEAM_FILE["dampers"][0], gap="1 m")]})
@@ -272,7 +272,7 @@ def test_the_curve_s_runs_from_rest_wait_for_the_slowest_mode_s_transient():
     damper out of reach its largest tip displacement is the closed-form steady amplitude
     |T(tip, Ω)|·X_b to 1.5e-6 (from rest the transient starts as minus the steady motion, about
     the steady amplitude near resonance; 1e-6 of it is left, measured up to 9e-7)."""
-    from symimpact.forced.structure_branch import KEPT, SETTLED, structure_curve
+    from symimpact.forced.orbits.structure_branch import KEPT, SETTLED, structure_curve
     from symimpact.model.structure_model import model_from_dict
 
     model = model_from_dict(BEAM_FILE | {"dampers": [dict(BEAM_FILE["dampers"][0], gap="1 m")]})
@@ -296,7 +296,7 @@ def test_the_curve_s_runs_from_rest_on_two_processes_give_the_same_curve():
     worker processes and continues the branches here: the same curve as
     :func:`structure_curve` in one process, to the bit (each run is the same computation), and
     its runs' amplitudes are the closed-form transmissibility's (1.5e-6, as above)."""
-    from symimpact.forced.structure_branch import structure_curve
+    from symimpact.forced.orbits.structure_branch import structure_curve
     from symimpact.maps.structure_curve import structure_curve_map
     from symimpact.model.structure_model import model_from_dict
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symimpact.forced.structure_branch import (
+from symimpact.forced.orbits.structure_branch import (
     NEIMARK_SACKER,
     PERIOD_DOUBLING,
     structure_branch,
@@ -97,8 +97,8 @@ def test_a_grazing_is_reported_with_the_contacts_on_both_sides(chain):
 
 
 def test_the_doubled_branch_holds_the_attractor_a_brute_force_run_settles_on(chain):
-    from symimpact.forced.structure_branch import doubled_branch
-    from symimpact.forced.structure_orbits import shoot_structure
+    from symimpact.forced.orbits.structure_branch import doubled_branch
+    from symimpact.forced.orbits.structure_orbits import shoot_structure
 
     model, args, start = chain
     parent = structure_branch(*args, 0.66, 0.75, start, 1, model.stops)

@@ -1,6 +1,6 @@
 """Compliant impact dampers on a structure of several modes (issue 36: "K impact dampers, each
 with ... rigid with e, or any compliant law"): the contact phases integrated over the whole
-state (:mod:`symimpact.forced._structure_contact`) against what does not share that code — the
+state (:mod:`symimpact.forced.engine._structure_contact`) against what does not share that code — the
 one-mode engine's compliant contact (:func:`simulate_forced`, its own Dormand–Prince steps on the
 paper's two equations), SciPy's DOP853 on the modal equations with event location, one damper of
 twice the mass and twice the law — and against the energy ledger."""
@@ -15,7 +15,7 @@ from scipy.integrate import solve_ivp
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, simulate_forced
-from symimpact.forced.structure_orbits import shoot_structure
+from symimpact.forced.orbits.structure_orbits import shoot_structure
 from symimpact.forced.structure_response import simulate_structure
 from symimpact.model.dampers import dampers
 from symimpact.model.structure import beam_structure, structure_from_dict

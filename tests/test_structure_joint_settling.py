@@ -1,4 +1,4 @@
-"""Two masses that settle on their walls together (:func:`symimpact.forced._modal._returns_at_once`).
+"""Two masses that settle on their walls together (:func:`symimpact.forced.engine._modal._returns_at_once`).
 
 The case: a steel cantilever of 1 m, 40 mm × 10 mm (Hermite elements, the tests' own model),
 reduced to 10 modes (up to 2.1 kHz), with a 50 g damper of 10 mm at the tip and a 30 g damper of
@@ -19,9 +19,9 @@ import math
 import numpy as np
 import pytest
 
-from symimpact.forced import _rigid
-from symimpact.forced._modal import E_DAMPER, _config, _returns_at_once
-from symimpact.forced._rigid import E_KIND, E_LOST, E_T, E_VREL, KIND_IMPACT
+from symimpact.forced.engine import _rigid
+from symimpact.forced.engine._modal import E_DAMPER, _config, _returns_at_once
+from symimpact.forced.engine._rigid import E_KIND, E_LOST, E_T, E_VREL, KIND_IMPACT
 from symimpact.forced.structure_response import simulate_structure
 from symimpact.model.dampers import dampers
 from symimpact.model.structure import fe_structure

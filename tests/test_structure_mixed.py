@@ -4,7 +4,7 @@ attachment point and contact law; plus stops"): the rigid damper flies through t
 damper's contact phases and meets its walls there by Eq. F7, its chatter accumulating and its
 mass riding on its point there as in the modal engine; a linear stop's spring and dashpot act in
 them, its onsets and exits located, and a rigid stop's point takes Newton's law there
-(:mod:`symimpact.forced._structure_contact`).  Checked against what does not share that code —
+(:mod:`symimpact.forced.engine._structure_contact`).  Checked against what does not share that code —
 SciPy's DOP853 on the modal equations, the contact forces continuous and the rigid impacts,
 closures and releases applied at located events — and against the energy ledger, a rigid damper
 out of reach, and the one-line refusal where a point would be held on a rigid stop during a

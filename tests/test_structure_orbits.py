@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symimpact.forced.structure_orbits import shoot_structure, stroboscopic_map
+from symimpact.forced.orbits.structure_orbits import shoot_structure, stroboscopic_map
 from symimpact.forced.structure_response import simulate_structure
 from symimpact.model.dampers import damper
 from symimpact.model.stops import stop

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from symimpact.errors import ParameterError
-from symimpact.forced.structure_branch import (
+from symimpact.forced.orbits.structure_branch import (
     NEIMARK_SACKER,
     PERIOD_DOUBLING,
     parameter_branch,

@@ -1,5 +1,5 @@
 """A structure of several modes carrying impact dampers (issue 36): the compiled modal engine
-(:mod:`symimpact.forced._modal`, Eq. F1 per mode, Eq. F7 at each impact) against what does not
+(:mod:`symimpact.forced.engine._modal`, Eq. F1 per mode, Eq. F7 at each impact) against what does not
 share its closed forms or its event search — SciPy's DOP853 on the modal equations with event
 location, the one-mode engine of :func:`simulate_forced` for one mode of shape 1 — and against its
 own energy ledger."""
@@ -181,7 +181,7 @@ def test_the_stuck_structure_flies_as_its_equations_say(X_b):
     over three forcing periods (1e-9 of the motion's scale; the integration's rtol 1e-13).  On
     supports moving by x_b = X_b cos(Ωt + φ) the modes (relative to them) also carry the beam's
     inertia −MᵢΓᵢẍ_b and the stuck mass's, which rides at x_b + φᵀq: −mφẍ_b."""
-    from symimpact.forced import _modal
+    from symimpact.forced.engine import _modal
     from symimpact.forced.structure_response import _modal_parameters
 
     s = _beam(modes=3, zeta=0.02)

@@ -3,7 +3,7 @@ continuation through sticking or chatter"; issue 33, item 3): Newton on the stro
 the monodromy the engine of several modes carries through the accumulation point, the plastic
 closure, the sticking phase and the release, against what does not share it — the one-mode
 engine's own chain through the same events from its event log (:func:`symimpact.forced.monodromy`),
-the map's central differences (:func:`symimpact.forced.structure_orbits.differenced_monodromy`)
+the map's central differences (:func:`symimpact.forced.orbits.structure_orbits.differenced_monodromy`)
 and long simulations from rest."""
 
 from __future__ import annotations
@@ -13,9 +13,10 @@ import math
 import numpy as np
 import pytest
 
-from symimpact.forced import Forcing, monodromy, shoot_from_rest, structure_orbits
-from symimpact.forced.structure_branch import structure_branch
-from symimpact.forced.structure_orbits import (
+from symimpact.forced import Forcing, monodromy, shoot_from_rest
+from symimpact.forced.orbits import structure_orbits
+from symimpact.forced.orbits.structure_branch import structure_branch
+from symimpact.forced.orbits.structure_orbits import (
     differenced_monodromy,
     shoot_structure,
     stroboscopic_map,

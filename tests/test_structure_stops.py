@@ -1,5 +1,5 @@
 """Stops on a structure of several modes (issue 36): walls fixed to the ground with a linear
-contact law, in the engine of several modes (:mod:`symimpact.forced._modal`), against a
+contact law, in the engine of several modes (:mod:`symimpact.forced.engine._modal`), against a
 brute-force integration of the physical equations (DOP853 restarted at every contact onset and
 exit) written here from the finite-element matrices."""
 

@@ -35,8 +35,8 @@ from hypothesis import strategies as st
 
 from symimpact.cli import main
 from symimpact.errors import ParameterError
-from symimpact.forced.continuation import _det
-from symimpact.forced.shooting import condition
+from symimpact.forced.orbits.continuation import _det
+from symimpact.forced.orbits.shooting import condition
 from symimpact.io import IN_PROGRESS, remove_in_progress, staged_folder
 from symimpact.model.materials import material
 from symimpact.model.structure import read_structure
@@ -309,7 +309,7 @@ def test_random_intervals_stay_in_their_domain():
     (e^(±h) against 1 ± h, the logarithms' spread against the coefficient of variation), so
     within 3h² (h is 10–17 % here under seeds 1–5, and the
     measured differences 0.05–1.4 h²)."""
-    from symimpact.forced.random_response import random_statistics
+    from symimpact.forced.loads.random_response import random_statistics
     from symimpact.model.system import ImpactSystem
 
     system = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
@@ -369,8 +369,8 @@ def test_the_srs_holds_the_residual_response_of_a_shock():
     the pulse followed by 1 s of rest (at 5 Hz the maximax over the pulse alone had been 71 %
     low).  Bound 2e-4: the peaks read at the samples (dt = td/2000: (2πf·dt)²/8 ≤ 4e-5 at
     500 Hz), the residual's grid (7.5e-5) and the reference's (3e-5)."""
-    from symimpact.forced.loads import followed_by_rest, shock_record
-    from symimpact.forced.shock_response import shock_response
+    from symimpact.forced.loads.records import followed_by_rest, shock_record
+    from symimpact.forced.loads.shock_response import shock_response
     from symimpact.model.system import ImpactSystem
 
     fp, zp, td, peak = 50.0, 0.02, 0.011, 20 * G
@@ -416,7 +416,7 @@ def test_a_sweep_at_the_default_sampling_has_the_exact_chirps_peak():
     the resonance and the samples alone missed up to 0.7 % of a period's peak; now 1e-4."""
     from scipy.integrate import solve_ivp
 
-    from symimpact.forced.sweep_response import sweep_response
+    from symimpact.forced.loads.sweep_response import sweep_response
     from symimpact.model.system import ImpactSystem
 
     system = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=1e3, contact="linear", k1=1e6)
@@ -484,7 +484,7 @@ def test_coverage_claims_the_lower_of_its_two_samples():
     """The share a curve prints is the lower of the grid's and the random check's: a check that
     finds one periodic attractor in two off the branches makes the share 0.5, whatever the
     grid's; the JSON states the frequencies, the starts and the check's seed."""
-    from symimpact.forced.coverage import CHECK_SEED, Attractor, Coverage, check_frequencies
+    from symimpact.forced.orbits.coverage import CHECK_SEED, Attractor, Coverage, check_frequencies
 
     def periodic(w):
         return Attractor(w, 0.01, "periodic", 1, 2.0, (0.0, 0.0, 0.0, 0.0), True)
@@ -504,8 +504,8 @@ def test_coverage_claims_the_lower_of_its_two_samples():
 
 
 def test_an_srs_of_no_frequency_is_refused():
-    from symimpact.forced.loads import shock_record
-    from symimpact.forced.record_flight import srs
+    from symimpact.forced.loads.record_flight import srs
+    from symimpact.forced.loads.records import shock_record
 
     record = shock_record("half-sine", 1.0, 0.01, 0.1, 1e-4, "base-acceleration")
     with pytest.raises(ParameterError, match="frequencies: give at least one"):
@@ -516,8 +516,8 @@ def test_the_residual_of_an_undamped_primary_ends():
     """C = 0: the primary's free vibration never decays, and the residual's reading had no end
     (shock --C 0 hung); it reads RESIDUAL_PERIODS of the slowest term, and the SRS holds at
     least the run's own maximax."""
-    from symimpact.forced.loads import shock_record
-    from symimpact.forced.shock_response import shock_response
+    from symimpact.forced.loads.records import shock_record
+    from symimpact.forced.loads.shock_response import shock_response
     from symimpact.model.system import ImpactSystem
 
     system = ImpactSystem(M=1.0, K=1000.0, C=0.0, m=0.05, gap=1e3, contact="linear", k1=1e6)

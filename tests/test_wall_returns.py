@@ -20,7 +20,7 @@ from symimpact.generated import forced_flight as ff
 
 from symimpact._interrupt import NO_WATCH
 from symimpact.forced import Forcing, simulate_forced
-from symimpact.forced import _rigid as R
+from symimpact.forced.engine import _rigid as R
 from symimpact.model.system import ImpactSystem
 from tests.helpers import integrate_whole_system
 

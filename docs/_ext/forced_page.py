@@ -140,7 +140,7 @@ def forced_checks_page() -> str:
         "",
         f"At Ω = {W_LIMIT:g} rad/s, each compliant contact is stiffened with its damping set to "
         "give the same restitution e: c1 from Step 9's closed form for the linear law, χ from "
-        "Step 11 at the orbit's impact speed for Hunt–Crossley (`symimpact.forced.rigid_limit`). "
+        "Step 11 at the orbit's impact speed for Hunt–Crossley (`symimpact.forced.orbits.rigid_limit`). "
         f"Each run starts on the stable rigid orbit and lasts {PERIODS} periods, the last 30 kept; "
         "'transient left' is the section's spread over them. The error falls like the contact "
         "duration: by √10 = 3.162 a decade of stiffness for the linear law (as 1/√k1) and by "

@@ -19,11 +19,11 @@ import sys
 #: listed compile in a few seconds, without a notice.
 COMPILE_SECONDS = {
     "symimpact.free._stepper": 15.0,
-    "symimpact.forced._modal": 300.0,
-    "symimpact.forced._corrector": 110.0,
-    "symimpact.forced._chain": 12.0,
-    "symimpact.forced._compliant": 12.0,
-    "symimpact.forced._record_rigid": 5.6,
+    "symimpact.forced.engine._modal": 300.0,
+    "symimpact.forced.orbits._corrector": 110.0,
+    "symimpact.forced.engine._chain": 12.0,
+    "symimpact.forced.engine._compliant": 12.0,
+    "symimpact.forced.engine._record_rigid": 5.6,
 }
 
 #: The command whose compilations are announced (set by the command line on a terminal).

@@ -1,6 +1,6 @@
 """Local worker processes shared by the stages that spread independent runs over the machine's
 cores: the maps (:mod:`symimpact.maps.executors`) and the multi-start of a frequency-response
-curve (:func:`symimpact.forced.coverage.attractors`).  A worker ends with the process that
+curve (:func:`symimpact.forced.orbits.coverage.attractors`).  A worker ends with the process that
 started it, ignores Ctrl-C (the parent ends the pool), and never starts a pool of its own."""
 
 from __future__ import annotations
@@ -111,7 +111,7 @@ def spread(
 class Pending:
     """``[fn(p) for p in payloads]`` started at once on ``workers`` processes (where this
     process may start them, :func:`can_spread`, and there is more than one payload), while this
-    process goes on (:func:`symimpact.forced.coverage.attractors` waits at once), after a
+    process goes on (:func:`symimpact.forced.orbits.coverage.attractors` waits at once), after a
     warm-up here (:func:`warm_here`); :meth:`result`
     waits for them, in the payloads' order.  Run here, where it cannot spread, when
     :meth:`result` is called.  :meth:`cancel` ends the workers (a caller

@@ -36,7 +36,7 @@ MAX_ITER = 30
 MAX_POINTS = 2000
 #: The longest a command under a sampled load (random, shock, sweep-sine) runs without
 #: ``--no-budget``, by the estimate it makes before it starts [s]
-#: (:mod:`symimpact.forced.record_cost`).
+#: (:mod:`symimpact.forced.loads.record_cost`).
 MAX_SECONDS = 3600.0
 #: Estimates from this many seconds up are printed before the run starts.
 SAY_SECONDS = 10.0

@@ -69,7 +69,7 @@ def run(ns) -> None:
         return run_structure(ns)
     from ..errors import ParameterError
     from ..forced import shoot_from_rest, trace_branch
-    from ..forced.continuation import PARAMETERS as UNITS
+    from ..forced.orbits.continuation import PARAMETERS as UNITS
     from ..forced.simulation import MAX_MULTIPLE, period_count
     from ..model.display import display_unit, omega_text, shown
     from .frf import contact_of, contact_title
@@ -155,13 +155,13 @@ def run_structure(ns) -> None:
     """A structure file with dampers or stops: the orbit a run of --warmup periods from rest
     settles near at --omega, shot on the state of its N modes and K dampers, continued both ways
     over --range in a damper's gap, e or m or in F0
-    (:func:`symimpact.forced.structure_branch.parameter_branch`), with its bifurcations and
+    (:func:`symimpact.forced.orbits.structure_branch.parameter_branch`), with its bifurcations and
     grazings located."""
     from ..errors import ParameterError
+    from ..forced.orbits.structure_branch import PARAMETERS as UNITS
+    from ..forced.orbits.structure_branch import parameter_branch
+    from ..forced.orbits.structure_orbits import shoot_structure
     from ..forced.simulation import MAX_MULTIPLE, period_count
-    from ..forced.structure_branch import PARAMETERS as UNITS
-    from ..forced.structure_branch import parameter_branch
-    from ..forced.structure_orbits import shoot_structure
     from ..forced.structure_response import simulate_structure
     from ..model.display import omega_text
     from .common import quantity_text, structure_forcing

@@ -31,7 +31,7 @@ def add_parser(sub: Any) -> None:
                         "neighbours to this (default 0.01 mm)")  # fmt: skip
     g.add_argument("--multistart", type=int, default=None, metavar="N",
                    help="frequencies of each curve's multi-start brute force (default that of "
-                   "frf, symimpact.forced.coverage.FREQUENCIES; 0: none — faster, may miss "
+                   "frf, symimpact.forced.orbits.coverage.FREQUENCIES; 0: none — faster, may miss "
                    "motions no branch reaches)")  # fmt: skip
     g.add_argument("--e-samples", type=int, default=5, metavar="N",
                    help="with --e LOW:HIGH: restitutions sampled over the range (odd; default 5: "
@@ -157,7 +157,7 @@ def run(ns) -> None:
                 "per restitution)"
             )  # fmt: skip
         return _robust(ns, system, forcing, e_range, omegas, grid["gap"], response)
-    from ..forced.coverage import FREQUENCIES
+    from ..forced.orbits.coverage import FREQUENCIES
 
     multistart = FREQUENCIES if ns.multistart is None else ns.multistart
     table = design_map(system, forcing, e, omegas, grid, executor=ns.executor,
@@ -261,7 +261,7 @@ def _e_range(ns) -> tuple[float, float] | None:
 
 def _robust(ns, system, forcing, e_range, omegas, gaps, response: str) -> None:
     """The robust design over a restitution range (:func:`symimpact.maps.design.robust_design`)."""
-    from ..forced.coverage import FREQUENCIES
+    from ..forced.orbits.coverage import FREQUENCIES
     from ..maps.design import robust_design
     from ..model.display import display_unit, omega_text, shown
     from .frf import response_text

@@ -176,7 +176,7 @@ def run_structure(ns) -> None:
     located peak beside the bare structure's (the linear receptance, no damper or stop)."""
 
     from ..errors import ParameterError
-    from ..forced.structure_branch import bare_peak, curve_peak
+    from ..forced.orbits.structure_branch import bare_peak, curve_peak
     from ..maps.structure_curve import structure_curve_map
     from ..model.display import omega_text
     from .common import quantity_text
@@ -253,7 +253,7 @@ def run(ns) -> None:
 
     if ns.workers is not None and ns.workers < 1:
         raise ParameterError("workers", f"must be a positive integer, got {ns.workers}")
-    from ..forced.frf import frequency_response
+    from ..forced.orbits.frf import frequency_response
     from ..model.display import display_unit, omega_text, shown
 
     omegas = band_from(ns)
@@ -273,7 +273,7 @@ def run(ns) -> None:
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps,
                              folds=ns.folds, embedded=ns.embedded, workers=ns.workers)  # fmt: skip
     if response != "displacement":
-        from ..forced.response_curve import response_curve
+        from ..forced.orbits.response_curve import response_curve
 
         frf = response_curve(frf, response, system, forcing, e)
     out = frf.as_dict()

@@ -268,7 +268,7 @@ def _psd_file(path: str):
     import numpy as np
 
     from ..errors import ParameterError
-    from ..forced.loads import unit_columns
+    from ..forced.loads.records import unit_columns
     from ..model.units import ACCELERATION_PSD, si_float
 
     (f_unit, s_unit), values = unit_columns(path, "psd-file", ("frequency [Hz]", "psd [g^2/Hz]"))
@@ -288,8 +288,8 @@ def _psd_file(path: str):
 def run_random(ns) -> None:
     """``symimpact random``."""
     from ..errors import ParameterError
-    from ..forced.loads import SAMPLES_PER_PERIOD
-    from ..forced.random_response import UNITS, random_statistics
+    from ..forced.loads.random_response import UNITS, random_statistics
+    from ..forced.loads.records import SAMPLES_PER_PERIOD
     from ..model.units import ACCELERATION_PSD, positive_float, si_float
 
     system = system_from(ns)
@@ -313,7 +313,7 @@ def run_random(ns) -> None:
         if psd < 0:
             raise ParameterError("force-psd" if kind == "force" else "base-psd", "must be ≥ 0")
         if ns.kanai_tajimi is not None:
-            from ..forced.loads import kanai_tajimi
+            from ..forced.loads.records import kanai_tajimi
 
             if kind != "base-acceleration":
                 raise ParameterError(
@@ -325,11 +325,11 @@ def run_random(ns) -> None:
             psd = kanai_tajimi(psd, parts[0].strip(), parts[1].strip())
     T = positive_float("duration", ns.duration, "s")
     dt = _sampling(ns, T, 1.0 / (2 * SAMPLES_PER_PERIOD * f2))
-    from ..forced.random_response import MAX_REALISATIONS
+    from ..forced.loads.random_response import MAX_REALISATIONS
 
     n = count("realisations", ns.realisations, 1, MAX_REALISATIONS)
     seed = count("seed", ns.seed, 0, 2**63 - 1)
-    from ..forced.random_response import ensemble_estimate
+    from ..forced.loads.random_response import ensemble_estimate
 
     as_map = any(v is not None for v in (ns.executor, ns.workers, ns.scheduler, ns.out))
     announce(ns, ensemble_estimate(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
@@ -385,8 +385,8 @@ def run_shock(ns) -> None:
     """``symimpact shock``."""
     import numpy as np
 
-    from ..forced.loads import shock_record
-    from ..forced.shock_response import shock_response
+    from ..forced.loads.records import shock_record
+    from ..forced.loads.shock_response import shock_response
     from ..model.units import positive_float
 
     system = system_from(ns)
@@ -394,7 +394,7 @@ def run_shock(ns) -> None:
     fn = system.omega_n / (2 * math.pi)
     if ns.record_file is not None:
         from ..errors import ParameterError
-        from ..forced.loads import followed_by_rest, read_record
+        from ..forced.loads.records import followed_by_rest, read_record
 
         given = [f"--{k.replace('_', '-')}" for k in ("pulse", "dt") if getattr(ns, k)]
         if ns.force_load is not None or ns.base_load is not None or given:
@@ -425,8 +425,8 @@ def run_shock(ns) -> None:
         record = shock_record(ns.shape, _height(ns, kind, text), td, total, dt, kind)
     lo, hi = _srs_range(ns, fn)
     n = count("srs-points", ns.srs_points, 2, 10_000)
-    from ..forced.record_cost import record_estimate
-    from ..forced.shock_response import srs_oscillators
+    from ..forced.loads.record_cost import record_estimate
+    from ..forced.loads.shock_response import srs_oscillators
 
     frequencies = np.geomspace(lo, hi, n)
     srs_oscillators(frequencies, ns.srs_zeta, record.dt)  # refused before the estimate's runs
@@ -471,8 +471,8 @@ def _srs_range(ns, fn: float) -> tuple[float, float]:
 
 def run_sweep(ns) -> None:
     """``symimpact sweep-sine``."""
-    from ..forced.loads import SAMPLES_PER_PERIOD
-    from ..forced.sweep_response import sweep_response
+    from ..forced.loads.records import SAMPLES_PER_PERIOD
+    from ..forced.loads.sweep_response import sweep_response
     from ..model.units import positive_float
 
     system = system_from(ns)
@@ -481,7 +481,7 @@ def run_sweep(ns) -> None:
     f1, f2 = band_from("band", ns.band)
     # a sweep's length follows from its band and rate: --dt as given, or 20 samples a period
     dt = positive_float("dt", ns.dt, "s") if ns.dt else 1.0 / (2 * SAMPLES_PER_PERIOD * f2)
-    from ..forced.sweep_response import sweep_estimate
+    from ..forced.loads.sweep_response import sweep_estimate
 
     announce(ns, sweep_estimate(system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=e,
                                 law=ns.law, kind=kind), "rate",

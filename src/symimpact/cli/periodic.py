@@ -175,13 +175,13 @@ def _shooting(ns, system, forcing, e) -> None:
 
 def _structure_orbit(ns) -> None:
     """A structure file with dampers or stops: the orbit a run from rest settles near, by
-    shooting on the state of its N modes and K dampers (:func:`symimpact.forced.structure_orbits.
+    shooting on the state of its N modes and K dampers (:func:`symimpact.forced.orbits.structure_orbits.
     shoot_structure`: the monodromy carried through every flight, impact and contact)."""
     import numpy as np
 
     from ..errors import ParameterError
+    from ..forced.orbits.structure_orbits import shoot_structure
     from ..forced.simulation import MAX_MULTIPLE, period_count
-    from ..forced.structure_orbits import shoot_structure
     from ..forced.structure_response import simulate_structure
     from ..model.display import omega_text
     from .common import quantity_text

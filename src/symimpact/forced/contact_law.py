@@ -49,7 +49,7 @@ class MaterialRestitution:
 
     Simulations, records, shooting, continuation in Ω, a clearance or the load, frf and design
     take it: the saltation matrix of an impact then holds ê = e + w·de/dw (Step 13) in place of e
-    in its velocity entries (:mod:`symimpact.forced._chain`).  Chatter is not taken to an
+    in its velocity entries (:mod:`symimpact.forced.engine._chain`).  Chatter is not taken to an
     accumulation point (a sequence's speeds fall below v_y, where impacts no longer lose
     energy, so it does not accumulate).  The closed-form orbits (Eq. F3), continuation in e and
     a design's e ± 0.1 need a constant e and refuse it."""
@@ -63,7 +63,7 @@ class MaterialRestitution:
 
     def at(self, speed: Any) -> float:
         """e at the approach speed ``speed`` [m/s] (Eq. F5): the engines' own rule."""
-        from ._rigid import restitution
+        from .engine._rigid import restitution
 
         return float(restitution(1.0, self.yield_speed, nonnegative_float("speed", speed)))
 

@@ -2,7 +2,7 @@
 
 The simulation is event driven and closed form between events (Step 8's forced flight, Eq. F1;
 Step 9's impact law, Eq. F2), with chatter taken to its accumulation point and sticking phases:
-the engine of a structure of several modes and dampers (:mod:`symimpact.forced._modal`) run with
+the engine of a structure of several modes and dampers (:mod:`symimpact.forced.engine._modal`) run with
 one mode of shape 1 and one damper, the primary of the paper.  The steady state is read over the
 kept forcing periods: the amplitude max abs(x), the impacts per period, and the period of the
 motion from the Poincaré section at t = k·T (the state once per forcing period).
@@ -24,8 +24,8 @@ from ..free import _stepper
 from ..model.checks import bounded, instance, whole_number
 from ..model.system import ImpactSystem
 from ..model.units import nonnegative_float, si_float
-from . import _compliant, _modal, _rigid
 from .contact_law import COMPLIANT, MaterialRestitution, restitution_parameters
+from .engine import _compliant, _modal, _rigid
 from .forcing import Forcing
 
 #: Chatter is taken to its accumulation point when the remaining impacts would all fall within
@@ -177,7 +177,7 @@ def simulate_forced(
     t∞ = t₀ + 2w/(a(1 − e)) and a sticking phase follows while the contact force is compressive.
     ``contact`` "cubic", "hertz", "linear" (the system's law parameters and c1) or
     "hunt-crossley" (the system's k_hz and ``chi`` [s/m], Eq. F4): Eq. F1 in flight, the contact
-    phase integrated with the forcing (:mod:`symimpact.forced._compliant`).  With ``discard`` (a
+    phase integrated with the forcing (:mod:`symimpact.forced.engine._compliant`).  With ``discard`` (a
     number of periods) the result's ``steady`` describes the periods after it.
     """
     instance("system", system, ImpactSystem, "an ImpactSystem")
@@ -305,7 +305,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
               max_work=None):  # fmt: skip
     """The checked run of :func:`simulate_forced` from ``state`` = (x, ẋ, y, ẏ) at t = 0 (a
     compliant run may start inside a wall), and, compliant with ``variational``, the Jacobian Ψ of
-    the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced._compliant`; None
+    the final (x, ẋ, y, ẏ) with respect to ``state`` (:mod:`symimpact.forced.engine._compliant`; None
     with rigid impacts, whose chain is built from the event log); ``max_contacts`` in place of
     :data:`MAX_CONTACTS`; ``max_work`` (evaluations of the contacts' equations) in place of
     :data:`symimpact.budgets.RHS_BUDGET`, met with :class:`TooMuchContactWork`."""
@@ -467,7 +467,7 @@ def state_at(result: ForcedResult, times: np.ndarray) -> np.ndarray:
     """The state (x, ẋ, z = y − x, ẏ) at the given times [s], rebuilt from the event log: the
     closed-form flight (Eq. F1) from the last event before each time, with the mass M + m in a
     sticking phase.  At an event's time the state after it is returned.  Compiled
-    (:func:`symimpact.forced._rigid.states_at`): the continuation asks for a few states at every
+    (:func:`symimpact.forced.engine._rigid.states_at`): the continuation asks for a few states at every
     point, where the vectorised NumPy kernels cost 0.4 ms a call in overhead."""
     times = np.asarray(times, dtype=float)
     if result.samples is not None:

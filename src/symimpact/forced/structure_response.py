@@ -4,7 +4,7 @@ impacts: :func:`simulate_structure`.
 Each mode flies by Step 8's closed form (Eq. F1) under its modal force Fᵢ = F₀·φᵢ(f), f the driven
 point; an impact of damper k applies Step 15's law at its point (Eq. F7: the impulse
 (1 + e)·μ·ż enters each mode through φᵢ(aₖ)).  The compiled engine is
-:mod:`symimpact.forced._modal`, which composes the one-mode flight functions mode by mode; the
+:mod:`symimpact.forced.engine._modal`, which composes the one-mode flight functions mode by mode; the
 paper's primary is its case of one mode of shape 1 and one damper, which
 :func:`symimpact.forced.simulate_forced` runs.  Chatter is taken to its accumulation point, and the mass then sticks on its point, the
 structure carrying it, until its wall would pull it (Step 15, item 5).
@@ -21,7 +21,7 @@ releases it only if its return would take longer than chatter the engine resolve
 test on the speed the impulse gives it and its point's acceleration back): a shorter excursion
 is jumped over, as a short chatter is, and the mass stays on its wall.  Two masses that come to
 rest on their walls together then stick together, instead of releasing each other at every
-closure (:func:`symimpact.forced._modal._returns_at_once`).  A wall met by a mass leaving it at
+closure (:func:`symimpact.forced.engine._modal._returns_at_once`).  A wall met by a mass leaving it at
 a speed below the positions' rounding ends that mass's chatter with a plastic closure.
 """
 
@@ -41,7 +41,7 @@ from ..model.dampers import Damper
 from ..model.stops import Stop, check_walls
 from ..model.structure import Structure
 from ..model.units import nonnegative_float, positive_float, si_float
-from . import _compliant, _modal, _rigid, _structure_contact
+from .engine import _compliant, _modal, _rigid, _structure_contact
 from .simulation import CHATTER
 
 #: Columns of :attr:`StructureResult.events`.
@@ -186,10 +186,10 @@ def simulate_structure(structure: Structure, dampers: Any, force_at: Any, F0: An
     wall would pull it (Step 15, item 5).  A damper with a compliant contact law (linear, Hertz,
     Hunt–Crossley: :mod:`symimpact.model.dampers`) presses its wall with the law's force, which
     enters the modes through their shapes (Eq. F7); its contact phases are integrated over the
-    whole state (:mod:`symimpact.forced._structure_contact`), its onsets and exits logged
+    whole state (:mod:`symimpact.forced.engine._structure_contact`), its onsets and exits logged
     (kinds "contact onset", "contact exit"), and :meth:`StructureResult.impacts` gives its
     onsets.  Rigid dampers beside compliant ones fly through a contact phase as free masses and
-    meet their walls there by Eq. F7 at once (:mod:`symimpact.forced._structure_contact`).
+    meet their walls there by Eq. F7 at once (:mod:`symimpact.forced.engine._structure_contact`).
     A linear stop acts in the contact phases by its law, its onsets and exits located there; a
     rigid stop by Newton's law at its point there (the structure's effective mass at the point,
     Step 15), its impacts located as onsets are.  A rigid damper's chatter accumulates in a
@@ -348,8 +348,8 @@ def _law_parameters(dampers: tuple[Damper, ...]) -> tuple[np.ndarray, np.ndarray
 def _alternation(pm, Phi, md, hd, ed, law, dampers, chat, Sphi, sg, sside, sk, sc, srig, se, q0,
                  v0, y0, u0, Pout, X_b, t_end, variational, energy):  # fmt: skip
     """The modal engine's closed-form flights and rigid events, alternating with the compliant
-    dampers' contact phases (:mod:`symimpact.forced._structure_contact`): (status, events, their
-    count, period maxima, ledger, final, G) as :func:`symimpact.forced._modal.run` returns
+    dampers' contact phases (:mod:`symimpact.forced.engine._structure_contact`): (status, events, their
+    count, period maxima, ledger, final, G) as :func:`symimpact.forced.engine._modal.run` returns
     them."""
     N, K = len(q0), len(y0)
     lq, chi = _law_parameters(dampers)

@@ -18,7 +18,7 @@ find:
 
 The design's **peak** is the largest amplitude among them: the worst motion the machine may
 settle on in the band, located on the branches and on the motion without impacts
-(:mod:`symimpact.forced.peak`), and taken from a sweep only where a swept motion no branch
+(:mod:`symimpact.forced.orbits.peak`), and taken from a sweep only where a swept motion no branch
 holds exceeds it.  Beside it: the peak of the primary without the damper, their ratio,
 where the peak is and which motion gives it, and how many frequencies of the band only the
 sweeps cover (``uncovered_frequencies``: no stable branch, no motion without impacts).  A motion
@@ -51,9 +51,9 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..forced.contact_law import checked, is_constant, is_rigid
-from ..forced.coverage import FREQUENCIES
 from ..forced.forcing import Forcing
-from ..forced.frf import SWEEP_ACCURACY, _sweep, _sweep_runs, frequency_response
+from ..forced.orbits.coverage import FREQUENCIES
+from ..forced.orbits.frf import SWEEP_ACCURACY, _sweep, _sweep_runs, frequency_response
 from ..model import checks
 from ..model.system import ImpactSystem
 from .engine import _executor, _gather, _launch, _progress
@@ -125,9 +125,9 @@ def design_row(
     ``branches`` of the curve and how many frequencies of the band each kind of motion covers.
     ``curve``: the system's frequency response over ``omegas`` if already computed (its sweeps
     are run and stored in it if it has none); ``multistart``: frequencies of the curve's
-    multi-start (:mod:`symimpact.forced.coverage`; 0: none).  ``response``
+    multi-start (:mod:`symimpact.forced.orbits.coverage`; 0: none).  ``response``
     (:data:`symimpact.forced.responses.RESPONSES`): what the peaks measure [its SI unit] —
-    the curve in that response (:func:`symimpact.forced.response_curve.response_curve`), the
+    the curve in that response (:func:`symimpact.forced.orbits.response_curve.response_curve`), the
     primary alone's closed form, and the sweeps measured in it over their kept periods.
     ``workers``: processes for the curve's multi-start (None: one per core)."""
     w = np.asarray(omegas, dtype=float)
@@ -143,7 +143,7 @@ def design_row(
 
 def _response_row(system, forcing, e, w, curve, response: str) -> dict[str, Any]:
     """:func:`design_row` in a response other than the displacement."""
-    from ..forced.response_curve import response_curve
+    from ..forced.orbits.response_curve import response_curve
 
     shown = response_curve(curve, response, system, forcing, e)
     up = _sweep_runs(system, forcing, e, w, response=response)

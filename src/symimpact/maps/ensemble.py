@@ -3,12 +3,12 @@ map (its index the run's only input), so an ensemble runs serially, on local pro
 Dask cluster, and resumes from its output file like any map (:class:`.store.MapStore`).
 
 A realisation's record depends only on the ensemble's seed and its index
-(:func:`symimpact.forced.random_response.realisation_seed`): the same seed gives the same rows on
+(:func:`symimpact.forced.loads.random_response.realisation_seed`): the same seed gives the same rows on
 any executor and any number of workers.  A row holds the realisation's RMS values with the damper
 and without it (the primary alone on the same record) and its number of impacts; the ensemble's
 statistics (means, 95 % intervals, the paired reduction) are :func:`.random_response.combine` of
 the rows.  The PSD is not kept per realisation (use
-:func:`symimpact.forced.random_response.random_statistics` for it).
+:func:`symimpact.forced.loads.random_response.random_statistics` for it).
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..forced.contact_law import contact_setting, restitution_or_law
-from ..forced.random_response import (
+from ..forced.loads.random_response import (
     KEYS,
     MAX_REALISATIONS,
     RandomStatistics,
@@ -120,8 +120,8 @@ def random_ensemble(
 ) -> tuple[RandomStatistics, Any]:
     """(statistics, table of rows) of ``realisations`` random-vibration runs as a map (module
     text); ``psd`` a constant one-sided PSD [N²/Hz or (m/s²)²/Hz], a table (frequencies [Hz],
-    values) or a picklable function of frequency (:class:`~symimpact.forced.loads.KanaiTajimi`),
-    the other arguments as :func:`symimpact.forced.random_response.random_statistics`;
+    values) or a picklable function of frequency (:class:`~symimpact.forced.loads.records.KanaiTajimi`),
+    the other arguments as :func:`symimpact.forced.loads.random_response.random_statistics`;
     ``executor``, ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
     :func:`symimpact.maps.parameter_map` (``out``: a resumable CSV or Parquet file)."""
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")

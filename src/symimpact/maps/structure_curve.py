@@ -2,9 +2,9 @@
 cluster (:func:`structure_curve_map`).
 
 Nearly all of a curve's time is its runs from rest, one at each frequency of the band
-(:func:`symimpact.forced.structure_branch.settled_run`), and they are independent: they run on
+(:func:`symimpact.forced.orbits.structure_branch.settled_run`), and they are independent: they run on
 the map engine's executors, and the branches are then continued from the band's ends in this
-process (:func:`symimpact.forced.structure_branch.structure_curve`), as without the map.  Each
+process (:func:`symimpact.forced.orbits.structure_branch.structure_curve`), as without the map.  Each
 run is the same computation wherever it runs, so the curve is the same to the bit."""
 
 from __future__ import annotations
@@ -12,7 +12,12 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from ..forced.structure_branch import StructureCurve, curve_grid, settled_run, structure_curve
+from ..forced.orbits.structure_branch import (
+    StructureCurve,
+    curve_grid,
+    settled_run,
+    structure_curve,
+)
 from ..model.checks import whole_number
 from .engine import _executor, _launch
 
@@ -28,7 +33,7 @@ def structure_curve_map(structure: Any, dampers: Any, force_at: Any, F0: Any, om
                         omega_high: float, step: float, stops: Any = (), warmup: Any = None,
                         base: Any = 0.0, *, executor: str | None = None, workers: Any = None,
                         client: Any = None, scheduler: str | None = None) -> StructureCurve:  # fmt: skip
-    """:func:`symimpact.forced.structure_branch.structure_curve` (the same arguments, SI) with
+    """:func:`symimpact.forced.orbits.structure_branch.structure_curve` (the same arguments, SI) with
     its runs from rest on ``executor``: "serial", "processes" (the default, ``workers`` of
     them, default the machine's CPUs) or "dask" (``client``, ``scheduler``, or a local
     cluster).  Neighbouring frequencies cost alike (a chattering band is slow), so each chunk

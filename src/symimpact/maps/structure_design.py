@@ -3,11 +3,11 @@ structure's response curve: :func:`structure_design`.
 
 For each clearance the structure's curve over the band is traced from both ends with its
 period-doubled branches and run from rest at each frequency of the band's grid
-(:func:`symimpact.forced.structure_branch.structure_curve`), and the peak at the chosen point is
-located on it (:func:`symimpact.forced.structure_branch.curve_peak`: on the branches, or a run
+(:func:`symimpact.forced.orbits.structure_branch.structure_curve`), and the peak at the chosen point is
+located on it (:func:`symimpact.forced.orbits.structure_branch.curve_peak`: on the branches, or a run
 from rest's where it settled on a larger motion no branch holds);
 the best clearance is the one of the lowest peak, reported beside the bare structure's peak
-(:func:`symimpact.forced.structure_branch.bare_peak`).  The clearances run one after the other;
+(:func:`symimpact.forced.orbits.structure_branch.bare_peak`).  The clearances run one after the other;
 each curve's runs from rest run on the map engine's executors
 (:func:`symimpact.maps.structure_curve.structure_curve_map`).
 """
@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
-from ..forced.structure_branch import StructurePeak, bare_peak, curve_peak
+from ..forced.orbits.structure_branch import StructurePeak, bare_peak, curve_peak
 from ..model.dampers import Damper
 from ..model.structure import Structure
 from .structure_curve import structure_curve_map

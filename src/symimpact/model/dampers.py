@@ -3,7 +3,7 @@ total clearance ``gap`` [m] at the point ``at``, with rigid impacts of Newton's 
 (Step 9's law, Eq. F2, at a point of a structure: Step 15, item 4, Eq. F7) or a compliant contact
 on its walls: ``"linear"`` k₁δ + c₁δ̇ (Eq. 35 with a dashpot), ``"hertz"`` k_hz·δ^1.5 + c₁δ̇ (Eq. 9)
 or ``"hunt-crossley"`` k_hz·δ^1.5·(1 + χδ̇) (Eq. F4), δ the mass's penetration of the wall (the
-one-mode engine's laws, :mod:`symimpact.forced._compliant`).
+one-mode engine's laws, :mod:`symimpact.forced.engine._compliant`).
 
 :func:`dampers` reads a list of ``{"name", "at", "m", "gap", "contact", "e" | law parameters}``
 (the structure file's ``"dampers"`` entry; SI numbers or quantity texts such as ``"10 mm"``,

@@ -28,7 +28,7 @@ import numpy as np
 
 from ..forced.contact_law import CompliantContact
 from ..forced.forcing import Forcing
-from ..forced.frf import frequency_response
+from ..forced.orbits.frf import frequency_response
 from ..generated import closed_forms
 from ..maps.design import best_clearances, design_map, design_row
 from ..model.system import ImpactSystem
@@ -207,14 +207,14 @@ def _curves(s: Section, folder: Path, curves: list) -> dict[float, float]:
             note="The peak is located on the stable branches (their maxima, and the bifurcations "
             "and grazings that end their stable stretches) and on the motion without impacts "
             "(the impact mass at rest midway, where the primary alone stays inside the "
-            "clearance), beside the primary alone's located resonance (symimpact.forced.peak); "
+            "clearance), beside the primary alone's located resonance (symimpact.forced.orbits.peak); "
             "a chattering or non-periodic motion found by the multi-start (15 frequencies, 4 "
             "starts each, refined where a start's landings differ) or a swept amplitude names "
             "the peak where it exceeds them "
             "(symimpact.maps.design). The last two columns: how many of the multi-start's "
             "periodic attractors lie on a traced branch, and how many attractors no branch can "
             "hold (not periodic, or periodic where shooting does not converge) or misses "
-            "(symimpact.forced.coverage); the last: the same count at a second, independent set "
+            "(symimpact.forced.orbits.coverage); the last: the same count at a second, independent set "
             "of 5 frequencies drawn at random in the band (seeded), whose landings start no "
             "branch (the curve's coverage is the lower of the two shares).",
         )

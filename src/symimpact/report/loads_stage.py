@@ -1,8 +1,8 @@
 """Report stage "Beyond the paper: random and shock loads": the forced stage's system (the chosen
 reading's primary, Table 2's impact mass, d = 9 mm, rigid impacts with the restitution of the
 paper's linear contact) under band-limited white noise on the base and under a half-sine base
-shock, each with the damper and without it (symimpact.forced.random_response,
-symimpact.forced.shock_response; the flight Step 16's Eq. F8, exact for the sampled record)."""
+shock, each with the damper and without it (symimpact.forced.loads.random_response,
+symimpact.forced.loads.shock_response; the flight Step 16's Eq. F8, exact for the sampled record)."""
 
 from __future__ import annotations
 
@@ -11,9 +11,9 @@ from typing import Any
 
 import numpy as np
 
-from ..forced.loads import shock_record
-from ..forced.random_response import KEYS, random_statistics
-from ..forced.shock_response import shock_response
+from ..forced.loads.random_response import KEYS, random_statistics
+from ..forced.loads.records import shock_record
+from ..forced.loads.shock_response import shock_response
 from ..generated import closed_forms
 from ..model.units import si
 from . import paper

@@ -166,7 +166,7 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
 
 
 def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
-    """The frequency-response curve (:func:`symimpact.forced.frf.frequency_response`): each
+    """The frequency-response curve (:func:`symimpact.forced.orbits.frf.frequency_response`): each
     branch's amplitude against Ω, stable solid and unstable dashed, the located bifurcations
     marked by kind, the primary without the damper, and the brute-force sweeps up (▲) and down
     (▼)."""
@@ -457,7 +457,7 @@ def plot_map(
 
 def plot_random(stats: Any, path: str | os.PathLike) -> None:
     """The displacement's PSD with and without the damper (Welch, averaged over realisations;
-    symimpact.forced.random_response), the RMS values and the reduction in the title."""
+    symimpact.forced.loads.random_response), the RMS values and the reduction in the title."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 4.5))
     f = stats.psd_frequency
@@ -484,7 +484,7 @@ def plot_random(stats: Any, path: str | os.PathLike) -> None:
 
 def plot_shock(shock: Any, path: str | os.PathLike) -> None:
     """The shock-response spectrum of the main mass's motion with and without the damper
-    (symimpact.forced.shock_response), in g, log-log."""
+    (symimpact.forced.loads.shock_response), in g, log-log."""
     plt = _pyplot()
     g = 9.80665
     fig, ax = plt.subplots(figsize=(8, 4.5))
@@ -506,7 +506,7 @@ def plot_shock(shock: Any, path: str | os.PathLike) -> None:
 
 def plot_sine_sweep(sweep: Any, path: str | os.PathLike) -> None:
     """The displacement's envelope against the instantaneous frequency, up and down, with and
-    without the damper (symimpact.forced.sweep_response), and, when the run computed it, the
+    without the damper (symimpact.forced.loads.sweep_response), and, when the run computed it, the
     steady curve of ``frf`` at the same amplitude beside them: the stable orbits of each
     continued branch (black), the motion without impacts (thick grey) and the primary alone's
     steady response (dotted)."""

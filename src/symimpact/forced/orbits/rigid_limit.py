@@ -14,14 +14,14 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from ..errors import MethodNotApplicable, ParameterError
-from ..generated import rigid_impact as ri
-from ..model.hunt_crossley import hunt_crossley_chi
-from ..model.system import ImpactSystem
-from ..model.units import positive_float
-from .forcing import Forcing
+from ...errors import MethodNotApplicable, ParameterError
+from ...generated import rigid_impact as ri
+from ...model.hunt_crossley import hunt_crossley_chi
+from ...model.system import ImpactSystem
+from ...model.units import positive_float
+from ..forcing import Forcing
+from ..simulation import simulate_forced
 from .periodic import PeriodicOrbit, periodic_orbits
-from .simulation import simulate_forced
 
 #: The laws whose damping can be set from e in closed form (Step 9) or by Step 11's inversion.
 LAWS = ("linear", "hunt-crossley")
@@ -61,8 +61,8 @@ def rigid_limit(
     ``periods`` forcing periods, the last ``periods − discard`` kept.  The default 200 and 170
     leave ~1e-8 of the transient in the section: at 60 periods it was ~2e-4 and the errors were
     7 % smaller than settled."""
-    from ..model import checks
-    from .contact_law import checked
+    from ...model import checks
+    from ..contact_law import checked
 
     checks.choice("contact", contact, tuple(LAWS))
     system, forcing, e = checked(system, forcing, e)

@@ -9,7 +9,7 @@ matrix — is carried along it, not differenced: each flight contributes its tra
 saltation matrix S, which adds to the impact law's Jacobian the effect of arriving earlier or
 later.  With a compliant contact (``e`` a :class:`~symimpact.forced.CompliantContact`) each
 contact is integrated with its variational equations and the located onsets and exits are
-differentiated (:mod:`symimpact.forced._compliant`).  Newton's method on P(s) − s = 0 with the
+differentiated (:mod:`symimpact.forced.engine._compliant`).  Newton's method on P(s) − s = 0 with the
 Jacobian (monodromy − I) converges quadratically from a state near the orbit (a brute-force
 steady state, or a closed-form orbit); the eigenvalues of the monodromy are the Floquet
 multipliers.
@@ -34,20 +34,20 @@ from typing import Any
 
 import numpy as np
 
-from .. import _interrupt, budgets
-from ..errors import MethodNotApplicable, ParameterError
-from ..model import checks
-from ..model.system import ImpactSystem
-from . import _chain, _rigid
-from .contact_law import (
+from ... import _interrupt, budgets
+from ...errors import MethodNotApplicable, ParameterError
+from ...model import checks
+from ...model.system import ImpactSystem
+from ..contact_law import (
     CompliantContact,
     checked,
     is_rigid,
     restitution_parameters,
     simulation_arguments,
 )
-from .forcing import Forcing
-from .simulation import (
+from ..engine import _chain, _rigid
+from ..forcing import Forcing
+from ..simulation import (
     TooManyContacts,
     TooMuchContactWork,
     _simulate,
@@ -144,7 +144,7 @@ def monodromy(
     flights' Φ(τ) and the impacts' saltation matrices (Step 8, Step 9) along the simulated
     motion.  A compliant contact (``e`` a :class:`CompliantContact`): the variational equations
     integrated through each contact, the located onsets and exits differentiated
-    (:mod:`symimpact.forced._compliant`).  Returns (P(state), Jacobian, the simulation); with
+    (:mod:`symimpact.forced.engine._compliant`).  Returns (P(state), Jacobian, the simulation); with
     ``jacobian`` False the Jacobian is not formed (None): the map alone, for differences in a
     parameter.  With ``parameter`` (rigid impacts: omega, gap, F0, X_b or e) the Jacobian has a
     fifth column, ∂P/∂p, carried along the same chain (:func:`rigid_monodromy`)."""

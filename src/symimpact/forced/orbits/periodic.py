@@ -29,10 +29,10 @@ from typing import Any
 
 import numpy as np
 
-from ..generated import forced_flight as ff
-from ..generated import periodic_orbit as po
-from ..model.system import ImpactSystem
-from .forcing import Forcing
+from ...generated import forced_flight as ff
+from ...generated import periodic_orbit as po
+from ...model.system import ImpactSystem
+from ..forcing import Forcing
 from .linearised import acceleration, flight_matrix, saltation_matrix
 
 #: Samples per half period for the extremes of x and z before refinement (the flight holds at
@@ -78,7 +78,7 @@ def periodic_orbits(system: ImpactSystem, forcing: Forcing, e: Any) -> list[Peri
     smaller amplitude first.  Solved from all four conditions of Eq. F3 together, so that no
     determinant of three of them divides (one vanishes at the undamped resonance, others next
     to the damped one)."""
-    from .contact_law import checked
+    from ..contact_law import checked
 
     system, forcing, e = checked(system, forcing, e, rigid_only="the closed form")
     args = (

@@ -1,6 +1,6 @@
 """Random vibration of the primary with its impact damper: the statistics designers report.
 
-Each realisation is one record of :func:`symimpact.forced.loads.random_record` (the spectral
+Each realisation is one record of :func:`symimpact.forced.loads.records.random_record` (the spectral
 representation, its own seed), run with the damper (:func:`damper_response`) and without it
 (:func:`primary_response`, Eq. F8 alone) on the *same* record, so the reduction is a paired
 comparison.  Statistics are taken after ``settle`` seconds (the start-up transient left out).
@@ -28,16 +28,16 @@ from typing import Any
 import numpy as np
 from scipy import signal, stats
 
-from ..errors import ParameterError
-from ..model import checks
-from ..model.system import ImpactSystem
-from ..model.units import positive_float
-from .contact_law import restitution_or_law
-from .loads import Record, random_record
+from ...errors import ParameterError
+from ...model import checks
+from ...model.system import ImpactSystem
+from ...model.units import positive_float
+from ..contact_law import restitution_or_law
+from ..simulation import CHATTER
 from .record_cost import Estimate, record_estimate
 from .record_flight import primary_response
 from .record_response import damper_response
-from .simulation import CHATTER
+from .records import Record, random_record
 
 #: The responses whose statistics are reported (attribute names of the responses).
 KEYS = ("displacement", "velocity", "acceleration", "base_force")
@@ -169,7 +169,7 @@ def realisation_record(
     kind: str = "force",
 ) -> Record:
     """The load of realisation ``i``: ``settle`` [s] (to the sample at or after it) and
-    ``duration`` [s] of :func:`~symimpact.forced.loads.random_record`."""
+    ``duration`` [s] of :func:`~symimpact.forced.loads.records.random_record`."""
     n_settle = math.ceil(settle / dt - 1e-9)
     return random_record(psd, band, (n_settle + round(duration / dt)) * dt, dt,
                          realisation_seed(seed, i), kind)  # fmt: skip
@@ -192,7 +192,7 @@ def ensemble_estimate(
     chatter: Any = CHATTER,
 ) -> Estimate:
     """The time an ensemble of ``realisations`` takes on this machine, from a piece of the
-    first realisation (:func:`~symimpact.forced.record_cost.record_estimate`), with the time
+    first realisation (:func:`~symimpact.forced.loads.record_cost.record_estimate`), with the time
     of drawing its record and of its statistics (``welch``: its PSD too); the arguments those of
     :func:`random_statistics`."""
     settle = _settle(system, settle)

@@ -1,7 +1,7 @@
 """The rigid stroboscopic map's Jacobian along a simulated motion, compiled: the chain of
 Step 8's flight transition matrices Φ(τ) and Step 9's saltation matrices (Eq. F2), through
 chatter accumulations, sticking phases and releases, with a parameter's derivative ∂P/∂p carried
-as a fifth column (:func:`symimpact.forced.shooting.rigid_monodromy` states the chain; this
+as a fifth column (:func:`symimpact.forced.orbits.shooting.rigid_monodromy` states the chain; this
 module is its numba body, one code path with or without a parameter).
 
 Every entry comes from a generated kernel compiled with numba (the flights' Φ and their
@@ -20,7 +20,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..generated import rigid_impact as _ri
+from ...generated import rigid_impact as _ri
 from ._rigid import (
     E_KIND,
     E_SIDE,
@@ -185,7 +185,7 @@ def _accumulation(p, impact, point, phi, J, flight, which):
     """J through an impact and the accumulation of its chatter (``J`` to just before the
     impact, ``phi`` the primary's Φ from the impact to the accumulation point, ``flight`` that
     flight's explicit parameter term): returned, the Jacobian of (x, ẋ) at the accumulation
-    point t∞ (:func:`symimpact.forced.shooting.rigid_monodromy`: Δ = 2w/(a(1 − e)), the primary
+    point t∞ (:func:`symimpact.forced.orbits.shooting.rigid_monodromy`: Δ = 2w/(a(1 − e)), the primary
     alone over Δ, the merge v_c = (M ẋ + m ẏ)/(M + m), t₀'s own dependence δt₀ = −δz/ż)."""
     M, m, K, C, e = p[P_M], p[P_m], p[P_K], p[P_C], p[P_e]
     t0, x0, v, u = impact[E_T], impact[E_X], impact[E_XD], impact[E_YD]

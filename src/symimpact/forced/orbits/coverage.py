@@ -44,15 +44,15 @@ from typing import Any
 
 import numpy as np
 
-from .. import _pool
-from ..errors import SymimpactError
-from ..model import checks
-from ..model.system import ImpactSystem
-from .contact_law import is_rigid, simulation_arguments
-from .forcing import Forcing
+from ... import _pool
+from ...errors import SymimpactError
+from ...model import checks
+from ...model.system import ImpactSystem
+from ..contact_law import is_rigid, simulation_arguments
+from ..forcing import Forcing
+from ..simulation import settling_periods, simulate_forced
 from .peak import UNTRACEABLE, linear_amplitude
 from .shooting import MAX_PERIODS, monodromy, shoot
-from .simulation import settling_periods, simulate_forced
 
 #: Frequencies of the multi-start, spread evenly inside the band (its ends excluded).
 FREQUENCIES = 15
@@ -319,7 +319,7 @@ def lyapunov(
     :func:`symimpact.forced.monodromy`) and renormalised, λ = Σ ln‖v‖ / (``periods``·T); with
     half the range of the estimates over
     LYAPUNOV_BLOCKS equal stretches; chatter and sticking are carried through
-    (:func:`symimpact.forced.shooting.rigid_monodromy`).  Raises at an impact at zero relative
+    (:func:`symimpact.forced.orbits.shooting.rigid_monodromy`).  Raises at an impact at zero relative
     speed, which has no saltation matrix."""
     s = np.array(state, dtype=float)
     v = np.ones(4) / 2.0

@@ -19,7 +19,7 @@ f ≤ f'τ + f''τ²/2 + f'''τ³/6 + Qτ⁴/24 stay negative; half the longest 
 An excursion past a wall by less than 1e-20 of the clearance may be missed (the halving stops at
 a width whose bound is that small).
 
-*Chatter and sticking.*  As for the harmonic engine (:mod:`symimpact.forced._rigid`): when the
+*Chatter and sticking.*  As for the harmonic engine (:mod:`symimpact.forced.engine._rigid`): when the
 impact mass keeps returning to the same wall with relative acceleration a towards it and a
 separation speed w so small that the flights' sum Δ = 2w/(a(1 − e)) is at most ``chatter`` of a
 natural period, the run jumps to the accumulation point, where the masses move on together
@@ -35,7 +35,7 @@ the base's frame) — less C's dissipation ∫Cẋ² dt and the impacts' losses;
 Gauss–Legendre on sub-pieces of at most 1/16 of the natural period (the integrands are smooth
 there).
 
-This module is private: :mod:`symimpact.forced.record_response` validates the input and builds
+This module is private: :mod:`symimpact.forced.loads.record_response` validates the input and builds
 the result.
 """
 
@@ -46,9 +46,9 @@ import math
 import numpy as np
 from numba import njit
 
-from .._interrupt import EVERY, INTERRUPTED, stop_requested
-from ..free._stepper import secant_point
-from ..generated import sampled_load as _sl
+from ..._interrupt import EVERY, INTERRUPTED, stop_requested
+from ...free._stepper import secant_point
+from ...generated import sampled_load as _sl
 from ._rigid import restitution
 
 # parameter vector layout: masses [kg], K [N/m], C [N s/m], half clearance [m], e, chatter

@@ -53,13 +53,15 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
-from .. import _interrupt, budgets
-from ..errors import MethodNotApplicable, ParameterError, SymimpactError
-from ..model import checks
-from ..model.system import ImpactSystem
-from . import _corrector, _rigid
-from .contact_law import checked, is_constant, is_rigid, restitution_parameters
-from .forcing import Forcing
+from ... import _interrupt, budgets
+from ...errors import MethodNotApplicable, ParameterError, SymimpactError
+from ...model import checks
+from ...model.system import ImpactSystem
+from ..contact_law import checked, is_constant, is_rigid, restitution_parameters
+from ..engine import _rigid
+from ..forcing import Forcing
+from ..simulation import CHATTER, impact_counts, state_at
+from . import _corrector
 from .shooting import (
     MAX_IMPACTS_PER_PERIOD,
     MAX_PERIODS,
@@ -72,7 +74,6 @@ from .shooting import (
     shoot,
     stroboscopic_map,
 )
-from .simulation import CHATTER, impact_counts, state_at
 
 #: Newton's corrector stops below this change of the scaled unknowns, or below the map's own
 #: noise amplified by the conditioning of the extended Jacobian, cond·NOISE, where that is larger
@@ -242,7 +243,7 @@ class _Problem:
 
     def map(self, value: float, s: np.ndarray, jacobian: bool = True,
             parameter: str | None = None):  # fmt: skip
-        """:func:`~symimpact.forced.shooting.monodromy` at the parameter ``value`` from the
+        """:func:`~symimpact.forced.orbits.shooting.monodromy` at the parameter ``value`` from the
         state ``s``: the system, forcing and contact were checked when the problem was made, so
         only a restitution the Newton step moved (parameter e) is checked again."""
         system, forcing, e = self.at(value)
@@ -320,7 +321,7 @@ def _resection(problem: _Problem, y: np.ndarray, t: np.ndarray, res):
     tau = mid_free_flight(res)
     if tau is None:
         return None
-    from .simulation import state_at
+    from ..simulation import state_at
 
     s_new = state_at(res, np.array([tau]))[0]
     f = problem.forcing
@@ -348,7 +349,7 @@ def _asymmetric(problem: _Problem, y: np.ndarray, res) -> bool:
     s(jT) (to 1e-7 of the scale).  From the orbit's simulation (state_at, Eq. F1)."""
     if not is_rigid(problem.e):
         return False
-    from .simulation import state_at
+    from ..simulation import state_at
 
     T = 2 * math.pi / res.forcing.omega
     k = problem.periods

@@ -4,7 +4,7 @@ restitution or mass or the force amplitude (:func:`parameter_branch`), with its 
 located.
 
 Each point is an orbit shot on the state of the N modes and K dampers
-(:func:`symimpact.forced.structure_orbits.shoot_structure`, the monodromy carried through every
+(:func:`symimpact.forced.orbits.structure_orbits.shoot_structure`, the monodromy carried through every
 flight, impact, stop contact, chatter's accumulation, sticking phase and release, and differenced
 where the run is not differentiated so: that function's text).  The next value's
 Newton starts from the secant extrapolation of the last two orbits (natural-parameter
@@ -15,7 +15,7 @@ parameter (each trial shot from the nearer orbit) and named by where the multipl
 period doubling, at +1 a fold or branch point, elsewhere a Neimark–Sacker point (a pair
 e^{±iθ}); where the bracket closes on a change of the impacts a period, the stability changed
 at a grazing (the multipliers jump there).  Where the count of impact events or contacts a period changes (a
-chatter sequence counted once, :attr:`~symimpact.forced.structure_orbits.StructureOrbit.
+chatter sequence counted once, :attr:`~symimpact.forced.orbits.structure_orbits.StructureOrbit.
 impact_events`, so that how many of its impacts are resolved does not count), an impact was born
 or died (a grazing) between the two orbits: it is reported with the counts on both sides.
 """
@@ -28,10 +28,10 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import MethodNotApplicable, ParameterError
-from ..model.checks import whole_number
-from ..model.structure import Structure
-from ..model.units import positive_float
+from ...errors import MethodNotApplicable, ParameterError
+from ...model.checks import whole_number
+from ...model.structure import Structure
+from ...model.units import positive_float
 from .structure_orbits import StructureOrbit, shoot_structure
 
 #: Kinds of the located bifurcations (the last: the stability changes where an impact is born or
@@ -138,7 +138,7 @@ def _base_at(base: Any, omega: float) -> float:
 def _returns_after(o: StructureOrbit, periods: int, args: tuple, stops: Any, phase: float) -> bool:
     """Whether orbit ``o`` comes back after ``periods`` (to 1e-6 of its state's size): an orbit
     of fewer periods than it was shot for."""
-    from .structure_response import simulate_structure
+    from ..structure_response import simulate_structure
 
     run = simulate_structure(*args, o.run.omega, periods=periods, phase=phase, state=o.state,
                              base=o.run.X_b, stops=stops, energy=False)  # fmt: skip
@@ -254,7 +254,7 @@ def parameter_branch(structure: Structure, dampers: Any, force_at: Any, F0: Any,
     location of bifurcations and grazings, to ``locate`` of the value."""
     from dataclasses import replace
 
-    from ..model.dampers import Damper
+    from ...model.dampers import Damper
 
     if parameter not in PARAMETERS:
         raise ParameterError("parameter", f"one of {', '.join(PARAMETERS)}, got {parameter!r}")
@@ -517,7 +517,7 @@ def settled_run(structure: Structure, dampers: Any, force_at: Any, F0: Any, omeg
     ``warmup`` periods of transient (None: :func:`settling_periods`) and KEPT more; its entry
     {"omega", "periods", "amplitudes": {point: m}} (each point's largest abs(x) over the KEPT
     periods) and its final state (t, the N modes' and K dampers' states, ...)."""
-    from .structure_response import simulate_structure
+    from ..structure_response import simulate_structure
 
     waited = settling_periods(structure, float(omega)) if warmup is None else warmup
     run = simulate_structure(structure, dampers, force_at, F0, float(omega), periods=waited + KEPT,
@@ -544,7 +544,7 @@ def structure_curve(structure: Structure, dampers: Any, force_at: Any, F0: Any, 
     runs from rest hold the motions no branch follows (orbits that stick or chatter, motions
     that are not periodic).  A note says where no branch could start or where a doubling has
     no stable daughter."""
-    from .structure_response import simulate_structure
+    from ..structure_response import simulate_structure
 
     args = (structure, dampers, force_at, F0)
     n = 2 * len(structure.modes) + 2 * len(tuple(dampers))

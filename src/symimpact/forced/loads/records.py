@@ -1,7 +1,7 @@
 """Loads that machines and buildings see, as sampled records: band-limited random vibration of a
 given one-sided PSD, shocks (half-sine, haversine, terminal-peak sawtooth) and sine sweeps
 (linear or logarithmic).  Step 16 (Eq. F8) makes the primary's flight exact for a record joined
-by straight lines between its samples (:mod:`symimpact.forced.record_flight`).
+by straight lines between its samples (:mod:`symimpact.forced.loads.record_flight`).
 
 A record is a force on the main mass [N] or a base acceleration [m/s²] (``kind``), sampled every
 ``dt`` from t = 0.  Random records are drawn by the spectral representation: cosines at the
@@ -21,9 +21,9 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ParameterError
-from ..model import checks
-from ..model.units import positive_float, si_float
+from ...errors import ParameterError
+from ...model import checks
+from ...model.units import positive_float, si_float
 
 #: What a record's values are: a force on the main mass [N] or the base's acceleration [m/s²].
 KINDS = {"force": "N", "base-acceleration": "m/s^2"}
@@ -291,7 +291,7 @@ def unit_columns(
     import csv
     import re
 
-    from ..io import input_text
+    from ...io import input_text
 
     try:
         rows = list(csv.reader(input_text(path, name).splitlines()))

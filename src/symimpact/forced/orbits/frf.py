@@ -10,7 +10,7 @@ several kinds of starting point, so that coexisting motions are found:
 - the orbits brute-force runs from rest settle near (:func:`symimpact.forced.settled_state`),
   of one and two forcing periods;
 - the periodic attractors of a multi-start brute force at frequencies fixed by the band's ends
-  (:mod:`symimpact.forced.coverage`), which also measures the share of them the branches trace;
+  (:mod:`symimpact.forced.orbits.coverage`), which also measures the share of them the branches trace;
 - branch switching at every located branch point and period doubling;
 - jumps: where a branch ends on a stable orbit inside the band, or loses its stability at a
   fold, branch point, period doubling or Neimark–Sacker point, a run from there just beyond it
@@ -19,7 +19,7 @@ several kinds of starting point, so that coexisting motions are found:
   grazings (6 to 70 impacts a period on the README system), reached this way.
 
 A start that lies on a branch already traced is skipped.  Every start depends on the band's ends
-only, not on its step, so the branches and the located peak (:mod:`symimpact.forced.peak`) do
+only, not on its step, so the branches and the located peak (:mod:`symimpact.forced.orbits.peak`) do
 not depend on how finely the band is sampled.  Beside the branches: the primary without the
 damper (the linear response of M, K, C, Step 8's steady solution) and brute-force sweeps up and
 down the band, each run started from the previous one's end state, as a cross-check of the
@@ -35,12 +35,15 @@ from typing import Any
 
 import numpy as np
 
-from .. import _interrupt
-from ..errors import ParameterError, SymimpactError
-from ..generated import forced_flight as ff
-from ..model import checks
-from ..model.system import ImpactSystem
-from .contact_law import checked, is_constant, is_rigid, simulation_arguments
+from ... import _interrupt
+from ...errors import ParameterError, SymimpactError
+from ...generated import forced_flight as ff
+from ...model import checks
+from ...model.system import ImpactSystem
+from ..contact_law import checked, is_constant, is_rigid, simulation_arguments
+from ..forcing import Forcing
+from ..responses import SAMPLES, response_key, steady_response
+from ..simulation import settling_periods, simulate_forced
 from .continuation import (
     SWITCHES,
     Branch,
@@ -64,12 +67,9 @@ from .coverage import (
     least_period,
     section_states,
 )
-from .forcing import Forcing
 from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
-from .responses import SAMPLES, response_key, steady_response
 from .shooting import settled_state, shoot
-from .simulation import settling_periods, simulate_forced
 
 #: Periods kept for each brute-force sweep point's steady state; before them the run lasts until
 #: the free transient has decayed to SWEEP_SETTLED of its start, exp(−ζω_n·t) (at most
@@ -122,7 +122,7 @@ class FrequencyResponse:
     no_impact: list[tuple[float, float]] = field(default_factory=list)
     no_impact_grazings: list[float] = field(default_factory=list)
     #: the largest amplitude of a stable orbit or of the motion without impacts over the band,
-    #: located (:mod:`symimpact.forced.peak`); None where the curve holds neither
+    #: located (:mod:`symimpact.forced.orbits.peak`); None where the curve holds neither
     peak: Peak | None = None
     #: the largest amplitude of the primary without the damper over the band, located
     baseline_peak: Peak | None = None
@@ -163,7 +163,7 @@ class FrequencyResponse:
             out[name] = [renamed(r) for r in out[name]]
         for name in ("peak", "baseline_peak"):
             out[name] = renamed(out[name])
-        from .responses import response_unit
+        from ..responses import response_unit
 
         out["response"] = {"name": self.response, "unit": response_unit(self.response)}
         return out
@@ -237,7 +237,7 @@ def _on_branch(branches: list[Branch], omega: float, amplitude: float, k: int) -
 def _traced(branches, system, forcing, e, omega: float, amplitude: float, k: int) -> bool:
     """Whether an orbit of period k and ``amplitude`` at Ω = ``omega`` (exact: shot) lies on a
     traced branch: a branch near it (:func:`_on_branch`) holds an orbit at that Ω whose amplitude
-    agrees to 1e-7 (:func:`symimpact.forced.continuation.orbits_at`: Newton from the branch's
+    agrees to 1e-7 (:func:`symimpact.forced.orbits.continuation.orbits_at`: Newton from the branch's
     interpolated state).  The 2 % of :func:`_on_branch` alone would take the asymmetric orbits
     beside a symmetric branch for it (1.2 % apart at 25.39 rad/s on the issue's system)."""
     if any(len(b.points) == 1 and b.period_multiple == k
@@ -289,7 +289,7 @@ def frequency_response(
     states of one and two periods), from the periodic attractors of a multi-start at
     ``multistart`` frequencies (0: none), with rigid impacts refined where an initial state
     lands on motions of another kind at neighbouring frequencies
-    (:func:`symimpact.forced.coverage.attractors`, ``refine``), by branch switching and by at
+    (:func:`symimpact.forced.orbits.coverage.attractors`, ``refine``), by branch switching and by at
     most ``jumps`` runs from the branches' stable ends and losses of stability and of the multi-start's initial
     states at the branches' ends (None: MAX_JUMPS with rigid impacts, none with a compliant
     contact); with ``folds`` (rigid impacts), each branch that ends at a grazing beyond which
@@ -298,7 +298,7 @@ def frequency_response(
     multi-start's chaotic motions (:func:`_embedded`); the located peak; the linear
     response without the damper (Step 8, Eq. F1), the motion without impacts, and, with
     ``sweeps``, the up and down brute-force sweeps.  The multi-start's initial states run on
-    ``workers`` local processes (:func:`symimpact.forced.coverage.attractors`; None: one per
+    ``workers`` local processes (:func:`symimpact.forced.orbits.coverage.attractors`; None: one per
     core)."""
     system, forcing, e = checked(system, forcing, e)
     starts = checks.whole_number("starts", starts, 0, 1000)
@@ -438,7 +438,7 @@ def _coverage(found, branches, system, forcing, e, ws) -> Coverage:
 def _embedded(found, system, forcing, e, failures, follow) -> None:
     """The periodic orbits of 1 to MAX_SWITCH_PERIODS periods embedded in each chaotic or not
     periodic motion the multi-start found (rigid impacts): shot from the close returns of its
-    Poincaré section (:func:`symimpact.forced.coverage.close_returns`) and traced unless on a
+    Poincaré section (:func:`symimpact.forced.orbits.coverage.close_returns`) and traced unless on a
     traced branch (a close return that shooting does not converge from is a guess, and no
     note).  Unstable where they are found, they lead to the stable windows inside a chaotic
     band that lie between the multi-start's frequencies: on the README system the period-3
@@ -491,7 +491,7 @@ def _turn_at_grazing_ends(out, system, forcing, e, band, step, failures) -> None
     """Where a branch ends at a grazing beyond which no orbit continues it, the branch is
     continued from its end again, turning back there onto the orbits with the new low-speed
     impact on the same side (a non-smooth fold,
-    :func:`symimpact.forced.continuation.continue_orbit` with ``folds`` 1); the part beyond the
+    :func:`symimpact.forced.orbits.continuation.continue_orbit` with ``folds`` 1); the part beyond the
     fold is a new branch unless its first orbit lies on a traced one; each end turns at its own
     grazing (a branch folded between two grazings of one Ω turns at both), and beside each
     turned branch the orbits with one more impact are traced (:func:`_beside`).  On the
@@ -561,7 +561,7 @@ BESIDE_STEP = 1 / 8
 
 def _beside(out, system, forcing, e, band, step, turned, failures) -> None:
     """The branch of the orbits with one more impact beside the branch ``turned`` back at a
-    grazing (:func:`symimpact.forced.continuation.orbit_beside_grazing` at its points past the
+    grazing (:func:`symimpact.forced.orbits.continuation.orbit_beside_grazing` at its points past the
     turn, the first found), traced unless on a traced branch.  A symmetric orbit grazing both
     walls at once turns onto the asymmetric orbits with one new impact, beside which lie the
     symmetric ones with two.  The points looked beside lie at least the continuation's shortest
@@ -598,7 +598,7 @@ def _beside(out, system, forcing, e, band, step, turned, failures) -> None:
 
 def _switch_at(out, i, system, forcing, e, band, step, failures, budget) -> None:
     """Branch switching on branch ``i``: from every branch point and period doubling located on
-    it, the branches that leave it (:func:`symimpact.forced.continuation.branch_starts`) are
+    it, the branches that leave it (:func:`symimpact.forced.orbits.continuation.branch_starts`) are
     traced unless their start lies on a traced branch; the mirror image of an asymmetric orbit
     is recognised (the same amplitude at the same Ω, to 1e-8) and marks its branch
     ``mirrored``.  At most MAX_SWITCHES switches for the curve, and periods up to
@@ -692,7 +692,7 @@ def _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sourc
     heavily impacting damper breaks into many short branches) — or loses its stability
     (:func:`_departures`), a slow sweep would jump to another motion: a run from the orbit
     there at Ω JUMP of the band beyond it, classified by
-    :func:`symimpact.forced.coverage.attractor`, gives that motion, and a periodic one not on a
+    :func:`symimpact.forced.orbits.coverage.attractor`, gives that motion, and a periodic one not on a
     traced branch starts a branch (which is jumped from in turn).  A place met again (within
     half a jump in Ω and 1e-3 in amplitude, the same direction: the branches of one orbit that
     the cascades of grazings near 30.9 rad/s on the README system return to) is not jumped
@@ -717,7 +717,7 @@ def _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sourc
 
 
 def _start_at_ends(out, system, forcing, e, band, failures, follow, budget, places) -> None:
-    """The multi-start's initial states (:func:`symimpact.forced.coverage.initial_states`) run
+    """The multi-start's initial states (:func:`symimpact.forced.orbits.coverage.initial_states`) run
     at the Ω of every branch end inside the band, stable or not, at least ENDS_APART of the band
     from one another and from the places started from before: a branch that ends where no
     grazing is crossed (the corrector fails among impacts that appear and vanish, or at a sharp
@@ -744,7 +744,7 @@ def _start_at_ends(out, system, forcing, e, band, failures, follow, budget, plac
 
 def _run_and_follow(system, e, fs, state, omega, what, origin, failures, follow, budget) -> bool:
     """One run from ``state`` under ``fs``, classified by
-    :func:`symimpact.forced.coverage.attractor`; a periodic landing on no traced branch starts
+    :func:`symimpact.forced.orbits.coverage.attractor`; a periodic landing on no traced branch starts
     one, whose ``origin`` is set (``omega``: the place run from).  False, with a note, when the
     budget of runs (``budget["max_jumps"]``, shared by the jumps and the starts at branch ends)
     is spent."""

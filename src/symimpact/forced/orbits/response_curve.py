@@ -6,7 +6,7 @@ displacement, acceleration between impacts, force into the base or transmissibil
 The curve's orbits are the displacement curve's (:func:`symimpact.forced.frequency_response`):
 each point's response is computed along its orbit from its state (Eq. F1 between impacts, Eq. F2
 at them); the primary alone and the motion without impacts in closed form (Step 8); the peak by
-the same search as the displacement's (:func:`symimpact.forced.peak.curve_peak`), its trial
+the same search as the displacement's (:func:`symimpact.forced.orbits.peak.curve_peak`), its trial
 orbits measured in the response.  The brute-force sweeps keep no states, so a response curve has
 none: they are the displacement curve's cross-check.
 """
@@ -20,11 +20,11 @@ from typing import Any
 
 import numpy as np
 
-from ..model.system import ImpactSystem
-from .forcing import Forcing
+from ...model.system import ImpactSystem
+from ..forcing import Forcing
+from ..responses import checked_response, linear_response, orbit_response
 from .frf import FrequencyResponse
 from .peak import baseline_peak, curve_peak
-from .responses import checked_response, linear_response, orbit_response
 
 
 def response_curve(

@@ -1,5 +1,5 @@
 """The pieces of a linearised motion through rigid impacts, shared by the closed-form orbits'
-stability (:mod:`symimpact.forced.periodic`) and shooting (:mod:`symimpact.forced.shooting`):
+stability (:mod:`symimpact.forced.orbits.periodic`) and shooting (:mod:`symimpact.forced.orbits.shooting`):
 the flight's transition matrix Φ(τ) (Step 8), the primary's acceleration (Eq. F1) and Step 9's
 saltation matrix S, all in the state (x, ẋ, z = y − x, ẏ)."""
 
@@ -9,10 +9,10 @@ import math
 
 import numpy as np
 
-from ..generated import rigid_impact as ri
-from ..model.system import ImpactSystem
-from . import _rigid
-from .forcing import Forcing
+from ...generated import rigid_impact as ri
+from ...model.system import ImpactSystem
+from ..engine import _rigid
+from ..forcing import Forcing
 
 
 def flight_matrix(system: ImpactSystem, tau: float) -> np.ndarray:

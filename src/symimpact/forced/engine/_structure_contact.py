@@ -3,7 +3,7 @@
 While damper k presses a wall s = ±1 of its clearance, δₖ = s·(yₖ − xₐ) − dₖ/2 > 0 with its
 point xₐ = x_b + φₖᵀq, the mass and the structure push each other with the contact law's force
 Fₖ(δₖ, δ̇ₖ) (Eq. 35's linear k₁δ + c₁δ̇, Eq. 9's Hertz k_hz·δ^1.5 + c₁δ̇, or Hunt–Crossley's
-k_hz·δ^1.5·(1 + χδ̇), Eq. F4: the one-mode engine's laws, :func:`symimpact.forced._compliant.
+k_hz·δ^1.5·(1 + χδ̇), Eq. F4: the one-mode engine's laws, :func:`symimpact.forced.engine._compliant.
 _force`), which enters the modes through their shapes (Step 15, item 4, Eq. F7, with the impulse
 spread over the contact):
 
@@ -11,11 +11,11 @@ spread over the contact):
 
 A contact phase — from one damper's onset until no damper presses a wall — is integrated over the
 whole state (q, q̇, y, ẏ) by the Dormand–Prince 5(4) pair of the one-mode contact
-(:mod:`symimpact.forced._compliant`, rtol 1e-13), with the work of the modal forces, the
+(:mod:`symimpact.forced.engine._compliant`, rtol 1e-13), with the work of the modal forces, the
 dissipation of the Cᵢ and of the contacts' damping carried along, so the energy ledger closes.
 Any damper's onset or exit inside a step is located by re-stepping from the step's start
 (Illinois regula falsi on the step's length), so that the law's kink at δ = 0 falls on a step's
-end.  Between phases the flight is the closed form of :mod:`symimpact.forced._modal`, which hands
+end.  Between phases the flight is the closed form of :mod:`symimpact.forced.engine._modal`, which hands
 over at an onset.  A rigid damper flies through a phase as a free mass (ÿₖ = 0); where it meets
 a wall of its clearance (located as an onset is) Step 15's impact law (Eq. F7) acts at once:
 P = (1 + e)μ(ẏₖ − ẋₐ), μ = (1/mₖ + φₖᵀBφₖ)⁻¹, q̇ += BφₖP, ẏₖ −= P/mₖ, its loss
@@ -48,7 +48,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..free._stepper import secant_point
+from ...free._stepper import secant_point
 from ._compliant import _DP_A, _DP_B, _DP_C, _DP_E, RTOL, _force
 from ._rigid import P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
 
@@ -63,7 +63,7 @@ KIND_ONSET, KIND_EXIT, KIND_IMPACT, KIND_ACCUMULATION, KIND_RELEASE = 3, 4, 0, 1
 #: Columns of a phase's event log: (t, damper, wall, kind, δ̇, the point's x and ẋ, the mass's
 #: ẏ, the point's ẋ and the mass's ẏ after the event, the energy it took).
 N_PHASE_COLS = 11
-#: A damper's law code for rigid impacts (the others: :data:`symimpact.forced._compliant.CODES`)
+#: A damper's law code for rigid impacts (the others: :data:`symimpact.forced.engine._compliant.CODES`)
 RIGID = -1
 #: The code of a rigid damper whose mass rides on its point (its chatter accumulated): the
 #: structure carries it there (module text).
@@ -78,7 +78,7 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K, Ainv):
     stops' dashpots.  ``stp``: the stops, a row each (φ at the point, gap g, k₁, c₁, walls +1,
     −1 or 0 for both, 1 for a rigid stop else 0, its e): a point past a linear stop's gap,
     xₛ = φᵀq beyond ±g on a wall it has, is pushed back by k₁(xₛ ∓ g) + c₁ẋₛ (the modal engine's
-    law, :func:`symimpact.forced._modal._config`); a rigid stop adds no force."""
+    law, :func:`symimpact.forced.engine._modal._config`); a rigid stop adds no force."""
     W, phi = pm[0, P_W], pm[0, P_PHI]
     th = W * t + phi
     c, s = math.cos(th), math.sin(th)

@@ -17,11 +17,11 @@ from typing import Any
 import numpy as np
 from numba import njit
 
-from ..errors import ParameterError
-from ..generated import sampled_load as _sl
-from ..model import checks
-from ..model.system import ImpactSystem
-from .loads import Record
+from ...errors import ParameterError
+from ...generated import sampled_load as _sl
+from ...model import checks
+from ...model.system import ImpactSystem
+from .records import Record
 
 _ramp_state = njit(cache=True)(_sl.ramp_state_scalar)
 
@@ -59,7 +59,7 @@ def primary_response(
     ẋ0 [m/s] at t = 0: Eq. F8 on each interval.  A force record p drives M ẍ + C ẋ + K x = p; a
     base acceleration a_b drives the displacement relative to the base with p = −M·a_b."""
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
-    checks.instance("record", record, Record, "a Record (symimpact.forced.loads)")
+    checks.instance("record", record, Record, "a Record (symimpact.forced.loads.records)")
     x0 = checks.bounded("x0", x0, unit="m")
     v0 = checks.bounded("xdot0", xdot0, unit="m/s")
     if system.C >= 2.0 * math.sqrt(system.K * system.M):

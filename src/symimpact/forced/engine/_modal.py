@@ -43,7 +43,7 @@ meets the test of either alone (a ten-mode cantilever: 5·10⁴ events in a quar
 
 *The next event.*  Damper k's relative displacement zₖ = yₖ − φₖᵀq has |zₖ''| ≤ Aₖ: while no mass
 sticks Aₖ = Σ|φᵢ(aₖ)|·Aᵢ, Aᵢ the one-mode bound of mode i's acceleration over the flight
-(:func:`symimpact.forced._rigid._accel_bound`); while masses stick, the sum over the stuck
+(:func:`symimpact.forced.engine._rigid._accel_bound`); while masses stick, the sum over the stuck
 system's modes of |φₖᵀVₗcₗ|·|λₗ|² (each decays, Re λₗ ≤ 0; the projections above) and the
 harmonic part Ω²|φₖᵀX̂|.
 All free dampers are marched together: an interval every bound clears is skipped, any other
@@ -78,9 +78,9 @@ import math
 import numpy as np
 from numba import njit
 
-from .._interrupt import EVERY, INTERRUPTED, stop_requested
-from ..free._stepper import secant_point
-from ..generated import forced_flight as _fl
+from ..._interrupt import EVERY, INTERRUPTED, stop_requested
+from ...free._stepper import secant_point
+from ...generated import forced_flight as _fl
 from ._borrowed import borrowed, borrowed_config
 from ._rigid import (
     _GL_W,
@@ -136,7 +136,7 @@ _GL4_X, _GL4_W = np.polynomial.legendre.leggauss(4)
 #: response (undamped, driven at one of its own frequencies) or no eigen-decomposition.
 SINGULAR_STUCK = 3
 #: Run status: a compliant damper's contact begins (its onset is the log's last event); the
-#: caller integrates the contact (:mod:`symimpact.forced._structure_contact`) and runs on.
+#: caller integrates the contact (:mod:`symimpact.forced.engine._structure_contact`) and runs on.
 CONTACT = 5
 #: Extra event-log column: the damper of the event (its index).
 E_DAMPER = N_EVENT_COLS
@@ -150,7 +150,7 @@ KIND_ONSET, KIND_EXIT = 3, 4
 
 @njit(cache=True, inline="always")
 def _mode_accel(pm, i, mass, t, x, v):
-    """Mode i's q̈ᵢ (:func:`symimpact.forced._rigid._accel` on row i of ``pm``)."""
+    """Mode i's q̈ᵢ (:func:`symimpact.forced.engine._rigid._accel` on row i of ``pm``)."""
     W, K, C = pm[i, P_W], pm[i, P_K], pm[i, P_C]
     th = W * t + pm[i, P_PHI]
     P = pm[i, P_F0] + K * pm[i, P_XB]
@@ -160,7 +160,7 @@ def _mode_accel(pm, i, mass, t, x, v):
 
 @njit(cache=True)
 def _mode_jerk(pm, i, mass, t, x, v):
-    """Mode i's d³qᵢ/dt³ (:func:`symimpact.forced._rigid._jerk` on row i of ``pm``)."""
+    """Mode i's d³qᵢ/dt³ (:func:`symimpact.forced.engine._rigid._jerk` on row i of ``pm``)."""
     W, K, C = pm[i, P_W], pm[i, P_K], pm[i, P_C]
     th = W * t + pm[i, P_PHI]
     P = pm[i, P_F0] + K * pm[i, P_XB]
@@ -646,7 +646,9 @@ def _free_states(pm, form, t0, q0, v0, tau, q, v):
     cw, sw = math.cos(W * tau), math.sin(W * tau)
     for i in range(N):
         f = form[i]
-        if f[12] == 0.0:  # :func:`symimpact.forced._rigid._state` on row i: Eq. F1's own branch
+        if (
+            f[12] == 0.0
+        ):  # :func:`symimpact.forced.engine._rigid._state` on row i: Eq. F1's own branch
             th = (pm[i, P_W] * t0 + pm[i, P_PHI]) % (2.0 * math.pi)
             q[i], v[i] = _xvf(tau, pm[i, P_M], pm[i, P_K], pm[i, P_C], pm[i, P_F0],
                               pm[i, P_XB], pm[i, P_W], th, q0[i], v0[i])  # fmt: skip
@@ -945,7 +947,7 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v, xb):
 
 @njit(cache=True, inline="always")
 def _mode_accel_bound(p, f, c, sn, t0, x0, v0, T):
-    """:func:`symimpact.forced._rigid._accel_bound` of mode row ``p`` from its configuration's
+    """:func:`symimpact.forced.engine._rigid._accel_bound` of mode row ``p`` from its configuration's
     constants ``f`` (its form row, :func:`_mode_constants`) and cos θ, sin θ of the flight's
     start: the same operations on the same doubles, so the same bound, without its division,
     square roots but one, and transcendentals per mode and flight."""
@@ -1018,7 +1020,7 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, rows, xb):
 @njit(cache=True)
 def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, rows, out, xb):
     """A τ up to which the wall ``side`` the damper of row ``row`` of ``Phi`` just left cannot be
-    reached: :func:`symimpact.forced._rigid._held_off` with the point's acceleration
+    reached: :func:`symimpact.forced.engine._rigid._held_off` with the point's acceleration
     g = side·ẍₐ, A ≥ |ẍₐ| and B ≥ |g''| (q, v: scratch; ``rows``, ``out``: the coupled flight
     projected on ``Phi``'s points and their scratch, :func:`_held_rows`, or none, shape 0)."""
     period = 2.0 * math.pi / cfg[8]
@@ -2480,7 +2482,7 @@ def _kept_alive(owned, cfgs):
 def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0,
         Pout, xb, t0, t_end, max_events, variational, stuck0, held0, energy, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
-    :mod:`symimpact.forced._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
+    :mod:`symimpact.forced.engine._rigid`; dampers: shapes ``Phi, k`` at their points, masses ``md``,
     half clearances ``hd``, restitution ``ed`` with yield speeds ``vyd`` (0: constant e; else
     Step 13's e(v), Eq. F5, which tends to 1 at low speed, so chatter never accumulates); chatter taken to its accumulation point when it
     would end within ``chat`` forcing periods) and stops (shapes ``Sphi, s`` at their points, gaps
@@ -2504,7 +2506,7 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     of its eight) and the ledger is not whole; the motion is the same to the bit.
 
     Returns (status, events, n_events, period_max, ledger, final): the event log (columns of
-    :mod:`symimpact.forced._rigid` and E_DAMPER; columns 1, 2, 3, 8, 9 hold the point's
+    :mod:`symimpact.forced.engine._rigid` and E_DAMPER; columns 1, 2, 3, 8, 9 hold the point's
     displacement, its velocity and the mass's before and after; a stop's contact onset or exit,
     kinds KIND_ONSET and KIND_EXIT, has E_DAMPER = K + s, its wall in E_SIDE and the point's
     speed in E_VREL), ``period_max[k, p]`` the largest abs(x) at output point p in forcing period
@@ -3019,16 +3021,16 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
 @njit(cache=True)
 def one_mode_run(p, state0, t_end, max_events, variational, energy, watch):
     """The paper's primary through :func:`run`: one mode of mass M and shape 1 (parameters
-    ``p`` in :mod:`symimpact.forced._rigid`'s layout), one damper, from state0 = (x, ẋ, y, ẏ).
+    ``p`` in :mod:`symimpact.forced.engine._rigid`'s layout), one damper, from state0 = (x, ẋ, y, ẏ).
     ``variational`` is passed on to :func:`run` as it came (callers give False: the one-mode
-    chain is built from the event log, :mod:`symimpact.forced._chain`).  It is an argument, not
+    chain is built from the event log, :mod:`symimpact.forced.engine._chain`).  It is an argument, not
     a constant written here, because numba compiles a callee once for each literal it is given:
     a ``False`` typed here would compile the whole engine a second time (minutes on a 2-core
     machine) beside the structure's own signature, which this one now shares; ``energy`` is
     passed on so too.
 
     Returns (status, events, n_events, period_max, ledger, final) in the one-mode layout: events
-    with :mod:`symimpact.forced._rigid`'s ten columns, the largest abs(x) of every period, the
+    with :mod:`symimpact.forced.engine._rigid`'s ten columns, the largest abs(x) of every period, the
     ledger's first three terms (no stops), final = (t, x, ẋ, y, ẏ, 1.0 if it ended stuck)."""
     pm = p.reshape((1, p.shape[0])).copy()
     one = np.ones((1, 1))
@@ -3053,8 +3055,8 @@ def _forget_stale_compilations() -> None:
     changed (numba's cache does not follow a callee into another module)."""
     from pathlib import Path
 
-    from ..free import _stepper
-    from ..generated import forced_flight
+    from ...free import _stepper
+    from ...generated import forced_flight
     from . import _borrowed, _rigid
 
     sources = [Path(__file__), Path(_rigid.__file__), Path(forced_flight.__file__),

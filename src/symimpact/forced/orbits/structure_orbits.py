@@ -4,7 +4,7 @@
 The stroboscopic map P takes the state s = (q, q̇, y, ẏ) — the N modal coordinates and their
 rates, each damper's absolute displacement and speed — at t = 0 to the state k forcing periods
 later; a period-k orbit is a fixed point of P.  P is the engine of several modes
-(:mod:`symimpact.forced._modal`: Eq. F1 per mode in flight, Step 15's impact law, Eq. F7, a
+(:mod:`symimpact.forced.engine._modal`: Eq. F1 per mode in flight, Step 15's impact law, Eq. F7, a
 pressed stop's spring and dashpot in the coupled closed form), and its Jacobian, the monodromy
 matrix, is carried along the run, not differenced: each flight contributes its transition matrix
 (per mode Step 8's Φᵢ(τ), or the coupled structure's Re(V e^{Λτ} V⁻¹) while a stop is pressed;
@@ -15,7 +15,7 @@ with the Jacobian (monodromy − I) converges quadratically from a state near th
 state of a long run); the eigenvalues of the monodromy are the Floquet multipliers.
 
 *Through chatter and sticking.*  The chain is carried on through a chatter taken to its
-accumulation point and the sticking that follows (:func:`symimpact.forced._modal.run`): the
+accumulation point and the sticking that follows (:func:`symimpact.forced.engine._modal.run`): the
 accumulation time t∞ = t₀ + Δ, Δ = 2w/(a(1 − e)), moves with the state just after the impact that
 starts the chatter and with that impact's own time, so its row δt∞ is the chain rule of Δ's
 closed form; the structure flies Δ (its Φ(τ)); the plastic closure at t∞ is a jump D with
@@ -24,7 +24,7 @@ its rows are its point's, δyₖ = φₖᵀδq and δẏₖ = φₖᵀδq̇, thr
 (Re(V e^{Λτ} V⁻¹) of M + Σmₖφₖφₖᵀ) and the other dampers' impacts; and a release, where the wall
 would begin to pull, has the identity as its saltation (the mass's and the point's accelerations
 are both 0 there).  On one mode this is the one-mode engine's chain from its event log
-(:func:`symimpact.forced.shooting.rigid_monodromy`) to 8e-11, and on three modes with two dampers
+(:func:`symimpact.forced.orbits.shooting.rigid_monodromy`) to 8e-11, and on three modes with two dampers
 it is the limit of the map's central differences, which approach it as h²
 (tests/test_structure_sticking_orbits.py).  Where the run is not differentiated so — a mass on
 its wall at the section (the map's two sides differ there), an impulse that lets a stuck mass
@@ -48,12 +48,12 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import MethodNotApplicable, ParameterError
-from ..model.checks import whole_number
-from ..model.structure import Structure
-from . import _modal, _rigid
-from .simulation import impact_counts
-from .structure_response import StructureResult, simulate_structure
+from ...errors import MethodNotApplicable, ParameterError
+from ...model.checks import whole_number
+from ...model.structure import Structure
+from ..engine import _modal, _rigid
+from ..simulation import impact_counts
+from ..structure_response import StructureResult, simulate_structure
 
 
 @dataclass(frozen=True)

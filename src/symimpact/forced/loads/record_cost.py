@@ -18,13 +18,13 @@ import time
 from dataclasses import dataclass, replace
 from typing import Any
 
-from .. import budgets
-from ..errors import ParameterError
-from ..model.system import ImpactSystem
-from .loads import Record
+from ... import budgets
+from ...errors import ParameterError
+from ...model.system import ImpactSystem
+from ..simulation import CHATTER
 from .record_flight import primary_response
 from .record_response import damper_response
-from .simulation import CHATTER
+from .records import Record
 
 #: The samples of a piece timed.
 PIECE_SAMPLES = 20_000

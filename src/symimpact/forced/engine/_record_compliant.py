@@ -1,12 +1,12 @@
 """Compiled simulation of the primary and its impact damper with a compliant contact (cubic,
 Hertz, linear, Hunt–Crossley) under a sampled load (numba, cached).
 
-Flights are those of :mod:`symimpact.forced._record_rigid`: on each interval of the record the
+Flights are those of :mod:`symimpact.forced.engine._record_rigid`: on each interval of the record the
 load is a straight line and the primary follows Step 16's flight (Eq. F8) in closed form, the
 impact mass moves with the base's acceleration taken out, and the next contact onset (abs(z) =
 d/2) is found by the same certified search.  A contact phase, δ = s·z − d/2 > 0 on the wall
 s = ±1, is integrated by the Dormand–Prince 5(4) pair of the harmonic compliant engine
-(:mod:`symimpact.forced._compliant`, its tableau and its contact laws), with the record's
+(:mod:`symimpact.forced.engine._compliant`, its tableau and its contact laws), with the record's
 straight line in the primary's equation (relative to the base under a base acceleration a_b):
 
     m ÿ = −m·g − s·F(δ, δ̇),  M ẍ = p − K x − C ẋ + s·F(δ, δ̇),
@@ -16,7 +16,7 @@ with p the force and g = 0, or p = −M·a_b and g = a_b.  Its steps end at the 
 from the step's start (Illinois regula falsi).  The load's work, C's dissipation and the
 contact's damping are integrated with the motion, so the energy ledger closes.
 
-This module is private: :mod:`symimpact.forced.record_response` validates the input.
+This module is private: :mod:`symimpact.forced.loads.record_response` validates the input.
 """
 
 from __future__ import annotations
@@ -26,8 +26,8 @@ import math
 import numpy as np
 from numba import njit
 
-from .._interrupt import EVERY, INTERRUPTED, stop_requested
-from ..free import _stepper
+from ..._interrupt import EVERY, INTERRUPTED, stop_requested
+from ...free import _stepper
 from . import _compliant as _cp
 from . import _record_rigid as _rr
 

@@ -18,13 +18,13 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ParameterError
-from ..model import checks
-from ..model.system import ImpactSystem
-from .loads import Record
+from ...errors import ParameterError
+from ...model import checks
+from ...model.system import ImpactSystem
+from ..simulation import CHATTER
 from .record_flight import _march, primary_response
 from .record_response import damper_response
-from .simulation import CHATTER
+from .records import Record
 
 #: The SRS's oscillators: damping ratio 5 % (Q = 10), the usual one in shock specifications.
 SRS_ZETA = 0.05
@@ -183,7 +183,7 @@ def shock_response(
     system: ImpactSystem, record: Record, *, e: Any, frequencies: Any,
     zeta: Any = SRS_ZETA, chatter: Any = CHATTER,
 ) -> ShockResult:  # fmt: skip
-    """``record`` (a shock of :func:`~symimpact.forced.loads.shock_record`, or any record) on
+    """``record`` (a shock of :func:`~symimpact.forced.loads.records.shock_record`, or any record) on
     ``system`` with rigid impacts of restitution ``e`` (Eq. F2, flight Eq. F8; or the compliant
     law of a :class:`~symimpact.forced.contact_law.CompliantContact`) and on the
     primary alone; the SRS of the main mass's absolute motion at ``frequencies`` [Hz], over the

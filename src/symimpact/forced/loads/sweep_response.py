@@ -3,7 +3,7 @@ displacement against the sweep's instantaneous frequency (the largest abs(x) ove
 periods), swept up and down, with and without the damper — the run-up a machine makes through
 its resonance, beside the steady curve of ``frf`` (:func:`steady_curve`: the continued branches'
 stable orbits and the motion without impacts, and the linear curve without the damper, at the
-sweep's amplitude).  Each sweep is a record of :func:`symimpact.forced.loads.sweep_record`; the
+sweep's amplitude).  Each sweep is a record of :func:`symimpact.forced.loads.records.sweep_record`; the
 response is exact for it (Eq. F8 on each interval, Eq. F2 at each impact).
 """
 
@@ -15,18 +15,18 @@ from typing import Any
 
 import numpy as np
 
-from ..model.system import ImpactSystem
-from ..model.units import positive_float
-from .contact_law import restitution_or_law
-from .forcing import Forcing
-from .frf import frequency_response
-from .loads import sweep_frequency, sweep_record
+from ...model.system import ImpactSystem
+from ...model.units import positive_float
+from ..contact_law import restitution_or_law
+from ..forcing import Forcing
+from ..orbits.frf import frequency_response
+from ..orbits.response_curve import response_curve
+from ..responses import linear_response
+from ..simulation import CHATTER
 from .record_cost import PIECE_SAMPLES, Estimate, record_estimate
 from .record_flight import primary_response
 from .record_response import damper_response
-from .response_curve import response_curve
-from .responses import linear_response
-from .simulation import CHATTER
+from .records import sweep_frequency, sweep_record
 
 
 def envelope(
@@ -139,7 +139,7 @@ def steady_curve(
     system: ImpactSystem, amplitude: Any, f_low: float, f_high: float, *, e: Any,
     kind: str = "force", points: int = STEADY_POINTS,
 ) -> SteadyCurve:  # fmt: skip
-    """The curve of ``frf`` (:func:`symimpact.forced.frf.frequency_response`, without its
+    """The curve of ``frf`` (:func:`symimpact.forced.orbits.frf.frequency_response`, without its
     brute-force sweeps: the sweep drawn beside it is the brute force) for a harmonic load of the
     sweep's ``amplitude`` — a force F0 [N] on the main mass, or a base acceleration A_b [m/s²]
     that stays constant over the band (X_b = A_b/Ω²), the amplitude then of x − x_b as in the
@@ -226,7 +226,7 @@ def sweep_estimate(
 ) -> Estimate:  # fmt: skip
     """The time of :func:`sweep_response`'s two sweeps (not its steady curve) on this machine:
     pieces of the sweep up from its start and from where it crosses the primary's natural
-    frequency (:func:`~symimpact.forced.record_cost.record_estimate`), the time of drawing it
+    frequency (:func:`~symimpact.forced.loads.record_cost.record_estimate`), the time of drawing it
     and of its envelopes."""
     f_low = positive_float("f_low", f_low, "Hz")
     f_high = positive_float("f_high", f_high, "Hz")

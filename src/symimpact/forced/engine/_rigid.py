@@ -5,9 +5,9 @@ restitution (Step 9, Eq. F2; Step 13's e(v), Eq. F5), the flights' transition ma
 shooting chain, and the parameter layout of one mode.  No ODE is integrated.
 
 The engine itself, which composes these mode by mode for a structure of several modes and
-dampers, with chatter and sticking, is :mod:`symimpact.forced._modal`; the paper's primary is its
-case of one mode of shape 1 and one damper (:func:`symimpact.forced._modal.one_mode_run`).  The
-compliant engine (:mod:`symimpact.forced._compliant`) uses the same flight and search between
+dampers, with chatter and sticking, is :mod:`symimpact.forced.engine._modal`; the paper's primary is its
+case of one mode of shape 1 and one damper (:func:`symimpact.forced.engine._modal.one_mode_run`).  The
+compliant engine (:mod:`symimpact.forced.engine._compliant`) uses the same flight and search between
 its contacts.
 
 *Finding the next impact without sampling gaps.*  On [τa, τb] the relative displacement
@@ -33,10 +33,10 @@ import math
 import numpy as np
 from numba import njit
 
-from .._interrupt import EVERY, stop_requested
-from ..free._stepper import secant_point
-from ..generated import forced_flight as _fl
-from ..generated import hertz_contact as _hz
+from ..._interrupt import EVERY, stop_requested
+from ...free._stepper import secant_point
+from ...generated import forced_flight as _fl
+from ...generated import hertz_contact as _hz
 
 # parameter vector layout; P_VY: the yield speed of a restitution that follows the impact
 # speed (Step 13, Eq. F5; 0: the constant e of P_e)
@@ -426,7 +426,7 @@ def _forget_stale_compilations() -> None:
     """This module's cached code, dropped when it or the forced-flight kernels changed."""
     from pathlib import Path
 
-    from ..free._stepper import forget_stale_compilations
+    from ...free._stepper import forget_stale_compilations
 
     forget_stale_compilations(_next_impact, [Path(__file__), Path(_fl.__file__)], ("_rigid.",))
 

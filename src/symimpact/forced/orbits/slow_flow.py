@@ -2,7 +2,7 @@
 frequency, the frequency-response curve at a fixed clearance, the backbone and the best clearance.
 
 The slow flow assumes a light impact mass (m ≪ M) and a harmonic primary; Step 10's exact orbits
-(:func:`~symimpact.forced.periodic.periodic_orbits`) do not.  ``tests/test_slow_flow.py`` measures
+(:func:`~symimpact.forced.orbits.periodic.periodic_orbits`) do not.  ``tests/test_slow_flow.py`` measures
 the difference as m/M grows; the docs' forced-response page prints it.
 """
 
@@ -15,11 +15,11 @@ from typing import Any
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from ..errors import MethodNotApplicable, ParameterError
-from ..generated import slow_flow as sf
-from ..model.system import ImpactSystem
-from ..model.units import si
-from .forcing import Forcing
+from ...errors import MethodNotApplicable, ParameterError
+from ...generated import slow_flow as sf
+from ...model.system import ImpactSystem
+from ...model.units import si
+from ..forcing import Forcing
 
 #: Samples per half period when checking that the impact mass stays between the walls between
 #: impacts (the relative motion is a triangle minus a cosine: at most two extremes per half
@@ -56,7 +56,7 @@ class SlowFlowResponse:
 
 def _restitution(system: Any, forcing: Any, e: Any) -> float:
     """Newton's e of the slow flow's rigid impacts, with the system and forcing checked."""
-    from .contact_law import checked
+    from ..contact_law import checked
 
     return checked(system, forcing, e, rigid_only="the slow flow")[2]
 

@@ -5,7 +5,7 @@ primary without the damper.
 - **Stable orbits** (:func:`stable_peak`): along each branch, every stable point in the band;
   where the amplitude has an interior maximum on a run of stable points, that maximum located
   by Brent's method in the parameter, each trial orbit found by Newton's method from the
-  branch's interpolated state (:func:`symimpact.forced.continuation.orbit_between`); the
+  branch's interpolated state (:func:`symimpact.forced.orbits.continuation.orbit_between`); the
   located bifurcations that end a stable run (fold, branch point, period doubling,
   Neimark–Sacker, grazing: there the amplitude is the supremum of the stable ones); and the
   orbits exactly at the band's edges.
@@ -28,11 +28,11 @@ from typing import Any
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from ..model.system import ImpactSystem
+from ...model.system import ImpactSystem
+from ..forcing import Forcing
 from .continuation import Branch, orbit_between
-from .forcing import Forcing
 
-#: The kinds of steady motion (:mod:`symimpact.forced.coverage`) no branch of periodic orbits can
+#: The kinds of steady motion (:mod:`symimpact.forced.orbits.coverage`) no branch of periodic orbits can
 #: hold.
 UNTRACEABLE = ("chatter or sticking", "not periodic", "chaotic", "quasi-periodic")
 #: Brent's method stops when the bracket on Ω is below this share of Ω: the amplitude is flat to
@@ -65,7 +65,7 @@ class Peak:
 
 def linear_amplitude(system: ImpactSystem, forcing: Forcing, w: Any) -> np.ndarray:
     """The primary without the damper: amplitude of Step 8's steady solution (Eq. F1) [m]."""
-    from .responses import steady_amplitude
+    from ..responses import steady_amplitude
 
     return np.abs(steady_amplitude(system, forcing, w))
 
@@ -137,7 +137,7 @@ def stable_peak(
     """The largest amplitude among the stable orbits of ``branches`` (continued in Ω) within
     ``band`` (module text); None if no branch has a stable orbit there.  With ``measure``, the
     largest of that response instead, the branches' points and bifurcations carrying it in their
-    ``amplitude`` (:func:`symimpact.forced.response_curve.response_curve`)."""
+    ``amplitude`` (:func:`symimpact.forced.orbits.response_curve.response_curve`)."""
     lo, hi = band
     best: Peak | None = None
 
@@ -209,7 +209,7 @@ def curve_peak(
     measure: Measure | None = None, linear: Callable[[Any], Any] | None = None,
 ) -> Peak | None:  # fmt: skip
     """The largest of :func:`stable_peak`, :func:`no_impact_peak` and the steady motions that no
-    branch can hold (``others``: attractors of :mod:`symimpact.forced.coverage` of the kinds
+    branch can hold (``others``: attractors of :mod:`symimpact.forced.orbits.coverage` of the kinds
     UNTRACEABLE — chatter or sticking, chaotic, quasi-periodic, not periodic — their largest
     abs(x) over the kept periods, at the
     multi-start's frequency): the worst steady motion found over ``band``.  With ``measure``

@@ -2,7 +2,7 @@
 the variational equations carried through flight and contact (numba, cached on disk).
 
 Free flight is closed form and its contact onsets are found exactly as for rigid impacts
-(:mod:`symimpact.forced._rigid`: Step 8's flight, Eq. F1, and its gap-free onset search).  A
+(:mod:`symimpact.forced.engine._rigid`: Step 8's flight, Eq. F1, and its gap-free onset search).  A
 contact phase, δ = s·z − d/2 > 0 on the wall s = ±1, is integrated by the Dormand–Prince 5(4)
 pair of the free-decay stepper (:mod:`symimpact.free._stepper`), with the forcing in the primary's
 equation,
@@ -39,10 +39,10 @@ import math
 import numpy as np
 from numba import njit
 
-from .. import _interrupt, budgets
-from .._interrupt import EVERY, INTERRUPTED, stop_requested
-from ..free import _stepper
-from ..free._stepper import P_a, P_b, P_c1, P_k1, P_khz
+from ... import _interrupt, budgets
+from ..._interrupt import EVERY, INTERRUPTED, stop_requested
+from ...free import _stepper
+from ...free._stepper import P_a, P_b, P_c1, P_k1, P_khz
 from . import _rigid
 from ._borrowed import borrowed
 

@@ -1,6 +1,6 @@
 """The continuation's Newton corrector in Ω for rigid impacts, compiled.
 
-:func:`symimpact.forced.continuation._correct` solves [F(y) = 0, tᵀ(y − y_pred) = 0] for
+:func:`symimpact.forced.orbits.continuation._correct` solves [F(y) = 0, tᵀ(y − y_pred) = 0] for
 y = (s/scale, Ω/unit), F(y) = (P(s; Ω) − s)/scale, with P the stroboscopic map over k periods
 (Step 8's flights, Step 9's impacts, chatter to its accumulation and sticking) and its Jacobian
 carried along the same motion (the monodromy and ∂P/∂Ω, :func:`._chain.rigid_jacobian`).  Each
@@ -21,10 +21,10 @@ import math
 import numpy as np
 from numba import njit
 
-from .. import _interrupt
-from . import _chain, _rigid
-from ._modal import one_mode_run
-from .simulation import _EPS, CANCELLATION, MAX_NATURAL_PERIODS, _absorbed
+from ... import _interrupt
+from ..engine import _chain, _rigid
+from ..engine._modal import one_mode_run
+from ..simulation import _EPS, CANCELLATION, MAX_NATURAL_PERIODS, _absorbed
 
 #: Outcomes of :func:`correct` beside the interrupt's status.
 CONVERGED, GRAZED, FAILED = 0, 1, 2
@@ -135,9 +135,10 @@ def _forget_stale_compilations() -> None:
     chain (:mod:`._chain`) or the chatter count (:func:`symimpact.forced.simulation._absorbed`)."""
     from pathlib import Path
 
-    from ..free import _stepper
-    from ..generated import forced_flight
-    from . import _borrowed, _modal, simulation
+    from ...free import _stepper
+    from ...generated import forced_flight
+    from .. import simulation
+    from ..engine import _borrowed, _modal
 
     sources = [Path(__file__), Path(_modal.__file__), Path(_borrowed.__file__),
                Path(_rigid.__file__), Path(_chain.__file__), Path(simulation.__file__),

@@ -1,9 +1,9 @@
 """The primary with its impact damper under a sampled load — random vibration, a shock, a sine
-sweep (:mod:`symimpact.forced.loads`) — with rigid impacts: Step 16's exact flight (Eq. F8) on
+sweep (:mod:`symimpact.forced.loads.records`) — with rigid impacts: Step 16's exact flight (Eq. F8) on
 each interval of the record, Step 9's impact law (Eq. F2) at each impact, chatter accumulated and
-sticking followed as in the harmonic simulation (:mod:`symimpact.forced._record_rigid`); or with
+sticking followed as in the harmonic simulation (:mod:`symimpact.forced.engine._record_rigid`); or with
 a compliant contact (cubic, Hertz, linear, Hunt–Crossley: Eq. 8, 9, 35, F4), whose contact
-phases are integrated with the record's load (:mod:`symimpact.forced._record_compliant`).
+phases are integrated with the record's load (:mod:`symimpact.forced.engine._record_compliant`).
 
 The response is returned at the record's samples; the impacts, as events, at their own times.
 """
@@ -15,16 +15,16 @@ from typing import Any
 
 import numpy as np
 
-from .. import _interrupt
-from ..errors import ParameterError, SymimpactError
-from ..model import checks
-from ..model.system import ImpactSystem
-from . import _compliant as _cp
-from . import _record_compliant as _rc
-from . import _record_rigid as _rr
-from .contact_law import restitution_parameters, simulation_arguments
-from .loads import Record
-from .simulation import CHATTER, contact_arguments
+from ... import _interrupt
+from ...errors import ParameterError, SymimpactError
+from ...model import checks
+from ...model.system import ImpactSystem
+from ..contact_law import restitution_parameters, simulation_arguments
+from ..engine import _compliant as _cp
+from ..engine import _record_compliant as _rc
+from ..engine import _record_rigid as _rr
+from ..simulation import CHATTER, contact_arguments
+from .records import Record
 
 
 @dataclass(frozen=True)
@@ -76,13 +76,13 @@ def damper_response(
     Between impacts Eq. F8 on each interval of the record (the flight under a load joined by
     straight lines between its samples, exact); ``chatter``: a sequence of impacts on one wall
     whose flights would sum to at most this fraction of a natural period is taken to its
-    accumulation point and the masses then stick (see :mod:`symimpact.forced._record_rigid`).
+    accumulation point and the masses then stick (see :mod:`symimpact.forced.engine._record_rigid`).
     ``e`` a :class:`~symimpact.forced.contact_law.CompliantContact` in place of a restitution:
     the compliant law of Eq. 8, 9, 35 (the system's parameters and c1) or F4 (χ), each contact
-    phase integrated with the record's load (:mod:`symimpact.forced._record_compliant`), the
+    phase integrated with the record's load (:mod:`symimpact.forced.engine._record_compliant`), the
     contacts' dissipation in the ledger's ``lost_in_impacts``; y0 may then start inside a wall."""
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
-    checks.instance("record", record, Record, "a Record (symimpact.forced.loads)")
+    checks.instance("record", record, Record, "a Record (symimpact.forced.loads.records)")
     args = simulation_arguments(e)
     contact = args["contact"]
     e, chi, law = contact_arguments(system, contact, args.get("e"), args.get("chi"))
