@@ -59,6 +59,35 @@ def test_sphere_mass_matches_a_bearing_ball_catalogue():
     assert m == pytest.approx(0.0327, abs=5e-5)
 
 
+def test_a_sphere_given_by_its_mass_is_the_sphere_of_that_diameter():
+    """'steel sphere 2 kg' (a designer's phrase, issue 80) is the steel sphere whose diameter
+    gives 2 kg: 78.654 mm at ρ = 7850 kg/m³ (by hand: (6·2/(π·7850))^(1/3) = 0.0786540 m).
+    Its mass read back and every derived contact property equal those of the sphere given by
+    that diameter, within 1e-12 (the cube root and the cube: a few ULPs)."""
+    by_mass = impactor_body("steel sphere 2 kg")
+    assert MATERIALS["steel"].rho == 7850.0
+    assert 2 * by_mass.radius == pytest.approx(0.0786540, abs=5e-8)
+    assert sphere_mass(by_mass) == pytest.approx(2.0, rel=1e-12)
+    by_size = impactor_body(f"steel sphere {2 * by_mass.radius!r} m")
+    a, b = derived_contact(by_mass, "steel flat", 1.0), derived_contact(by_size, "steel flat", 1.0)
+    for key in ("m", "k_hz", "duration", "peak_force", "yield_speed", "e", "chi", "k1", "c1"):
+        assert getattr(a, key) == pytest.approx(getattr(b, key), rel=1e-12), key
+    # other units of mass read as masses; a bearing ball in grams gives its catalogue size back
+    ball = impactor_body("bearing steel sphere 32.7 g")
+    assert 2 * ball.radius == pytest.approx(0.020, abs=2e-5)
+    assert 2 * impactor_body("steel sphere 4.40925 lb").radius == pytest.approx(0.078654, rel=1e-5)
+
+
+@pytest.mark.parametrize("text", ["steel sphere 2 N", "steel sphere 2 kg/m",
+                                  "steel cylinder 40 mm x 60 mm", "steel sphere"])  # fmt: skip
+def test_an_impactor_neither_a_diameter_nor_a_mass_is_refused_showing_both_forms(text):
+    with pytest.raises(ParameterError) as info:
+        impactor_body(text)
+    assert info.value.parameter == "impactor"
+    assert "'20 mm'" in str(info.value) or "'steel sphere 20 mm'" in str(info.value)
+    assert "2 kg" in str(info.value)
+
+
 def test_hertz_stiffness_of_steel_on_steel_is_seven_orders_above_the_papers():
     c = derived_contact(*STEEL_ON_STEEL, 0.5)
     s = MATERIALS["steel"]

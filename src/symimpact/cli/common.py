@@ -78,8 +78,8 @@ def add_system(
     g.add_argument("--mode", default=None, type=int, metavar="I",
                    help="with --structure: which mode is the primary (default 1, the lowest)")  # fmt: skip
     g.add_argument("--impactor", default=None, metavar="TEXT",
-                   help="the ball, '<material> sphere <diameter>' (e.g. 'steel sphere 20 mm'): "
-                   "gives m instead of --m (Step 13)")  # fmt: skip
+                   help="the ball, '<material> sphere <diameter or mass>' (e.g. 'steel sphere 20 "
+                   "mm', 'steel sphere 2 kg'): gives m instead of --m (Step 13)")  # fmt: skip
     g.add_argument("--cavity", default=None, metavar="TEXT",
                    help="with --impactor: the surface it strikes ('steel flat', 'polyurethane "
                    "flat', 'steel spherical cavity 30 mm'): gives K_Hz instead of --k-hz, and at "
@@ -639,11 +639,11 @@ def add_budget(p: Any) -> None:
 
 
 def announce(ns: argparse.Namespace, estimate: Any, name: str, also: str = "") -> None:
-    """Refuse ``estimate`` (a :class:`~symimpact.forced.record_cost.Estimate`) beyond the budget
+    """Refuse ``estimate`` (a :class:`~symimpact.forced.loads.record_cost.Estimate`) beyond the budget
     unless --no-budget, naming ``name``; print it on stderr from ten seconds up, with ``also``
     (the work it leaves out, in words)."""
     from ..budgets import SAY_SECONDS
-    from ..forced.record_cost import within_budget
+    from ..forced.loads.record_cost import within_budget
 
     within_budget(estimate, name, ns.no_budget)
     if estimate.high >= SAY_SECONDS:

@@ -40,7 +40,8 @@ def add_parser(sub: Any) -> None:
         "--impactor",
         required=True,
         metavar="TEXT",
-        help="'<material> sphere <diameter>', e.g. 'steel sphere 20 mm'",
+        help="'<material> sphere <diameter or mass>', e.g. 'steel sphere 20 mm' or 'steel "
+        "sphere 2 kg'",
     )
     p.add_argument(
         "--cavity",

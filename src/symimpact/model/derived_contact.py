@@ -5,7 +5,8 @@ yield and the restitution of an elastic–plastic impact (Thornton) — and the 
 
 Shapes (text as a designer writes it; diameters with units):
 
-- impactor: ``"steel sphere 20 mm"`` (a sphere of that material and diameter; its mass follows);
+- impactor: ``"steel sphere 20 mm"`` (a sphere of that material and diameter; its mass follows)
+  or ``"steel sphere 2 kg"`` (a sphere of that material and mass; its diameter follows);
 - cavity: ``"steel flat"``, ``"steel sphere 40 mm"`` (a convex surface: ball on ball),
   ``"steel spherical cavity 30 mm"`` (concave: the ball inside a spherical seat of that diameter),
   ``"steel cylindrical bore 30 mm"`` (the ball in a tube) or ``"steel cylinder 30 mm"`` (on a
@@ -30,7 +31,7 @@ from ..generated import closed_forms, contact_fits
 from ..generated import hertz_contact as hz
 from ..generated import rigid_impact as ri
 from .materials import Material, material
-from .units import positive_float
+from .units import converts_to, positive_float, split_quantity
 
 #: A massive cavity body (no M given): M = m·MASSIVE makes μ = mM/(m + M) equal m to rounding.
 MASSIVE = 1e17
@@ -68,15 +69,30 @@ _SHAPES = {
 
 
 def impactor_body(text: str) -> Body:
-    """The impactor of ``text``: ``"<material> sphere <diameter>"``."""
+    """The impactor of ``text``: ``"<material> sphere <diameter>"``, or ``"<material> sphere
+    <mass>"``, whose diameter is that of a solid sphere of the material's density ρ,
+    D = (6m/(πρ))^(1/3) (:func:`sphere_mass` inverted)."""
     found = _IMPACTOR.match(" ".join(str(text).split()))
     if not found:
         raise ParameterError(
-            "impactor", f"cannot read {text!r}: write '<material> sphere <diameter>', e.g. "
-            "'steel sphere 20 mm' (spheres only: a cylinder's line contact is not derived)"
+            "impactor", f"cannot read {text!r}: write '<material> sphere <diameter or mass>', "
+            "e.g. 'steel sphere 20 mm' or 'steel sphere 2 kg' (spheres only: a cylinder's line "
+            "contact is not derived)"
         )  # fmt: skip
-    d = positive_float("impactor diameter", found["size"], "m")
-    return Body(material(found["mat"]), "sphere", d / 2.0, text)
+    mat = material(found["mat"])
+    size = found["size"]
+    _, unit = split_quantity("impactor", size)
+    if unit and not (converts_to(unit, "m") or converts_to(unit, "kg")):
+        raise ParameterError(
+            "impactor", f"{size!r}: a sphere is given by its diameter (e.g. '20 mm') or its mass "
+            "(e.g. '2 kg')"
+        )  # fmt: skip
+    if unit and converts_to(unit, "kg"):
+        m = positive_float("impactor mass", size, "kg")
+        d = (6.0 * m / (math.pi * mat.rho)) ** (1.0 / 3.0)
+    else:
+        d = positive_float("impactor diameter", size, "m")
+    return Body(mat, "sphere", d / 2.0, text)
 
 
 def cavity_body(text: str) -> Body:

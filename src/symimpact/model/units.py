@@ -353,6 +353,12 @@ def _factor(unit_text: str, si_unit: str) -> tuple[str, Any]:
     return (kind, Decimal(info)) if kind == "ok" else (kind, info)
 
 
+def converts_to(unit_text: str, si_unit: str) -> bool:
+    """Whether the unit written as ``unit_text`` (no number) converts to ``si_unit``: how a
+    designer's phrase whose size may be of two kinds (a sphere's diameter or its mass) is read."""
+    return _factor(unit_text, si_unit)[0] == "ok"
+
+
 def _unit_to_si(name: str, text: str, number: float, unit_text: str, unit: str) -> float:
     """``number`` in ``unit_text`` as a float in the SI ``unit``.
 
