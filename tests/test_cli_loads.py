@@ -47,6 +47,46 @@ def test_random_json_is_the_api_with_g2_per_hz_converted(capsys, tmp_path):
                       "baseline_displacement_psd [m^2/Hz]"]  # fmt: skip
 
 
+def test_an_rms_over_the_band_is_the_flat_psd_a_test_engineer_computes(capsys):
+    """--base-acc-rms "0.5 g" over 5–100 Hz is the flat PSD grms²/Δf = 0.25/95 g²/Hz =
+    0.00263158 g²/Hz (the specification's arithmetic, issue 80); --force-rms "5 N" over 1–26 Hz
+    is 1 N²/Hz.  Far from the walls (no impacts: the run is linear in the PSD's square root) the
+    statistics equal --base-psd's at that level to 1e-9 (the decimal level's last digits)."""
+    far = ["--M", "40", "--fn", "12 Hz", "--zeta", "0.01", "--m", "2", "--gap", "1 m", "--e",
+           "0.6", "--duration", "10 s", "--realisations", "2", "--settle", "2 s", "--json"]  # fmt: skip
+    a = _json(capsys, ["random", *far, "--base-acc-rms", "0.5 g", "--band", "5:100"])
+    assert a["load"]["psd"] == pytest.approx(0.25 / 95 * G**2, rel=1e-15)
+    assert a["load"]["psd"] / G**2 == pytest.approx(0.00263158, abs=5e-9)
+    assert a["load"]["rms"] == pytest.approx(0.5 * G, rel=1e-15)
+    assert a["load"]["kind"] == "base-acceleration" and a["load"]["band"] == [5.0, 100.0]
+    b = _json(capsys, ["random", *far, "--base-psd", "0.0026315789473684 g^2/Hz", "--band",
+                       "5:100"])  # fmt: skip
+    for key in ("displacement", "acceleration", "base_force"):
+        assert a["rms"][key] == pytest.approx(b["rms"][key], rel=1e-9)
+        assert a["baseline_rms"][key] == pytest.approx(b["baseline_rms"][key], rel=1e-9)
+    f = _json(capsys, ["random", *far, "--force-rms", "5 N", "--band", "1:26"])
+    assert f["load"]["psd"] == pytest.approx(1.0, rel=1e-15) and f["load"]["kind"] == "force"
+    assert main(["random", *far[:-1], "--base-acc-rms", "0.5 g", "--band", "5:100"]) == 0
+    assert capsys.readouterr().out.startswith(
+        "load: base acceleration PSD 0.00263158 g²/Hz flat over 5–100 Hz, 0.5 g rms\n"
+    )
+
+
+@pytest.mark.parametrize("extra, parameter", [
+    (["--base-acc-rms", "0.5 g", "--base-psd", "0.01 g^2/Hz"], "base-psd"),
+    (["--force-rms", "2 N", "--base-acc-rms", "0.5 g"], "force-rms"),
+    (["--base-acc-rms", "0.5 N"], "base-acc-rms"),
+    (["--force-rms", "-1 N"], "force-rms"),
+    (["--base-acc-rms", "0.5 g", "--kanai-tajimi", "2.5:0.6"], "kanai-tajimi"),
+    ([], "force-psd"),
+])  # fmt: skip
+def test_an_rms_load_given_twice_or_wrongly_is_refused_in_one_line(extra, parameter, capsys):
+    argv = ["random", *SYSTEM, "--band", "5:100", *extra]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and f"error: {parameter}:" in err, err
+
+
 def test_a_psd_table_is_read_with_its_units(capsys, tmp_path):
     """A flat table in g²/Hz gives the flat PSD's statistics (linear interpolation of a constant
     is the constant)."""

@@ -70,6 +70,13 @@ def add_parser(sub: Any) -> None:
     g = p.add_argument_group("the load: a one-sided PSD, flat over --band (or a table)")
     _load_options(g, "psd", 'force PSD [N²/Hz], e.g. "0.02 N^2/Hz"',
                   'acceleration PSD [(m/s²)²/Hz], e.g. "0.01 g^2/Hz"')  # fmt: skip
+    g.add_argument("--force-rms", default=None, metavar="Q",
+                   help='instead of --force-psd: the force\'s RMS over --band, e.g. "5 N", read '
+                   "as the flat PSD of that RMS, rms²/(F2 − F1)")  # fmt: skip
+    g.add_argument("--base-acc-rms", default=None, metavar="Q",
+                   help='instead of --base-psd: the base acceleration\'s RMS over --band, e.g. '
+                   '"0.5 g" (a test specification\'s grms), read as the flat PSD '
+                   "rms²/(F2 − F1)")  # fmt: skip
     g.add_argument("--psd-file", default=None, metavar="FILE.csv",
                    help="a PSD table instead: columns 'frequency [Hz]' and 'psd [N^2/Hz]' (a "
                    "force) or 'psd [g^2/Hz]' / 'psd [(m/s^2)^2/Hz]' (a base acceleration), joined "
@@ -206,15 +213,53 @@ def _kind(ns) -> tuple[str, str]:
     from ..errors import ParameterError
 
     if (ns.force_load is None) == (ns.base_load is None):
-        flag = {"random": "psd", "shock": "peak", "sweep-sine": "amplitude"}[ns.command]
+        flag = {"shock": "peak", "sweep-sine": "amplitude"}[ns.command]
         raise ParameterError(
             f"force-{flag}", f"give the load once: --force-{flag} or --base-{flag}"
         )
     if ns.force_load is not None:
         return "force", ns.force_load
-    flag = {"random": "psd", "shock": "peak", "sweep-sine": "amplitude"}[ns.command]
+    flag = {"shock": "peak", "sweep-sine": "amplitude"}[ns.command]
     refuse_reduced_base(ns, f"base-{flag}", harmonic=False)
     return "base-acceleration", ns.base_load
+
+
+def _flat_psd(ns, f1: float, f2: float) -> tuple[str, float]:
+    """("force" | "base-acceleration", the one-sided PSD [N²/Hz or (m/s²)²/Hz]) flat over
+    [f1, f2] Hz, from --force-psd / --base-psd, or from an RMS over the band, --force-rms /
+    --base-acc-rms: S = rms²/(f2 − f1), as a test specification's "0.5 grms, 5–100 Hz" is
+    0.25/95 g²/Hz (the RMS of a one-sided PSD is the square root of its integral)."""
+    from ..errors import ParameterError
+    from ..model.units import ACCELERATION_PSD, si_float
+
+    given = [(flag, value) for flag, value in (
+        ("--force-psd", ns.force_load), ("--base-psd", ns.base_load),
+        ("--force-rms", ns.force_rms), ("--base-acc-rms", ns.base_acc_rms),
+    ) if value is not None]  # fmt: skip
+    if len(given) != 1:
+        raise ParameterError(
+            (given[0][0] if given else "--force-psd")[2:],
+            "give the load once: --force-psd, --base-psd, --force-rms or --base-acc-rms"
+            + (f" (given: {', '.join(f for f, _ in given)})" if given else ""),
+        )
+    (flag, text), name = given[0], given[0][0][2:]
+    kind = "force" if flag.startswith("--force") else "base-acceleration"
+    if kind != "force":
+        refuse_reduced_base(ns, name, harmonic=False)
+    if flag.endswith("-psd"):
+        psd = si_float(name, text, "N^2/Hz" if kind == "force" else ACCELERATION_PSD)
+        if psd < 0:
+            raise ParameterError(name, "must be ≥ 0")
+        return kind, psd
+    if ns.kanai_tajimi is not None:
+        raise ParameterError(
+            "kanai-tajimi", f"shapes the white noise under the layer, given by --base-psd; "
+            f"{flag} is the RMS of a flat band"
+        )  # fmt: skip
+    rms = si_float(name, text, "N" if kind == "force" else "m/s^2")
+    if rms < 0:
+        raise ParameterError(name, "must be ≥ 0")
+    return kind, rms * rms / (f2 - f1)
 
 
 def _height(ns, kind: str, text: str) -> float:
@@ -290,28 +335,29 @@ def run_random(ns) -> None:
     from ..errors import ParameterError
     from ..forced.loads.random_response import UNITS, random_statistics
     from ..forced.loads.records import SAMPLES_PER_PERIOD
-    from ..model.units import ACCELERATION_PSD, positive_float, si_float
+    from ..model.units import positive_float
 
     system = system_from(ns)
     e = contact_of(ns)
     f1, f2 = band_from("band", ns.band)
+    load = None
     if ns.psd_file is not None:
         if ns.kanai_tajimi is not None:
             raise ParameterError("kanai-tajimi", "shapes --base-psd's level; a --psd-file is its "
                                  "own shape")  # fmt: skip
-        if ns.force_load is not None or ns.base_load is not None:
+        if any(v is not None for v in (ns.force_load, ns.base_load, ns.force_rms,
+                                       ns.base_acc_rms)):  # fmt: skip
             raise ParameterError(
-                "psd-file", "give the PSD once: --psd-file, --force-psd or --base-psd"
+                "psd-file",
+                "give the PSD once: --psd-file, --force-psd, --base-psd, --force-rms or "
+                "--base-acc-rms",
             )
         psd, kind = psd_table(ns.psd_file)
         if kind != "force":
             refuse_reduced_base(ns, "psd-file", harmonic=False)
     else:
-        kind, text = _kind(ns)
-        psd = si_float("force-psd" if kind == "force" else "base-psd", text,
-                       "N^2/Hz" if kind == "force" else ACCELERATION_PSD)  # fmt: skip
-        if psd < 0:
-            raise ParameterError("force-psd" if kind == "force" else "base-psd", "must be ≥ 0")
+        kind, psd = _flat_psd(ns, f1, f2)
+        load = _flat_load(kind, psd, f1, f2)
         if ns.kanai_tajimi is not None:
             from ..forced.loads.records import kanai_tajimi
 
@@ -378,7 +424,23 @@ def run_random(ns) -> None:
         lines.append(f"PSD resolution {st.psd_resolution:.3g} Hz (Welch, Hann, half overlap)")
     elif ns.out:
         lines.append(f"wrote {ns.out} ({st.realisations} realisations)")
-    emit(ns, st.as_dict(), "\n".join(lines))
+    out = st.as_dict()
+    if load is not None and ns.kanai_tajimi is None:
+        lines.insert(0, load.pop("text"))
+        out["load"] = load
+    emit(ns, out, "\n".join(lines))
+
+
+def _flat_load(kind: str, psd: float, f1: float, f2: float) -> dict:
+    """The flat load as the run reads it (SI in ``psd`` and ``rms``; ``text`` in a test
+    engineer's units: N²/Hz and N, or g²/Hz and g): the level S and its RMS √(S·(f2 − f1))."""
+    rms = math.sqrt(psd * (f2 - f1))
+    if kind == "force":
+        text = f"load: force PSD {psd:.6g} N²/Hz flat over {f1:g}–{f2:g} Hz, {rms:.6g} N rms"
+    else:
+        text = (f"load: base acceleration PSD {psd / G**2:.6g} g²/Hz flat over {f1:g}–{f2:g} Hz, "
+                f"{rms / G:.6g} g rms")  # fmt: skip
+    return {"kind": kind, "psd": psd, "band": [f1, f2], "rms": rms, "text": text}
 
 
 def run_shock(ns) -> None:
