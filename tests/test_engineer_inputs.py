@@ -46,6 +46,51 @@ def test_fn_runs_the_same_as_k(capsys):
     assert json.loads(capsys.readouterr().out) == by_fn
 
 
+def test_damping_as_q_or_loss_factor_is_the_damping_ratio_a_textbook_gives():
+    """Q = 50 and η = 0.02 are ζ = 0.01 (ζ = 1/(2Q) = η/2), so the same run as --zeta 0.01; and
+    Q read back as a test engineer measures it, f_n over the half-power bandwidth of the primary
+    alone's |H(f)| = 1/|K − M(2πf)² + iC·2πf| found by bisection, is 50 to O(ζ²) (the
+    half-power points of a viscous oscillator are f_n·√(1 − 2ζ² ± 2ζ√(1 − ζ²)): their distance
+    is 2ζf_n to within ζ²·f_n)."""
+    from scipy.optimize import brentq, minimize_scalar
+
+    base = ["simulate", "--M", "40", "--fn", "12 Hz", "--m", "2"]
+    runs = {}
+    for damping in (["--zeta", "0.01"], ["--q-factor", "50"], ["--loss-factor", "0.02"]):
+        ns, given = _ns([*base, *damping])
+        apply_engineer_inputs(ns, given)
+        runs[damping[0]] = ns.zeta if damping[0] != "--zeta" else float(ns.zeta)
+    assert runs["--q-factor"] == runs["--loss-factor"] == runs["--zeta"] == 0.01
+    M, wn, zeta = 40.0, 2 * math.pi * 12.0, runs["--q-factor"]
+    K, C = M * wn**2, 2 * zeta * M * wn
+
+    def gain(f):
+        w = 2 * math.pi * f
+        return 1.0 / abs(complex(K - M * w * w, C * w))
+
+    top = minimize_scalar(lambda f: -gain(f), bounds=(11.0, 13.0), method="bounded",
+                          options={"xatol": 1e-12})  # fmt: skip
+    level = gain(top.x) / math.sqrt(2.0)
+    f1 = brentq(lambda f: gain(f) - level, 10.0, top.x, xtol=1e-13)
+    f2 = brentq(lambda f: gain(f) - level, top.x, 14.0, xtol=1e-13)
+    assert 12.0 / (f2 - f1) == pytest.approx(50.0, rel=2 * zeta**2)
+
+
+@pytest.mark.parametrize("extra, parameter", [
+    (["--zeta", "0.01", "--q-factor", "50"], "q-factor"),
+    (["--C", "1", "--loss-factor", "0.02"], "loss-factor"),
+    (["--q-factor", "0"], "q-factor"),
+    (["--loss-factor", "-0.1"], "loss-factor"),
+    (["--q-factor", "50 Hz"], "q-factor"),
+])  # fmt: skip
+def test_damping_given_twice_or_out_of_range_is_refused(extra, parameter, capsys):
+    argv = ["simulate", "--M", "40", "--fn", "12 Hz", "--m", "2", "--contact", "rigid", "--e",
+            "0.6", "--force", "50 N", "--freq", "12 Hz", *extra]  # fmt: skip
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and f"error: {parameter}:" in err, err
+
+
 DESIGN_WITH_GAP = ["design", "--gap", "5 mm", "--gaps", "1 mm,2 mm", "--force", "1", "--contact",
                    "rigid", "--e", "0.5", "--omega-range", "1:2:1"]  # fmt: skip
 

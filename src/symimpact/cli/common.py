@@ -19,6 +19,12 @@ SYSTEM_OPTIONS = [
     ("--K", "main stiffness K [N/m]", "100 N/m"),
     ("--C", "main damping C [N s/m] (or --zeta)", "1 N s/m"),
     ("--zeta", "damping ratio ζ = C/(2√(KM)) [1], instead of --C", None),
+    ("--q-factor", "quality factor Q = 1/(2ζ) [1] of the primary alone, instead of --C", None),
+    (
+        "--loss-factor",
+        "loss factor η = 2ζ [1] (at resonance, of viscous damping), instead of --C",
+        None,
+    ),
     ("--m", "impact mass m [kg]", "0.25 kg"),
     (
         "--fn",
@@ -155,6 +161,7 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
     for option in ("at", "mode"):
         if option in given and hasattr(ns, "at"):
             raise ParameterError(option, "names a point or mode of --structure, which is not given")
+    _damping_as_zeta(ns, given)
     if getattr(ns, "fn", None) is None:
         return
     f = positive_float("fn", ns.fn, "Hz")
@@ -169,10 +176,29 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
         raise ParameterError("fn", "give the modal mass --M (or the stiffness --K) with --fn")
 
 
+def _damping_as_zeta(ns: argparse.Namespace, given: set[str]) -> None:
+    """--q-factor Q or --loss-factor η as the damping ratio of the primary alone: ζ = 1/(2Q),
+    ζ = η/2 (viscous damping: the half-power bandwidth is 2ζ·f_n = f_n/Q, and the energy lost a
+    cycle at resonance over 2π times the energy held is η = 2ζ).  One damping only."""
+    from ..errors import ParameterError
+    from ..model.units import nonnegative_float, positive_float
+
+    dampings = [o for o in ("C", "zeta", "q_factor", "loss_factor") if o in given]
+    if len(dampings) > 1:
+        flags = ", ".join("--" + o.replace("_", "-") for o in dampings)
+        raise ParameterError(
+            dampings[1].replace("_", "-"), f"give the damping once (given: {flags})"
+        )
+    if "q_factor" in given:
+        ns.zeta = 1.0 / (2.0 * positive_float("q-factor", ns.q_factor))
+    elif "loss_factor" in given:
+        ns.zeta = nonnegative_float("loss-factor", ns.loss_factor) / 2.0
+
+
 #: The options a structure file with dampers and a force replaces: the primary, the damper, the
 #: contact and the force amplitude.
-_MODEL_GIVES = ("M", "K", "C", "zeta", "fn", "m", "gap", "a", "b", "k_hz", "k1", "c1", "at",
-                "mode", "impactor", "cavity", "impact_speed", "contact", "e", "chi", "F0", "X_b",
+_MODEL_GIVES = ("M", "K", "C", "zeta", "q_factor", "loss_factor", "fn", "m", "gap", "a", "b",
+                "k_hz", "k1", "c1", "at", "mode", "impactor", "cavity", "impact_speed", "contact", "e", "chi", "F0", "X_b",
                 "V_b", "A_b")  # fmt: skip
 
 
@@ -239,9 +265,11 @@ def _structure_mode(ns: argparse.Namespace, given: set[str]) -> None:
     from ..errors import ParameterError
     from ..model.structure import read_structure
 
-    for option in ("M", "K", "C", "zeta", "fn"):
+    for option in ("M", "K", "C", "zeta", "q_factor", "loss_factor", "fn"):
         if option in given:
-            raise ParameterError(option, "--structure gives the primary: leave it out")
+            raise ParameterError(
+                option.replace("_", "-"), "--structure gives the primary: leave it out"
+            )
     s = read_structure(ns.structure)
     if ns.at is None:
         if len(s.points) > 1:
