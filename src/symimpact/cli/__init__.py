@@ -255,7 +255,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             previous[sig] = signal.signal(sig, end)
         except ValueError:  # not the main thread (e.g. called from a worker thread)
             pass
-    if sys.stderr.isatty():  # a person waits: a first compilation says so (symimpact._notices)
+    # a person waits: a first compilation says so (symimpact._notices), unless --quiet
+    if sys.stderr.isatty() and not getattr(ns, "quiet", False):
         from .. import _notices
 
         _notices.command = ns.command

@@ -655,6 +655,26 @@ def write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
 SYSTEM_DEFAULTS = {flag[2:].replace("-", "_"): default for flag, _, default in SYSTEM_OPTIONS}
 
 
+#: --quiet's help, one text for every command that runs many simulations.
+QUIET_HELP = ("no progress bar, run-time estimate or notice of a first compilation on stderr "
+              "(warnings and errors stay)")  # fmt: skip
+
+#: --multistart's help (frf and design: the curve's multi-start brute force).
+MULTISTART_HELP = ("frequencies of the curve's multi-start brute force (default "
+                   "symimpact.forced.orbits.coverage.FREQUENCIES; 0: none — faster, may miss "
+                   "motions no branch reaches)")  # fmt: skip
+
+
+def add_quiet(g: Any) -> None:
+    """--quiet (:data:`QUIET_HELP`)."""
+    g.add_argument("--quiet", action="store_true", help=QUIET_HELP)
+
+
+def add_multistart(g: Any) -> None:
+    """--multistart N (:data:`MULTISTART_HELP`)."""
+    g.add_argument("--multistart", type=int, default=None, metavar="N", help=MULTISTART_HELP)
+
+
 def add_budget(p: Any) -> None:
     """``--no-budget``: run a command whose estimate exceeds the budget."""
     from ..budgets import MAX_SECONDS
@@ -674,5 +694,5 @@ def announce(ns: argparse.Namespace, estimate: Any, name: str, also: str = "") -
     from ..forced.loads.record_cost import within_budget
 
     within_budget(estimate, name, ns.no_budget)
-    if estimate.high >= SAY_SECONDS:
+    if estimate.high >= SAY_SECONDS and not getattr(ns, "quiet", False):
         print(f"symimpact {ns.command}: {estimate.text()}{also}", file=sys.stderr, flush=True)

@@ -7,7 +7,16 @@ from __future__ import annotations
 from typing import Any
 
 from .. import budgets
-from .common import add_system, emit, forcing_of, structure_band, system_from, write_csv
+from .common import (
+    add_multistart,
+    add_quiet,
+    add_system,
+    emit,
+    forcing_of,
+    structure_band,
+    system_from,
+    write_csv,
+)
 from .frf import add_band, band_from, contact_of, contact_title
 
 
@@ -29,10 +38,7 @@ def add_parser(sub: Any) -> None:
     g.add_argument("--tolerance", default="0.01 mm", metavar="Q",
                    help="the best clearance is refined by Brent's method between the grid's "
                         "neighbours to this (default 0.01 mm)")  # fmt: skip
-    g.add_argument("--multistart", type=int, default=None, metavar="N",
-                   help="frequencies of each curve's multi-start brute force (default that of "
-                   "frf, symimpact.forced.orbits.coverage.FREQUENCIES; 0: none — faster, may miss "
-                   "motions no branch reaches)")  # fmt: skip
+    add_multistart(g)
     g.add_argument("--e-samples", type=int, default=5, metavar="N",
                    help="with --e LOW:HIGH: restitutions sampled over the range (odd; default 5: "
                    "the ends, the middle and the quarters)")  # fmt: skip
@@ -56,7 +62,7 @@ def add_parser(sub: Any) -> None:
     g.add_argument("--out", default=None, metavar="FILE",
                    help="stream the rows to FILE (.csv or .parquet); run again to resume")  # fmt: skip
     g.add_argument("--overwrite", action="store_true", help="replace an existing --out file")
-    g.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_quiet(g)
     g = p.add_argument_group("output")
     g.add_argument("--json", action="store_true", help="machine-readable rows on stdout (SI)")
     g.add_argument("--plot", metavar="FILE.png", help="write the design map's figure")

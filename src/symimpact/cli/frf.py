@@ -11,7 +11,9 @@ from typing import Any
 from .. import budgets
 from .common import (
     AMPLITUDE_NEEDED,
+    add_multistart,
     add_output,
+    add_quiet,
     add_system,
     emit,
     forcing_of,
@@ -50,6 +52,8 @@ def add_parser(sub: Any) -> None:
                    "motions (shot from the close returns of their Poincaré sections): stable "
                    "windows inside a chaotic band that the multi-start steps over; more of the "
                    "curve's orbits, at more cost (benchmark 6)")  # fmt: skip
+    add_multistart(g)
+    add_quiet(g)
     g.add_argument("--workers", type=int, default=None, metavar="N",
                    help="processes: with --structure for the runs from rest at each "
                    "frequency, else for the multi-start's initial states (default all cores; "
@@ -270,8 +274,13 @@ def run(ns) -> None:
     if ns.folds and not is_rigid(e):
         raise ParameterError("folds", "turning back at a grazing is for rigid impacts: a "
                                       "compliant contact's orbits change smoothly there")  # fmt: skip
+    from ..forced.orbits.coverage import FREQUENCIES
+
+    multistart = FREQUENCIES if ns.multistart is None else count("multistart", ns.multistart, 0,
+                                                                 1000)  # fmt: skip
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps,
-                             folds=ns.folds, embedded=ns.embedded, workers=ns.workers)  # fmt: skip
+                             folds=ns.folds, embedded=ns.embedded, workers=ns.workers,
+                             multistart=multistart)  # fmt: skip
     if response != "displacement":
         from ..forced.orbits.response_curve import response_curve
 

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 from .common import (
     add_budget,
     add_output,
+    add_quiet,
     add_system,
     announce,
     emit,
@@ -127,6 +128,7 @@ def add_parser(sub: Any) -> None:
                    help="stream one row per realisation to FILE.csv or FILE.parquet; the same "
                    "command after an interruption runs only the missing realisations")  # fmt: skip
     g.add_argument("--force", action="store_true", help="replace an existing --out file")
+    add_quiet(g)
     add_output(p, plot=True)
 
     p = sub.add_parser(
@@ -394,7 +396,7 @@ def run_random(ns) -> None:
         st, _ = random_ensemble(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
                                 settle=ns.settle, kind=kind, executor=ns.executor,
                                 workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
-                                force=ns.force, progress=sys.stderr.isatty())  # fmt: skip
+                                force=ns.force, progress=sys.stderr.isatty() and not ns.quiet)  # fmt: skip
     else:
         st = random_statistics(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
                                settle=ns.settle, kind=kind, segment=ns.segment)  # fmt: skip

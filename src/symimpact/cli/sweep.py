@@ -8,6 +8,7 @@ from ..model.display import label, shown
 from .common import (
     SYSTEM_DEFAULTS,
     add_initial,
+    add_quiet,
     add_show,
     add_system,
     emit,
@@ -74,7 +75,7 @@ def add_parser(sub: Any) -> None:
         "target)",
     )
     g.add_argument("--force", action="store_true", help="replace an existing --out file")
-    g.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_quiet(g)
     g = p.add_argument_group("output")
     g.add_argument("--json", action="store_true", help="machine-readable rows on stdout (SI)")
     add_show(g)
