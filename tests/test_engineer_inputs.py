@@ -139,7 +139,8 @@ def test_frf_text_in_hz_and_json_in_si(capsys):
         "--freq-range", "11.5:12.5:0.25", "--no-sweeps"]  # fmt: skip
     assert main(argv) == 0
     text = capsys.readouterr().out
-    assert text.startswith("Ω 11.5–12.5 Hz:") and "rad/s" not in text.split("note:")[0]
+    assert text.startswith("peak with the damper:")  # the answer first (issue 80)
+    assert "\nΩ 11.5–12.5 Hz:" in text and "rad/s" not in text.split("note:")[0]
     assert main([*argv, "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     omegas = [p["omega"] for p in data["points"]]

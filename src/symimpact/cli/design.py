@@ -4,6 +4,7 @@ mass ratio, beside the primary without the damper (:mod:`symimpact.maps.design`)
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from .. import budgets
@@ -181,14 +182,17 @@ def run(ns) -> None:
     def k(name: str) -> str:
         return _renamed(name, response)
 
+    refined = not (ns.no_refine or len(grid["gap"]) < 2)
     if ns.csv:
-        write_csv(ns.csv, "csv", rows)
+        write_csv(ns.csv, "csv", csv_rows(rows, best if refined else []))
     if ns.plot:
         from ..report.plots import plot_design
 
         plot_design(table, ns.plot, title=f"band {shown('omega', omegas[0]):.4g}–"
                     f"{omega_text(omegas[-1], '.4g')}, "
-                    f"{contact_title(ns, e)}", response=response)  # fmt: skip
+                    f"{contact_title(ns, e)}", response=response,
+                    best=[{**r, "peak_amplitude": r[k("peak_amplitude")]} for r in best]
+                    if refined else None)  # fmt: skip
     gunit = display_unit("gap")
 
     def value(v: float) -> str:
@@ -221,8 +225,70 @@ def run(ns) -> None:
             line += (f"; the {what} with e − 0.1: {value(r[k('peak_e_minus')])}, "
                      f"with e + 0.1: {value(r[k('peak_e_plus')])}")  # fmt: skip
         lines.append(line)
-    emit(ns, {"designs": rows, "best": best, "response": _response_json(response)},
+    answer = headline(best, response)
+    lines.insert(0, answer.pop("text"))
+    emit(ns, {**answer, "designs": rows, "best": best, "response": _response_json(response)},
          "\n".join(lines))  # fmt: skip
+
+
+def headline(best: list[dict[str, Any]], response: str) -> dict[str, Any]:
+    """The design's answer, as frf states a curve's (the same JSON keys): ``peak`` (the worst
+    case over the band at the best clearance: its value, Ω, motion, the clearance and, refined,
+    its tolerance), ``baseline_peak`` (the primary alone's) and ``reduction`` (1 − peak/baseline),
+    and ``text``, the line the command prints first: the clearance with its tolerance, the worst
+    case and its Ω, the primary alone's peak, and the reduction in % and in dB
+    (20·log₁₀(baseline/peak)).  With several mass ratios, the best of their best."""
+    from ..forced.responses import response_key
+    from ..model.display import display_unit, omega_text, shown
+    from .frf import response_text
+
+    def k(name: str) -> str:
+        return _renamed(name, response)
+
+    top = min(best, key=lambda r: r[k("peak_amplitude")])
+    key = "amplitude" if response == "displacement" else response_key(response)
+    peak, base = top[k("peak_amplitude")], top[k("baseline_peak")]
+    reduction = 1.0 - peak / base
+    gunit = display_unit("gap")
+    where = f"{shown('gap', top['gap']):.6g}"
+    if "tolerance" in top:
+        where += f" ± {shown('gap', top['tolerance']):.2g}"
+    ratio = f" (m/M {top['mass_ratio']:g})" if "mass_ratio" in top else ""
+    what = "worst case" if response == "displacement" else f"worst-case {response}"
+    text = (f"best clearance{ratio}: d {where} {gunit}; {what} {response_text(response, peak)} "
+            f"at Ω {omega_text(top['peak_omega'], '.5g')} ({top['peak_motion']}); without the "
+            f"damper {response_text(response, base)} at Ω "
+            f"{omega_text(top['baseline_omega'], '.5g')}; reduction {100 * reduction:.1f} % "
+            f"({_decibels(base, peak)})")  # fmt: skip
+    out = {key: peak, "omega": top["peak_omega"], "motion": top["peak_motion"],
+           "gap": top["gap"]}  # fmt: skip
+    if "tolerance" in top:
+        out["tolerance"] = top["tolerance"]
+    if "mass_ratio" in top:
+        out["mass_ratio"] = top["mass_ratio"]
+    return {"peak": out, "baseline_peak": {key: base, "omega": top["baseline_omega"]},
+            "reduction": reduction, "text": text}  # fmt: skip
+
+
+def _decibels(base: float, peak: float) -> str:
+    """The reduction of an amplitude from ``base`` to ``peak`` in dB, 20·log₁₀(base/peak)."""
+    if peak <= 0.0:
+        return "no motion left"
+    return f"{20.0 * math.log10(base / peak):.2f} dB"
+
+
+def csv_rows(rows: list[dict[str, Any]], best: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """The design map's rows for the CSV, each flagged ``refined`` False, then the refined best
+    clearances (``best``, from Brent's method between grid points) flagged True, in the grid's
+    columns with their ``tolerance`` (empty on grid rows): the CSV holds the answer the command
+    prints and draws."""
+    names = list(rows[0]) if rows else []
+    out = [{**{n: r.get(n, "") for n in names}, "refined": False, "tolerance": ""} for r in rows]
+    for r in best:
+        row = {n: r.get(n, "") for n in names}
+        row["run"] = ""
+        out.append({**row, "refined": True, "tolerance": r.get("tolerance", "")})
+    return out
 
 
 def _named(rows: list[dict[str, Any]], response: str) -> list[dict[str, Any]]:

@@ -326,7 +326,7 @@ def run(ns) -> None:
         lines.append(f"no impact (the impact mass at rest midway, the primary alone) for Ω {spans} "
                      f"{ou}; it grazes a wall at Ω "
                      + (f"{grazes} {ou}" if grazes else "nowhere in the band"))  # fmt: skip
-    lines += peak_lines(frf)
+    lines = peak_lines(frf) + lines + coverage_lines(frf)
     ou = display_unit("omega")
     for reason, ws in frf.note_omegas:
         at = ", ".join(f"{shown('omega', w):.4g}" for w in ws)
@@ -344,7 +344,8 @@ def _origin_text(branch) -> str:
 
 
 def peak_lines(frf) -> list[str]:
-    """The located peak with and without the damper, and the reduction, in words."""
+    """The curve's answer, printed first: the located peak with and without the damper, and the
+    reduction in % and in dB (20·log₁₀ of the amplitudes' ratio)."""
     from ..model.display import display_unit, impacts_text, omega_text
 
     name = getattr(frf, "response", "displacement")
@@ -372,7 +373,15 @@ def peak_lines(frf) -> list[str]:
         lines = [f"{what} with the damper: {at(p)} ({kind}; {how})"]
     lines.append(f"{what} without the damper: {at(frf.baseline_peak)}")
     if not math.isnan(frf.reduction):
-        lines.append(f"reduction: {100 * frf.reduction:.4g} %")
+        db = ("" if frf.reduction >= 1.0
+              else f" ({-20.0 * math.log10(1.0 - frf.reduction):.2f} dB)")  # fmt: skip
+        lines.append(f"reduction: {100 * frf.reduction:.4g} %{db}")
+    return lines
+
+
+def coverage_lines(frf) -> list[str]:
+    """What the multi-start found and how much of it the curve traces, in words."""
+    lines: list[str] = []
     cov = frf.coverage
     if cov.attractors:
         share = (

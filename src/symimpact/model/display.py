@@ -50,6 +50,7 @@ OUTPUT_SI_UNITS = {
     "baseline_peak": "m",
     "baseline_omega": "rad/s",
     "worst_peak": "m",
+    "tolerance": "m",  # a refined best clearance's (design)
     "nominal_peak": "m",
     "worst_e": "dimensionless",
     "e": "dimensionless",

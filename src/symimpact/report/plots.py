@@ -224,15 +224,22 @@ def plot_branch(branch: Any, path: str | os.PathLike, title: str = "") -> None:
 
 
 def plot_design(
-    table: Any, path: str | os.PathLike, title: str = "", response: str = "displacement"
+    table: Any,
+    path: str | os.PathLike,
+    title: str = "",
+    response: str = "displacement",
+    best: list[dict[str, Any]] | None = None,
 ) -> None:
     """The clearance design map (:func:`symimpact.maps.design.design_map`): the peak amplitude
     (or the peak of ``response``, as the map was run) over the band against the clearance, one
     line per mass ratio, the best clearance of each marked, and the primary without the damper's
-    peak (dashed)."""
+    peak (dashed).  ``best``: the refined best clearances (rows of
+    :func:`symimpact.maps.design.refine_best`, SI, ``peak_amplitude`` the peak of ``response``),
+    marked with their tolerance instead of the grid's best, so the figure shows the answer the
+    command prints."""
     from ..forced.responses import shown_response
     from ..maps.design import best_clearances
-    from ..model.display import shown
+    from ..model.display import display_unit, shown
 
     def Y(v):  # the response in its display unit
         return shown_response(response, v)
@@ -247,9 +254,17 @@ def plot_design(
                                        f"m = {key:g} kg")  # fmt: skip
         ax.plot(shown("gap", g["gap"]), Y(g["peak_amplitude"]), "o-", color=f"C{i % 10}",
                 ms=3, lw=1.3, label=text or "with the damper")  # fmt: skip
-    for i, (_, row) in enumerate(best_clearances(table).iterrows()):
-        ax.plot(shown("gap", row["gap"]), Y(row["peak_amplitude"]), "*", ms=13,
-                color=f"C{i % 10}", mec="k", label="best clearance" if i == 0 else None)  # fmt: skip
+    marks = best if best is not None else [r for _, r in best_clearances(table).iterrows()]
+    for i, row in enumerate(marks):
+        tol = row.get("tolerance") if best is not None else None
+        label = None
+        if i == 0:
+            label = "best clearance" + (
+                f" (refined, ± {shown('gap', tol):.2g} {display_unit('gap')})" if tol else ""
+            )
+        ax.errorbar(shown("gap", row["gap"]), Y(row["peak_amplitude"]),
+                    xerr=None if not tol else shown("gap", tol), fmt="*", ms=13, capsize=4,
+                    color=f"C{i % 10}", mec="k", label=label)  # fmt: skip
     _finish_design(plt, fig, ax, float(table["baseline_peak"].max()), path, title, response)
 
 
