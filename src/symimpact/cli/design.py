@@ -213,7 +213,7 @@ def run(ns) -> None:
     for r in best:
         ratio = f" (m/M {r['mass_ratio']:g})" if "mass_ratio" in r else ""
         if "tolerance" in r:
-            where = (f"d {shown('gap', r['gap']):.6g} ± {shown('gap', r['tolerance']):.2g} {gunit} "
+            where = (f"d {gap_text(r['gap'], r['tolerance'])} {gunit} "
                      f"(Brent's method from the grid's {shown('gap', r['grid_gap']):.4g} {gunit} and a "
                      f"walk of {r['walk_moves']} step(s), {r['evaluations']} designs)")  # fmt: skip
         else:
@@ -250,9 +250,8 @@ def headline(best: list[dict[str, Any]], response: str) -> dict[str, Any]:
     peak, base = top[k("peak_amplitude")], top[k("baseline_peak")]
     reduction = 1.0 - peak / base
     gunit = display_unit("gap")
-    where = f"{shown('gap', top['gap']):.6g}"
-    if "tolerance" in top:
-        where += f" ± {shown('gap', top['tolerance']):.2g}"
+    where = (gap_text(top["gap"], top["tolerance"]) if "tolerance" in top
+             else f"{shown('gap', top['gap']):.6g}")  # fmt: skip
     ratio = f" (m/M {top['mass_ratio']:g})" if "mass_ratio" in top else ""
     what = "worst case" if response == "displacement" else f"worst-case {response}"
     text = (f"best clearance{ratio}: d {where} {gunit}; {what} {response_text(response, peak)} "
@@ -268,6 +267,16 @@ def headline(best: list[dict[str, Any]], response: str) -> dict[str, Any]:
         out["mass_ratio"] = top["mass_ratio"]
     return {"peak": out, "baseline_peak": {key: base, "omega": top["baseline_omega"]},
             "reduction": reduction, "text": text}  # fmt: skip
+
+
+def gap_text(gap: float, tolerance: float) -> str:
+    """A refined clearance and its tolerance [m] in the display unit, the clearance given to the
+    decimal place of the tolerance's leading digit: "9.2 ± 0.5", "20.10 ± 0.01", "49 ± 2"."""
+    from ..model.display import shown
+
+    g, tol = shown("gap", gap), shown("gap", tolerance)
+    places = max(0, -math.floor(math.log10(tol))) if tol > 0 else 6
+    return f"{g:.{places}f} ± {tol:.2g}"
 
 
 def _decibels(base: float, peak: float) -> str:
