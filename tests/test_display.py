@@ -63,6 +63,32 @@ def test_plot_axes_carry_display_units(monkeypatch, tmp_path):
     assert ("gap [mm]", "mass_ratio") in seen[str(tmp_path / "b.png")]
 
 
+def test_a_psd_is_drawn_log_log_over_its_band(monkeypatch, tmp_path):
+    """random --plot draws the PSD as a test engineer reads it (issue 80, item 6): both axes
+    logarithmic, the frequency axis over the load's band and an octave either side, not
+    0–1000 Hz linear; the band shaded."""
+    import symimpact.report.plots as plots
+    from symimpact.forced.loads.random_response import random_statistics
+    from symimpact.model.system import ImpactSystem
+
+    seen = {}
+
+    def keep(fig, path, what="plot"):
+        (ax,) = fig.axes
+        seen.update(x=ax.get_xscale(), y=ax.get_yscale(), xlim=ax.get_xlim(),
+                    lines=[line.get_xdata() for line in ax.get_lines()])  # fmt: skip
+
+    monkeypatch.setattr(plots, "atomic_savefig", keep)
+    s = ImpactSystem(M=40.0, K=40 * (2 * 3.141592653589793 * 12) ** 2, zeta=0.01, m=2.0,
+                     gap=0.0092, contact="linear", k1=1e6)  # fmt: skip
+    st = random_statistics(s, 0.25 / 95 * 9.80665**2, (5.0, 100.0), 10.0, 1 / 4000, e=0.6,
+                           realisations=2, kind="base-acceleration")  # fmt: skip
+    plots.plot_random(st, tmp_path / "psd.png", band=(5.0, 100.0))
+    assert seen["x"] == seen["y"] == "log"
+    assert all(x.min() >= 2.5 and x.max() <= 200.0 for x in seen["lines"])
+    assert 2.0 < seen["xlim"][0] < 5.0 and 100.0 < seen["xlim"][1] < 250.0
+
+
 def test_a_long_map_summary_names_each_input_with_its_unit(capsys):
     args = ["map", "--vary", "gap=4 mm:40 mm:4 mm", "--vary", "mass_ratio=0.1:0.7:0.1", "--quiet"]
     assert main(args) == 0

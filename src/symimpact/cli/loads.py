@@ -408,7 +408,7 @@ def run_random(ns) -> None:
     if ns.plot:
         from ..report.plots import plot_random
 
-        plot_random(st, ns.plot)
+        plot_random(st, ns.plot, band=(f1, f2))
     scale = {"displacement": (1e3, "mm"), "velocity": (1e3, "mm/s"),
              "acceleration": (1 / G, "g"), "base_force": (1.0, "N")}  # fmt: skip
     lines = [f"{st.realisations} realisations of {st.duration:g} s after {st.settle:.3g} s, "
