@@ -129,6 +129,9 @@ READ_PAGES = [f"_generated/derivations/{step}.html" for step in derive.STEPS] + 
     "_generated/regenerating.html",
     "_generated/forced.html",
 ]
+#: The reference pages moved out of the README (issue 80): written in the notation a user types
+#: (K_Hz, x_b, Ω as options and identifiers), so only their fit is checked, not their prose.
+REFERENCE_PAGES = ["guide.html", "reproduction.html", "development.html"]
 #: Prose left with TeX markup: a caret, a backslash command, a one-letter name with a
 #: subscript (K_Hz, δ_max, ω_d), a braced subscript or a dollar sign.
 RAW_TEX = re.compile(r"\^|\\[a-zA-Z]+|(?<![A-Za-z])[A-Za-zα-ωΑ-Ω]_[A-Za-z{0-9]|_\{|\$")
@@ -138,7 +141,7 @@ def n_display_blocks(source: str) -> int:
     return source.count("$$\n") // 2
 
 
-@pytest.mark.parametrize("page", READ_PAGES)
+@pytest.mark.parametrize("page", READ_PAGES + REFERENCE_PAGES)
 def test_page_is_typeset_and_fits_a_1000px_window(site, server, tmp_path, page):
     """In headless Chromium at a 1000 px wide window, after MathJax ran: every display formula
     of the page's source is typeset, no MathJax error, no TeX markup left in the prose, and no
@@ -158,7 +161,7 @@ def test_page_is_typeset_and_fits_a_1000px_window(site, server, tmp_path, page):
     assert figures["merror"] == 0
     prose = browser.text_outside_math(dom)
     raw = [prose[max(0, m.start() - 30) : m.end() + 30] for m in RAW_TEX.finditer(prose)]
-    assert not raw, raw[:5]
+    assert not raw or page in REFERENCE_PAGES, raw[:5]
     assert figures["n_over"] == 0, (figures["column"], figures["over"][:5])
     assert figures["widest"]["width"] <= figures["column"] + 1, figures["widest"]
     shot = BUILD / "screenshots" / (Path(page).stem + ".png")

@@ -1,8 +1,9 @@
-"""Every number the README states about results is the one the code computes (issue 15, item 5).
+"""Every number the documentation's report summary states about results is the one the code
+computes (issue 15, item 5; the summary moved from the README to ``docs/reproduction.md``).
 
-Each test recomputes a claim of the README's report section and checks that the README carries
-the computed value, formatted as the README writes it.  A change in the code that moves a number
-fails here until the README says the new number.
+Each test recomputes a claim of that page and checks that the page carries the computed value,
+formatted as the page writes it.  A change in the code that moves a number fails here until the
+page says the new number.
 """
 
 from __future__ import annotations
@@ -17,7 +18,9 @@ from symimpact.generated import closed_forms
 from symimpact.maps.sweep import fig5_limits, gap_range
 from symimpact.report import contact_stage, forced_stage, paper, vibration_stage
 
-README = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
+README = (Path(__file__).resolve().parents[1] / "docs" / "reproduction.md").read_text(
+    encoding="utf-8"
+)
 TEXT = " ".join(README.split())  # line breaks as spaces
 
 
