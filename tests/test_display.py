@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 
+import numpy as np
 import pytest
 
 from symimpact.cli import main
@@ -87,6 +88,43 @@ def test_a_psd_is_drawn_log_log_over_its_band(monkeypatch, tmp_path):
     assert seen["x"] == seen["y"] == "log"
     assert all(x.min() >= 2.5 and x.max() <= 200.0 for x in seen["lines"])
     assert 2.0 < seen["xlim"][0] < 5.0 and 100.0 < seen["xlim"][1] < 250.0
+
+
+def test_a_curve_draws_its_answer_first(monkeypatch, tmp_path):
+    """frf --plot (issue 80, item 6): the stable branches bold and above the unstable ones,
+    which are thin and dashed; the worst case marked with its value as the text states it; the
+    primary without the damper in grey; one legend."""
+    import symimpact.report.plots as plots
+    from symimpact.forced import Forcing
+    from symimpact.forced.orbits.frf import frequency_response
+    from symimpact.model.system import ImpactSystem
+
+    seen = {}
+
+    def keep(fig, path, what="plot"):
+        (ax,) = fig.axes
+        lines = [line for line in ax.get_lines() if len(line.get_xdata())]  # no legend proxies
+        labels = [line.get_label() for line in ax.get_lines()]
+        seen.update(legends=[c for c in ax.get_children() if type(c).__name__ == "Legend"],
+                    labels=labels,
+                    solid=[(line.get_linewidth(), line.get_zorder()) for line in lines
+                           if line.get_linestyle() == "-" and line.get_color() == "C0"],
+                    dashed=[(line.get_linewidth(), line.get_zorder()) for line in lines
+                            if line.get_linestyle() == "--" and line.get_color() == "C0"],
+                    grey=[line.get_color() for line in lines
+                          if line.get_label() == "without the damper"])  # fmt: skip
+
+    monkeypatch.setattr(plots, "atomic_savefig", keep)
+    s = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear", k1=1e6)
+    frf = frequency_response(s, Forcing(F0=2.0, omega=33.0), 0.6, np.arange(32.0, 35.01, 0.5),
+                             sweeps=False, multistart=0, workers=1)  # fmt: skip
+    plots.plot_frf(frf, tmp_path / "frf.png")
+    assert len(seen["legends"]) == 1 and seen["grey"] == ["0.55"]
+    assert min(w for w, _ in seen["solid"]) > 2 * max(w for w, _ in seen["dashed"])
+    assert min(z for _, z in seen["solid"]) > max(z for _, z in seen["dashed"])
+    (worst,) = [label for label in seen["labels"] if label.startswith("worst case")]
+    assert worst == (f"worst case {frf.peak.amplitude * 1e3:.4g} mm at Ω {frf.peak.omega:.4g} "
+                     "rad/s")  # fmt: skip
 
 
 def test_a_long_map_summary_names_each_input_with_its_unit(capsys):

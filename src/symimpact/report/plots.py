@@ -110,7 +110,13 @@ def legend_beside(ax: Any, *handles_labels: Any, **options: Any) -> Any:
 
 
 def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
-    """Draw a frequency-response curve on ``ax`` (see :func:`plot_frf`), with its legend."""
+    """Draw a frequency-response curve on ``ax`` (see :func:`plot_frf`), with its one legend.
+
+    The answer first (issue 80, item 6): the stable branches bold and on top in one colour, the
+    unstable ones thin, dashed and pale beneath, the worst case the curve located marked (★),
+    the other motions the multi-start landed on (not periodic, chattering: ×), the located
+    bifurcations small and pale, the brute-force sweeps as faint dots, and the primary without
+    the damper in grey."""
     import numpy as np
 
     from ..forced.responses import AXIS, QUANTITY, shown_response
@@ -126,39 +132,56 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
         return shown_response(name, v)
 
     base = frf.baseline
-    ax.plot(W(base[:, 0]), Y(base[:, 1]), color="0.6", lw=1.0, label="without the damper")
+    ax.plot(W(base[:, 0]), Y(base[:, 1]), color="0.55", lw=1.2, zorder=1,
+            label="without the damper")  # fmt: skip
     for k, (lo, hi) in enumerate(getattr(frf, "no_impact", [])):
         inside = (base[:, 0] >= lo) & (base[:, 0] <= hi)
         ax.plot(W(base[inside, 0]), Y(base[inside, 1]), color="0.6", lw=4, alpha=0.45,
-                solid_capstyle="butt", label=None if k else "no impact (mass at rest midway)")  # fmt: skip
+                solid_capstyle="butt", zorder=1,
+                label=None if k else "no impact (mass at rest midway)")  # fmt: skip
     for g in getattr(frf, "no_impact_grazings", []):
-        ax.axvline(W(g), color="0.6", lw=0.8, ls=":")
-    for i, b in enumerate(frf.branches):
-        w = W(np.array([p.omega for p in b.points]))
-        a = Y(np.array([p.amplitude for p in b.points]))
-        stable = np.array([p.stable for p in b.points])
-        color = f"C{i % 10}"
-        for flag, style in ((True, "-"), (False, "--")):
+        ax.axvline(W(g), color="0.6", lw=0.8, ls=":", zorder=0)
+    if sweeps and frf.sweep_up is not None and len(frf.sweep_up):
+        both = np.vstack([frf.sweep_up, frf.sweep_down])
+        ax.plot(W(both[:, 0]), Y(both[:, 1]), ".", color="C1", ms=2.5, alpha=0.5, zorder=2,
+                label="sweeps up and down (brute force)")  # fmt: skip
+    for flag in (False, True):  # the unstable beneath, the stable drawn last, on top
+        for b in frf.branches:
+            w = W(np.array([p.omega for p in b.points]))
+            a = Y(np.array([p.amplitude for p in b.points]))
+            stable = np.array([p.stable for p in b.points])
             # each run of equal verdicts joined to its neighbour, so the curve stays unbroken
             joined = stable == flag
             joined[1:] |= stable[:-1] == flag
             y = np.where(joined, a, np.nan)
-            ax.plot(w, y, style, color=color, lw=1.4)
+            if flag:
+                ax.plot(w, y, "-", color="C0", lw=2.2, zorder=4, solid_capstyle="round")
+            else:
+                ax.plot(w, y, "--", color="C0", lw=0.7, alpha=0.45, zorder=2)
+    ax.plot([], [], "-", color="C0", lw=2.2, label="stable periodic orbits")
+    ax.plot([], [], "--", color="C0", lw=0.7, alpha=0.45, label="unstable")
+    cov = getattr(frf, "coverage", None)
+    wild = [a for a in getattr(cov, "attractors", []) or [] if a.kind != "periodic"
+            and a.kind != "no impact"]  # fmt: skip
+    if wild:
+        ax.plot(W(np.array([a.omega for a in wild])), Y(np.array([a.amplitude for a in wild])),
+                "x", color="C3", ms=4, mew=1.0, zorder=5,
+                label="other motions the multi-start landed on (not periodic, chatter)")  # fmt: skip
     markers = {"fold": "o", "branch-point": "s", "period-doubling": "D", "neimark-sacker": "*",
                "grazing": "x"}  # fmt: skip
     seen = set()
     for b in frf.branches:
         for f in b.bifurcations:
-            ax.plot(W(f.omega), Y(f.amplitude), markers[f.kind], color="k", ms=6, mfc="none",
+            ax.plot(W(f.omega), Y(f.amplitude), markers[f.kind], color="0.25", ms=3.5,
+                    mfc="none", mew=0.6, alpha=0.7, zorder=3,
                     label=None if f.kind in seen else f.kind)  # fmt: skip
             seen.add(f.kind)
-    if sweeps and frf.sweep_up is not None and len(frf.sweep_up):
-        ax.plot(W(frf.sweep_up[:, 0]), Y(frf.sweep_up[:, 1]), "^", color="C3", ms=3,
-                alpha=0.6, label="sweep up")  # fmt: skip
-        ax.plot(W(frf.sweep_down[:, 0]), Y(frf.sweep_down[:, 1]), "v", color="C0", ms=3,
-                alpha=0.6, label="sweep down")  # fmt: skip
-    ax.plot([], [], "-", color="k", label="stable")
-    ax.plot([], [], "--", color="k", label="unstable")
+    peak = getattr(frf, "peak", None)
+    if peak is not None:
+        ax.plot(W(peak.omega), Y(peak.amplitude), "*", color="gold", mec="k", ms=14, zorder=6,
+                label=f"worst case {Y(peak.amplitude):.4g}"
+                + ("" if quantity is None else f" {display_unit(quantity)}")
+                + f" at Ω {W(peak.omega):.4g} {display_unit('omega')}")  # fmt: skip
     ax.set_xlabel(f"Ω [{display_unit('omega')}]")
     ax.set_ylabel(AXIS[name] + ("" if quantity is None else f" [{display_unit(quantity)}]"))
     ax.set_xlim(W(frf.omegas[0]), W(frf.omegas[-1]))
@@ -166,10 +189,10 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
 
 
 def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
-    """The frequency-response curve (:func:`symimpact.forced.orbits.frf.frequency_response`): each
-    branch's amplitude against Ω, stable solid and unstable dashed, the located bifurcations
-    marked by kind, the primary without the damper, and the brute-force sweeps up (▲) and down
-    (▼)."""
+    """The frequency-response curve (:func:`symimpact.forced.orbits.frf.frequency_response`),
+    drawn by :func:`draw_frf`: the stable branches bold, the unstable thin and dashed, the worst
+    case marked, the motions that do not repeat, the located bifurcations, the brute-force
+    sweeps and the primary without the damper."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(9, 5.5))
     draw_frf(ax, frf)
