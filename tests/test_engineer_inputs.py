@@ -91,6 +91,28 @@ def test_damping_given_twice_or_out_of_range_is_refused(extra, parameter, capsys
     assert "\n" not in err and f"error: {parameter}:" in err, err
 
 
+def test_a_sine_quoted_as_rms_or_peak_to_peak_is_its_amplitude(capsys):
+    """ "35.3553 N rms" is F0 = 50 N (√2·rms: a sine's RMS is its amplitude over √2); "2 mm pk-pk"
+    is X_b = 1 mm; "0.5 g rms" is A_b = 0.5·√2·9.80665 m/s²; "50 N peak" is 50 N; each
+    conversion stated on stderr; a level that cannot be read names its option."""
+    cases = [
+        (["--force", "35.35533905932738 N rms"], "F0", 50.0, 1e-15),
+        (["--force", "50 N peak"], "F0", 50.0, 0.0),
+        (["--base", "2 mm pk-pk"], "X_b", 0.001, 1e-15),
+        (["--base-acc", "0.5 g RMS"], "A_b", 0.5 * math.sqrt(2) * 9.80665, 1e-15),
+        (["--base-vel", "20 mm/s peak-to-peak"], "V_b", 0.01, 1e-15),
+    ]
+    for extra, key, value, rel in cases:
+        ns, given = _ns(["frf", "--M", "40", "--fn", "12", "--m", "2", *extra])
+        apply_engineer_inputs(ns, given)
+        assert getattr(ns, key) == pytest.approx(value, rel=rel, abs=0), extra
+    assert "is the amplitude 50 N of the sine" in capsys.readouterr().err
+    argv = ["simulate", "--M", "40", "--fn", "12 Hz", "--zeta", "0.01", "--m", "2", "--gap",
+            "9 mm", "--contact", "rigid", "--e", "0.6", "--freq", "12 Hz", "--periods", "20"]  # fmt: skip
+    assert main([*argv, "--force", "2 kg rms"]) == 2
+    assert "error: force:" in capsys.readouterr().err
+
+
 DESIGN_WITH_GAP = ["design", "--gap", "5 mm", "--gaps", "1 mm,2 mm", "--force", "1", "--contact",
                    "rigid", "--e", "0.5", "--omega-range", "1:2:1"]  # fmt: skip
 

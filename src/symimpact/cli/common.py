@@ -156,6 +156,7 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
     for (command, option), why in UNUSED.items():
         if ns.command == command and option in given:
             raise ParameterError(option.replace("_", "-"), why)
+    sine_amplitudes(ns)
     # the system options' --structure (``modes --structure`` only lists a structure: no --at)
     if getattr(ns, "structure", None) is not None and hasattr(ns, "at"):
         from ..model.structure_model import has_loads
@@ -181,6 +182,39 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
         ns.K = positive_float("M", ns.M, "kg") * w2
     else:
         raise ParameterError("fn", "give the modal mass --M (or the stiffness --K) with --fn")
+
+
+#: A sine's amplitude option: (its flag, its SI unit).
+_SINES = {"F0": ("force", "N"), "X_b": ("base", "m"), "V_b": ("base-vel", "m/s"),
+          "A_b": ("base-acc", "m/s^2")}  # fmt: skip
+#: How a sine's level is quoted, and the factor to its amplitude (peak): rms·√2, peak-to-peak/2.
+_QUOTED = {"rms": math.sqrt(2.0), "peak": 1.0, "pk": 1.0, "pk-pk": 0.5, "peak-to-peak": 0.5}
+
+
+def sine_amplitudes(ns: argparse.Namespace) -> None:
+    """--force, --base, --base-vel and --base-acc as a test engineer quotes a sine: a level
+    followed by "rms", "peak" (or "pk") or "pk-pk" (or "peak-to-peak"), e.g. "35.36 N rms" or
+    "2 mm pk-pk", read as the amplitude of F0·cos(Ωt) (X_b·cos(Ωt), …): rms·√2, peak-to-peak/2;
+    stated on stderr in one line.  Without a word the level is the amplitude, as before."""
+    import re
+
+    from ..model.units import si_float
+
+    for key, (flag, unit) in _SINES.items():
+        text = getattr(ns, key, None)
+        if not isinstance(text, str):
+            continue
+        found = re.fullmatch(r"(?P<level>.*?)\s+(?P<how>rms|peak-to-peak|pk-pk|peak|pk)\s*",
+                             text, re.IGNORECASE)  # fmt: skip
+        if found is None:
+            continue
+        how = found["how"].lower()
+        level = si_float(flag, found["level"], unit)
+        amplitude = level * _QUOTED[how]
+        setattr(ns, key, amplitude)
+        if how not in ("peak", "pk"):
+            print(f"symimpact {ns.command}: --{flag} {text.strip()!r} is the amplitude "
+                  f"{amplitude:.6g} {unit} of the sine", file=sys.stderr)  # fmt: skip
 
 
 def _damping_as_zeta(ns: argparse.Namespace, given: set[str]) -> None:
@@ -489,7 +523,9 @@ def add_forcing(p: argparse.ArgumentParser) -> None:
         "harmonic forcing F0·cos(Ωt + φ) and/or base motion X_b·cos(Ωt + φ) (Eq. F1)"
     )
     once = {"action": _Once, "default": None, "metavar": "Q"}
-    g.add_argument("--force", dest="F0", help="force amplitude F0 on the main mass [N]", **once)
+    g.add_argument("--force", dest="F0", help='force amplitude F0 on the main mass [N] ("35.4 N '
+                   "rms\" is read as its amplitude, 50 N; so are 'peak' and 'pk-pk' levels)",
+                   **once)  # fmt: skip
     g.add_argument(
         "--base", dest="X_b", help="base-motion amplitude X_b under the primary [m]", **once
     )

@@ -83,9 +83,10 @@ def response_text(name: str, value: float, spec: str = ".5g", unit: bool = True)
 def add_band(g: Any) -> None:
     """--force/--base, --omega-range/--freq-range and --e, into the argument group ``g``."""
     g.add_argument("--force", dest="F0", default=None, metavar="Q",
-                   help="force amplitude F0 on the main mass [N]")  # fmt: skip
+                   help='force amplitude F0 on the main mass [N] ("35.4 N rms" is read as '
+                   "its amplitude, 50 N; so are 'peak' and 'pk-pk' levels)")  # fmt: skip
     g.add_argument("--base", dest="X_b", default=None, metavar="Q",
-                   help="base-motion amplitude X_b under the primary [m]")  # fmt: skip
+                   help='base-motion amplitude X_b under the primary [m] ("2 mm pk-pk" is 1 mm)')  # fmt: skip
     g.add_argument("--base-vel", dest="V_b", default=None, metavar="Q",
                    help="base velocity amplitude V_b [m/s], constant over the band "
                    "(X_b = V_b/Ω)")  # fmt: skip
