@@ -176,7 +176,8 @@ def run(ns) -> None:
         best = table_rows(best_clearances(table))
     else:
         best = refine_best(table, system, forcing, e, omegas, tolerance=tolerance,
-                           multistart=multistart, response=response)  # fmt: skip
+                           multistart=multistart, response=response,
+                           progress=not (ns.quiet or ns.json))  # fmt: skip
     rows, best = _named(rows, response), _named(best, response)
 
     def k(name: str) -> str:

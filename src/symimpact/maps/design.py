@@ -334,6 +334,7 @@ def refine_best(
     tolerance: float = TOLERANCE,
     multistart: int = FREQUENCIES,
     response: str = "displacement",
+    progress: bool = False,
 ) -> list[dict[str, Any]]:
     """For each mass ratio (or impact mass) of a design ``table`` (from :func:`design_map` over
     the clearance), the best clearance refined: Brent's bounded method on the peak of
@@ -341,8 +342,11 @@ def refine_best(
     end where the best lies there), stopped at ``tolerance`` [m] on d.  Each row: the design
     row at the refined d, with ``tolerance``, ``grid_gap`` (the grid's best), ``evaluations``,
     ``walk_moves`` (the moves of the walk after Brent's method, module text) and, for rigid impacts, ``peak_e_minus`` / ``peak_e_plus``: the peak at e − 0.1 and e + 0.1
-    (within 0–1) for the refined d; ``multistart`` and ``response`` as for :func:`design_row`."""
+    (within 0–1) for the refined d; ``multistart`` and ``response`` as for :func:`design_row`.
+    With ``progress``, a bar on stderr counts the designs as they are computed, with the time
+    taken and the rate (their number is Brent's, not known ahead)."""
     from scipy.optimize import minimize_scalar
+    from tqdm import tqdm
 
     system, forcing, e = checked(system, forcing, e)
     tolerance = checks.bounded("tolerance", tolerance, 0.0, math.inf, open_low=True)
@@ -352,6 +356,8 @@ def refine_best(
     by = [c for c in ("mass_ratio", "m") if c in table.columns]
     groups = [table] if not by else [g for _, g in table.groupby(by, sort=True)]
     out = []
+    bar = tqdm(desc="refining the best clearance", unit="design", disable=not progress,
+               leave=True)  # fmt: skip
     for g in groups:
         g = g.sort_values("gap")
         gaps = g["gap"].to_numpy(dtype=float)
@@ -365,6 +371,7 @@ def refine_best(
             if d not in cache:
                 cache[d] = design_row(sys_.with_(gap=d), forcing, e, w, multistart=multistart,
                                       response=response)  # fmt: skip
+                bar.update(1)
             return cache[d]
 
         lo, hi = gaps[max(i - 1, 0)], gaps[min(i + 1, len(gaps) - 1)]
@@ -384,7 +391,9 @@ def refine_best(
                 result[key] = design_row(base.with_(gap=best_d), forcing, ee, w,
                                          multistart=multistart,
                                          response=response)["peak_amplitude"]  # fmt: skip
+                bar.update(1)
         out.append(result)
+    bar.close()
     return out
 
 
