@@ -106,7 +106,7 @@ def test_a_curve_draws_its_answer_first(monkeypatch, tmp_path):
         lines = [line for line in ax.get_lines() if len(line.get_xdata())]  # no legend proxies
         labels = [line.get_label() for line in ax.get_lines()]
         seen.update(legends=[c for c in ax.get_children() if type(c).__name__ == "Legend"],
-                    labels=labels,
+                    labels=labels, ylabel=ax.get_ylabel(),
                     solid=[(line.get_linewidth(), line.get_zorder()) for line in lines
                            if line.get_linestyle() == "-" and line.get_color() == "C0"],
                     dashed=[(line.get_linewidth(), line.get_zorder()) for line in lines
@@ -125,6 +125,14 @@ def test_a_curve_draws_its_answer_first(monkeypatch, tmp_path):
     (worst,) = [label for label in seen["labels"] if label.startswith("worst case")]
     assert worst == (f"worst case {frf.peak.amplitude * 1e3:.4g} mm at Ω {frf.peak.omega:.4g} "
                      "rad/s")  # fmt: skip
+    # a transmissibility is drawn in dB, as vibration tests read it
+    from symimpact.forced.orbits.response_curve import response_curve
+
+    tr = response_curve(frf, "transmissibility", s, Forcing(F0=2.0, omega=33.0), 0.6)
+    plots.plot_frf(tr, tmp_path / "tr.png")
+    (worst,) = [label for label in seen["labels"] if label.startswith("worst case")]
+    assert worst.startswith(f"worst case {20 * np.log10(tr.peak.amplitude):.4g} dB at Ω")
+    assert seen["ylabel"] == "transmissibility [dB]"
 
 
 def test_a_long_map_summary_names_each_input_with_its_unit(capsys):

@@ -127,10 +127,15 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
 
     name = getattr(frf, "response", "displacement")  # what the amplitude fields hold
     quantity = QUANTITY[name]
+    decibels = name == "transmissibility"  # drawn in dB, 20·log₁₀ T, as vibration tests read it
 
     def Y(v):  # the response in its display unit
+        if decibels:
+            with np.errstate(divide="ignore"):
+                return 20.0 * np.log10(np.asarray(v, dtype=float))
         return shown_response(name, v)
 
+    unit = "dB" if decibels else (None if quantity is None else display_unit(quantity))
     base = frf.baseline
     ax.plot(W(base[:, 0]), Y(base[:, 1]), color="0.55", lw=1.2, zorder=1,
             label="without the damper")  # fmt: skip
@@ -161,8 +166,9 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     ax.plot([], [], "-", color="C0", lw=2.2, label="stable periodic orbits")
     ax.plot([], [], "--", color="C0", lw=0.7, alpha=0.45, label="unstable")
     cov = getattr(frf, "coverage", None)
+    # the multi-start's amplitudes are displacements: drawn on a displacement curve only
     wild = [a for a in getattr(cov, "attractors", []) or [] if a.kind != "periodic"
-            and a.kind != "no impact"]  # fmt: skip
+            and a.kind != "no impact"] if name == "displacement" else []  # fmt: skip
     if wild:
         ax.plot(W(np.array([a.omega for a in wild])), Y(np.array([a.amplitude for a in wild])),
                 "x", color="C3", ms=4, mew=1.0, zorder=5,
@@ -179,11 +185,10 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     peak = getattr(frf, "peak", None)
     if peak is not None:
         ax.plot(W(peak.omega), Y(peak.amplitude), "*", color="gold", mec="k", ms=14, zorder=6,
-                label=f"worst case {Y(peak.amplitude):.4g}"
-                + ("" if quantity is None else f" {display_unit(quantity)}")
+                label=f"worst case {Y(peak.amplitude):.4g}" + ("" if unit is None else f" {unit}")
                 + f" at Ω {W(peak.omega):.4g} {display_unit('omega')}")  # fmt: skip
     ax.set_xlabel(f"Ω [{display_unit('omega')}]")
-    ax.set_ylabel(AXIS[name] + ("" if quantity is None else f" [{display_unit(quantity)}]"))
+    ax.set_ylabel(AXIS[name] + ("" if unit is None else f" [{unit}]"))
     ax.set_xlim(W(frf.omegas[0]), W(frf.omegas[-1]))
     legend_beside(ax)
 
