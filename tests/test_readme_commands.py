@@ -44,9 +44,10 @@ def test_the_block_holds_every_subcommand():
 
 
 def _marked(command: str):
-    """The design commands (five clearances, each a whole curve, then Brent's method on the best
-    one: about a minute; the robust one, two clearances at three restitutions with Brent's
-    method on each: about 40 s) run in the slow set, which CI runs as its second step."""
+    """The design commands (five clearances, each a whole curve over 17 frequencies, then Brent's
+    method on the best one to 2 mm: under a minute; the robust one, two clearances at three
+    restitutions with Brent's method on each: about 40 s) run in the slow set, which CI runs as
+    its second step."""
     slow = command.split()[1] == "design"
     return pytest.param(command, marks=pytest.mark.slow) if slow else command
 
@@ -92,7 +93,7 @@ def test_readme_command_runs_and_shows_something(command, tmp_path):
         assert "robust clearance (smallest worst case over e): d" in out
         assert "best clearance at the nominal e 0.5" in out
     elif sub == "design":  # five clearances: the best one is inside the range, refined
-        best = re.search(r"best clearance: d ([\d.]+) ± 1 mm \(Brent's method", out)
+        best = re.search(r"best clearance: d ([\d.]+) ± 2 mm \(Brent's method", out)
         assert best and 80 < float(best[1]) < 160, out
         assert (tmp_path / "design.png").stat().st_size > 10_000
     elif sub == "periodic":  # Ω 38 rad/s: one stable admissible orbit and one unstable
