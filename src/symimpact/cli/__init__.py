@@ -182,15 +182,34 @@ def _internal(command: str, exc: BaseException) -> int:
 LIST_OPTIONS = ("vary", "show")
 
 
-def _dashes_as_empty(ns: argparse.Namespace) -> argparse.Namespace:
+def _dashes_as_empty(ns: argparse.Namespace, parser: argparse.ArgumentParser) -> argparse.Namespace:
     """``--opt=--`` reaches argparse as the end-of-options marker and leaves ``[]`` as the value;
-    read it as an empty value instead, which the checks then refuse by name."""
+    read it as an empty value instead, which the checks then refuse by name.  An option that
+    argparse converts (a whole number: ``ritz --mode=--``) is left as ``[]`` unconverted: it is
+    refused by :func:`_refuse_unconverted` (it had reached the command and ended in an internal
+    error; found by the command-line fuzz)."""
     for key, value in vars(ns).items():
         if key in LIST_OPTIONS:
             setattr(ns, key, ["" if v == [] else v for v in value])
-        elif value == []:
+        elif value == [] and key not in _typed_options(parser, ns.command):
             setattr(ns, key, "")
     return ns
+
+
+def _typed_options(parser: argparse.ArgumentParser, command: str) -> set[str]:
+    """The destinations of ``command``'s options that argparse converts (``type=``)."""
+    (sub,) = [a for a in parser._actions if isinstance(a, argparse._SubParsersAction)]
+    return {a.dest for a in sub.choices[command]._actions if a.type is not None}
+
+
+def _refuse_unconverted(ns: argparse.Namespace) -> None:
+    """A converted option written ``--opt=--`` (its value ``[]``, see :func:`_dashes_as_empty`):
+    refused in one line naming it."""
+    from ..errors import ParameterError
+
+    for key, value in vars(ns).items():
+        if value == [] and key not in LIST_OPTIONS:
+            raise ParameterError(key.replace("_", "-"), "needs a value ('--' is not one)")
 
 
 #: Options that name a file a command writes, checked before the command computes anything.
@@ -236,7 +255,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     argv_given = argv
     argv = sys.argv[1:] if argv is None else list(argv)
-    ns = _dashes_as_empty(parser.parse_args(_join_negative_values(parser, argv)))
+    ns = _dashes_as_empty(parser.parse_args(_join_negative_values(parser, argv)), parser)
     given = ns.__dict__.pop(GIVEN, set())
     from ..model import display
 
@@ -267,6 +286,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             spec.partition("=")[0].strip() == "omega" for spec in getattr(ns, "show", None) or []
         ):
             display.set_display_unit("omega", "Hz")  # the user's unit back
+        _refuse_unconverted(ns)
         _check_outputs(ns)
         apply_engineer_inputs(ns, given)
         apply_materials(ns, given)

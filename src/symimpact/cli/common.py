@@ -50,13 +50,6 @@ class Parser(argparse.ArgumentParser):
     def error(self, message: str) -> None:  # one line, status 2, no usage dump
         self.exit(2, f"{self.prog}: error: {message}\n")
 
-    def _get_values(self, action: argparse.Action, arg_strings: list[str]) -> Any:
-        # argparse drops a value written '--' ("--mode=--") and stores [] for an option that
-        # takes one value, unconverted and unchecked (found by the command-line fuzz): refused
-        if action.nargs is None and action.option_strings and arg_strings == ["--"]:
-            self.error(f"argument {'/'.join(action.option_strings)}: expected one value, not '--'")
-        return super()._get_values(action, arg_strings)
-
 
 #: The compliant contact laws every command with --contact takes; commands add their own.
 COMPLIANT_LAWS = ("cubic", "hertz", "linear", "perturbation")
