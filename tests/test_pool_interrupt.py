@@ -23,6 +23,10 @@ SCRIPT = textwrap.dedent(
     import os, signal, sys, threading, time
     from symimpact import _interrupt, _pool
 
+    # Ctrl-C as a terminal's command has it: a job a shell starts in the background inherits
+    # SIGINT ignored (POSIX), and so does every process it starts, this one included
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+
     def sleeper(x):
         time.sleep(20.0)
         return x
