@@ -127,17 +127,19 @@ def _notebooks(folder: str) -> int:
     try:
         from .notebooks import write_notebooks
 
-        paths = write_notebooks(folder)
+        print(f"writing one notebook per derivation step into {folder}/", flush=True)
+        write_notebooks(folder, say=lambda path, s: print(f"wrote {path} ({s:.1f} s)", flush=True))
     except ModuleNotFoundError as exc:
         print(
             f"--notebooks: {exc.name} is not installed (pip install -e '.[teach]')", file=sys.stderr
         )
         return 2
+    except BrokenPipeError:  # the output piped into a program that stopped reading (head)
+        sys.stderr.close()
+        return 0
     except OSError as exc:
         print(f"--notebooks: cannot write to {folder!r} ({exc.strerror})", file=sys.stderr)
         return 2
-    for path in paths:
-        print(f"wrote {path}")
     return 0
 
 

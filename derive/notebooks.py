@@ -19,6 +19,7 @@ import ast
 import importlib
 import inspect
 import textwrap
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -273,21 +274,34 @@ def exercise_cells(k: int, ex) -> list:
     ]
 
 
-def write_notebooks(folder: str | Path, steps: tuple[str, ...] = STEPS) -> list[Path]:
+def write_notebooks(
+    folder: str | Path,
+    steps: tuple[str, ...] = STEPS,
+    say: Callable[[Path, float], None] | None = None,
+) -> list[Path]:
     """Write ``<NN>_<step>.ipynb`` for each step into ``folder``, then the walk-through of
-    :mod:`derive.walkthrough`; returns the paths."""
+    :mod:`derive.walkthrough`; returns the paths.  ``say(path, seconds)`` is called as each
+    notebook is written, so that a person waiting sees each one arrive."""
+    import time
+
     import nbformat
 
     out = Path(folder)
     out.mkdir(parents=True, exist_ok=True)
     paths = []
     for k, step in enumerate(steps, 1):
+        start = time.perf_counter()
         path = out / f"{k:02d}_{step}.ipynb"
         nbformat.write(notebook(step), path)
         paths.append(path)
+        if say is not None:
+            say(path, time.perf_counter() - start)
     from .walkthrough import NOTEBOOK
     from .walkthrough import notebook as walkthrough_notebook
 
+    start = time.perf_counter()
     path = out / NOTEBOOK
     nbformat.write(walkthrough_notebook(), path)
+    if say is not None:
+        say(path, time.perf_counter() - start)
     return [*paths, path]
