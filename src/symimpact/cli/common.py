@@ -232,8 +232,8 @@ def _damping_as_zeta(ns: argparse.Namespace, given: set[str]) -> None:
 #: The options a structure file with dampers and a force replaces: the primary, the damper, the
 #: contact and the force amplitude.
 _MODEL_GIVES = ("M", "K", "C", "zeta", "q_factor", "loss_factor", "fn", "m", "gap", "a", "b",
-                "k_hz", "k1", "c1", "at", "mode", "impactor", "cavity", "impact_speed", "contact", "e", "chi", "F0", "X_b",
-                "V_b", "A_b")  # fmt: skip
+                "k_hz", "k1", "c1", "at", "mode", "impactor", "cavity", "impact_speed", "contact",
+                "e", "chi", "F0", "X_b", "V_b", "A_b")  # fmt: skip
 
 
 def _structure_model(ns: argparse.Namespace, given: set[str]) -> None:

@@ -241,7 +241,7 @@ def headline(best: list[dict[str, Any]], response: str) -> dict[str, Any]:
     (20·log₁₀(baseline/peak)).  With several mass ratios, the best of their best."""
     from ..forced.responses import response_key
     from ..model.display import display_unit, omega_text, shown
-    from .frf import response_text
+    from .frf import decibels, response_text
 
     def k(name: str) -> str:
         return _renamed(name, response)
@@ -259,7 +259,7 @@ def headline(best: list[dict[str, Any]], response: str) -> dict[str, Any]:
             f"at Ω {omega_text(top['peak_omega'], '.5g')} ({top['peak_motion']}); without the "
             f"damper {response_text(response, base)} at Ω "
             f"{omega_text(top['baseline_omega'], '.5g')}; reduction {100 * reduction:.1f} % "
-            f"({_decibels(base, peak)})")  # fmt: skip
+            f"({decibels(base, peak) or 'no motion left'})")  # fmt: skip
     out = {key: peak, "omega": top["peak_omega"], "motion": top["peak_motion"],
            "gap": top["gap"]}  # fmt: skip
     if "tolerance" in top:
@@ -278,13 +278,6 @@ def gap_text(gap: float, tolerance: float) -> str:
     g, tol = shown("gap", gap), shown("gap", tolerance)
     places = max(0, -math.floor(math.log10(tol))) if tol > 0 else 6
     return f"{g:.{places}f} ± {tol:.2g}"
-
-
-def _decibels(base: float, peak: float) -> str:
-    """The reduction of an amplitude from ``base`` to ``peak`` in dB, 20·log₁₀(base/peak)."""
-    if peak <= 0.0:
-        return "no motion left"
-    return f"{20.0 * math.log10(base / peak):.2f} dB"
 
 
 def csv_rows(rows: list[dict[str, Any]], best: list[dict[str, Any]]) -> list[dict[str, Any]]:

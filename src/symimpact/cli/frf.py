@@ -374,10 +374,17 @@ def peak_lines(frf) -> list[str]:
         lines = [f"{what} with the damper: {at(p)} ({kind}; {how})"]
     lines.append(f"{what} without the damper: {at(frf.baseline_peak)}")
     if not math.isnan(frf.reduction):
-        db = ("" if frf.reduction >= 1.0
-              else f" ({-20.0 * math.log10(1.0 - frf.reduction):.2f} dB)")  # fmt: skip
-        lines.append(f"reduction: {100 * frf.reduction:.4g} %{db}")
+        db = decibels(frf.baseline_peak.amplitude, frf.peak.amplitude) if frf.peak else None
+        lines.append(f"reduction: {100 * frf.reduction:.4g} %" + (f" ({db})" if db else ""))
     return lines
+
+
+def decibels(base: float, peak: float) -> str | None:
+    """The reduction of an amplitude from ``base`` to ``peak`` in dB, "7.58 dB" for
+    20·log₁₀(base/peak); None where no motion is left (peak 0)."""
+    if peak <= 0.0:
+        return None
+    return f"{20.0 * math.log10(base / peak):.2f} dB"
 
 
 def coverage_lines(frf) -> list[str]:
