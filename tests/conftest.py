@@ -2,7 +2,7 @@
 
 Profiles (``--hypothesis-profile NAME``):
 
-- ``ci`` (the default): ``derandomize=True``, so each property test draws the same examples on
+- ``ci`` (the default): no deadline (below), ``derandomize=True``, so each property test draws the same examples on
   every run and every machine (seeded from the test's own source), and no example database, so a
   failure seen on one machine is not replayed as a different run on another.  The README's test
   command and CI use it.
@@ -19,8 +19,13 @@ from hypothesis import settings
 
 from derive import cache
 
-settings.register_profile("ci", derandomize=True, database=None, print_blob=True)
-settings.register_profile("explore", derandomize=False, database=None, print_blob=True)
+# No deadline: hypothesis's default fails an example that takes over 200 ms of wall time, which
+# a first call (pint building its registry) or a loaded machine (xdist workers on 2 cores) can
+# take; it failed a units test here once under load (1 of 5 runs).  Time is measured in the
+# benchmarks, never asserted in the tests.
+settings.register_profile("ci", derandomize=True, database=None, print_blob=True, deadline=None)
+settings.register_profile("explore", derandomize=False, database=None, print_blob=True,
+                          deadline=None)  # fmt: skip
 # Loaded here, before any test module builds its @settings(...) from the current profile.
 settings.load_profile("ci")
 

@@ -325,18 +325,35 @@ def _structure_mode(ns: argparse.Namespace, given: set[str]) -> None:
     ns.K = mode.omega**2 * ns.M
     ns.zeta, ns.C = mode.zeta, None
     ns.reduced_base = (mode.participation * phi, i, at)  # for refuse_reduced_base
+    ns.reduced_structure = s  # for the whole structure's closed forms beside the reduction
     print(f"symimpact {ns.command}: the primary is mode {i} ({mode.frequency:.5g} Hz, ζ "
           f"{mode.zeta:.4g}) of the {s.source} model at {at!r}: M {ns.M:.6g} kg, K {ns.K:.6g} "
           "N/m", file=sys.stderr)  # fmt: skip
 
 
-def refuse_reduced_base(ns: argparse.Namespace, flag: str, harmonic: bool = True) -> None:
-    """Refuse a base load (``flag``, the option the user gave) on a one-mode reduction
+def base_participation(ns: argparse.Namespace) -> float:
+    """Γφ(a) of a one-mode reduction (:func:`_structure_mode`) under a sampled base load, which
+    the record engines carry (Eq. F7 at the point a: M·ẍ + C·ẋ + K·x = −M·Γφ(a)·ẍ_b, the
+    damper's mass −m·ẍ_b); stated on stderr where it is not 1.  1 for a primary on its base."""
+    reduced = getattr(ns, "reduced_base", None)
+    if reduced is None:
+        return 1.0
+    gp, i, at = reduced
+    if abs(gp - 1.0) > 1e-9 and not getattr(ns, "quiet", False):
+        print(f"symimpact {ns.command}: the supports drive mode {i} at {at!r} by its "
+              f"participation Γφ = {gp:.4g} (Eq. F7): its load is −Γφ·M·a_b, the damper's "
+              "−m·a_b", file=sys.stderr)  # fmt: skip
+    return gp
+
+
+def refuse_reduced_base(ns: argparse.Namespace, flag: str) -> None:
+    """Refuse a harmonic base load (``flag``, the option the user gave) on a one-mode reduction
     (:func:`_structure_mode`) whose mode the supports drive by Γφ ≠ 1 (Eq. F7: under base motion
-    the mode's equation at the point a is M·ẍ + C·ẋ + K·x = −M·Γφ(a)·ẍ_b, where a one-mode
-    primary takes Γφ = 1): a cantilever's first mode at its tip has Γφ = 1.566, and the run had
-    been 36 % low in displacement without a word.  ``harmonic``: a sine's base motion, which a
-    structure file's 'base' carries through every mode's Γ (a sampled one is not yet carried)."""
+    the mode's equation at the point a is M·ẍ + C·ẋ + K·x = −M·Γφ(a)·ẍ_b, where the harmonic
+    engines' one-mode primary takes Γφ = 1): a cantilever's first mode at its tip has
+    Γφ = 1.566, and the run had been 36 % low in displacement without a word.  A structure
+    file's 'base' carries every mode's Γ; a sampled base load carries Γφ
+    (:func:`base_participation`)."""
     reduced = getattr(ns, "reduced_base", None)
     if reduced is None:
         return
@@ -348,10 +365,8 @@ def refuse_reduced_base(ns: argparse.Namespace, flag: str, harmonic: bool = True
     raise ParameterError(
         flag, f"moves the supports, which drive mode {i} at {at!r} by its participation Γφ = "
         f"{gp:.4g}; the one-mode primary of --mode takes 1 (its response would be off by the "
-        f"factor {gp:.4g}): give a force on the primary"
-        + (", or the whole structure with its dampers and a 'base' (a --structure file, "
-           "without --mode)" if harmonic else
-           " (a sampled base motion of a structure of several modes is not supported yet)"),
+        f"factor {gp:.4g}): give a force on the primary, or the whole structure with its "
+        "dampers and a 'base' (a --structure file, without --mode)",
     )  # fmt: skip
 
 

@@ -16,8 +16,8 @@ from .common import (
     add_quiet,
     add_system,
     announce,
+    base_participation,
     emit,
-    refuse_reduced_base,
     system_from,
     write_csv,
 )
@@ -222,7 +222,6 @@ def _kind(ns) -> tuple[str, str]:
     if ns.force_load is not None:
         return "force", ns.force_load
     flag = {"shock": "peak", "sweep-sine": "amplitude"}[ns.command]
-    refuse_reduced_base(ns, f"base-{flag}", harmonic=False)
     return "base-acceleration", ns.base_load
 
 
@@ -246,8 +245,6 @@ def _flat_psd(ns, f1: float, f2: float) -> tuple[str, float]:
         )
     (flag, text), name = given[0], given[0][0][2:]
     kind = "force" if flag.startswith("--force") else "base-acceleration"
-    if kind != "force":
-        refuse_reduced_base(ns, name, harmonic=False)
     if flag.endswith("-psd"):
         psd = si_float(name, text, "N^2/Hz" if kind == "force" else ACCELERATION_PSD)
         if psd < 0:
@@ -355,8 +352,6 @@ def run_random(ns) -> None:
                 "--base-acc-rms",
             )
         psd, kind = psd_table(ns.psd_file)
-        if kind != "force":
-            refuse_reduced_base(ns, "psd-file", harmonic=False)
     else:
         kind, psd = _flat_psd(ns, f1, f2)
         load = _flat_load(kind, psd, f1, f2)
@@ -371,6 +366,7 @@ def run_random(ns) -> None:
             if len(parts) != 2:
                 raise ParameterError("kanai-tajimi", f"must be FG:ZG, got {ns.kanai_tajimi!r}")
             psd = kanai_tajimi(psd, parts[0].strip(), parts[1].strip())
+    gamma = base_participation(ns) if kind != "force" else 1.0
     T = positive_float("duration", ns.duration, "s")
     dt = _sampling(ns, T, 1.0 / (2 * SAMPLES_PER_PERIOD * f2))
     from ..forced.loads.random_response import MAX_REALISATIONS
@@ -382,7 +378,7 @@ def run_random(ns) -> None:
     as_map = any(v is not None for v in (ns.executor, ns.workers, ns.scheduler, ns.out))
     announce(ns, ensemble_estimate(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
                                    settle=ns.settle, kind=kind, segment=ns.segment,
-                                   welch=not as_map), "realisations",
+                                   welch=not as_map, participation=gamma), "realisations",
              ", of one core: the map shares it among its workers" if as_map else "")  # fmt: skip
     if as_map:
         from ..maps.ensemble import random_ensemble
@@ -396,10 +392,12 @@ def run_random(ns) -> None:
         st, _ = random_ensemble(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
                                 settle=ns.settle, kind=kind, executor=ns.executor,
                                 workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
-                                force=ns.force, progress=sys.stderr.isatty() and not ns.quiet)  # fmt: skip
+                                force=ns.force, progress=sys.stderr.isatty() and not ns.quiet,
+                                participation=gamma)  # fmt: skip
     else:
         st = random_statistics(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
-                               settle=ns.settle, kind=kind, segment=ns.segment)  # fmt: skip
+                               settle=ns.settle, kind=kind, segment=ns.segment,
+                               participation=gamma)  # fmt: skip
     if ns.csv:
         write_csv(ns.csv, "csv", [
             {"frequency": f, "displacement_psd": a, "baseline_displacement_psd": b}
@@ -430,7 +428,31 @@ def run_random(ns) -> None:
     if load is not None and ns.kanai_tajimi is None:
         lines.insert(0, load.pop("text"))
         out["load"] = load
+    if kind != "force" and getattr(ns, "reduced_base", None) is not None:
+        text, out["structure"] = _whole_structure(ns, psd, (f1, f2), gamma)
+        lines += text
     emit(ns, out, "\n".join(lines))
+
+
+def _whole_structure(ns, psd: Any, band: tuple[float, float], gamma: float) -> tuple[list, dict]:
+    """What a one-mode reduction under random base motion leaves out: the bare structure's RMS
+    at the damper's point over the band, all its modes and the reduced mode alone, in closed form
+    (:func:`~symimpact.forced.loads.random_response.modal_random_rms`), as text lines and JSON
+    (SI): the run's "alone" is the second, which the first shows in full."""
+    from ..forced.loads.random_response import modal_random_rms
+
+    _, i, at = ns.reduced_base
+    s = ns.reduced_structure
+    every = modal_random_rms(s, at, psd, band)
+    alone = modal_random_rms(s, at, psd, band, modes=(i,))
+    text = [
+        f"the bare structure at {at!r} over the band (closed form, Eq. F7): all {len(s.modes)} "
+        f"modes {every['displacement'] * 1e3:.4g} mm and {every['acceleration'] / G:.4g} g rms; "
+        f"mode {i} alone (this run's primary, Γφ = {gamma:.4g}) "
+        f"{alone['displacement'] * 1e3:.4g} mm and {alone['acceleration'] / G:.4g} g"
+    ]
+    return text, {"point": at, "mode": i, "participation": gamma, "modes": len(s.modes),
+                  "baseline_rms_all_modes": every, "baseline_rms_mode": alone}  # fmt: skip
 
 
 def _flat_load(kind: str, psd: float, f1: float, f2: float) -> dict:
@@ -465,8 +487,6 @@ def run_shock(ns) -> None:
             raise ParameterError("record-file", "the record gives the load and its samples: "
                                  "drop --force-peak/--base-peak, --pulse and --dt")  # fmt: skip
         record = read_record(ns.record_file)
-        if record.kind != "force":
-            refuse_reduced_base(ns, "record-file", harmonic=False)
         # the record, then rest: its residual response (default: as after a pulse, 20 natural
         # periods, and 3 periods of the SRS's lowest oscillator)
         rest = max(20.0 / fn, 3.0 / _srs_range(ns, fn)[0])
@@ -494,11 +514,13 @@ def run_shock(ns) -> None:
 
     frequencies = np.geomspace(lo, hi, n)
     srs_oscillators(frequencies, ns.srs_zeta, record.dt)  # refused before the estimate's runs
+    gamma = base_participation(ns) if record.kind != "force" else 1.0
 
     # the record with the damper and without, and each SRS oscillator on both motions
-    estimate = record_estimate(system, record, e=e, marches=2 * n)
+    estimate = record_estimate(system, record, e=e, marches=2 * n, participation=gamma)
     announce(ns, estimate, "record-file" if ns.record_file else "duration")
-    out = shock_response(system, record, e=e, frequencies=frequencies, zeta=ns.srs_zeta)
+    out = shock_response(system, record, e=e, frequencies=frequencies, zeta=ns.srs_zeta,
+                         participation=gamma)  # fmt: skip
     if ns.csv:
         write_csv(ns.csv, "csv", [
             {"frequency": f, "srs": a, "baseline_srs": b}
@@ -547,11 +569,14 @@ def run_sweep(ns) -> None:
     dt = positive_float("dt", ns.dt, "s") if ns.dt else 1.0 / (2 * SAMPLES_PER_PERIOD * f2)
     from ..forced.loads.sweep_response import sweep_estimate
 
+    gamma = base_participation(ns) if kind != "force" else 1.0
+    # the harmonic engines take Γφ = 1: a reduction driven otherwise has no steady curve yet
+    steady = not ns.no_steady and gamma == 1.0
     announce(ns, sweep_estimate(system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=e,
-                                law=ns.law, kind=kind), "rate",
-             "" if ns.no_steady else ", and then the steady curve")  # fmt: skip
+                                law=ns.law, kind=kind, participation=gamma), "rate",
+             ", and then the steady curve" if steady else "")  # fmt: skip
     out = sweep_response(system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=e,
-                         law=ns.law, kind=kind, steady=not ns.no_steady)  # fmt: skip
+                         law=ns.law, kind=kind, steady=steady, participation=gamma)  # fmt: skip
     if ns.csv:
         rows = []
         for name, d in (("up", out.up), ("down", out.down)):
@@ -571,6 +596,12 @@ def run_sweep(ns) -> None:
         f"{d[name]['baseline_peak_frequency']:.4g} Hz"
         for name in ("up", "down")
     ]
+    if not ns.no_steady and not steady:
+        lines.append(
+            f"steady (frf): not drawn for a mode its supports drive by Γφ = {gamma:.4g} (the "
+            "harmonic engines take 1); the whole structure's frf with a 'base' in its file "
+            "gives it"
+        )
     if out.steady is not None:
         c = out.steady
         lines.append(

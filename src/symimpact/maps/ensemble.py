@@ -55,6 +55,7 @@ class _EnsembleBase:
     settle: float
     kind: str
     chatter: float
+    participation: float = 1.0
 
 
 def _psd(base: _EnsembleBase) -> float | Callable[[np.ndarray], np.ndarray]:
@@ -73,7 +74,7 @@ def _ensemble_chunk(payload: tuple[_EnsembleBase, tuple[str, ...], list[int], np
     for run in runs:
         r = realisation(base.system, _psd(base), base.band, base.duration, base.dt, base.seed,
                         int(run), e=base.e, settle=base.settle, kind=base.kind, welch=False,
-                        chatter=base.chatter)  # fmt: skip
+                        chatter=base.chatter, participation=base.participation)  # fmt: skip
         row: dict[str, Any] = {"run": int(run), "realisation": float(run)}
         row.update({f"rms_{k}": r["rms"][k] for k in KEYS})
         row.update({f"baseline_rms_{k}": r["baseline"][k] for k in KEYS})
@@ -110,6 +111,7 @@ def random_ensemble(
     settle: Any = None,
     kind: str = "force",
     chatter: Any = CHATTER,
+    participation: Any = 1.0,
     executor: str | None = None,
     workers: int | None = None,
     client: Any = None,
@@ -146,7 +148,8 @@ def random_ensemble(
     else:
         table_psd = checks.bounded("psd", psd, 0.0)
     base = _EnsembleBase(system, table_psd, (lo, hi), T, dt, seed, e, settle, kind,
-                         checks.bounded("chatter", chatter, 0.0))  # fmt: skip
+                         checks.bounded("chatter", chatter, 0.0),
+                         checks.bounded("participation", participation))  # fmt: skip
     # the first realisation here: bad input fails in one line before any worker starts
     first = _ensemble_chunk((base, ("realisation",), [0], np.zeros((1, 1))))
     points = MapPoints(("realisation",), np.arange(n, dtype=float).reshape(-1, 1))
@@ -156,6 +159,8 @@ def random_ensemble(
         settings = {"psd": str(table_psd), "band": f"{lo!r}:{hi!r}", "duration": T, "dt": dt,
                     "seed": seed, "e": contact_setting(e), "settle": settle, "kind": kind,
                     "chatter": base.chatter}  # fmt: skip
+        if base.participation != 1.0:  # (absent at 1: files written before it still resume)
+            settings["participation"] = base.participation
         store = MapStore(out, system=system, points=points, settings=settings, force=force,
                          outputs=ENSEMBLE_OUTPUTS, table=ensemble_table)  # fmt: skip
     try:

@@ -11,7 +11,8 @@ straight line in the primary's equation (relative to the base under a base accel
 
     m ÿ = −m·g − s·F(δ, δ̇),  M ẍ = p − K x − C ẋ + s·F(δ, δ̇),
 
-with p the force and g = 0, or p = −M·a_b and g = a_b.  Its steps end at the record's samples
+with p the force and g = 0, or p = −Γ·M·a_b and g = a_b (Γ the primary's participation in the
+base's motion, :data:`~symimpact.forced.engine._record_rigid.P_GAMMA`).  Its steps end at the record's samples
 (the load has a kink there) and the contact ends where δ returns to 0, located by re-stepping
 from the step's start (Illinois regula falsi).  The load's work, C's dissipation and the
 contact's damping are integrated with the motion, so the energy ledger closes.
@@ -48,10 +49,11 @@ def _rhs(code, q, chi, p, side, q0, qd, s, w, out):
     delta = side * (y - x) - h
     dd = side * (u - v)
     F, _, _, damp = _cp._force(code, q, chi, delta, dd)
-    if p[_rr.P_BASE] != 0.0:
-        out[1] = (-M * load - K * x - C * v + side * F) / M
+    if p[_rr.P_BASE] != 0.0:  # the primary's inertia load −Γ·M·a_b (Γ its participation)
+        GM = p[_rr.P_GAMMA] * M
+        out[1] = (-GM * load - K * x - C * v + side * F) / M
         out[3] = -load - side * F / m
-        out[4] = -load * (M * v + m * u)
+        out[4] = -load * (GM * v + m * u)
     else:
         out[1] = (load - K * x - C * v + side * F) / M
         out[3] = -side * F / m

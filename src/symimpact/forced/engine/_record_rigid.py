@@ -30,8 +30,10 @@ acceleration scale, so that a tangency touched by rounding does not release and 
 for ever (certified as above with |d²ẍ_abs/dτ²| ≤ ω_n⁴R of the pair).
 
 *Energy ledger.*  E = ½Mẋ² + ½Kx² + ½mẏ² (velocities relative to the base) changes by the load's
-work — ∫p·ẋ dt for a force p, −∫a_b·(Mẋ + mẏ) dt for a base acceleration (the inertial load in
-the base's frame) — less C's dissipation ∫Cẋ² dt and the impacts' losses; the integrals by 8-point
+work — ∫p·ẋ dt for a force p, −∫a_b·(ΓMẋ + mẏ) dt for a base acceleration (the inertial load in
+the base's frame; Γ the primary's participation in the base's motion, 1 for a primary whose
+spring and damper attach to the base, Γᵢφᵢ(a) for mode i of a structure seen at the point a,
+Eq. F7) — less C's dissipation ∫Cẋ² dt and the impacts' losses; the integrals by 8-point
 Gauss–Legendre on sub-pieces of at most 1/16 of the natural period (the integrands are smooth
 there).
 
@@ -53,9 +55,11 @@ from ._rigid import restitution
 
 # parameter vector layout: masses [kg], K [N/m], C [N s/m], half clearance [m], e, chatter
 # threshold [natural periods], 1.0 for a base-acceleration record (0.0: a force), the yield
-# speed of a restitution that follows the impact speed [m/s] (0: the constant e)
-P_M, P_m, P_K, P_C, P_h, P_e, P_CHAT, P_BASE, P_VY = range(9)
-N_PARAMS = 9
+# speed of a restitution that follows the impact speed [m/s] (0: the constant e), and the
+# primary's participation Γ in the base's motion (1: its spring and damper attach to the base;
+# a structure's mode i at the point a: Γᵢφᵢ(a), Eq. F7)
+P_M, P_m, P_K, P_C, P_h, P_e, P_CHAT, P_BASE, P_VY, P_GAMMA = range(10)
+N_PARAMS = 10
 # event-log columns: time [s], side (±1), approach speed [m/s], energy lost [J], kind
 E_T, E_SIDE, E_VREL, E_LOST, E_KIND = range(5)
 N_EVENT_COLS = 5
@@ -72,9 +76,12 @@ _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
 @njit(cache=True)
 def _loads(p, mu, q0, qd):
     """(p0, ṗ, g0, ġ): the load on the moving mass ``mu`` and the impact mass's acceleration
-    relative to the base, at the piece's start and their slopes, for the record's line q0 + qd·τ."""
+    relative to the base, at the piece's start and their slopes, for the record's line q0 + qd·τ.
+    Under a base acceleration a_b the primary's inertia load is −Γ·M·a_b, the impact mass's
+    −m·a_b (riding: −(Γ·M + m)·a_b = −(mu + (Γ − 1)·M)·a_b, exactly −mu·a_b for Γ = 1)."""
     if p[P_BASE] != 0.0:
-        return -mu * q0, -mu * qd, -q0, -qd
+        inertia = mu + (p[P_GAMMA] - 1.0) * p[P_M]
+        return -inertia * q0, -inertia * qd, -q0, -qd
     return q0, qd, 0.0, 0.0
 
 
@@ -249,9 +256,11 @@ def _account(p, mu, stuck, p0, pd, g0, gd, x0, v0, u0, L, ledger):
             s = (i + 0.5 * (1.0 + _GL_X[j])) * hs
             _, v = _ramp(s, mu, K, C, p0, pd, x0, v0)
             wq = 0.5 * hs * _GL_W[j]
-            if base:  # a_b = −(g0 + ġ·s); momentum of the pair relative to the base
+            if base:  # a_b = −(g0 + ġ·s); the base-driven momentum relative to the base
                 momentum = (
-                    mu * v if stuck else p[P_M] * v + p[P_m] * (u0 + g0 * s + 0.5 * gd * s * s)
+                    (mu + (p[P_GAMMA] - 1.0) * p[P_M]) * v
+                    if stuck
+                    else p[P_GAMMA] * p[P_M] * v + p[P_m] * (u0 + g0 * s + 0.5 * gd * s * s)
                 )
                 ledger[0] += wq * (g0 + gd * s) * momentum
             else:

@@ -30,6 +30,7 @@ from scipy import signal, stats
 
 from ...errors import ParameterError
 from ...model import checks
+from ...model.structure import Structure
 from ...model.system import ImpactSystem
 from ...model.units import positive_float
 from ..contact_law import restitution_or_law
@@ -157,6 +158,61 @@ def _settle(system: ImpactSystem, settle: Any) -> float:
     return checks.bounded("settle", settle, 0.0, unit="s")
 
 
+def modal_random_rms(
+    structure: Structure,
+    point: str,
+    psd: float | Callable[[np.ndarray], np.ndarray],
+    band: tuple[Any, Any],
+    modes: Any = None,
+) -> dict[str, float]:
+    """The RMS of the bare ``structure``'s response at ``point`` to a stationary base
+    acceleration of one-sided PSD ``psd`` [(m/s²)²/Hz, a constant or a function of f in Hz] over
+    ``band`` (f₁, f₂) [Hz], in closed form: σ² = ∫|H(f)|²S(f) df, with T(Ω) the base
+    transmissibility (Eq. F7 in the frequency domain, each mode with its participation Γᵢ:
+    :meth:`~symimpact.model.structure.Structure.base_transmissibility`) and H = (T − 1)/Ω² for
+    the displacement relative to the supports [m], (T − 1)/Ω for its velocity [m/s] and T for
+    the absolute acceleration [m/s²].  ``modes``: the mode numbers kept (default all), e.g.
+    ``(1,)`` for what a one-mode reduction of mode 1 describes.  The integral by adaptive
+    Gauss–Kronrod with the natural frequencies in the band as break points (relative error
+    1e-10)."""
+    from dataclasses import replace
+
+    from scipy.integrate import quad
+
+    checks.instance("structure", structure, Structure, "a Structure")
+    point = structure._point(point)
+    lo, hi = checks.bounds("band", band, "Hz")
+    if lo <= 0.0:
+        raise ParameterError("band", f"must start above 0 Hz, got {lo:g}")
+    kept = structure.modes if modes is None else tuple(
+        m for m in structure.modes if m.number in {int(k) for k in modes}
+    )  # fmt: skip
+    if not kept:
+        raise ParameterError("modes", f"no mode {tuple(modes)} in the structure")
+    one = replace(structure, modes=kept)
+
+    def level(f: float) -> float:
+        return float(np.asarray(psd(np.array([f])))[0]) if callable(psd) else float(psd)
+
+    gains = {
+        "displacement": lambda W, T: abs(T - 1.0) / (W * W),
+        "velocity": lambda W, T: abs(T - 1.0) / W,
+        "acceleration": lambda W, T: abs(T),
+    }
+    breaks = [m.frequency for m in kept if lo < m.frequency < hi]
+    out = {}
+    for key, gain in gains.items():
+
+        def integrand(f: float, gain=gain) -> float:
+            W = 2.0 * math.pi * f
+            return gain(W, complex(one.base_transmissibility(point, W))) ** 2 * level(f)
+
+        value = quad(integrand, lo, hi, points=breaks or None, epsabs=0.0, epsrel=1e-10,
+                     limit=2000)[0]  # fmt: skip
+        out[key] = math.sqrt(value)
+    return out
+
+
 def realisation_record(
     psd: float | Callable[[np.ndarray], np.ndarray],
     band: tuple[Any, Any],
@@ -190,6 +246,7 @@ def ensemble_estimate(
     segment: Any = None,
     welch: bool = True,
     chatter: Any = CHATTER,
+    participation: Any = 1.0,
 ) -> Estimate:
     """The time an ensemble of ``realisations`` takes on this machine, from a piece of the
     first realisation (:func:`~symimpact.forced.loads.record_cost.record_estimate`), with the time
@@ -201,9 +258,10 @@ def ensemble_estimate(
     start = time.perf_counter()
     record = realisation_record(psd, band, duration, dt, seed, 0, settle=settle, kind=kind)
     drawn = time.perf_counter() - start
-    runs = record_estimate(system, record, n, e=restitution_or_law(e), chatter=chatter)
+    runs = record_estimate(system, record, n, e=restitution_or_law(e), chatter=chatter,
+                           participation=participation)  # fmt: skip
     # the statistics of a realisation, timed on the primary's response (as long as the damper's)
-    alone = primary_response(system, record)
+    alone = primary_response(system, record, participation=participation)
     start = time.perf_counter()
     _statistics(alone, alone, np.empty(0), settle, dt, duration, segment, welch)
     return runs.plus(n * (drawn + time.perf_counter() - start))
@@ -224,12 +282,14 @@ def realisation(
     segment: float | None = None,
     chatter: float = CHATTER,
     welch: bool = True,
+    participation: float = 1.0,
 ) -> dict[str, Any]:
     """One realisation: {"rms": {key: value}, "baseline": {key: value}, "impacts": n,
-    "psd": (f, with, without)} over the record after ``settle`` (no "psd" without ``welch``)."""
+    "psd": (f, with, without)} over the record after ``settle`` (no "psd" without ``welch``);
+    ``participation``: Γ of the primary in a base record (:func:`damper_response`)."""
     record = realisation_record(psd, band, duration, dt, seed, i, settle=settle, kind=kind)
-    ours = damper_response(system, record, e=e, chatter=chatter)
-    alone = primary_response(system, record)
+    ours = damper_response(system, record, e=e, chatter=chatter, participation=participation)
+    alone = primary_response(system, record, participation=participation)
     return _statistics(ours, alone, ours.impact_times, settle, dt, duration, segment, welch)
 
 
@@ -270,13 +330,16 @@ def random_statistics(
     kind: str = "force",
     segment: Any = None,
     chatter: Any = CHATTER,
+    participation: Any = 1.0,
 ) -> RandomStatistics:
     """Statistics of ``realisations`` runs of ``duration`` [s] each (after ``settle`` [s], by
     default :func:`default_settle`) under band-limited random loads of one-sided PSD ``psd``
     [N²/Hz for a force, (m/s²)²/Hz for a base acceleration] over ``band`` (f₁, f₂) [Hz], sampled
     every ``dt`` [s]; rigid impacts with ``e`` (Eq. F2), or the compliant law ``e`` names (a
     :class:`~symimpact.forced.contact_law.CompliantContact`), the flight Eq. F8.  ``segment`` [s]:
-    Welch's segment length (default an eighth of ``duration``)."""
+    Welch's segment length (default an eighth of ``duration``).  ``participation``: Γ, the
+    primary's participation in a base record (1 for a primary on its base; Γᵢφᵢ(a) for mode i
+    of a structure reduced to its point a, Eq. F7; :func:`damper_response`)."""
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
     T = positive_float("duration", duration, "s")
     dt = positive_float("dt", dt, "s")
@@ -285,11 +348,12 @@ def random_statistics(
     e = restitution_or_law(e)
     settle = _settle(system, settle)
     seg = None if segment is None else positive_float("segment", segment, "s")
+    gamma = checks.bounded("participation", participation)
     if seg is not None and seg > T:
         raise ParameterError("segment", f"must fit in the duration, {T:g} s, got {seg:g} s")
     runs = [
         realisation(system, psd, band, T, dt, seed, i, e=e, settle=settle, kind=kind,
-                    segment=seg, chatter=chatter)
+                    segment=seg, chatter=chatter, participation=gamma)
         for i in range(n)
     ]  # fmt: skip
     return combine(runs, seed=seed, settle=settle, duration=T)

@@ -71,7 +71,7 @@ def duration_text(seconds: float) -> str:
 
 
 def _piece_times(
-    system: ImpactSystem, record: Record, first: int, e: Any, chatter: Any
+    system: ImpactSystem, record: Record, first: int, e: Any, chatter: Any, gamma: float = 1.0
 ) -> tuple[float, float, int]:
     """(seconds with the damper and without, seconds without, intervals) of the piece of
     ``record`` from sample ``first``: :data:`PIECE_SAMPLES` samples, or fewer where they take
@@ -87,9 +87,9 @@ def _piece_times(
         piece = Record(record.values[first : first + n], record.dt, record.kind)
         with install_recorder("numba:compile") as compiled:
             start = time.perf_counter()
-            damper_response(system, piece, e=e, chatter=chatter)
+            damper_response(system, piece, e=e, chatter=chatter, participation=gamma)
             middle = time.perf_counter()
-            primary_response(system, piece)
+            primary_response(system, piece, participation=gamma)
             end = time.perf_counter()
         if compiled.buffer:  # a path first met here compiled (a contact's force): not timed
             continue
@@ -107,19 +107,22 @@ def record_estimate(
     marches: int = 0,
     chatter: Any = CHATTER,
     starts: tuple[int, ...] = (0,),
+    participation: Any = 1.0,
 ) -> Estimate:
     """The time of ``runs`` runs of records as long as ``record`` — each with the damper
     (:func:`damper_response`, rigid impacts ``e`` or a compliant law) and without it
     (:func:`primary_response`), and ``marches`` more marches of a linear oscillator over it (an
     SRS's oscillators) — from the time of pieces of ``record`` on this machine, each from rest
     at one of the samples ``starts``: the cheapest and the costliest piece's time a sample,
-    times the samples (``seconds`` and ``high``)."""
+    times the samples (``seconds`` and ``high``); ``participation`` as for
+    :func:`damper_response`."""
     piece = Record(record.values[:3], record.dt, record.kind)
-    damper_response(system, piece, e=e, chatter=chatter)  # compiles the engines, untimed
-    primary_response(system, piece)
+    # compiles the engines, untimed
+    damper_response(system, piece, e=e, chatter=chatter, participation=participation)
+    primary_response(system, piece, participation=participation)
     rates, timed = [], 0
     for first in sorted({min(max(0, int(k)), len(record.values) - 2) for k in starts}):
-        both, alone, intervals = _piece_times(system, record, first, e, chatter)
+        both, alone, intervals = _piece_times(system, record, first, e, chatter, participation)
         rates.append((both + marches * alone) / intervals)  # seconds a sample
         timed += intervals
     work = runs * (len(record.values) - 1)

@@ -21,7 +21,7 @@ from ...errors import ParameterError
 from ...generated import sampled_load as _sl
 from ...model import checks
 from ...model.system import ImpactSystem
-from .records import Record
+from .records import Record, record_participation
 
 _ramp_state = njit(cache=True)(_sl.ramp_state_scalar)
 
@@ -53,23 +53,30 @@ class RecordResponse:
 
 
 def primary_response(
-    system: ImpactSystem, record: Record, x0: Any = 0.0, xdot0: Any = 0.0
-) -> RecordResponse:
+    system: ImpactSystem, record: Record, x0: Any = 0.0, xdot0: Any = 0.0,
+    participation: Any = 1.0,
+) -> RecordResponse:  # fmt: skip
     """The primary of ``system`` (M, K, C; the damper left out) under ``record``, from x0 [m],
     ẋ0 [m/s] at t = 0: Eq. F8 on each interval.  A force record p drives M ẍ + C ẋ + K x = p; a
-    base acceleration a_b drives the displacement relative to the base with p = −M·a_b."""
+    base acceleration a_b drives the displacement relative to the base with p = −Γ·M·a_b, Γ the
+    ``participation`` (1 for a primary on its base; Γᵢφᵢ(a) for mode i of a structure reduced
+    to its point a, Eq. F7), and the absolute acceleration is ẍ + a_b."""
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
     checks.instance("record", record, Record, "a Record (symimpact.forced.loads.records)")
     x0 = checks.bounded("x0", x0, unit="m")
     v0 = checks.bounded("xdot0", xdot0, unit="m/s")
+    gamma = record_participation(record, participation)
     if system.C >= 2.0 * math.sqrt(system.K * system.M):
         raise ParameterError("system", "Eq. F8 is written for an underdamped primary (ζ < 1)")
     M, K, C = system.M, system.K, system.C
     base = record.kind == "base-acceleration"
-    p = -M * record.values if base else record.values
+    p = -(gamma * M) * record.values if base else record.values
     x, v = _march(M, K, C, np.ascontiguousarray(p, dtype=float), record.dt, x0, v0)
     force = K * x + C * v
-    acceleration = -force / M if base else (record.values - force) / M
+    if base:
+        acceleration = -force / M + (1.0 - gamma) * record.values
+    else:
+        acceleration = (record.values - force) / M
     return RecordResponse(record.times, x, v, acceleration, force)
 
 

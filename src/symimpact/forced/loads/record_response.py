@@ -24,7 +24,7 @@ from ..engine import _compliant as _cp
 from ..engine import _record_compliant as _rc
 from ..engine import _record_rigid as _rr
 from ..simulation import CHATTER, contact_arguments
-from .records import Record
+from .records import Record, record_participation
 
 
 @dataclass(frozen=True)
@@ -69,6 +69,7 @@ def damper_response(
     ydot0: Any = 0.0,
     chatter: Any = CHATTER,
     max_events: Any = 20_000_000,
+    participation: Any = 1.0,
 ) -> DamperRecordResponse:
     """The primary of ``system`` (M, K, C) with its impact mass m in a clearance d, under
     ``record`` (a force on the main mass [N], or the base's acceleration [m/s²]), rigid impacts
@@ -98,12 +99,13 @@ def damper_response(
         )
     chatter = checks.bounded("chatter", chatter, 0.0)
     max_events = checks.whole_number("max_events", max_events, 1)
+    gamma = record_participation(record, participation)
     if len(record.values) < 2:
         raise ParameterError("record", "needs at least two samples")
     M, m, K, C = system.M, system.m, system.K, system.C
     base = record.kind == "base-acceleration"
     e_const, yield_speed = restitution_parameters(e)
-    p = np.array([M, m, K, C, h, e_const, chatter, 1.0 if base else 0.0, yield_speed])
+    p = np.array([M, m, K, C, h, e_const, chatter, 1.0 if base else 0.0, yield_speed, gamma])
     q = np.ascontiguousarray(record.values, dtype=float)
     s0 = np.array([state[0], state[1], state[2] - state[0], state[3]])
     potential = [0.0, 0.0]  # the contact's elastic energy at the start and the end
@@ -135,7 +137,7 @@ def damper_response(
     stuck = stuck.astype(bool)
     mass = np.where(stuck, M + m, M)
     force = K * x + C * v
-    acceleration = -force / mass if base else (q - force) / mass
+    acceleration = -force / mass + (1.0 - gamma) * M / mass * q if base else (q - force) / mass
     if contact != "rigid":  # at samples inside a contact its force acts on the primary too
         code, c = _cp.CODES[contact], 0.0 if chi is None else float(chi)
         for i in np.flatnonzero(np.abs(z) > h):

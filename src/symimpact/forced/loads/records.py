@@ -338,3 +338,16 @@ def read_record(path: str | Any, kind: str | None = None) -> Record:
         raise ParameterError("record", f"samples must be equally spaced; intervals from "
                              f"{dts.min():g} to {dts.max():g} s")  # fmt: skip
     return Record(data[:, 1] * scale, dt, kind)
+
+
+def record_participation(record: Record, participation: Any) -> float:
+    """The participation Γ of the primary in the base's motion, checked: a finite number, other
+    than 1 only for a base record (a force on the primary has no participation to carry); see
+    :func:`~symimpact.forced.loads.record_response.damper_response`."""
+    gamma = checks.bounded("participation", participation)
+    if gamma != 1.0 and record.kind != "base-acceleration":
+        raise ParameterError(
+            "participation", f"is how the base's motion drives the primary; the record is a "
+            f"{record.kind}, not a base acceleration: leave it at 1"
+        )  # fmt: skip
+    return gamma

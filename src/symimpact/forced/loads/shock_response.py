@@ -181,7 +181,7 @@ class ShockResult:
 
 def shock_response(
     system: ImpactSystem, record: Record, *, e: Any, frequencies: Any,
-    zeta: Any = SRS_ZETA, chatter: Any = CHATTER,
+    zeta: Any = SRS_ZETA, chatter: Any = CHATTER, participation: Any = 1.0,
 ) -> ShockResult:  # fmt: skip
     """``record`` (a shock of :func:`~symimpact.forced.loads.records.shock_record`, or any record) on
     ``system`` with rigid impacts of restitution ``e`` (Eq. F2, flight Eq. F8; or the compliant
@@ -190,10 +190,12 @@ def shock_response(
     record and the residual response after it (the primary vibrating freely from its last
     sample, in closed form: :func:`residual_maximax`; exact once the damper no longer
     impacts, which a record followed by enough rest, :func:`~.loads.followed_by_rest`, gives).
-    After the last sample the load is 0."""
+    After the last sample the load is 0.  ``participation``: Γ of the primary in a base record
+    (:func:`~symimpact.forced.loads.record_response.damper_response`; a structure's mode reduced
+    to a point)."""
     srs_oscillators(frequencies, zeta, record.dt)  # refused before the runs, not after
-    ours = damper_response(system, record, e=e, chatter=chatter)
-    alone = primary_response(system, record)
+    ours = damper_response(system, record, e=e, chatter=chatter, participation=participation)
+    alone = primary_response(system, record, participation=participation)
     if record.kind == "base-acceleration":
         xb, vb = base_motion(record)
     else:

@@ -15,6 +15,8 @@ from typing import Any
 
 import numpy as np
 
+from ...errors import ParameterError
+from ...model import checks
 from ...model.system import ImpactSystem
 from ...model.units import positive_float
 from ..contact_law import restitution_or_law
@@ -223,6 +225,7 @@ class SweepResult:
 def sweep_estimate(
     system: ImpactSystem, amplitude: Any, f_low: Any, f_high: Any, rate: Any, dt: Any, *,
     e: Any, law: str = "linear", kind: str = "force", chatter: Any = CHATTER,
+    participation: Any = 1.0,
 ) -> Estimate:  # fmt: skip
     """The time of :func:`sweep_response`'s two sweeps (not its steady curve) on this machine:
     pieces of the sweep up from its start and from where it crosses the primary's natural
@@ -238,9 +241,10 @@ def sweep_estimate(
     # pieces from the start and from half a piece before the primary's natural frequency
     crossing = int(np.searchsorted(freq, system.omega_n / (2.0 * np.pi)))
     runs = record_estimate(system, record, 2, e=restitution_or_law(e), chatter=chatter,
-                           starts=(0, crossing - PIECE_SAMPLES // 2))  # fmt: skip
+                           starts=(0, crossing - PIECE_SAMPLES // 2),
+                           participation=participation)  # fmt: skip
     # the envelopes, timed on the primary's response (as long as the damper's)
-    alone = primary_response(system, record)
+    alone = primary_response(system, record, participation=participation)
     start = time.perf_counter()
     envelope(alone.displacement, freq, record.dt, alone.velocity, np.zeros(0))
     return runs.plus(2 * drawn + 4 * (time.perf_counter() - start))
@@ -249,14 +253,22 @@ def sweep_estimate(
 def sweep_response(
     system: ImpactSystem, amplitude: Any, f_low: Any, f_high: Any, rate: Any, dt: Any, *,
     e: Any, law: str = "linear", kind: str = "force", chatter: Any = CHATTER,
-    steady: bool = False,
+    steady: bool = False, participation: Any = 1.0,
 ) -> SweepResult:  # fmt: skip
     """Sweeps of ``amplitude`` [N, or m/s² for a base acceleration] from ``f_low`` to ``f_high``
     [Hz] and back down (two runs from rest), ``rate`` in Hz/s (``law`` "linear") or octaves a
     minute ("log"), sampled every ``dt`` [s]; rigid impacts with ``e`` (Eq. F2; the flight
     Eq. F8 on each interval of the record), or the compliant law of a
     :class:`~symimpact.forced.contact_law.CompliantContact`; with ``steady``, the steady curve of ``frf`` at the
-    same amplitude over the band beside them (:func:`steady_curve`)."""
+    same amplitude over the band beside them (:func:`steady_curve`).  ``participation``: Γ of
+    the primary in a base sweep (:func:`~symimpact.forced.loads.record_response.damper_response`);
+    the steady curve is drawn for Γ = 1 only (the harmonic engines do not carry Γ yet)."""
+    gamma = checks.bounded("participation", participation)
+    if steady and gamma != 1.0:
+        raise ParameterError(
+            "steady", f"the steady curve of a primary driven by its base with participation "
+            f"{gamma:g} is not drawn yet (the harmonic engines take 1): leave it out"
+        )  # fmt: skip
     f_low = positive_float("f_low", f_low, "Hz")
     f_high = positive_float("f_high", f_high, "Hz")
     rate = positive_float("rate", rate)
@@ -264,8 +276,8 @@ def sweep_response(
     for name, (fa, fb) in (("up", (f_low, f_high)), ("down", (f_high, f_low))):
         record = sweep_record(amplitude, fa, fb, rate, dt, law, kind)
         freq = sweep_frequency(record.times, fa, fb, rate, law)
-        ours = damper_response(system, record, e=e, chatter=chatter)
-        alone = primary_response(system, record)
+        ours = damper_response(system, record, e=e, chatter=chatter, participation=gamma)
+        alone = primary_response(system, record, participation=gamma)
         f, a = envelope(ours.displacement, freq, record.dt, ours.velocity, ours.impact_times)
         _, b = envelope(alone.displacement, freq, record.dt, alone.velocity)
         out[name] = {"frequency": f, "envelope": a, "baseline": b}
