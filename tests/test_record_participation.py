@@ -172,3 +172,24 @@ def test_the_modal_closed_form_is_the_textbook_white_noise_response():
     )
     with pytest.raises(ParameterError, match="band"):
         modal_random_rms(s, "a", G, (0, 50))
+
+
+def test_the_reductions_base_force_is_the_modes_base_shear():
+    """A structure's supports take Σ Γᵢ(Kᵢqᵢ + Cᵢq̇ᵢ) from its modes (the modal base shear,
+    Chopra's Vᵢ = Lᵢωᵢ²qᵢ with Lᵢ = ΓᵢMᵢ, and its damping part): the reduction's base force is
+    Γφ·(K·x + C·ẋ), x = φ·q, the same number to rounding (here from the modal coordinate of the
+    reduction's own run, q = x/φ)."""
+    beam = beam_structure("cantilever", 70e9, 3.125e-10, 2700.0, 1.5e-4, 0.5, {"tip": 0.5},
+                          modes=3, zeta=0.01)  # fmt: skip
+    mode = beam.modes[0]
+    phi = mode.shape["tip"]
+    M = mode.mass / phi**2
+    reduced = ImpactSystem(M=M, K=mode.omega**2 * M, C=2 * mode.zeta * mode.omega * M, m=0.005,
+                           gap=1e3, contact="linear", k1=1e6)  # fmt: skip
+    record = random_record(20.0, (5, 100), 1.0, 2e-4, seed=5, kind="base-acceleration")
+    gp = mode.participation * phi
+    alone = primary_response(reduced, record, participation=gp)
+    q, qd = alone.displacement / phi, alone.velocity / phi
+    Ki, Ci = mode.omega**2 * mode.mass, 2 * mode.zeta * mode.omega * mode.mass
+    shear = mode.participation * (Ki * q + Ci * qd)
+    assert np.allclose(alone.base_force, shear, rtol=1e-12, atol=1e-12 * np.abs(shear).max())

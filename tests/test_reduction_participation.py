@@ -143,8 +143,9 @@ def test_random_base_motion_on_a_reduction_carries_its_participation_and_shows_t
     mode1 = out["structure"]["baseline_rms_mode"]
     # mode 2 (51.5 Hz, in the band) adds 70 % to the tip's acceleration and 0.07 % to its
     # displacement (measured 34.26 against 20.17 m/s², 7.462 against 7.457 mm)
-    assert every["acceleration"] > 1.5 * mode1["acceleration"]
-    assert every["displacement"] == pytest.approx(mode1["displacement"], rel=0.01)
+    # (the figures docs/guide.md quotes: 70 % and 0.1 %)
+    assert every["acceleration"] / mode1["acceleration"] == pytest.approx(1.70, abs=0.005)
+    assert every["displacement"] / mode1["displacement"] == pytest.approx(1.001, abs=0.0005)
 
 
 def test_a_force_on_a_one_mode_reduction_runs(tmp_path, capsys):

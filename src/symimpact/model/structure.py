@@ -333,6 +333,46 @@ def _matrix(name: str, value: Any, base: Path) -> Any:
 LOADS = ("dampers", "stops", "force", "base")
 
 
+def section_properties(text: Any) -> tuple[float, float]:
+    """(A [m²], I [m⁴]) of a solid section as a designer names it: ``"50 mm x 10 mm"`` a
+    rectangle of width b by thickness h, h along the motion (A = bh, I = bh³/12), or
+    ``"round 20 mm"`` a solid circle of diameter d (A = πd²/4, I = πd⁴/64)."""
+    words = " ".join(str(text).replace("×", " x ").split())
+    if words.lower().startswith("round "):
+        d = positive_float("beam.section", words[6:], "m")
+        return math.pi * d * d / 4.0, math.pi * d**4 / 64.0
+    parts = [p.strip() for p in words.replace(" X ", " x ").split(" x ")]
+    if len(parts) != 2:
+        raise ParameterError(
+            "beam.section", f"must be 'width x thickness' (thickness along the motion, e.g. "
+            f"'50 mm x 10 mm') or 'round DIAMETER', got {text!r}"
+        )  # fmt: skip
+    b, h = (positive_float("beam.section", p, "m") for p in parts)
+    return b * h, b * h**3 / 12.0
+
+
+def _beam_spec(spec: dict) -> dict:
+    """A beam's parameters with ``material`` read as its E and ρ
+    (:func:`symimpact.model.materials.material`) and ``section`` as its A and I
+    (:func:`section_properties`); either may not be given beside what it replaces."""
+    out = dict(spec)
+    for key, replaces in (("material", ("E", "rho")), ("section", ("A", "I"))):
+        if key not in out:
+            continue
+        both = [k for k in replaces if k in out]
+        if both:
+            raise ParameterError(f"beam.{both[0]}", f"the {key} gives it: give {key} or "
+                                 f"{' and '.join(replaces)}, not both")  # fmt: skip
+        if key == "material":
+            from .materials import material
+
+            found = material(out.pop(key))
+            out["E"], out["rho"] = found.E, found.rho
+        else:
+            out["A"], out["I"] = section_properties(out.pop(key))
+    return out
+
+
 def structure_from_dict(data: Any, base: Path | None = None) -> Structure:
     """The structure a parsed structure file describes (see :func:`read_structure`)."""
     base = Path.cwd() if base is None else base
@@ -364,13 +404,17 @@ def structure_from_dict(data: Any, base: Path | None = None) -> Structure:
         size = len(spec["M"]) if isinstance(spec.get("M"), list) else None
         points = {str(d): d for d in range(size)} if size else None
     if kind == "beam":
-        known = {"type", "E", "I", "rho", "A", "L", "modes", "zeta", "points"}
+        known = {"type", "E", "I", "rho", "A", "L", "modes", "zeta", "points", "material",
+                 "section"}  # fmt: skip
         unknown = sorted(set(spec) - known)
         if unknown:
             raise ParameterError(f"beam.{unknown[0]}", f"is not a beam parameter ({sorted(known)})")
+        spec = _beam_spec(spec)
         missing = [k for k in ("type", "E", "I", "rho", "A", "L") if k not in spec]
         if missing:
-            raise ParameterError(f"beam.{missing[0]}", "is missing")
+            raise ParameterError(f"beam.{missing[0]}", "is missing (or give " + {
+                "E": "its material", "rho": "its material", "I": "its section",
+                "A": "its section"}.get(missing[0], "it") + ")")  # fmt: skip
         return beam_structure(spec["type"], spec["E"], spec["I"], spec["rho"], spec["A"],
                               spec["L"], points, spec.get("modes", 3),
                               spec.get("zeta", 0.0))  # fmt: skip

@@ -43,7 +43,9 @@ class RecordResponse:
     """The primary alone under a record, at its samples (SI): ``displacement`` x [m] (relative to
     the base under a base acceleration), ``velocity`` [m/s] likewise, ``acceleration`` [m/s²]
     the main mass's absolute acceleration, ``base_force`` [N] the force the spring and damper
-    put into the base (K·x + C·ẋ, x relative to the base)."""
+    put into the base (K·x + C·ẋ, x relative to the base; Γ times it for a structure's mode
+    reduced to a point with participation Γ = Γᵢφᵢ(a): the mode's share of the supports'
+    reaction, Γᵢ·Kᵢqᵢ + Γᵢ·Cᵢq̇ᵢ, its base shear)."""
 
     times: np.ndarray
     displacement: np.ndarray
@@ -77,7 +79,7 @@ def primary_response(
         acceleration = -force / M + (1.0 - gamma) * record.values
     else:
         acceleration = (record.values - force) / M
-    return RecordResponse(record.times, x, v, acceleration, force)
+    return RecordResponse(record.times, x, v, acceleration, gamma * force)  # 1.0·x is x
 
 
 def srs(record: Record, frequencies: Any, zeta: Any = 0.05) -> np.ndarray:

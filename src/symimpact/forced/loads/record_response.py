@@ -34,7 +34,8 @@ class DamperRecordResponse:
     ``displacement`` x [m] and ``velocity`` [m/s] of the main mass (relative to the base under a
     base acceleration), ``acceleration`` its absolute acceleration between impacts [m/s²] (the
     impacts' impulses are instants, not samples), ``base_force`` K·x + C·ẋ [N], the force the
-    spring and damper put into the base; ``damper_displacement`` y and ``damper_velocity`` of
+    spring and damper put into the base (Γ times it for a structure's mode reduced to a point,
+    :func:`~symimpact.forced.loads.record_flight.primary_response`); ``damper_displacement`` y and ``damper_velocity`` of
     the impact mass (same frame), ``stuck`` True where the two move together; ``impact_times``
     [s], ``impact_speeds`` (approach speed [m/s]) and ``impact_sides`` (±1) of every impact;
     ``ledger``: the load's work, C's dissipation and the impacts' loss [J], the energy at the
@@ -158,7 +159,7 @@ def damper_response(
         displacement=x,
         velocity=v,
         acceleration=acceleration,
-        base_force=force,
+        base_force=gamma * force,  # (1.0·x is x to the bit)
         damper_displacement=x + z,
         damper_velocity=u,
         stuck=stuck,
