@@ -80,8 +80,7 @@ def test_harmonic_base_motion_on_a_one_mode_reduction_is_refused_with_its_partic
     "command",
     [
         ["shock", "--e", "0.6", "--base-peak", "20 g", "--pulse", "11 ms"],
-        ["sweep-sine", "--e", "0.6", "--base-amplitude", "0.5 g", "--band", "10:20", "--rate",
-         "2"],
+        ["sweep-sine", "--e", "0.6", "--base-amplitude", "0.5 g", "--band", "10:20", "--rate", "2"],
     ],
     ids=["shock", "sweep-sine"],
 )
