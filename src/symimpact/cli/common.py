@@ -324,7 +324,7 @@ def _structure_mode(ns: argparse.Namespace, given: set[str]) -> None:
     ns.M = mode.mass / phi**2
     ns.K = mode.omega**2 * ns.M
     ns.zeta, ns.C = mode.zeta, None
-    ns.reduced_base = (mode.participation * phi, i, at)  # for refuse_reduced_base
+    ns.reduced_base = (mode.participation * phi, i, at)  # for base_participation
     ns.reduced_structure = s  # for the whole structure's closed forms beside the reduction
     print(f"symimpact {ns.command}: the primary is mode {i} ({mode.frequency:.5g} Hz, ζ "
           f"{mode.zeta:.4g}) of the {s.source} model at {at!r}: M {ns.M:.6g} kg, K {ns.K:.6g} "
@@ -332,9 +332,12 @@ def _structure_mode(ns: argparse.Namespace, given: set[str]) -> None:
 
 
 def base_participation(ns: argparse.Namespace) -> float:
-    """Γφ(a) of a one-mode reduction (:func:`_structure_mode`) under a sampled base load, which
-    the record engines carry (Eq. F7 at the point a: M·ẍ + C·ẋ + K·x = −M·Γφ(a)·ẍ_b, the
-    damper's mass −m·ẍ_b); stated on stderr where it is not 1.  1 for a primary on its base."""
+    """Γφ(a) of a one-mode reduction (:func:`_structure_mode`) under base motion (Eq. F7 at the
+    point a: M·ẍ + C·ẋ + K·x = −M·Γφ(a)·ẍ_b, the damper's mass −m·ẍ_b, where a primary on its
+    base takes 1: a cantilever's first mode at its tip has 1.566, and runs had been 36 % low in
+    displacement without a word), which the record engines carry and a harmonic forcing's
+    ``inertia`` (Γφ − 1)·M (:class:`~symimpact.forced.Forcing`); stated on stderr where it is
+    not 1.  1 for a primary on its base."""
     reduced = getattr(ns, "reduced_base", None)
     if reduced is None:
         return 1.0
@@ -344,30 +347,6 @@ def base_participation(ns: argparse.Namespace) -> float:
               f"participation Γφ = {gp:.4g} (Eq. F7): its load is −Γφ·M·a_b, the damper's "
               "−m·a_b", file=sys.stderr)  # fmt: skip
     return gp
-
-
-def refuse_reduced_base(ns: argparse.Namespace, flag: str) -> None:
-    """Refuse a harmonic base load (``flag``, the option the user gave) on a one-mode reduction
-    (:func:`_structure_mode`) whose mode the supports drive by Γφ ≠ 1 (Eq. F7: under base motion
-    the mode's equation at the point a is M·ẍ + C·ẋ + K·x = −M·Γφ(a)·ẍ_b, where the harmonic
-    engines' one-mode primary takes Γφ = 1): a cantilever's first mode at its tip has
-    Γφ = 1.566, and the run had been 36 % low in displacement without a word.  A structure
-    file's 'base' carries every mode's Γ; a sampled base load carries Γφ
-    (:func:`base_participation`)."""
-    reduced = getattr(ns, "reduced_base", None)
-    if reduced is None:
-        return
-    gp, i, at = reduced
-    if abs(gp - 1.0) <= 1e-9:
-        return
-    from ..errors import ParameterError
-
-    raise ParameterError(
-        flag, f"moves the supports, which drive mode {i} at {at!r} by its participation Γφ = "
-        f"{gp:.4g}; the one-mode primary of --mode takes 1 (its response would be off by the "
-        f"factor {gp:.4g}): give a force on the primary, or the whole structure with its "
-        "dampers and a 'base' (a --structure file, without --mode)",
-    )  # fmt: skip
 
 
 def _material_restitution(ns: argparse.Namespace, body: Any, cavity: str, said: list) -> None:
@@ -583,9 +562,11 @@ def forcing_of(ns: argparse.Namespace, **frequency: Any):
     from ..errors import ParameterError
     from ..forced import Forcing
 
-    for key, flag in (("X_b", "base"), ("V_b", "base-vel"), ("A_b", "base-acc")):
-        if getattr(ns, key, None) is not None:
-            refuse_reduced_base(ns, flag)
+    inertia = 0.0
+    if any(getattr(ns, k, None) is not None for k in ("X_b", "V_b", "A_b")):
+        # a mode reduced to a point, driven by its supports with Γφ: (Γφ − 1)·M more inertia
+        if getattr(ns, "reduced_base", None) is not None:
+            inertia = (base_participation(ns) - 1.0) * ns.M
     try:
         base = {k: getattr(ns, k) for k in ("V_b", "A_b") if getattr(ns, k, None) is not None}
         return Forcing(
@@ -593,6 +574,7 @@ def forcing_of(ns: argparse.Namespace, **frequency: Any):
             X_b=0.0 if ns.X_b is None else ns.X_b,
             **base,
             **frequency,
+            inertia=inertia,
         )
     except ParameterError as exc:
         flag = {"F0": "force", "X_b": "base", "V_b": "base-vel", "A_b": "base-acc"}.get(

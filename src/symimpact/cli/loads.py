@@ -570,8 +570,7 @@ def run_sweep(ns) -> None:
     from ..forced.loads.sweep_response import sweep_estimate
 
     gamma = base_participation(ns) if kind != "force" else 1.0
-    # the harmonic engines take Γφ = 1: a reduction driven otherwise has no steady curve yet
-    steady = not ns.no_steady and gamma == 1.0
+    steady = not ns.no_steady
     announce(ns, sweep_estimate(system, _height(ns, kind, text), f1, f2, ns.rate, dt, e=e,
                                 law=ns.law, kind=kind, participation=gamma), "rate",
              ", and then the steady curve" if steady else "")  # fmt: skip
@@ -596,12 +595,6 @@ def run_sweep(ns) -> None:
         f"{d[name]['baseline_peak_frequency']:.4g} Hz"
         for name in ("up", "down")
     ]
-    if not ns.no_steady and not steady:
-        lines.append(
-            f"steady (frf): not drawn for a mode its supports drive by Γφ = {gamma:.4g} (the "
-            "harmonic engines take 1); the whole structure's frf with a 'base' in its file "
-            "gives it"
-        )
     if out.steady is not None:
         c = out.steady
         lines.append(

@@ -25,6 +25,13 @@ class Forcing:
     reads g as the standard gravity 9.80665 m/s²), which :meth:`at` keeps over a band.
     ``omega`` [rad/s]: forcing frequency Ω, or ``freq`` [Hz] instead (Ω = 2πf).  ``phase``
     [rad]: φ, the forcing phase at t = 0.
+
+    ``inertia`` [kg]: (Γ − 1)·M for a structure's mode reduced to a point, which the supports
+    drive by Γ = Γᵢφᵢ(a) (Eq. F7: M·ẍ_r + C·ẋ_r + K·x_r = −Γ·M·ẍ_b relative to them), where a
+    primary on its base takes Γ = 1.  In the absolute x = x_r + x_b of Eq. F1 that is
+    M·ẍ + C·(ẋ − ẋ_b) + K·(x − x_b) = F0·cos θ − (Γ − 1)·M·ẍ_b, a force in phase with the base's
+    displacement: :attr:`primary_force` F0 + (Γ − 1)·M·Ω²·X_b is the force amplitude the
+    engines and closed forms take; ``F0`` stays the force applied to the primary.
     """
 
     F0: Any = 0.0
@@ -34,6 +41,7 @@ class Forcing:
     phase: Any = 0.0
     V_b: Any = None
     A_b: Any = None
+    inertia: Any = 0.0
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
@@ -50,6 +58,7 @@ class Forcing:
         set_(self, "F0", si_float("F0", self.F0))
         set_(self, "X_b", si_float("X_b", self.X_b))
         set_(self, "phase", si_float("phase", self.phase))
+        set_(self, "inertia", si_float("inertia", self.inertia, "kg"))
         given = [k for k in ("V_b", "A_b") if getattr(self, k) is not None]
         if given:
             if len(given) > 1 or self.X_b != 0.0:
@@ -68,6 +77,21 @@ class Forcing:
             return self.A_b / (omega * omega)
         return self.X_b + 0.0 * omega
 
+    def force_amplitude(self, omega: Any) -> Any:
+        """F0 + inertia·Ω²·X_b(Ω) [N] at the frequencies ``omega`` [rad/s]: the force amplitude on
+        the primary, in phase with the base's displacement, that Eq. F1 takes (``inertia``: see
+        the class)."""
+        if self.inertia == 0.0:
+            return self.F0 + 0.0 * omega
+        return self.F0 + self.inertia * omega * omega * self.base_amplitude(omega)
+
+    @property
+    def primary_force(self) -> float:
+        """:meth:`force_amplitude` at this forcing's Ω [N]: F0 itself for a primary on its base."""
+        if self.inertia == 0.0:
+            return self.F0
+        return self.F0 + self.inertia * self.omega * self.omega * self.X_b
+
     def at(self, omega: float, phase: float | None = None) -> Forcing:
         """The same forcing at the frequency ``omega`` [rad/s] (and ``phase``, default this
         one's): F0 and whichever of X_b, V_b, A_b was given stay constant (Eq. F1)."""
@@ -82,7 +106,8 @@ class Forcing:
             for name, value in (("F0", self.F0), ("X_b", self.X_b), ("omega", float(omega)),
                                 ("freq", float(omega) / (2.0 * math.pi)),
                                 ("phase", self.phase if phase is None else float(phase)),
-                                ("V_b", None), ("A_b", None)):  # fmt: skip
+                                ("V_b", None), ("A_b", None),
+                                ("inertia", self.inertia)):  # fmt: skip
                 object.__setattr__(out, name, value)
             return out
         kept = {"V_b": self.V_b} if self.V_b is not None else {}
@@ -92,6 +117,7 @@ class Forcing:
             X_b=0.0 if kept else self.X_b,
             omega=omega,
             phase=self.phase if phase is None else phase,
+            inertia=self.inertia,
             **kept,
         )
 
@@ -103,4 +129,6 @@ class Forcing:
     def as_dict(self) -> dict[str, float]:
         out = {"F0": self.F0, "X_b": self.X_b, "omega": self.omega, "phase": self.phase}
         out |= {k: getattr(self, k) for k in ("V_b", "A_b") if getattr(self, k) is not None}
+        if self.inertia != 0.0:
+            out["inertia"] = self.inertia
         return out

@@ -89,8 +89,9 @@ def steady_amplitude(system: ImpactSystem, forcing: Forcing, omega: Any) -> np.n
     x = Re(X̂e^{iθ}) = A cos θ + B sin θ, Step 8's steady solution (Eq. F1) [m]."""
     w = np.asarray(omega, dtype=float)
     X_b = forcing.base_amplitude(w)  # constant, or V_b/Ω, A_b/Ω² over the band
-    A = ff.steady_cosine(system.M, system.K, system.C, forcing.F0, X_b, w)
-    B = ff.steady_sine(system.M, system.K, system.C, forcing.F0, X_b, w)
+    F = forcing.force_amplitude(w)  # F0, and a reduction's inertia times Ω²·X_b
+    A = ff.steady_cosine(system.M, system.K, system.C, F, X_b, w)
+    B = ff.steady_sine(system.M, system.K, system.C, F, X_b, w)
     return A - 1j * B
 
 
@@ -129,7 +130,7 @@ def _values(name: str, system: ImpactSystem, forcing: Forcing, t: np.ndarray, s:
     if name == "acceleration":
         h = system.gap / 2.0
         stuck = (np.abs(np.abs(s[:, 2]) - h) <= 1e-12 * h) & (s[:, 3] == v)
-        return (forcing.F0 * np.cos(theta) - force) / np.where(stuck, system.M + system.m, system.M)
+        return (forcing.primary_force * np.cos(theta) - force) / np.where(stuck, system.M + system.m, system.M)
     if name == "force":
         return force
     if forcing.F0 != 0.0:

@@ -315,7 +315,7 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
     p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
     p[_rigid.P_m], p[_rigid.P_h] = system.m, h
     p[_rigid.P_e], p[_rigid.P_VY] = restitution_parameters(e)
-    p[_rigid.P_F0], p[_rigid.P_XB] = forcing.F0, forcing.X_b
+    p[_rigid.P_F0], p[_rigid.P_XB] = forcing.primary_force, forcing.X_b
     p[_rigid.P_W], p[_rigid.P_PHI], p[_rigid.P_CHAT] = forcing.omega, forcing.phase, chatter
     t_end = n_periods * forcing.period
     natural = t_end * math.sqrt(system.K / system.M) / (2.0 * math.pi)
@@ -477,7 +477,8 @@ def state_at(result: ForcedResult, times: np.ndarray) -> np.ndarray:
     out = _rigid.states_at(
         np.ascontiguousarray(result.events, dtype=float), times.reshape(-1),
         np.asarray(result.initial_state, dtype=float), bool(result.final_stuck),
-        sysm.gap / 2.0, sysm.M, sysm.m, sysm.K, sysm.C, f.F0, f.X_b, f.omega, f.phase,
+        sysm.gap / 2.0, sysm.M, sysm.m, sysm.K, sysm.C, f.primary_force, f.X_b, f.omega,
+        f.phase,
     )  # fmt: skip
     return out.reshape(*shape, 4) if shape else out[0]
 

@@ -274,7 +274,7 @@ def design_map(
     store = None
     if out is not None:
         contact = e.as_dict() if not is_constant(e) else {"e": e}
-        motion = {k: v for k, v in forcing.as_dict().items() if k in ("V_b", "A_b")}
+        motion = {k: v for k, v in forcing.as_dict().items() if k in ("V_b", "A_b", "inertia")}
         settings = {"F0": forcing.F0, "X_b": forcing.X_b, "phase": forcing.phase, **motion,
                     **contact,
                     "omegas": ",".join(f"{x:.17g}" for x in w)}  # fmt: skip

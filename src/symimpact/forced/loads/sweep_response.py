@@ -15,7 +15,6 @@ from typing import Any
 
 import numpy as np
 
-from ...errors import ParameterError
 from ...model import checks
 from ...model.system import ImpactSystem
 from ...model.units import positive_float
@@ -139,20 +138,21 @@ class SteadyCurve:
 
 def steady_curve(
     system: ImpactSystem, amplitude: Any, f_low: float, f_high: float, *, e: Any,
-    kind: str = "force", points: int = STEADY_POINTS,
+    kind: str = "force", points: int = STEADY_POINTS, participation: float = 1.0,
 ) -> SteadyCurve:  # fmt: skip
     """The curve of ``frf`` (:func:`symimpact.forced.orbits.frf.frequency_response`, without its
     brute-force sweeps: the sweep drawn beside it is the brute force) for a harmonic load of the
     sweep's ``amplitude`` — a force F0 [N] on the main mass, or a base acceleration A_b [m/s²]
     that stays constant over the band (X_b = A_b/Ω²), the amplitude then of x − x_b as in the
     sweep — at ``points`` frequencies from ``f_low`` to ``f_high`` [Hz]; rigid impacts with ``e``
-    (Eq. F2)."""
+    (Eq. F2); ``participation`` Γ of a base-driven primary (the forcing's inertia (Γ − 1)·M,
+    :class:`~symimpact.forced.Forcing`)."""
     lo, hi = sorted((f_low, f_high))
     omegas = 2.0 * np.pi * np.linspace(lo, hi, points)
     forcing = (
         Forcing(F0=amplitude, omega=omegas[0])
         if kind == "force"
-        else Forcing(A_b=amplitude, omega=omegas[0])
+        else Forcing(A_b=amplitude, omega=omegas[0], inertia=(participation - 1.0) * system.M)
     )
     frf = frequency_response(system, forcing, e, omegas, sweeps=False)
     if kind != "force":  # a record's x under a base acceleration is relative to the base
@@ -261,14 +261,9 @@ def sweep_response(
     Eq. F8 on each interval of the record), or the compliant law of a
     :class:`~symimpact.forced.contact_law.CompliantContact`; with ``steady``, the steady curve of ``frf`` at the
     same amplitude over the band beside them (:func:`steady_curve`).  ``participation``: Γ of
-    the primary in a base sweep (:func:`~symimpact.forced.loads.record_response.damper_response`);
-    the steady curve is drawn for Γ = 1 only (the harmonic engines do not carry Γ yet)."""
+    the primary in a base sweep (:func:`~symimpact.forced.loads.record_response.damper_response`),
+    the steady curve's too."""
     gamma = checks.bounded("participation", participation)
-    if steady and gamma != 1.0:
-        raise ParameterError(
-            "steady", f"the steady curve of a primary driven by its base with participation "
-            f"{gamma:g} is not drawn yet (the harmonic engines take 1): leave it out"
-        )  # fmt: skip
     f_low = positive_float("f_low", f_low, "Hz")
     f_high = positive_float("f_high", f_high, "Hz")
     rate = positive_float("rate", rate)
@@ -281,5 +276,6 @@ def sweep_response(
         f, a = envelope(ours.displacement, freq, record.dt, ours.velocity, ours.impact_times)
         _, b = envelope(alone.displacement, freq, record.dt, alone.velocity)
         out[name] = {"frequency": f, "envelope": a, "baseline": b}
-    curve = steady_curve(system, amplitude, f_low, f_high, e=e, kind=kind) if steady else None
+    curve = (steady_curve(system, amplitude, f_low, f_high, e=e, kind=kind, participation=gamma)
+             if steady else None)  # fmt: skip
     return SweepResult(out["up"], out["down"], curve)

@@ -208,7 +208,8 @@ class _Problem:
             return system, f.at(value), e
         F0 = value if self.parameter == "F0" else f.F0
         X_b = value if self.parameter == "X_b" else f.X_b
-        return system, Forcing(F0=F0, X_b=X_b, omega=f.omega, phase=f.phase), e
+        return system, Forcing(F0=F0, X_b=X_b, omega=f.omega, phase=f.phase,
+                               inertia=f.inertia), e  # fmt: skip
 
     @property
     def compiled(self) -> bool:
@@ -216,7 +217,7 @@ class _Problem:
         carried, continued in Ω, with a base motion of constant amplitude X_b (or none)."""
         f = self.forcing
         return (self.parameter == "omega" and is_rigid(self.e) and self.carried
-                and f.V_b is None and f.A_b is None)  # fmt: skip
+                and f.V_b is None and f.A_b is None and f.inertia == 0.0)  # fmt: skip
 
     def run_parameters(self) -> np.ndarray:
         """The one-mode engine's parameters (:mod:`._rigid`'s layout), as
@@ -226,7 +227,7 @@ class _Problem:
         p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
         p[_rigid.P_m], p[_rigid.P_h] = system.m, system.gap / 2.0
         p[_rigid.P_e], p[_rigid.P_VY] = restitution_parameters(self.e)
-        p[_rigid.P_F0], p[_rigid.P_XB] = f.F0, f.X_b
+        p[_rigid.P_F0], p[_rigid.P_XB] = f.primary_force, f.X_b
         p[_rigid.P_W], p[_rigid.P_PHI], p[_rigid.P_CHAT] = f.omega, f.phase, CHATTER
         return p
 
@@ -259,7 +260,9 @@ class _Problem:
     def evaluate(self, y: np.ndarray):
         """(residual, Jacobian 4×5, monodromy, the simulation) at y, all scaled."""
         s, value = y[:4] * self.scale, y[4] * self.unit
-        if is_rigid(self.e) and self.carried:  # ∂P/∂p carried along the monodromy's chain
+        # ∂P/∂p carried along the monodromy's chain, which takes the force on the primary as
+        # independent of the parameter: not so with a reduction's inertia (F0 + inertia·Ω²·X_b)
+        if is_rigid(self.e) and self.carried and self.forcing.inertia == 0.0:
             ps, J5, res = self.map(value, s, parameter=self.parameter)
             mono, dp = J5[:, :4], J5[:, 4] * self.unit
         else:  # a compliant contact: by central differences of the map

@@ -261,7 +261,8 @@ def _section_state(orbit, omega: float, h: float, system: ImpactSystem, forcing:
     whose t = 0 is that instant."""
     f = _forcing(forcing, omega)
     T = 2 * math.pi / omega
-    args = (system.M, system.K, system.C, f.F0, f.X_b, omega, orbit.impact_phase, orbit.X, orbit.V)
+    args = (system.M, system.K, system.C, f.primary_force, f.X_b, omega, orbit.impact_phase,
+            orbit.X, orbit.V)  # fmt: skip
     x = float(ff.forced_displacement(T / 4, *args))
     v = float(ff.forced_velocity(T / 4, *args))
     state = (x, v, h + orbit.U * T / 4 - (x - orbit.X), orbit.U)

@@ -88,7 +88,7 @@ def periodic_orbits(system: ImpactSystem, forcing: Forcing, e: Any) -> list[Peri
         system.m,
         e,
         system.gap,
-        forcing.F0,
+        forcing.primary_force,
         forcing.X_b,
         forcing.omega,
     )
@@ -112,7 +112,8 @@ def periodic_orbits(system: ImpactSystem, forcing: Forcing, e: Any) -> list[Peri
 
 def _flight(system, forcing, phi, X, V, tau):
     """(x, ẋ) a time τ after the first impact (Eq. F1 with the forcing phase φ at it)."""
-    args = (system.M, system.K, system.C, forcing.F0, forcing.X_b, forcing.omega, phi, X, V)
+    args = (system.M, system.K, system.C, forcing.primary_force, forcing.X_b, forcing.omega, phi,
+            X, V)  # fmt: skip
     return ff.forced_displacement(tau, *args), ff.forced_velocity(tau, *args)
 
 
@@ -190,9 +191,10 @@ def _amplitude_slopes(system, forcing, e, phi, X, V, t_peak, x_peak) -> dict[str
     extreme of x at ``t_peak`` by the flight's derivatives in (x0, ẋ0, φ) (Eq. F1 differentiated),
     with no term for the extreme's own move since ẋ = 0 there.  At the impact (t = 0 or τ, where
     x = ±X) the slope is X's own."""
-    args = (system.M, system.K, system.C, system.m, e, system.gap, forcing.F0, forcing.X_b,
+    F = forcing.primary_force
+    args = (system.M, system.K, system.C, system.m, e, system.gap, F, forcing.X_b,
             forcing.omega)  # fmt: skip
-    flight = (t_peak, system.M, system.K, system.C, forcing.F0, forcing.X_b, forcing.omega, phi,
+    flight = (t_peak, system.M, system.K, system.C, F, forcing.X_b, forcing.omega, phi,
               X, V)  # fmt: skip
     tau = math.pi / forcing.omega
     interior = 0.0 < t_peak < tau

@@ -252,7 +252,7 @@ def rigid_monodromy(
     p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C] = system.M, system.K, system.C
     p[_rigid.P_m], p[_rigid.P_h] = system.m, system.gap / 2.0
     p[_rigid.P_e], p[_rigid.P_VY] = restitution_parameters(e)
-    p[_rigid.P_F0], p[_rigid.P_XB] = forcing.F0, forcing.X_b
+    p[_rigid.P_F0], p[_rigid.P_XB] = forcing.primary_force, forcing.X_b
     p[_rigid.P_W], p[_rigid.P_PHI] = forcing.omega, forcing.phase
     events = np.ascontiguousarray(np.reshape(events, (-1, _rigid.N_EVENT_COLS)), dtype=float)
     J = _chain.rigid_jacobian(p, events, float(t_end), bool(final_stuck), which,

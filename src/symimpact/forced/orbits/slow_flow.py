@@ -62,7 +62,13 @@ def _restitution(system: Any, forcing: Any, e: Any) -> float:
 
 
 def _constant_base(forcing: Forcing) -> None:
-    """The backbone and the best clearance move along frequencies with one X_b (Eq. F5)."""
+    """The backbone and the best clearance move along frequencies with one X_b and one force
+    (Eq. F5): not a reduction's, whose force on the primary grows with Ω² (Forcing.inertia)."""
+    if forcing.inertia != 0.0:
+        raise ParameterError(
+            "inertia", "the slow flow's backbone takes one force over its frequencies; a mode "
+            "reduced to a point whose supports drive it by Γφ ≠ 1 has a force that grows with Ω²"
+        )  # fmt: skip
     for name in ("V_b", "A_b"):
         if getattr(forcing, name) is not None:
             raise ParameterError(
@@ -90,7 +96,7 @@ def slow_flow_responses(system: ImpactSystem, forcing: Forcing, e: Any) -> list[
         system.m,
         e,
         system.gap,
-        forcing.F0,
+        forcing.primary_force,
         forcing.X_b,
         forcing.omega,
     )
