@@ -13,8 +13,7 @@ wall's move with d, the chatter's Δ and the end of the k periods in Ω,
 of the parameter, or of a tenth of its range where that is larger; ~1e-10 of the map).  Each
 step predicts along the branch's unit tangent, with the branch's curvature from the tangent's
 change over the step before (:func:`_predicted`), and corrects by Newton's method with the
-pseudo-arclength condition, so the branch is followed around folds; a located fold's orbit is a
-point of the branch.
+pseudo-arclength condition, so the branch is followed around folds (a located fold's orbit on it).
 
 Along the branch the Floquet multipliers are watched: a real multiplier through +1 where the
 tangent's parameter component changes sign is a *fold*, through +1 without a turn a *branch point* (on
@@ -208,8 +207,7 @@ class _Problem:
             return system, f.at(value), e
         F0 = value if self.parameter == "F0" else f.F0
         X_b = value if self.parameter == "X_b" else f.X_b
-        return system, Forcing(F0=F0, X_b=X_b, omega=f.omega, phase=f.phase,
-                               inertia=f.inertia), e  # fmt: skip
+        return system, Forcing(F0, X_b, f.omega, phase=f.phase, inertia=f.inertia), e
 
     @property
     def compiled(self) -> bool:
@@ -260,8 +258,7 @@ class _Problem:
     def evaluate(self, y: np.ndarray):
         """(residual, Jacobian 4×5, monodromy, the simulation) at y, all scaled."""
         s, value = y[:4] * self.scale, y[4] * self.unit
-        # ∂P/∂p carried along the monodromy's chain, which takes the force on the primary as
-        # independent of the parameter: not so with a reduction's inertia (F0 + inertia·Ω²·X_b)
+        # ∂P/∂p along the chain: not with an inertia's force F0 + inertia·Ω²·X_b (Forcing)
         if is_rigid(self.e) and self.carried and self.forcing.inertia == 0.0:
             ps, J5, res = self.map(value, s, parameter=self.parameter)
             mono, dp = J5[:, :4], J5[:, 4] * self.unit
