@@ -21,8 +21,9 @@ from symimpact.model.system import ImpactSystem
 
 #: the first mode of a 0.5 m aluminium cantilever at its tip (tests/test_reduction_participation)
 GP, M, WN, ZETA = 1.566, 0.050625, 2 * math.pi * 16.45, 0.01
-SYSTEM = ImpactSystem(M=M, K=WN**2 * M, C=2 * ZETA * WN * M, m=0.005, gap=0.01, contact="linear",
-                      k1=1e6)  # (the contact law unused: rigid impacts)
+SYSTEM = ImpactSystem(
+    M=M, K=WN**2 * M, C=2 * ZETA * WN * M, m=0.005, gap=0.01, contact="linear", k1=1e6
+)  # (the contact law unused: rigid impacts)
 INERTIA = (GP - 1.0) * M
 
 

@@ -49,8 +49,20 @@ def _tip_participation() -> float:
     "command",
     [
         ["simulate", "--contact", "rigid", "--e", "0.6", "--base-acc", "0.5 g", "--freq", "16 Hz"],
-        ["frf", "--contact", "rigid", "--e", "0.6", "--base", "1 mm", "--freq-range", "15:18:1",
-         "--multistart", "0", "--json"],
+        [
+            "frf",
+            "--contact",
+            "rigid",
+            "--e",
+            "0.6",
+            "--base",
+            "1 mm",
+            "--freq-range",
+            "15:18:1",
+            "--multistart",
+            "0",
+            "--json",
+        ],
     ],
     ids=["simulate", "frf"],
 )

@@ -130,7 +130,9 @@ def _values(name: str, system: ImpactSystem, forcing: Forcing, t: np.ndarray, s:
     if name == "acceleration":
         h = system.gap / 2.0
         stuck = (np.abs(np.abs(s[:, 2]) - h) <= 1e-12 * h) & (s[:, 3] == v)
-        return (forcing.primary_force * np.cos(theta) - force) / np.where(stuck, system.M + system.m, system.M)
+        return (forcing.primary_force * np.cos(theta) - force) / np.where(
+            stuck, system.M + system.m, system.M
+        )
     if name == "force":
         return force
     if forcing.F0 != 0.0:

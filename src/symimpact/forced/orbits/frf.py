@@ -70,6 +70,7 @@ from .coverage import (
 from .peak import Peak, baseline_peak, curve_peak, linear_amplitude
 from .periodic import periodic_orbits
 from .shooting import settled_state, shoot
+from .worst_case import worst_case
 
 #: Periods kept for each brute-force sweep point's steady state; before them the run lasts until
 #: the free transient has decayed to SWEEP_SETTLED of its start, exp(−ζω_n·t) (at most
@@ -128,6 +129,9 @@ class FrequencyResponse:
     baseline_peak: Peak | None = None
     #: the multi-start's attractors and the share of the periodic ones on a traced branch
     coverage: Coverage = field(default_factory=Coverage)
+    #: the motions a brute force reaches at the located peak's Ω and just beside it
+    #: (:func:`.worst_case.beside_peak`); the peak is the largest of them where it is larger
+    beside_peak: list = field(default_factory=list)
     #: what the ``amplitude`` fields hold: "displacement" (max abs(x)), or another response of
     #: :data:`symimpact.forced.responses.RESPONSES` (:func:`.response_curve.response_curve`),
     #: whose name replaces the key "amplitude" in :meth:`as_dict`
@@ -382,9 +386,11 @@ def frequency_response(
     for a in found:
         if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS:
             follow("multi-start", a.period_multiple, a.state, _forcing(forcing, a.omega))
+    swept: list[_SweepPoint] = []
     if sweeps:
         up = _sweep_runs(system, forcing, e, w)
         down = _sweep_runs(system, forcing, e, w[::-1])[::-1]
+        swept = [*up, *down]
         out.sweep_up = np.array([(r.omega, r.amplitude) for r in up])
         out.sweep_down = np.array([(r.omega, r.amplitude) for r in down])
         # a periodic swept motion that no branch holds starts one (chatter and sticking
@@ -408,6 +414,19 @@ def frequency_response(
     _drop_repeated_bifurcations(out.branches, 1e-6 if is_rigid(e) else 1e-5)
     out.baseline_peak = baseline_peak(system, forcing, band)
     out.peak = curve_peak(out.branches, system, forcing, e, band, out.no_impact, found)
+    if out.peak is not None:  # the worst case: what a brute force reaches beside the peak
+        worse, out.beside_peak = worst_case(system, forcing, e, band, out.peak, out.branches,
+                                            swept, float(np.median(np.diff(w))))  # fmt: skip
+        if worse is not out.peak:
+            p = out.peak
+            kind = "repeats" if worse.motion == "periodic" else "does not repeat"
+            failures.setdefault(
+                f"beside the located peak ({p.motion}, {p.amplitude:.6g} m at Ω {p.omega:.6g} "
+                f"rad/s, {p.where}) a motion that {kind} reaches {worse.amplitude:.6g} m, the "
+                "worst case reported",
+                [],
+            ).append(worse.omega)
+            out.peak = worse
     if sweeps and out.peak is not None:
         top = max((*out.sweep_up, *out.sweep_down), key=lambda r: r[1])
         if top[1] > out.peak.amplitude * (1.0 + SWEEP_ACCURACY):

@@ -46,7 +46,9 @@ def acceleration(
     W = forcing.omega
     mass = system.M if mass is None else mass
     xb, vb = forcing.X_b * math.cos(theta), -forcing.X_b * W * math.sin(theta)
-    return (forcing.primary_force * math.cos(theta) - system.K * (x - xb) - system.C * (v - vb)) / mass
+    return (
+        forcing.primary_force * math.cos(theta) - system.K * (x - xb) - system.C * (v - vb)
+    ) / mass
 
 
 def saltation_matrix(system: ImpactSystem, e: float, zdot: float, a: float) -> np.ndarray:

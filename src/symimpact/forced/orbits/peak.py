@@ -48,7 +48,8 @@ class Peak:
     number, or None), ``period_multiple`` k, ``impacts_per_period`` of a periodic motion and its
     ``impact_events_per_period`` (a chatter sequence counting once),
     ``where``: how it was located ("maximum", a bifurcation's kind, "band edge", "point",
-    "resonance", "grazing")."""
+    "resonance", "grazing", "multi-start", or "brute force": runs beside the located peak and
+    across a motion that does not repeat, :mod:`symimpact.forced.orbits.worst_case`)."""
 
     amplitude: float
     omega: float
