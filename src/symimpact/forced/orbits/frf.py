@@ -414,18 +414,21 @@ def frequency_response(
     _drop_repeated_bifurcations(out.branches, 1e-6 if is_rigid(e) else 1e-5)
     out.baseline_peak = baseline_peak(system, forcing, band)
     out.peak = curve_peak(out.branches, system, forcing, e, band, out.no_impact, found)
-    if out.peak is not None:  # the worst case: what a brute force reaches beside the peak
+    # the worst case: what a brute force reaches beside the peak (rigid impacts: a compliant
+    # contact's runs are classified by its contact onsets, which a mass pressed for whole
+    # periods does not show)
+    if out.peak is not None and is_rigid(e):
         worse, out.beside_peak = worst_case(system, forcing, e, band, out.peak, out.branches,
                                             swept, float(np.median(np.diff(w))))  # fmt: skip
         if worse is not out.peak:
             p = out.peak
             kind = "repeats" if worse.motion == "periodic" else "does not repeat"
             failures.setdefault(
-                f"beside the located peak ({p.motion}, {p.amplitude:.6g} m at Ω {p.omega:.6g} "
-                f"rad/s, {p.where}) a motion that {kind} reaches {worse.amplitude:.6g} m, the "
-                "worst case reported",
+                f"beside the located peak ({p.motion}, {p.amplitude:.6g} m, {p.where}) a motion "
+                f"that {kind} reaches {worse.amplitude:.6g} m, the worst case reported (the "
+                "located peak's frequency, then the worst case's)",
                 [],
-            ).append(worse.omega)
+            ).extend([p.omega, worse.omega])
             out.peak = worse
     if sweeps and out.peak is not None:
         top = max((*out.sweep_up, *out.sweep_down), key=lambda r: r[1])
