@@ -66,3 +66,14 @@ def test_a_periodic_peak_with_nothing_larger_beside_it_stays():
     assert curve.peak.where == "point" and curve.peak.period_multiple == 2
     top = max(a.amplitude for a in curve.beside_peak)
     assert top == pytest.approx(curve.peak.amplitude, rel=1e-8)  # the same orbit, run
+
+
+def test_a_design_row_names_a_motion_that_does_not_repeat():
+    """The design map's row says "not periodic" where its worst case is such a motion (it had
+    said "no impact" for every peak that was not a stable orbit's)."""
+    from symimpact.maps.design import design_row
+
+    w = np.arange(30.25, 31.5 + 1e-9, 0.25)
+    row = design_row(SYSTEM, Forcing(F0=2.0, omega=30.25), 0.95, w, multistart=0)
+    assert row["peak_motion"] == "not periodic"
+    assert row["peak_amplitude"] == pytest.approx(0.126, rel=0.01)

@@ -76,7 +76,7 @@ DESIGN_OUTPUTS = (
     "uncovered_frequencies",
 )
 #: The kinds of motion a peak can belong to (``peak_motion``).
-MOTIONS = ("stable orbit", "no impact", "sweep up", "sweep down")
+MOTIONS = ("stable orbit", "no impact", "sweep up", "sweep down", "not periodic")
 
 
 @dataclass(frozen=True)
@@ -166,7 +166,9 @@ def _row(system, w, curve, shown, sweep_up, sweep_down) -> dict[str, Any]:
         peak, peak_omega, motion = 0.0, math.nan, ""
     else:
         peak, peak_omega = located.amplitude, located.omega
-        motion = MOTIONS[0] if located.motion == "periodic" else MOTIONS[1]
+        # a stable orbit, the motion without impacts, or a steady motion no branch holds (the
+        # multi-start's or the worst case's: chatter, chaos, a motion that does not repeat)
+        motion = {"periodic": MOTIONS[0], "no impact": MOTIONS[1]}.get(located.motion, MOTIONS[4])
     swept = [(float(a), float(x), motion)
              for motion, sweep in ((MOTIONS[2], sweep_up), (MOTIONS[3], sweep_down))
              for x, a in sweep]  # fmt: skip
