@@ -30,14 +30,14 @@ from .coverage import WARMUP, Attractor, initial_states
 from .peak import Peak
 
 #: The probe's frequencies beside the located peak's Ω, relative to it (and Ω itself).
-OFFSETS = (1e-5, 1e-4, 1e-3)
+OFFSETS = (1e-4, 1e-3)
 #: The periods over which a probe's motion is read (after settling).
 KEPT = 200
 #: A brute force's motion larger than the located peak by at most this share is the peak's own
 #: orbit (a run's amplitude reads the orbit to ~1e-10 of it; the located peak is good to 1e-9).
 SAME = 1e-6
 #: Frequencies of each of the two finer grids about the largest motion that does not repeat.
-SCAN = 9
+SCAN = 7
 
 
 def _runs(system, forcing, e, ws, starts) -> list[Attractor]:
