@@ -217,3 +217,34 @@ def hermite_beam(support: str, n_el: int = N_EL):
     K, M = hermite_beam_whole(n_el)
     kept = supported_dofs(support, n_el)
     return K[np.ix_(kept, kept)], M[np.ix_(kept, kept)], kept
+
+
+def flights_with_impacts(rhs, s, t, t_end, h, e, M, m, marks=()):
+    """Brute force of a primary M with an impact mass m in a clearance 2h under ``rhs(t, w)``
+    (w = x, ẋ, y, ẏ; any frame both share): DOP853 (rtol 1e-12) from ``s`` at ``t`` to ``t_end``,
+    each impact (abs(y − x) = h) a terminal event with Newton's law (Eq. F2, restitution ``e``)
+    applied there.  Returns (the state at t_end, the impact times, the states at ``marks``, an
+    increasing sequence of times in [t, t_end], from the dense output)."""
+    mu = M * m / (M + m)
+
+    def upper(_, w):
+        return w[2] - w[0] - h
+
+    def lower(_, w):
+        return w[2] - w[0] + h
+
+    upper.terminal = lower.terminal = True
+    upper.direction, lower.direction = 1, -1
+    s, hits, out, marks = np.array(s, dtype=float), [], [], list(marks)
+    while t < t_end:
+        sol = solve_ivp(rhs, (t, t_end), s, method="DOP853", rtol=1e-12, atol=1e-16,
+                        events=(upper, lower), dense_output=bool(marks))  # fmt: skip
+        while marks and marks[0] <= sol.t[-1]:
+            out.append(sol.sol(marks.pop(0)))
+        s, t = sol.y[:, -1].copy(), sol.t[-1]
+        if sol.status == 1:
+            hits.append(t)
+            v, u = s[1], s[3]
+            s[1] = v + (1 + e) * mu / M * (u - v)
+            s[3] = u - (1 + e) * mu / m * (u - v)
+    return s, hits, np.array(out)

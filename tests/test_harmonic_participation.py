@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
+from helpers import flights_with_impacts
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, simulate_forced
@@ -28,40 +28,24 @@ INERTIA = (GP - 1.0) * M
 
 
 def relative_brute_force(system, X_b, W, e, gp, t_end, times):
-    """(x_r, ẋ_r, y_r, ẏ_r) at ``times`` and the impact times: DOP853 (rtol 1e-12) on the
-    equations relative to the supports, ẍ_r = −Γφ·ẍ_b − (C·ẋ_r + K·x_r)/M, ÿ_r = −ẍ_b, with
-    ẍ_b = −Ω²X_b·cos Ωt, each impact a terminal event and Eq. F2 there; from rest relative to
-    the supports."""
-    M_, m, K, C, h = system.M, system.m, system.K, system.C, system.gap / 2
-    mu = M_ * m / (M_ + m)
+    """(x_r, ẋ_r, y_r, ẏ_r) at ``times`` and the impact times: DOP853 with impact events
+    (:func:`helpers.flights_with_impacts`) on the equations relative to the supports,
+    ẍ_r = −Γφ·ẍ_b − (C·ẋ_r + K·x_r)/M, ÿ_r = −ẍ_b, with ẍ_b = −Ω²X_b·cos Ωt; from rest relative
+    to the supports."""
+    _, hits, states = flights_with_impacts(_relative(system, X_b, W, 0.0, gp), np.zeros(4), 0.0,
+                                           t_end, system.gap / 2, e, system.M, system.m,
+                                           times)  # fmt: skip
+    return states, np.array(hits)
+
+
+def _relative(system, X_b, W, phase, gp):
+    """The right side of the equations relative to the supports (:func:`relative_brute_force`)."""
 
     def rhs(t, w):
-        acc_b = -W * W * X_b * math.cos(W * t)
-        return [w[1], -gp * acc_b - (C * w[1] + K * w[0]) / M_, w[3], -acc_b]
+        acc_b = -W * W * X_b * math.cos(W * t + phase)
+        return [w[1], -gp * acc_b - (system.C * w[1] + system.K * w[0]) / system.M, w[3], -acc_b]
 
-    def upper(t, w):
-        return w[2] - w[0] - h
-
-    def lower(t, w):
-        return w[2] - w[0] + h
-
-    upper.terminal = lower.terminal = True
-    upper.direction, lower.direction = 1, -1
-    s, t, hits, out = np.zeros(4), 0.0, [], []
-    marks = list(times)
-    while t < t_end:
-        sol = solve_ivp(rhs, (t, t_end), s, method="DOP853", rtol=1e-12, atol=1e-16,
-                        events=(upper, lower), dense_output=True)  # fmt: skip
-        end = sol.t[-1]
-        while marks and marks[0] <= end:
-            out.append(sol.sol(marks.pop(0)))
-        s, t = sol.y[:, -1].copy(), end
-        if sol.status == 1:
-            hits.append(t)
-            v, u = s[1], s[3]
-            s[1] = v + (1 + e) * mu / M_ * (u - v)
-            s[3] = u - (1 + e) * mu / m * (u - v)
-    return np.array(out), np.array(hits)
+    return rhs
 
 
 def test_out_of_reach_the_reduction_is_the_modes_closed_form():
@@ -134,32 +118,9 @@ def test_the_curves_orbits_repeat_under_dop853():
 def _relative_period(system, X_b, W, phase, e, gp, s, k):
     """The relative state after k forcing periods from ``s`` at forcing phase ``phase`` (DOP853
     with impact events, as :func:`relative_brute_force`)."""
-    M_, m, K, C, h = system.M, system.m, system.K, system.C, system.gap / 2
-    mu = M_ * m / (M_ + m)
-
-    def rhs(t, w):
-        acc_b = -W * W * X_b * math.cos(W * t + phase)
-        return [w[1], -gp * acc_b - (C * w[1] + K * w[0]) / M_, w[3], -acc_b]
-
-    def upper(t, w):
-        return w[2] - w[0] - h
-
-    def lower(t, w):
-        return w[2] - w[0] + h
-
-    upper.terminal = lower.terminal = True
-    upper.direction, lower.direction = 1, -1
-    t, t_end, s = 0.0, k * 2 * math.pi / W, np.array(s, dtype=float)
-    while t < t_end:
-        sol = solve_ivp(rhs, (t, t_end), s, method="DOP853", rtol=1e-12, atol=1e-16,
-                        events=(upper, lower))  # fmt: skip
-        s, t = sol.y[:, -1].copy(), sol.t[-1]
-        if sol.status == 1:
-            v, u = s[1], s[3]
-            s[1] = v + (1 + e) * mu / M_ * (u - v)
-            s[3] = u - (1 + e) * mu / m * (u - v)
-            s[2] = s[0] + math.copysign(h, s[2] - s[0])  # on the wall exactly
-    return s
+    end, _, _ = flights_with_impacts(_relative(system, X_b, W, phase, gp), s, 0.0,
+                                     k * 2 * math.pi / W, system.gap / 2, e, system.M, system.m)  # fmt: skip
+    return end
 
 
 def test_the_slow_flow_backbone_refuses_a_force_that_grows_with_frequency():

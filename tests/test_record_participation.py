@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 import pytest
+from helpers import flights_with_impacts
 from scipy.integrate import solve_ivp
 
 from symimpact.errors import ParameterError
@@ -21,13 +22,12 @@ SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear"
 
 
 def brute_force(system, record, e, gamma):
-    """x, ẋ, y, ẏ (relative to the base) at every sample and the impact times: DOP853 (rtol
-    1e-12) interval by interval of the record, each impact a terminal event with Eq. F2 there;
-    the primary's load −Γ·M·a_b, the impact mass's −m·a_b; and x's absolute acceleration at the
+    """x, ẋ, y, ẏ (relative to the base) at every sample and the impact times: DOP853 with impact
+    events (:func:`helpers.flights_with_impacts`) interval by interval of the record; the
+    primary's load −Γ·M·a_b, the impact mass's −m·a_b; and x's absolute acceleration at the
     samples, from the equations (the last interval's value at its end)."""
     M, m, K, C, h = system.M, system.m, system.K, system.C, system.gap / 2
     q, dt = record.values, record.dt
-    mu = M * m / (M + m)
     s = np.zeros(4)
     out, hits, acc = [s.copy()], [], [-(gamma - 1.0) * q[0]]
     for i in range(len(q) - 1):
@@ -38,25 +38,8 @@ def brute_force(system, record, e, gamma):
             a_b = q0 + slope * (t - ta)
             return [w[1], -gamma * a_b - (C * w[1] + K * w[0]) / M, w[3], -a_b]
 
-        def upper(t, w):
-            return w[2] - w[0] - h
-
-        def lower(t, w):
-            return w[2] - w[0] + h
-
-        upper.terminal = lower.terminal = True
-        upper.direction, lower.direction = 1, -1
-        t = ta
-        while t < tb:
-            sol = solve_ivp(rhs, (t, tb), s, method="DOP853", rtol=1e-12, atol=1e-15,
-                            events=(upper, lower))  # fmt: skip
-            s = sol.y[:, -1].copy()
-            t = sol.t[-1]
-            if sol.status == 1:
-                hits.append(t)
-                v, u = s[1], s[3]
-                s[1] = v + (1 + e) * mu / M * (u - v)
-                s[3] = u - (1 + e) * mu / m * (u - v)
+        s, more, _ = flights_with_impacts(rhs, s, ta, tb, h, e, M, m)
+        hits += more
         out.append(s.copy())
         acc.append(rhs(tb, s)[1] + q[i + 1])
     return np.array(out), np.array(hits), np.array(acc)

@@ -5,7 +5,7 @@ ledger."""
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
+from helpers import flights_with_impacts
 
 from symimpact.errors import ParameterError
 from symimpact.forced import Forcing, simulate_forced
@@ -21,16 +21,15 @@ SYSTEM = ImpactSystem(M=1.0, K=1000.0, C=0.5, m=0.05, gap=0.02, contact="linear"
 def brute_force(system, record, e, t_end):
     """x, ẋ, y, ẏ at the record's samples up to t_end, and the impact times: the equations of
     motion integrated by DOP853 (rtol 1e-12) interval by interval of the record (the load a
-    straight line on each), each impact located as a terminal event and Eq. F2 applied there.
-    Under a base acceleration a_b both masses feel −a_b in the base's frame."""
+    straight line on each), each impact located as a terminal event and Eq. F2 applied there
+    (:func:`helpers.flights_with_impacts`).  Under a base acceleration a_b both masses feel −a_b
+    in the base's frame."""
     M, m, K, C, h = system.M, system.m, system.K, system.C, system.gap / 2
     base = record.kind == "base-acceleration"
     q, dt = record.values, record.dt
-    mu = M * m / (M + m)
     s = np.zeros(4)
     out, hits = [s.copy()], []
-    n = round(t_end / dt)
-    for i in range(n):
+    for i in range(round(t_end / dt)):
         ta, tb = i * dt, (i + 1) * dt
         slope = (q[i + 1] - q[i]) / dt
 
@@ -40,25 +39,8 @@ def brute_force(system, record, e, t_end):
                 return [w[1], -load - (C * w[1] + K * w[0]) / M, w[3], -load]
             return [w[1], (load - C * w[1] - K * w[0]) / M, w[3], 0.0]
 
-        def upper(t, w):
-            return w[2] - w[0] - h
-
-        def lower(t, w):
-            return w[2] - w[0] + h
-
-        upper.terminal = lower.terminal = True
-        upper.direction, lower.direction = 1, -1
-        t = ta
-        while t < tb:
-            sol = solve_ivp(rhs, (t, tb), s, method="DOP853", rtol=1e-12, atol=1e-15,
-                            events=(upper, lower))  # fmt: skip
-            s = sol.y[:, -1].copy()
-            t = sol.t[-1]
-            if sol.status == 1:  # an impact: Eq. F2
-                hits.append(t)
-                v, u = s[1], s[3]
-                s[1] = v + (1 + e) * mu / M * (u - v)
-                s[3] = u - (1 + e) * mu / m * (u - v)
+        s, more, _ = flights_with_impacts(rhs, s, ta, tb, h, e, M, m)
+        hits += more
         out.append(s.copy())
     return np.array(out), np.array(hits)
 

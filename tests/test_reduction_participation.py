@@ -45,6 +45,22 @@ def _tip_participation() -> float:
     return phi(1.0) * area / square
 
 
+def _reduced(tmp_path, capsys, command):
+    """Run ``command`` on the first mode of BEAM reduced to its tip, with DAMPER; its output,
+    after checking the Γφ it states: the file's Ritz kernels (Step 14) against the quadrature, to
+    the 4 digits printed, and the quadrature against the textbook figure."""
+    beam = tmp_path / "beam.json"
+    beam.write_text(json.dumps(BEAM))
+    argv = [command[0], "--structure", str(beam), "--at", "tip", "--mode", "1", *DAMPER,
+            *command[1:]]  # fmt: skip
+    assert main(argv) == 0
+    captured = capsys.readouterr()
+    gp = float(re.search(r"participation Γφ = ([0-9.]+)", captured.err)[1])
+    assert gp == pytest.approx(_tip_participation(), abs=5e-4)
+    assert _tip_participation() == pytest.approx(1.566, abs=5e-4)
+    return captured
+
+
 @pytest.mark.parametrize(
     "command",
     [
@@ -75,16 +91,7 @@ def test_harmonic_base_motion_on_a_one_mode_reduction_carries_its_participation(
     at its maximum (written here; Brent's method to 1e-9 of Ω in the package)."""
     import numpy as np
 
-    beam = tmp_path / "beam.json"
-    beam.write_text(json.dumps(BEAM))
-    argv = [command[0], "--structure", str(beam), "--at", "tip", "--mode", "1", *DAMPER,
-            *command[1:]]  # fmt: skip
-    assert main(argv) == 0
-    captured = capsys.readouterr()
-    gp = float(re.search(r"participation Γφ = ([0-9.]+)", captured.err)[1])
-    # the file's Ritz kernels (Step 14) against the quadrature, to the 4 digits printed
-    assert gp == pytest.approx(_tip_participation(), abs=5e-4)
-    assert _tip_participation() == pytest.approx(1.566, abs=5e-4)  # the textbook figure
+    captured = _reduced(tmp_path, capsys, command)
     if command[0] == "frf":
         from symimpact.model.structure import structure_from_dict
 
@@ -110,14 +117,7 @@ def test_a_sampled_base_load_on_a_one_mode_reduction_carries_its_participation(
 ):
     """Shock and sweep run, saying on stderr that the supports drive the mode by Γφ (as a
     textbook's 1.566); the sweep draws its steady curve with the same Γφ."""
-    beam = tmp_path / "beam.json"
-    beam.write_text(json.dumps(BEAM))
-    argv = [command[0], "--structure", str(beam), "--at", "tip", "--mode", "1", *DAMPER,
-            *command[1:]]  # fmt: skip
-    assert main(argv) == 0
-    captured = capsys.readouterr()
-    gp = float(re.search(r"participation Γφ = ([0-9.]+)", captured.err)[1])
-    assert gp == pytest.approx(_tip_participation(), abs=5e-4)
+    captured = _reduced(tmp_path, capsys, command)
     if command[0] == "sweep-sine":  # the steady curve of frf, with the same Γφ
         assert "steady (frf): largest stable amplitude" in captured.out
 
