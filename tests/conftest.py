@@ -2,10 +2,10 @@
 
 Profiles (``--hypothesis-profile NAME``):
 
-- ``ci`` (the default): no deadline (below), ``derandomize=True``, so each property test draws the same examples on
-  every run and every machine (seeded from the test's own source), and no example database, so a
-  failure seen on one machine is not replayed as a different run on another.  The README's test
-  command and CI use it.
+- ``ci`` (the default): no deadline (below), ``derandomize=True``, so each property test draws the
+  same examples on every run and every machine (seeded from the test's own source), and no example
+  database, so a failure seen on one machine is not replayed as a different run on another. The
+  README's test command and CI use it.
 - ``explore``: fresh random examples on every run.  Run
   ``python -m pytest --hypothesis-profile explore`` to look for new failures, or
   ``python -m pytest --hypothesis-seed N`` to replay one seed: a seed on the command line selects

@@ -118,8 +118,10 @@ def test_the_curves_orbits_repeat_under_dop853():
 def _relative_period(system, X_b, W, phase, e, gp, s, k):
     """The relative state after k forcing periods from ``s`` at forcing phase ``phase`` (DOP853
     with impact events, as :func:`relative_brute_force`)."""
-    end, _, _ = flights_with_impacts(_relative(system, X_b, W, phase, gp), s, 0.0,
-                                     k * 2 * math.pi / W, system.gap / 2, e, system.M, system.m)  # fmt: skip
+    rhs = _relative(system, X_b, W, phase, gp)
+    end, _, _ = flights_with_impacts(
+        rhs, s, 0.0, k * 2 * math.pi / W, system.gap / 2, e, system.M, system.m
+    )
     return end
 
 

@@ -88,9 +88,7 @@ class Forcing:
     @property
     def primary_force(self) -> float:
         """:meth:`force_amplitude` at this forcing's Ω [N]: F0 itself for a primary on its base."""
-        if self.inertia == 0.0:
-            return self.F0
-        return self.F0 + self.inertia * self.omega * self.omega * self.X_b
+        return self.F0 if self.inertia == 0.0 else float(self.force_amplitude(self.omega))
 
     def at(self, omega: float, phase: float | None = None) -> Forcing:
         """The same forcing at the frequency ``omega`` [rad/s] (and ``phase``, default this

@@ -11,10 +11,10 @@ straight line in the primary's equation (relative to the base under a base accel
 
     m ÿ = −m·g − s·F(δ, δ̇),  M ẍ = p − K x − C ẋ + s·F(δ, δ̇),
 
-with p the force and g = 0, or p = −Γ·M·a_b and g = a_b (Γ the primary's participation in the
-base's motion, :data:`~symimpact.forced.engine._record_rigid.P_GAMMA`).  Its steps end at the record's samples
-(the load has a kink there) and the contact ends where δ returns to 0, located by re-stepping
-from the step's start (Illinois regula falsi).  The load's work, C's dissipation and the
+with p the force and g = 0, or p = −Γ·M·a_b and g = a_b (Γ the primary's participation in the base's
+motion, :data:`~symimpact.forced.engine._record_rigid.P_GAMMA`). Its steps end at the record's
+samples (the load has a kink there) and the contact ends where δ returns to 0, located by
+re-stepping from the step's start (Illinois regula falsi). The load's work, C's dissipation and the
 contact's damping are integrated with the motion, so the energy ledger closes.
 
 This module is private: :mod:`symimpact.forced.loads.record_response` validates the input.

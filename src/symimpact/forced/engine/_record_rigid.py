@@ -74,13 +74,20 @@ _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
 
 
 @njit(cache=True)
+def _base_inertia(p, mu):
+    """The mass the base's acceleration loads through the moving mass ``mu`` (M, or M + m
+    riding): Γ·M + (mu − M) = mu + (Γ − 1)·M, exactly mu for Γ = 1."""
+    return mu + (p[P_GAMMA] - 1.0) * p[P_M]
+
+
+@njit(cache=True)
 def _loads(p, mu, q0, qd):
     """(p0, ṗ, g0, ġ): the load on the moving mass ``mu`` and the impact mass's acceleration
     relative to the base, at the piece's start and their slopes, for the record's line q0 + qd·τ.
     Under a base acceleration a_b the primary's inertia load is −Γ·M·a_b, the impact mass's
     −m·a_b (riding: −(Γ·M + m)·a_b = −(mu + (Γ − 1)·M)·a_b, exactly −mu·a_b for Γ = 1)."""
     if p[P_BASE] != 0.0:
-        inertia = mu + (p[P_GAMMA] - 1.0) * p[P_M]
+        inertia = _base_inertia(p, mu)
         return -inertia * q0, -inertia * qd, -q0, -qd
     return q0, qd, 0.0, 0.0
 
@@ -257,11 +264,9 @@ def _account(p, mu, stuck, p0, pd, g0, gd, x0, v0, u0, L, ledger):
             _, v = _ramp(s, mu, K, C, p0, pd, x0, v0)
             wq = 0.5 * hs * _GL_W[j]
             if base:  # a_b = −(g0 + ġ·s); the base-driven momentum relative to the base
-                momentum = (
-                    (mu + (p[P_GAMMA] - 1.0) * p[P_M]) * v
-                    if stuck
-                    else p[P_GAMMA] * p[P_M] * v + p[P_m] * (u0 + g0 * s + 0.5 * gd * s * s)
-                )
+                momentum = _base_inertia(p, mu) * v
+                if not stuck:
+                    momentum += p[P_m] * (u0 + g0 * s + 0.5 * gd * s * s)
                 ledger[0] += wq * (g0 + gd * s) * momentum
             else:
                 ledger[0] += wq * (p0 + pd * s) * v

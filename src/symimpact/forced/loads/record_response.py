@@ -33,13 +33,13 @@ class DamperRecordResponse:
 
     ``displacement`` x [m] and ``velocity`` [m/s] of the main mass (relative to the base under a
     base acceleration), ``acceleration`` its absolute acceleration between impacts [m/s²] (the
-    impacts' impulses are instants, not samples), ``base_force`` K·x + C·ẋ [N], the force the
-    spring and damper put into the base (Γ times it for a structure's mode reduced to a point,
-    :func:`~symimpact.forced.loads.record_flight.primary_response`); ``damper_displacement`` y and ``damper_velocity`` of
-    the impact mass (same frame), ``stuck`` True where the two move together; ``impact_times``
-    [s], ``impact_speeds`` (approach speed [m/s]) and ``impact_sides`` (±1) of every impact;
-    ``ledger``: the load's work, C's dissipation and the impacts' loss [J], the energy at the
-    start and end [J] and the balance's residual relative to the largest of them."""
+    impacts' impulses are instants, not samples), ``base_force`` K·x + C·ẋ [N], the force the spring
+    and damper put into the base (Γ times it for a structure's mode reduced to a point,
+    :func:`~symimpact.forced.loads.record_flight.primary_response`); ``damper_displacement`` y and
+    ``damper_velocity`` of the impact mass (same frame), ``stuck`` True where the two move together;
+    ``impact_times`` [s], ``impact_speeds`` (approach speed [m/s]) and ``impact_sides`` (±1) of
+    every impact; ``ledger``: the load's work, C's dissipation and the impacts' loss [J], the energy
+    at the start and end [J] and the balance's residual relative to the largest of them."""
 
     times: np.ndarray
     displacement: np.ndarray

@@ -10,8 +10,8 @@ multi-start (:mod:`symimpact.forced.orbits.coverage`) samples fixed frequencies 
 and misses such a narrow neighbourhood.  Here, at the located peak's Ω and at Ω·(1 ± r) for r in
 :data:`OFFSETS`, runs from the multi-start's initial states and from the peak's own orbit settle
 (as the multi-start's, :data:`~symimpact.forced.orbits.coverage.WARMUP` periods at most) and their
-largest abs(x) is read over :data:`KEPT` periods: a motion that does not repeat reaches its
-largest excursions rarely, and twenty periods (the multi-start's window) had read 0.5 % less.
+largest abs(x) is read over :data:`KEPT` periods, ten times the multi-start's window: a motion
+that does not repeat reaches its largest excursions rarely.
 """
 
 from __future__ import annotations
@@ -52,7 +52,8 @@ def _runs(system, forcing, e, ws, starts) -> list[Attractor]:
             try:
                 n = settling_periods(system, f, KEPT, WARMUP + KEPT)
                 res = simulate_forced(system, f, **simulation_arguments(e), periods=n,
-                                      discard=n - KEPT, x0=x, xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
+                                      discard=n - KEPT, x0=x, xdot0=v, y0=x + z,
+                                      ydot0=u)  # fmt: skip
             except SymimpactError:
                 continue
             st = res.steady
