@@ -132,14 +132,21 @@ SKIP = {"reproduce"}  # minutes per run; its bad input is covered by tests/test_
 
 
 def _subcommands() -> dict[str, list]:
+    """{name: its options}; a subcommand with kinds of its own (``identify impacts``) by its
+    two words."""
     parser = cli.build_parser()
     for action in parser._actions:
         if action.choices and hasattr(action, "_name_parser_map"):
-            return {
-                name: [a for a in sub._actions if a.option_strings and a.dest != "help"]
-                for name, sub in action.choices.items()
-                if name not in SKIP
-            }
+            out = {}
+            for name, sub in action.choices.items():
+                if name in SKIP:
+                    continue
+                out[name] = [a for a in sub._actions if a.option_strings and a.dest != "help"]
+                for kinds in (a for a in sub._actions if hasattr(a, "_name_parser_map")):
+                    for kind, q in kinds.choices.items():
+                        out[f"{name} {kind}"] = [a for a in q._actions
+                                                 if a.option_strings and a.dest != "help"]  # fmt: skip
+            return out
     raise AssertionError("no subcommands")
 
 
@@ -162,8 +169,11 @@ def _token(draw, dest: str):
 def _argv(draw, tmp: Path) -> list[str]:
     name = draw(st.sampled_from(sorted(SUBCOMMANDS)))
     actions = SUBCOMMANDS[name]
-    argv = [name]
-    for action in draw(st.lists(st.sampled_from(actions), max_size=6)):
+    argv = name.split()
+    if len(argv) == 2:  # identify's kinds: the data file first
+        argv.append(draw(st.sampled_from([str(tmp / "impacts.csv"), str(tmp / "bad.csv"),
+                                          str(tmp / "none.csv"), str(tmp)])))  # fmt: skip
+    for action in draw(st.lists(st.sampled_from(actions), max_size=6)) if actions else []:
         flag = draw(st.sampled_from(action.option_strings))
         if action.nargs == 0:
             argv.append(flag)
@@ -225,6 +235,8 @@ def _no_nan_json(text: str) -> None:
 
 def _write_sets(tmp: Path) -> None:
     (tmp / "sets.csv").write_text("gap [mm],c1\n6,0\n9,1\n")
+    (tmp / "impacts.csv").write_text("approach speed [m/s],rebound speed [m/s]\n0.5,0.4\n"
+                                     "1,0.75\n2,1.3\n3,1.8\n")  # fmt: skip
     (tmp / "bad.csv").write_text("gap,nonsense\n1,2,3\nx\n")
 
 

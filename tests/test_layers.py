@@ -1,6 +1,6 @@
-"""The runtime's folders are its pipeline, model → free → forced → maps → report → cli, and
-imports flow that way only: no module imports from a folder after its own (read from the source's
-import statements, lazy ones inside functions included).  ``errors``, ``io``, ``_interrupt``,
+"""The runtime's folders are its pipeline, model → free → forced → maps → identify → report →
+cli, and imports flow that way only: no module imports from a folder after its own (read from the
+source's import statements, lazy ones inside functions included).  ``errors``, ``io``, ``_interrupt``,
 ``_pool`` (local worker processes, for the maps and a curve's multi-start), ``budgets`` (the forced computations' work budgets, which the command line reads without
 importing the forced package), ``export`` and the generated kernels serve every folder and import
 none of them.
@@ -19,7 +19,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 PKG = ROOT / "src" / "symimpact"
-LAYERS = ["model", "free", "forced", "maps", "report", "cli"]
+LAYERS = ["model", "free", "forced", "maps", "identify", "report", "cli"]
 SHARED = {"errors", "io", "_interrupt", "_notices", "_pool", "budgets", "export", "generated"}
 
 

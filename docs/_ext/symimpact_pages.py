@@ -291,6 +291,10 @@ def cli_page() -> str:
     sub = next(a for a in parser._actions if a.__class__.__name__ == "_SubParsersAction")
     for name, p in sub.choices.items():
         out += [f"## `symimpact {name}`", "", "```text", p.format_help().rstrip(), "```", ""]
+        for kinds in (a for a in p._actions if a.__class__.__name__ == "_SubParsersAction"):
+            for kind, q in kinds.choices.items():  # identify's kinds of data
+                out += [f"### `symimpact {name} {kind}`", "", "```text",
+                        q.format_help().rstrip(), "```", ""]  # fmt: skip
     return "\n".join(out)
 
 

@@ -24,6 +24,7 @@ from . import (
     export,
     fit,
     frf,
+    identify,
     loads,
     modes,
     periodic,
@@ -32,11 +33,11 @@ from . import (
     simulate,
     sweep,
 )
-from .common import Parser, apply_engineer_inputs, apply_materials
+from .common import Parser, apply_engineer_inputs, apply_materials, apply_system_file
 
 #: The subcommands, in the order of ``symimpact --help``.
 SUBCOMMANDS = [reproduce, ritz, modes, fit, contact, contact_duration, simulate, periodic, frf, branch, design,
-               loads, export, sweep]  # fmt: skip
+               loads, identify, export, sweep]  # fmt: skip
 
 #: What runs each subcommand (by name, aliases included).
 COMMANDS = {name: run for module in SUBCOMMANDS for name, run in module.COMMANDS.items()}
@@ -63,11 +64,19 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, parser_class=Parser)
     for module in SUBCOMMANDS:
         module.add_parser(sub)
-    for command in sub.choices.values():
-        for action in command._actions:
-            if type(action) is argparse._StoreAction:
-                action.__class__ = _StoreOnce
+    _store_once(parser)
     return parser
+
+
+def _store_once(parser: argparse.ArgumentParser) -> None:
+    """Every option that stores a value, in ``parser`` and its subcommands (``identify
+    impacts`` too), made a :class:`_StoreOnce`."""
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for command in action.choices.values():
+                _store_once(command)
+        elif type(action) is argparse._StoreAction:
+            action.__class__ = _StoreOnce
 
 
 class _StoreOnce(argparse._StoreAction):
@@ -215,9 +224,9 @@ def _refuse_unconverted(ns: argparse.Namespace) -> None:
 #: Options that name a file a command writes, checked before the command computes anything.
 OUTPUT_FILES = ("plot", "csv")
 #: Options that name a file a command reads (an output may not replace one).
-INPUT_FILES = ("structure", "record_file", "psd_file", "fe", "stiffness", "mass")
+INPUT_FILES = ("system", "structure", "record_file", "psd_file", "fe", "stiffness", "mass")
 #: Commands whose --out is a file (a map's table); the others' --out is a folder.
-FILE_OUT = ("sweep", "map", "design")
+FILE_OUT = ("sweep", "map", "design", "identify")
 
 
 def _check_outputs(ns: argparse.Namespace) -> None:
@@ -288,6 +297,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             display.set_display_unit("omega", "Hz")  # the user's unit back
         _refuse_unconverted(ns)
         _check_outputs(ns)
+        apply_system_file(ns, given)
         apply_engineer_inputs(ns, given)
         apply_materials(ns, given)
         COMMANDS[ns.command](ns)

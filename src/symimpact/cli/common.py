@@ -72,6 +72,10 @@ def add_system(
             metavar="Q",
             help=f"{helptext}; default {default!r}" if default else helptext,
         )
+    g.add_argument("--system", default=None, metavar="FILE",
+                   help="the system's parameters from a file (TOML or JSON, keys named as these "
+                   "options: e.g. one 'symimpact identify ... --out' wrote); an option typed on "
+                   "the command line wins over the file")  # fmt: skip
     g.add_argument("--structure", default=None, metavar="FILE",
                    help="the primary as one mode of a structure file (JSON or TOML: a beam, modal "
                    "data or a finite-element model with named points; see 'symimpact modes "
@@ -136,6 +140,64 @@ UNUSED = {
     ("design", "gap"): "design sweeps the clearance: give --gaps, not --gap",
     ("contact-duration", "gap"): "one contact's duration does not depend on the clearance",
 }
+
+
+#: The keys a --system file may hold: the system's options and the contact's.
+SYSTEM_KEYS = (*(f[2:].replace("-", "_") for f, _, _ in SYSTEM_OPTIONS), "contact", "e", "chi",
+               "impactor", "cavity", "impact_speed")  # fmt: skip
+#: Options that say one thing in several ways: one typed on the command line replaces the
+#: file's whole group (``--q-factor 50`` with a file's ``zeta``).
+_ALTERNATIVES = (("C", "zeta", "q_factor", "loss_factor"),)
+
+
+def read_system_file(path: Any) -> dict[str, Any]:
+    """{key: value} of a --system file (TOML by its suffix .toml, else JSON): keys of
+    :data:`SYSTEM_KEYS` (hyphens or underscores), values numbers (SI) or quantity strings."""
+    import tomllib
+
+    from ..errors import ParameterError
+    from ..io import input_text, strict_json
+
+    text = input_text(path, "system")
+    if str(path).lower().endswith(".toml"):
+        try:
+            data: Any = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as err:
+            raise ParameterError("system", f"{str(path)!r} is not TOML ({err})") from None
+    else:
+        data = strict_json(text, "system", str(path))
+    if not isinstance(data, dict):
+        raise ParameterError("system", f"{str(path)!r} must hold a table of parameters")
+    out: dict[str, Any] = {}
+    for key, value in data.items():
+        name = str(key).replace("-", "_")
+        if name not in SYSTEM_KEYS:
+            raise ParameterError("system", f"{key!r} in {str(path)!r} is not a system parameter "
+                                 f"(one of {', '.join(SYSTEM_KEYS)})")  # fmt: skip
+        if isinstance(value, bool) or not isinstance(value, int | float | str):
+            raise ParameterError("system", f"{key!r} in {str(path)!r} must be a number (SI) or a "
+                                 "quantity with units")  # fmt: skip
+        out[name] = value
+    return out
+
+
+def apply_system_file(ns: argparse.Namespace, given: set[str]) -> None:
+    """--system FILE: its parameters in ``ns`` where the command takes them and the command
+    line (``given``) does not already say them; each taken is added to ``given``, so the
+    checks that follow read it as typed."""
+    path = getattr(ns, "system", None)
+    if path is None:
+        return
+    values = read_system_file(path)
+    for key, value in values.items():
+        if not hasattr(ns, key) or key in given or (ns.command, key) in UNUSED:
+            continue
+        if key in ("e", "chi") and getattr(ns, key) is not None:  # typed (their default is None)
+            continue
+        if any(key in group and given & set(group) for group in _ALTERNATIVES):
+            continue
+        setattr(ns, key, value if isinstance(value, str) else repr(value))
+        given.add(key)
 
 
 def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
@@ -381,6 +443,7 @@ def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
     imp = getattr(ns, "impactor", None)
     cav = getattr(ns, "cavity", None)
     speed = getattr(ns, "impact_speed", None)
+    _thornton_restitution(ns)
     material_e = str(getattr(ns, "e", None)).strip().lower() == "material"
     # periodic's --method: closed-form unless named (a structure file shoots, but takes no --e)
     if (
@@ -454,6 +517,28 @@ def apply_materials(ns: argparse.Namespace, given: set[str]) -> None:
         ns.c1 = 0.0 if contact.e >= 1.0 else c1_for_restitution(system, contact.e, speed)
         said.append(f"c1 {ns.c1:.5g} N s/m for {at}")
     _say(ns, said)
+
+
+def _thornton_restitution(ns: argparse.Namespace) -> None:
+    """``--e "thornton 0.05 m/s"``: Thornton's e per impact with a yield speed given (e.g. one
+    'symimpact identify impacts' fitted), the law ``--e material`` takes from the materials
+    (Step 13, Eq. F5): e = 1 up to the yield speed, T(v_y/v) above it."""
+    import re
+
+    from ..errors import ParameterError
+    from ..model.units import positive_float
+
+    found = re.fullmatch(r"\s*thornton\s+(?P<speed>\S.*?)\s*", str(getattr(ns, "e", None)), re.I)
+    if found is None:
+        return
+    if ns.command == "periodic" and getattr(ns, "method", None) in (None, "closed-form"):
+        raise ParameterError("e", "thornton: the closed form (Eq. F3) needs a constant e; "
+                             "--method shooting follows e at each impact")  # fmt: skip
+    if (getattr(ns, "contact", None) or "rigid") != "rigid":
+        raise ParameterError("e", "thornton: applies to rigid impacts (--contact rigid)")
+    from ..forced.contact_law import MaterialRestitution
+
+    ns.e = MaterialRestitution(positive_float("e", found["speed"], "m/s"))
 
 
 def _say(ns: argparse.Namespace, said: list[str]) -> None:
@@ -532,7 +617,8 @@ def add_forcing(p: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--e",
         help="Newton's coefficient of restitution of the rigid law, 0 ≤ e ≤ 1; 'material' with "
-        "--impactor and --cavity: e of the materials at each impact's speed (Step 13)",
+        "--impactor and --cavity: e of the materials at each impact's speed (Step 13); "
+        "'thornton V': the same law with the yield speed V (e.g. from 'symimpact identify')",
         **once,
     )
 

@@ -99,7 +99,8 @@ def add_band(g: Any) -> None:
                    help="the band in Hz (Ω = 2πf)")  # fmt: skip
     g.add_argument("--e", default=None, metavar="E",
                    help="Newton's coefficient of restitution of the rigid law, 0 ≤ e ≤ 1 "
-                   "(design: or a range LOW:HIGH, for a clearance robust to e)")  # fmt: skip
+                   "(design: or a range LOW:HIGH, for a clearance robust to e); 'material' or "
+                   "'thornton V' (yield speed V): Thornton's e at each impact (Step 13)")  # fmt: skip
     g.add_argument("--chi", default=None, metavar="Q",
                    help="Hunt–Crossley damping χ [s/m] of --contact hunt-crossley (Eq. F4)")  # fmt: skip
 

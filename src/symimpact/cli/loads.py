@@ -42,7 +42,8 @@ def _common(p: Any) -> None:
     g.add_argument("--e", default=None, metavar="E",
                    help="Newton's coefficient of restitution of --contact rigid (the default), "
                    "0 ≤ e ≤ 1 (Eq. F2); 'material' with --impactor and --cavity: e of the "
-                   "materials at each impact's speed (Step 13)")  # fmt: skip
+                   "materials at each impact's speed (Step 13); 'thornton V': the same law "
+                   "with the yield speed V")  # fmt: skip
     g.add_argument("--chi", default=None, metavar="Q",
                    help="Hunt–Crossley damping χ [s/m] of --contact hunt-crossley (Eq. F4)")  # fmt: skip
     g.add_argument("--dt", default=None, metavar="Q",

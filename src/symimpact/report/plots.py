@@ -587,3 +587,55 @@ def plot_sine_sweep(sweep: Any, path: str | os.PathLike) -> None:
     fig.tight_layout()
     atomic_savefig(fig, path)
     plt.close(fig)
+
+
+def plot_restitution_fit(data: Any, results: dict[str, Any], law: str,
+                         path: str | os.PathLike) -> None:  # fmt: skip
+    """The restitution identified from single impacts (symimpact.identify.impacts): measured e
+    against the approach speed with the fitted ``law`` (solid) and the other laws (dashed); the
+    residuals of the rebound speed; the profile of each fitted parameter (RSS over its least,
+    the 95 % threshold dotted)."""
+    import numpy as np
+
+    from ..identify.impacts import restitution
+
+    plt = _pyplot()
+    result = results[law]
+    n = len(result.parameters)
+    fig, axes = plt.subplots(1, 2 + n, figsize=(4.2 * (2 + n), 4.0))
+    ax = axes[0]
+    w = np.geomspace(data.v_in.min(), data.v_in.max(), 300)
+    ax.plot(data.v_in, data.v_out / data.v_in, "o", color="k", ms=3, label="measured")
+    for k, r in results.items():
+        ax.plot(
+            w,
+            restitution(k, list(r.values().values()), w),
+            "-" if k == law else "--",
+            lw=1.6 if k == law else 0.9,
+            label=f"{k} (rms {r.residual_rms * 1e3:.3g} mm/s)",
+        )
+    ax.set_xscale("log")
+    ax.set_xlabel("approach speed [m/s]")
+    ax.set_ylabel("coefficient of restitution e [1]")
+    ax.legend(fontsize=8)
+    ax = axes[1]
+    ax.axhline(0.0, color="grey", lw=0.8)
+    ax.plot(data.v_in, result.residuals * 1e3, "o", color="C0", ms=3)
+    ax.set_xscale("log")
+    ax.set_xlabel("approach speed [m/s]")
+    ax.set_ylabel(f"rebound speed, measured − {law} [mm/s]")
+    for ax, (name, p) in zip(axes[2:], result.parameters.items(), strict=True):
+        prof = result.profiles[name]
+        ax.plot(prof[:, 0], prof[:, 1] / result.rss if result.rss > 0 else prof[:, 1], ".-",
+                color="C0", ms=4)  # fmt: skip
+        if result.rss > 0:
+            ax.axhline(result.threshold / result.rss, color="k", ls=":", lw=1,
+                       label="95 % threshold")  # fmt: skip
+        ax.axvline(p.value, color="grey", lw=0.8)
+        ax.xaxis.set_major_locator(plt.MaxNLocator(4))
+        ax.set_xlabel(f"{name} [{p.unit}]")
+        ax.set_ylabel("profile RSS / least RSS")
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
