@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .common import Parser, add_output, emit, wrapped
+from .common import Parser, add_output, add_system, emit, system_from, wrapped
 
 #: The laws in words, for the text.
 _LAW_TEXT = {
@@ -19,7 +19,7 @@ def add_parser(sub: Any) -> None:
     p = sub.add_parser("identify", help="the model's parameters from measurements (impacts), "
                        "with standard errors and 95 % intervals")  # fmt: skip
     kinds = p.add_subparsers(dest="data", required=True, parser_class=Parser,
-                             metavar="{impacts}")  # fmt: skip
+                             metavar="{impacts,decay}")  # fmt: skip
     q = kinds.add_parser(
         "impacts",
         help="the restitution e(v) from single impacts: a CSV of approach and rebound speeds "
@@ -35,15 +35,36 @@ def add_parser(sub: Any) -> None:
                    help="write the identified parameters as a system file (TOML, or JSON by "
                    "the suffix .json) for any command's --system")  # fmt: skip
     add_output(q, plot=True)
+    q = kinds.add_parser(
+        "decay",
+        help="e, ζ and the clearance from a free decay after a tap: a CSV of time and the "
+        "primary's displacement, velocity or acceleration ('time [s]', 'displacement [mm]')",
+    )
+    q.add_argument("file", metavar="FILE.csv",
+                   help="the record, equally spaced from the tap at t = 0, units in the header")  # fmt: skip
+    q.add_argument("--fit", default="e,zeta,gap", metavar="NAMES",
+                   help="what to fit, of e, zeta, gap (comma-separated; the others are given "
+                   "by their options); default e,zeta,gap")  # fmt: skip
+    q.add_argument("--e", default=None, metavar="E",
+                   help="Newton's restitution, if not fitted (0 ≤ e ≤ 1)")  # fmt: skip
+    q.add_argument("--out", metavar="FILE.toml", default=None,
+                   help="write the identified system (M, K, m, ζ, d, e) for any command's "
+                   "--system (TOML, or JSON by the suffix .json)")  # fmt: skip
+    add_system(q, contact=False)
+    # the primary and the ball are the user's: no default stands in for a measured rig
+    q.set_defaults(M=None, K=None, m=None, gap=None)
+    add_output(q, plot=True)
 
 
 def _quantity(value: float | None, unit: str, digits: int = 5) -> str:
     """``value`` (SI ``unit``) as people read it, to ``digits`` significant digits: speeds below
-    1 m/s in mm/s."""
+    1 m/s in mm/s, lengths in mm."""
     if value is None:
         return "open"
     if unit == "m/s" and abs(value) < 1.0:
         return f"{value * 1e3:.{digits}g} mm/s"
+    if unit == "m":
+        return f"{value * 1e3:.{digits}g} mm"
     return f"{value:.{digits}g}" if unit == "1" else f"{value:.{digits}g} {unit}"
 
 
@@ -152,9 +173,130 @@ def _write_csv(ns, data: Any, result: Any) -> None:
     atomic_write(ns.csv, write, "csv")
 
 
+def _decay_system(ns, fitted: list[str]):
+    """The rig's system from the options: M, K (or --fn) and m given; ζ (or C), d and e given
+    unless fitted (a fitted one's option, if given, is ignored: its start is found from the
+    record)."""
+    from ..errors import ParameterError
+
+    for key, flag in (("M", "M"), ("K", "K (or --fn with --M)"), ("m", "m")):
+        if getattr(ns, key) is None:
+            raise ParameterError(key, f"the rig's {key} is needed: give --{flag}")
+    if "zeta" in fitted:
+        ns.C, ns.zeta = None, 0.01  # a placeholder: the fit starts from the record's decrement
+    elif ns.C is None and ns.zeta is None:
+        raise ParameterError("zeta", "give the primary's damping (--zeta, --C, --q-factor) or "
+                             "fit it (--fit ...,zeta)")  # fmt: skip
+    if "gap" in fitted:
+        ns.gap = 1.0  # a placeholder: the fit starts from the record's amplitude
+    elif ns.gap is None:
+        raise ParameterError("gap", "give the clearance --gap or fit it (--fit ...,gap)")
+    if "e" not in fitted and ns.e is None:
+        raise ParameterError("e", "give the restitution --e or fit it (--fit ...,e)")
+    ns.k_hz = ns.k_hz or 1000.0  # rigid impacts: the compliant law is not used
+    return system_from(ns)
+
+
+def run_decay(ns) -> None:
+    """``identify decay FILE.csv``: fit e, ζ, d (those asked for) and the tap's x₀, ẋ₀."""
+    from ..errors import ParameterError
+    from ..identify.decay import FITTABLE, fit_decay, read_decay
+    from ..model.units import si_float
+
+    fitted = [f.strip() for f in str(ns.fit).split(",") if f.strip()]
+    for name in fitted:
+        if name not in FITTABLE:
+            raise ParameterError("fit", f"{name!r} is not one of {', '.join(FITTABLE)}")
+    if not fitted:
+        raise ParameterError("fit", "names nothing to fit")
+    system = _decay_system(ns, fitted)
+    e = 0.5 if "e" in fitted else si_float("e", ns.e)
+    data = read_decay(ns.file)
+    result, response = fit_decay(system, data, fitted, e=e)
+    values = result.values()
+    identified = {"M": system.M, "K": system.K, "m": system.m,
+                  "zeta": values.get("zeta", system.zeta),
+                  "gap": values.get("gap", system.gap), "e": values.get("e", e)}  # fmt: skip
+    if ns.out:
+        _write_decay_system(ns, result, identified)
+    if ns.plot:
+        from ..report.plots import plot_decay_fit
+
+        plot_decay_fit(data, result, response, ns.plot)
+    if ns.csv:
+        _write_decay_csv(ns, data, result)
+    n_imp = int(response.impact_times.size)
+    out = {"kind": "decay", **result.as_dict(), "system": identified,
+           "data": {"samples": int(data.values.size), "dt": data.dt, "quantity": data.quantity},
+           "impacts": n_imp}  # fmt: skip
+    unit = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}[data.quantity]
+    text = [
+        f"decay: {data.values.size} samples of {data.quantity} over "
+        f"{data.dt * (data.values.size - 1):.4g} s; the rig: M {system.M:.5g} kg, K "
+        f"{system.K:.5g} N/m (f_n {system.omega_n / 6.283185307179586:.5g} Hz), m "
+        f"{system.m * 1e3:.5g} g",
+        wrapped(
+            f"fitted: {', '.join(fitted)} and the tap's x0, xdot0 (rigid impacts; the "
+            "ball at rest in the middle of its clearance at t = 0)",
+            "",
+        ),
+        *_parameter_lines(result),
+        f"  {n_imp} impacts in the fitted motion; residual rms "
+        f"{_residual_text(result.residual_rms, unit)} ({result.dof} degrees of freedom)",
+        *(wrapped(f"warning: {w}", "") for w in result.warnings),
+    ]
+    if ns.out:
+        text.append(f"the identified system: --system {ns.out}")
+    emit(ns, out, "\n".join(text))
+
+
+def _residual_text(value: float, unit: str) -> str:
+    if unit == "m":
+        return f"{value * 1e6:.4g} µm"
+    if unit == "m/s":
+        return f"{value * 1e3:.4g} mm/s"
+    return f"{value:.4g} m/s²"
+
+
+def _write_decay_system(ns, result: Any, identified: dict[str, float]) -> None:
+    """The identified rig as a --system file (SI numbers), the fit's intervals in comments."""
+    import json
+
+    from ..io import atomic_write
+
+    if str(ns.out).lower().endswith(".json"):
+        payload = json.dumps(identified, indent=2)
+        atomic_write(ns.out, lambda f: f.write(payload + "\n"), "out")
+        return
+    lines = [f"# identified by 'symimpact identify decay' from {ns.file}"]
+    for p in result.parameters.values():
+        lines.append(f"# {p.name} = {p.value!r} {p.unit}, standard error {p.stderr!r}, "
+                     f"95 % interval [{p.ci95[0]!r}, {p.ci95[1]!r}]")  # fmt: skip
+    lines += [f"{k} = {v!r}" for k, v in identified.items()]
+    atomic_write(ns.out, lambda f: f.write("\n".join(lines) + "\n"), "out")
+
+
+def _write_decay_csv(ns, data: Any, result: Any) -> None:
+    """Per sample: time, measured, fitted, residual (SI, units in the header)."""
+    import csv
+
+    from ..io import atomic_write
+
+    unit = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}[data.quantity]
+
+    def write(f) -> None:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["time [s]", f"{data.quantity} measured [{unit}]",
+                    f"{data.quantity} fitted [{unit}]", f"residual [{unit}]"])  # fmt: skip
+        for t, y, r in zip(data.times, data.values, result.residuals, strict=True):
+            w.writerow([repr(float(t)), repr(float(y)), repr(float(y - r)), repr(float(r))])
+
+    atomic_write(ns.csv, write, "csv")
+
+
 def run(ns) -> None:
     """``identify``: by the kind of data."""
-    {"impacts": run_impacts}[ns.data](ns)
+    {"impacts": run_impacts, "decay": run_decay}[ns.data](ns)
 
 
 #: The subcommands this module runs.

@@ -24,6 +24,7 @@ profile interval, which does not depend on the scale, is exact.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -132,6 +133,9 @@ class Unknown:
     upper: float = math.inf
     log: bool = False
     span: tuple[float, float] | None = None
+    #: A typical magnitude (SI) for a parameter that is not on a log scale and may be near 0
+    #: (an initial displacement): the scale its sensitivity is judged at.
+    scale: float = 0.0
 
     def to_internal(self, value: float) -> float:
         return math.log(value) if self.log else value
@@ -161,10 +165,16 @@ def fit(
     jacobian: Callable[[np.ndarray], np.ndarray],
     unknowns: Sequence[Unknown],
     starts: Sequence[Sequence[float]],
+    tol: float = 1e-15,
+    profiled: Sequence[str] | None = None,
 ) -> Fit:
     """The least-squares fit of ``residual`` (θ ↦ r, SI values θ in the order of ``unknowns``)
     with its Jacobian ``jacobian`` (θ ↦ ∂r/∂θ, n × p), from the best of ``starts`` (each a θ);
-    see the module's text for the errors, intervals and warnings."""
+    see the module's text for the errors, intervals and warnings.  ``tol``: the relative
+    tolerance of the optimum and of the intervals' ends (1e-15: exact Jacobians; a Jacobian
+    of differences is good to ~1e-7, below which a tighter one only costs runs).  ``profiled``:
+    the parameters whose intervals are profiled (default all); the others' (nuisance
+    parameters) are the linearised θ ± t₀.₉₇₅·se."""
     unknowns = list(unknowns)
     p = len(unknowns)
     n = int(np.asarray(residual(np.asarray(starts[0], float))).size)
@@ -189,7 +199,7 @@ def fit(
     for start in starts:
         phi0 = np.clip([u.to_internal(float(s)) for u, s in zip(unknowns, start, strict=True)],
                        *_inside(bounds))  # fmt: skip
-        sol = _solve(r_phi, j_phi, phi0, bounds, range(p))
+        sol = _solve(r_phi, j_phi, phi0, bounds, range(p), tol)
         if best is None or sol[1] < best[1]:
             best = sol
     phi, rss = best
@@ -220,9 +230,24 @@ def fit(
     for i, u in enumerate(unknowns):
         step = sd[i] if i not in undetermined and sd[i] > 0 else 0.1 * max(abs(phi[i]), 1.0)
         seen: dict[float, float] = {float(phi[i]): rss}
-        ends = [_profile_end(r_phi, j_phi, phi, i, bounds, threshold, step, side, seen)
-                for side in (-1.0, 1.0)]  # fmt: skip
+        if profiled is not None and u.name not in profiled:
+            t = math.sqrt(_f_quantile(dof))
+            ends = [float(np.clip(phi[i] + side * t * sd[i], *bounds[:, i])) for side in (-1, 1)]
+        else:
+            ends = [_profile_end(r_phi, j_phi, phi, i, bounds, threshold, step, side, seen, tol)
+                    for side in (-1.0, 1.0)]  # fmt: skip
         profiles[u.name] = np.array([(u.to_value(x), seen[x]) for x in sorted(seen)])
+        for k, side in enumerate((-1.0, 1.0)):
+            jump = _jump(seen, phi[i], side, threshold - rss, step)
+            if jump is not None and ends[k] is not None and i not in undetermined:
+                t = math.sqrt(_f_quantile(dof))
+                ends[k] = float(np.clip(phi[i] + side * t * sd[i], *bounds[:, i]))
+                warnings.append(
+                    f"{u.name}: its profile could not be followed past {u.to_value(jump):.6g} "
+                    "(the least RSS with it held jumps there: the residuals have many basins, "
+                    "e.g. one per sequence of impacts); the 95 % interval's end "
+                    f"{'below' if side < 0 else 'above'} is the linearised one"
+                )  # fmt: skip
         lo, hi = (None if x is None or (x in bounds[:, i] and not u.closes(x)) else u.to_value(x)
                   for x in ends)  # fmt: skip
         if i not in undetermined and (lo is None or hi is None):
@@ -234,13 +259,52 @@ def fit(
     return Fit(params, corr, r, dof, warnings, profiles, threshold)
 
 
+def refine(
+    residual: Callable[[np.ndarray], np.ndarray],
+    jacobian: Callable[[np.ndarray], np.ndarray],
+    unknowns: Sequence[Unknown],
+    start: Sequence[float],
+    tol: float = 1e-15,
+) -> tuple[np.ndarray, float]:
+    """The least-squares optimum θ (SI) reached from ``start`` and its RSS, without the errors
+    and intervals of :func:`fit` (a stage of a fit that continues, e.g. over a growing record)."""
+    unknowns = list(unknowns)
+    bounds = np.array([u.internal_bounds() for u in unknowns]).T
+    n = int(np.asarray(residual(np.asarray(start, float))).size)
+
+    def theta(phi):
+        return np.array([u.to_value(x) for u, x in zip(unknowns, phi, strict=True)])
+
+    def chain(phi):
+        return np.array([math.exp(x) if u.log else 1.0 for u, x in zip(unknowns, phi, strict=True)])
+
+    phi0 = np.clip([u.to_internal(float(s)) for u, s in zip(unknowns, start, strict=True)],
+                   *_inside(bounds))  # fmt: skip
+    phi, rss = _solve(lambda f: np.asarray(residual(theta(f)), float),
+                      lambda f: np.asarray(jacobian(theta(f)), float).reshape(n, -1) * chain(f),
+                      phi0, bounds, range(len(unknowns)), tol)  # fmt: skip
+    return theta(phi), rss
+
+
+def _jump(seen: dict[float, float], centre: float, side: float, allowance: float,
+          step: float) -> float | None:  # fmt: skip
+    """Where the profile points ``seen`` on ``side`` of ``centre`` rise by more than half the
+    ``allowance`` (threshold − least RSS) within 1e-3 of ``step``: a discontinuity of the model,
+    not the data's verdict (None if there is none)."""
+    xs = sorted((x for x in seen if (x - centre) * side >= 0), key=lambda x: abs(x - centre))
+    for a, b in itertools.pairwise(xs):
+        if abs(b - a) < 1e-3 * step and seen[b] - seen[a] > 0.5 * allowance:
+            return b
+    return None
+
+
 def _inside(bounds: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Bounds for a start: the open interval's inside (least_squares needs a feasible start)."""
     lo, hi = bounds
     return np.where(np.isfinite(lo), lo, -np.inf), np.where(np.isfinite(hi), hi, np.inf)
 
 
-def _solve(r_phi, j_phi, phi0, bounds, free) -> tuple[np.ndarray, float]:
+def _solve(r_phi, j_phi, phi0, bounds, free, tol=1e-15) -> tuple[np.ndarray, float]:
     """Minimise the RSS over the ``free`` internal parameters, the others held at ``phi0``'s."""
     from scipy.optimize import least_squares
 
@@ -262,7 +326,7 @@ def _solve(r_phi, j_phi, phi0, bounds, free) -> tuple[np.ndarray, float]:
     lo, hi = bounds[0][free], bounds[1][free]
     x0 = np.clip(phi0[free], lo, hi)
     sol = least_squares(r_free, x0, jac=j_free, bounds=(lo, hi), method="trf", x_scale="jac",
-                        xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=2000)  # fmt: skip
+                        xtol=tol, ftol=tol, gtol=tol, max_nfev=2000)  # fmt: skip
     phi = phi0.copy()
     phi[free] = sol.x
     r = r_phi(phi)
@@ -273,7 +337,7 @@ def _covariance(jac, phi, unknowns, s2) -> tuple[np.ndarray, list[int]]:
     """s²·(JᵀJ)⁺ in the internal parameters, and the parameters in directions J does not see."""
     p = jac.shape[1]
     scale = np.array(
-        [1.0 if u.log else max(abs(x), 1e-300) for u, x in zip(unknowns, phi, strict=True)]
+        [1.0 if u.log else max(abs(x), u.scale, 1e-300) for u, x in zip(unknowns, phi, strict=True)]
     )
     js = jac * scale  # each parameter relative to its value (log ones already are)
     _, sv, vt = np.linalg.svd(js, full_matrices=False)
@@ -289,27 +353,39 @@ def _f_quantile(dof: int) -> float:
     return float(f.ppf(LEVEL, 1, dof))
 
 
-def _profile_end(r_phi, j_phi, phi, i, bounds, threshold, step, side, seen) -> float | None:
+def _profile_end(r_phi, j_phi, phi, i, bounds, threshold, step, side, seen,
+                 tol=1e-15) -> float | None:  # fmt: skip
     """Where the profile RSS of internal parameter ``i`` reaches ``threshold`` on ``side`` of
-    ``phi[i]`` (None if it stays below it up to the bound or for 60 doublings); every point
+    ``phi[i]`` (None if it stays below it up to the bound or for 90 steps); every point
     evaluated is put in ``seen`` {internal value: profile RSS}."""
     from scipy.optimize import brentq
 
     others = [k for k in range(phi.size) if k != i]
-    start = phi.copy()
+    solved = {float(phi[i]): phi.copy()}  # internal value → the others' optimum there
     lo_b, hi_b = bounds[0][i], bounds[1][i]
     limit = lo_b if side < 0 else hi_b
 
     def excess(x: float) -> float:
-        trial = start.copy()
-        trial[i] = x
-        sol, rss = _solve(r_phi, j_phi, trial, bounds, others)
-        start[others] = sol[others]  # warm start of the next point
-        seen[float(x)] = rss
-        return rss - threshold
+        x = float(x)
+        if x in seen:  # evaluated once: the profile by local minimisation depends on its
+            return seen[x] - threshold  # start, so a bracket keeps its signs
+        # started from the nearest point solved, and from the optimum: the least of the two
+        # (on a landscape of basins, as a decay's, a far start lands in another basin)
+        best = None
+        for near in {min(solved, key=lambda k: abs(k - x)), float(phi[i])}:
+            trial = solved[near].copy()
+            trial[i] = x
+            sol, rss = _solve(r_phi, j_phi, trial, bounds, others, tol)
+            if best is None or rss < best[1]:
+                best = sol, rss
+        solved[x], seen[x] = best
+        return best[1] - threshold
 
-    inner, h = phi[i], step
-    for _ in range(60):
+    # out from the optimum in steps of a quarter standard error, each 1.5 times the last (the
+    # interval's end is near 2 standard errors where the model is near linear), each point
+    # started from the last: the valley of the profile followed, not jumped across
+    inner, h = phi[i], 0.25 * step
+    for _ in range(90):
         outer = phi[i] + side * h
         at_bound = (side < 0 and outer <= limit) or (side > 0 and outer >= limit)
         if at_bound:
@@ -319,7 +395,10 @@ def _profile_end(r_phi, j_phi, phi, i, bounds, threshold, step, side, seen) -> f
             break
         if excess(outer) > 0:
             break
-        inner, h = outer, 2.0 * h
+        inner, h = outer, 1.5 * h
     else:
         return None
-    return float(brentq(excess, min(inner, outer), max(inner, outer), xtol=1e-14, rtol=4e-15))
+    if excess(inner) >= 0.0:  # an exact fit (RSS ≈ 0): the threshold is at the optimum's noise
+        return float(inner)
+    return float(brentq(excess, min(inner, outer), max(inner, outer), xtol=1e-14,
+                        rtol=max(4e-15, tol)))  # fmt: skip

@@ -639,3 +639,43 @@ def plot_restitution_fit(data: Any, results: dict[str, Any], law: str,
     fig.tight_layout()
     atomic_savefig(fig, path)
     plt.close(fig)
+
+
+def plot_decay_fit(data: Any, result: Any, response: Any, path: str | os.PathLike) -> None:
+    """A free decay and the model fitted to it (symimpact.identify.decay): the record and the
+    fitted motion with its impacts marked, the residuals below, and each fitted parameter's
+    profile (RSS over its least, the 95 % threshold dotted)."""
+    plt = _pyplot()
+    scale, unit = {"displacement": (1e3, "mm"), "velocity": (1e3, "mm/s"),
+                   "acceleration": (1.0, "m/s²")}[data.quantity]  # fmt: skip
+    names = [k for k in result.parameters if k not in ("x0", "xdot0")]
+    fig = plt.figure(figsize=(11, 7))
+    grid = fig.add_gridspec(3, max(len(names), 1))
+    ax1 = fig.add_subplot(grid[0, :])
+    t = data.times
+    ax1.plot(t, data.values * scale, color="0.6", lw=2.2, label="measured")
+    ax1.plot(t, (data.values - result.residuals) * scale, color="C0", lw=0.9, label="fitted")
+    for k, ti in enumerate(response.impact_times):
+        ax1.axvline(ti, color="C3", lw=0.5, alpha=0.5, label=None if k else "impacts (fitted)")
+    ax1.set_ylabel(f"{data.quantity} [{unit}]")
+    ax1.legend(fontsize=8, ncol=3)
+    ax2 = fig.add_subplot(grid[1, :], sharex=ax1)
+    ax2.plot(t, result.residuals * scale, color="C0", lw=0.7)
+    ax2.axhline(0.0, color="grey", lw=0.8)
+    ax2.set_xlabel("t [s]")
+    ax2.set_ylabel(f"measured − fitted [{unit}]")
+    for k, name in enumerate(names):
+        ax = fig.add_subplot(grid[2, k])
+        p, prof = result.parameters[name], result.profiles[name]
+        ax.plot(prof[:, 0], prof[:, 1] / result.rss if result.rss > 0 else prof[:, 1], ".",
+                color="C0", ms=3)  # fmt: skip
+        if result.rss > 0:
+            ax.axhline(result.threshold / result.rss, color="k", ls=":", lw=1)
+        ax.axvline(p.value, color="grey", lw=0.8)
+        ax.xaxis.set_major_locator(plt.MaxNLocator(3))
+        ax.set_xlabel(f"{name} [{p.unit}]")
+        if k == 0:
+            ax.set_ylabel("profile RSS / least")
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
