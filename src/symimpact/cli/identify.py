@@ -17,7 +17,7 @@ _LAW_TEXT = {
 def add_parser(sub: Any) -> None:
     """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
     p = sub.add_parser("identify", help="the model's parameters from measurements (impacts), "
-                       "with standard errors and 95 % intervals")  # fmt: skip
+                       "with standard errors and 95 %% intervals")  # fmt: skip
     kinds = p.add_subparsers(dest="data", required=True, parser_class=Parser,
                              metavar="{impacts,decay}")  # fmt: skip
     q = kinds.add_parser(
