@@ -14,7 +14,7 @@ with the parameters' bounds):
   that is not symmetric, or reaches a bound);
 * **identifiability**: a direction of θ along which the residuals do not change (a singular
   value of J below 1e-8 of the largest, each parameter scaled by its value) leaves the
-  parameters in it undetermined; two parameters correlated beyond |ρ| = 0.99 are determined
+  parameters in it undetermined; two parameters correlated beyond ρ = ±0.99 are determined
   only together.  Each is said in one warning.
 
 A parameter may be fitted on a log scale (``log=True``: positive, spanning decades); its
