@@ -90,6 +90,9 @@ def test_the_command_fits_and_writes_the_rig(tmp_path, capsys):
     assert code == 0
     assert got["parameters"]["gap"]["value"] == pytest.approx(GAP, rel=1e-6)
     assert got["system"]["e"] == pytest.approx(E, rel=1e-6)
+    from symimpact.cli.common import read_uncertainty
+
+    assert read_uncertainty(out)["names"] == ["e", "zeta", "gap"]  # for frf --propagate
     code = main(["simulate", "--system", str(out), "--contact", "rigid", "--force", "1 N",
                  "--omega", "30", "--periods", "3", "--json"])  # fmt: skip
     sim = json.loads(capsys.readouterr().out)

@@ -170,6 +170,8 @@ def read_system_file(path: Any) -> dict[str, Any]:
         raise ParameterError("system", f"{str(path)!r} must hold a table of parameters")
     out: dict[str, Any] = {}
     for key, value in data.items():
+        if key == "uncertainty":  # the fitted parameters' covariance (read_uncertainty)
+            continue
         name = str(key).replace("-", "_")
         if name not in SYSTEM_KEYS:
             raise ParameterError("system", f"{key!r} in {str(path)!r} is not a system parameter "
@@ -181,6 +183,44 @@ def read_system_file(path: Any) -> dict[str, Any]:
     return out
 
 
+def read_uncertainty(path: Any) -> dict[str, Any] | None:
+    """The ``[uncertainty]`` table of a --system file ('symimpact identify decay --out' writes
+    it): ``names`` (system keys), ``values`` and ``covariance`` (SI) of the fitted parameters,
+    checked (a symmetric covariance with a non-negative diagonal); None if the file has none."""
+    import tomllib
+
+    import numpy as np
+
+    from ..errors import ParameterError
+    from ..io import input_text, strict_json
+
+    text = input_text(path, "system")
+    data: Any = (tomllib.loads(text) if str(path).lower().endswith(".toml")
+                 else strict_json(text, "system", str(path)))  # fmt: skip
+    table = data.get("uncertainty") if isinstance(data, dict) else None
+    if table is None:
+        return None
+    try:
+        names = [str(n) for n in table["names"]]
+        values = np.array(table["values"], dtype=float)
+        cov = np.array(table["covariance"], dtype=float)
+    except (KeyError, TypeError, ValueError):
+        raise ParameterError("system", f"{str(path)!r}: [uncertainty] needs names, values and "
+                             "covariance (numbers, SI)") from None  # fmt: skip
+    k = len(names)
+    if (
+        any(n not in SYSTEM_KEYS for n in names)
+        or values.shape != (k,)
+        or cov.shape != (k, k)
+        or not np.all(np.isfinite(cov))
+        or not np.allclose(cov, cov.T, rtol=1e-9, atol=0.0)
+        or np.any(np.diag(cov) < 0)
+    ):
+        raise ParameterError("system", f"{str(path)!r}: [uncertainty] must name system "
+                             "parameters with one value each and a symmetric k × k covariance")  # fmt: skip
+    return {"names": names, "values": values, "covariance": cov}
+
+
 def apply_system_file(ns: argparse.Namespace, given: set[str]) -> None:
     """--system FILE: its parameters in ``ns`` where the command takes them and the command
     line (``given``) does not already say them; each taken is added to ``given``, so the
@@ -189,6 +229,7 @@ def apply_system_file(ns: argparse.Namespace, given: set[str]) -> None:
     if path is None:
         return
     values = read_system_file(path)
+    taken = []
     for key, value in values.items():
         if not hasattr(ns, key) or key in given or (ns.command, key) in UNUSED:
             continue
@@ -198,6 +239,8 @@ def apply_system_file(ns: argparse.Namespace, given: set[str]) -> None:
             continue
         setattr(ns, key, value if isinstance(value, str) else repr(value))
         given.add(key)
+        taken.append(key)
+    ns.system_taken = taken  # the keys the file gave (its uncertainty applies to these only)
 
 
 def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:

@@ -103,6 +103,11 @@ def add_band(g: Any) -> None:
                    "'thornton V' (yield speed V): Thornton's e at each impact (Step 13)")  # fmt: skip
     g.add_argument("--chi", default=None, metavar="Q",
                    help="Hunt–Crossley damping χ [s/m] of --contact hunt-crossley (Eq. F4)")  # fmt: skip
+    g.add_argument("--propagate", default=None, type=int, metavar="N",
+                   help="with --system FILE holding the fit's [uncertainty] ('symimpact "
+                   "identify decay --out'): the curve at N draws of the identified parameters "
+                   "(e, ζ, d), and the peak's median and the interval of the middle 95 %% of "
+                   "the draws")  # fmt: skip
 
 
 def band_from(ns) -> Any:
@@ -288,6 +293,9 @@ def run(ns) -> None:
 
         frf = response_curve(frf, response, system, forcing, e)
     out = frf.as_dict()
+    spread = _propagated(ns, system, forcing, e, omegas, multistart)
+    if spread is not None:
+        out["propagated"] = spread.as_dict()
     if ns.csv:
         write_csv(ns.csv, "csv", out["points"])
     if ns.plot:
@@ -328,12 +336,53 @@ def run(ns) -> None:
         lines.append(f"no impact (the impact mass at rest midway, the primary alone) for Ω {spans} "
                      f"{ou}; it grazes a wall at Ω "
                      + (f"{grazes} {ou}" if grazes else "nowhere in the band"))  # fmt: skip
-    lines = peak_lines(frf) + lines + coverage_lines(frf)
+    lines = peak_lines(frf) + _spread_lines(ns, spread) + lines + coverage_lines(frf)
     ou = display_unit("omega")
     for reason, ws in frf.note_omegas:
         at = ", ".join(f"{shown('omega', w):.4g}" for w in ws)
         lines.append(f"note: {reason} (at Ω {at} {ou})" if ws else f"note: {reason}")
     emit(ns, out, "\n".join(lines))
+
+
+def _propagated(ns, system, forcing, e, omegas, multistart):
+    """--propagate N: the peak over N draws of the parameters the --system file identified
+    (symimpact.identify.propagation), or None without the option."""
+    if ns.propagate is None:
+        return None
+    import numpy as np
+
+    from ..errors import ParameterError
+    from ..forced.contact_law import is_constant
+    from ..identify.propagation import VARIED, parameter_draws, peak_spread
+    from .common import read_uncertainty
+    from .loads import count
+
+    n = count("propagate", ns.propagate, 2, 10_000)
+    unc = None if ns.system is None else read_uncertainty(ns.system)
+    if unc is None:
+        raise ParameterError("propagate", "needs --system FILE with the fit's [uncertainty] "
+                             "(written by 'symimpact identify decay --out')")  # fmt: skip
+    taken = set(getattr(ns, "system_taken", ()))
+    keep = [i for i, k in enumerate(unc["names"]) if k in VARIED and k in taken
+            and (k != "e" or is_constant(e))]  # fmt: skip
+    if not keep:
+        raise ParameterError("propagate", "the command line gives every parameter the file "
+                             "identified: nothing uncertain is left to vary")  # fmt: skip
+    names = [unc["names"][i] for i in keep]
+    draws = parameter_draws(names, unc["values"][keep], unc["covariance"][np.ix_(keep, keep)], n)
+    return peak_spread(system, forcing, e, omegas, names, draws, sweeps=not ns.no_sweeps,
+                       folds=ns.folds, embedded=ns.embedded, workers=ns.workers,
+                       multistart=multistart)  # fmt: skip
+
+
+def _spread_lines(ns, spread) -> list[str]:
+    if spread is None:
+        return []
+    lo, hi = spread.ci95
+    return [f"peak over the identified {', '.join(spread.names)} ({spread.peaks.size} draws from "
+            f"{ns.system}, seed {spread.seed}): median {response_text('displacement', spread.median)}"
+            f", 95 % of the draws within {response_text('displacement', lo, unit=False)}–"
+            f"{response_text('displacement', hi)}"]  # fmt: skip
 
 
 def _origin_text(branch) -> str:

@@ -264,8 +264,9 @@ def _write_decay_system(ns, result: Any, identified: dict[str, float]) -> None:
 
     from ..io import atomic_write
 
+    unc = _uncertainty(result)
     if str(ns.out).lower().endswith(".json"):
-        payload = json.dumps(identified, indent=2)
+        payload = json.dumps({**identified, **({"uncertainty": unc} if unc else {})}, indent=2)
         atomic_write(ns.out, lambda f: f.write(payload + "\n"), "out")
         return
     lines = [f"# identified by 'symimpact identify decay' from {ns.file}"]
@@ -273,7 +274,29 @@ def _write_decay_system(ns, result: Any, identified: dict[str, float]) -> None:
         lines.append(f"# {p.name} = {p.value!r} {p.unit}, standard error {p.stderr!r}, "
                      f"95 % interval [{p.ci95[0]!r}, {p.ci95[1]!r}]")  # fmt: skip
     lines += [f"{k} = {v!r}" for k, v in identified.items()]
+    if unc:
+        lines += ["", "# the fitted parameters' covariance (SI), for frf --propagate N",
+                  "[uncertainty]", f"names = {json.dumps(unc['names'])}",
+                  f"values = {unc['values']!r}",
+                  "covariance = [" + ", ".join(repr(r) for r in unc["covariance"]) + "]"]  # fmt: skip
     atomic_write(ns.out, lambda f: f.write("\n".join(lines) + "\n"), "out")
+
+
+def _uncertainty(result: Any) -> dict[str, Any] | None:
+    """The fitted system parameters' values and covariance (SI), Cov = ρ·se·seᵀ, for a system
+    file's [uncertainty]; None if one of them is not determined."""
+    import numpy as np
+
+    from ..identify.decay import FITTABLE
+
+    names = [k for k in result.parameters if k in FITTABLE]
+    idx = [list(result.parameters).index(k) for k in names]
+    se = np.array([result.parameters[k].stderr or np.nan for k in names])
+    cov = result.correlation[np.ix_(idx, idx)] * np.outer(se, se)
+    if not names or not np.all(np.isfinite(cov)):
+        return None
+    return {"names": names, "values": [result.parameters[k].value for k in names],
+            "covariance": [[float(x) for x in row] for row in cov]}  # fmt: skip
 
 
 def _write_decay_csv(ns, data: Any, result: Any) -> None:

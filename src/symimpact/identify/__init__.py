@@ -3,7 +3,8 @@
 - :mod:`.least_squares` — the fit every identification shares: standard errors, 95 % profile
   intervals, correlation and identifiability warnings;
 - :mod:`.impacts` — the restitution e(v) from single impacts (speeds or drop heights);
-- :mod:`.decay` — e, ζ and the clearance from a free decay after a tap.
+- :mod:`.decay` — e, ζ and the clearance from a free decay after a tap;
+- :mod:`.propagation` — their uncertainty carried into the curve's peak.
 """
 
 from .impacts import LAWS, Impacts, fall_speed, fit_restitution, read_impacts, restitution
