@@ -222,9 +222,10 @@ def hermite_beam(support: str, n_el: int = N_EL):
 def flights_with_impacts(rhs, s, t, t_end, h, e, M, m, marks=()):
     """Brute force of a primary M with an impact mass m in a clearance 2h under ``rhs(t, w)``
     (w = x, ẋ, y, ẏ; any frame both share): DOP853 (rtol 1e-12) from ``s`` at ``t`` to ``t_end``,
-    each impact (abs(y − x) = h) a terminal event with Newton's law (Eq. F2, restitution ``e``)
-    applied there.  Returns (the state at t_end, the impact times, the states at ``marks``, an
-    increasing sequence of times in [t, t_end], from the dense output)."""
+    each impact (abs(y − x) = h) a terminal event with Newton's law (Eq. F2, restitution ``e``,
+    or ``e(approach speed)`` if callable) applied there.  Returns (the state at t_end, the
+    impact times, the states at ``marks``, an increasing sequence of times in [t, t_end], from
+    the dense output)."""
     mu = M * m / (M + m)
 
     def upper(_, w):
@@ -245,6 +246,7 @@ def flights_with_impacts(rhs, s, t, t_end, h, e, M, m, marks=()):
         if sol.status == 1:
             hits.append(t)
             v, u = s[1], s[3]
-            s[1] = v + (1 + e) * mu / M * (u - v)
-            s[3] = u - (1 + e) * mu / m * (u - v)
+            r = e(abs(u - v)) if callable(e) else e  # e(v) of the approach speed, or one e
+            s[1] = v + (1 + r) * mu / M * (u - v)
+            s[3] = u - (1 + r) * mu / m * (u - v)
     return s, hits, np.array(out)

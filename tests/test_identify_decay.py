@@ -115,3 +115,29 @@ def test_bad_decay_input_is_refused_in_one_line(tmp_path, capsys, argv, words):
     code = main(["identify", "decay", str(csv), *argv])
     err = capsys.readouterr().err
     assert code == 2 and words in err and len(err.strip().splitlines()) == 1
+
+
+def test_thorntons_yield_speed_from_a_decay():
+    """Impacts by Thornton's e(v) (typed from his paper, in mpmath, tests/test_identify_impacts)
+    with v_y = 20 mm/s: the fit of the law's one parameter gives it back, with ζ and d (1e-7,
+    as above)."""
+    from test_identify_impacts import _thornton_mp
+
+    from symimpact.forced.contact_law import MaterialRestitution
+
+    c = 2 * ZETA * np.sqrt(K * M)
+
+    def rhs(_, w):
+        return [w[1], -(K * w[0] + c * w[1]) / M, w[3], 0.0]
+
+    dt, n = 1e-3, 1000
+    marks = list(dt * np.arange(n))
+    _, _, out = flights_with_impacts(rhs, [0.0, V0, 0.0, 0.0], 0.0, marks[-1] + 1e-9, GAP / 2,
+                                     lambda w: _thornton_mp(0.02, w), M, m, marks=marks)  # fmt: skip
+    result, _ = fit_decay(_rig(), Decay(out[:, 0], dt, "displacement"),
+                                 e=MaterialRestitution(0.1))  # fmt: skip
+    got = result.values()
+    assert set(got) == {"yield_speed", "zeta", "gap", "x0", "xdot0"}
+    assert got["yield_speed"] == pytest.approx(0.02, rel=1e-7)
+    assert got["zeta"] == pytest.approx(ZETA, rel=1e-7)
+    assert got["gap"] == pytest.approx(GAP, rel=1e-7)

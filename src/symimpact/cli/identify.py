@@ -46,7 +46,8 @@ def add_parser(sub: Any) -> None:
                    help="what to fit, of e, zeta, gap (comma-separated; the others are given "
                    "by their options); default e,zeta,gap")  # fmt: skip
     q.add_argument("--e", default=None, metavar="E",
-                   help="Newton's restitution, if not fitted (0 ≤ e ≤ 1)")  # fmt: skip
+                   help="Newton's restitution if not fitted (0 ≤ e ≤ 1); or 'thornton V': "
+                   "Thornton's e(v) with the yield speed V, which --fit e then fits (from V)")  # fmt: skip
     q.add_argument("--out", metavar="FILE.toml", default=None,
                    help="write the identified system (M, K, m, ζ, d, e) for any command's "
                    "--system (TOML, or JSON by the suffix .json)")  # fmt: skip
@@ -209,14 +210,22 @@ def run_decay(ns) -> None:
             raise ParameterError("fit", f"{name!r} is not one of {', '.join(FITTABLE)}")
     if not fitted:
         raise ParameterError("fit", "names nothing to fit")
+    from ..forced.contact_law import MaterialRestitution
+
     system = _decay_system(ns, fitted)
-    e = 0.5 if "e" in fitted else si_float("e", ns.e)
+    if isinstance(ns.e, MaterialRestitution):  # --e 'thornton V'
+        e = ns.e
+    else:
+        e = 0.5 if "e" in fitted and ns.e is None else si_float("e", ns.e)
     data = read_decay(ns.file)
     result, response = fit_decay(system, data, fitted, e=e)
     values = result.values()
+    restitution: Any = values.get("e", e)
+    if isinstance(e, MaterialRestitution):  # the law as --e takes it
+        restitution = f"thornton {values.get('yield_speed', e.yield_speed)!r} m/s"
     identified = {"M": system.M, "K": system.K, "m": system.m,
                   "zeta": values.get("zeta", system.zeta),
-                  "gap": values.get("gap", system.gap), "e": values.get("e", e)}  # fmt: skip
+                  "gap": values.get("gap", system.gap), "e": restitution}  # fmt: skip
     if ns.out:
         _write_decay_system(ns, result, identified)
     if ns.plot:
@@ -236,8 +245,8 @@ def run_decay(ns) -> None:
         f"{system.K:.5g} N/m (f_n {system.omega_n / 6.283185307179586:.5g} Hz), m "
         f"{system.m * 1e3:.5g} g",
         wrapped(
-            f"fitted: {', '.join(fitted)} and the tap's x0, xdot0 (rigid impacts; the "
-            "ball at rest in the middle of its clearance at t = 0)",
+            f"fitted: {', '.join(_fitted_text(fitted, e))} and the tap's x0, xdot0 (rigid "
+            "impacts; the ball at rest in the middle of its clearance at t = 0)",
             "",
         ),
         *_parameter_lines(result),
@@ -248,6 +257,14 @@ def run_decay(ns) -> None:
     if ns.out:
         text.append(f"the identified system: --system {ns.out}")
     emit(ns, out, "\n".join(text))
+
+
+def _fitted_text(fitted: list[str], e: Any) -> list[str]:
+    """The fitted parameters in words: e by Thornton's law is its yield speed."""
+    from ..forced.contact_law import MaterialRestitution
+
+    thornton = isinstance(e, MaterialRestitution)
+    return ["Thornton's yield speed" if k == "e" and thornton else k for k in fitted]
 
 
 def _residual_text(value: float, unit: str) -> str:
@@ -273,7 +290,8 @@ def _write_decay_system(ns, result: Any, identified: dict[str, float]) -> None:
     for p in result.parameters.values():
         lines.append(f"# {p.name} = {p.value!r} {p.unit}, standard error {p.stderr!r}, "
                      f"95 % interval [{p.ci95[0]!r}, {p.ci95[1]!r}]")  # fmt: skip
-    lines += [f"{k} = {v!r}" for k, v in identified.items()]
+    lines += [f"{k} = {json.dumps(v) if isinstance(v, str) else repr(v)}"
+              for k, v in identified.items()]  # fmt: skip
     if unc:
         lines += ["", "# the fitted parameters' covariance (SI), for frf --propagate N",
                   "[uncertainty]", f"names = {json.dumps(unc['names'])}",

@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParameterError
-from ..forced.loads.record_response import damper_response
+from ..forced.loads.record_response import TooManyImpacts, damper_response
 from ..forced.loads.records import Record, unit_columns
 from ..model.system import ImpactSystem
 from ..model.units import si_float
@@ -35,6 +35,11 @@ from .least_squares import Fit, Unknown, fit, refine
 #: The parameters a decay can fit (named as the options they replace) and the nuisance ones.
 FITTABLE = ("e", "zeta", "gap")
 NUISANCE = ("x0", "xdot0")
+#: Impacts a trial of the fit may take before it is judged a motion no record shows (Thornton's
+#: law does not take chatter to its limit: a trial yield speed far below the record's speeds
+#: makes sequences of millions of ever-smaller impacts); such a trial's residual is the record
+#: itself ten times over, which the fit leaves.
+MAX_EVENTS = 100_000
 #: The quantities a record may hold, by their SI unit.
 QUANTITIES = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}
 
@@ -88,7 +93,8 @@ def simulated_decay(system: ImpactSystem, e: Any, n: int, dt: float, x0: float,
     """The model: ``system`` released from x₀, ẋ₀ with its impact mass at rest in the middle of
     the clearance, ``n`` samples ``dt`` apart, no load (see the module's text)."""
     record = Record(np.zeros(n), dt, "force")
-    return damper_response(system, record, e=e, x0=x0, xdot0=xdot0, y0=x0, ydot0=0.0)
+    return damper_response(system, record, e=e, x0=x0, xdot0=xdot0, y0=x0, ydot0=0.0,
+                           max_events=MAX_EVENTS)  # fmt: skip
 
 
 def _modelled(response: Any, quantity: str) -> np.ndarray:
@@ -132,17 +138,23 @@ def fit_decay(
     fitted: Sequence[str] = FITTABLE,
     e: Any = 0.5,
 ) -> tuple[Fit, Any]:
-    """``fitted`` (a subset of :data:`FITTABLE`: Newton's e, the primary's ζ, the clearance d)
-    and the tap's x₀, ẋ₀ fitted to the record ``data`` of ``system``'s primary with its damper;
-    the others (M, K, m, and whichever of e, ζ, d are not fitted) are ``system``'s and ``e``'s.
+    """``fitted`` (a subset of :data:`FITTABLE`: the restitution, the primary's ζ, the clearance
+    d) and the tap's x₀, ẋ₀ fitted to the record ``data`` of ``system``'s primary with its
+    damper; the others (M, K, m, and whichever of e, ζ, d are not fitted) are ``system``'s and
+    ``e``'s.  ``e`` a number: Newton's e (its start, if fitted); a
+    :class:`~symimpact.forced.contact_law.MaterialRestitution`: Thornton's e(v) (Step 13, Eq.
+    F5), whose yield speed is then what "e" in ``fitted`` fits (named ``yield_speed``).
     Returns the fit and the fitted model's response (its impacts, its motion)."""
+    from ..forced.contact_law import MaterialRestitution
+
+    thornton = isinstance(e, MaterialRestitution)
     fitted = list(dict.fromkeys(fitted))
     for name in fitted:
         if name not in FITTABLE:
             raise ParameterError("fit", f"{name!r} is not a parameter a decay fits (one of "
                                  f"{', '.join(FITTABLE)})")  # fmt: skip
-    e0 = float(e)
-    if not 0.0 <= e0 <= 1.0:
+    e0 = e if thornton else float(e)
+    if not thornton and not 0.0 <= e0 <= 1.0:
         raise ParameterError("e", f"must lie in [0, 1], got {e0:g}")
     n, dt = data.values.size, data.dt
     zeta0 = system.zeta if "zeta" not in fitted else _zeta_start(system, data)
@@ -150,6 +162,8 @@ def fit_decay(
     amplitude = math.hypot(x0, v0 / system.omega_n)
     if amplitude <= 0.0:
         raise ParameterError("decay", "the record does not move: nothing to fit")
+    # Thornton's law: its one parameter, the yield speed, is what fitting the restitution fits
+    fitted = ["yield_speed" if thornton and k == "e" else k for k in fitted]
     names = [*fitted, *NUISANCE]
 
     def unpack(theta: np.ndarray) -> tuple[ImpactSystem, float, float, float]:
@@ -160,6 +174,8 @@ def fit_decay(
         if "gap" in p:
             changes["gap"] = p["gap"]
         s = system.with_(**changes) if changes else system
+        if "yield_speed" in p:
+            return s, MaterialRestitution(p["yield_speed"]), p["x0"], p["xdot0"]
         return s, p.get("e", e0), p["x0"], p["xdot0"]
 
     def problem(k: int):
@@ -167,7 +183,11 @@ def fit_decay(
 
         def residual(theta: np.ndarray) -> np.ndarray:
             s, e_, x, v = unpack(theta)
-            return data.values[:k] - _modelled(simulated_decay(s, e_, k, dt, x, v), data.quantity)
+            try:
+                model = _modelled(simulated_decay(s, e_, k, dt, x, v), data.quantity)
+            except TooManyImpacts:
+                return np.full(k, 10.0 * float(np.abs(data.values).max()))
+            return data.values[:k] - model
 
         def jacobian(theta: np.ndarray) -> np.ndarray:
             cols = []
@@ -183,18 +203,22 @@ def fit_decay(
 
         return residual, jacobian
 
-    scales = {"e": 1.0, "zeta": None, "gap": None, "x0": amplitude,
+    speed = amplitude * system.omega_n  # the tap's speed: the fastest approach
+    scales = {"e": 1.0, "zeta": None, "gap": None, "yield_speed": None, "x0": amplitude,
               "xdot0": amplitude * system.omega_n}  # fmt: skip
     unknowns = [{
         "e": Unknown("e", "1", 0.0, 1.0),
         "zeta": Unknown("zeta", "1", 0.0, 0.99, log=True, span=(1e-7, 0.9)),
         "gap": Unknown("gap", "m", 0.0, math.inf, log=True,
                        span=(1e-3 * amplitude, 100.0 * amplitude)),
+        "yield_speed": Unknown("yield_speed", "m/s", 0.0, math.inf, log=True,
+                               span=(1e-5 * speed, 10.0 * speed)),
         "x0": Unknown("x0", "m", scale=amplitude),
         "xdot0": Unknown("xdot0", "m/s", scale=amplitude * system.omega_n),
     }[k] for k in names]  # fmt: skip
     grid = {
         "e": [0.1, 0.35, 0.6, 0.85],
+        "yield_speed": list(speed * np.geomspace(1e-3, 0.3, 6)),
         "zeta": [zeta0, 0.3 * zeta0],
         "gap": list(amplitude * np.geomspace(0.1, 2.5, 16)),
     }
@@ -220,7 +244,7 @@ def fit_decay(
     result = fit(residual, jacobian, unknowns, [theta], tol=1e-9, profiled=fitted)
     s, e_, x, v = unpack(np.array([p.value for p in result.parameters.values()]))
     response = simulated_decay(s, e_, n, dt, x, v)
-    if response.impact_times.size == 0 and {"e", "gap"} & set(fitted):
+    if response.impact_times.size == 0 and {"e", "yield_speed", "gap"} & set(fitted):
         result.warnings.append("the fitted motion has no impact: the record does not determine "
                                "e, and bounds the clearance from below only")  # fmt: skip
     return result, response
