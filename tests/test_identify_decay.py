@@ -117,6 +117,35 @@ def test_bad_decay_input_is_refused_in_one_line(tmp_path, capsys, argv, words):
     assert code == 2 and words in err and len(err.strip().splitlines()) == 1
 
 
+RIG = ["--M", "1", "--K", "1000", "--m", "0.05"]
+
+
+@pytest.mark.parametrize(
+    "rows, words",
+    [
+        ("time,displacement\n0,1\n0.001,2\n", "unit in brackets"),
+        ("time [s],displacement [mm]\n0,1\n0.002,2\n0.001,3\n", "time must increase"),
+        ("time [s],displacement [mm]\n0,1\n0.001,2\n0.001,3\n", "time must increase"),
+        ("time [s],displacement [mm]\n0,1\n0.001,nan\n0.002,3\n", "not finite"),
+        ("time [s],displacement [mm]\n" + "".join(f"{k * 1e-3!r},1\n" for k in (0, 1, 2, 4, 5, 6,
+                                                                               7, 8, 9)),
+         "equally spaced"),
+        ("time [s],displacement [N]\n" + "".join(f"{k * 1e-3!r},1\n" for k in range(9)),
+         "not a displacement"),
+        ("time [s],displacement [mm]\n" + "".join(f"{k * 0.02!r},1\n" for k in range(40)),
+         "9.93 times a natural period"),
+    ],
+)  # fmt: skip
+def test_a_bad_record_is_refused_in_one_line(tmp_path, capsys, rows, words):
+    """Missing units, unsorted or repeated times, NaN, a gap, a value that is not a motion, and
+    a sampling too coarse for the impacts (20 ms against the 199 ms natural period)."""
+    csv = tmp_path / "decay.csv"
+    csv.write_text(rows)
+    code = main(["identify", "decay", str(csv), *RIG])
+    err = capsys.readouterr().err
+    assert code == 2 and words in err and len(err.strip().splitlines()) == 1
+
+
 def test_thorntons_yield_speed_from_a_decay():
     """Impacts by Thornton's e(v) (typed from his paper, in mpmath, tests/test_identify_impacts)
     with v_y = 20 mm/s: the fit of the law's one parameter gives it back, with ζ and d (1e-7,

@@ -40,6 +40,10 @@ NUISANCE = ("x0", "xdot0")
 #: makes sequences of millions of ever-smaller impacts); such a trial's residual is the record
 #: itself ten times over, which the fit leaves.
 MAX_EVENTS = 100_000
+#: The coarsest sampling a fit takes: samples a natural period of the primary.  Between two
+#: samples the primary turns through 2π/20 = 18°; an impact's time is then fixed by the kinks
+#: it leaves in the samples around it (coarser, the impacts of one half period blur into one).
+MIN_SAMPLES_PER_PERIOD = 20
 #: The quantities a record may hold, by their SI unit.
 QUANTITIES = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}
 
@@ -157,6 +161,11 @@ def fit_decay(
     if not thornton and not 0.0 <= e0 <= 1.0:
         raise ParameterError("e", f"must lie in [0, 1], got {e0:g}")
     n, dt = data.values.size, data.dt
+    per_period = 2.0 * math.pi / system.omega_n / dt
+    if per_period < MIN_SAMPLES_PER_PERIOD:
+        raise ParameterError("decay", f"is sampled {per_period:.3g} times a natural period of the "
+                             f"primary: at least {MIN_SAMPLES_PER_PERIOD} are needed to see "
+                             "when its impacts happen")  # fmt: skip
     zeta0 = system.zeta if "zeta" not in fitted else _zeta_start(system, data)
     x0, v0 = _initial_state(system, data, zeta0)
     amplitude = math.hypot(x0, v0 / system.omega_n)
