@@ -132,7 +132,8 @@ def _zeta_start(system: ImpactSystem, data: Decay) -> float:
     first, last = v[: k // 4].max(), v[3 * k // 4 :].max()
     if first <= 0 or last <= 0 or last >= first:
         return 0.01
-    cycles = 0.5 * data.dt * k * system.omega_n / (2 * math.pi)  # from ~1/8 to ~7/8 of it
+    # the two maxima are a half to the whole record apart: half, so an upper estimate of ζ
+    cycles = 0.5 * data.dt * k * system.omega_n / (2 * math.pi)
     return float(np.clip(math.log(first / last) / (2 * math.pi * max(cycles, 0.5)), 1e-4, 0.5))
 
 

@@ -11,7 +11,10 @@ with the parameters' bounds):
 * **profile intervals**: the set of θⱼ whose profile RSSⱼ(θⱼ) = min over the others of RSS is
   below RSS·(1 + F₀.₉₅(1, n − p)/(n − p)).  For a model linear in θ this is exactly the
   t-interval θ̂ ± t₀.₉₇₅(n − p)·se, and it stays right where the model is not (an interval
-  that is not symmetric, or reaches a bound);
+  that is not symmetric, or reaches a bound).  The profile is followed out from the optimum in
+  quarter standard errors, each point refitted from the nearest one solved and from the
+  optimum; where its least RSS jumps (the residuals have several basins, as a decay's have, one
+  per sequence of impacts) a warning says so and that end is the linearised one;
 * **identifiability**: a direction of θ along which the residuals do not change (a singular
   value of J below 1e-8 of the largest, each parameter scaled by its value) leaves the
   parameters in it undetermined; two parameters correlated beyond ρ = ±0.99 are determined
