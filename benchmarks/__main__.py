@@ -25,6 +25,7 @@ from . import (
     estimates,
     first_run,
     frc,
+    identification,
     map_throughput,
     million_map,
     one_mode_engine,
@@ -71,6 +72,10 @@ SUITE = (
         estimates.main,
     ),
     ("15. the first run after an install: each engine's compilation, then warm", first_run.main),
+    (
+        "16. a 10 s free decay at 5 kHz identified: e, ζ, d with their intervals",
+        identification.main,
+    ),
 )
 
 
