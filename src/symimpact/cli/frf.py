@@ -379,9 +379,10 @@ def _spread_lines(ns, spread) -> list[str]:
     if spread is None:
         return []
     lo, hi = spread.ci95
-    return [f"peak displacement over the identified {', '.join(spread.names)} ({spread.peaks.size} draws from "
-            f"{ns.system}, seed {spread.seed}): median {response_text('displacement', spread.median)}"
-            f", 95 % of the draws within {response_text('displacement', lo, unit=False)}–"
+    return [f"peak displacement over the identified {', '.join(spread.names)} "
+            f"({spread.peaks.size} draws from {ns.system}, seed {spread.seed}): median "
+            f"{response_text('displacement', spread.median)}, 95 % of the draws within "
+            f"{response_text('displacement', lo, unit=False)}–"
             f"{response_text('displacement', hi)}"]  # fmt: skip
 
 
