@@ -208,7 +208,7 @@ def test_the_guides_example_prints_what_the_guide_shows(tmp_path, capsys, monkey
     section = guide.split("## Identification from measurements", 1)[1]
     blocks = [b.split("```", 1)[0] for b in section.split("```text\n")[1:]]
     (tmp_path / "drops.csv").write_text(blocks[0])
-    command = section.split("```bash\n", 1)[1].split("```", 1)[0]
+    command = section.split("```bash\n", 1)[1].split("```", 1)[0].replace("\\\n", " ")
     monkeypatch.chdir(tmp_path)
     code, out, _ = _cli(capsys, *shlex.split(command)[1:])
     assert code == 0

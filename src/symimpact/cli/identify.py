@@ -81,8 +81,8 @@ def _parameter_lines(result: Any) -> list[str]:
         se = ("not determined" if p.stderr is None
               else f"± {_quantity(p.stderr, p.unit, 2)} (1 se)")  # fmt: skip
         lo, hi = p.ci95
-        lines.append(f"  {p.name} = {_quantity(p.value, p.unit)} {se}; 95 % interval "
-                     f"{_quantity(lo, p.unit)} to {_quantity(hi, p.unit)}")  # fmt: skip
+        lines.append(wrapped(f"{p.name} = {_quantity(p.value, p.unit)} {se}; 95 % interval "
+                             f"{_quantity(lo, p.unit)} to {_quantity(hi, p.unit)}"))  # fmt: skip
     return lines
 
 
@@ -114,21 +114,26 @@ def run_impacts(ns) -> None:
     }
     best = min(results, key=lambda k: results[k].aic)
     text = [
-        f"{data.v_in.size} impacts (given as {data.given}s), approach speeds "
-        f"{_quantity(data.v_in.min(), 'm/s')} to {_quantity(data.v_in.max(), 'm/s')}",
-        f"law: {ns.law} — {_LAW_TEXT[ns.law]}",
+        wrapped(
+            f"{data.v_in.size} impacts (given as {data.given}s), approach speeds "
+            f"{_quantity(data.v_in.min(), 'm/s')} to {_quantity(data.v_in.max(), 'm/s')}",
+            "",
+        ),
+        wrapped(f"law: {ns.law} — {_LAW_TEXT[ns.law]}", ""),
         *_parameter_lines(result),
-        f"  residual rms {_quantity(result.residual_rms, 'm/s')} of the rebound speed "
-        f"({result.dof} degrees of freedom)",
-        "the laws compared (Akaike's criterion, lower fits better for its parameters):",
+        wrapped(
+            f"residual rms {_quantity(result.residual_rms, 'm/s')} of the rebound speed "
+            f"({result.dof} degrees of freedom)"
+        ),
+        "the laws compared (Akaike's criterion: lower is better):",
         *(_law_line(k, r, k == best) for k, r in results.items()),
         *(wrapped(f"warning: {w}", "") for w in result.warnings),
     ]
     if setting is not None:
         v = result.parameters.get("yield_speed")
         e_text = f"thornton {v.value:.6g} m/s" if v is not None else f"{setting:.6g}"
-        text.append(f"for any command: --e '{e_text}'"
-                    + (f" or --system {ns.out}" if ns.out else ""))  # fmt: skip
+        text.append(wrapped(f"for any command: --e '{e_text}'"
+                            + (f" or --system {ns.out}" if ns.out else ""), ""))  # fmt: skip
     emit(ns, out, "\n".join(text))
 
 
@@ -240,18 +245,24 @@ def run_decay(ns) -> None:
            "impacts": n_imp}  # fmt: skip
     unit = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}[data.quantity]
     text = [
-        f"decay: {data.values.size} samples of {data.quantity} over "
-        f"{data.dt * (data.values.size - 1):.4g} s; the rig: M {system.M:.5g} kg, K "
-        f"{system.K:.5g} N/m (f_n {system.omega_n / 6.283185307179586:.5g} Hz), m "
-        f"{system.m * 1e3:.5g} g",
+        wrapped(
+            f"decay: {data.values.size} samples of {data.quantity} over "
+            f"{data.dt * (data.values.size - 1):.4g} s; the rig: M {system.M:.5g} kg, K "
+            f"{system.K:.5g} N/m (f_n {system.omega_n / 6.283185307179586:.5g} Hz), m "
+            f"{system.m * 1e3:.5g} g",
+            "",
+        ),
         wrapped(
             f"fitted: {', '.join(_fitted_text(fitted, e))} and the tap's x0, xdot0 (rigid "
             "impacts; the ball at rest in the middle of its clearance at t = 0)",
             "",
         ),
         *_parameter_lines(result),
-        f"  {n_imp} impacts in the fitted motion; residual rms "
-        f"{_residual_text(result.residual_rms, unit)} ({result.dof} degrees of freedom)",
+        wrapped(
+            f"{n_imp} impacts in the fitted motion; residual rms "
+            f"{_residual_text(result.residual_rms, unit)} ({result.dof} degrees of "
+            "freedom)"
+        ),
         *(wrapped(f"warning: {w}", "") for w in result.warnings),
     ]
     if ns.out:
