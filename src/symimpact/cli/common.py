@@ -761,13 +761,13 @@ def emit(ns, data: dict[str, Any] | list[Any], text: str) -> None:
 TEXT_WIDTH = 72
 
 
-def wrapped(text: str, indent: str = "  ") -> str:
-    """``text`` as lines of at most :data:`TEXT_WIDTH` columns, the first indented by ``indent``
-    and the rest by two more spaces."""
+def wrapped(text: str, indent: str = "  ", width: int = TEXT_WIDTH) -> str:
+    """``text`` as lines of at most ``width`` columns (:data:`TEXT_WIDTH`), the first indented
+    by ``indent`` and the rest by two more spaces."""
     import textwrap
 
     return textwrap.fill(
-        text, TEXT_WIDTH, initial_indent=indent, subsequent_indent=indent + "  ",
+        text, width, initial_indent=indent, subsequent_indent=indent + "  ",
         break_on_hyphens=False, break_long_words=False,
     )  # fmt: skip
 
