@@ -28,7 +28,8 @@ TOLD = ImpactSystem(M=1.0, K=1000.0, m=0.05, gap=0.03, zeta=0.05, k_hz=1000.0)
 def main(duration: float = 10.0, rate: float = 5000.0) -> None:
     dt = 1.0 / rate
     n = round(duration * rate) + 1
-    clean = simulated_decay(RIG, 0.6, n, dt, 0.0, 0.3).displacement
+    truth = simulated_decay(RIG, 0.6, n, dt, 0.0, 0.3)
+    clean, n_true = truth.displacement, truth.impact_times.size
     amplitude = 0.3 / RIG.omega_n
     data = Decay(clean + np.random.default_rng(82).normal(0.0, 0.01 * amplitude, n), dt,
                  "displacement")  # fmt: skip
@@ -42,7 +43,9 @@ def main(duration: float = 10.0, rate: float = 5000.0) -> None:
           f"{took / one.median:.0f} whole-record runs' time (target: 30 s)")  # fmt: skip
     for p in result.parameters.values():
         print(f"    {p.name} = {p.value:.6g} ± {p.stderr or float('nan'):.2g} {p.unit}")
-    print(f"  {response.impact_times.size} impacts; warnings: {len(result.warnings)}")
+    print(f"  {response.impact_times.size} impacts (the record's own: {n_true})")
+    for w in result.warnings:
+        print(f"  warning: {w}")
 
 
 if __name__ == "__main__":

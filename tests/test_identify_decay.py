@@ -170,3 +170,34 @@ def test_thorntons_yield_speed_from_a_decay():
     assert got["yield_speed"] == pytest.approx(0.02, rel=1e-7)
     assert got["zeta"] == pytest.approx(ZETA, rel=1e-7)
     assert got["gap"] == pytest.approx(GAP, rel=1e-7)
+
+
+def test_a_fit_that_leaves_the_record_is_said_to():
+    """The detector of a fitted motion that has left its record: white noise alone raises it
+    at no period (probability 1.5e-8 a period, whatever the seed); an oscillation at the
+    natural frequency from t = 1 s, 10 deviations of the noise's estimate over a period's 198
+    samples, is caught in the period that holds t = 1 s (95 % of it after the onset)."""
+    from symimpact.identify.decay import departure
+
+    rng = np.random.default_rng(7)
+    dt, w = 1e-3, np.sqrt(K / M)
+    period = 2 * np.pi / w / dt
+    t = dt * np.arange(4000)
+    noise = rng.normal(0.0, 1e-5, t.size)
+    assert departure(noise, dt, period, w, 0.01) is None
+    drift = np.where(t >= 1.0, 10 * 1e-5 * np.sqrt(2 / int(period)) * np.sin(w * t), 0.0)
+    at = departure(noise + drift, dt, period, w, 0.01)
+    assert at is not None and 1.0 - period * dt < at <= 1.0
+
+
+def test_until_fits_the_first_seconds(tmp_path, capsys):
+    data = _record(600, 2e-3)
+    csv = tmp_path / "decay.csv"
+    csv.write_text("time [s],displacement [m]\n" + "".join(
+        f"{t!r},{x!r}\n" for t, x in zip(data.times.tolist(), data.values.tolist(),
+                                         strict=True)))  # fmt: skip
+    code = main(["identify", "decay", str(csv), "--M", "1", "--K", "1000", "--m", "0.05",
+                 "--until", "0.6 s", "--json"])  # fmt: skip
+    got = json.loads(capsys.readouterr().out)
+    assert code == 0 and got["data"]["samples"] == 301
+    assert got["parameters"]["e"]["value"] == pytest.approx(E, rel=1e-6)

@@ -56,6 +56,9 @@ def add_parser(sub: Any) -> None:
     q.add_argument("--fit", default="e,zeta,gap", metavar="NAMES",
                    help="what to fit, of e, zeta, gap (comma-separated; the others are given "
                    "by their options); default e,zeta,gap")  # fmt: skip
+    q.add_argument("--until", default=None, metavar="T",
+                   help="fit the record's first T seconds only (e.g. where a warning says the "
+                   "fitted motion leaves the record)")  # fmt: skip
     q.add_argument("--e", default=None, metavar="E",
                    help="Newton's restitution if not fitted (0 ≤ e ≤ 1); or 'thornton V': "
                    "Thornton's e(v) with the yield speed V, which --fit e then fits (from V)")  # fmt: skip
@@ -234,6 +237,14 @@ def run_decay(ns) -> None:
     else:
         e = 0.5 if "e" in fitted and ns.e is None else si_float("e", ns.e)
     data = read_decay(ns.file)
+    if ns.until is not None:
+        from ..identify.decay import Decay
+        from ..model.units import positive_float
+
+        keep = int(positive_float("until", ns.until, "s") / data.dt) + 1
+        if keep < 8:
+            raise ParameterError("until", f"keeps {keep} samples of the record: at least 8")
+        data = Decay(data.values[:keep], data.dt, data.quantity)
     result, response = fit_decay(system, data, fitted, e=e)
     values = result.values()
     restitution: Any = values.get("e", e)

@@ -257,7 +257,46 @@ def fit_decay(
     if response.impact_times.size == 0 and {"e", "yield_speed", "gap"} & set(fitted):
         result.warnings.append("the fitted motion has no impact: the record does not determine "
                                "e, and bounds the clearance from below only")  # fmt: skip
+    leaves = departure(result.residuals, dt, period, system.omega_n,
+                       float(np.abs(data.values).max()))  # fmt: skip
+    if leaves is not None:
+        result.warnings.append(
+            f"the fitted motion leaves the record from t ≈ {leaves:.4g} s (its residual "
+            "oscillates there at the natural frequency, far above the noise): an impact is not "
+            "matched, and the fit may have followed another sequence of impacts, whose errors "
+            f"then mean nothing; fit the record up to that time (--until {leaves:.3g})"
+        )  # fmt: skip
     return result, response
+
+
+#: How far above noise a residual's oscillation at the natural frequency must be over one
+#: natural period for the fitted motion to be said to leave the record: for white noise of
+#: deviation σ each of its two Fourier coefficients over k samples is normal with deviation
+#: σ·√(2/k), so an amplitude over DEPARTURE of those happens with probability exp(−DEPARTURE²/2)
+#: (1.5e-8 at 6: no false alarm over a record's few hundred periods).
+DEPARTURE = 6.0
+
+
+def departure(residuals: Any, dt: float, period: float, omega: float,
+              scale: float) -> float | None:  # fmt: skip
+    """The start [s] of the first natural period (``period`` samples ``dt`` apart) over which
+    the residuals hold an oscillation at ``omega`` [rad/s] — what a fitted motion that has left
+    the record leaves in them — :data:`DEPARTURE` times above what the noise of the record's
+    first quarter gives, and above 1e-9 of ``scale`` (the record's size: the simulation's own
+    rounding is no departure); None if there is none."""
+    r = np.asarray(residuals, float)
+    k = max(8, int(period))
+    m = r.size // k
+    if m < 8:
+        return None
+    windows = r[: m * k].reshape(m, k)
+    t = dt * np.arange(k)
+    c, s_ = np.cos(omega * t), np.sin(omega * t)
+    amp = 2.0 / k * np.hypot(windows @ c, windows @ s_)
+    sigma = float(np.median(np.sqrt(np.mean(windows[: max(2, m // 4)] ** 2, axis=1))))
+    bound = max(DEPARTURE * sigma * np.sqrt(2.0 / k), 1e-9 * scale)
+    over = np.nonzero(amp > bound)[0]
+    return None if over.size == 0 else float(over[0] * k * dt)
 
 
 def _combinations(grid: dict[str, list[float]], fitted: list[str]) -> list[dict[str, float]]:
