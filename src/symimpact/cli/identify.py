@@ -27,8 +27,8 @@ _LAW_TEXT = {
 
 def add_parser(sub: Any) -> None:
     """Add the subcommand's parser to ``sub`` (the parsers' subparsers action)."""
-    p = sub.add_parser("identify", help="the model's parameters from measurements (impacts), "
-                       "with standard errors and 95 %% intervals")  # fmt: skip
+    p = sub.add_parser("identify", help="the model's parameters from measurements (single "
+                       "impacts, a free decay), with standard errors and 95 %% intervals")  # fmt: skip
     kinds = p.add_subparsers(dest="data", required=True, parser_class=Parser,
                              metavar="{impacts,decay}")  # fmt: skip
     q = kinds.add_parser(
@@ -152,8 +152,8 @@ def run_impacts(ns) -> None:
 
 
 def _write_system(ns, result: Any, setting: str | float) -> None:
-    """The system file: ``e`` as the command line's --e takes it, with the fit in comments
-    (TOML) or beside it (JSON's ``"identified"`` is not read back: only system keys are)."""
+    """The system file: ``e`` as the command line's --e takes it (TOML, with the fit in
+    comments; or JSON, ``{"e": …}`` alone, by the suffix .json)."""
     import json
 
     from ..io import atomic_write
