@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..model.display import display_unit, shown
 from .common import Parser, add_output, add_system, emit, system_from
 from .common import wrapped as _wrapped
 
@@ -71,21 +72,21 @@ def add_parser(sub: Any) -> None:
     add_output(q, plot=True)
 
 
-def _quantity(value: float | None, unit: str, digits: int = 5) -> str:
-    """``value`` (SI ``unit``) as people read it, to ``digits`` significant digits: speeds below
-    1 m/s in mm/s, lengths in mm."""
+def _quantity(name: str, value: float | None, digits: int = 5) -> str:
+    """``value`` [SI] of quantity ``name`` in its display unit (``--show NAME=UNIT``; e.g. the
+    clearance in mm, a yield speed in mm/s), to ``digits`` significant digits."""
     if value is None:
         return "open"
-    if unit == "m/s" and abs(value) < 1.0:
-        return f"{value * 1e3:.{digits}g} mm/s"
-    if unit == "m":
-        return f"{value * 1e3:.{digits}g} mm"
-    return f"{value:.{digits}g}" if unit == "1" else f"{value:.{digits}g} {unit}"
+    unit = display_unit(name)
+    text = f"{shown(name, value):.{digits}g}"
+    return text if unit == "dimensionless" else f"{text} {unit}"
 
 
 def _law_line(law: str, result: Any, best: bool) -> str:
     """One law of the comparison: its AIC and rms, the lowest marked."""
-    text = f"  {law:<9} AIC {result.aic:9.2f}   rms {_quantity(result.residual_rms, 'm/s')}"
+    text = (
+        f"  {law:<9} AIC {result.aic:9.2f}   rms {_quantity('rebound_speed', result.residual_rms)}"
+    )
     return text + ("   <- lowest" if best else "")
 
 
@@ -93,10 +94,10 @@ def _parameter_lines(result: Any) -> list[str]:
     lines = []
     for p in result.parameters.values():
         se = ("not determined" if p.stderr is None
-              else f"± {_quantity(p.stderr, p.unit, 2)} (1 se)")  # fmt: skip
+              else f"± {_quantity(p.name, p.stderr, 2)} (1 se)")  # fmt: skip
         lo, hi = p.ci95
-        lines.append(wrapped(f"{p.name} = {_quantity(p.value, p.unit)} {se}; 95 % interval "
-                             f"{_quantity(lo, p.unit)} to {_quantity(hi, p.unit)}"))  # fmt: skip
+        lines.append(wrapped(f"{p.name} = {_quantity(p.name, p.value)} {se}; 95 % interval "
+                             f"{_quantity(p.name, lo)} to {_quantity(p.name, hi)}"))  # fmt: skip
     return lines
 
 
@@ -130,13 +131,13 @@ def run_impacts(ns) -> None:
     text = [
         wrapped(
             f"{data.v_in.size} impacts (given as {data.given}s), approach speeds "
-            f"{_quantity(data.v_in.min(), 'm/s')} to {_quantity(data.v_in.max(), 'm/s')}",
+            f"{_quantity('rebound_speed', data.v_in.min())} to {_quantity('rebound_speed', data.v_in.max())}",
             "",
         ),
         wrapped(f"law: {ns.law}: {_LAW_TEXT[ns.law]}", ""),
         *_parameter_lines(result),
         wrapped(
-            f"residual rms {_quantity(result.residual_rms, 'm/s')} of the rebound speed "
+            f"residual rms {_quantity('rebound_speed', result.residual_rms)} of the rebound speed "
             f"({result.dof} degrees of freedom)"
         ),
         "the laws compared (Akaike's criterion: lower is better):",
@@ -265,7 +266,6 @@ def run_decay(ns) -> None:
     out = {"kind": "decay", **result.as_dict(), "system": identified,
            "data": {"samples": int(data.values.size), "dt": data.dt, "quantity": data.quantity},
            "impacts": n_imp}  # fmt: skip
-    unit = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}[data.quantity]
     text = [
         wrapped(
             f"decay: {data.values.size} samples of {data.quantity} over "
@@ -282,7 +282,7 @@ def run_decay(ns) -> None:
         *_parameter_lines(result),
         wrapped(
             f"{n_imp} impacts in the fitted motion; residual rms "
-            f"{_residual_text(result.residual_rms, unit)} ({result.dof} degrees of "
+            f"{_quantity(f'residual_{data.quantity}', result.residual_rms, 4)} ({result.dof} degrees of "
             "freedom)"
         ),
         *(wrapped(f"warning: {w}", "") for w in result.warnings),
@@ -298,14 +298,6 @@ def _fitted_text(fitted: list[str], e: Any) -> list[str]:
 
     thornton = isinstance(e, MaterialRestitution)
     return ["Thornton's yield speed" if k == "e" and thornton else k for k in fitted]
-
-
-def _residual_text(value: float, unit: str) -> str:
-    if unit == "m":
-        return f"{value * 1e6:.4g} µm"
-    if unit == "m/s":
-        return f"{value * 1e3:.4g} mm/s"
-    return f"{value:.4g} m/s²"
 
 
 def _write_decay_system(ns, result: Any, identified: dict[str, float]) -> None:
@@ -354,9 +346,10 @@ def _write_decay_csv(ns, data: Any, result: Any) -> None:
     """Per sample: time, measured, fitted, residual (SI, units in the header)."""
     import csv
 
+    from ..identify.decay import QUANTITIES
     from ..io import atomic_write
 
-    unit = {"displacement": "m", "velocity": "m/s", "acceleration": "m/s^2"}[data.quantity]
+    unit = QUANTITIES[data.quantity]
 
     def write(f) -> None:
         w = csv.writer(f, lineterminator="\n")

@@ -74,6 +74,14 @@ OUTPUT_SI_UNITS = {
     "baseline_rms_acceleration": "m/s^2",
     "baseline_rms_base_force": "N",
     "impacts": "dimensionless",
+    # identification (symimpact.identify): a restitution law's parameters, the measured speeds
+    # of single impacts, and a fit's residual in the record's own quantity
+    "yield_speed": "m/s",
+    "alpha": "dimensionless",
+    "rebound_speed": "m/s",
+    "residual_displacement": "m",
+    "residual_velocity": "m/s",
+    "residual_acceleration": "m/s^2",
 }
 
 #: A design row's keys that hold a peak of the primary's response, and their names when the
@@ -109,6 +117,10 @@ DISPLAY_UNITS: dict[str, str] = {
     "energy_dissipated": "mJ",
     "energy_dissipated_contact": "mJ",
     "energy_residual": "mJ",
+    "yield_speed": "mm/s",
+    "rebound_speed": "mm/s",
+    "residual_displacement": "µm",
+    "residual_velocity": "mm/s",
 }
 
 _PRETTY = {"N*s/m": "N s/m", "N/m^1.5": "N/m^1.5", "N/m^3": "N/m³", "kg/m^3": "kg/m³",
