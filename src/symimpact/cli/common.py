@@ -150,9 +150,9 @@ SYSTEM_KEYS = (*(f[2:].replace("-", "_") for f, _, _ in SYSTEM_OPTIONS), "contac
 _ALTERNATIVES = (("C", "zeta", "q_factor", "loss_factor"),)
 
 
-def read_system_file(path: Any) -> dict[str, Any]:
-    """{key: value} of a --system file (TOML by its suffix .toml, else JSON): keys of
-    :data:`SYSTEM_KEYS` (hyphens or underscores), values numbers (SI) or quantity strings."""
+def _system_table(path: Any) -> dict[str, Any]:
+    """The table a --system file holds (TOML by its suffix .toml, else JSON), refused in one
+    line if it is neither or not a table."""
     import tomllib
 
     from ..errors import ParameterError
@@ -168,6 +168,15 @@ def read_system_file(path: Any) -> dict[str, Any]:
         data = strict_json(text, "system", str(path))
     if not isinstance(data, dict):
         raise ParameterError("system", f"{str(path)!r} must hold a table of parameters")
+    return data
+
+
+def read_system_file(path: Any) -> dict[str, Any]:
+    """{key: value} of a --system file (:func:`_system_table`): keys of :data:`SYSTEM_KEYS`
+    (hyphens or underscores), values numbers (SI) or quantity strings."""
+    from ..errors import ParameterError
+
+    data = _system_table(path)
     out: dict[str, Any] = {}
     for key, value in data.items():
         if key == "uncertainty":  # the fitted parameters' covariance (read_uncertainty)
@@ -187,17 +196,11 @@ def read_uncertainty(path: Any) -> dict[str, Any] | None:
     """The ``[uncertainty]`` table of a --system file ('symimpact identify decay --out' writes
     it): ``names`` (system keys), ``values`` and ``covariance`` (SI) of the fitted parameters,
     checked (a symmetric covariance with a non-negative diagonal); None if the file has none."""
-    import tomllib
-
     import numpy as np
 
     from ..errors import ParameterError
-    from ..io import input_text, strict_json
 
-    text = input_text(path, "system")
-    data: Any = (tomllib.loads(text) if str(path).lower().endswith(".toml")
-                 else strict_json(text, "system", str(path)))  # fmt: skip
-    table = data.get("uncertainty") if isinstance(data, dict) else None
+    table = _system_table(path).get("uncertainty")
     if table is None:
         return None
     try:
