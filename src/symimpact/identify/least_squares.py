@@ -185,24 +185,10 @@ def fit(
         raise ParameterError("data", f"has {n} values for {p} fitted parameters: needs more "
                              "values than parameters")  # fmt: skip
 
-    def theta(phi: np.ndarray) -> np.ndarray:
-        return np.array([u.to_value(x) for u, x in zip(unknowns, phi, strict=True)])
-
-    def chain(phi: np.ndarray) -> np.ndarray:  # dθ/dφ
-        return np.array([math.exp(x) if u.log else 1.0 for u, x in zip(unknowns, phi, strict=True)])
-
-    def r_phi(phi: np.ndarray) -> np.ndarray:
-        return np.asarray(residual(theta(phi)), float)
-
-    def j_phi(phi: np.ndarray) -> np.ndarray:
-        return np.asarray(jacobian(theta(phi)), float).reshape(n, p) * chain(phi)
-
-    bounds = np.array([u.internal_bounds() for u in unknowns]).T
+    theta, chain, r_phi, j_phi, bounds = _internal(residual, jacobian, unknowns, n)
     best = None
     for start in starts:
-        phi0 = np.clip([u.to_internal(float(s)) for u, s in zip(unknowns, start, strict=True)],
-                       *_inside(bounds))  # fmt: skip
-        sol = _solve(r_phi, j_phi, phi0, bounds, range(p), tol)
+        sol = _solve(r_phi, j_phi, _start(unknowns, start, bounds), bounds, range(p), tol)
         if best is None or sol[1] < best[1]:
             best = sol
     phi, rss = best
@@ -272,21 +258,36 @@ def refine(
     """The least-squares optimum θ (SI) reached from ``start`` and its RSS, without the errors
     and intervals of :func:`fit` (a stage of a fit that continues, e.g. over a growing record)."""
     unknowns = list(unknowns)
-    bounds = np.array([u.internal_bounds() for u in unknowns]).T
     n = int(np.asarray(residual(np.asarray(start, float))).size)
+    theta, _, r_phi, j_phi, bounds = _internal(residual, jacobian, unknowns, n)
+    phi, rss = _solve(r_phi, j_phi, _start(unknowns, start, bounds), bounds,
+                      range(len(unknowns)), tol)  # fmt: skip
+    return theta(phi), rss
 
-    def theta(phi):
+
+def _internal(residual, jacobian, unknowns: list[Unknown], n: int):
+    """The problem in the internal parameters φ (ln θ for a log-scale one): φ ↦ θ, dθ/dφ, the
+    residual and its Jacobian (n × p), and the bounds (2 × p)."""
+
+    def theta(phi: np.ndarray) -> np.ndarray:
         return np.array([u.to_value(x) for u, x in zip(unknowns, phi, strict=True)])
 
-    def chain(phi):
+    def chain(phi: np.ndarray) -> np.ndarray:  # dθ/dφ
         return np.array([math.exp(x) if u.log else 1.0 for u, x in zip(unknowns, phi, strict=True)])
 
-    phi0 = np.clip([u.to_internal(float(s)) for u, s in zip(unknowns, start, strict=True)],
+    def r_phi(phi: np.ndarray) -> np.ndarray:
+        return np.asarray(residual(theta(phi)), float)
+
+    def j_phi(phi: np.ndarray) -> np.ndarray:
+        return np.asarray(jacobian(theta(phi)), float).reshape(n, len(unknowns)) * chain(phi)
+
+    return theta, chain, r_phi, j_phi, np.array([u.internal_bounds() for u in unknowns]).T
+
+
+def _start(unknowns: list[Unknown], start: Sequence[float], bounds: np.ndarray) -> np.ndarray:
+    """A start θ in the internal parameters, inside the searched range."""
+    return np.clip([u.to_internal(float(s)) for u, s in zip(unknowns, start, strict=True)],
                    *_inside(bounds))  # fmt: skip
-    phi, rss = _solve(lambda f: np.asarray(residual(theta(f)), float),
-                      lambda f: np.asarray(jacobian(theta(f)), float).reshape(n, -1) * chain(f),
-                      phi0, bounds, range(len(unknowns)), tol)  # fmt: skip
-    return theta(phi), rss
 
 
 def _jump(seen: dict[float, float], centre: float, side: float, allowance: float,
