@@ -113,7 +113,7 @@ def run_impacts(ns) -> None:
     result = results[ns.law]
     setting = None if ns.law == "power" else law_setting(ns.law, result)
     if ns.out:
-        _write_system(ns, result, setting)
+        _write_system(ns, "impacts", result, {"e": setting})
     if ns.plot:
         from ..report.plots import plot_restitution_fit
 
@@ -152,25 +152,32 @@ def run_impacts(ns) -> None:
     emit(ns, out, "\n".join(text))
 
 
-def _write_system(ns, result: Any, setting: str | float) -> None:
-    """The system file: ``e`` as the command line's --e takes it (TOML, with the fit in
-    comments; or JSON, ``{"e": …}`` alone, by the suffix .json)."""
+def _write_system(ns, kind: str, result: Any, values: dict[str, Any],
+                  uncertainty: dict[str, Any] | None = None) -> None:  # fmt: skip
+    """The identified ``values`` as a --system file at ``ns.out``: TOML, with the fit's
+    parameters (``result``) in comments and ``uncertainty`` as its [uncertainty] table; or
+    JSON, by the suffix .json, the values and the uncertainty alone."""
     import json
 
     from ..io import atomic_write
 
-    p = next(iter(result.parameters.values()))
-    lo, hi = p.ci95
     if str(ns.out).lower().endswith(".json"):
-        payload = json.dumps({"e": setting}, indent=2)
+        table = {**values, **({"uncertainty": uncertainty} if uncertainty else {})}
+        payload = json.dumps(table, indent=2)
         atomic_write(ns.out, lambda f: f.write(payload + "\n"), "out")
         return
-    lines = [
-        f"# identified by 'symimpact identify impacts' from {ns.file} (law {ns.law})",
-        f"# {p.name} = {p.value!r} {p.unit}, standard error {p.stderr!r}, "
-        f"95 % interval [{lo!r}, {hi!r}]",
-        f"e = {json.dumps(setting)}",
-    ]
+    lines = [f"# identified by 'symimpact identify {kind}' from {ns.file}"]
+    for p in result.parameters.values():
+        lines.append(f"# {p.name} = {p.value!r} {p.unit}, standard error {p.stderr!r}, "
+                     f"95 % interval [{p.ci95[0]!r}, {p.ci95[1]!r}]")  # fmt: skip
+    lines += [f"{k} = {json.dumps(v) if isinstance(v, str) else repr(v)}"
+              for k, v in values.items()]  # fmt: skip
+    if uncertainty:
+        u = uncertainty
+        lines += ["", "# the fitted parameters' covariance (SI), for frf --propagate N",
+                  "[uncertainty]", f"names = {json.dumps(u['names'])}",
+                  f"values = {u['values']!r}",
+                  "covariance = [" + ", ".join(repr(r) for r in u["covariance"]) + "]"]  # fmt: skip
     atomic_write(ns.out, lambda f: f.write("\n".join(lines) + "\n"), "out")
 
 
@@ -255,7 +262,7 @@ def run_decay(ns) -> None:
                   "zeta": values.get("zeta", system.zeta),
                   "gap": values.get("gap", system.gap), "e": restitution}  # fmt: skip
     if ns.out:
-        _write_decay_system(ns, result, identified)
+        _write_system(ns, "decay", result, identified, _uncertainty(result))
     if ns.plot:
         from ..report.plots import plot_decay_fit
 
@@ -298,31 +305,6 @@ def _fitted_text(fitted: list[str], e: Any) -> list[str]:
 
     thornton = isinstance(e, MaterialRestitution)
     return ["Thornton's yield speed" if k == "e" and thornton else k for k in fitted]
-
-
-def _write_decay_system(ns, result: Any, identified: dict[str, float]) -> None:
-    """The identified rig as a --system file (SI numbers), the fit's intervals in comments."""
-    import json
-
-    from ..io import atomic_write
-
-    unc = _uncertainty(result)
-    if str(ns.out).lower().endswith(".json"):
-        payload = json.dumps({**identified, **({"uncertainty": unc} if unc else {})}, indent=2)
-        atomic_write(ns.out, lambda f: f.write(payload + "\n"), "out")
-        return
-    lines = [f"# identified by 'symimpact identify decay' from {ns.file}"]
-    for p in result.parameters.values():
-        lines.append(f"# {p.name} = {p.value!r} {p.unit}, standard error {p.stderr!r}, "
-                     f"95 % interval [{p.ci95[0]!r}, {p.ci95[1]!r}]")  # fmt: skip
-    lines += [f"{k} = {json.dumps(v) if isinstance(v, str) else repr(v)}"
-              for k, v in identified.items()]  # fmt: skip
-    if unc:
-        lines += ["", "# the fitted parameters' covariance (SI), for frf --propagate N",
-                  "[uncertainty]", f"names = {json.dumps(unc['names'])}",
-                  f"values = {unc['values']!r}",
-                  "covariance = [" + ", ".join(repr(r) for r in unc["covariance"]) + "]"]  # fmt: skip
-    atomic_write(ns.out, lambda f: f.write("\n".join(lines) + "\n"), "out")
 
 
 def _uncertainty(result: Any) -> dict[str, Any] | None:
