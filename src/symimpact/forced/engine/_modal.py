@@ -148,7 +148,7 @@ KIND_ONSET, KIND_EXIT = 3, 4
 # --- the flight: free modes (Eq. F1 each), or the stuck structure's closed form -----------------
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _mode_accel(pm, i, mass, t, x, v):
     """Mode i's q̈ᵢ (:func:`symimpact.forced.engine._rigid._accel` on row i of ``pm``)."""
     W, K, C = pm[i, P_W], pm[i, P_K], pm[i, P_C]
@@ -169,7 +169,7 @@ def _mode_jerk(pm, i, mass, t, x, v):
     return (W * (Q * math.cos(th) - P * math.sin(th)) - C * a - K * v) / mass
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _base_x(pm, xb, t):
     """x_b(t) = X_b·cos(Ωt + φ) [m], the supports' displacement (``xb``: X_b; 0 without base
     motion, then exactly 0)."""
@@ -178,7 +178,7 @@ def _base_x(pm, xb, t):
     return xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _base_v(pm, xb, t):
     """ẋ_b(t) [m/s]."""
     if xb == 0.0:
@@ -186,7 +186,7 @@ def _base_v(pm, xb, t):
     return -xb * pm[0, P_W] * math.sin(pm[0, P_W] * t + pm[0, P_PHI])
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _base_a(pm, xb, t):
     """ẍ_b(t) [m/s²]."""
     if xb == 0.0:
@@ -501,7 +501,7 @@ def _pair_weights(lam):
     return w
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _modes_of(cfg):
     """(Λ, V, V⁻¹, X̂) of a coupled configuration (views into its packed array)."""
     cplx, n2 = cfg[1], cfg[2]
@@ -591,7 +591,7 @@ def _coefficients(pm, cfg, t0, q0, v0):
     return _cmv(Vinv, X0)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _cmv(A, x):
     """A·x for a complex matrix of any shape (a held structure's may have no column)."""
     out = np.zeros(A.shape[0], dtype=np.complex128)
@@ -603,7 +603,7 @@ def _cmv(A, x):
     return out
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _form_fresh(form, t0, q0, v0):
     """Whether the flight's form cache ``form`` (:func:`_free_states`) holds the flight from
     (q0, v0) at t0."""
@@ -616,12 +616,11 @@ def _form_fresh(form, t0, q0, v0):
     return True
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _free_states(pm, form, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) by Eq. F1 a time τ after (q0, v0) at t0, written into q and v, while
     the modes are uncoupled (:func:`_states`; the searches' and the ledger's innermost loops call
-    this one directly: the configuration tuple taken into an inlined function costs a
-    reference count per array at each call).  A search evaluates one flight at many τ: the
+    this one directly, without the configuration tuple).  A search evaluates one flight at many τ: the
     flight's form (Step 8's ``flight_form``, x = a·cos Ωτ + b·sin Ωτ + e^(−στ)(c·cos ω_dτ +
     s·sin ω_dτ) and ẋ alike) is computed once per flight into ``form`` (the configuration's
     cache, keyed by t0, q0 and v0), and each τ then costs cos Ωτ and sin Ωτ, shared by the
@@ -659,7 +658,7 @@ def _free_states(pm, form, t0, q0, v0, tau, q, v):
         v[i] = f[4] * cw + f[5] * sw + ex * (f[6] * cd + f[7] * sd)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v: Eq. F1 per mode
     while no mass sticks, else the stuck structure's closed form (module text, :func:`_held_free`)."""
@@ -672,7 +671,7 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     _held_free(pm, hf, cfg[1], cfg[2], cfg[3], tau, q, v)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _held_fresh(hf, t0, q0, v0):
     """Whether the coupled flight's cache ``hf`` (:func:`_held_free`) holds the flight from
     (q0, v0) at t0."""
@@ -686,7 +685,7 @@ def _held_fresh(hf, t0, q0, v0):
     return True
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _sum_at_start(terms, weights, n2, const):
     """A coupled flight's sum at τ = 0 without its transcendentals, for one row ``terms`` of its
     columns (the cache's, :func:`_held_sum`, or a point's projection, :func:`_rows_at`; the
@@ -724,7 +723,7 @@ def _held_fill(pm, cfg, t0, q0, v0):
     hf[N2 + 1, 1] = 1.0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _growth(lam, tau):
     """(Re, Im) of e^{λτ}: one term of the coupled flight's sum (:func:`_held_free`)."""
     ex = math.exp(lam.real * tau)
@@ -842,7 +841,7 @@ def _rows_at(rows, hf, cplx, n2, W, tau, out):
                 out[r, d] += c.real * er - c.imag * ei
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _stuck_loads(pm, cfg, t, q, v):
     """r = Pcos θ + Qsin θ + f_s − C_sq̇ − K_sq of the coupled structure, P = F + K·X_b,
     Q = −CΩ·X_b per mode (Eq. F1's right side with the pressed stops' springs, dashpots and
@@ -864,7 +863,7 @@ def _stuck_loads(pm, cfg, t, q, v):
     return r
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _stuck_acceleration(cfg, r, i):
     """q̈ᵢ of the coupled structure: row i of M_s⁻¹r, r its loads (:func:`_stuck_loads`,
     computed once for all i)."""
@@ -875,7 +874,7 @@ def _stuck_acceleration(cfg, r, i):
     return g
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _free_point_accel(pm, Phi, row, t, q, v, xb):
     """ẍₐ = φᵀq̈ + ẍ_b at the point of row ``row`` of ``Phi`` while the modes are uncoupled: each
     mode's Eq. F1 (:func:`_point_accel`, without the configuration: see :func:`_free_states`)."""
@@ -885,7 +884,7 @@ def _free_point_accel(pm, Phi, row, t, q, v, xb):
     return a
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     """ẍₐ = φᵀq̈ + ẍ_b at the point of row ``row`` of ``Phi`` (its shapes; ``xb``: X_b for the
     dampers' points, which move absolutely, 0 for a stop's, relative to the ground): each mode's
@@ -945,7 +944,7 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     return a
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _mode_accel_bound(p, f, c, sn, t0, x0, v0, T):
     """:func:`symimpact.forced.engine._rigid._accel_bound` of mode row ``p`` from its configuration's
     constants ``f`` (its form row, :func:`_mode_constants`) and cos θ, sin θ of the flight's
@@ -1771,7 +1770,7 @@ _INV_FACT = np.array([1.0 / math.factorial(n) for n in range(30)])
 _INV_N = np.array([0.0] + [1.0 / n for n in range(1, 30)])
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _expint_series(z, tau):
     """τ·Σₙ zⁿ/(n + 1)! = (e^z − 1)/z·τ for abs(z) < 0.5, z = κτ, by Horner's rule up to the
     last power whose next term a^(n+1)/(n + 2)! (a = abs(Re z) + abs(Im z) ≥ abs(z)) falls
@@ -1789,7 +1788,7 @@ def _expint_series(z, tau):
     return tau * acc
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _expint(k, tau, ek):
     """∫₀^τ e^{κt} dt = (e^{κτ} − 1)/κ for a complex κ from ek = e^{κτ}, by its series where κτ is
     small (there the quotient would cancel, :func:`_expint_series`; a chatter's flights are
@@ -1800,7 +1799,7 @@ def _expint(k, tau, ek):
     return (ek - 1.0) / k
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _expint_by(kinv, z, tau, ek):
     """:func:`_expint` with z = κτ and 1/κ given (a mode's constants, :func:`_mode_constants`):
     a product where the quotient was."""
@@ -1809,7 +1808,7 @@ def _expint_by(kinv, z, tau, ek):
     return (ek - 1.0) * kinv
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _pair(x0, x1, y0, y1, E0, E1, E2, E3, E4, E5):
     """∫₀^τ Re(x₀e^{μt} + x₁e^{iΩt})·Re(y₀e^{μt} + y₁e^{iΩt}) dt from E₀ … E₅ = ∫ e^{κt} over the
     exponents κ = 2μ, μ + μ̄, μ + iΩ, μ − iΩ, 2iΩ, 0 (Re a·Re b = (Re ab + Re ab̄)/2); scalars,
@@ -2272,7 +2271,7 @@ def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v, vb):
     return P, mu
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _wall_kept(stuck, z, hd, j):
     """The wall (±1) free damper j starts the next flight on where it sits on it, to 1e-9 of its
     half clearance (a mass let go, or met, at the instant of another's event), else 0.  Forgotten,
@@ -2294,7 +2293,7 @@ def _log(events, n_ev, t, x, xd, yd, s, vrel, lost, kind, xd1, yd1, k):
     return events, n_ev + 1
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _dot(Phi, row, v):
     out = 0.0
     for i in range(Phi.shape[1]):
