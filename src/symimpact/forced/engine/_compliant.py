@@ -110,6 +110,25 @@ def _force(code, q, chi, delta, dd):
 
 
 @njit(cache=True)
+def _forces(code, q, chi, delta, dd):
+    """:func:`_force` at each of the arrays ``delta`` and ``dd``: (F, ∂F/∂δ, ∂F/∂δ̇)."""
+    n = delta.shape[0]
+    F, F_d, F_dd = np.empty(n), np.empty(n), np.empty(n)
+    for j in range(n):
+        F[j], F_d[j], F_dd[j], _ = _force(code, q, chi, delta[j], dd[j])
+    return F, F_d, F_dd
+
+
+def forces(code: int, q: np.ndarray, chi: float, delta: np.ndarray, dd: np.ndarray):
+    """(F, ∂F/∂δ, ∂F/∂δ̇) [N, N/m, N·s/m] of the law ``code`` (:data:`CODES`) at the penetrations
+    δ and rates δ̇ (1-D arrays): the engine's own law (:func:`_force`; Eq. 8, 9, 35 with c₁, or
+    Eq. F4), for the harmonic balance's alternating frequency–time scheme."""
+    delta = np.ascontiguousarray(delta, dtype=float)
+    dd = np.ascontiguousarray(dd, dtype=float)
+    return _forces(code, q, float(chi), delta, dd)
+
+
+@njit(cache=True)
 def _rhs(code, q, chi, p, side, t, w, out, n):
     """The contact's equations of motion (module docstring) at time t for the first ``n``
     components of w: the state, the ledger's rates and, with n = NW, Ψ' = AΨ."""
