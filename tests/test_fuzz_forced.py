@@ -73,7 +73,7 @@ def _argv(draw) -> list[str]:
     if command == "simulate":
         opts["periods"] = str(draw(st.sampled_from([5, 50, 400])))
     if command == "periodic":
-        opts["method"] = "shooting"
+        opts["method"] = draw(st.sampled_from(["shooting", "shooting", "hb"]))
     if command in ("frf", "design"):
         lo, hi = 0.9 * omega, 1.1 * omega
         opts["freq-range"] = f"{lo / 2 / math.pi:.4g} Hz:{hi / 2 / math.pi:.4g} Hz:" \

@@ -10,10 +10,13 @@ checked against what does not use it.
   shooting (the compliant engine), its error falling as H grows (algebraically: the contact's
   force has a kink at its onset), and the largest multiplier likewise.
 - Bad input: a rigid contact, too few time samples, fewer harmonics than the period multiple.
+- ``symimpact periodic --method hb``: its JSON is the API's orbit and shooting's beside it, its
+  text says the same numbers, and its bad input is one line with exit code 2.
 """
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -21,6 +24,7 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import fsolve
 
+from symimpact.cli import main
 from symimpact.errors import ParameterError
 from symimpact.forced.contact_law import CompliantContact
 from symimpact.forced.forcing import Forcing
@@ -152,7 +156,7 @@ def test_hertz_contact_amplitude_converges_to_shooting(hertz_exact):
     err, mult, U = {}, {}, None
     for H in (10, 20, 40, 60):
         start = None if U is None else _padded(U, 2, H)
-        o = hb_orbit(HERTZ, forcing, contact, harmonics=H, samples=8 * H, start=start)
+        o = hb_orbit(HERTZ, forcing, contact, harmonics=H, time_samples=8 * H, start=start)
         U = np.array(o.x + o.y)
         err[H] = abs(o.amplitude - hertz_exact.amplitude) / hertz_exact.amplitude
         mult[H] = abs(o.multipliers[-1] - min(hertz_exact.multipliers))
@@ -171,6 +175,40 @@ def test_bad_input_is_refused_in_one_line():
     with pytest.raises(ParameterError, match="contact: harmonic balance needs a compliant"):
         hb_orbit(HERTZ, forcing, 0.6)
     with pytest.raises(ParameterError, match=r"time_samples: must be at least 2H \+ 1 = 21"):
-        hb_orbit(HERTZ, forcing, CompliantContact("hertz"), harmonics=10, samples=20)
+        hb_orbit(HERTZ, forcing, CompliantContact("hertz"), harmonics=10, time_samples=20)
     with pytest.raises(ParameterError, match="harmonics: must be at least the period multiple 3"):
         hb_orbit(HERTZ, forcing, CompliantContact("hertz"), harmonics=2, subharmonic=3)
+
+
+HERTZ_ARGS = ["periodic", "--M", "1 kg", "--K", "1000 N/m", "--C", "0.5 N*s/m", "--m", "50 g",
+              "--gap", "20 mm", "--force", "2 N", "--omega", "34 rad/s", "--contact", "hertz",
+              "--k-hz", "1e5 N/m^1.5", "--c1", "0.5 N*s/m", "--method", "hb"]  # fmt: skip
+
+
+def test_the_command_gives_the_api_orbit_beside_shooting(capsys, hertz_exact):
+    assert main([*HERTZ_ARGS, "--harmonics", "20", "--time-samples", "160", "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)
+    api = hb_orbit(HERTZ, Forcing(F0=2.0, omega=34.0), CompliantContact("hertz"), harmonics=20,
+                   time_samples=160)  # fmt: skip
+    assert got["x"] == list(api.x) and got["amplitude"] == api.amplitude
+    assert got["exact"]["amplitude"] == hertz_exact.amplitude
+    assert got["hb_error"] == (api.amplitude - hertz_exact.amplitude) / hertz_exact.amplitude
+    assert main([*HERTZ_ARGS, "--harmonics", "20", "--time-samples", "160"]) == 0
+    text = capsys.readouterr().out
+    assert f"amplitude {api.amplitude * 1e3:.6g} mm" in text
+    assert f"error {100 * got['hb_error']:+.3g} %" in text
+
+
+@pytest.mark.parametrize(
+    ("extra", "message"),
+    [
+        (["--harmonics", "10", "--time-samples", "20"], "time-samples: must be at least 2H + 1"),
+        (["--harmonics", "0"], "harmonics: must be a whole number of at least 1"),
+        (["--multiple", "3", "--harmonics", "2"], "harmonics: must be at least the period"),
+        (["--response", "force"], "response: applies to --method closed-form or shooting"),
+    ],
+)
+def test_the_command_refuses_bad_input_in_one_line(capsys, extra, message):
+    assert main([*HERTZ_ARGS, *extra]) == 2
+    err = capsys.readouterr().err.strip()
+    assert message in err and "\n" not in err and "Traceback" not in err

@@ -20,7 +20,7 @@ from .common import (
 )
 
 #: The methods ``--method`` takes.
-METHODS = ("closed-form", "shooting")
+METHODS = ("closed-form", "shooting", "hb")
 
 
 def add_parser(sub: Any) -> None:
@@ -39,8 +39,10 @@ def add_parser(sub: Any) -> None:
         default=None,
         help="closed-form: the symmetric two-impact orbits of the rigid law (Masri & Caughey), "
         "Eq. F3; shooting: the orbit a run from rest settles near, by Newton on the "
-        "stroboscopic map (any impacting orbit, subharmonics with --multiple); default "
-        "closed-form (shooting for a --structure file with dampers or stops)",
+        "stroboscopic map (any impacting orbit, subharmonics with --multiple); hb: harmonic "
+        "balance of a compliant contact from the same start (--harmonics, --time-samples), "
+        "beside the shooting orbit; default closed-form (shooting for a --structure file with "
+        "dampers or stops)",
     )
     g = p.add_argument_group("shooting")
     g.add_argument(
@@ -60,6 +62,20 @@ def add_parser(sub: Any) -> None:
         default=None,
         metavar="K",
         help="look for an orbit of K forcing periods (K > 1: a subharmonic); default 1",
+    )
+    g = p.add_argument_group("harmonic balance (--method hb)")
+    g.add_argument(
+        "--harmonics",
+        default=None,
+        metavar="H",
+        help="harmonics of the balance (of Ω/K with --multiple K); default 15",
+    )
+    g.add_argument(
+        "--time-samples",
+        default=None,
+        metavar="N",
+        help="time samples a period of the alternating frequency–time scheme, at least 2H + 1; "
+        "default 4H",
     )
     p.add_argument(
         "--response",
@@ -103,9 +119,16 @@ def run(ns) -> None:
 
         rigid = ns.contact in (None, "rigid")
         checked_response(ns.response, forcing_from(ns), rigid=rigid)
+    for key, flag in (("harmonics", "harmonics"), ("time_samples", "time-samples")):
+        if ns.method != "hb" and getattr(ns, key) is not None:
+            raise ParameterError(flag, "applies to --method hb")
     if ns.method == "shooting":
         e = contact_of(ns)
         return _shooting(ns, system_from(ns), forcing_from(ns), e)
+    if ns.method == "hb":
+        if ns.response is not None:
+            raise ParameterError("response", "applies to --method closed-form or shooting")
+        return _balance(ns, system_from(ns), forcing_from(ns), contact_of(ns))
     if ns.contact != "rigid":
         raise MethodNotApplicable(
             ns.method,
@@ -173,6 +196,67 @@ def _shooting(ns, system, forcing, e) -> None:
     emit(ns, out, text)
 
 
+def _whole(flag: str, value: Any) -> int:
+    """A whole number ≥ 1 of an option such as --harmonics, refused in one line naming it."""
+    from ..errors import ParameterError
+    from ..model.units import si_float
+
+    v = si_float(flag, value)
+    if not (v >= 1 and v == int(v)):
+        raise ParameterError(flag, f"must be a whole number of at least 1, got {value!r}")
+    return int(v)
+
+
+def _balance(ns, system, forcing, e) -> None:
+    """--method hb: the orbit by harmonic balance (:func:`symimpact.forced.orbits.
+    harmonic_balance.hb_orbit`) from the attractor a run from rest settles on, and beside it the
+    exact orbit by shooting from the same run, with the balance's error in amplitude."""
+    import numpy as np
+
+    from ..errors import ParameterError
+    from ..forced import shoot_from_rest
+    from ..forced.orbits.harmonic_balance import hb_orbit
+    from ..forced.simulation import MAX_MULTIPLE, period_count
+    from ..model.display import display_unit, omega_text, shown
+
+    if ns.warmup is not None:
+        raise ParameterError("warmup", "applies to --method shooting (the balance starts from "
+                             "300 periods from rest)")  # fmt: skip
+    multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
+    if not 1 <= multiple <= MAX_MULTIPLE:
+        raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
+    H = _whole("harmonics", "15" if ns.harmonics is None else ns.harmonics)
+    N = None if ns.time_samples is None else _whole("time-samples", ns.time_samples)
+    try:
+        o = hb_orbit(system, forcing, e, harmonics=H, time_samples=N, subharmonic=multiple)
+    except ParameterError as exc:  # the API's names, as the command line spells its options
+        flag = {"time_samples": "time-samples", "subharmonic": "multiple"}
+        raise ParameterError(flag.get(exc.parameter, exc.parameter), exc.reason) from None
+    exact = shoot_from_rest(system, forcing, e, periods=multiple)
+    error = (o.amplitude - exact.amplitude) / exact.amplitude
+    out = o.as_dict() | {"exact": exact.as_dict(), "hb_error": error}
+    unit = display_unit("x")
+    k = np.arange(1, o.harmonics + 1)
+    size = np.hypot(np.array(o.x[1::2]), np.array(o.x[2::2]))
+    top = k[np.argsort(-size, kind="stable")][:4]
+    text = (
+        f"Ω {omega_text(forcing.omega)}: an orbit of {multiple} forcing period(s) by harmonic "
+        f"balance (H = {o.harmonics}, N = {o.samples}; {o.iterations} Newton steps, residual "
+        f"{o.residual:.1e}): amplitude {shown('x', o.amplitude):.6g} {unit}, "
+        f"{'stable' if o.stable else 'unstable'} by Hill's method (largest |multiplier| "
+        f"{o.multipliers[0]:.6g})\n"
+        f"shooting, the exact orbit: amplitude {shown('x', exact.amplitude):.6g} {unit}, "
+        f"{'stable' if exact.stable else 'unstable'} (largest |multiplier| "
+        f"{exact.multipliers[0]:.6g}); the balance's amplitude error {100 * error:+.3g} %\n"
+        "largest harmonics of x: "
+        + ", ".join(f"{j}: {shown('x', size[j - 1]):.4g} {unit}" for j in top)
+        + ("" if o.stable == exact.stable else
+           "\nnote: the balance and shooting disagree on stability; Hill's method sorts the "
+           "exponents of a truncated balance and can keep a spurious one: shooting's is exact")
+    )  # fmt: skip
+    emit(ns, out, text)
+
+
 def _structure_orbit(ns) -> None:
     """A structure file with dampers or stops: the orbit a run from rest settles near, by
     shooting on the state of its N modes and K dampers (:func:`symimpact.forced.orbits.structure_orbits.
@@ -186,8 +270,8 @@ def _structure_orbit(ns) -> None:
     from ..model.display import omega_text
     from .common import quantity_text
 
-    if ns.method == "closed-form":
-        raise ParameterError("method", "the closed form (Eq. F3) is the one-mode primary's: a "
+    if ns.method in ("closed-form", "hb"):
+        raise ParameterError("method", f"{ns.method} is the one-mode primary's for now: a "
                                        "structure's orbits are found by --method shooting")  # fmt: skip
     for key, why in (("response", "the responses of a structure's orbit are not built yet: "
                                   "--json gives every point's amplitude"),

@@ -336,7 +336,7 @@ def _amplitude(basis: Basis, X: np.ndarray) -> float:
     return float(max(abs(basis.at(X, np.array([t]))[0]), np.max(np.abs(v))))
 
 
-def _checked(system, forcing, contact, harmonics, samples, subharmonic):
+def _checked(system, forcing, contact, harmonics, time_samples, subharmonic):
     checks.instance("system", system, ImpactSystem, "an ImpactSystem")
     checks.instance("forcing", forcing, Forcing, "a Forcing")
     if not isinstance(contact, CompliantContact):
@@ -348,7 +348,7 @@ def _checked(system, forcing, contact, harmonics, samples, subharmonic):
     if nu > H:
         raise ParameterError("harmonics", f"must be at least the period multiple {nu}: the "
                              f"forcing is harmonic {nu} of the orbit's base frequency")  # fmt: skip
-    N = DEFAULT_SAMPLES_PER_HARMONIC * H if samples is None else samples
+    N = DEFAULT_SAMPLES_PER_HARMONIC * H if time_samples is None else time_samples
     N = checks.whole_number("time_samples", N, 1, 1 << 20)
     if N < 2 * H + 1:
         raise ParameterError("time_samples", f"must be at least 2H + 1 = {2 * H + 1} for H = {H} "
@@ -374,13 +374,13 @@ def _start(system, forcing, contact, H, nu) -> np.ndarray:
 
 
 def hb_orbit(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
-             harmonics: Any = 15, samples: Any = None, subharmonic: Any = 1,
+             harmonics: Any = 15, time_samples: Any = None, subharmonic: Any = 1,
              start: Any = None) -> HBOrbit:  # fmt: skip
     """The periodic orbit of period 2πν/Ω (ν = ``subharmonic``) by harmonic balance with H =
-    ``harmonics`` and N = ``samples`` (default 4H) time samples (module text), from ``start``
+    ``harmonics`` and N = ``time_samples`` (default 4H) time samples (module text), from ``start``
     (the coefficients of x then y) or from the attractor a run from rest settles on; with its
     Hill stability."""
-    H, N, nu = _checked(system, forcing, contact, harmonics, samples, subharmonic)
+    H, N, nu = _checked(system, forcing, contact, harmonics, time_samples, subharmonic)
     problem = _problem(system, forcing, contact, H, N, nu)
     w = forcing.omega / nu
     U0 = _start(system, forcing, contact, H, nu) if start is None else np.asarray(start, float)
