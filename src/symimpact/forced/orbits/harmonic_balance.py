@@ -71,6 +71,10 @@ MAX_NEWTON = 40
 #: resolves the series itself without aliasing; a product of the series (the force) folds
 #: harmonics above N/2 back, so N is asked to hold at least 4 samples a harmonic by default.
 MAX_HARMONICS = 400
+#: The continuation's corrector: Newton steps before the arc step is halved, and the smallest arc
+#: step (in the scaled unknowns, where the coefficients and Ω/Ω₀ are of order 1).
+CORRECTOR_STEPS = 8
+MIN_ARC_STEP = 1e-5
 DEFAULT_SAMPLES_PER_HARMONIC = 4
 
 
@@ -307,15 +311,20 @@ def _problem(system, forcing, contact, H, N, nu) -> Problem:
     Mm = np.diag([system.M, system.m])
     Cm = np.diag([system.C, 0.0])
     Km = np.diag([system.K, 0.0])
-    F_ext = np.zeros((2, 2 * H + 1))
-    if nu <= H:
-        # (F + K·X_b) cos Θ − C·Ω·X_b sin Θ on x, Θ = νθ + φ (Eq. F1's absolute x with the base)
-        A = forcing.primary_force + system.K * forcing.X_b
-        B = -system.C * forcing.omega * forcing.X_b
-        c, s = math.cos(forcing.phase), math.sin(forcing.phase)
-        F_ext[0, 2 * nu - 1] = A * c + B * s
-        F_ext[0, 2 * nu] = -A * s + B * c
+    F_ext = _forcing_terms(system, forcing, H, nu)
     return Problem(Mm, Cm, Km, F_ext, _contact_force(system, contact), basis)
+
+
+def _forcing_terms(system, forcing, H: int, nu: int) -> np.ndarray:
+    """The forcing's coefficients on (x, y): (F + K·X_b) cos Θ − C·Ω·X_b sin Θ on x,
+    Θ = νθ + φ (Eq. F1's absolute x with the base moving as X_b cos Θ)."""
+    F_ext = np.zeros((2, 2 * H + 1))
+    A = forcing.primary_force + system.K * forcing.X_b
+    B = -system.C * forcing.omega * forcing.X_b
+    c, s = math.cos(forcing.phase), math.sin(forcing.phase)
+    F_ext[0, 2 * nu - 1] = A * c + B * s
+    F_ext[0, 2 * nu] = -A * s + B * c
+    return F_ext
 
 
 def _amplitude(basis: Basis, X: np.ndarray) -> float:
@@ -406,3 +415,106 @@ def _orbit(problem: Problem, U: np.ndarray, omega: float, nu: int, it: int) -> H
         multipliers=tuple(mult), stable=all(v < 1.0 for v in mult), iterations=it,
         residual=float(np.max(np.abs(R))) / force,
     )  # fmt: skip
+
+
+@dataclass(frozen=True)
+class HBCurve:
+    """A branch of orbits by harmonic balance, followed in Ω by pseudo-arclength (module text):
+    ``orbits`` in the order of the arc; ``folds`` [rad/s]: where Ω turns back along it (a
+    saddle-node of the balance); ``ended``: why the branch stopped (the band's end, or what
+    failed: a grazing, where a contact is lost, or Newton at the smallest step).  A fold's Ω
+    is the extreme of the two points the arc turned between (to within one arc step)."""
+
+    orbits: tuple[HBOrbit, ...]
+    folds: tuple[float, ...]
+    ended: str
+
+    def as_dict(self) -> dict[str, Any]:
+        """points (omega, amplitude, stable), folds and why the branch ended; SI."""
+        return {
+            "points": [{"omega": o.omega, "amplitude": o.amplitude, "stable": o.stable}
+                       for o in self.orbits],
+            "folds": list(self.folds),
+            "ended": self.ended,
+        }  # fmt: skip
+
+
+def hb_curve(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, omega_range: Any,
+             harmonics: Any = 15, time_samples: Any = None, subharmonic: Any = 1,
+             max_points: int = 2000) -> HBCurve:  # fmt: skip
+    """The branch through the orbit a run from rest settles on at the band's first Ω, followed by
+    pseudo-arclength continuation in Ω (module text) until it leaves ``omega_range`` = (Ω₁, Ω₂)
+    [rad/s] or cannot go on, each orbit with Hill's stability."""
+    H, N, nu = _checked(system, forcing, contact, harmonics, time_samples, subharmonic)
+    lo, hi = checks.bounds("omega_range", omega_range, "rad/s")
+    if not lo > 0.0:
+        raise ParameterError("omega_range", f"must lie above 0 rad/s, got {lo:g}")
+    first = hb_orbit(system, forcing.at(lo), contact, H, N, nu)
+    problem = _problem(system, forcing.at(lo), contact, H, N, nu)
+    s, w0 = 0.5 * system.gap, lo
+    m = 2 * (2 * H + 1)
+
+    def parts(Y):
+        """(R, ∂R/∂Y) in the scaled unknowns Y = (U/s, Ω/Ω₀), the forcing moved to Ω."""
+        omega = Y[-1] * w0
+        problem.F_ext = _forcing_terms(system, forcing.at(omega), H, nu)
+        R, J, dR_dw, _ = problem.jacobian(Y[:-1] * s, omega / nu)
+        A = np.empty((m, m + 1))
+        A[:, :m] = J * s
+        # Ω moves the forcing's amplitude only through a base's terms; ∂/∂Ω by differences of
+        # those (exact for a force, where they do not move)
+        dF = (_forcing_terms(system, forcing.at(omega * (1 + 1e-7)), H, nu)
+              - _forcing_terms(system, forcing.at(omega * (1 - 1e-7)), H, nu)).ravel() / (2e-7 * omega)  # fmt: skip
+        A[:, m] = (dR_dw / nu - dF) * w0
+        return R, A
+
+    def tangent(A, previous):
+        t = np.linalg.svd(A)[2][-1]
+        if previous is not None and t @ previous < 0:
+            t = -t
+        return t / np.linalg.norm(t)
+
+    Y = np.concatenate([np.array(first.x + first.y) / s, [1.0]])
+    R, A = parts(Y)
+    t = tangent(A, None)
+    if t[-1] < 0:
+        t = -t
+    orbits, folds = [first], []
+    ds, ended = 0.02, "the band's end"
+    while len(orbits) < max_points:
+        Yp = Y + ds * t
+        Yc, ok = Yp.copy(), False
+        for _ in range(CORRECTOR_STEPS):
+            R, A = parts(Yc)
+            G = np.concatenate([R / max(float(np.max(np.abs(problem.F_ext))), 1e-300),
+                                [t @ (Yc - Yp)]])  # fmt: skip
+            B = np.vstack([A / max(float(np.max(np.abs(problem.F_ext))), 1e-300), t])
+            try:
+                dY = np.linalg.solve(B, -G)
+            except np.linalg.LinAlgError:
+                break
+            Yc = Yc + dY
+            if not np.all(np.isfinite(Yc)):
+                break
+            if np.max(np.abs(dY)) < TOL:
+                ok = True
+                break
+        if not ok:
+            ds /= 2.0
+            if ds < MIN_ARC_STEP:
+                ended = "Newton failed at the smallest step (a grazing, or a contact lost)"
+                break
+            continue
+        _, A = parts(Yc)
+        t_new = tangent(A, t)
+        if t_new[-1] * t[-1] < 0:  # Ω turned between the two points: the fold, to a step
+            turn = max if t[-1] > 0 else min
+            folds.append(float(turn(Y[-1], Yc[-1]) * w0))
+        Y, t = Yc, t_new
+        omega = float(Y[-1] * w0)
+        if not lo <= omega <= hi:
+            break
+        problem.F_ext = _forcing_terms(system, forcing.at(omega), H, nu)
+        orbits.append(_orbit(problem, Y[:-1] * s, omega, nu, 0))
+        ds = min(ds * 1.5, 0.05)
+    return HBCurve(tuple(orbits), tuple(folds), ended)
