@@ -37,7 +37,8 @@ COMMANDS = _commands()
 def test_the_block_holds_every_subcommand():
     assert [c.split()[1] for c in COMMANDS] == [
         "fit", "ritz", "ritz", "contact", "contact-duration", "simulate", "simulate", "simulate",
-        "periodic", "periodic", "periodic", "frf", "frf", "frf", "branch", "design", "design",
+        "periodic", "periodic", "periodic", "periodic", "frf", "frf", "frf", "branch",
+        "design", "design",
         "random", "shock", "sweep-sine", "sweep",
         "map",
     ]  # fmt: skip
@@ -72,6 +73,9 @@ def test_readme_command_runs_and_shows_something(command, tmp_path):
         assert "2 impacts per period, periodic with 1 forcing period" in out
         (png,) = [a for a in args if a.endswith(".png")]
         assert (tmp_path / png).stat().st_size > 10_000
+    elif sub == "periodic" and "hb" in args:  # H = 40 beside the exact orbit: 0.016 % apart
+        error = float(re.search(r"amplitude error ([-+\d.e]+) %", out)[1])
+        assert abs(error) < 0.05 and "shooting, the exact orbit: amplitude 6.87778 mm" in out
     elif sub == "periodic" and "shooting" in args:  # Ω 34: the stable asymmetric orbit
         assert "2 impacts per period, stable" in out
     elif sub == "frf" and "--base-acc" in args:  # the shaker: the textbook peak 0.862 mm × 50
