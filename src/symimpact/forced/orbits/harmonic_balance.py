@@ -108,22 +108,14 @@ class Basis:
         return cls(H, N, E, Et, P, D)
 
     def at(self, coefficients: np.ndarray, theta: np.ndarray, derivative: int = 0) -> np.ndarray:
-        """The series of ``coefficients`` (…, 2H + 1) and its ``derivative``-th θ-derivative at
-        ``theta``."""
-        c = np.asarray(coefficients)
+        """The series of ``coefficients`` (2H + 1) and its ``derivative``-th θ-derivative at
+        ``theta``: d^j/dθ^j of cos kθ and sin kθ are k^j·cos(kθ + jπ/2) and k^j·sin(kθ + jπ/2)."""
+        c = np.asarray(coefficients, dtype=float)
         k = np.arange(1, self.H + 1)
-        kt = np.multiply.outer(np.asarray(theta, dtype=float), k)
-        a, b = c[..., 1::2], c[..., 2::2]
-        cos, sin = np.cos(kt), np.sin(kt)
-        if derivative == 0:
-            return c[..., :1] + a @ cos.T + b @ sin.T if c.ndim > 1 else c[0] + cos @ a + sin @ b
-        # d^j/dθ^j of cos kθ and sin kθ: k^j cos(kθ + jπ/2), k^j sin(kθ + jπ/2)
+        kt = np.multiply.outer(np.asarray(theta, dtype=float), k) + derivative * math.pi / 2.0
         kj = k.astype(float) ** derivative
-        shift = derivative * math.pi / 2.0
-        cj, sj = np.cos(kt + shift), np.sin(kt + shift)
-        if c.ndim > 1:
-            return (a * kj) @ cj.T + (b * kj) @ sj.T
-        return cj @ (a * kj) + sj @ (b * kj)
+        value = np.cos(kt) @ (c[1::2] * kj) + np.sin(kt) @ (c[2::2] * kj)
+        return value + c[0] if derivative == 0 else value
 
 
 #: f(q, q̇) → (f, ∂f/∂q, ∂f/∂q̇): q, q̇ of shape (n, N), f (n, N), the derivatives (n, n, N).
