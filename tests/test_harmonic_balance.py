@@ -206,7 +206,7 @@ def test_the_command_gives_the_api_orbit_beside_shooting(capsys, hertz_exact):
     ("extra", "message"),
     [
         (["--harmonics", "10", "--time-samples", "20"], "time-samples: must be at least 2H + 1"),
-        (["--harmonics", "0"], "harmonics: must be a whole number of at least 1"),
+        (["--harmonics", "0"], "harmonics: must be a whole number 1 to 400, got 0"),
         (["--multiple", "3", "--harmonics", "2"], "harmonics: must be at least the period"),
         (["--response", "force"], "response: applies to --method closed-form or shooting"),
     ],

@@ -196,17 +196,6 @@ def _shooting(ns, system, forcing, e) -> None:
     emit(ns, out, text)
 
 
-def _whole(flag: str, value: Any) -> int:
-    """A whole number ≥ 1 of an option such as --harmonics, refused in one line naming it."""
-    from ..errors import ParameterError
-    from ..model.units import si_float
-
-    v = si_float(flag, value)
-    if not (v >= 1 and v == int(v)):
-        raise ParameterError(flag, f"must be a whole number of at least 1, got {value!r}")
-    return int(v)
-
-
 def _balance(ns, system, forcing, e) -> None:
     """--method hb: the orbit by harmonic balance (:func:`symimpact.forced.orbits.
     harmonic_balance.hb_orbit`) from the attractor a run from rest settles on, and beside it the
@@ -215,9 +204,10 @@ def _balance(ns, system, forcing, e) -> None:
 
     from ..errors import ParameterError
     from ..forced import shoot_from_rest
-    from ..forced.orbits.harmonic_balance import hb_orbit
+    from ..forced.orbits.harmonic_balance import MAX_HARMONICS, hb_orbit
     from ..forced.simulation import MAX_MULTIPLE, period_count
     from ..model.display import display_unit, omega_text, shown
+    from .loads import count
 
     if ns.warmup is not None:
         raise ParameterError("warmup", "applies to --method shooting (the balance starts from "
@@ -225,8 +215,8 @@ def _balance(ns, system, forcing, e) -> None:
     multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
     if not 1 <= multiple <= MAX_MULTIPLE:
         raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
-    H = _whole("harmonics", "15" if ns.harmonics is None else ns.harmonics)
-    N = None if ns.time_samples is None else _whole("time-samples", ns.time_samples)
+    H = count("harmonics", "15" if ns.harmonics is None else ns.harmonics, 1, MAX_HARMONICS)
+    N = None if ns.time_samples is None else count("time-samples", ns.time_samples, 1, 1 << 20)
     try:
         o = hb_orbit(system, forcing, e, harmonics=H, time_samples=N, subharmonic=multiple)
     except ParameterError as exc:  # the API's names, as the command line spells its options
