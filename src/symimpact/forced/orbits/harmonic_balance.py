@@ -139,8 +139,12 @@ class Problem:
         return self.Mm.shape[0]
 
     def _linear(self, w: float) -> np.ndarray:
-        I, D = np.eye(2 * self.basis.H + 1), self.basis.D
-        return np.kron(self.Km, I) + w * np.kron(self.Cm, D) + w * w * np.kron(self.Mm, D @ D)
+        """𝐊 ⊗ I + ω 𝐂 ⊗ D + ω² 𝐌 ⊗ D² (its three Kronecker products formed once)."""
+        if not hasattr(self, "_kron"):
+            I, D = np.eye(2 * self.basis.H + 1), self.basis.D
+            self._kron = (np.kron(self.Km, I), np.kron(self.Cm, D), np.kron(self.Mm, D @ D))
+        K, C, M = self._kron
+        return K + w * C + (w * w) * M
 
     def _samples(self, U: np.ndarray, w: float):
         Q = U.reshape(self.n, -1)
@@ -162,7 +166,8 @@ class Problem:
         m = 2 * b.H + 1
         J = L.copy()
         V = np.zeros((n * m, n * m))  # P diag(∂f/∂q̇) E, for Hill's Δ₁
-        dR_dw = (np.kron(self.Cm, b.D) + 2.0 * w * np.kron(self.Mm, b.D @ b.D)) @ U
+        _, KC, KM = self._kron
+        dR_dw = (KC + 2.0 * w * KM) @ U
         for i in range(n):
             for j in range(n):
                 block_q = (b.P * fq[i, j]) @ b.E
@@ -208,16 +213,17 @@ def newton(problem: Problem, U: np.ndarray, w: float, scale: float,
         if not math.isfinite(step):
             break
         lam = 1.0
-        for _ in range(30):
+        for _ in range(30):  # the residual alone judges a step; the Jacobian once one is taken
             trial = U + lam * dU
-            R_t, J_t, _, _ = problem.jacobian(trial, w)
+            R_t = problem.residual(trial, w)
             norm_t = float(np.linalg.norm(R_t))
             if norm_t < norm or step < tol:
                 break
             lam *= 0.5
-        U, R, J, norm = trial, R_t, J_t, norm_t
+        U, norm = trial, norm_t
         if step < tol:
             return U, it, step
+        R, J, _, _ = problem.jacobian(U, w)
     raise MethodNotApplicable("hb", f"Newton did not converge (last step {step:.1e} of the scale)")
 
 
@@ -358,20 +364,42 @@ def _checked(system, forcing, contact, harmonics, time_samples, subharmonic):
 
 
 def _start(system, forcing, contact, H, nu) -> np.ndarray:
-    """Coefficients of the attractor a run from rest settles on: the compliant engine's samples
-    of its last ν periods, transformed (64 samples a period, H below 32 of them)."""
-    from ..simulation import simulate_forced
+    """Coefficients of the attractor a run from rest settles on (:func:`coefficients_of` of the
+    state after 300 periods)."""
     from .shooting import settled_state
 
     state, _ = settled_state(system, forcing, contact, 300, (0.0, 0.0, 0.0, 0.0))
-    per = 64 * max(1, math.ceil(H / 16))
-    res = simulate_forced(system, forcing, contact=contact.law, chi=contact.chi, periods=nu,
-                          x0=state[0], xdot0=state[1], y0=state[0] + state[2], ydot0=state[3],
+    return coefficients_of(system, forcing, contact, state, H, nu)
+
+
+def coefficients_of(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
+                    state: Any, harmonics: int, subharmonic: int = 1,
+                    phase: float | None = None) -> np.ndarray:  # fmt: skip
+    """The coefficients (x then y, H = ``harmonics``) of the motion from ``state`` (x, ẋ, z, ẏ)
+    at t = 0 over ν = ``subharmonic`` forcing periods: the compliant engine's samples (64 a
+    period, H below 32 of them), transformed; in θ = Ωt/ν with the forcing's phase ``forcing.phase``
+    at t = 0, or, given ``phase``, moved to the frame where the forcing's phase at θ = 0 is that
+    one (a shift of θ by δ = (φ − phase)/ν turns (aₖ, bₖ) by kδ)."""
+    from ..simulation import simulate_forced
+
+    per = 64 * max(1, math.ceil(harmonics / 16))
+    x0, v0, z0, u0 = (float(c) for c in state)
+    res = simulate_forced(system, forcing, contact=contact.law, chi=contact.chi,
+                          periods=subharmonic, x0=x0, xdot0=v0, y0=x0 + z0, ydot0=u0,
                           samples_per_period=per)  # fmt: skip
     s = np.asarray(res.samples)[:-1]
-    x, y = s[:, 0], s[:, 0] + s[:, 2]
-    b = Basis.of(H, len(x))
-    return np.concatenate([b.P @ x, b.P @ y])
+    b = Basis.of(harmonics, len(s))
+    X, Y = b.P @ s[:, 0], b.P @ (s[:, 0] + s[:, 2])
+    if phase is not None and forcing.phase != phase:
+        # x(θ) in the new frame is x(θ − δ) in this one: the forcing cos(νθ + φ) becomes
+        # cos(νθ + φ − νδ) = cos(νθ + phase)
+        delta = (forcing.phase - phase) / subharmonic
+        k = np.arange(1, harmonics + 1)
+        c, sn = np.cos(k * delta), np.sin(k * delta)
+        for C in (X, Y):
+            a, bk = C[1::2].copy(), C[2::2].copy()
+            C[1::2], C[2::2] = a * c - bk * sn, a * sn + bk * c
+    return np.concatenate([X, Y])
 
 
 def hb_orbit(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
@@ -442,8 +470,19 @@ def hb_curve(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, 
     if not lo > 0.0:
         raise ParameterError("omega_range", f"must lie above 0 rad/s, got {lo:g}")
     first = hb_orbit(system, forcing.at(lo), contact, H, N, nu)
-    problem = _problem(system, forcing.at(lo), contact, H, N, nu)
-    s, w0 = 0.5 * system.gap, lo
+    return arc(system, forcing.at(lo), contact, first, (lo, hi), +1, max_points)
+
+
+def arc(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, first: HBOrbit,
+        band: tuple[float, float], direction: int, max_points: int = 2000) -> HBCurve:  # fmt: skip
+    """The branch through the balanced orbit ``first`` (of ``forcing`` at its Ω, whose phase
+    the whole branch keeps), followed by pseudo-arclength continuation (module text) with Ω
+    rising (``direction`` +1) or falling (−1) from it, until Ω leaves ``band`` (Ω₁, Ω₂) [rad/s]
+    or the corrector fails at the smallest step; ``first`` is the curve's first orbit."""
+    lo, hi = band
+    H, N, nu = first.harmonics, first.samples, first.subharmonic
+    problem = _problem(system, forcing.at(first.omega), contact, H, N, nu)
+    s, w0 = 0.5 * system.gap, first.omega
     m = 2 * (2 * H + 1)
 
     def parts(Y):
@@ -469,7 +508,7 @@ def hb_curve(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, 
     Y = np.concatenate([np.array(first.x + first.y) / s, [1.0]])
     R, A = parts(Y)
     t = tangent(A, None)
-    if t[-1] < 0:
+    if t[-1] * direction < 0:
         t = -t
     orbits, folds = [first], []
     ds, ended = 0.02, "the band's end"
@@ -486,7 +525,7 @@ def hb_curve(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, 
             except np.linalg.LinAlgError:
                 break
             Yc = Yc + dY
-            if not np.all(np.isfinite(Yc)):
+            if not np.all(np.isfinite(Yc)) or not Yc[-1] > 0.0:  # diverged (Ω ≤ 0)
                 break
             if np.max(np.abs(dY)) < TOL:
                 ok = True
