@@ -58,6 +58,20 @@ def add_parser(sub: Any) -> None:
                    help="processes: with --structure for the runs from rest at each "
                    "frequency, else for the multi-start's initial states (default all cores; "
                    "1 runs them here)")  # fmt: skip
+    g = p.add_argument_group("harmonic balance beside the exact curve (a compliant contact)")
+    g.add_argument(
+        "--method",
+        choices=("shooting", "hb", "compare"),
+        default="shooting",
+        help="shooting: the exact orbits' branches (default); hb: the curve by multi-harmonic "
+        "balance (AFT, Hill's stability) drawn beside them; compare: the exact curve with, per "
+        "branch, the balance's amplitude error, the harmonics it needs for 1 %% and 0.1 %%, and "
+        "where the two disagree",
+    )
+    g.add_argument("--harmonics", default=None, metavar="H",
+                   help="harmonics of the balance; default 15")  # fmt: skip
+    g.add_argument("--time-samples", default=None, metavar="N",
+                   help="time samples a period (AFT), at least 2H + 1; default 4H")  # fmt: skip
     p.add_argument(
         "--response",
         default="displacement",
@@ -201,6 +215,9 @@ def run_structure(ns) -> None:
                            ("chi", "chi", "the file gives each damper's and stop's contact")):  # fmt: skip
         if getattr(ns, key, None) not in (None, False, "displacement"):
             raise ParameterError(flag, why)
+    if ns.method != "shooting" or ns.harmonics is not None or ns.time_samples is not None:
+        raise ParameterError("method", "harmonic balance is built for the one-mode primary: a "
+                                       "structure's curve is its exact orbits'")  # fmt: skip
     if ns.folds:
         raise ParameterError("folds", "a structure's branches end at a grazing no orbit "
                                       "continues beyond; turning back there is the one-mode "
@@ -271,6 +288,9 @@ def run(ns) -> None:
     system = system_from(ns)
     forcing = forcing_of(ns, omega=float(omegas[0]))
     e = contact_of(ns)
+    from .frf_hb import balance_of
+
+    balance = balance_of(ns, system, forcing, e)  # (H, N) with --method hb or compare, checked
     from ..forced.contact_law import is_rigid
     from ..forced.responses import checked_response, response_key
 
@@ -288,6 +308,10 @@ def run(ns) -> None:
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps,
                              folds=ns.folds, embedded=ns.embedded, workers=ns.workers,
                              multistart=multistart)  # fmt: skip
+    if balance is not None:
+        from .frf_hb import run_beside
+
+        return run_beside(ns, system, forcing, e, frf, *balance)
     if response != "displacement":
         from ..forced.orbits.response_curve import response_curve
 

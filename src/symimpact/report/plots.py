@@ -208,6 +208,41 @@ def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
     plt.close(fig)
 
 
+def plot_frf_beside(exact: Any, other: Any, path: str | os.PathLike, label: str,
+                    title: str = "") -> None:  # fmt: skip
+    """The exact curve (:func:`draw_frf`) with a second curve of the same schema drawn over it
+    (``other``, e.g. the harmonic balance's of :mod:`symimpact.forced.orbits.hb_frf`): its
+    stable orbits a thin red line through its points, its unstable ones dotted, its largest
+    stable orbit a red star."""
+    import numpy as np
+
+    from ..model.display import shown
+
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    draw_frf(ax, exact)
+    for flag in (False, True):
+        for b in other.branches:
+            w = shown("omega", np.array([p.omega for p in b.points]))
+            a = shown("x", np.array([p.amplitude for p in b.points]))
+            stable = np.array([p.stable for p in b.points])
+            joined = stable == flag
+            joined[1:] |= stable[:-1] == flag
+            ax.plot(w, np.where(joined, a, np.nan), "-" if flag else ":", color="C3",
+                    lw=1.0, marker="o" if flag else None, ms=2.5, zorder=7)  # fmt: skip
+    ax.plot([], [], "-", color="C3", lw=1.0, marker="o", ms=2.5, label=f"{label}: stable (Hill)")
+    ax.plot([], [], ":", color="C3", lw=1.0, label=f"{label}: unstable")
+    if other.peak is not None:
+        ax.plot(shown("omega", other.peak.omega), shown("x", other.peak.amplitude), "*",
+                color="C3", mec="k", ms=10, zorder=8, label=f"{label}: largest stable")  # fmt: skip
+    legend_beside(ax)  # again: draw_frf's legend with these entries
+    if title:
+        ax.set_title(title, fontsize=10)
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
+
+
 def plot_branch(branch: Any, path: str | os.PathLike, title: str = "") -> None:
     """A branch continued in a parameter (:func:`symimpact.forced.trace_branch`): the amplitude
     against the parameter (d and X_b in mm), stable solid and unstable dashed, the located

@@ -201,9 +201,13 @@ def hb_frequency_response(system: ImpactSystem, forcing: Forcing, contact: Compl
         up = arc(system, forcing.at(orbit.omega, 0.0), contact, orbit, (lo, hi), +1)
         orbits = list(reversed(down.orbits)) + list(up.orbits[1:])
         curves.append(orbits)
+        if len(orbits) < 2:
+            notes.append(f"the balanced orbit at Ω = {orbit.omega:.6g} rad/s ({origin}) could "
+                         "not be continued either way")  # fmt: skip
+            return
         ended = "; ".join(dict.fromkeys([down.ended, up.ended]))
-        branches.append(_branch(orbits, sorted(down.folds + up.folds), ended, origin, system,
-                                step))  # fmt: skip
+        folds = sorted(f for f in down.folds + up.folds if lo <= f <= hi)
+        branches.append(_branch(orbits, folds, ended, origin, system, step))
 
     for i, b in enumerate(exact.branches):
         k = b.period_multiple
@@ -245,9 +249,8 @@ def _close(point: BranchPoint, curve: list[HBOrbit]) -> bool:
 class BranchComparison:
     """The balance beside one exact branch (SI): ``hb_error``, the largest relative error in
     amplitude (A_HB − A)/A in modulus over the exact orbits the balance found an orbit near, at
-    ``worst_omega`` [rad/s]; ``harmonics_for``: the fewest harmonics of :data:`LADDER` from which
-    on the error stays below each level of :data:`LEVELS` at the branch's ends and its largest
-    orbit (None: not within the ladder); ``stability_disagreements`` [rad/s]: where Hill's
+    ``worst_omega`` [rad/s]; ``harmonics_for``: the fewest harmonics of :data:`LADDER` at which the
+    error falls below each level of :data:`LEVELS` at the branch's ends and its largest orbit (None: not within the ladder); ``stability_disagreements`` [rad/s]: where Hill's
     verdict differs from shooting's; ``missed`` [rad/s]: exact orbits near which the balance
     finds none; ``compared``: how many exact orbits were balanced."""
 
@@ -319,22 +322,20 @@ def _error_at(system, forcing, contact, p: BranchPoint, k: int, H: int) -> float
 
 
 def _harmonics_for(system, forcing, contact, b: Branch) -> dict[str, int | None]:
-    """The fewest harmonics of :data:`LADDER` (≥ the period multiple) from which on the largest
-    error at the branch's ends and largest orbit stays below each level; None beyond it."""
+    """The fewest harmonics of :data:`LADDER` (≥ the period multiple) at which the largest error
+    at the branch's ends and largest orbit falls below each level of :data:`LEVELS` (the ladder
+    climbed until the smallest level is reached); None where it is not within the ladder."""
     k = b.period_multiple
     pts = [b.points[0], b.points[-1], max(b.points, key=lambda p: p.amplitude)]
-    errors = []
+    out: dict[str, int | None] = {f"{level:g}": None for level in LEVELS}
     for H in (h for h in LADDER if h >= k):
         e = [_error_at(system, forcing, contact, p, k, H) for p in pts]
-        errors.append((H, math.inf if any(x is None for x in e) else max(e)))
-    out: dict[str, int | None] = {}
-    for level in LEVELS:
-        found = None
-        for H, err in reversed(errors):
-            if err >= level:
-                break
-            found = H
-        out[f"{level:g}"] = found
+        err = math.inf if any(x is None for x in e) else max(e)
+        for level in LEVELS:
+            if out[f"{level:g}"] is None and err < level:
+                out[f"{level:g}"] = H
+        if err < min(LEVELS):
+            break
     return out
 
 
