@@ -183,7 +183,7 @@ def hb_frequency_response(system: ImpactSystem, forcing: Forcing, contact: Compl
                           exact: FrequencyResponse, harmonics: Any = 15,
                           time_samples: Any = None) -> FrequencyResponse:  # fmt: skip
     """The curve by harmonic balance (H = ``harmonics``, N = ``time_samples``, default 4H) over
-    the band of ``exact`` (module text), in :class:`FrequencyResponse`'s schema: its branches
+    the band of ``exact`` and as far as its branches reach past it (module text), in :class:`FrequencyResponse`'s schema: its branches
     (each orbit's ``impacts_per_period`` the contact phases a period among the balance's
     samples), folds and Hill's changes of stability, the largest stable orbit as its peak; the
     primary without the damper, the motion without impacts and the brute-force sweeps are the
@@ -191,7 +191,8 @@ def hb_frequency_response(system: ImpactSystem, forcing: Forcing, contact: Compl
     H, N, _ = _checked(system, forcing, contact, harmonics, time_samples, 1)
     if not isinstance(exact, FrequencyResponse):
         raise ParameterError("exact", "must be a FrequencyResponse (frequency_response)")
-    lo, hi = float(exact.omegas[0]), float(exact.omegas[-1])
+    drawn = [p.omega for b in exact.branches for p in b.points]  # a branch may end past the band
+    lo, hi = min([float(exact.omegas[0]), *drawn]), max([float(exact.omegas[-1]), *drawn])
     step = float(np.max(np.diff(exact.omegas)))
     curves: list[list[HBOrbit]] = []
     branches, notes = [], []
