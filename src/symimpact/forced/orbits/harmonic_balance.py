@@ -45,7 +45,8 @@ while no sample sits at an onset (H up to 60 there), and may stall beyond.
 half s = d/2 and the first frequency Ω₀; the predictor along the tangent of [∂R/∂U, ∂R/∂Ω],
 Newton's corrector on the plane normal to it.
 
-Private to the package's API: :func:`hb_orbit` and :func:`hb_curve` check their input.
+The curve over a band beside the exact one, and the comparison of the two, are
+:mod:`symimpact.forced.orbits.hb_frf`'s.  :func:`hb_orbit` and :func:`hb_curve` check their input.
 """
 
 from __future__ import annotations
