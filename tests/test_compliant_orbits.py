@@ -317,3 +317,23 @@ def test_an_orbit_of_304_contacts_a_period_is_shot_at_a_cost_linear_in_its_conta
     assert len(small_res.impacts) == 66
     small_per_contact = small_res.contact_evaluations / len(small_res.impacts)
     assert 0.5 < per_contact / small_per_contact < 2.0, (per_contact, small_per_contact)
+
+
+def test_a_grazing_onset_has_no_derivative_and_says_so():
+    """A flight carrying the derivatives that meets its wall at zero relative speed (∇g·f_B = 0,
+    a grazing onset): the onset's time has no derivative, and ``_through_flight`` says so
+    (False; the engine then ends the run as GRAZED, which shooting reads as 'does not apply')
+    where it divided by zero (``frf --contact linear --k1 1e5 --c1 0.5 --omega-range
+    25:40:0.075`` ended in an internal ZeroDivisionError)."""
+    from symimpact.forced.engine import _compliant, _rigid
+
+    p = np.zeros(_rigid.N_PARAMS)
+    p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C], p[_rigid.P_m] = 1.0, 1000.0, 0.5, 0.05
+    G, gt = np.eye(4), np.zeros(4)
+    fa = np.array([0.1, -2.0, 0.1, 0.0])
+    grazing = np.array([0.1, -2.0, 0.1, 0.0])  # ẋ = ẏ at the wall: ż = 0
+    assert not _compliant._through_flight(p, 0.01, G.copy(), gt.copy(), fa, grazing, 1)
+    # an onset at a speed: True, the derivatives finite
+    approach = np.array([0.1, -2.0, 0.5, 0.0])
+    assert _compliant._through_flight(p, 0.01, G, gt, fa, approach, 1)
+    assert np.all(np.isfinite(G)) and np.all(np.isfinite(gt))

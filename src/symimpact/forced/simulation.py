@@ -363,6 +363,10 @@ def _simulate(system, forcing, contact, e, chi, law, state, n_periods, chatter=C
             "the time (a contact this stiff is contact rigid with its restitution; else check "
             "the masses and the clearance)",
         )
+    if status == _compliant.GRAZED:
+        raise MethodNotApplicable(
+            "shooting", "a contact begins at zero approach speed (a grazing onset): the orbit's "
+            "derivatives do not exist there")  # fmt: skip
     if status == _compliant.UNRESOLVED:
         raise ParameterError(
             _STIFFNESS.get(contact, "k_hz"),

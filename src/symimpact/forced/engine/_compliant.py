@@ -57,6 +57,8 @@ CODES = {"cubic": CUBIC, "hertz": HERTZ, "linear": LINEAR, HUNT_CROSSLEY: HC}
 RTOL = 1e-13
 RHS_BUDGET = budgets.RHS_BUDGET  # evaluations of f (symimpact.budgets)
 TOO_MUCH_WORK, TOO_MANY_STEPS, STEP_UNDERFLOW, UNRESOLVED = 2, 3, 4, 5
+#: a flight ended on a wall at zero relative speed with the derivatives carried (a grazing onset)
+GRAZED = 6
 #: steps in one contact beyond which its time scale is out of proportion to the motion
 MAX_CONTACT_STEPS = _stepper.MAX_CONTACT_STEPS
 NW = 27  # x, ẋ, y, ẏ; forcing work, C's and the contact's dissipation; Ψ (4 × 4, by rows); ψ_t
@@ -372,7 +374,8 @@ def _through_flight(p, tau, G, gt, fa, fb, side):
     (field ``fa``) to event B (field ``fb``) on the wall ``side`` (0: B is the run's end, a fixed
     time).  H = Φ(τ)(G − fa·gt) is the change at B's nominal time (the closed-form flight obeys
     the flow's identity exactly); at a wall B's time moves by −∇g·H/(∇g·fb) and the state with
-    it."""
+    it.  False where B meets its wall at zero relative speed (∇g·fb = 0, a grazing onset): the
+    onset's time has no derivative there."""
     M, K, C = p[_rigid.P_M], p[_rigid.P_K], p[_rigid.P_C]
     a11 = _stepper._x_ff(tau, M, K, C, 1.0, 0.0)
     a12 = _stepper._x_ff(tau, M, K, C, 0.0, 1.0)
@@ -387,12 +390,15 @@ def _through_flight(p, tau, G, gt, fa, fb, side):
         G[3, j] = d3
     if side == 0:
         gt[:] = 0.0
-        return
+        return True
     rate = side * (fb[2] - fb[0])
+    if rate == 0.0 or not math.isfinite(rate):
+        return False
     for j in range(4):
         gt[j] = -side * (G[2, j] - G[0, j]) / rate
         for i in range(4):
             G[i, j] += fb[i] * gt[j]
+    return True
 
 
 @njit(cache=True)
@@ -502,7 +508,9 @@ def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budge
             w[0], w[1], w[2] = xn, vn, xn + z
             if variational:
                 _flight_field(p, t, xn, vn, u, fb)
-                _through_flight(p, tau, G, gt, fa, fb, side)
+                if not _through_flight(p, tau, G, gt, fa, fb, side):
+                    status = GRAZED
+                    break
             if side == 0:
                 break
             w[2] = w[0] + side * h  # exactly on the wall (the onset is located to 4e-16)
