@@ -58,6 +58,13 @@ SAME = 1e-7
 #: A balanced orbit is tried against a branch's orbits lying within this scaled distance of it
 #: (the arc's longest step is 0.05 in the unknowns U/(d/2), Ω/Ω₀).
 NEAR = 0.1
+#: A balanced orbit lies on a branch where it is this close (scaled unknowns) to the polyline
+#: through the branch's orbits: the arc's chords, of 0.05 at most, stray from the curve by
+#: ds²κ/8, some 3e-4 times its curvature; and where c₁δ̇ switches on with a step the balance's
+#: residual is discontinuous, its Newton landing on neighbouring near-solutions (on the README's
+#: primary with the default linear contact, two traces of one branch 30.8–31.4 rad/s were
+#: 1e-3 apart).  Newton from the nearest orbit decides beyond.
+CHORD = 1e-2
 #: The most exact orbits of one branch :func:`compare` balances (evenly spread beyond).
 COMPARED = 60
 #: A stable balanced orbit has an exact one near where an exact orbit of its period lies within
@@ -101,6 +108,8 @@ def _on(omega: float, k: int, U: np.ndarray, curves: list[list[HBOrbit]], system
         i = int(np.argmin(dist))
         if dist[i] > NEAR:
             continue
+        if _chord_distance(Y, [o.omega / omega for o in curve], U) < CHORD:
+            return True
         near = curve[i]
         problem = _problem(system, forcing.at(omega, 0.0), contact, near.harmonics,
                            near.samples, k)  # fmt: skip
@@ -111,6 +120,35 @@ def _on(omega: float, k: int, U: np.ndarray, curves: list[list[HBOrbit]], system
         if np.max(np.abs(again / s - U)) < SAME * 1e3:
             return True
     return False
+
+
+def _retraced(orbits: list[HBOrbit], curves: list[list[HBOrbit]], gap: float) -> int | None:
+    """The curve of ``curves`` that at least half of ``orbits`` lie on (within :data:`CHORD` of
+    its polyline, the same period), or None."""
+    s = 0.5 * gap
+    for i, curve in enumerate(curves):
+        if curve[0].subharmonic != orbits[0].subharmonic or len(curve) < 2:
+            continue
+        Y = np.array([o.x + o.y for o in curve]) / s
+        on = sum(_chord_distance(Y, [c.omega / o.omega for c in curve], np.array(o.x + o.y) / s)
+                 < CHORD for o in orbits)  # fmt: skip
+        if 2 * on >= len(orbits):
+            return i
+    return None
+
+
+def _chord_distance(Y: np.ndarray, w: list[float], U: np.ndarray) -> float:
+    """The distance in the scaled unknowns (U/(d/2), Ω/Ω_U) from (U, 1) to the polyline through
+    the curve's orbits (Y, w)."""
+    P = np.column_stack([Y, w])
+    q = np.concatenate([U, [1.0]])
+    a, b = P[:-1], P[1:]
+    ab = b - a
+    t = np.clip(np.einsum("ij,ij->i", q - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab),
+                                                                 1e-300), 0.0, 1.0)  # fmt: skip
+    if len(P) == 1:
+        return float(np.linalg.norm(P[0] - q))
+    return float(np.min(np.linalg.norm(a + t[:, None] * ab - q, axis=1)))
 
 
 def _contacts_per_period(orbit: HBOrbit, gap: float) -> float:
@@ -201,7 +239,10 @@ def hb_frequency_response(system: ImpactSystem, forcing: Forcing, contact: Compl
         down = arc(system, forcing.at(orbit.omega, 0.0), contact, orbit, (lo, hi), -1)
         up = arc(system, forcing.at(orbit.omega, 0.0), contact, orbit, (lo, hi), +1)
         orbits = list(reversed(down.orbits)) + list(up.orbits[1:])
+        traced = _retraced(orbits, curves, system.gap)
         curves.append(orbits)
+        if traced is not None:  # a second trace of a branch from one of its near-solutions
+            return
         if len(orbits) < 2:
             notes.append(f"the balanced orbit at Ω = {orbit.omega:.6g} rad/s ({origin}) could "
                          "not be continued either way")  # fmt: skip
@@ -369,20 +410,40 @@ def compare(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
     return Comparison(H, N, tuple(rows), tuple(_unmatched(system, forcing, contact, exact, hb)))
 
 
+def _near_exact(p: BranchPoint, k: int, exact: FrequencyResponse, step: float) -> bool:
+    """Whether an exact branch of k periods passes within :data:`AMPLITUDE_NEAR` of the
+    amplitude of ``p`` at its Ω: between two of its orbits that bracket Ω (the amplitude
+    interpolated; a continuation's steps are longer than the band's where the curve is
+    straight), or at one within the band's step of it."""
+    for b in exact.branches:
+        if b.period_multiple != k:
+            continue
+        for q in b.points:
+            if (
+                abs(q.omega - p.omega) <= step
+                and abs(q.amplitude / p.amplitude - 1) <= AMPLITUDE_NEAR
+            ):
+                return True
+        for q, r in itertools.pairwise(b.points):
+            if min(q.omega, r.omega) <= p.omega <= max(q.omega, r.omega) and q.omega != r.omega:
+                a = q.amplitude + (r.amplitude - q.amplitude) * (p.omega - q.omega) / (
+                    r.omega - q.omega
+                )
+                if abs(a / p.amplitude - 1) <= AMPLITUDE_NEAR:
+                    return True
+    return False
+
+
 def _unmatched(system, forcing, contact, exact, hb) -> list[Unmatched]:
-    """The balance's stable stretches with no exact stable orbit of their period near (within
-    the band's step in Ω and :data:`AMPLITUDE_NEAR` of the amplitude), each checked by shooting
-    from the balance's state at its middle."""
+    """The balance's stable stretches with no exact orbit of their period near
+    (:func:`_near_exact`), each checked by shooting from the balance's state at its middle."""
     from .shooting import shoot
 
     step = float(np.max(np.diff(exact.omegas)))
-    known = [(b.period_multiple, p.omega, p.amplitude) for b in exact.branches for p in b.points]
     out = []
     for i, b in enumerate(hb.branches):
         k = b.period_multiple
-        alone = [p.stable and not any(kk == k and abs(w - p.omega) <= step
-                                      and abs(a / p.amplitude - 1) <= AMPLITUDE_NEAR
-                                      for kk, w, a in known) for p in b.points]  # fmt: skip
+        alone = [p.stable and not _near_exact(p, k, exact, step) for p in b.points]
         j = 0
         while j < len(alone):
             if not alone[j]:
