@@ -25,6 +25,7 @@ from . import (
     estimates,
     first_run,
     frc,
+    harmonic_balance,
     identification,
     map_throughput,
     million_map,
@@ -75,6 +76,10 @@ SUITE = (
     (
         "16. a 10 s free decay at 5 kHz identified: e, ζ, d with their intervals",
         identification.main,
+    ),
+    (
+        "17. a 200-frequency curve by harmonic balance (H = 15) beside the exact one",
+        harmonic_balance.main,
     ),
 )
 

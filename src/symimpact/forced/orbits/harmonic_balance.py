@@ -68,6 +68,10 @@ from ..forcing import Forcing
 #: switching between iterates leave the last steps at some 1e-11 of it), and its most steps.
 TOL = 1e-10
 MAX_NEWTON = 40
+#: Newton's step is halved at most this often until the residual falls; beyond, Newton has
+#: stalled (a step of 2^-12 of its own length lowers a smooth residual unless it is at a
+#: minimum of its norm that is no zero).
+HALVINGS = 12
 #: The harmonics a balance may carry, and the fewest time samples per harmonic (AFT): N ≥ 2H + 1
 #: resolves the series itself without aliasing; a product of the series (the force) folds
 #: harmonics above N/2 back, so N is asked to hold at least 4 samples a harmonic by default.
@@ -214,13 +218,17 @@ def newton(problem: Problem, U: np.ndarray, w: float, scale: float,
         if not math.isfinite(step):
             break
         lam = 1.0
-        for _ in range(30):  # the residual alone judges a step; the Jacobian once one is taken
+        for _ in range(HALVINGS):  # the residual alone judges a step; the Jacobian once taken
             trial = U + lam * dU
             R_t = problem.residual(trial, w)
             norm_t = float(np.linalg.norm(R_t))
             if norm_t < norm or step < tol:
                 break
             lam *= 0.5
+        else:
+            raise MethodNotApplicable(
+                "hb", f"Newton stalled: no step along its direction down to 2^-{HALVINGS} lowers "
+                "the residual (a contact's onset between samples makes it discontinuous there)")  # fmt: skip
         U, norm = trial, norm_t
         if step < tol:
             return U, it, step
