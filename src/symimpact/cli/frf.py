@@ -508,8 +508,7 @@ def balance_of(ns, system, forcing, e) -> tuple[int, int] | None:
             if getattr(ns, key) is not None:
                 raise ParameterError(flag, "applies to --method hb or compare")
         return None
-    from ..forced.orbits.harmonic_balance import MAX_HARMONICS, _checked
-    from .loads import count
+    from .common import harmonics_of
 
     for key, flag, why in (
         ("response", "response", "the balance's curve is of the displacement max |x|"),
@@ -517,14 +516,7 @@ def balance_of(ns, system, forcing, e) -> tuple[int, int] | None:
     ):
         if getattr(ns, key, None) not in (None, "displacement"):
             raise ParameterError(flag, why)
-    H = count("harmonics", "15" if ns.harmonics is None else ns.harmonics, 1, MAX_HARMONICS)
-    N = None if ns.time_samples is None else count("time-samples", ns.time_samples, 1, 1 << 20)
-    try:
-        H, N, _ = _checked(system, forcing, e, H, N, 1)
-    except ParameterError as exc:  # the API's names, as the command line spells its options
-        name = {"time_samples": "time-samples"}.get(exc.parameter, exc.parameter)
-        raise ParameterError(name, exc.reason) from None
-    return H, N
+    return harmonics_of(ns, system, forcing, e)
 
 
 def _branch_line(i: int, b, what: str) -> str:

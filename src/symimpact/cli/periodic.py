@@ -204,10 +204,10 @@ def _balance(ns, system, forcing, e) -> None:
 
     from ..errors import ParameterError
     from ..forced import shoot_from_rest
-    from ..forced.orbits.harmonic_balance import MAX_HARMONICS, hb_orbit
+    from ..forced.orbits.harmonic_balance import hb_orbit
     from ..forced.simulation import MAX_MULTIPLE, period_count
     from ..model.display import display_unit, omega_text, shown
-    from .loads import count
+    from .common import harmonics_of
 
     if ns.warmup is not None:
         raise ParameterError("warmup", "applies to --method shooting (the balance starts from "
@@ -215,13 +215,8 @@ def _balance(ns, system, forcing, e) -> None:
     multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
     if not 1 <= multiple <= MAX_MULTIPLE:
         raise ParameterError("multiple", f"must be 1 to {MAX_MULTIPLE}, got {multiple}")
-    H = count("harmonics", "15" if ns.harmonics is None else ns.harmonics, 1, MAX_HARMONICS)
-    N = None if ns.time_samples is None else count("time-samples", ns.time_samples, 1, 1 << 20)
-    try:
-        o = hb_orbit(system, forcing, e, harmonics=H, time_samples=N, subharmonic=multiple)
-    except ParameterError as exc:  # the API's names, as the command line spells its options
-        flag = {"time_samples": "time-samples", "subharmonic": "multiple"}
-        raise ParameterError(flag.get(exc.parameter, exc.parameter), exc.reason) from None
+    H, N = harmonics_of(ns, system, forcing, e, multiple)
+    o = hb_orbit(system, forcing, e, harmonics=H, time_samples=N, subharmonic=multiple)
     exact = shoot_from_rest(system, forcing, e, periods=multiple)
     error = (o.amplitude - exact.amplitude) / exact.amplitude
     out = o.as_dict() | {"exact": exact.as_dict(), "hb_error": error}
