@@ -109,6 +109,16 @@ def legend_beside(ax: Any, *handles_labels: Any, **options: Any) -> Any:
     return ax.legend(*handles_labels, **options)
 
 
+def verdict_run(a: Any, stable: Any, flag: bool) -> Any:
+    """``a`` where the orbits' verdict ``stable`` is ``flag``, NaN elsewhere: each run of equal
+    verdicts joined to its neighbour, so that the curve drawn in two styles stays unbroken."""
+    import numpy as np
+
+    joined = np.asarray(stable) == flag
+    joined[1:] |= np.asarray(stable)[:-1] == flag
+    return np.where(joined, a, np.nan)
+
+
 def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     """Draw a frequency-response curve on ``ax`` (see :func:`plot_frf`), with its one legend.
 
@@ -155,10 +165,7 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
             w = W(np.array([p.omega for p in b.points]))
             a = Y(np.array([p.amplitude for p in b.points]))
             stable = np.array([p.stable for p in b.points])
-            # each run of equal verdicts joined to its neighbour, so the curve stays unbroken
-            joined = stable == flag
-            joined[1:] |= stable[:-1] == flag
-            y = np.where(joined, a, np.nan)
+            y = verdict_run(a, stable, flag)
             if flag:
                 ax.plot(w, y, "-", color="C0", lw=2.2, zorder=4, solid_capstyle="round")
             else:
@@ -226,9 +233,7 @@ def plot_frf_beside(exact: Any, other: Any, path: str | os.PathLike, label: str,
             w = shown("omega", np.array([p.omega for p in b.points]))
             a = shown("x", np.array([p.amplitude for p in b.points]))
             stable = np.array([p.stable for p in b.points])
-            joined = stable == flag
-            joined[1:] |= stable[:-1] == flag
-            ax.plot(w, np.where(joined, a, np.nan), "-" if flag else ":", color="C3",
+            ax.plot(w, verdict_run(a, stable, flag), "-" if flag else ":", color="C3",
                     lw=1.0, marker="o" if flag else None, ms=2.5, zorder=7)  # fmt: skip
     ax.plot([], [], "-", color="C3", lw=1.0, marker="o", ms=2.5, label=f"{label}: stable (Hill)")
     ax.plot([], [], ":", color="C3", lw=1.0, label=f"{label}: unstable")
@@ -263,9 +268,7 @@ def plot_branch(branch: Any, path: str | os.PathLike, title: str = "") -> None:
     a = shown("x", np.array([p.amplitude for p in branch.points]))
     stable = np.array([p.stable for p in branch.points])
     for flag, style in ((True, "-"), (False, "--")):
-        joined = stable == flag
-        joined[1:] |= stable[:-1] == flag
-        ax.plot(x, np.where(joined, a, np.nan), style, color="C0", lw=1.4)
+        ax.plot(x, verdict_run(a, stable, flag), style, color="C0", lw=1.4)
     markers = {"fold": "o", "branch-point": "s", "period-doubling": "D", "neimark-sacker": "*",
                "grazing": "x"}  # fmt: skip
     seen = set()
