@@ -37,6 +37,7 @@ from .frf import FrequencyResponse
 from .harmonic_balance import (
     Basis,
     HBOrbit,
+    _amplitude,
     _checked,
     _orbit,
     _problem,
@@ -359,8 +360,13 @@ def _spread(points: list[BranchPoint], most: int) -> list[BranchPoint]:
 
 
 def _error_at(system, forcing, contact, p: BranchPoint, k: int, H: int) -> float | None:
-    orbit = _seeded(system, forcing, contact, p, k, H, 4 * H)
-    return None if orbit is None else abs(orbit.amplitude / p.amplitude - 1.0)
+    """The balance's relative amplitude error at the exact orbit ``p`` with H harmonics (its
+    stability not computed: the ladder needs only the amplitude); None where Newton fails."""
+    found = _balanced(system, forcing, contact, p, k, H, 4 * H)
+    if found is None:
+        return None
+    problem, U = found
+    return abs(_amplitude(problem.basis, U[: 2 * H + 1]) / p.amplitude - 1.0)
 
 
 def _harmonics_for(system, forcing, contact, b: Branch) -> dict[str, int | None]:
