@@ -106,14 +106,14 @@ def test_the_forced_checker_sees_an_upward_import(monkeypatch):
 
 
 def test_no_module_of_forced_is_over_its_size():
-    """forced/ shows its pipeline in modules of readable size: none over 1 500 lines but the
-    N-mode engine, which one engine for every load replaces (issue 79)."""
+    """forced/ shows its pipeline in modules of readable size: none over 1 500 lines (issue 79;
+    the N-mode engine, 3 066 lines, is four modules: its flight, searches, ledger and run)."""
     over = {
         p.relative_to(PKG).as_posix(): len(p.read_text().splitlines())
         for p in FORCED_MODULES
         if len(p.read_text().splitlines()) > 1500
     }
-    assert set(over) <= {"forced/engine/_modal.py"}, over
+    assert not over, over
 
 
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))

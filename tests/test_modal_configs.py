@@ -1,6 +1,6 @@
 """The modal engine's configurations kept per pattern of stuck dampers and pressed stops
-(:func:`_modal._kept_config`): the pattern's code is one to one, and a pattern met again gives the
-configuration computed the first time, equal to :func:`_modal._config`'s."""
+(:func:`_modal_flight._kept_config`): the pattern's code is one to one, and a pattern met again gives the
+configuration computed the first time, equal to :func:`_modal_flight._config`'s."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import itertools
 
 import numpy as np
 
-from symimpact.forced.engine import _modal
+from symimpact.forced.engine import _modal_flight
 from symimpact.forced.engine._rigid import N_PARAMS, P_C, P_K, P_M, P_PHI, P_W
 
 
@@ -18,13 +18,13 @@ def test_each_pattern_has_its_own_code():
         for split in range(5):  # the same digits split between dampers and stops
             stuck = np.array(digits[:split], dtype=np.int64)
             contact = np.array(digits[split:], dtype=np.int64)
-            code = int(_modal._pattern(stuck, contact))
+            code = int(_modal_flight._pattern(stuck, contact))
             assert 0 <= code < 3**4
             seen.setdefault(code, set()).add(digits)
     assert all(len(d) == 1 for d in seen.values())
     assert len(seen) == 3**4
     many = np.zeros(40, dtype=np.int64)
-    assert _modal._pattern(many, np.zeros(0, dtype=np.int64)) == -1
+    assert _modal_flight._pattern(many, np.zeros(0, dtype=np.int64)) == -1
 
 
 def _structure():
@@ -43,15 +43,15 @@ def test_a_pattern_met_again_reuses_its_configuration():
     pm, Phi, md, Sphi = _structure()
     e, i0 = np.zeros(0), np.zeros(0, dtype=np.int64)
     free = np.zeros(2, dtype=np.int64)
-    keys = [_modal._pattern(free, i0)]
-    cfgs = [_modal._config(pm, Phi, md, free, Sphi, e, e, e, i0, i0, 0.0)]
-    kept = _modal._kept_config.py_func  # the same code, run by Python on Python lists
+    keys = [_modal_flight._pattern(free, i0)]
+    cfgs = [_modal_flight._config(pm, Phi, md, free, Sphi, e, e, e, i0, i0, 0.0)]
+    kept = _modal_flight._kept_config.py_func  # the same code, run by Python on Python lists
     stuck = np.array([0, 1], dtype=np.int64)
     first = kept(keys, cfgs, pm, Phi, md, stuck, Sphi, e, e, e, i0, i0, 0.0)
     assert len(keys) == 2
     again = kept(keys, cfgs, pm, Phi, md, stuck.copy(), Sphi, e, e, e, i0, i0, 0.0)
     assert again is first and len(keys) == 2
-    fresh = _modal._config(pm, Phi, md, stuck, Sphi, e, e, e, i0, i0, 0.0)
+    fresh = _modal_flight._config(pm, Phi, md, stuck, Sphi, e, e, e, i0, i0, 0.0)
     assert not fresh[6]  # a stuck mass couples the modes: the eigen-decomposition is kept
     for a, b in zip(first, fresh, strict=True):
         assert np.array_equal(np.asarray(a), np.asarray(b))

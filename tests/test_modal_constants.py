@@ -1,4 +1,4 @@
-"""A configuration's per-mode constants (:func:`_modal._mode_constants`), which the modal engine's
+"""A configuration's per-mode constants (:func:`_modal_flight._mode_constants`), which the modal engine's
 acceleration bounds and closed-form ledger read instead of recomputing them every flight.
 
 The bound must stay the one-mode engine's bound to the bit: the searches' steps and chord tests
@@ -14,7 +14,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from symimpact.forced.engine import _modal
+from symimpact.forced.engine import _modal_flight, _modal_ledger
 from symimpact.forced.engine._rigid import (
     N_PARAMS,
     P_C,
@@ -50,10 +50,10 @@ def test_the_bound_from_the_constants_is_the_one_mode_engines_to_the_bit(
     C = 2.0 * zeta * math.sqrt(K * M)
     W = ratio * math.sqrt(K / M)
     pm[0, [P_M, P_K, P_C, P_F0, P_XB, P_W, P_PHI]] = M, K, C, F0, Xb, W, phi
-    row = np.zeros(_modal.FORM_COLS)
-    _modal._mode_constants(pm, 0, row)
+    row = np.zeros(_modal_flight.FORM_COLS)
+    _modal_flight._mode_constants(pm, 0, row)
     th = (W * t0 + phi) % (2.0 * math.pi)
-    ours = _modal._mode_accel_bound(pm[0], row, math.cos(th), math.sin(th), t0, x0, v0, 0.1)
+    ours = _modal_flight._mode_accel_bound(pm[0], row, math.cos(th), math.sin(th), t0, x0, v0, 0.1)
     engine = _accel_bound(pm[0], M, t0, x0, v0, 0.1)
     # bit for bit (NaN where the engine's is: both read the same operations)
     assert np.array([ours]).view(np.int64)[0] == np.array([engine]).view(np.int64)[0]
@@ -78,11 +78,11 @@ def test_the_exponential_integral_is_mpmaths(r, angle, tau):
     k = complex(r * math.cos(angle), r * math.sin(angle)) / tau
     ek = complex(mpmath.exp(mpmath.mpc(k.real, k.imag) * tau))
     exact = _exact(k, tau)
-    got = _modal._expint(k, tau, ek)
+    got = _modal_ledger._expint(k, tau, ek)
     assert abs(got - exact) <= 2e-15 * abs(exact)
     z = k * tau
     if abs(z.real) + abs(z.imag) < 0.5:  # the series alone: the reciprocal is never formed
-        got = _modal._expint_by(complex(math.nan, math.nan), z, tau, ek)
+        got = _modal_ledger._expint_by(complex(math.nan, math.nan), z, tau, ek)
         assert abs(got - exact) <= 2e-15 * abs(exact)
 
 
@@ -91,10 +91,10 @@ def test_a_mode_without_the_closed_form_says_so():
     closed-form ledger, and the bound is the engine's own resonant one."""
     pm = np.zeros((1, N_PARAMS))
     pm[0, [P_M, P_K, P_C, P_F0, P_W]] = 1.0, 100.0, 0.0, 1.0, 10.0
-    row = np.zeros(_modal.FORM_COLS)
-    _modal._mode_constants(pm, 0, row)
-    assert row[_modal.FC_STEADY] == 0.0 and row[_modal.FC_LEDGER] == 0.0
-    assert _modal._mode_accel_bound(pm[0], row, 1.0, 0.0, 0.0, 1e-3, 0.0, 2.0) == _accel_bound(
-        pm[0], 1.0, 0.0, 1e-3, 0.0, 2.0
-    )
-    assert all(math.isnan(x) for x in _modal._mode_ledger(pm, 0, 0.0, 0.0, 0.0, 1.0))
+    row = np.zeros(_modal_flight.FORM_COLS)
+    _modal_flight._mode_constants(pm, 0, row)
+    assert row[_modal_flight.FC_STEADY] == 0.0 and row[_modal_flight.FC_LEDGER] == 0.0
+    assert _modal_flight._mode_accel_bound(
+        pm[0], row, 1.0, 0.0, 0.0, 1e-3, 0.0, 2.0
+    ) == _accel_bound(pm[0], 1.0, 0.0, 1e-3, 0.0, 2.0)
+    assert all(math.isnan(x) for x in _modal_ledger._mode_ledger(pm, 0, 0.0, 0.0, 0.0, 1.0))

@@ -1,5 +1,5 @@
 """The engine of several modes evaluates a flight in its own time (Step 8's ``flight_form``,
-computed once a flight and kept in the configuration's cache by :func:`_modal._free_states`):
+computed once a flight and kept in the configuration's cache by :func:`_modal_flight._free_states`):
 every mode's state equals Eq. F1's kernel (``forced_state``, checked itself against mpmath) to
 rounding, a mode driven exactly at its undamped frequency (no such form) takes Eq. F1's own
 resonant branch, and the cache answers for the flight it was filled by, not for another."""
@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from symimpact.forced.engine import _modal
+from symimpact.forced.engine import _modal_flight
 from symimpact.forced.engine._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB, _xvf
 
 OMEGA = 52.0  # rad/s, every mode driven at it
@@ -52,7 +52,7 @@ def test_the_flight_form_is_eq_f1_and_its_cache_keeps_to_its_flight(seed):
     rng = np.random.default_rng(seed)
     pm = _modes(rng)
     N = pm.shape[0]
-    form = np.zeros((N + 1, _modal.FORM_COLS))
+    form = np.zeros((N + 1, _modal_flight.FORM_COLS))
     flights = [(rng.uniform(0, 3), 1e-3 * rng.normal(size=N), 1e-2 * rng.normal(size=N))
                for _ in range(2)]  # fmt: skip
     taus = np.sort(rng.uniform(0, 4 * math.pi / OMEGA, 40))
@@ -62,7 +62,7 @@ def test_the_flight_form_is_eq_f1_and_its_cache_keeps_to_its_flight(seed):
         for f, ref in zip(flights, want, strict=True):
             got = np.zeros_like(ref)
             for j, tau in enumerate(taus):
-                _modal._free_states(pm, form, *f, tau, q, v)
+                _modal_flight._free_states(pm, form, *f, tau, q, v)
                 got[j] = q, v
             scale = np.max(np.abs(ref), axis=0)
             assert np.all(np.abs(got - ref) <= 1e-13 * scale)

@@ -1,4 +1,4 @@
-"""The modal engine's closed-form energy ledger of one flight (:func:`_modal._mode_ledger`) against
+"""The modal engine's closed-form energy ledger of one flight (:func:`_modal_ledger._mode_ledger`) against
 adaptive quadrature (SciPy's QUADPACK) of the power and the dissipation along Eq. F1's flight as
 the generated kernels give it."""
 
@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from symimpact.forced.engine import _modal
+from symimpact.forced.engine import _modal_ledger
 from symimpact.forced.engine._rigid import (
     N_PARAMS,
     P_C,
@@ -51,7 +51,7 @@ def test_closed_form_ledger_equals_quadrature_of_the_flight(case):
     M, K, C, F0, Xb, W, phi, t0, x0, v0, tau = CASES[case]
     pm = np.zeros((1, N_PARAMS))
     pm[0, [P_M, P_K, P_C, P_F0, P_XB, P_W, P_PHI]] = M, K, C, F0, Xb, W, phi
-    work, lost = _modal._mode_ledger(pm, 0, t0, x0, v0, tau)
+    work, lost = _modal_ledger._mode_ledger(pm, 0, t0, x0, v0, tau)
     th = (W * t0 + phi) % (2 * math.pi)
 
     def state(s):
@@ -84,4 +84,4 @@ def test_an_undamped_resonant_mode_is_left_to_quadrature():
     integrates numerically."""
     pm = np.zeros((1, N_PARAMS))
     pm[0, [P_M, P_K, P_C, P_F0, P_W]] = 1.0, 100.0, 0.0, 1.0, 10.0
-    assert all(math.isnan(x) for x in _modal._mode_ledger(pm, 0, 0.0, 0.0, 0.0, 1.0))
+    assert all(math.isnan(x) for x in _modal_ledger._mode_ledger(pm, 0, 0.0, 0.0, 0.0, 1.0))

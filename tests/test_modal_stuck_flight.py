@@ -1,5 +1,5 @@
-"""The stuck (coupled) structure's flight in the modal engine (:func:`_modal._held_free`) and the
-search for a stuck mass's release (:func:`_modal._release`), against the matrix exponential.
+"""The stuck (coupled) structure's flight in the modal engine (:func:`_modal_flight._held_free`) and the
+search for a stuck mass's release (:func:`_modal_search._release`), against the matrix exponential.
 
 While a mass rides on its point the structure is M_s q̈ + Cq̇ + Kq = F cos(Ωt + φ) with
 M_s = diag(Mᵢ) + mφφᵀ.  The engine writes its flight from A's eigen-decomposition, one exponential
@@ -19,7 +19,7 @@ from scipy.integrate import quad
 from scipy.linalg import expm
 from scipy.optimize import brentq
 
-from symimpact.forced.engine import _modal
+from symimpact.forced.engine import _modal_flight, _modal_ledger, _modal_search
 from symimpact.forced.engine._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
 
 W, PHASE = 2 * math.pi * 7.0, 0.4
@@ -42,7 +42,7 @@ def _parameters(zetas):
 
 def _config(pm):
     e, nothing = np.zeros(0), np.zeros(0, dtype=np.int64)
-    return _modal._config(pm, SHAPE, MASS, np.array([1]), np.zeros((0, 3)), e, e, e, nothing,
+    return _modal_flight._config(pm, SHAPE, MASS, np.array([1]), np.zeros((0, 3)), e, e, e, nothing,
                           nothing, 0.0)  # fmt: skip
 
 
@@ -72,10 +72,10 @@ def _exact(pm, t0, X0, tau):
 
 def test_conjugate_pairs_count_once_and_real_eigenvalues_once_each():
     lam = np.array([-1 + 5j, -2.0, -1 - 5j, -3 + 0j, -0.5 - 2j, -0.5 + 2j])
-    w = _modal._pair_weights(lam)
+    w = _modal_flight._pair_weights(lam)
     assert list(w) == [2.0, 1.0, 0.0, 1.0, 0.0, 2.0]
     # an eigenvalue without its conjugate (not met for a real A): every term kept once
-    assert list(_modal._pair_weights(np.array([-1 + 5j, -1 - 4j]))) == [1.0, 1.0]
+    assert list(_modal_flight._pair_weights(np.array([-1 + 5j, -1 - 4j]))) == [1.0, 1.0]
 
 
 def test_a_stuck_flight_is_the_matrix_exponential():
@@ -94,13 +94,13 @@ def test_a_stuck_flight_is_the_matrix_exponential():
             exact = np.array([_exact(pm, t0, np.concatenate([q0, v0]), tau) for tau in taus])
             scale_q, scale_v = np.max(np.abs(exact[:, :3])), np.max(np.abs(exact[:, 3:]))
             for tau, X in zip(taus, exact, strict=True):
-                _modal._states(pm, cfg, 1, t0, q0, v0, tau, q, v)
+                _modal_flight._states(pm, cfg, 1, t0, q0, v0, tau, q, v)
                 assert np.max(np.abs(q - X[:3])) < 1e-12 * scale_q
                 assert np.max(np.abs(v - X[3:])) < 1e-12 * scale_v
 
 
 def test_a_stuck_flight_projected_on_points_is_the_matrix_exponential():
-    """The flight read at two points (:func:`_modal._held_rows`, :func:`_modal._rows_at`): φᵀq,
+    """The flight read at two points (:func:`_modal_flight._held_rows`, :func:`_modal_flight._rows_at`): φᵀq,
     φᵀq̇ and φᵀq̈ against the same reference, q̈ from the equation of motion (the residual
     M_s⁻¹(F cos θ − Cq̇ − Kq)), each to 1e-12 of its scale (as the states: V's condition)."""
     shapes = TWO_POINTS
@@ -111,7 +111,7 @@ def test_a_stuck_flight_projected_on_points_is_the_matrix_exponential():
         rng = np.random.default_rng(5)
         t0, q0, v0 = 0.21, rng.normal(size=3) * 1e-3, rng.normal(size=3) * 1e-2
         rows, out = np.zeros((2, 3, 8), dtype=np.complex128), np.zeros((2, 4))
-        _modal._held_rows(pm, cfg, shapes, t0, q0, v0, rows, out)
+        _modal_flight._held_rows(pm, cfg, shapes, t0, q0, v0, rows, out)
         # the sum's own start: φᵀq0 to c's rounding, up to V's condition (400) in ulps of the terms
         ulp = EPS * np.abs(rows[:, 0]).max(axis=1)
         assert np.all(np.abs(out[:, 3] - shapes @ q0) < 400 * ulp)
@@ -121,7 +121,7 @@ def test_a_stuck_flight_projected_on_points_is_the_matrix_exponential():
             X = _exact(pm, t0, np.concatenate([q0, v0]), tau)
             force = pm[:, P_F0] * math.cos(W * (t0 + tau) + PHASE)
             acc = Mi @ (force - pm[:, P_C] * X[3:] - pm[:, P_K] * X[:3])
-            _modal._rows_at(rows, cfg[11], cfg[1], cfg[2], W, tau, out)
+            _modal_flight._rows_at(rows, cfg[11], cfg[1], cfg[2], W, tau, out)
             got.append(out[:, :3].copy())
             want.append(np.stack([shapes @ X[:3], shapes @ X[3:], shapes @ acc], axis=1))
         got, want = np.array(got), np.array(want)
@@ -149,21 +149,21 @@ def test_a_stuck_flight_starts_exactly_where_the_last_one_ended():
         rows, out = np.zeros((2, 3, 8), dtype=np.complex128), np.zeros((2, 4))
         for _ in range(20):
             t0, q0, v0 = rng.uniform(0, T), rng.normal(size=3) * 1e-3, rng.normal(size=3) * 1e-2
-            _modal._states(pm, cfg, 1, t0, q0, v0, 0.0, q, v)
+            _modal_flight._states(pm, cfg, 1, t0, q0, v0, 0.0, q, v)
             assert np.array_equal(q, q0) and np.array_equal(v, v0)
-            _modal._held_sum(pm, cfg[11], cfg[1], cfg[2], cfg[3], 0.0, qr, vr)
+            _modal_flight._held_sum(pm, cfg[11], cfg[1], cfg[2], cfg[3], 0.0, qr, vr)
             offsets.append(np.max(np.abs(qr - q0)))
-            _modal._held_rows(pm, cfg, shapes, t0, q0, v0, rows, out)
-            _modal._rows_at(rows, cfg[11], cfg[1], cfg[2], W, 0.0, out)
+            _modal_flight._held_rows(pm, cfg, shapes, t0, q0, v0, rows, out)
+            _modal_flight._rows_at(rows, cfg[11], cfg[1], cfg[2], W, 0.0, out)
             assert np.array_equal(out[:, 0], out[:, 3])
             tau = 1e-9 * T
             force = pm[:, P_F0] * math.cos(W * t0 + PHASE)
             acc = Mi @ (force - pm[:, P_C] * v0 - pm[:, P_K] * q0)
             taylor = shapes @ v0 * tau + shapes @ acc * tau**2 / 2
-            _modal._states(pm, cfg, 1, t0, q0, v0, tau, q, v)
+            _modal_flight._states(pm, cfg, 1, t0, q0, v0, tau, q, v)
             terms = np.abs(cfg[11][:3, : cfg[2] + 1]).max() * np.abs(shapes).sum(axis=1)
             assert np.all(np.abs(shapes @ (q - q0) - taylor) < 16 * EPS * terms)
-            _modal._rows_at(rows, cfg[11], cfg[1], cfg[2], W, tau, out)
+            _modal_flight._rows_at(rows, cfg[11], cfg[1], cfg[2], W, tau, out)
             terms = np.abs(rows[:, 0]).max(axis=1)
             assert np.all(np.abs(out[:, 0] - out[:, 3] - taylor) < 16 * EPS * terms)
     assert max(offsets) > 0.0  # the raw sum misses the start: what the flight corrects
@@ -199,13 +199,13 @@ def test_the_release_is_the_first_time_the_wall_would_pull():
     work = np.empty((22, 3))
     watch = np.array([-1, 0, 0], dtype=np.int64)
     # the flight read whole (the state and the point's acceleration from it), then through its
-    # projection on the point (the closed form's derivatives, :func:`_modal._held_rows`)
+    # projection on the point (the closed form's derivatives, :func:`_modal_flight._held_rows`)
     none, none_out = np.zeros((0, 3, 1), dtype=np.complex128), np.zeros((0, 4))
     rows, out = np.zeros((1, 3, 8), dtype=np.complex128), np.zeros((1, 4))
     assert not cfg[6]
-    _modal._held_rows(pm, cfg, SHAPE, t0, q0, v0, rows, out)
+    _modal_flight._held_rows(pm, cfg, SHAPE, t0, q0, v0, rows, out)
     for r, o in ((none, none_out), (rows, out)):
-        tau, which = _modal._release(pm, cfg, 1, stuck, SHAPE, t0, q0, v0, 2 * T, watch, work, r,
+        tau, which = _modal_search._release(pm, cfg, 1, stuck, SHAPE, t0, q0, v0, 2 * T, watch, work, r,
                                      o, 0.0)  # fmt: skip
         assert which == 0
         assert abs(tau - root) < 1e-12 * T
@@ -232,7 +232,7 @@ def _flight_reference(pm, shape_s, k1, c1, g, t0, X0):
 
 @pytest.mark.parametrize("case", ["forced and base motion", "short", "a pressed stop"])
 def test_a_stuck_flights_ledger_is_the_quadrature_of_its_power(case):
-    """The coupled flight's closed-form ledger (:func:`_modal._held_ledger`) against QUADPACK's
+    """The coupled flight's closed-form ledger (:func:`_modal_ledger._held_ledger`) against QUADPACK's
     adaptive quadrature of the same integrands along the matrix exponential's flight: the modal
     forces' work Σᵢ Fᵢcos θ·q̇ᵢ − (Kᵢ(qᵢ − Γᵢx_b) + Cᵢ(q̇ᵢ − Γᵢẋ_b))Γᵢẋ_b, the modes'
     dissipation Σᵢ Cᵢ(q̇ᵢ − Γᵢẋ_b)² and a pressed stop's c₁(φₛᵀq̇)², each to 1e-12 of the
@@ -250,7 +250,9 @@ def test_a_stuck_flights_ledger_is_the_quadrature_of_its_power(case):
     stops = (shape_s[None, :], np.array([k1]), np.array([c1]), np.array([g]), np.array([1]),
              np.array([0])) if k1 else (np.zeros((0, 3)), e, e, e, nothing, nothing)  # fmt: skip
     Sphi, sk, sc, sg, contact, srig = stops
-    cfg = _modal._config(pm, SHAPE, MASS, np.array([1]), Sphi, sk, sc, sg, contact, srig, 0.0)
+    cfg = _modal_flight._config(
+        pm, SHAPE, MASS, np.array([1]), Sphi, sk, sc, sg, contact, srig, 0.0
+    )
     assert not cfg[6]
     t0 = 0.83
     rng = np.random.default_rng(3)
@@ -273,7 +275,7 @@ def test_a_stuck_flights_ledger_is_the_quadrature_of_its_power(case):
         )[0]
         scale[j] = quad(lambda s, j=j: abs(integrands(s)[j]), 0.0, tau, limit=400, epsrel=1e-8)[0]
     ledger = np.zeros(4)
-    _modal._held_ledger(pm, cfg, t0, q0, v0, tau, ledger, Sphi, sc, contact)
+    _modal_ledger._held_ledger(pm, cfg, t0, q0, v0, tau, ledger, Sphi, sc, contact)
     got = ledger[[0, 1, 3]]
     assert np.all(np.abs(got - want) <= 1e-12 * scale + 1e-300)
     if k1:

@@ -1,4 +1,4 @@
-"""A point's Taylor polynomial along a flight (:func:`_modal._point_taylor`), which the impact
+"""A point's Taylor polynomial along a flight (:func:`_modal_search._point_taylor`), which the impact
 search's refinement reads instead of every mode's exponential, cosine and sine, against the same
 flight summed in mpmath (50 digits) from its closed form: Eq. F1's coefficients per mode while
 the modes are uncoupled, the projection's columns while a mass rides.
@@ -17,7 +17,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from symimpact.forced.engine import _modal
+from symimpact.forced.engine import _modal_flight, _modal_search
 from symimpact.forced.engine._rigid import N_PARAMS, P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
 
 W, PHASE = 2 * math.pi * 7.0, 0.4
@@ -42,7 +42,7 @@ def _parameters(xb):
 
 def _config(pm, stuck, xb):
     e, nothing = np.zeros(0), np.zeros(0, dtype=np.int64)
-    return _modal._config(pm, SHAPE, MASS, np.array(stuck), np.zeros((0, 3)), e, e, e, nothing,
+    return _modal_flight._config(pm, SHAPE, MASS, np.array(stuck), np.zeros((0, 3)), e, e, e, nothing,
                           nothing, xb)  # fmt: skip
 
 
@@ -73,18 +73,18 @@ def test_the_polynomial_is_the_uncoupled_flight(row, xb, c, r):
     assert cfg[6]  # decoupled: Eq. F1 per mode
     t0, q0, v0 = START
     q, v = np.zeros(3), np.zeros(3)
-    _modal._free_states(pm, cfg[10], t0, q0, v0, c, q, v)  # the flight's form, cached
+    _modal_flight._free_states(pm, cfg[10], t0, q0, v0, c, q, v)  # the flight's form, cached
     form = cfg[10]
     rate = max(W, *(math.hypot(form[i, 8], form[i, 9]) for i in range(3)))
     h = r / rate
-    poly = np.empty(_modal.TAYLOR_MAX + 1)
+    poly = np.empty(_modal_search.TAYLOR_MAX + 1)
     nothing = np.zeros((0, 3, 1), complex)
-    n = _modal._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, nothing, xb, poly, 0)
-    assert 0 <= n <= _modal.TAYLOR_MAX
+    n = _modal_search._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, nothing, xb, poly, 0)
+    assert 0 <= n <= _modal_search.TAYLOR_MAX
     # one degree more where the derivative is read (the speed: Eq. F1's ẋ coefficients)
-    speed = np.empty(_modal.TAYLOR_MAX + 1)
-    n1 = _modal._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, nothing, xb, speed, 1)
-    assert n1 == min(n + 1, _modal.TAYLOR_MAX)
+    speed = np.empty(_modal_search.TAYLOR_MAX + 1)
+    n1 = _modal_search._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, nothing, xb, speed, 1)
+    assert n1 == min(n + 1, _modal_search.TAYLOR_MAX)
     scale = abs(xb) + sum(abs(SHAPE[row, i]) * np.abs(form[i, :4]).sum() for i in range(3))
     scale_v = abs(xb) * W + sum(abs(SHAPE[row, i]) * np.abs(form[i, 4:8]).sum() for i in range(3))
     for s in np.linspace(-h, h, 7):
@@ -112,14 +112,14 @@ def test_the_polynomial_is_the_projected_coupled_flight(row, c, r):
     t0, q0, v0 = START
     n2 = cfg[2]
     rows, out = np.zeros((2, 3, n2 + 2), dtype=np.complex128), np.zeros((2, 4))
-    _modal._held_rows(pm, cfg, SHAPE, t0, q0, v0, rows, out)
+    _modal_flight._held_rows(pm, cfg, SHAPE, t0, q0, v0, rows, out)
     lam = cfg[1][-1, :n2]
     weights = cfg[11][2 * 3 + 2, :n2].real
     rate = max(W, *(abs(lam[m]) for m in range(n2) if weights[m] != 0.0))
     h = r / rate
-    poly = np.empty(_modal.TAYLOR_MAX + 1)
-    n = _modal._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, rows, 0.0, poly, 0)
-    assert 0 <= n <= _modal.TAYLOR_MAX
+    poly = np.empty(_modal_search.TAYLOR_MAX + 1)
+    n = _modal_search._point_taylor(pm, cfg, SHAPE, row, t0, q0, v0, c, h, rows, 0.0, poly, 0)
+    assert 0 <= n <= _modal_search.TAYLOR_MAX
     R = rows[row, 0]
     scale = float(np.abs(R).sum())
     for s in np.linspace(-h, h, 7):
@@ -140,12 +140,22 @@ def test_no_polynomial_where_it_would_not_converge_or_the_cache_holds_another_fl
     cfg = _config(pm, [0, 0], 0.0)
     t0, q0, v0 = START
     q, v = np.zeros(3), np.zeros(3)
-    _modal._free_states(pm, cfg[10], t0, q0, v0, 0.0, q, v)
-    poly = np.empty(_modal.TAYLOR_MAX + 1)
+    _modal_flight._free_states(pm, cfg[10], t0, q0, v0, 0.0, q, v)
+    poly = np.empty(_modal_search.TAYLOR_MAX + 1)
     nothing = np.zeros((0, 3, 1), complex)
     rate = max(W, *(math.hypot(cfg[10][i, 8], cfg[10][i, 9]) for i in range(3)))
     args = (pm, cfg, SHAPE, 0)
-    assert _modal._point_taylor(*args, t0, q0, v0, 0.1, 0.49 / rate, nothing, 0.0, poly, 0) >= 0
-    assert _modal._point_taylor(*args, t0, q0, v0, 0.1, 0.5 / rate, nothing, 0.0, poly, 0) == -1
-    assert _modal._point_taylor(*args, t0, q0 * 2, v0, 0.1, 0.1 / rate, nothing, 0.0, poly, 0) == -1
-    assert _modal._point_taylor(*args, t0 + 1, q0, v0, 0.1, 0.1 / rate, nothing, 0.0, poly, 0) == -1
+    assert (
+        _modal_search._point_taylor(*args, t0, q0, v0, 0.1, 0.49 / rate, nothing, 0.0, poly, 0) >= 0
+    )
+    assert (
+        _modal_search._point_taylor(*args, t0, q0, v0, 0.1, 0.5 / rate, nothing, 0.0, poly, 0) == -1
+    )
+    assert (
+        _modal_search._point_taylor(*args, t0, q0 * 2, v0, 0.1, 0.1 / rate, nothing, 0.0, poly, 0)
+        == -1
+    )
+    assert (
+        _modal_search._point_taylor(*args, t0 + 1, q0, v0, 0.1, 0.1 / rate, nothing, 0.0, poly, 0)
+        == -1
+    )

@@ -181,7 +181,7 @@ def test_the_stuck_structure_flies_as_its_equations_say(X_b):
     over three forcing periods (1e-9 of the motion's scale; the integration's rtol 1e-13).  On
     supports moving by x_b = X_b cos(Ωt + φ) the modes (relative to them) also carry the beam's
     inertia −MᵢΓᵢẍ_b and the stuck mass's, which rides at x_b + φᵀq: −mφẍ_b."""
-    from symimpact.forced.engine import _modal
+    from symimpact.forced.engine import _modal_flight
     from symimpact.forced.structure_response import _modal_parameters
 
     s = _beam(modes=3, zeta=0.02)
@@ -191,7 +191,7 @@ def test_the_stuck_structure_flies_as_its_equations_say(X_b):
     md = np.array([0.2])
     none = np.zeros(0)
     nothing = np.zeros(0, dtype=np.int64)
-    cfg = _modal._config(pm, Phi, md, np.array([1]), np.zeros((0, 3)), none, none, none,
+    cfg = _modal_flight._config(pm, Phi, md, np.array([1]), np.zeros((0, 3)), none, none, none,
                          nothing, nothing, X_b)  # fmt: skip
     rng = np.random.default_rng(7)
     q0, v0 = rng.normal(size=3) * 1e-3, rng.normal(size=3) * 1e-2
@@ -215,7 +215,7 @@ def test_the_stuck_structure_flies_as_its_equations_say(X_b):
     sol = solve_ivp(rhs, (t0, t0 + T), np.concatenate([q0, v0]), method="DOP853", rtol=1e-13,
                     atol=1e-18, t_eval=t0 + taus)  # fmt: skip
     for j, tau in enumerate(taus):
-        _modal._states(pm, cfg, 1, t0, q0, v0, tau, q, v)
+        _modal_flight._states(pm, cfg, 1, t0, q0, v0, tau, q, v)
         assert np.max(np.abs(q - sol.y[:3, j])) < 1e-9 * np.max(np.abs(sol.y[:3]))
         assert np.max(np.abs(v - sol.y[3:, j])) < 1e-9 * np.max(np.abs(sol.y[3:]))
 

@@ -1,4 +1,4 @@
-"""A chatter below the positions' rounding accumulates (:func:`symimpact.forced.engine._modal._held_free`).
+"""A chatter below the positions' rounding accumulates (:func:`symimpact.forced.engine._modal_flight._held_free`).
 
 The case: benchmark 10's system (``benchmarks/structure.py``: a steel cantilever of 10 modes, up
 to 2.1 kHz; a 50 g damper of 10 mm at the tip, a 30 g one of 3 mm at mid-span, e 0.6; 2 N at
@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from benchmarks.structure import OMEGA, TWO, _hermite_cantilever
-from symimpact.forced.engine._modal import E_DAMPER
+from symimpact.forced.engine._modal_flight import E_DAMPER
 from symimpact.forced.engine._rigid import E_KIND, E_T, E_VREL, KIND_IMPACT
 from symimpact.forced.structure_response import simulate_structure
 from symimpact.model.dampers import dampers

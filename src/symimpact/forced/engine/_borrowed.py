@@ -42,7 +42,7 @@ def borrowed(typingctx, arr):
 
 @njit(cache=True)
 def borrowed_config(cfg):
-    """The modal engine's configuration tuple (:func:`symimpact.forced.engine._modal._pack`) with each
+    """The modal engine's configuration tuple (:func:`symimpact.forced.engine._modal_flight._pack`) with each
     of its arrays :func:`borrowed`; the caller keeps ``cfg`` alive."""
     return (borrowed(cfg[0]), borrowed(cfg[1]), cfg[2], borrowed(cfg[3]), cfg[4], cfg[5],
             cfg[6], borrowed(cfg[7]), cfg[8], cfg[9], borrowed(cfg[10]), borrowed(cfg[11]),

@@ -78,7 +78,7 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K, Ainv):
     stops' dashpots.  ``stp``: the stops, a row each (φ at the point, gap g, k₁, c₁, walls +1,
     −1 or 0 for both, 1 for a rigid stop else 0, its e): a point past a linear stop's gap,
     xₛ = φᵀq beyond ±g on a wall it has, is pushed back by k₁(xₛ ∓ g) + c₁ẋₛ (the modal engine's
-    law, :func:`symimpact.forced.engine._modal._config`); a rigid stop adds no force."""
+    law, :func:`symimpact.forced.engine._modal_flight._config`); a rigid stop adds no force."""
     W, phi = pm[0, P_W], pm[0, P_PHI]
     th = W * t + phi
     c, s = math.cos(th), math.sin(th)

@@ -130,7 +130,7 @@ def correct(p, y_pred, y_start, tangent, scale, unit, periods, count, max_events
 
 def _forget_stale_compilations() -> None:
     """This module's cached code, dropped when it or any compiled code it holds inlined changed:
-    the one-mode engine (:mod:`._modal` and its borrowed views, :mod:`._borrowed`, the one-mode
+    the one-mode engine (:mod:`._modal`'s parts and its borrowed views, :mod:`._borrowed`, the one-mode
     flights of :mod:`._rigid`, the generated forced-flight kernels, the stepper's secant), the
     chain (:mod:`._chain`) or the chatter count (:func:`symimpact.forced.simulation._absorbed`)."""
     from pathlib import Path
@@ -140,7 +140,7 @@ def _forget_stale_compilations() -> None:
     from .. import simulation
     from ..engine import _borrowed, _modal
 
-    sources = [Path(__file__), Path(_modal.__file__), Path(_borrowed.__file__),
+    sources = [Path(__file__), *_modal.PARTS, Path(_borrowed.__file__),
                Path(_rigid.__file__), Path(_chain.__file__), Path(simulation.__file__),
                Path(forced_flight.__file__), Path(_stepper.__file__)]  # fmt: skip
     _stepper.forget_stale_compilations(correct, sources, ("_corrector.",))
