@@ -34,6 +34,7 @@ STEPS = (
     "beam_modes",
     "modal_structure",
     "sampled_load",
+    "multi_harmonic_balance",
 )
 
 

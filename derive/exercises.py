@@ -542,4 +542,43 @@ print("lag C/K =", lag.subs(given), "s; 2 zeta / omega_n =",
             source="2ζ/ωₙ, the steady lag of a damped oscillator behind a ramp load",
         ),
     ),
+    "multi_harmonic_balance": (
+        Exercise(
+            "Samples for a quadratic force",
+            "A force quadratic in the motion (p = 2) of H = 5 harmonics holds harmonics up to 10. "
+            "Count the samples AFT needs, and watch one fewer fold harmonic 10 onto −5.",
+            """n = rule.subs({p_: 2, H_: 5})
+print("N =", n, "exact:", aliasing(2, 5, int(n)), "| N - 1 exact:", aliasing(2, 5, int(n) - 1))""",
+            ask="The fewest time samples N for a force of degree p = 2 in a motion of H = 5 "
+            "harmonics.",
+            answer="rule.subs({p_: 2, H_: 5})",
+            stated="16",
+            source="Krack and Gross, Harmonic Balance for Nonlinear Vibration Problems (2019): "
+            "AFT is exact for a polynomial force of degree p from N = (p + 1)H + 1 samples",
+        ),
+        Exercise(
+            "The clearance at A = d",
+            "A relative motion of amplitude A equal to the clearance d spends a third of each "
+            "period against the walls: the equivalent stiffness F₁/A is a fraction of k₁.",
+            """ratio = sp.simplify((first / (k1 * amp)).subs(amp, gap))
+print("F1/(k1 A) at A = d:", ratio, "=", sp.N(ratio, 12))""",
+            ask="F₁/(k₁A), the linear contact's equivalent stiffness over k₁, at A = d.",
+            answer="(first / (k1 * amp)).subs(amp, gap)",
+            stated="0.3910022190",
+            source="mpmath's quadrature of (1/πA)∫ f(A cos θ) cos θ dθ over one period, f the "
+            "dead zone of half-width d/2 (2/3 − √3/(2π) in Gelb and Vander Velde's closed form)",
+        ),
+        Exercise(
+            "A Hertz onset",
+            "At an onset the Hertz force starts as (v₀s)^(3/2): read the rate at which its "
+            "harmonics fall, and the order of the balance's truncation in H.",
+            """print("d log|F_k|/d log k:", decay.subs(nu, sp.Rational(3, 2)))
+print("truncation order nu + 2:", sp.Rational(3, 2) + 2)""",
+            ask="d log|F_k| / d log k for a force starting as s₊^(3/2).",
+            answer="decay.subs(nu, sp.Rational(3, 2))",
+            stated="-2.5",
+            source="Lighthill, Fourier Analysis and Generalised Functions (1958): a singularity "
+            "s₊^ν gives Fourier coefficients of order k^−(ν+1)",
+        ),
+    ),
 }

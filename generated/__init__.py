@@ -24,6 +24,7 @@ __all__ = [
     "beam_modes",
     "modal_structure",
     "sampled_load",
+    "multi_harmonic_balance",
 ]
 
 

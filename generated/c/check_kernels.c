@@ -3864,6 +3864,82 @@ static void check_sampled_load_ramp_velocity(void)
     }
 }
 
+/* multi_harmonic_balance.clearance_first_harmonic: Cos θ coefficient of the linear contact's force for z = A cos θ (H = 1 of AFT) [N] */
+static void check_multi_harmonic_balance_clearance_first_harmonic(void)
+{
+    static const double expected[3] = { 8086734.87278498, 614.1261581737509, 0.034512774306083904 };
+    static const double scale[3] = { 16182589.979784979, 1269.552581748751, 0.0774711819450839 };
+    static const double a_k1[3] = { 1.69014e+08, 903.325, 25.8041 };
+    static const double a_gap[3] = { 8.47624e-05, 0.0718466, 0.000516194 };
+    static const double a_A[3] = { 0.0479005, 0.725571, 0.00166479 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_clearance_first_harmonic", i, symimpact_multi_harmonic_balance_clearance_first_harmonic(a_k1[i], a_gap[i], a_A[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_clearance_first_harmonic_batch(3, a_k1, a_gap, a_A, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_clearance_first_harmonic_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.clearance_first_harmonic_d_k1: ∂/∂k1 of: cos θ coefficient of the linear contact's force for z = A cos θ (H... [m] */
+static void check_multi_harmonic_balance_clearance_first_harmonic_d_k1(void)
+{
+    static const double expected[3] = { 0.04784653858724709, 0.6798507272285732, 0.0013374918833086178 };
+    static const double scale[3] = { 0.09574703857316624, 1.4053843267308184, 0.0029996298452832264 };
+    static const double a_k1[3] = { 1.69014e+08, 903.325, 25.8041 };
+    static const double a_gap[3] = { 8.47624e-05, 0.0718466, 0.000516194 };
+    static const double a_A[3] = { 0.0479005, 0.725571, 0.00166479 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_clearance_first_harmonic_d_k1", i, symimpact_multi_harmonic_balance_clearance_first_harmonic_d_k1(a_k1[i], a_gap[i], a_A[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_clearance_first_harmonic_d_k1_batch(3, a_k1, a_gap, a_A, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_clearance_first_harmonic_d_k1_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.clearance_first_harmonic_d_gap: ∂/∂gap of: cos θ coefficient of the linear contact's force for z = A cos θ... [N/m] */
+static void check_multi_harmonic_balance_clearance_first_harmonic_d_gap(void)
+{
+    static const double expected[3] = { -107597612.09169267, -574.3692895226036, -16.22878196667357 };
+    static const double scale[3] = { 215195224.18338534, 1148.7385790452072, 32.45756393334714 };
+    static const double a_k1[3] = { 1.69014e+08, 903.325, 25.8041 };
+    static const double a_gap[3] = { 8.47624e-05, 0.0718466, 0.000516194 };
+    static const double a_A[3] = { 0.0479005, 0.725571, 0.00166479 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_clearance_first_harmonic_d_gap", i, symimpact_multi_harmonic_balance_clearance_first_harmonic_d_gap(a_k1[i], a_gap[i], a_A[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_clearance_first_harmonic_d_gap_batch(3, a_k1, a_gap, a_A, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_clearance_first_harmonic_d_gap_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.clearance_first_harmonic_d_A: ∂/∂A of: cos θ coefficient of the linear contact's force for z = A cos θ (H... [N/m] */
+static void check_multi_harmonic_balance_clearance_first_harmonic_d_A(void)
+{
+    static const double expected[3] = { 169013999.9503166, 903.2784369418921, 25.762993641593834 };
+    static const double scale[3] = { 338027999.9006332, 1806.5568738837842, 51.52598728318767 };
+    static const double a_k1[3] = { 1.69014e+08, 903.325, 25.8041 };
+    static const double a_gap[3] = { 8.47624e-05, 0.0718466, 0.000516194 };
+    static const double a_A[3] = { 0.0479005, 0.725571, 0.00166479 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_clearance_first_harmonic_d_A", i, symimpact_multi_harmonic_balance_clearance_first_harmonic_d_A(a_k1[i], a_gap[i], a_A[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_clearance_first_harmonic_d_A_batch(3, a_k1, a_gap, a_A, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_clearance_first_harmonic_d_A_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* fixed_points.contact_duration (from derive/multiple_scales.py): Contact duration T_CD, Eq. 31 iterated from T⁽⁰⁾ to convergence [s] */
 static void check_fixed_points_contact_duration(void)
 {
@@ -5150,6 +5226,74 @@ static void check_sampled_load_ramp_state(void)
     }
 }
 
+/* multi_harmonic_balance.clearance_first_harmonic_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_multi_harmonic_balance_clearance_first_harmonic_and_derivatives(void)
+{
+    double out[4];
+    double rows[4 * 3];
+    int i;
+    {
+        static const double expected[3] = { 8086734.87278498, 614.1261581737509, 0.034512774306083904 };
+        static const double scale[3] = { 16182589.979784979, 1269.552581748751, 0.0774711819450839 };
+        static const double a_k1[3] = { 1.69014e+08, 903.325, 25.8041 };
+        static const double a_gap[3] = { 8.47624e-05, 0.0718466, 0.000516194 };
+        static const double a_A[3] = { 0.0479005, 0.725571, 0.00166479 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives(a_k1[i], a_gap[i], a_A[i], out);
+            check("symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives_batch(3, a_k1, a_gap, a_A, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives_batch[0]", i, rows[4 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 0.04784653858724709, 0.6798507272285732, 0.0013374918833086178 };
+        static const double scale[3] = { 0.09574703857316624, 1.4053843267308184, 0.0029996298452832264 };
+        static const double a_k1[3] = { 1.69014e+08, 903.325, 25.8041 };
+        static const double a_gap[3] = { 8.47624e-05, 0.0718466, 0.000516194 };
+        static const double a_A[3] = { 0.0479005, 0.725571, 0.00166479 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives(a_k1[i], a_gap[i], a_A[i], out);
+            check("symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives_batch(3, a_k1, a_gap, a_A, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives_batch[1]", i, rows[4 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { -107597612.09169267, -574.3692895226036, -16.22878196667357 };
+        static const double scale[3] = { 215195224.18338534, 1148.7385790452072, 32.45756393334714 };
+        static const double a_k1[3] = { 1.69014e+08, 903.325, 25.8041 };
+        static const double a_gap[3] = { 8.47624e-05, 0.0718466, 0.000516194 };
+        static const double a_A[3] = { 0.0479005, 0.725571, 0.00166479 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives(a_k1[i], a_gap[i], a_A[i], out);
+            check("symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives_batch(3, a_k1, a_gap, a_A, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives_batch[2]", i, rows[4 * i + 2], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 169013999.9503166, 903.2784369418921, 25.762993641593834 };
+        static const double scale[3] = { 338027999.9006332, 1806.5568738837842, 51.52598728318767 };
+        static const double a_k1[3] = { 1.69014e+08, 903.325, 25.8041 };
+        static const double a_gap[3] = { 8.47624e-05, 0.0718466, 0.000516194 };
+        static const double a_A[3] = { 0.0479005, 0.725571, 0.00166479 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives(a_k1[i], a_gap[i], a_A[i], out);
+            check("symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives[3]", i, out[3], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives_batch(3, a_k1, a_gap, a_A, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives_batch[3]", i, rows[4 * i + 3], expected[i], scale[i]);
+        }
+    }
+}
+
 int main(void)
 {
     check_ritz_mode_shape();
@@ -5327,6 +5471,10 @@ int main(void)
     check_modal_structure_participation_simply_supported();
     check_sampled_load_ramp_displacement();
     check_sampled_load_ramp_velocity();
+    check_multi_harmonic_balance_clearance_first_harmonic();
+    check_multi_harmonic_balance_clearance_first_harmonic_d_k1();
+    check_multi_harmonic_balance_clearance_first_harmonic_d_gap();
+    check_multi_harmonic_balance_clearance_first_harmonic_d_A();
     check_fixed_points_contact_duration();
     check_fixed_points_contact_duration_newton();
     check_fixed_points_contact_duration_printed();
@@ -5341,6 +5489,7 @@ int main(void)
     check_periodic_orbit_phase_residual_and_derivatives();
     check_slow_flow_clearance_for_response_and_derivatives();
     check_sampled_load_ramp_state();
-    printf("symimpact: %ld checks of 175 kernels, 9 bundles and 5 iterations, %ld failed\n", checks, failures);
+    check_multi_harmonic_balance_clearance_first_harmonic_and_derivatives();
+    printf("symimpact: %ld checks of 179 kernels, 10 bundles and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1917,6 +1917,38 @@ program check_kernels
 [0.717798_dp, -0.564404_dp, 0.153394_dp])
     call check("sampled_load_ramp_velocity", got, expected, scale)
 
+    ! multi_harmonic_balance.clearance_first_harmonic
+    expected = [8086734.87278498_dp, 614.1261581737509_dp, 0.034512774306083904_dp]
+    scale = [16182589.979784979_dp, 1269.552581748751_dp, 0.0774711819450839_dp]
+    got = multi_harmonic_balance_clearance_first_harmonic([1.69014e+08_dp, 903.325_dp, 25.8041_dp], &
+[8.47624e-05_dp, 0.0718466_dp, 0.000516194_dp], &
+[0.0479005_dp, 0.725571_dp, 0.00166479_dp])
+    call check("multi_harmonic_balance_clearance_first_harmonic", got, expected, scale)
+
+    ! multi_harmonic_balance.clearance_first_harmonic_d_k1
+    expected = [0.04784653858724709_dp, 0.6798507272285732_dp, 0.0013374918833086178_dp]
+    scale = [0.09574703857316624_dp, 1.4053843267308184_dp, 0.0029996298452832264_dp]
+    got = multi_harmonic_balance_clearance_first_harmonic_d_k1([1.69014e+08_dp, 903.325_dp, 25.8041_dp], &
+[8.47624e-05_dp, 0.0718466_dp, 0.000516194_dp], &
+[0.0479005_dp, 0.725571_dp, 0.00166479_dp])
+    call check("multi_harmonic_balance_clearance_first_harmonic_d_k1", got, expected, scale)
+
+    ! multi_harmonic_balance.clearance_first_harmonic_d_gap
+    expected = [-107597612.09169267_dp, -574.3692895226036_dp, -16.22878196667357_dp]
+    scale = [215195224.18338534_dp, 1148.7385790452072_dp, 32.45756393334714_dp]
+    got = multi_harmonic_balance_clearance_first_harmonic_d_gap([1.69014e+08_dp, 903.325_dp, 25.8041_dp], &
+[8.47624e-05_dp, 0.0718466_dp, 0.000516194_dp], &
+[0.0479005_dp, 0.725571_dp, 0.00166479_dp])
+    call check("multi_harmonic_balance_clearance_first_harmonic_d_gap", got, expected, scale)
+
+    ! multi_harmonic_balance.clearance_first_harmonic_d_A
+    expected = [169013999.9503166_dp, 903.2784369418921_dp, 25.762993641593834_dp]
+    scale = [338027999.9006332_dp, 1806.5568738837842_dp, 51.52598728318767_dp]
+    got = multi_harmonic_balance_clearance_first_harmonic_d_A([1.69014e+08_dp, 903.325_dp, 25.8041_dp], &
+[8.47624e-05_dp, 0.0718466_dp, 0.000516194_dp], &
+[0.0479005_dp, 0.725571_dp, 0.00166479_dp])
+    call check("multi_harmonic_balance_clearance_first_harmonic_d_A", got, expected, scale)
+
     ! fixed_points.contact_duration
     expected = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
     scale = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
@@ -2860,7 +2892,51 @@ row)
     got(3) = row(2)
     call check("sampled_load_ramp_state(2)", got, expected, scale)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 175 kernels, 9 bundles and 5 iterations, ", &
+    ! multi_harmonic_balance.clearance_first_harmonic_and_derivatives, part 1 (clearance_first_harmonic), at its own points
+    expected = [8086734.87278498_dp, 614.1261581737509_dp, 0.034512774306083904_dp]
+    scale = [16182589.979784979_dp, 1269.552581748751_dp, 0.0774711819450839_dp]
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(1.69014e+08_dp, 8.47624e-05_dp, 0.0479005_dp, row)
+    got(1) = row(1)
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(903.325_dp, 0.0718466_dp, 0.725571_dp, row)
+    got(2) = row(1)
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(25.8041_dp, 0.000516194_dp, 0.00166479_dp, row)
+    got(3) = row(1)
+    call check("multi_harmonic_balance_clearance_first_harmonic_and_derivatives(1)", got, expected, scale)
+
+    ! multi_harmonic_balance.clearance_first_harmonic_and_derivatives, part 2 (clearance_first_harmonic_d_k1), at its own points
+    expected = [0.04784653858724709_dp, 0.6798507272285732_dp, 0.0013374918833086178_dp]
+    scale = [0.09574703857316624_dp, 1.4053843267308184_dp, 0.0029996298452832264_dp]
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(1.69014e+08_dp, 8.47624e-05_dp, 0.0479005_dp, row)
+    got(1) = row(2)
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(903.325_dp, 0.0718466_dp, 0.725571_dp, row)
+    got(2) = row(2)
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(25.8041_dp, 0.000516194_dp, 0.00166479_dp, row)
+    got(3) = row(2)
+    call check("multi_harmonic_balance_clearance_first_harmonic_and_derivatives(2)", got, expected, scale)
+
+    ! multi_harmonic_balance.clearance_first_harmonic_and_derivatives, part 3 (clearance_first_harmonic_d_gap), at its own points
+    expected = [-107597612.09169267_dp, -574.3692895226036_dp, -16.22878196667357_dp]
+    scale = [215195224.18338534_dp, 1148.7385790452072_dp, 32.45756393334714_dp]
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(1.69014e+08_dp, 8.47624e-05_dp, 0.0479005_dp, row)
+    got(1) = row(3)
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(903.325_dp, 0.0718466_dp, 0.725571_dp, row)
+    got(2) = row(3)
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(25.8041_dp, 0.000516194_dp, 0.00166479_dp, row)
+    got(3) = row(3)
+    call check("multi_harmonic_balance_clearance_first_harmonic_and_derivatives(3)", got, expected, scale)
+
+    ! multi_harmonic_balance.clearance_first_harmonic_and_derivatives, part 4 (clearance_first_harmonic_d_A), at its own points
+    expected = [169013999.9503166_dp, 903.2784369418921_dp, 25.762993641593834_dp]
+    scale = [338027999.9006332_dp, 1806.5568738837842_dp, 51.52598728318767_dp]
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(1.69014e+08_dp, 8.47624e-05_dp, 0.0479005_dp, row)
+    got(1) = row(4)
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(903.325_dp, 0.0718466_dp, 0.725571_dp, row)
+    got(2) = row(4)
+    call multi_harmonic_balance_clearance_first_harmonic_and_derivatives(25.8041_dp, 0.000516194_dp, 0.00166479_dp, row)
+    got(3) = row(4)
+    call check("multi_harmonic_balance_clearance_first_harmonic_and_derivatives(4)", got, expected, scale)
+
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 179 kernels, 10 bundles and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

@@ -28,6 +28,7 @@ from . import (  # noqa: E402  (after the float64 switch)
     beam_modes,
     modal_structure,
     sampled_load,
+    multi_harmonic_balance,
 )
 
 __all__ = [
@@ -47,4 +48,5 @@ __all__ = [
     "beam_modes",
     "modal_structure",
     "sampled_load",
+    "multi_harmonic_balance",
 ]

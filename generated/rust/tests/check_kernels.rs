@@ -2120,6 +2120,54 @@ fn sampled_load_ramp_velocity() {
 }
 
 #[test]
+fn multi_harmonic_balance_clearance_first_harmonic() {
+    let expected = [8086734.87278498, 614.1261581737509, 0.034512774306083904];
+    let scale = [16182589.979784979, 1269.552581748751, 0.0774711819450839];
+    let points: [[f64; 3]; 3] = [[1.69014e+08_f64, 8.47624e-05_f64, 0.0479005_f64], [903.325_f64, 0.0718466_f64, 0.725571_f64], [25.8041_f64, 0.000516194_f64, 0.00166479_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::clearance_first_harmonic(p[0], p[1], p[2]))
+        .collect();
+    check("multi_harmonic_balance::clearance_first_harmonic", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_clearance_first_harmonic_d_k1() {
+    let expected = [0.04784653858724709, 0.6798507272285732, 0.0013374918833086178];
+    let scale = [0.09574703857316624, 1.4053843267308184, 0.0029996298452832264];
+    let points: [[f64; 3]; 3] = [[1.69014e+08_f64, 8.47624e-05_f64, 0.0479005_f64], [903.325_f64, 0.0718466_f64, 0.725571_f64], [25.8041_f64, 0.000516194_f64, 0.00166479_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::clearance_first_harmonic_d_k1(p[0], p[1], p[2]))
+        .collect();
+    check("multi_harmonic_balance::clearance_first_harmonic_d_k1", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_clearance_first_harmonic_d_gap() {
+    let expected = [-107597612.09169267, -574.3692895226036, -16.22878196667357];
+    let scale = [215195224.18338534, 1148.7385790452072, 32.45756393334714];
+    let points: [[f64; 3]; 3] = [[1.69014e+08_f64, 8.47624e-05_f64, 0.0479005_f64], [903.325_f64, 0.0718466_f64, 0.725571_f64], [25.8041_f64, 0.000516194_f64, 0.00166479_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::clearance_first_harmonic_d_gap(p[0], p[1], p[2]))
+        .collect();
+    check("multi_harmonic_balance::clearance_first_harmonic_d_gap", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_clearance_first_harmonic_d_A() {
+    let expected = [169013999.9503166, 903.2784369418921, 25.762993641593834];
+    let scale = [338027999.9006332, 1806.5568738837842, 51.52598728318767];
+    let points: [[f64; 3]; 3] = [[1.69014e+08_f64, 8.47624e-05_f64, 0.0479005_f64], [903.325_f64, 0.0718466_f64, 0.725571_f64], [25.8041_f64, 0.000516194_f64, 0.00166479_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::clearance_first_harmonic_d_A(p[0], p[1], p[2]))
+        .collect();
+    check("multi_harmonic_balance::clearance_first_harmonic_d_A", &got, &expected, &scale);
+}
+
+#[test]
 fn closed_forms_hertz_contact_duration_and_derivatives_0() {
     let expected = [0.00484261680843532, 0.00013456345784133297, 0.38326922517706524];
     let scale = [0.00484261680843532, 0.00013456345784133297, 0.38326922517706524];
@@ -2777,6 +2825,54 @@ fn sampled_load_ramp_state_1() {
         .map(|p| symimpact::sampled_load::ramp_state(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7])[1])
         .collect();
     check("sampled_load::ramp_state[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_clearance_first_harmonic_and_derivatives_0() {
+    let expected = [8086734.87278498, 614.1261581737509, 0.034512774306083904];
+    let scale = [16182589.979784979, 1269.552581748751, 0.0774711819450839];
+    let points: [[f64; 3]; 3] = [[1.69014e+08_f64, 8.47624e-05_f64, 0.0479005_f64], [903.325_f64, 0.0718466_f64, 0.725571_f64], [25.8041_f64, 0.000516194_f64, 0.00166479_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::clearance_first_harmonic_and_derivatives(p[0], p[1], p[2])[0])
+        .collect();
+    check("multi_harmonic_balance::clearance_first_harmonic_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_clearance_first_harmonic_and_derivatives_1() {
+    let expected = [0.04784653858724709, 0.6798507272285732, 0.0013374918833086178];
+    let scale = [0.09574703857316624, 1.4053843267308184, 0.0029996298452832264];
+    let points: [[f64; 3]; 3] = [[1.69014e+08_f64, 8.47624e-05_f64, 0.0479005_f64], [903.325_f64, 0.0718466_f64, 0.725571_f64], [25.8041_f64, 0.000516194_f64, 0.00166479_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::clearance_first_harmonic_and_derivatives(p[0], p[1], p[2])[1])
+        .collect();
+    check("multi_harmonic_balance::clearance_first_harmonic_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_clearance_first_harmonic_and_derivatives_2() {
+    let expected = [-107597612.09169267, -574.3692895226036, -16.22878196667357];
+    let scale = [215195224.18338534, 1148.7385790452072, 32.45756393334714];
+    let points: [[f64; 3]; 3] = [[1.69014e+08_f64, 8.47624e-05_f64, 0.0479005_f64], [903.325_f64, 0.0718466_f64, 0.725571_f64], [25.8041_f64, 0.000516194_f64, 0.00166479_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::clearance_first_harmonic_and_derivatives(p[0], p[1], p[2])[2])
+        .collect();
+    check("multi_harmonic_balance::clearance_first_harmonic_and_derivatives[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_clearance_first_harmonic_and_derivatives_3() {
+    let expected = [169013999.9503166, 903.2784369418921, 25.762993641593834];
+    let scale = [338027999.9006332, 1806.5568738837842, 51.52598728318767];
+    let points: [[f64; 3]; 3] = [[1.69014e+08_f64, 8.47624e-05_f64, 0.0479005_f64], [903.325_f64, 0.0718466_f64, 0.725571_f64], [25.8041_f64, 0.000516194_f64, 0.00166479_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::clearance_first_harmonic_and_derivatives(p[0], p[1], p[2])[3])
+        .collect();
+    check("multi_harmonic_balance::clearance_first_harmonic_and_derivatives[3]", &got, &expected, &scale);
 }
 
 #[test]
