@@ -133,6 +133,10 @@ class ForcedResult:
             "e": self.e.as_dict() if isinstance(self.e, MaterialRestitution) else self.e,
             "t_end": self.t_end,
             "n_impacts": len(self.impacts),
+            # the keys a structure's run has (:meth:`StructureResult.as_dict`): the primary is
+            # its one point, the damper its one damper (one schema, docs/guide.md "Results")
+            "impacts": {"damper": len(self.impacts)},
+            "amplitudes": {} if self.steady is None else {"primary": self.steady.amplitude},
             "energy": self.energy,
             "final_state": list(self.final_state),
             "steady": None if self.steady is None else self.steady.as_dict(),
