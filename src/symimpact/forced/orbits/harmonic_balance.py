@@ -509,9 +509,19 @@ def arc(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, first
         return R, A
 
     def tangent(A, previous):
-        t = np.linalg.svd(A)[2][-1]
-        if previous is not None and t @ previous < 0:
-            t = -t
+        """The unit null vector of A (m × m + 1): from the SVD at the first point, then from
+        the bordered system [A; previousᵀ]·t = (0, 1), one LU solve instead of an SVD, whose
+        solution points the way ``previous`` did (t·previous = 1 > 0)."""
+        if previous is None:
+            t = np.linalg.svd(A)[2][-1]
+        else:
+            rhs = np.zeros(A.shape[1])
+            rhs[-1] = 1.0
+            try:
+                t = np.linalg.solve(np.vstack([A, previous]), rhs)
+            except np.linalg.LinAlgError:  # previous ⟂ the null space (never on a smooth arc)
+                t = np.linalg.svd(A)[2][-1]
+                t = -t if t @ previous < 0 else t
         return t / np.linalg.norm(t)
 
     Y = np.concatenate([np.array(first.x + first.y) / s, [1.0]])
