@@ -58,6 +58,7 @@ from typing import Any
 
 import numpy as np
 
+from ..._threads import on_one_blas_thread
 from ...errors import MethodNotApplicable, ParameterError
 from ...model import checks
 from ...model.system import ImpactSystem
@@ -411,6 +412,7 @@ def coefficients_of(system: ImpactSystem, forcing: Forcing, contact: CompliantCo
     return np.concatenate([X, Y])
 
 
+@on_one_blas_thread
 def hb_orbit(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
              harmonics: Any = 15, time_samples: Any = None, subharmonic: Any = 1,
              start: Any = None) -> HBOrbit:  # fmt: skip
@@ -468,6 +470,7 @@ class HBCurve:
         }  # fmt: skip
 
 
+@on_one_blas_thread
 def hb_curve(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, omega_range: Any,
              harmonics: Any = 15, time_samples: Any = None, subharmonic: Any = 1,
              max_points: int = 2000) -> HBCurve:  # fmt: skip
@@ -482,6 +485,7 @@ def hb_curve(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, 
     return arc(system, forcing.at(lo), contact, first, (lo, hi), +1, max_points)
 
 
+@on_one_blas_thread
 def arc(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, first: HBOrbit,
         band: tuple[float, float], direction: int, max_points: int = 2000) -> HBCurve:  # fmt: skip
     """The branch through the balanced orbit ``first`` (of ``forcing`` at its Ω, whose phase

@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from ..._threads import on_one_blas_thread
 from ...errors import MethodNotApplicable, ParameterError
 from ...model.system import ImpactSystem
 from ..contact_law import CompliantContact
@@ -218,6 +219,7 @@ def _peak(branches: list[Branch]) -> Peak | None:
                 p.impacts_per_period, p.impact_events_per_period)  # fmt: skip
 
 
+@on_one_blas_thread
 def hb_frequency_response(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
                           exact: FrequencyResponse, harmonics: Any = 15,
                           time_samples: Any = None) -> FrequencyResponse:  # fmt: skip
@@ -387,6 +389,7 @@ def _harmonics_for(system, forcing, contact, b: Branch) -> dict[str, int | None]
     return out
 
 
+@on_one_blas_thread
 def compare(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
             exact: FrequencyResponse, hb: FrequencyResponse, harmonics: Any = 15,
             time_samples: Any = None, ladder: bool = True) -> Comparison:  # fmt: skip
