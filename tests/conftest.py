@@ -31,6 +31,10 @@ settings.load_profile("ci")
 
 
 def pytest_configure(config: pytest.Config) -> None:
+    if hasattr(config, "workerinput"):  # an xdist worker: one a core (-n auto), BLAS on one
+        from symimpact._threads import blas_on_one_thread_from_now
+
+        blas_on_one_thread_from_now()
     if not hasattr(config, "workerinput"):  # the main process, before any xdist worker starts
         # The generalised ufuncs of generated/fixed_points.py compile when imported and write
         # numba's on-disk cache.  Two workers doing so at once in a fresh checkout can leave

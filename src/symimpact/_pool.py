@@ -1,7 +1,8 @@
 """Local worker processes shared by the stages that spread independent runs over the machine's
 cores: the maps (:mod:`symimpact.maps.executors`) and the multi-start of a frequency-response
 curve (:func:`symimpact.forced.orbits.coverage.attractors`).  A worker ends with the process that
-started it, ignores Ctrl-C (the parent ends the pool), and never starts a pool of its own."""
+started it, ignores Ctrl-C (the parent ends the pool), never starts a pool of its own, and runs
+BLAS on one thread (the pool has one worker a core)."""
 
 from __future__ import annotations
 
@@ -38,6 +39,9 @@ def worker_init(parent: int) -> None:
         ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGTERM))  # PR_SET_PDEATHSIG
     if os.getppid() != parent:  # the parent died before the line above took effect
         os._exit(1)
+    from ._threads import blas_on_one_thread_from_now
+
+    blas_on_one_thread_from_now()  # the pool puts one worker on each core already
 
 
 def can_spread() -> bool:
