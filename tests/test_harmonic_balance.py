@@ -209,12 +209,37 @@ def test_the_command_gives_the_api_orbit_beside_shooting(capsys, hertz_exact):
         (["--harmonics", "0"], "harmonics: must be a whole number 1 to 400, got 0"),
         (["--multiple", "3", "--harmonics", "2"], "harmonics: must be at least the period"),
         (["--response", "force"], "response: applies to --method closed-form or shooting"),
+        # a contact 1000 times stiffer: Eq. 34's 0.767 ms at the settled motion's 0.295 m/s,
+        # where 60 samples a period are 3.08 ms apart
+        (
+            ["--k-hz", "1e8 N/m^1.5", "--harmonics", "15", "--time-samples", "60"],
+            "the hertz contact lasts about 0.767 ms (Eq. 34 at the approach speed 0.295 m/s), less "
+            "than 2 spacings of the N = 60 samples (3.08 ms)",
+        ),
     ],
 )
 def test_the_command_refuses_bad_input_in_one_line(capsys, extra, message):
-    assert main([*HERTZ_ARGS, *extra]) == 2
+    argv = list(HERTZ_ARGS)
+    if "--k-hz" in extra:  # the stiffness given replaces the case's (an option is given once)
+        at = argv.index("--k-hz")
+        del argv[at : at + 2]
+    assert main([*argv, *extra]) == 2
     err = capsys.readouterr().err.strip()
     assert message in err and "\n" not in err and "Traceback" not in err
+
+
+def test_the_samples_asked_for_a_stiff_contact_resolve_it():
+    """The refusal's count of samples is enough: with it the contact holds at least two
+    samples; the orbit's own check (the balanced series' contacts, on a grid 16 times finer)
+    passes as well."""
+    stiff = HERTZ.with_(k_hz=1e8)
+    forcing, contact = Forcing(F0=2.0, omega=34.0), CompliantContact("hertz")
+    with pytest.raises(ParameterError, match="give at least 483 samples"):
+        hb_orbit(stiff, forcing, contact, harmonics=15, time_samples=60)
+    try:
+        hb_orbit(stiff, forcing, contact, harmonics=15, time_samples=483)
+    except MethodNotApplicable:
+        pass  # Newton may still not converge at H = 15; the sampling is not what it refuses
 
 
 def test_a_branch_followed_in_omega_lies_on_the_exact_orbits():

@@ -373,23 +373,26 @@ def _checked(system, forcing, contact, harmonics, time_samples, subharmonic):
     return H, N, nu
 
 
-def _start(system, forcing, contact, H, nu) -> np.ndarray:
+def _start(system, forcing, contact, H, N, nu) -> np.ndarray:
     """Coefficients of the attractor a run from rest settles on (:func:`coefficients_of` of the
-    state after 300 periods)."""
+    state after 300 periods), its contacts checked against N samples a period."""
     from .shooting import settled_state
 
     state, _ = settled_state(system, forcing, contact, 300, (0.0, 0.0, 0.0, 0.0))
-    return coefficients_of(system, forcing, contact, state, H, nu)
+    return coefficients_of(system, forcing, contact, state, H, nu, time_samples=N)
 
 
 def coefficients_of(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
                     state: Any, harmonics: int, subharmonic: int = 1,
-                    phase: float | None = None) -> np.ndarray:  # fmt: skip
+                    phase: float | None = None,
+                    time_samples: int | None = None) -> np.ndarray:  # fmt: skip
     """The coefficients (x then y, H = ``harmonics``) of the motion from ``state`` (x, ẋ, z, ẏ)
     at t = 0 over ν = ``subharmonic`` forcing periods: the compliant engine's samples (64 a
     period, H below 32 of them), transformed; in θ = Ωt/ν with the forcing's phase ``forcing.phase``
     at t = 0, or, given ``phase``, moved to the frame where the forcing's phase at θ = 0 is that
-    one (a shift of θ by δ = (φ − phase)/ν turns (aₖ, bₖ) by kδ)."""
+    one (a shift of θ by δ = (φ − phase)/ν turns (aₖ, bₖ) by kδ).  Given ``time_samples`` N, a
+    motion whose contacts are shorter than two spacings of N samples a period is refused
+    (:func:`_check_contacts_resolved`)."""
     from ..simulation import simulate_forced
 
     per = 64 * max(1, math.ceil(harmonics / 16))
@@ -397,6 +400,8 @@ def coefficients_of(system: ImpactSystem, forcing: Forcing, contact: CompliantCo
     res = simulate_forced(system, forcing, contact=contact.law, chi=contact.chi,
                           periods=subharmonic, x0=x0, xdot0=v0, y0=x0 + z0, ydot0=u0,
                           samples_per_period=per)  # fmt: skip
+    if time_samples is not None:
+        _check_contacts_resolved(system, contact, res, time_samples, subharmonic)
     s = np.asarray(res.samples)[:-1]
     b = Basis.of(harmonics, len(s))
     X, Y = b.P @ s[:, 0], b.P @ (s[:, 0] + s[:, 2])
@@ -423,11 +428,78 @@ def hb_orbit(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
     H, N, nu = _checked(system, forcing, contact, harmonics, time_samples, subharmonic)
     problem = _problem(system, forcing, contact, H, N, nu)
     w = forcing.omega / nu
-    U0 = _start(system, forcing, contact, H, nu) if start is None else np.asarray(start, float)
+    U0 = _start(system, forcing, contact, H, N, nu) if start is None else np.asarray(start, float)
     if U0.shape != (2 * (2 * H + 1),):
         raise ParameterError("start", f"must hold {2 * (2 * H + 1)} coefficients (x then y)")
     U, it, _ = newton(problem, U0, w, 0.5 * system.gap)
+    _check_contacts_sampled(problem, U, 0.5 * system.gap, w)
     return _orbit(problem, U, forcing.omega, nu, it)
+
+
+def _check_contacts_resolved(system, contact, res, N: int, nu: int) -> None:
+    """Refuse (``time_samples``, one line) the motion of the run ``res`` when a contact lasts
+    less than :data:`SAMPLES_PER_CONTACT` spacings of N samples over its ν periods: each onset's
+    duration from the derived closed forms at its approach speed (Eq. 34 for the Hertz and
+    Hunt–Crossley laws, their elastic part; Eq. 35 for the linear law with its c₁), before
+    Newton meets a Jacobian with no sample in contact."""
+    from ...generated import closed_forms
+    from ..engine import _rigid
+
+    if contact.law == "cubic" or len(res.events) == 0:
+        return  # no closed form for the cubic law's duration: the orbit's own check follows
+    speeds = np.abs(res.events[:, _rigid.E_VREL])
+    speeds = speeds[speeds > 0.0]
+    if len(speeds) == 0:
+        return
+    v = float(np.max(speeds))  # the fastest onset's contact is the shortest
+    if contact.law == "linear":
+        tau = float(closed_forms.linear_contact_duration_scalar(system.m, system.M, system.k1,
+                                                               system.c1))  # fmt: skip
+    else:
+        tau = float(closed_forms.hertz_contact_duration_scalar(system.m, system.M, system.k_hz, v))
+    period = nu * res.forcing.period
+    spacing = period / N
+    if math.isfinite(tau) and 0.0 < tau < SAMPLES_PER_CONTACT * spacing:
+        need = math.ceil(SAMPLES_PER_CONTACT * period / tau)
+        raise ParameterError(
+            "time_samples",
+            f"the {contact.law} contact lasts about {1e3 * tau:.3g} ms ("
+            + ("Eq. 35" if contact.law == "linear" else f"Eq. 34 at the approach speed {v:.3g} m/s")
+            + f"), "
+            f"less than {SAMPLES_PER_CONTACT} spacings of the N = {N} samples ({1e3 * spacing:.3g} "
+            f"ms): the contact is stiffer than the sampling resolves; give at least {need} samples")  # fmt: skip
+
+
+#: Samples that must fall within each contact of a balanced orbit: fewer, and AFT sees the
+#: contact's force at one instant or not at all (the regularisation is stiffer, its contact
+#: shorter, than the sampling resolves).
+SAMPLES_PER_CONTACT = 2
+
+
+def _check_contacts_sampled(problem: Problem, U: np.ndarray, h: float, w: float) -> None:
+    """Refuse (``time_samples``, one line) an orbit whose shortest contact, where the series
+    z = y − x passes a wall ±h (read on a grid 16 times the samples'), spans less than
+    :data:`SAMPLES_PER_CONTACT` sample spacings 2π/N, naming the samples that would."""
+    b = problem.basis
+    m = 2 * b.H + 1
+    fine = 16 * b.N
+    theta = 2.0 * math.pi * np.arange(fine) / fine
+    inside = np.abs(b.at(U[m:] - U[:m], theta)) > h
+    if not inside.any() or inside.all():
+        return
+    # contact arcs on the circle: start where the grid turns inside, from a point outside
+    first_out = int(np.argmin(inside))
+    run = np.roll(inside, -first_out)
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], run.astype(int), [0]])))
+    shortest = int(np.min(edges[1::2] - edges[::2])) * 2.0 * math.pi / fine  # [rad of θ]
+    spacing = 2.0 * math.pi / b.N
+    if shortest < SAMPLES_PER_CONTACT * spacing:
+        need = math.ceil(SAMPLES_PER_CONTACT * 2.0 * math.pi / shortest)
+        raise ParameterError(
+            "time_samples",
+            f"this orbit's shortest contact lasts {1e3 * shortest / w:.3g} ms, less than "
+            f"{SAMPLES_PER_CONTACT} spacings of the N = {b.N} samples ({1e3 * spacing / w:.3g} ms): "
+            f"the contact is stiffer than the sampling resolves; give at least {need} samples")  # fmt: skip
 
 
 def _orbit(problem: Problem, U: np.ndarray, omega: float, nu: int, it: int) -> HBOrbit:
