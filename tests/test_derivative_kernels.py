@@ -88,7 +88,7 @@ def test_every_derivative_kernel_agrees_with_the_complex_step_of_its_value_kerne
 def test_every_derivative_kernel_agrees_with_mpmath_differentiation_of_the_value(derivatives):
     for _, k, value, points in derivatives:
         symbols = [a.symbol for a in value.args]
-        f = sp.lambdify(symbols, value.expr, "mpmath")
+        f = sp.lambdify(symbols, value.expr, "mpmath", cse=True)
         i = [a.name for a in k.args].index(k.derivative_of[1])
         with mp.workdps(checkpoints.DIGITS):
             for p in points:

@@ -31,10 +31,12 @@ N_POINTS = 200
 
 
 #: Step 10's kernels (the four conditions' minors and weighted Cramer solutions, 12-14 k
-#: operations each) took 90 s in mpmath at 200 points on one machine and over 5 minutes on
-#: another: they run in the slow set, at HEAVY_POINTS points
+#: operations each) run in the slow set.  Their mpmath references are lambdified with common
+#: subexpressions shared (``cse=True``: the same exact arithmetic at 50 digits, each shared
+#: subexpression once): 200 points in 16 s alone, where 50 points without it took 125 s alone
+#: (298 s beside other tests) on the 2-core machine.
 HEAVY = {"periodic_orbit"}
-HEAVY_POINTS = 50
+HEAVY_POINTS = N_POINTS
 
 #: Roundings the kernels' first operations (K/M, its square root, π/Ω, their product) put on
 #: the phase before the trigonometric functions see it: four, each of one unit (2^-53)
@@ -64,8 +66,8 @@ def test_kernels_match_mpmath(boards, step):
     assert boards[step].kernels, "every step emits kernels"
     for kernel in boards[step].kernels:
         symbols = [a.symbol for a in kernel.args]
-        reference = sp.lambdify(symbols, kernel.expr, "mpmath")
-        scale = sp.lambdify(symbols, kernel.magnitude or 0, "mpmath")
+        reference = sp.lambdify(symbols, kernel.expr, "mpmath", cse=True)
+        scale = sp.lambdify(symbols, kernel.magnitude or 0, "mpmath", cse=True)
         n = HEAVY_POINTS if step in HEAVY else N_POINTS
         points = physical_points(kernel, rng, n)
         got = getattr(module, kernel.name)(*points.T)  # vectorised call: one array per argument

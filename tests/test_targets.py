@@ -77,7 +77,7 @@ def _assert_close(name, kernel, points, got, expected, scale):
     both_nan = np.isnan(got) & np.isnan(expected)
     bad = ~both_nan & ~(np.abs(got - expected) <= RTOL * scale)
     if bad.any() and bad.sum() <= len(got) // 20:
-        exact = sp.lambdify([a.symbol for a in kernel.args], kernel.expr, "mpmath")
+        exact = sp.lambdify([a.symbol for a in kernel.args], kernel.expr, "mpmath", cse=True)
         with mp.workdps(50):
             for i in np.flatnonzero(bad):
                 value = mp.re(exact(*(mp.mpf(float(v)) for v in points[i])))
