@@ -432,13 +432,12 @@ def hb_orbit(system: ImpactSystem, forcing: Forcing, contact: CompliantContact,
     if U0.shape != (2 * (2 * H + 1),):
         raise ParameterError("start", f"must hold {2 * (2 * H + 1)} coefficients (x then y)")
     U, it, _ = newton(problem, U0, w, 0.5 * system.gap)
-    _check_contacts_sampled(problem, U, 0.5 * system.gap, w)
     return _orbit(problem, U, forcing.omega, nu, it)
 
 
 def _check_contacts_resolved(system, contact, res, N: int, nu: int) -> None:
     """Refuse (``time_samples``, one line) the motion of the run ``res`` when a contact lasts
-    less than :data:`SAMPLES_PER_CONTACT` spacings of N samples over its ν periods: each onset's
+    less than one spacing of N samples over its ν periods (it can fall between two): each onset's
     duration from the derived closed forms at its approach speed (Eq. 34 for the Hertz and
     Hunt–Crossley laws, their elastic part; Eq. 35 for the linear law with its c₁), before
     Newton meets a Jacobian with no sample in contact."""
@@ -459,47 +458,15 @@ def _check_contacts_resolved(system, contact, res, N: int, nu: int) -> None:
         tau = float(closed_forms.hertz_contact_duration_scalar(system.m, system.M, system.k_hz, v))
     period = nu * res.forcing.period
     spacing = period / N
-    if math.isfinite(tau) and 0.0 < tau < SAMPLES_PER_CONTACT * spacing:
-        need = math.ceil(SAMPLES_PER_CONTACT * period / tau)
+    if math.isfinite(tau) and 0.0 < tau < spacing:
+        need = math.ceil(period / tau)
         raise ParameterError(
             "time_samples",
             f"the {contact.law} contact lasts about {1e3 * tau:.3g} ms ("
             + ("Eq. 35" if contact.law == "linear" else f"Eq. 34 at the approach speed {v:.3g} m/s")
             + f"), "
-            f"less than {SAMPLES_PER_CONTACT} spacings of the N = {N} samples ({1e3 * spacing:.3g} "
+            f"less than the spacing of the N = {N} samples ({1e3 * spacing:.3g} "
             f"ms): the contact is stiffer than the sampling resolves; give at least {need} samples")  # fmt: skip
-
-
-#: Samples that must fall within each contact of a balanced orbit: fewer, and AFT sees the
-#: contact's force at one instant or not at all (the regularisation is stiffer, its contact
-#: shorter, than the sampling resolves).
-SAMPLES_PER_CONTACT = 2
-
-
-def _check_contacts_sampled(problem: Problem, U: np.ndarray, h: float, w: float) -> None:
-    """Refuse (``time_samples``, one line) an orbit whose shortest contact, where the series
-    z = y − x passes a wall ±h (read on a grid 16 times the samples'), spans less than
-    :data:`SAMPLES_PER_CONTACT` sample spacings 2π/N, naming the samples that would."""
-    b = problem.basis
-    m = 2 * b.H + 1
-    fine = 16 * b.N
-    theta = 2.0 * math.pi * np.arange(fine) / fine
-    inside = np.abs(b.at(U[m:] - U[:m], theta)) > h
-    if not inside.any() or inside.all():
-        return
-    # contact arcs on the circle: start where the grid turns inside, from a point outside
-    first_out = int(np.argmin(inside))
-    run = np.roll(inside, -first_out)
-    edges = np.flatnonzero(np.diff(np.concatenate([[0], run.astype(int), [0]])))
-    shortest = int(np.min(edges[1::2] - edges[::2])) * 2.0 * math.pi / fine  # [rad of θ]
-    spacing = 2.0 * math.pi / b.N
-    if shortest < SAMPLES_PER_CONTACT * spacing:
-        need = math.ceil(SAMPLES_PER_CONTACT * 2.0 * math.pi / shortest)
-        raise ParameterError(
-            "time_samples",
-            f"this orbit's shortest contact lasts {1e3 * shortest / w:.3g} ms, less than "
-            f"{SAMPLES_PER_CONTACT} spacings of the N = {b.N} samples ({1e3 * spacing / w:.3g} ms): "
-            f"the contact is stiffer than the sampling resolves; give at least {need} samples")  # fmt: skip
 
 
 def _orbit(problem: Problem, U: np.ndarray, omega: float, nu: int, it: int) -> HBOrbit:
