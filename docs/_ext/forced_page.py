@@ -216,8 +216,10 @@ def _hb_section() -> list[str]:
 
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     ax.loglog(H, duffing, "o-", label="Duffing, no clearance (smooth)")
-    ax.loglog(H, cases["hertz"], "s-", label="Hertz with c₁δ̇ (a step at each onset)")
+    ax.loglog(H, cases["hertz"], "s-", label="Hertz with a dashpot c₁ (a step at each onset)")
     ax.loglog(H, cases["hunt-crossley"], "^-", label="Hunt–Crossley (starts as δ^1.5)")
+    ax.set_xticks(HB_HARMONICS, [str(h) for h in HB_HARMONICS])
+    ax.minorticks_off()
     ax.set_xlabel("harmonics H")
     ax.set_ylabel("relative error")
     ax.set_title("Harmonic balance against the exact orbit")
