@@ -20,7 +20,17 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 PKG = ROOT / "src" / "symimpact"
 LAYERS = ["model", "free", "forced", "maps", "identify", "report", "cli"]
-SHARED = {"errors", "io", "_interrupt", "_notices", "_pool", "budgets", "export", "generated"}
+SHARED = {
+    "errors",
+    "io",
+    "_interrupt",
+    "_notices",
+    "_pool",
+    "_threads",
+    "budgets",
+    "export",
+    "generated",
+}
 
 
 #: forced/'s folders in their order; "" is forced/'s own modules (the forcing, the contact laws,
