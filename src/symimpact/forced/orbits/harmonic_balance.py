@@ -391,8 +391,8 @@ def coefficients_of(system: ImpactSystem, forcing: Forcing, contact: CompliantCo
     period, H below 32 of them), transformed; in θ = Ωt/ν with the forcing's phase ``forcing.phase``
     at t = 0, or, given ``phase``, moved to the frame where the forcing's phase at θ = 0 is that
     one (a shift of θ by δ = (φ − phase)/ν turns (aₖ, bₖ) by kδ).  Given ``time_samples`` N, a
-    motion whose contacts are shorter than two spacings of N samples a period is refused
-    (:func:`_check_contacts_resolved`)."""
+    motion with a contact shorter than the spacing of N samples a period (one that can fall
+    between two samples) is refused (:func:`_check_contacts_resolved`)."""
     from ..simulation import simulate_forced
 
     per = 64 * max(1, math.ceil(harmonics / 16))
@@ -445,7 +445,7 @@ def _check_contacts_resolved(system, contact, res, N: int, nu: int) -> None:
     from ..engine import _rigid
 
     if contact.law == "cubic" or len(res.events) == 0:
-        return  # no closed form for the cubic law's duration: the orbit's own check follows
+        return  # no closed form for the cubic law's duration: not judged
     speeds = np.abs(res.events[:, _rigid.E_VREL])
     speeds = speeds[speeds > 0.0]
     if len(speeds) == 0:
