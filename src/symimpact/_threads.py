@@ -4,7 +4,7 @@ that already run one per core.
 NumPy's OpenBLAS splits even a 124 × 124 eigenproblem (Hill's, H = 15) over every core: on the
 2-core machine the thread hand-offs cost more than the arithmetic, and beside other work (a
 pool's workers, a test run) the threads wait for each other.  Benchmark 17's balance curve took
-22 s with one BLAS thread and 65 s with two on a loaded machine.  :func:`one_blas_thread`
+16 s with one BLAS thread (this module) and 65 s with two on a loaded machine.  :func:`one_blas_thread`
 limits BLAS to one thread for the length of a ``with`` block (threadpoolctl, which finds the
 BLAS that NumPy and SciPy loaded and sets its thread count through its own API);
 :func:`blas_on_one_thread_from_now` does so for the rest of a process: the pool's workers
@@ -15,7 +15,10 @@ from __future__ import annotations
 
 import contextlib
 import functools
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
+from typing import Any, TypeVar
+
+T = TypeVar("T")
 
 
 @functools.cache
@@ -36,11 +39,11 @@ def one_blas_thread() -> Iterator[None]:
         yield
 
 
-def on_one_blas_thread(fn):
+def on_one_blas_thread(fn: Callable[..., T]) -> Callable[..., T]:
     """``fn`` run inside :func:`one_blas_thread` (a decorator)."""
 
     @functools.wraps(fn)
-    def wrapper(*args, **kwargs):
+    def wrapper(*args: Any, **kwargs: Any) -> T:
         with one_blas_thread():
             return fn(*args, **kwargs)
 
