@@ -19,11 +19,12 @@ force at each sample → its coefficients.  On the board:
    here and emitted as a kernel with its derivatives, the H = 1 member against which an
    importer checks their own AFT.
 4. Why the series converges slowly with a contact.  At an onset the penetration grows linearly,
-   δ ≈ v₀s, so the force starts as s₊^ν: ν = 1 for the linear and cubic laws, 3/2 for Hertz and
-   Hunt–Crossley, 0 (a step) with a dashpot c₁δ̇.  The Laplace integral of s^ν e^{−ps} gives
-   Γ(ν + 1)/p^{ν+1}: the force's harmonics fall as k^{−(ν+1)}, the motion's as k^{−(ν+3)}, and
-   the motion's series truncated after H harmonics misses O(H^{−(ν+2)}) — an algebraic rate,
-   where a smooth force (Duffing's, no clearance) gives a spectral one.
+   δ ≈ v₀s, so the force starts as $s_+^\nu$: ν = 1 for the linear and cubic laws, 3/2 for
+   Hertz and Hunt–Crossley, 0 (a step) with a dashpot c₁δ̇.  The Laplace integral of
+   $s^\nu e^{-ps}$ gives $\Gamma(\nu + 1)/p^{\nu+1}$: the force's harmonics fall as
+   $k^{-(\nu+1)}$, the motion's as $k^{-(\nu+3)}$, and the motion's series truncated after H
+   harmonics misses $O(H^{-(\nu+2)})$ — an algebraic rate, where a smooth force (Duffing's, no
+   clearance) gives a spectral one.
 """
 
 from __future__ import annotations
@@ -38,8 +39,8 @@ ALIASING_CASES = tuple((p, H) for p in (1, 2, 3) for H in (1, 2, 3))
 
 
 def laurent_power(coefficients: dict[int, sp.Expr], p: int) -> dict[int, sp.Expr]:
-    """The coefficients of (Σ cⱼ ζʲ)^p by harmonic: a trigonometric polynomial raised to a
-    power, written in ζ = e^{iθ} (harmonic j ↔ ζʲ)."""
+    """The coefficients of the p-th power of Σ cⱼ ζʲ by harmonic: a trigonometric polynomial
+    raised to a power, written in ζ = exp(iθ) (harmonic j ↔ ζʲ)."""
     out = {0: sp.Integer(1)}
     for _ in range(p):
         step: dict[int, sp.Expr] = {}
@@ -83,7 +84,7 @@ def derive() -> Board:
                 [project(linear, sp.sin(k * omega * t)).diff(v) for v in (ak, bk)],
             ]
         ),
-        "Harmonic k of M ẍ + C ẋ + K x projected on cos kθ and sin kθ, acting on (a_k, b_k): "
+        "Harmonic k of M ẍ + C ẋ + K x projected on cos kθ and sin kθ, acting on (aₖ, bₖ): "
         "each harmonic alone, the dynamic stiffness on the diagonal and the damping off it.",
         "F9",
     )
@@ -119,16 +120,19 @@ def derive() -> Board:
     undamped = {C: 0, c1: 0}
     main = (M * x1.diff(t, 2) + C * x1.diff(t) + K * x1 - force).subs(undamped)
     impact = (m * y1.diff(t, 2) + force).subs(undamped)
-    balance = w(
-        "one_term_balance",
-        sp.Matrix(
-            [
-                sp.expand(project(main, sp.cos(omega * t))),
-                sp.expand(project(impact, sp.cos(omega * t))),
-            ]
+    balance = (
+        w(
+            "one_term_balance_main",
+            sp.expand(project(main, sp.cos(omega * t))),
+            "H = 1, C = c₁ = 0: the main mass's residual of Eq. 10 projected on cos ωt.",
+            "12",
         ),
-        "H = 1, C = c₁ = 0: the residuals of Eq. 10 projected on cos ωt.",
-        "12",
+        w(
+            "one_term_balance_impact",
+            sp.expand(project(impact, sp.cos(omega * t))),
+            "The impact mass's residual, projected the same way.",
+            "12",
+        ),
     )
     printed12 = (
         -M * A * omega**2 + K * A + sp.Rational(3, 4) * a * (A - B) ** 3 + b * (A - B),
@@ -238,37 +242,42 @@ def derive() -> Board:
     laplace = w(
         "onset_transform",
         sp.integrate(s**nu * sp.exp(-p * s), (s, 0, sp.oo)),
-        "A force starting as s₊^ν at an onset (s the time after it): its transform, whose "
+        "A force starting as s₊ to the power ν at an onset (s the time after it): its transform, whose "
         "value at p = ikω gives harmonic k's part from the onset.",
         "F12",
     )
     board.check(
-        "the transform is Γ(ν + 1)/p^(ν+1)",
+        "the transform is Γ(ν + 1) over p to the power ν + 1",
         "F12",
         sp.simplify(laplace - sp.gamma(nu + 1) / p ** (nu + 1)) == 0,
     )
     decay = w(
         "force_harmonic_decay",
         sp.simplify(sp.log(laplace.subs(p, k * omega)).diff(k) * k),
-        "d log|F_k| / d log k, with |p| = kω (|i^(ν+1)| = 1): the force's harmonics fall as "
-        "k^−(ν+1).",
+        "The slope of log Fₖ (its modulus) against log k, p's modulus kω (i to a real power has "
+        "modulus 1): the force's "
+        "harmonics fall as k to the power −(ν + 1).",
         "F12",
     )
-    board.check("the force's harmonics fall as k^-(ν+1)", "F12", sp.simplify(decay + nu + 1) == 0)
+    board.check(
+        "the force's harmonics fall as k to the power −(ν + 1)",
+        "F12",
+        sp.simplify(decay + nu + 1) == 0,
+    )
     q = sp.Symbol("q", positive=True)
     tail = w(
         "truncation_tail",
         sp.powsimp(sp.integrate(q ** (-(nu + 3)), (q, H_, sp.oo), conds="none")),
-        "The motion's harmonics fall as k^−(ν+3) (the force divided by the dynamic stiffness, "
+        "The motion's harmonics fall as k to the power −(ν + 3) (the force over the dynamic stiffness, "
         "k²ω²M for large k): the part after harmonic H, bounded by the integral of the tail.",
         "F12",
     )
     board.check(
-        "the truncated tail is H^-(ν+2)/(ν+2)",
+        "the truncated tail is H to the power −(ν + 2), over ν + 2",
         "F12",
         sp.simplify(tail - H_ ** (-(nu + 2)) / (nu + 2)) == 0,
     )
-    onsets = {"linear k₁δ or cubic aδ³ + bδ": 1, "Hertz or Hunt–Crossley k δ^(3/2)": sp.Rational(3, 2),
+    onsets = {"linear k₁δ or cubic aδ³ + bδ": 1, "Hertz or Hunt–Crossley k δ¹·⁵": sp.Rational(3, 2),
               "any dashpot c₁δ̇ (a step)": 0}  # fmt: skip
     w(
         "truncation_orders",

@@ -205,7 +205,7 @@ def _hb_section() -> list[str]:
     board = cache.boards()["multi_harmonic_balance"]
     orders = next(line.value for line in board.lines if line.name == "truncation_orders")
     predicted = {"hertz": orders["any dashpot c₁δ̇ (a step)"][1],
-                 "hunt-crossley": orders["Hertz or Hunt–Crossley k δ^(3/2)"][1]}  # fmt: skip
+                 "hunt-crossley": orders["Hertz or Hunt–Crossley k δ¹·⁵"][1]}  # fmt: skip
     duffing = _duffing_errors()
     cases = {"hertz": _contact_errors("hertz"), "hunt-crossley": _contact_errors("hunt-crossley")}
     H = np.array(HB_HARMONICS, dtype=float)
@@ -217,7 +217,7 @@ def _hb_section() -> list[str]:
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     ax.loglog(H, duffing, "o-", label="Duffing, no clearance (smooth)")
     ax.loglog(H, cases["hertz"], "s-", label="Hertz with a dashpot c₁ (a step at each onset)")
-    ax.loglog(H, cases["hunt-crossley"], "^-", label="Hunt–Crossley (starts as δ^1.5)")
+    ax.loglog(H, cases["hunt-crossley"], "^-", label="Hunt–Crossley (starts as δ¹·⁵)")
     ax.set_xticks(HB_HARMONICS, [str(h) for h in HB_HARMONICS])
     ax.minorticks_off()
     ax.set_xlabel("harmonics H")
@@ -239,7 +239,7 @@ def _hb_section() -> list[str]:
         "samples a period) against the exact orbit: Duffing's oscillator "
         f"x'' + {DUFFING[3]:g}x' + x + {DUFFING[0]:g}x³ = {DUFFING[1]:g} cos {DUFFING[2]:g}t "
         "(the state at t = 0 against DOP853 shooting at rtol 1e-13), and the impact damper "
-        f"above at Ω = {HB_OMEGA:g} rad/s with a Hertz contact (k_hz = 1e5 N/m¹·⁵) and a dashpot "
+        f"above at Ω = {HB_OMEGA:g} rad/s with a Hertz contact (stiffness 1e5 N/m¹·⁵) and a dashpot "
         "c₁ = 0.5 N s/m, or Hunt–Crossley's χ = 0.5 s/m (its amplitude against shooting's, the "
         "compliant engine). Each H starts from the last one's coefficients.",
         "",
@@ -253,13 +253,13 @@ def _hb_section() -> list[str]:
         "fall as a power of H; the least-squares order over the table is "
         f"{rates['hertz']:.2f} with the dashpot's step and {rates['hunt-crossley']:.2f} for "
         "Hunt–Crossley, where Step 17 of the derivations gives the truncation's order ν + 2: "
-        f"{predicted['hertz']} and {predicted['hunt-crossley']} (the force starts as s₊^ν at an "
+        f"{predicted['hertz']} and {predicted['hunt-crossley']} (the force starts as $s_+^\\nu$ at an "
         "onset). The amplitude is read where the primary is far from its walls, and the "
         "balance's error is not only the truncation's (AFT folds the force's harmonics beyond "
         "8H − H onto the kept ones), so a measured order need not be ν + 2; the step's measured "
         f"order is {'below' if rates['hertz'] < rates['hunt-crossley'] else 'not below'} "
         "Hunt–Crossley's. `tests/test_hb_convergence.py` checks the rate at which the contact "
-        "force's own harmonics fall, k^−(ν+1), on the exact orbits.",
+        "force's own harmonics fall, $k^{-(\\nu+1)}$, on the exact orbits.",
         "",
     ]
 
