@@ -266,13 +266,21 @@ def _record(signum: int, frame: Any) -> None:
     """SIGINT while compiled code runs: recorded, delivered once the call returns; while numba
     compiles (Python, before the compiled call starts), delivered at once."""
     if _compiling[0] and _deferred[0] is not None:
-        previous = _deferred[0]
-        if callable(previous):  # Python's own raises KeyboardInterrupt; the program's ends it
-            previous(signum, frame)
-            return
-        if previous == signal.SIG_DFL:
-            raise KeyboardInterrupt
+        _deliver_now(signum, frame)
+        return
     _recorded.append(signum)
+
+
+def _deliver_now(signum: int, frame: Any) -> None:
+    """Call the handler the deferral replaced (Python's own raises KeyboardInterrupt; the
+    command line's ends the process)."""
+    previous = _deferred[0]
+    if callable(previous):
+        previous(signum, frame)
+    elif previous == signal.SIG_DFL:
+        raise KeyboardInterrupt
+    else:  # ignored meanwhile: kept for the call's end, as before
+        _recorded.append(signum)
 
 
 class _Compiling(numba.core.event.Listener):
@@ -284,6 +292,11 @@ class _Compiling(numba.core.event.Listener):
             if not _compiling[0]:  # the command line's notice (symimpact._notices)
                 _notices.compiling(getattr(ev.data["dispatcher"].py_func, "__module__", ""))
             _compiling[0] += 1
+            # a SIGINT recorded after the deferral began and before this first compilation
+            # (numba typing the arguments) had waited for the whole compilation, minutes (CI,
+            # 2026-12-07: a Ctrl-C 1.19 s into a cold run); it is delivered now
+            if _recorded and _signal.getsignal(_SIGINT) is _record:
+                _deliver_now(_recorded.pop(), None)
 
     def on_end(self, ev: Any) -> None:
         if threading.current_thread() is threading.main_thread():
