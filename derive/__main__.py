@@ -37,25 +37,57 @@ ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
 
 
-def generate(steps: tuple[str, ...] = STEPS, verbose: bool = True, reuse: bool = False):
+def _derived_and_kept(step: str) -> tuple[str, list[str], float]:
+    """Derive ``step`` and keep its board (derive/cache.py): (step, the differences of the board
+    read back from the one derived, seconds).  Run in a worker process by ``--jobs``."""
+    t0 = time.perf_counter()
+    return step, cache.store(step, board(step)), time.perf_counter() - t0
+
+
+def _derived_in_workers(steps: list[str], jobs: int) -> dict[str, tuple[list[str], float]]:
+    """Each of ``steps`` derived and kept by one of ``jobs`` worker processes, started afresh
+    (``spawn``): each has its own interpreter, so its own hash seed (Python's random one unless
+    PYTHONHASHSEED is set), and no step's work depends on another's (:func:`derive.board`)."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
+        return {step: (off, s) for step, off, s in pool.map(_derived_and_kept, steps)}
+
+
+def generate(
+    steps: tuple[str, ...] = STEPS, verbose: bool = True, reuse: bool = False, jobs: int = 1
+):
     """Run the steps; return ({relative path: text}, [boards], all checks passed, [the steps
     derived, not read back]).
 
     Each derived board is kept for the docs build and the tests (derive/cache.py).  With
     ``reuse`` a step whose code is unchanged since its board was kept is read back, not derived;
-    its rows show ``kept`` for a time."""
+    its rows show ``kept`` for a time.  With ``jobs`` above 1 the steps to derive are derived
+    by that many worker processes, and their boards read back from where the workers kept them
+    (the files are then rendered from the boards as read back, which :func:`cache.store` checked
+    to be the boards derived)."""
     boards, derived = [], []
     ok = True
     if verbose:
         print(f"{'result':<52} {'paper Eq.':<10} {'status':<13} {'time':>8}")
         print("-" * 86)
+    kept = {step: cache.kept(step) for step in steps} if reuse else {}
+    todo = [step for step in steps if kept.get(step) is None]
+    in_workers = _derived_in_workers(todo, jobs) if jobs > 1 and len(todo) > 1 else {}
     for step in steps:
         t0 = time.perf_counter()
-        b = cache.kept(step) if reuse else None
-        was_kept = b is not None
-        if b is None:
+        b = cache.kept(step) if step in in_workers else kept.get(step)
+        was_kept = b is not None and step not in in_workers
+        if step in in_workers:
+            off, seconds = in_workers[step]
+            t0 -= seconds
+            if b is None:  # not kept: the board did not read back the same
+                b = board(step)
+        elif b is None:
             b = board(step)
             off = cache.store(step, b)
+        if not was_kept:
             if off:  # the docs build and the tests would read another board than this one
                 ok = False
                 print(f"{step}: its board read back from .cache/ differs at {', '.join(off[:3])}")
@@ -158,6 +190,13 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("--quiet", action="store_true", help="print no summary table")
     parser.add_argument(
+        "--jobs",
+        type=int,
+        default=1,
+        metavar="N",
+        help="derive the steps in N worker processes, each with its own hash seed (default 1)",
+    )
+    parser.add_argument(
         "--notebooks",
         metavar="DIR",
         help="write one Jupyter notebook per step into DIR (needs nbformat: the teach extra) "
@@ -167,7 +206,9 @@ def main(argv: list[str] | None = None) -> int:
     if args.notebooks is not None:
         return _notebooks(args.notebooks)
     t0 = time.perf_counter()
-    files, boards, ok, derived = generate(verbose=not args.quiet, reuse=args.reuse)
+    if args.jobs < 1:
+        parser.error(f"--jobs: {args.jobs} is not a number of processes (1 or more)")
+    files, boards, ok, derived = generate(verbose=not args.quiet, reuse=args.reuse, jobs=args.jobs)
     n_errata = sum(len(b.errata) for b in boards)
     n_kernels = sum(len(b.kernels) for b in boards)
     print(

@@ -83,8 +83,10 @@ SWEEP_KEPT, SWEEP_SETTLED, SWEEP_MAX = 30, 1e-6, 5000
 #: textbook response to this).
 SWEEP_ACCURACY = 1e-4
 #: Branch switching: at most this many switches for one curve, onto orbits of at most this many
-#: forcing periods (period 1 → 2 → 4).
-MAX_SWITCHES, MAX_SWITCH_PERIODS = 24, 4
+#: forcing periods: doublings followed to period 16 (1 → 2 → 4 → 8 → 16, 3 → 6 → 12).  At 4 the
+#: cascades stopped short: on issue 81's base-excited system the stable period-6 orbit near
+#: 16.55 rad/s that every start of a multi-start reaches was not drawn (tests/test_cascades.py).
+MAX_SWITCHES, MAX_SWITCH_PERIODS = 24, 16
 #: Jumps from branch ends (:func:`_jump_from`) and the runs at branch ends
 #: (:func:`_start_at_ends`): at most this many runs for one curve (224 on benchmark 6's band: 68
 #: jumps and 156 runs at ends), each jump at
