@@ -37,13 +37,6 @@ ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
 
 
-def _derived_and_kept(step: str) -> tuple[str, list[str], float]:
-    """Derive ``step`` and keep its board (derive/cache.py): (step, the differences of the board
-    read back from the one derived, seconds).  Run in a worker process by ``--jobs``."""
-    t0 = time.perf_counter()
-    return step, cache.store(step, board(step)), time.perf_counter() - t0
-
-
 def _derived_in_workers(steps: list[str], jobs: int) -> dict[str, tuple[list[str], float]]:
     """Each of ``steps`` derived and kept by one of ``jobs`` worker processes, started afresh
     (``spawn``): each has its own interpreter, so its own hash seed (Python's random one unless
@@ -52,7 +45,7 @@ def _derived_in_workers(steps: list[str], jobs: int) -> dict[str, tuple[list[str
     from concurrent.futures import ProcessPoolExecutor
 
     with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
-        return {step: (off, s) for step, off, s in pool.map(_derived_and_kept, steps)}
+        return {step: (off, s) for step, off, s in pool.map(cache.derived_and_kept, steps)}
 
 
 def generate(

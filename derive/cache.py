@@ -28,6 +28,7 @@ import os
 import pickle
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 import mpmath
@@ -117,6 +118,14 @@ def store(step: str, kept_board) -> list[str]:
     else:
         os.replace(tmp, target)
     return off
+
+
+def derived_and_kept(step: str) -> tuple[str, list[str], float]:
+    """Derive ``step`` and keep its board: (step, :func:`store`'s differences, seconds).  What a
+    worker process of ``python -m derive --jobs N`` runs (a function of an importable module:
+    a spawned worker finds it by name)."""
+    t0 = time.perf_counter()
+    return step, store(step, board(step)), time.perf_counter() - t0
 
 
 def written(folder: Path, obj) -> str:

@@ -57,22 +57,24 @@ def boards():
     return cache.boards()
 
 
-#: The slow set's modules that take longest, longest first, with the core seconds their slow
-#: tests took on the 2-core machine (``pytest -m slow --durations``, setup and calls): run first,
-#: so that the fine-grained rest (test_limits' 95 cases, the pages of test_docs) fills both cores
-#: at the end instead of one long test holding one core while the other idles.  Only the order
-#: changes; each module's tests stay together and in their own order.
+#: The slow set's modules that take longest, longest test first, with the seconds their slow
+#: tests took on the 2-core machine (``pytest -n 2 --dist load -m slow --durations``, setup and
+#: calls, 2026-12-07): run first, so that the fine-grained rest (test_limits' 95 cases, the
+#: notebooks, the pages of test_docs) fills both cores at the end instead of one long test
+#: holding one core while the other idles (test_surfaces_reliability's stiff curve, 289 s, had
+#: been left to the end: one core idle for minutes).  Only the order changes; each module's
+#: tests stay together and in their own order.
 LONGEST_FIRST = (
-    "test_jax_kernels",  # 522 s before its derivatives came from mpmath.diff (185 → 74 s alone)
-    "test_fuzz_forced",  # 255 s
-    "test_readme_commands",  # 241 s (the design command)
-    "test_reproduce",  # 207 s
-    "test_design_refine",  # 200 s
-    "test_kernels_vs_mpmath",  # 191 s
-    "test_base_excitation",  # 187 s
-    "test_robust_design",  # 150 s (588 s before its range of e ended at 0.6)
-    "test_design_map",  # 111 s
-    "test_notebooks",  # 17 notebooks, each a derivation
+    "test_surfaces_reliability",  # 289 s (one stiff Hunt–Crossley curve)
+    "test_base_excitation",  # 269 s (the shaker's curve)
+    "test_readme_commands",  # 483 s in three tests (251 s the guide's design, 192 s task 1)
+    "test_fuzz_forced",  # 224 s
+    "test_design_refine",  # 221 s
+    "test_jax_kernels",  # 188 s in three tests
+    "test_robust_design",  # 146 s
+    "test_reliability",  # 206 s before its stiff curve ran without the multi-start
+    "test_reproduce",  # 90 s
+    "test_notebooks",  # 18 notebooks, each a derivation: about 500 s in all
 )
 
 
