@@ -5,7 +5,8 @@ X_b 1 mm, e 0.4) an independent multi-start reached, from every start, a period-
 a grazing near 16.50 rad/s and a period-6 orbit (the doubling of a period-3 branch) near
 16.55 rad/s; the curve drew neither, and no branch of period above 4, because branch switching
 stopped at period 4.  It now follows doublings to period 16
-(:data:`symimpact.forced.orbits.frf.MAX_SWITCH_PERIODS`).
+(:data:`symimpact.forced.orbits.frf.MAX_SWITCH_PERIODS`; the orbits started from the
+multi-start's landings stay at most 4 periods long, :data:`~symimpact.forced.orbits.frf.MAX_START_PERIODS`).
 
 Every stable orbit of period above 4 that the curve draws over 16.2–16.8 rad/s is checked by
 simulation alone: started a hair off the orbit and run for thousands of periods, the motion
@@ -64,10 +65,10 @@ def test_cascades_reach_period_16(curve):
     assert any(b.period_multiple == 16 for b in curve.branches), "no period-16 branch"
 
 
-@pytest.mark.parametrize("k", [5, 6, 8, 16])
+@pytest.mark.parametrize("k", [6, 8, 16])
 def test_each_stable_orbit_above_period_4_is_a_motion_simulation_keeps(curve, k):
     points = _stable(curve, k)
-    if not points and k in (5, 16):
+    if not points and k == 16:  # a window the continuation's steps may step over
         pytest.skip(f"no stable period-{k} orbit on this curve")
     for p in points[:: max(1, len(points) // 3)]:
         x, v, z, u = p.state

@@ -78,14 +78,14 @@ def test_the_short_branches_no_stable_end_leads_to_are_traced(curve, found):
 def test_the_curve_holds_the_dense_brute_force_s_periodic_attractors(curve, found):
     """Coverage measured against brute force at 200 frequencies that are not the curve's own:
     the share of the dense multi-start's periodic attractors (of the periods a curve traces,
-    ≤ MAX_SWITCH_PERIODS) that lie on a traced branch (:func:`symimpact.forced.orbits.frf._traced`:
+    ≤ MAX_START_PERIODS) that lie on a traced branch (:func:`symimpact.forced.orbits.frf._traced`:
     Newton from the branch lands on the orbit's amplitude to 1e-7).  Measured 125 of 128 (the
     three missed lie on stable windows 0.003–0.07 rad/s wide); 117 of 128 before the refined
     multi-start and the halved steps beside near-grazing orbits.  Issue 33's target is 99 %; the
     bound is the measured share less one attractor."""
-    from symimpact.forced.orbits.frf import MAX_SWITCH_PERIODS, _traced
+    from symimpact.forced.orbits.frf import MAX_START_PERIODS, _traced
 
-    shot = [a for a in found if a.kind == "periodic" and a.period_multiple <= MAX_SWITCH_PERIODS]
+    shot = [a for a in found if a.kind == "periodic" and a.period_multiple <= MAX_START_PERIODS]
     on = [_traced(curve.branches, SYSTEM, FORCING.at(a.omega), E, a.omega, a.amplitude,
                   a.period_multiple) for a in shot]  # fmt: skip
     assert len(shot) >= 120

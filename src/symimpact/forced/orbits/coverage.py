@@ -61,7 +61,7 @@ STARTS = 4
 #: At most this many forcing periods before the steady state is read; 20 more are kept.
 WARMUP, KEPT = 400, 20
 #: The periods a periodic attractor may have to be shot and traced.
-MAX_SHOT_PERIODS = 16
+MAX_SHOT_PERIODS = 4
 #: Forcing periods over which the largest Lyapunov exponent is averaged, in this many stretches
 #: whose spread says how well it is known.
 LYAPUNOV_PERIODS, LYAPUNOV_BLOCKS = 400, 4
