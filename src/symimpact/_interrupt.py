@@ -294,7 +294,8 @@ class _Compiling(numba.core.event.Listener):
             _compiling[0] += 1
             # a SIGINT recorded after the deferral began and before this first compilation
             # (numba typing the arguments) had waited for the whole compilation, minutes (CI,
-            # 2026-12-07: a Ctrl-C 1.19 s into a cold run); it is delivered now
+            # 2026-12-07: a Ctrl-C 1.19 s into a cold run); it is delivered now (numba sends
+            # the end event, which takes the count down, even when this start event raises)
             if _recorded and _signal.getsignal(_SIGINT) is _record:
                 _deliver_now(_recorded.pop(), None)
 
