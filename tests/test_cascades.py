@@ -3,8 +3,8 @@
 On the base-excited system of the issue (M 2 kg, K 800 N/m, C 1.6 N s/m, m 0.3 kg, d 4 mm,
 X_b 1 mm, e 0.4) an independent multi-start reached, from every start, a period-4 orbit just past
 a grazing near 16.50 rad/s and a period-6 orbit (the doubling of a period-3 branch) near
-16.55 rad/s; the curve drew neither, and no branch of period above 4, because branch switching
-stopped at period 4.  It now follows doublings to period 16
+16.55 rad/s.  The curve (measured on this machine before the change) drew the period-4 orbit
+but no branch of period above 4: branch switching stopped at period 4.  It now follows doublings to period 16
 (:data:`symimpact.forced.orbits.frf.MAX_SWITCH_PERIODS`; the orbits started from the
 multi-start's landings stay at most 4 periods long, :data:`~symimpact.forced.orbits.frf.MAX_START_PERIODS`).
 
@@ -30,8 +30,8 @@ BAND = np.arange(16.2, 16.8 + 1e-9, 0.05)  # rad/s
 RUN, KEPT = 6000, 320
 #: per-period maxima agree to this (m) where the motion repeats: the perturbation (1e-9 m) has
 #: decayed by a factor |μ|^n of the largest Floquet multiplier; near a doubling |μ| is close to
-#: 1, so the settled maxima are compared at 1e-8 of the 4 mm clearance, far below the
-#: differences between the maxima of the orbit's periods (> 1e-6 m here)
+#: 1, so the settled maxima are compared at 1e-8 of the 4 mm clearance; the maxima of an
+#: orbit's periods must differ by more than this for its least period to be read as asserted
 REPEATS = 4e-11
 
 
