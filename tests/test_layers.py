@@ -26,6 +26,7 @@ SHARED = {
     "_interrupt",
     "_notices",
     "_pool",
+    "_progress",
     "_threads",
     "budgets",
     "export",

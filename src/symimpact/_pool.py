@@ -21,15 +21,37 @@ IN_WORKER = False
 #: :func:`symimpact._interrupt.stretch` recorded (:func:`symimpact._interrupt.deliver_pending`).
 LOOK = 0.05
 
+#: Kinds of run a :class:`Pending` counts as they end (:func:`counted`), for its progress.
+KINDS = 2
+#: In a worker of a counting :class:`Pending`: the pool's counters in shared memory.
+_SHARED: Any = None
+#: In this process: the runs of each kind ended here, and what is called at each (the progress
+#: of a :class:`Pending` run here, where it cannot spread).
+_HERE = [0] * KINDS
+_on_count: Callable[[], None] | None = None
 
-def worker_init(parent: int) -> None:
+
+def counted(kind: int = 0) -> None:
+    """One run of ``kind`` (0 to KINDS − 1) has ended: counted where the process that waits on
+    the runs reads it (:meth:`Pending.counts`), in shared memory from a worker."""
+    if _SHARED is not None:
+        with _SHARED.get_lock():
+            _SHARED[kind] += 1
+        return
+    _HERE[kind] += 1
+    if _on_count is not None:
+        _on_count()
+
+
+def worker_init(parent: int, shared: Any = None) -> None:
     """Pool workers end with the process that started them: on Linux the kernel sends SIGTERM
     when the parent dies (prctl PR_SET_PDEATHSIG), whatever killed it; Ctrl-C is left to the
-    parent, which then ends the pool."""
+    parent, which then ends the pool.  ``shared``: the pool's run counters (:func:`counted`)."""
     import signal
 
-    global IN_WORKER
+    global IN_WORKER, _SHARED
     IN_WORKER = True
+    _SHARED = shared
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     for sig in (signal.SIGTERM, signal.SIGHUP):  # not the handlers a forked worker inherits
         signal.signal(sig, signal.SIG_DFL)
@@ -119,7 +141,8 @@ class Pending:
     warm-up here (:func:`warm_here`); :meth:`result`
     waits for them, in the payloads' order.  Run here, where it cannot spread, when
     :meth:`result` is called.  :meth:`cancel` ends the workers (a caller
-    that fails before it needs the result)."""
+    that fails before it needs the result).  :meth:`counts`: the runs ``fn`` has said ended
+    (:func:`counted`), by kind, wherever they ran."""
 
     def __init__(
         self, fn: Callable[[Any], Any], payloads: list, workers: int, warm: Any = None
@@ -127,18 +150,37 @@ class Pending:
         self.fn, self.payloads = fn, payloads
         self.pool: Any = None
         self.futures: list = []
+        self.shared: Any = None
+        self.start = list(_HERE)
         if workers > 1 and len(payloads) > 1 and can_spread():
             from concurrent.futures import ProcessPoolExecutor
 
             warm_here(fn, warm)
 
+            # counters the forked workers inherit (the pool's default start method on Linux)
+            self.shared = multiprocessing.Array("q", KINDS)
             self.pool = ProcessPoolExecutor(max_workers=min(workers, len(payloads)),
-                                            initializer=worker_init, initargs=(os.getpid(),))  # fmt: skip
+                                            initializer=worker_init,
+                                            initargs=(os.getpid(), self.shared))  # fmt: skip
             self.futures = [self.pool.submit(fn, p) for p in payloads]
 
-    def result(self) -> list[Any]:
+    def counts(self) -> tuple[int, ...]:
+        """The runs of each kind ended so far (:func:`counted`)."""
+        if self.shared is not None:
+            with self.shared.get_lock():
+                return tuple(self.shared[:])
+        return tuple(n - s for n, s in zip(_HERE, self.start, strict=True))
+
+    def result(self, on_wait: Callable[[], None] | None = None) -> list[Any]:
+        """The results, in the payloads' order, once every run has ended; ``on_wait`` is called
+        while they run (every LOOK seconds, or at each counted run where they run here)."""
+        global _on_count
         if self.pool is None:
-            return [self.fn(p) for p in self.payloads]
+            self.start, _on_count = list(_HERE), on_wait
+            try:
+                return [self.fn(p) for p in self.payloads]
+            finally:
+                _on_count = None
         from concurrent.futures import FIRST_EXCEPTION, wait
 
         finished = False
@@ -147,6 +189,8 @@ class Pending:
             while pending:
                 done, pending = wait(pending, timeout=LOOK, return_when=FIRST_EXCEPTION)
                 deliver_pending()
+                if on_wait is not None:
+                    on_wait()
                 for f in done:
                     f.result()  # a failed run raises at once, not after the others
             out = [f.result() for f in self.futures]

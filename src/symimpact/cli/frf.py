@@ -310,9 +310,13 @@ def run(ns) -> None:
 
     multistart = FREQUENCIES if ns.multistart is None else count("multistart", ns.multistart, 0,
                                                                  1000)  # fmt: skip
+    import sys
+
+    # at a terminal, each stage's runs as they end, with the time it has left (issue 80, item 5)
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps,
                              folds=ns.folds, embedded=ns.embedded, workers=ns.workers,
-                             multistart=multistart)  # fmt: skip
+                             multistart=multistart,
+                             progress=sys.stderr.isatty() and not ns.quiet)  # fmt: skip
     if balance is not None:
         return run_beside(ns, system, forcing, e, frf, *balance)
     if response != "displacement":
@@ -363,6 +367,7 @@ def run(ns) -> None:
         lines.append(f"no impact (the impact mass at rest midway, the primary alone) for Ω {spans} "
                      f"{ou}; it grazes a wall at Ω "
                      + (f"{grazes} {ou}" if grazes else "nowhere in the band"))  # fmt: skip
+    lines += _not_periodic_lines(frf)
     lines = peak_lines(frf) + _spread_lines(ns, spread) + lines + coverage_lines(frf)
     ou = display_unit("omega")
     for reason, ws in frf.note_omegas:
@@ -400,6 +405,27 @@ def _propagated(ns, system, forcing, e, omegas, multistart):
     return peak_spread(system, forcing, e, omegas, names, draws, sweeps=not ns.no_sweeps,
                        folds=ns.folds, embedded=ns.embedded, workers=ns.workers,
                        multistart=multistart)  # fmt: skip
+
+
+def _not_periodic_lines(frf) -> list[str]:
+    """The sweeps' motions that do not repeat (``not_periodic`` of the JSON, the figure's shaded
+    envelope), one line a sweep: how many frequencies, over which Ω, and the range of their
+    periods' largest |x|."""
+    from ..model.display import omega_text, shown
+
+    lines = []
+    for sweep in ("up", "down"):
+        rows = [r for r in frf.not_periodic if r[0] == sweep]
+        if not rows:
+            continue
+        ws = [r[1] for r in rows]
+        lo, hi = min(r[2] for r in rows), max(r[3] for r in rows)
+        lines.append(f"sweep {sweep}: motions that do not repeat at {len(rows)} of its "
+                     f"{len(frf.omegas)} frequencies, Ω {shown('omega', min(ws)):.5g}–"
+                     f"{omega_text(max(ws), '.5g')}; their periods' largest |x| "
+                     f"{response_text('displacement', lo, '.4g', unit=False)}–"
+                     f"{response_text('displacement', hi, '.4g')}")  # fmt: skip
+    return lines
 
 
 def _spread_lines(ns, spread) -> list[str]:

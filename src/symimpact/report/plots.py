@@ -124,7 +124,9 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
 
     The answer first (issue 80, item 6): the stable branches bold and on top in one colour, the
     unstable ones thin, dashed and pale beneath, the worst case the curve located marked (★),
-    the other motions the multi-start landed on (not periodic, chattering: ×), the located
+    the sweeps' motions that do not repeat as a shaded envelope of their periods' largest |x|
+    (:func:`_draw_envelope`), the other motions the multi-start landed on (not periodic,
+    chattering: ×), the located
     bifurcations small and pale, the brute-force sweeps as faint dots, and the primary without
     the damper in grey."""
     import numpy as np
@@ -172,6 +174,8 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
                 ax.plot(w, y, "--", color="C0", lw=0.7, alpha=0.45, zorder=2)
     ax.plot([], [], "-", color="C0", lw=2.2, label="stable periodic orbits")
     ax.plot([], [], "--", color="C0", lw=0.7, alpha=0.45, label="unstable")
+    if name == "displacement":  # (the envelope is of |x|: drawn on a displacement curve only)
+        _draw_envelope(ax, frf, W, Y)
     cov = getattr(frf, "coverage", None)
     # the multi-start's amplitudes are displacements: drawn on a displacement curve only
     wild = [a for a in getattr(cov, "attractors", []) or [] if a.kind != "periodic"
@@ -200,11 +204,42 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
     legend_beside(ax)
 
 
+def _draw_envelope(ax: Any, frf: Any, W: Any, Y: Any) -> None:
+    """The non-periodic bands of the sweeps (``frf.not_periodic``) shaded from the lowest to the
+    highest of their kept periods' largest |x|, each sweep's run of neighbouring frequencies one
+    patch (a lone frequency a vertical bar): where a motion does not repeat, the primary's
+    amplitude wanders between those bounds from period to period."""
+    import numpy as np
+
+    rows = getattr(frf, "not_periodic", None) or []
+    grid = {float(w): i for i, w in enumerate(frf.omegas)}
+    labelled = False
+    for sweep in ("up", "down"):
+        mine = sorted((grid.get(w, -2), w, lo, hi) for d, w, lo, hi in rows if d == sweep)
+        runs: list[list] = []
+        for row in mine:  # neighbours on the band's grid make one patch
+            if runs and row[0] == runs[-1][-1][0] + 1 and row[0] >= 0:
+                runs[-1].append(row)
+            else:
+                runs.append([row])
+        for run in runs:
+            w = W(np.array([r[1] for r in run]))
+            lo, hi = Y(np.array([r[2] for r in run])), Y(np.array([r[3] for r in run]))
+            label = None if labelled else ("motions that do not repeat (sweeps): the range of "
+                                           "their periods' largest |x|")  # fmt: skip
+            if len(run) == 1:
+                ax.vlines(w, lo, hi, color="C3", lw=2.5, alpha=0.35, zorder=2, label=label)
+            else:
+                ax.fill_between(w, lo, hi, color="C3", alpha=0.22, lw=0, zorder=2, label=label)
+            labelled = True
+
+
 def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
     """The frequency-response curve (:func:`symimpact.forced.orbits.frf.frequency_response`),
     drawn by :func:`draw_frf`: the stable branches bold, the unstable thin and dashed, the worst
-    case marked, the motions that do not repeat, the located bifurcations, the brute-force
-    sweeps and the primary without the damper."""
+    case marked, the motions that do not repeat (the sweeps' as a shaded envelope, the
+    multi-start's as marks), the located bifurcations, the brute-force sweeps and the primary
+    without the damper."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(9, 5.5))
     draw_frf(ax, frf)

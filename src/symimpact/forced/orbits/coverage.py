@@ -401,6 +401,7 @@ def _landings(job: tuple) -> tuple[list, list, list]:
             a = attractor(system, f, e, initial_states(system, f)[j])
         except SymimpactError:
             a = None
+        _pool.counted(0)  # one landing of the multi-start's grid (its progress)
         landing[w] = a
         base.append(a)
     ends: list[tuple[float, Attractor]] = []
@@ -417,6 +418,8 @@ def _landings(job: tuple) -> tuple[list, list, list]:
             a = attractor(system, f, e, initial_states(system, f)[j], exponent=False)
         except SymimpactError:
             return None
+        finally:
+            _pool.counted(1)  # one run of the refinement (its progress)
         if a.kind == "periodic" and a.stable is not None:
             into.append((w, a))
         return a
@@ -475,9 +478,20 @@ class MultiStart:
         """End the workers without waiting for their runs."""
         self.pending.cancel()
 
-    def result(self) -> list[Attractor]:
-        """The attractors (as :func:`attractors` returns them), once every run has ended."""
-        return _gathered(self.ws, self.pending.result())
+    @property
+    def runs(self) -> int:
+        """The landings of the grid: one an initial state and frequency."""
+        return STARTS * len(self.ws)
+
+    def counts(self) -> tuple[int, int]:
+        """(landings of the grid, runs of the refinement) ended so far."""
+        grid, refined = self.pending.counts()
+        return grid, refined
+
+    def result(self, on_wait: Any = None) -> list[Attractor]:
+        """The attractors (as :func:`attractors` returns them), once every run has ended;
+        ``on_wait()`` is called while they run (:meth:`symimpact._pool.Pending.result`)."""
+        return _gathered(self.ws, self.pending.result(on_wait))
 
 
 def _gathered(ws: tuple[float, ...], parts: list) -> list[Attractor]:

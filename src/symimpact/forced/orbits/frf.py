@@ -36,6 +36,7 @@ from typing import Any
 import numpy as np
 
 from ... import _interrupt
+from ..._progress import Stages
 from ...errors import ParameterError, SymimpactError
 from ...generated import forced_flight as ff
 from ...model import checks
@@ -141,6 +142,10 @@ class FrequencyResponse:
     #: the motions a brute force reaches at the located peak's Ω and just beside it
     #: (:func:`.worst_case.beside_peak`); the peak is the largest of them where it is larger
     beside_peak: list = field(default_factory=list)
+    #: the swept motions that impact and do not repeat, as (sweep "up" or "down", Ω [rad/s],
+    #: the lowest and the highest of the kept periods' largest |x| [m]): the envelope of the
+    #: non-periodic bands, which no branch draws (a displacement, whatever ``response`` is)
+    not_periodic: list[tuple[str, float, float, float]] = field(default_factory=list)
     #: what the ``amplitude`` fields hold: "displacement" (max abs(x)), or another response of
     #: :data:`symimpact.forced.responses.RESPONSES` (:func:`.response_curve.response_curve`),
     #: whose name replaces the key "amplitude" in :meth:`as_dict`
@@ -217,6 +222,10 @@ class FrequencyResponse:
             "sweep_down": [{"omega": w, "amplitude": a} for w, a in self.sweep_down],
             "no_impact": [{"omega_from": a, "omega_to": b} for a, b in self.no_impact],
             "no_impact_grazings": list(self.no_impact_grazings),
+            "not_periodic": [
+                {"sweep": d, "omega": w, "displacement_low": lo, "displacement_high": hi}
+                for d, w, lo, hi in self.not_periodic
+            ],
             "peak": None if self.peak is None else self.peak.as_dict(),
             "baseline_peak": None if self.baseline_peak is None else self.baseline_peak.as_dict(),
             "reduction": None if math.isnan(self.reduction) else self.reduction,
@@ -296,6 +305,7 @@ def frequency_response(
     folds: bool = False,
     embedded: bool = False,
     workers: int | None = None,
+    progress: Any = None,
 ) -> FrequencyResponse:
     """The frequency-response curve over the band ``omegas`` [rad/s] (its first and last values
     bound the branches; the sweeps and the baseline use every value): branches continued from
@@ -313,7 +323,33 @@ def frequency_response(
     response without the damper (Step 8, Eq. F1), the motion without impacts, and, with
     ``sweeps``, the up and down brute-force sweeps.  The multi-start's initial states run on
     ``workers`` local processes (:func:`symimpact.forced.orbits.coverage.attractors`; None: one per
-    core)."""
+    core).  ``progress``: each stage's runs as they end (:class:`symimpact._progress.Stages`:
+    True draws a bar a stage on stderr, a callable is called with (stage, done, total); the
+    stages are :data:`STAGES`)."""
+    with Stages(progress, "frf") as stages:
+        return _frequency_response(system, forcing, e, omegas, starts, sweeps, multistart,
+                                   jumps, folds, embedded, workers, stages)  # fmt: skip
+
+
+#: The stages of a curve, in order, as its progress names them (:func:`frequency_response`);
+#: each counts its runs (a start frequency, a landing of the multi-start's grid, a start shot
+#: and traced, a swept frequency, a branch switched and jumped from, ...).
+STAGES = (
+    "starts",
+    "multi-start",
+    "multi-start's orbits",
+    "sweeps",
+    "branches",
+    "folds",
+    "embedded orbits",
+    "coverage check",
+    "worst case",
+)
+
+
+def _frequency_response(system, forcing, e, omegas, starts, sweeps, multistart, jumps, folds,
+                        embedded, workers, stages: Stages) -> FrequencyResponse:  # fmt: skip
+    """:func:`frequency_response`, its progress told to ``stages``."""
     system, forcing, e = checked(system, forcing, e)
     starts = checks.whole_number("starts", starts, 0, 1000)
     sweeps = checks.flag("sweeps", sweeps)
@@ -364,24 +400,15 @@ def frequency_response(
     multi = (MultiStart(system, forcing, e, band, multistart, refine=is_rigid(e), workers=workers)
              if multistart else None)  # fmt: skip
     try:
+        stages.stage("starts", starts, unit="Ω")
         for omega in np.linspace(band[0], band[1], starts + 2)[1:-1]:
             f = _forcing(forcing, float(omega))
             for o in periodic_orbits(system, f, e) if is_constant(e) else ():
                 if o.admissible:
                     follow("closed form", 1, *_section_state(o, float(omega), h, system, forcing))
             # one run from rest; its end shot as an orbit of one and of two periods
-            try:
-                rest, law = settled_state(system, f, e, warmup=settling_periods(system, f, 20, 300))
-            except SymimpactError as exc:
-                failures.setdefault(f"from rest: {exc}", []).append(omega)
-                continue
-            for k in (1, 2):
-                try:
-                    shot = shoot(system, f, law, rest, periods=k)
-                except SymimpactError as exc:
-                    failures.setdefault(f"{k} period(s) from rest: {exc}", []).append(omega)
-                    continue
-                follow("from rest", k, shot.state, f)
+            _from_rest(system, f, e, omega, failures, follow)
+            stages.advance()
         out.baseline = np.column_stack([w, linear_amplitude(system, forcing, w)])
         out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
     except BaseException:
@@ -391,17 +418,23 @@ def frequency_response(
     # the multi-start: every periodic attractor that no branch traces starts one
     # refined with rigid impacts (whose resonance breaks into narrow stable windows between
     # grazings); a compliant contact's runs integrate every contact, at far greater cost
-    found = multi.result() if multi is not None else []
-    for a in found:
-        if a.kind == "periodic" and a.period_multiple <= MAX_START_PERIODS:
-            follow("multi-start", a.period_multiple, a.state, _forcing(forcing, a.omega))
+    found = _waited(multi, stages, "multi-start") if multi is not None else []
+    shot = [a for a in found if a.kind == "periodic" and a.period_multiple <= MAX_START_PERIODS]
+    stages.stage("multi-start's orbits", len(shot), unit="orbit")
+    for a in shot:
+        follow("multi-start", a.period_multiple, a.state, _forcing(forcing, a.omega))
+        stages.advance()
     swept: list[_SweepPoint] = []
     if sweeps:
-        up = _sweep_runs(system, forcing, e, w)
-        down = _sweep_runs(system, forcing, e, w[::-1])[::-1]
+        stages.stage("sweeps", 2 * len(w), unit="Ω")
+        up = _sweep_runs(system, forcing, e, w, tick=stages.advance)
+        down = _sweep_runs(system, forcing, e, w[::-1], tick=stages.advance)[::-1]
         swept = [*up, *down]
         out.sweep_up = np.array([(r.omega, r.amplitude) for r in up])
         out.sweep_down = np.array([(r.omega, r.amplitude) for r in down])
+        out.not_periodic = [(d, r.omega, r.low, r.amplitude)
+                            for d, runs in (("up", up), ("down", down)) for r in runs
+                            if not r.periodic and r.impacts_per_period > 0]  # fmt: skip
         # a periodic swept motion that no branch holds starts one (chatter and sticking
         # included: shooting follows them)
         for r in (*up, *down):
@@ -410,15 +443,17 @@ def frequency_response(
                 follow("sweep", r.period_multiple, r.state, _forcing(forcing, r.omega))
     else:
         out.sweep_up = out.sweep_down = np.zeros((0, 2))
-    _grow(out, system, forcing, e, band, step, failures, follow, jumps)
+    _grow(out, system, forcing, e, band, step, failures, follow, jumps, stages)
     if folds and is_rigid(e):
+        stages.stage("folds", None, unit="branch")
         _turn_at_grazing_ends(out, system, forcing, e, band, step, failures)
     if embedded:  # rigid impacts (checked above)
-        _embedded(found, system, forcing, e, failures, follow)
+        _embedded(found, system, forcing, e, failures, follow, stages)
     out.coverage = _coverage(found, out.branches, system, forcing, e, multi.ws if multi else ())
     if multi is not None:  # the independent check: random frequencies, their landings traced?
         check = MultiStart(system, forcing, e, band, workers=workers, ws=check_frequencies(band))
-        out.coverage.check = _coverage(check.result(), out.branches, system, forcing, e, check.ws)
+        checked_ = _waited(check, stages, "coverage check")
+        out.coverage.check = _coverage(checked_, out.branches, system, forcing, e, check.ws)
         out.coverage.seed = CHECK_SEED
     _drop_repeated_bifurcations(out.branches, 1e-6 if is_rigid(e) else 1e-5)
     out.baseline_peak = baseline_peak(system, forcing, band)
@@ -427,8 +462,10 @@ def frequency_response(
     # contact's runs are classified by its contact onsets, which a mass pressed for whole
     # periods does not show)
     if out.peak is not None and is_rigid(e):
+        stages.stage("worst case", None)
         worse, out.beside_peak = worst_case(system, forcing, e, band, out.peak, out.branches,
-                                            swept, float(np.median(np.diff(w))))  # fmt: skip
+                                            swept, float(np.median(np.diff(w))),
+                                            tick=stages.advance)  # fmt: skip
         if worse is not out.peak:
             p = out.peak
             kind = "repeats" if worse.motion == "periodic" else "does not repeat"
@@ -467,7 +504,41 @@ def _coverage(found, branches, system, forcing, e, ws) -> Coverage:
     ], tuple(ws))  # fmt: skip
 
 
-def _embedded(found, system, forcing, e, failures, follow) -> None:
+def _from_rest(system, f, e, omega, failures, follow) -> None:
+    """One run from rest at ``omega``; its end shot as an orbit of one and of two periods, each
+    traced unless on a traced branch (a branch start of :func:`frequency_response`)."""
+    try:
+        rest, law = settled_state(system, f, e, warmup=settling_periods(system, f, 20, 300))
+    except SymimpactError as exc:
+        failures.setdefault(f"from rest: {exc}", []).append(omega)
+        return
+    for k in (1, 2):
+        try:
+            shot = shoot(system, f, law, rest, periods=k)
+        except SymimpactError as exc:
+            failures.setdefault(f"{k} period(s) from rest: {exc}", []).append(omega)
+            continue
+        follow("from rest", k, shot.state, f)
+
+
+def _waited(multi: MultiStart, stages: Stages, name: str) -> list:
+    """The attractors of ``multi``, its landings told to ``stages`` as stage ``name`` while its
+    workers run (the grid's landings counted, the refinement's runs noted beside them)."""
+    stages.stage(name, multi.runs, unit="run")
+
+    def told() -> None:
+        grid, refined = multi.counts()
+        stages.reach(min(grid, multi.runs))
+        if refined:
+            stages.note(f"refined by {refined} more runs")
+
+    found = multi.result(told if stages.enabled else None)
+    if stages.enabled:
+        told()
+    return found
+
+
+def _embedded(found, system, forcing, e, failures, follow, stages: Stages | None = None) -> None:
     """The periodic orbits of 1 to MAX_START_PERIODS periods embedded in each chaotic or not
     periodic motion the multi-start found (rigid impacts): shot from the close returns of its
     Poincaré section (:func:`symimpact.forced.orbits.coverage.close_returns`) and traced unless on a
@@ -480,9 +551,12 @@ def _embedded(found, system, forcing, e, failures, follow) -> None:
     curve holds that window too, 127 of 128 with or without this, which adds 27 branches and 1.2
     times the time).  Done after the other starts (their budgets spent as before); the new
     branches are not switched or jumped from."""
-    for a in found:
-        if a.kind not in EMBEDDING:
-            continue
+    chaotic = [a for a in found if a.kind in EMBEDDING]
+    if stages is not None:
+        stages.stage("embedded orbits", len(chaotic), unit="motion")
+    for n, a in enumerate(chaotic):
+        if stages is not None:
+            stages.reach(n)  # the motions before this one are done
         fs = _forcing(forcing, a.omega)
         try:
             sections = section_states(system, fs, e, a.state)
@@ -496,15 +570,21 @@ def _embedded(found, system, forcing, e, failures, follow) -> None:
                     new.origin = (f"period-{k} orbit in the {a.kind} motion at "
                                   f"Ω = {a.omega:.6g} rad/s")  # fmt: skip
                     new.origin_omega = a.omega
+    if stages is not None:
+        stages.reach(len(chaotic))
 
 
-def _grow(out, system, forcing, e, band, step, failures, follow, jumps: int) -> None:
+def _grow(out, system, forcing, e, band, step, failures, follow, jumps: int,
+          stages: Stages | None = None) -> None:  # fmt: skip
     """Every branch in turn, the new ones included (so that a branch found by a switch or a jump
     is itself switched from and jumped from): branch switching at its located points
     (:func:`_switch_at`) and jumps from its stable ends (:func:`_jump_from`); then the
     multi-start's states at the branches' ends (:func:`_start_at_ends`), and the same again on
-    the branches these find, until a round finds none."""
+    the branches these find, until a round finds none (``stages``: a stage "branches", one run
+    a branch grown, its count of branches found and jumps noted beside it)."""
     budget = {"switches": 0, "jumps": 0, "max_jumps": jumps}
+    stages = stages if stages is not None else Stages(None)
+    stages.stage("branches", None, unit="branch")
     sources: list[tuple[float, float, int]] = []  # (Ω, amplitude, direction) jumped from
     places: list[float] = []  # the Ω of the branch ends started from (:func:`_start_at_ends`)
     i = 0
@@ -513,6 +593,9 @@ def _grow(out, system, forcing, e, band, step, failures, follow, jumps: int) -> 
             _switch_at(out, i, system, forcing, e, band, step, failures, budget)
             _jump_from(out, i, system, forcing, e, band, failures, follow, budget, sources)
             i += 1
+            stages.note(f"{len(out.branches)} found; {budget['switches']} switches, "
+                        f"{budget['jumps']} of at most {jumps} jumps")  # fmt: skip
+            stages.advance()
         known = len(out.branches)
         _start_at_ends(out, system, forcing, e, band, failures, follow, budget, places)
         if len(out.branches) == known:
@@ -854,17 +937,27 @@ class _SweepPoint:
     period_multiple: int
     impacts_per_period: float
     response: float = math.nan  # the response asked of the sweep over its kept periods [SI]
+    low: float = (
+        math.nan
+    )  # the lowest of the kept periods' largest |x| [m] (``amplitude``: the highest)
 
 
 def _sweep_runs(
-    system, forcing, e, omegas, settled: float = SWEEP_SETTLED, response: str | None = None
+    system,
+    forcing,
+    e,
+    omegas,
+    settled: float = SWEEP_SETTLED,
+    response: str | None = None,
+    tick: Any = None,
 ) -> list[_SweepPoint]:
     """Brute-force sweep: at each Ω, a run from the previous end state until its transient has
     fallen to ``settled``; the steady amplitude over the last SWEEP_KEPT periods, the end state
     and whether the motion repeats (:func:`symimpact.forced.steady_state`); with ``response``
     (:data:`symimpact.forced.responses.RESPONSES`) also that response over the same periods
     (:func:`symimpact.forced.responses.steady_response`; a compliant run then records its state
-    at :data:`symimpact.forced.responses.SAMPLES` samples a period)."""
+    at :data:`symimpact.forced.responses.SAMPLES` samples a period); ``tick()`` after each Ω
+    (the curve's progress)."""
     state = (0.0, 0.0, 0.0, 0.0)
     rows = []
     for omega in omegas:
@@ -883,11 +976,14 @@ def _sweep_runs(
                                     x0=x, xdot0=v, y0=y, ydot0=u,
                                     samples_per_period=SAMPLES)  # fmt: skip
             value = steady_response(response, again, 0)
+        kept = res.period_max[periods - SWEEP_KEPT : periods]
         rows.append(_SweepPoint(float(omega), st.amplitude, (x, v, y - x, u), bool(st.periodic),
                                 int(st.period_multiple or 0), float(st.impacts_per_period),
-                                float(value)))  # fmt: skip
+                                float(value), float(np.min(kept))))  # fmt: skip
         # the forcing phase restarts at t = 0: the end state after whole periods is at phase φ
         state = (x, v, y, u)
+        if tick is not None:
+            tick()
     return rows
 
 

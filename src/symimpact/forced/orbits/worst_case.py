@@ -40,11 +40,12 @@ SAME = 1e-6
 SCAN = 7
 
 
-def _runs(system, forcing, e, ws, starts) -> list[Attractor]:
+def _runs(system, forcing, e, ws, starts, tick: Any = None) -> list[Attractor]:
     """The steady motion reached at each of ``ws`` [rad/s] from each of ``starts`` ((x, ẋ, z, ẏ)
     and the forcing phase it is given at, None for this forcing's), read over :data:`KEPT`
     periods after the settling: "no impact", "periodic" (with its period multiple) or "not
-    periodic"; a run still settling, or one the engine cannot take further, is left out."""
+    periodic"; a run still settling, or one the engine cannot take further, is left out.
+    ``tick()`` after each run (a curve's progress)."""
     out = []
     for w in ws:
         for (x, v, z, u), phase in starts:
@@ -56,6 +57,9 @@ def _runs(system, forcing, e, ws, starts) -> list[Attractor]:
                                       ydot0=u)  # fmt: skip
             except SymimpactError:
                 continue
+            finally:
+                if tick is not None:
+                    tick()
             st = res.steady
             if st.settling:
                 continue
@@ -73,7 +77,7 @@ def _runs(system, forcing, e, ws, starts) -> list[Attractor]:
 
 def beside_peak(
     system: ImpactSystem, forcing: Forcing, e: Any, band: tuple[float, float], peak: Peak,
-    branches: list[Branch],
+    branches: list[Branch], tick: Any = None,
 ) -> list[Attractor]:  # fmt: skip
     """The steady motions reached at the located ``peak``'s Ω and at Ω·(1 ± r), r in
     :data:`OFFSETS`, inside ``band`` [rad/s], from rest, from the primary displaced with the
@@ -88,12 +92,12 @@ def beside_peak(
         if points:
             near = min(points, key=lambda p: abs(p.omega - W))
             starts.append((near.state, near.phase))
-    return _runs(system, forcing, e, ws, starts)
+    return _runs(system, forcing, e, ws, starts, tick)
 
 
 def worst_case(
     system: ImpactSystem, forcing: Forcing, e: Any, band: tuple[float, float], peak: Peak,
-    branches: list[Branch], swept: Any = (), step: float = 0.0,
+    branches: list[Branch], swept: Any = (), step: float = 0.0, tick: Any = None,
 ) -> tuple[Peak, list[Attractor]]:  # fmt: skip
     """(the worst case, the motions run for it): the located ``peak``, or the largest motion
     reached beside it (:func:`beside_peak`) or, where motions that do not repeat are found
@@ -103,8 +107,9 @@ def worst_case(
     rest and from that motion's own state.  Such a motion's amplitude over Ω is smooth on the
     scale of the band's step (its largest excursion over :data:`KEPT` periods scatters by some
     0.3 % from run to run): on the README system with e = 0.95 it rises from 117.8 mm, the
-    located stable peak, to 125 mm at 30.82 rad/s."""
-    near = beside_peak(system, forcing, e, band, peak, branches)
+    located stable peak, to 125 mm at 30.82 rad/s.  ``tick()`` after each run (a curve's
+    progress)."""
+    near = beside_peak(system, forcing, e, band, peak, branches, tick)
     irregular = [a for a in near if a.kind == "not periodic"] + [
         Attractor(r.omega, r.amplitude, "not periodic", 0, r.impacts_per_period, r.state)
         for r in swept
@@ -117,7 +122,8 @@ def worst_case(
             ws = [w for w in np.linspace(top.omega - width, top.omega + width, SCAN)
                   if band[0] <= w <= band[1]]  # fmt: skip
             # from rest, and from that motion's state (a start like any other at another Ω)
-            more = _runs(system, forcing, e, ws, [((0.0, 0.0, 0.0, 0.0), None), (top.state, None)])
+            more = _runs(system, forcing, e, ws, [((0.0, 0.0, 0.0, 0.0), None), (top.state, None)],
+                         tick)  # fmt: skip
             near += more
             top = max([top, *(a for a in more if a.kind == "not periodic")],
                       key=lambda a: a.amplitude)  # fmt: skip
