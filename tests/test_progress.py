@@ -42,13 +42,38 @@ def test_runs_are_counted_where_they_run(workers):
     worker) they are counted here, and the waiting caller is told at each."""
     told = []
     pending = _pool.Pending(_five_runs, [5, 3, 4], workers)
-    assert pending.result(lambda: told.append(pending.counts())) == [5, 3, 4]
-    assert pending.counts() == (12, 3)
+    assert pending.result(lambda: told.append(pending.counts()[:2])) == [5, 3, 4]
+    assert pending.counts() == (12, 3, 0)
     assert told  # the caller was told while the runs ran
     if workers == 1:  # here: told at every counted run, in order
-        assert told == [(k, 0) for k in range(1, 6)] + [(5, 1)] + [
-            (5 + k, 1) for k in range(1, 4)] + [(8, 2)] + [(8 + k, 2) for k in range(1, 5)] + [
-            (12, 3)]  # fmt: skip
+        expected, grid, refined = [], 0, 0
+        for n in (5, 3, 4):
+            for _ in range(n):
+                grid += 1
+                expected.append((grid, refined))
+            refined += 1
+            expected.append((grid, refined))
+        assert told == expected
+
+
+def test_a_design_maps_curves_count_their_runs_on_its_workers():
+    """A design map's clearances run on worker processes; each curve's runs are counted
+    (CurveRuns) into the pool's shared memory, where the waiting parent reads them, and run
+    here they are counted here: the same number either way."""
+    from symimpact.maps.design import design_map
+
+    counted = {}
+    for workers in (1, 2):
+        before = _pool.ended_here(_pool.CURVE_RUNS)
+        seen = []
+        table = design_map(SYSTEM, Forcing(F0=2.0, omega=34.0), 0.6, BAND[:3],
+                           {"gap": [0.02, 0.03]}, multistart=0, workers=workers,
+                           runs=seen.append)  # fmt: skip
+        assert len(table) == 2
+        assert seen == sorted(seen) and seen[-1] > 0  # told while it ran, only adding up
+        counted[workers] = (seen[-1], _pool.ended_here(_pool.CURVE_RUNS) - before)
+    assert counted[1][0] == counted[2][0]  # the same runs counted, here or on the workers
+    assert counted[1][1] == counted[1][0]  # here: every one in this process
 
 
 def test_a_curve_tells_each_stage_in_order_and_counts_each_run():

@@ -11,6 +11,7 @@ import os
 import sys
 import threading
 from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from typing import Any
 
 from ._interrupt import deliver_pending
@@ -21,26 +22,68 @@ IN_WORKER = False
 #: :func:`symimpact._interrupt.stretch` recorded (:func:`symimpact._interrupt.deliver_pending`).
 LOOK = 0.05
 
-#: Kinds of run a :class:`Pending` counts as they end (:func:`counted`), for its progress.
-KINDS = 2
-#: In a worker of a counting :class:`Pending`: the pool's counters in shared memory.
+#: Kinds of run counted as they end (:func:`counted`), for a progress bar: a multi-start's
+#: landings on its grid (0) and in its refinement (1), any run of a curve (:data:`CURVE_RUNS`).
+KINDS = 3
+CURVE_RUNS = 2
+#: In a worker of a counting pool: the pool's counters in shared memory.
 _SHARED: Any = None
 #: In this process: the runs of each kind ended here, and what is called at each (the progress
-#: of a :class:`Pending` run here, where it cannot spread).
+#: of runs made here, :func:`watching`).
 _HERE = [0] * KINDS
-_on_count: Callable[[], None] | None = None
+_watchers: list[Callable[[], None]] = []
 
 
-def counted(kind: int = 0) -> None:
-    """One run of ``kind`` (0 to KINDS − 1) has ended: counted where the process that waits on
-    the runs reads it (:meth:`Pending.counts`), in shared memory from a worker."""
+def counted(kind: int = 0, n: int = 1) -> None:
+    """``n`` runs of ``kind`` (0 to KINDS − 1) have ended: counted here and, in a worker of a
+    counting pool, in the pool's shared memory, where the process that waits on the runs reads
+    them (:meth:`Pending.counts`, :func:`spread`'s ``counts``)."""
+    _HERE[kind] += n
     if _SHARED is not None:
         with _SHARED.get_lock():
-            _SHARED[kind] += 1
+            _SHARED[kind] += n
+    for watcher in _watchers:
+        watcher()
+
+
+def ended_here(kind: int) -> int:
+    """The runs of ``kind`` this process has counted so far (:func:`counted`)."""
+    return _HERE[kind]
+
+
+@contextmanager
+def watching(on_count: Callable[[], None] | None) -> Iterator[None]:
+    """Within the block, ``on_count()`` is called each time this process counts a run (None:
+    nothing)."""
+    if on_count is None:
+        yield
         return
-    _HERE[kind] += 1
-    if _on_count is not None:
-        _on_count()
+    _watchers.append(on_count)
+    try:
+        yield
+    finally:
+        _watchers.remove(on_count)
+
+
+def shared_counts() -> Any:
+    """Counters for a pool's workers (:func:`spread`'s ``counts``), one a kind, in shared memory
+    the forked workers inherit (the pool's default start method on Linux)."""
+    return multiprocessing.Array("q", KINDS)
+
+
+class CurveRuns:
+    """A curve's progress callable (:class:`symimpact._progress.Stages`: stage, done, total)
+    that counts each run it is told of as a :data:`CURVE_RUNS` run (:func:`counted`): the runs
+    of the curves a design map draws, on whichever process draws them."""
+
+    def __init__(self) -> None:
+        self.last: dict[str, int] = {}
+
+    def __call__(self, stage: str, done: int, total: int | None) -> None:
+        more = done - self.last.get(stage, 0)
+        self.last[stage] = done
+        if more > 0:
+            counted(CURVE_RUNS, more)
 
 
 def worker_init(parent: int, shared: Any = None) -> None:
@@ -52,6 +95,9 @@ def worker_init(parent: int, shared: Any = None) -> None:
     global IN_WORKER, _SHARED
     IN_WORKER = True
     _SHARED = shared
+    # what the parent watched its runs with (a progress bar) is the parent's: a forked worker
+    # would otherwise draw it too, from its own copy
+    _watchers.clear()
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     for sig in (signal.SIGTERM, signal.SIGHUP):  # not the handlers a forked worker inherits
         signal.signal(sig, signal.SIG_DFL)
@@ -102,12 +148,15 @@ FIRST = object()
 
 
 def spread(
-    fn: Callable[[Any], Any], payloads: list, workers: int, warm: Any = None
-) -> Iterator[Any]:
+    fn: Callable[[Any], Any], payloads: list, workers: int, warm: Any = None,
+    counts: Any = None, on_wait: Callable[[], None] | None = None,
+) -> Iterator[Any]:  # fmt: skip
     """``fn(p)`` for each payload on ``workers`` local processes, yielded as they finish, after
     a warm-up here (:func:`warm_here`; ``warm`` :data:`FIRST`: the first payload itself, run
     here once a process and its result yielded, where no smaller payload takes the same code);
-    an interrupted, terminated or failed pool does not wait for the runs still going."""
+    an interrupted, terminated or failed pool does not wait for the runs still going.
+    ``counts`` (:func:`shared_counts`): where the workers count their runs (:func:`counted`);
+    ``on_wait()`` is called every LOOK seconds while they run."""
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
     if warm is FIRST:
@@ -120,13 +169,15 @@ def spread(
     if not payloads:
         return
     pool = ProcessPoolExecutor(max_workers=workers, initializer=worker_init,
-                               initargs=(os.getpid(),))  # fmt: skip
+                               initargs=(os.getpid(), counts))  # fmt: skip
     finished = False
     try:
         pending = {pool.submit(fn, p) for p in payloads}
         while pending:
             done, pending = wait(pending, timeout=LOOK, return_when=FIRST_COMPLETED)
             deliver_pending()
+            if on_wait is not None:
+                on_wait()
             for f in done:
                 yield f.result()
         finished = True
@@ -157,8 +208,7 @@ class Pending:
 
             warm_here(fn, warm)
 
-            # counters the forked workers inherit (the pool's default start method on Linux)
-            self.shared = multiprocessing.Array("q", KINDS)
+            self.shared = shared_counts()
             self.pool = ProcessPoolExecutor(max_workers=min(workers, len(payloads)),
                                             initializer=worker_init,
                                             initargs=(os.getpid(), self.shared))  # fmt: skip
@@ -174,13 +224,10 @@ class Pending:
     def result(self, on_wait: Callable[[], None] | None = None) -> list[Any]:
         """The results, in the payloads' order, once every run has ended; ``on_wait`` is called
         while they run (every LOOK seconds, or at each counted run where they run here)."""
-        global _on_count
         if self.pool is None:
-            self.start, _on_count = list(_HERE), on_wait
-            try:
+            self.start = list(_HERE)
+            with watching(on_wait):
                 return [self.fn(p) for p in self.payloads]
-            finally:
-                _on_count = None
         from concurrent.futures import FIRST_EXCEPTION, wait
 
         finished = False

@@ -49,6 +49,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import _pool
 from ..errors import ParameterError
 from ..forced.contact_law import checked, is_constant, is_rigid
 from ..forced.forcing import Forcing
@@ -117,6 +118,7 @@ def _stable_spans(branches) -> list[tuple[float, float]]:
 def design_row(
     system: ImpactSystem, forcing: Forcing, e: float, omegas: Any, curve: Any = None,
     multistart: int = FREQUENCIES, response: str = "displacement", workers: int | None = None,
+    progress: Any = None,
 ) -> dict[str, Any]:  # fmt: skip
     """The design map's figures for one system over the band ``omegas`` [rad/s] (module text):
     ``peak_amplitude`` [m] and ``peak_omega`` [rad/s] of the worst steady motion, ``peak_motion``
@@ -129,10 +131,12 @@ def design_row(
     (:data:`symimpact.forced.responses.RESPONSES`): what the peaks measure [its SI unit] —
     the curve in that response (:func:`symimpact.forced.orbits.response_curve.response_curve`), the
     primary alone's closed form, and the sweeps measured in it over their kept periods.
-    ``workers``: processes for the curve's multi-start (None: one per core)."""
+    ``workers``: processes for the curve's multi-start (None: one per core); ``progress``: the
+    curve's (:func:`~symimpact.forced.orbits.frf.frequency_response`)."""
     w = np.asarray(omegas, dtype=float)
     if curve is None:
-        curve = frequency_response(system, forcing, e, w, multistart=multistart, workers=workers)
+        curve = frequency_response(system, forcing, e, w, multistart=multistart, workers=workers,
+                                   progress=progress)  # fmt: skip
     if response != "displacement":
         return _response_row(system, forcing, e, w, curve, response)
     if curve.sweep_up is None or not len(curve.sweep_up):
@@ -200,9 +204,10 @@ def _design_chunk(payload: tuple[_DesignBase, tuple[str, ...], list[int], np.nda
         system = _design_system(base, names, v)
         row: dict[str, Any] = {"run": int(run)}
         row.update(zip(names, (float(x) for x in v), strict=True))
+        # each run of the curve counted where the map's progress reads it (_pool.CurveRuns)
         row.update(design_row(system, base.forcing, base.e, np.array(base.omegas),
                               multistart=base.multistart, response=base.response,
-                              workers=base.curve_workers))  # fmt: skip
+                              workers=base.curve_workers, progress=_pool.CurveRuns()))  # fmt: skip
         rows.append(row)
     return rows
 
@@ -238,6 +243,7 @@ def design_map(
     progress: bool | Callable[[int, int], None] = False,
     multistart: int = FREQUENCIES,
     response: str = "displacement",
+    runs: Callable[[int], None] | None = None,
 ):
     """The clearance design map (module text): one row per point of ``grid`` (``{name:
     values}`` over :data:`DESIGN_SWEEPABLE`, values in SI or with units) for the contact ``e``
@@ -246,7 +252,9 @@ def design_map(
     ``workers``, ``client``, ``scheduler``, ``out`` and ``force`` as for
     :func:`symimpact.maps.parameter_map`: the same executors, and a resumable ``out`` file;
     ``multistart``: frequencies of each curve's multi-start (0: none); ``response``: what the
-    peaks measure (:func:`design_row`)."""
+    peaks measure (:func:`design_row`).  The progress bar counts clearances and notes beside
+    them the runs their curves have made (on the workers too, through shared memory), so that it
+    moves while a clearance's curve runs; ``runs(n)`` is told that number as it grows."""
     from ..forced.responses import checked_response
 
     system, forcing, e = checked(system, forcing, e)
@@ -296,9 +304,26 @@ def design_map(
         here = executor == "serial" or (executor == "processes" and (workers == 1 or len(todo) < 2))
         payloads = [(replace(base, curve_workers=workers if here else 1), *p[1:])
                     for p in payloads]  # fmt: skip
+        bar = _progress(progress, len(points), len(done), "design map")
+        counts = _pool.shared_counts() if executor == "processes" else None
+        start = _pool.ended_here(_pool.CURVE_RUNS)
+        told = [0]
+
+        def curve_runs() -> None:
+            """The runs of the map's curves so far, here and on the workers, told."""
+            n = _pool.ended_here(_pool.CURVE_RUNS) - start
+            n += counts[_pool.CURVE_RUNS] if counts is not None else 0
+            if n != told[0]:
+                told[0] = n
+                bar.note(f"{n} runs of the clearances' curves")
+                if runs is not None:
+                    runs(n)
+
         results = _launch(payloads, executor, workers, client, scheduler,
-                          workers == 1 or len(todo) < 2, _design_chunk)  # fmt: skip
-        _gather(results, store, done, _progress(progress, len(points), len(done), "design map"))
+                          workers == 1 or len(todo) < 2, _design_chunk, counts,
+                          curve_runs)  # fmt: skip
+        with _pool.watching(curve_runs):  # the runs made here (serial, or the first clearance)
+            _gather(results, store, done, bar)
         table = design_table([done[i] for i in range(len(points))], points.names)
         if store is not None:
             store.finish(table)
@@ -358,8 +383,20 @@ def refine_best(
     by = [c for c in ("mass_ratio", "m") if c in table.columns]
     groups = [table] if not by else [g for _, g in table.groupby(by, sort=True)]
     out = []
-    bar = tqdm(desc="refining the best clearance", unit="design", disable=not progress,
+    bar = tqdm(desc="refining the best clearance", unit=" curves", disable=not progress,
                leave=True)  # fmt: skip
+    runs = _pool.CurveRuns()
+    start = _pool.ended_here(_pool.CURVE_RUNS)
+    done = [start]
+
+    def told(stage: str, n: int, total: int | None) -> None:
+        """Each curve's runs beside the count of curves, so that the bar moves within one."""
+        runs(stage, n, total)
+        now = _pool.ended_here(_pool.CURVE_RUNS)
+        if progress and now - done[0] >= 10:
+            done[0] = now
+            bar.set_postfix_str(f"{now - start} runs", refresh=True)
+
     for g in groups:
         g = g.sort_values("gap")
         gaps = g["gap"].to_numpy(dtype=float)
@@ -371,8 +408,9 @@ def refine_best(
 
         def row(d: float, sys_=base, cache=cache) -> dict[str, Any]:
             if d not in cache:
+                runs.last.clear()  # a new curve: its stages count from 0
                 cache[d] = design_row(sys_.with_(gap=d), forcing, e, w, multistart=multistart,
-                                      response=response)  # fmt: skip
+                                      response=response, progress=told)  # fmt: skip
                 bar.update(1)
             return cache[d]
 

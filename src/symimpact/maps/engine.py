@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 import os
+import time
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -55,6 +56,7 @@ def _progress(progress: bool | Callable[[int, int], None], total: int, done: int
                 count[0] += n
                 progress(count[0], total)
 
+        update.note = lambda text: None  # type: ignore[attr-defined]
         return update
     from tqdm import tqdm
 
@@ -75,6 +77,17 @@ def _progress(progress: bool | Callable[[int, int], None], total: int, done: int
         else:
             bar.update(n)
 
+    last = [0.0]
+
+    def note(text: str) -> None:
+        """``text`` beside the count (what moves between two points), drawn at most twice a
+        second."""
+        bar.set_postfix_str(text, refresh=False)
+        if time.monotonic() - last[0] >= 0.5:
+            last[0] = time.monotonic()
+            bar.refresh()
+
+    update.note = note  # type: ignore[attr-defined]
     return update
 
 
@@ -147,13 +160,15 @@ def _executor(executor: str | None, workers: Any, client: Any, scheduler: str | 
 
 
 def _launch(payloads: list, executor: str, workers: int, client: Any, scheduler: str | None,
-            here: bool, chunk: Callable | None = None):  # fmt: skip
+            here: bool, chunk: Callable | None = None, counts: Any = None,
+            on_wait: Callable[[], None] | None = None):  # fmt: skip
     """The chunks' rows as they finish, from ``executor`` (``here``: too little work for a
-    process pool, run in this process); ``chunk`` turns a payload into rows (default a map's)."""
+    process pool, run in this process); ``chunk`` turns a payload into rows (default a map's);
+    on local processes, ``counts`` and ``on_wait`` as for :func:`symimpact._pool.spread`."""
     if executor == "serial" or (executor == "processes" and here):
         return _serial(payloads, chunk)
     if executor == "processes":
-        return _processes(payloads, min(workers, len(payloads)), chunk)
+        return _processes(payloads, min(workers, len(payloads)), chunk, counts, on_wait)
     return _dask(payloads, client, scheduler, chunk)
 
 

@@ -21,13 +21,15 @@ def _serial(payloads: list, chunk=None) -> Iterator[list[dict[str, Any]]]:
         yield chunk(p)
 
 
-def _processes(payloads: list, workers: int, chunk=None) -> Iterator[list[dict[str, Any]]]:
+def _processes(
+    payloads: list, workers: int, chunk=None, counts: Any = None, on_wait: Any = None
+) -> Iterator[list[dict[str, Any]]]:
     # the warm-up before the workers fork (symimpact._pool.spread): the payload the chunk's
     # function names for it (warm_payload: one point of a chunk), else the first chunk itself
     chunk = chunk or _run_chunk
     make = getattr(chunk, "warm_payload", None)
     warm = make(payloads[0]) if make is not None and payloads else FIRST
-    yield from spread(chunk, payloads, workers, warm)
+    yield from spread(chunk, payloads, workers, warm, counts, on_wait)
 
 
 #: How long a Dask map waits with no worker before it gives up (all workers lost), and how

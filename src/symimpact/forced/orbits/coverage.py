@@ -485,7 +485,7 @@ class MultiStart:
 
     def counts(self) -> tuple[int, int]:
         """(landings of the grid, runs of the refinement) ended so far."""
-        grid, refined = self.pending.counts()
+        grid, refined = self.pending.counts()[:2]  # (kinds 0 and 1 of _pool.counted)
         return grid, refined
 
     def result(self, on_wait: Any = None) -> list[Attractor]:
