@@ -215,10 +215,6 @@ def run_structure(ns) -> None:
 
     for key, flag, why in (("response", "response", "the responses of a structure's orbits are "
                             "not built yet: the amplitude of every point is given"),
-                           ("plot", "plot", "a structure's curve has no plot yet: --json gives "
-                            "every orbit"),
-                           ("csv", "csv", "a structure's curve has no CSV yet: --json gives "
-                            "every orbit"),
                            ("chi", "chi", "the file gives each damper's and stop's contact")):  # fmt: skip
         if getattr(ns, key, None) not in (None, False, "displacement"):
             raise ParameterError(flag, why)
@@ -248,6 +244,21 @@ def run_structure(ns) -> None:
         bare[p] = bare_peak(model.structure, model.force_at, model.F0, p, lo, hi,
                             base=model.base_at).as_dict()  # fmt: skip
     out = curve.as_dict() | {"peaks": peaks, "bare_peaks": bare}
+    if ns.csv:
+        write_csv(ns.csv, "csv", structure_rows(curve, model.structure.points))
+    if ns.plot:
+        import numpy as np
+
+        from ..forced.orbits.structure_branch import bare_amplitude
+        from ..report.plots import plot_structure_frf
+
+        w = np.linspace(lo, hi, 400)
+        curves = {p: (w, np.array([bare_amplitude(model.structure, model.force_at, model.F0, p,
+                                                  x, model.base_at) for x in w]))
+                  for p in model.structure.points}  # fmt: skip
+        plot_structure_frf(curve, curves, peaks, ns.plot,
+                           title=f"{len(model.structure.modes)}-mode structure, "
+                           f"{len(model.dampers)} damper(s), {len(model.stops)} stop(s)")  # fmt: skip
     lines = [f"Ω {omega_text(lo)}–{omega_text(hi)}: {len(branches)} branch(es) of the "
              f"{len(model.structure.modes)}-mode structure, "
              f"{sum(len(b.orbits) for b in branches)} orbits"]  # fmt: skip
@@ -279,6 +290,23 @@ def run_structure(ns) -> None:
         lines.append(head)
     lines += [f"note: {x}" for x in notes]
     emit(ns, out, "\n".join(lines))
+
+
+def structure_rows(curve: Any, points: Any) -> list[dict[str, Any]]:
+    """The CSV of a structure's curve, SI (the JSON's numbers): one row an orbit of a branch
+    (``kind`` "orbit", its branch, period and stability) and one a run from rest (``kind``
+    "from rest", settled over its last periods, no period or stability), each with Ω and the
+    amplitude (largest abs(x)) at every named point."""
+    rows = []
+    for i, b in enumerate(curve.branches):
+        for o in b.orbits:
+            rows.append({"kind": "orbit", "branch": i, "periods": o.periods,
+                         "omega": o.run.omega, "stable": bool(o.stable),
+                         **{f"amplitude at {p} [m]": o.amplitudes[p] for p in points}})  # fmt: skip
+    for r in curve.settled:
+        rows.append({"kind": "from rest", "branch": "", "periods": "", "omega": r["omega"],
+                     "stable": "", **{f"amplitude at {p} [m]": r["amplitudes"][p] for p in points}})  # fmt: skip
+    return rows
 
 
 def run(ns) -> None:

@@ -611,6 +611,20 @@ def curve_peak(structure: Structure, dampers: Any, force_at: Any, F0: Any,
     return peak
 
 
+def bare_amplitude(
+    structure: Structure, force_at: Any, F0: Any, point: Any, omega: float, base: Any = 0.0
+) -> float:
+    """The bare structure's (no damper, no stop) steady amplitude at ``point`` [m] at ``omega``
+    [rad/s]: abs(F₀·H(p, f; Ω) + X_b·T(p; Ω)), the modal receptance and, on supports moving by
+    X_b cos(Ωt + φ) in phase with the force (``base``: X_b [m] or a function of Ω giving it),
+    the base transmissibility (Eq. F7 in the frequency domain; the absolute displacement)."""
+    x = structure.receptance(point, force_at, omega) * float(F0)
+    X_b = _base_at(base, omega)
+    if X_b != 0.0:
+        x = x + structure.base_transmissibility(point, omega) * X_b
+    return float(abs(x))
+
+
 def bare_peak(structure: Structure, force_at: Any, F0: Any, point: Any, omega_low: float,
               omega_high: float, base: Any = 0.0) -> StructurePeak:  # fmt: skip
     """The bare structure's (no damper, no stop) largest steady amplitude at ``point`` over the
@@ -620,14 +634,8 @@ def bare_peak(structure: Structure, force_at: Any, F0: Any, point: Any, omega_lo
     the grid's best of 200 frequencies refined by Brent's bounded search (to 1e-12 of Ω)."""
     from scipy.optimize import minimize_scalar
 
-    F0 = float(F0)
-
     def minus(w: float) -> float:
-        x = structure.receptance(point, force_at, w) * F0
-        X_b = _base_at(base, w)
-        if X_b != 0.0:
-            x = x + structure.base_transmissibility(point, w) * X_b
-        return -abs(x)
+        return -bare_amplitude(structure, force_at, F0, point, w, base)
 
     grid = np.linspace(omega_low, omega_high, 200)
     values = [minus(w) for w in grid]
