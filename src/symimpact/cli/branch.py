@@ -166,9 +166,7 @@ def run_structure(ns) -> None:
     from ..model.display import omega_text
     from .common import quantity_text, structure_forcing
 
-    for key, why in (("plot", "a structure's branch has no plot yet: --json gives every orbit"),
-                     ("csv", "a structure's branch has no CSV yet: --json gives every orbit"),
-                     ("chi", "the file gives each damper's and stop's contact"),
+    for key, why in (("chi", "the file gives each damper's and stop's contact"),
                      ("folds", "a structure's branch ends at a grazing no orbit continues "
                                "beyond; turning back there is the one-mode model's")):  # fmt: skip
         if getattr(ns, key, None) is not None:
@@ -241,6 +239,18 @@ def run_structure(ns) -> None:
     out = {"parameter": ns.parameter, "unit": unit, "damper": damper, "omega": forcing.omega,
            "start": start.as_dict() | {"value": start_value},
            "branches": [b.as_dict() for b in branches]}  # fmt: skip
+    if ns.csv:
+        from .common import structure_rows, write_csv
+
+        write_csv(ns.csv, "csv", structure_rows(branches, model.structure.points,
+                                                parameter=ns.parameter))  # fmt: skip
+    if ns.plot:
+        from ..report.plots import plot_structure_curve
+
+        plot_structure_curve(branches, model.structure.points, ns.plot,
+                             title=f"Ω {omega_text(forcing.omega)}, continued in {ns.parameter}"
+                             + (f" of damper {damper!r}" if damper else ""),
+                             parameter=ns.parameter)  # fmt: skip
     what = f"{ns.parameter} of damper {damper!r}" if damper else ns.parameter
     lines = [f"Ω {omega_text(forcing.omega)}: the orbit of {multiple} forcing period(s) at "
              f"{what} = {value_text(start_value)} ({'stable' if start.stable else 'unstable'}), "

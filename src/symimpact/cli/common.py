@@ -817,6 +817,26 @@ def write_csv(path: str, what: str, rows: list[dict[str, Any]]) -> None:
     atomic_write(path, write, what)
 
 
+def structure_rows(branches: Any, points: Any, settled: Any = (),
+                   parameter: str = "omega") -> list[dict[str, Any]]:  # fmt: skip
+    """The CSV of a structure's branches, SI (the JSON's numbers): one row an orbit (``kind``
+    "orbit", its branch, period and stability) and one a run from rest of ``settled`` (``kind``
+    "from rest", settled over its last periods, no period or stability), each with Ω, the
+    ``parameter`` it is continued in (a branch in Ω: Ω alone) and the amplitude (largest
+    abs(x)) at every named point."""
+    rows = []
+    for i, b in enumerate(branches):
+        for o, v in zip(b.orbits, b.values, strict=True):
+            along = {} if parameter == "omega" else {parameter: float(v)}
+            rows.append({"kind": "orbit", "branch": i, "periods": o.periods,
+                         "omega": o.run.omega, **along, "stable": bool(o.stable),
+                         **{f"amplitude at {p} [m]": o.amplitudes[p] for p in points}})  # fmt: skip
+    for r in settled:
+        rows.append({"kind": "from rest", "branch": "", "periods": "", "omega": r["omega"],
+                     "stable": "", **{f"amplitude at {p} [m]": r["amplitudes"][p] for p in points}})  # fmt: skip
+    return rows
+
+
 SYSTEM_DEFAULTS = {flag[2:].replace("-", "_"): default for flag, _, default in SYSTEM_OPTIONS}
 
 

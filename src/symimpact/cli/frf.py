@@ -245,20 +245,24 @@ def run_structure(ns) -> None:
                             base=model.base_at).as_dict()  # fmt: skip
     out = curve.as_dict() | {"peaks": peaks, "bare_peaks": bare}
     if ns.csv:
-        write_csv(ns.csv, "csv", structure_rows(curve, model.structure.points))
+        from .common import structure_rows
+
+        write_csv(ns.csv, "csv", structure_rows(curve.branches, model.structure.points,
+                                                curve.settled))  # fmt: skip
     if ns.plot:
         import numpy as np
 
         from ..forced.orbits.structure_branch import bare_amplitude
-        from ..report.plots import plot_structure_frf
+        from ..report.plots import plot_structure_curve
 
         w = np.linspace(lo, hi, 400)
         curves = {p: (w, np.array([bare_amplitude(model.structure, model.force_at, model.F0, p,
                                                   x, model.base_at) for x in w]))
                   for p in model.structure.points}  # fmt: skip
-        plot_structure_frf(curve, curves, peaks, ns.plot,
-                           title=f"{len(model.structure.modes)}-mode structure, "
-                           f"{len(model.dampers)} damper(s), {len(model.stops)} stop(s)")  # fmt: skip
+        plot_structure_curve(curve.branches, model.structure.points, ns.plot,
+                             title=f"{len(model.structure.modes)}-mode structure, "
+                             f"{len(model.dampers)} damper(s), {len(model.stops)} stop(s)",
+                             settled=curve.settled, bare=curves, peaks=peaks)  # fmt: skip
     lines = [f"Ω {omega_text(lo)}–{omega_text(hi)}: {len(branches)} branch(es) of the "
              f"{len(model.structure.modes)}-mode structure, "
              f"{sum(len(b.orbits) for b in branches)} orbits"]  # fmt: skip
@@ -290,23 +294,6 @@ def run_structure(ns) -> None:
         lines.append(head)
     lines += [f"note: {x}" for x in notes]
     emit(ns, out, "\n".join(lines))
-
-
-def structure_rows(curve: Any, points: Any) -> list[dict[str, Any]]:
-    """The CSV of a structure's curve, SI (the JSON's numbers): one row an orbit of a branch
-    (``kind`` "orbit", its branch, period and stability) and one a run from rest (``kind``
-    "from rest", settled over its last periods, no period or stability), each with Ω and the
-    amplitude (largest abs(x)) at every named point."""
-    rows = []
-    for i, b in enumerate(curve.branches):
-        for o in b.orbits:
-            rows.append({"kind": "orbit", "branch": i, "periods": o.periods,
-                         "omega": o.run.omega, "stable": bool(o.stable),
-                         **{f"amplitude at {p} [m]": o.amplitudes[p] for p in points}})  # fmt: skip
-    for r in curve.settled:
-        rows.append({"kind": "from rest", "branch": "", "periods": "", "omega": r["omega"],
-                     "stable": "", **{f"amplitude at {p} [m]": r["amplitudes"][p] for p in points}})  # fmt: skip
-    return rows
 
 
 def run(ns) -> None:

@@ -250,51 +250,59 @@ def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
     plt.close(fig)
 
 
-def plot_structure_frf(curve: Any, bare: dict[str, Any], peaks: dict[str, Any],
-                       path: str | os.PathLike, title: str = "") -> None:  # fmt: skip
-    """A structure's response curve (``frf --structure``,
-    :func:`symimpact.forced.orbits.structure_branch.structure_curve`): one panel a named point,
-    the amplitude at that point against Ω — the branches' stable orbits bold, their unstable
-    ones thin and dashed, the runs from rest at each frequency as dots, the bare structure (no
-    damper, no stop) in grey, and the located peak (★).  ``bare``: {point: (Ω [rad/s],
-    amplitude [m])} of the bare structure; ``peaks``: {point: the peak's dict or None}, as the
+def plot_structure_curve(branches: Any, points: Any, path: str | os.PathLike, title: str = "",
+                         parameter: str = "omega", settled: Any = (),
+                         bare: dict[str, Any] | None = None,
+                         peaks: dict[str, Any] | None = None) -> None:  # fmt: skip
+    """A structure's branches (``frf --structure``: in Ω,
+    :func:`symimpact.forced.orbits.structure_branch.structure_curve`; ``branch --structure``: in a
+    damper's gap, e or m or in F0, :func:`~symimpact.forced.orbits.structure_branch.parameter_branch`):
+    one panel a named point of ``points``, the amplitude at that point against ``parameter`` —
+    stable orbits bold, unstable ones thin and dashed, the ``settled`` runs from rest as dots,
+    the bare structure (no damper, no stop) in grey and the located peak (★).  ``bare``:
+    {point: (Ω [rad/s], amplitude [m])}; ``peaks``: {point: the peak's dict or None}, as the
     command's JSON holds them."""
     import numpy as np
 
     from ..model.display import display_unit, shown
 
+    def X(v):  # the parameter in its display unit
+        return shown(parameter, v)
+
     plt = _pyplot()
-    points = list(bare)
+    points = list(points)
     fig, axes = plt.subplots(len(points), 1, figsize=(9, 2.0 + 2.6 * len(points)), sharex=True,
                              squeeze=False)  # fmt: skip
     for ax, point in zip(axes[:, 0], points, strict=True):
-        w, a = bare[point]
-        ax.plot(shown("omega", w), shown("x", a), color="0.55", lw=1.2, zorder=1,
-                label="bare structure (no damper, no stop)")  # fmt: skip
-        if curve.settled:
-            ax.plot(shown("omega", np.array([r["omega"] for r in curve.settled])),
-                    shown("x", np.array([r["amplitudes"][point] for r in curve.settled])),
+        if bare is not None:
+            w, a = bare[point]
+            ax.plot(X(w), shown("x", a), color="0.55", lw=1.2, zorder=1,
+                    label="bare structure (no damper, no stop)")  # fmt: skip
+        if len(settled):
+            ax.plot(X(np.array([r["omega"] for r in settled])),
+                    shown("x", np.array([r["amplitudes"][point] for r in settled])),
                     ".", color="C1", ms=3, alpha=0.6, zorder=2, label="runs from rest")  # fmt: skip
         for flag in (False, True):
-            for b in curve.branches:
-                ws = shown("omega", b.omegas)
+            for b in branches:
                 amp = shown("x", b.amplitudes(point))
                 stable = np.array([o.stable for o in b.orbits])
                 y = verdict_run(amp, stable, flag)
                 if flag:
-                    ax.plot(ws, y, "-", color="C0", lw=2.2, zorder=4)
+                    ax.plot(X(b.values), y, "-", color="C0", lw=2.2, zorder=4)
                 else:
-                    ax.plot(ws, y, "--", color="C0", lw=0.7, alpha=0.45, zorder=3)
+                    ax.plot(X(b.values), y, "--", color="C0", lw=0.7, alpha=0.45, zorder=3)
         ax.plot([], [], "-", color="C0", lw=2.2, label="stable periodic orbits")
         ax.plot([], [], "--", color="C0", lw=0.7, alpha=0.45, label="unstable")
-        pk = peaks.get(point)
+        pk = (peaks or {}).get(point)
         if pk is not None:
-            ax.plot(shown("omega", pk["omega"]), shown("x", pk["amplitude"]), "*", color="gold",
-                    mec="k", ms=13, zorder=6,
+            ax.plot(X(pk["omega"]), shown("x", pk["amplitude"]), "*", color="gold", mec="k",
+                    ms=13, zorder=6,
                     label=f"peak {shown('x', pk['amplitude']):.4g} {display_unit('x')}")  # fmt: skip
         ax.set_ylabel(f"max |x| at {point} [{display_unit('x')}]")
         ax.legend(fontsize=7, loc="upper left")
-    axes[-1, 0].set_xlabel(f"Ω [{display_unit('omega')}]")
+    unit = display_unit(parameter)
+    axes[-1, 0].set_xlabel(f"{'Ω' if parameter == 'omega' else parameter}"
+                           + (f" [{unit}]" if unit else ""))  # fmt: skip
     if title:
         axes[0, 0].set_title(title, fontsize=10)
     fig.tight_layout()
