@@ -61,3 +61,22 @@ def test_the_csv_holds_the_json_row_for_row(outputs, capsys):
         assert max(drawn) <= peak["amplitude"] * (1 + 1e-12)
         direct = abs(model.structure.receptance(p, "1", 0.62)) * 0.1
         assert bare_amplitude(model.structure, "1", 0.1, p, 0.62) == pytest.approx(direct, 1e-15)
+
+
+def test_a_structure_run_draws_each_points_period_maxima_and_its_csv_gives_the_json(tmp_path,
+                                                                                     capsys):  # fmt: skip
+    """``simulate --structure --plot``: one panel a point, its largest |x| each period; the
+    CSV's rows after --discard give the JSON's steady amplitudes, to the last digit."""
+    path = tmp_path / "chain.json"
+    path.write_text(json.dumps(CHAIN))
+    argv = ["simulate", "--structure", str(path), "--omega", "0.62", "--periods", "120",
+            "--discard", "90", "--csv", str(tmp_path / "r.csv"), "--plot", str(tmp_path / "r.png"),
+            "--json"]  # fmt: skip
+    assert main(argv) == 0, capsys.readouterr().err
+    out = json.loads(capsys.readouterr().out)
+    with open(tmp_path / "r.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 120
+    for p in ("0", "1"):
+        assert max(float(r[f"x_max {p} [m]"]) for r in rows[90:]) == out["amplitudes"][p]
+    assert (tmp_path / "r.png").stat().st_size > 10_000

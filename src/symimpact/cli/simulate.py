@@ -4,6 +4,7 @@ state."""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from .. import budgets
@@ -236,8 +237,6 @@ def run_structure(ns) -> None:
         ("rest", "rest", "applies to free vibration; a forced run never comes to rest"),
         ("response", "response", "the responses of a structure of several modes are not built "
                                  "yet: --json gives every point's amplitude"),
-        ("plot", "plot", "a structure's run has no plot yet: --csv gives every point's largest "
-                         "displacement in each period"),
     ):  # fmt: skip
         if getattr(ns, key, None) is not None:
             raise ParameterError(flag, why)
@@ -260,6 +259,12 @@ def run_structure(ns) -> None:
             w.writerows([[k, *map(float, row)] for k, row in enumerate(res.period_max)])
 
         atomic_write(ns.csv, write, "csv")
+    if ns.plot:
+        from ..report.plots import plot_structure_run
+
+        plot_structure_run(res.period_max, res.points, 2 * math.pi / forcing.omega, discard,
+                           ns.plot, title=f"{len(res.structure.modes)}-mode structure, Ω "
+                           f"{omega_text(forcing.omega)}")  # fmt: skip
     text = (
         f"{res.structure.source} model, {len(res.structure.modes)} modes; "
         + (f"force {model.F0:.6g} N at {model.force_at!r}" if model.F0 else "no force")

@@ -250,6 +250,42 @@ def plot_frf(frf: Any, path: str | os.PathLike, title: str = "") -> None:
     plt.close(fig)
 
 
+def plot_structure_run(period_max: Any, points: Any, period: float, discard: int,
+                       path: str | os.PathLike, title: str = "") -> None:  # fmt: skip
+    """A structure's forced run (``simulate --structure``,
+    :func:`symimpact.forced.structure_response.simulate_structure`): one panel a named point, the
+    largest abs(x) in each forcing period against time (``period`` [s] each, ``period_max`` of
+    shape (periods, points) [m]), the periods before ``discard`` (the transient) pale, and the
+    steady amplitude over the rest (the command's ``amplitudes``) as a dashed line."""
+    import numpy as np
+
+    from ..model.display import display_unit, shown
+
+    plt = _pyplot()
+    points = list(points)
+    pm = np.asarray(period_max, dtype=float)
+    t = (np.arange(len(pm)) + 0.5) * period  # each period's middle
+    fig, axes = plt.subplots(len(points), 1, figsize=(9, 2.0 + 2.4 * len(points)), sharex=True,
+                             squeeze=False)  # fmt: skip
+    for j, (ax, point) in enumerate(zip(axes[:, 0], points, strict=True)):
+        y = shown("x", pm[:, j])
+        ax.plot(t[: discard + 1], y[: discard + 1], ".-", color="C0", alpha=0.35, ms=2, lw=0.6,
+                label="transient (left out)")  # fmt: skip
+        ax.plot(t[discard:], y[discard:], ".-", color="C0", ms=2.5, lw=0.9,
+                label="largest |x| in each period")  # fmt: skip
+        steady = float(np.max(y[discard:]))
+        ax.axhline(steady, color="k", lw=0.8, ls="--",
+                   label=f"steady amplitude {steady:.4g} {display_unit('x')}")  # fmt: skip
+        ax.set_ylabel(f"max |x| at {point} [{display_unit('x')}]")
+        ax.legend(fontsize=7, loc="lower right")
+    axes[-1, 0].set_xlabel("t [s]")
+    if title:
+        axes[0, 0].set_title(title, fontsize=10)
+    fig.tight_layout()
+    atomic_savefig(fig, path)
+    plt.close(fig)
+
+
 def plot_structure_curve(branches: Any, points: Any, path: str | os.PathLike, title: str = "",
                          parameter: str = "omega", settled: Any = (),
                          bare: dict[str, Any] | None = None,
