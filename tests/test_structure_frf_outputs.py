@@ -80,3 +80,28 @@ def test_a_structure_run_draws_each_points_period_maxima_and_its_csv_gives_the_j
     for p in ("0", "1"):
         assert max(float(r[f"x_max {p} [m]"]) for r in rows[90:]) == out["amplitudes"][p]
     assert (tmp_path / "r.png").stat().st_size > 10_000
+
+
+def test_a_structure_design_writes_its_rows_and_draws_its_map(tmp_path, capsys):
+    """``design --structure --csv --plot``: a row a clearance with the JSON's peak, the bare
+    structure's and the best flagged, to the last digit; the figure written."""
+    model = {"fe": CHAIN["fe"],
+             "dampers": [{"name": "d", "at": 1, "m": 0.1, "gap": 0.5, "contact": "rigid",
+                          "e": 0.6}],
+             "force": {"at": 1, "amplitude": 0.1}}  # fmt: skip
+    path = tmp_path / "damped.json"
+    path.write_text(json.dumps(model))
+    argv = ["design", "--structure", str(path), "--omega-range", "1.5:1.7:0.05", "--gaps",
+            "0.4,0.6", "--csv", str(tmp_path / "d.csv"), "--plot", str(tmp_path / "d.png"),
+            "--json"]  # fmt: skip
+    assert main(argv) == 0, capsys.readouterr().err
+    out = json.loads(capsys.readouterr().out)
+    with open(tmp_path / "d.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert [float(r["gap [m]"]) for r in rows] == [r["gap"] for r in out["rows"]]
+    for r, j in zip(rows, out["rows"], strict=True):
+        assert float(r["peak_amplitude [m]"]) == j["peak"]["amplitude"]
+        assert float(r["peak_omega [rad/s]"]) == j["peak"]["omega"]
+        assert float(r["baseline_peak [m]"]) == out["bare_peak"]["amplitude"]
+        assert r["best"] == str(j["gap"] == out["best"]["gap"])
+    assert (tmp_path / "d.png").stat().st_size > 10_000

@@ -81,7 +81,7 @@ def run_structure(ns) -> None:
     from .common import quantity_text
 
     refused = {"mass_ratios": "mass-ratios", "multistart": "multistart", "no_refine": "no-refine",
-               "out": "out", "plot": "plot", "csv": "csv", "chi": "chi"}  # fmt: skip
+               "out": "out", "chi": "chi"}  # fmt: skip
     for key, flag in refused.items():
         if getattr(ns, key, None) not in (None, False):
             raise ParameterError(flag, "not taken by a structure's design yet (it sweeps one "
@@ -116,6 +116,23 @@ def run_structure(ns) -> None:
         lines.append(f"best: gap {quantity_text('gap', best[0])}, peak "
                      f"{quantity_text('x', best[1].amplitude)} (reduction "
                      f"{100 * (1 - best[1].amplitude / d.bare.amplitude):.1f} %)")  # fmt: skip
+    if ns.csv or ns.plot:
+        rows = [{"gap": g, "peak_amplitude": math.nan if pk is None else pk.amplitude,
+                 "peak_omega": math.nan if pk is None else pk.omega,
+                 "peak_kind": "" if pk is None else pk.kind, "baseline_peak": d.bare.amplitude,
+                 "baseline_omega": d.bare.omega,
+                 "best": best is not None and g == best[0]}
+                for g, pk in zip(d.gaps, d.peaks, strict=True)]  # fmt: skip
+        if ns.csv:
+            write_csv(ns.csv, "csv", rows)
+        if ns.plot:
+            import pandas as pd
+
+            from ..report.plots import plot_design
+
+            marks = [] if best is None else [{"gap": best[0], "peak_amplitude": best[1].amplitude}]
+            plot_design(pd.DataFrame(rows), ns.plot, best=marks,
+                        title=f"damper {damper!r}, peak at {point!r}")  # fmt: skip
     emit(ns, d.as_dict(), "\n".join(lines))
 
 
