@@ -159,3 +159,25 @@ def test_the_command_draws_its_stages_at_a_terminal_and_nothing_into_a_pipe():
     piped = subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=ROOT, timeout=600)
     assert piped.returncode == 0
     assert "frf sweeps" not in piped.stderr and "%|" not in piped.stderr
+
+
+def test_a_structure_curve_counts_its_runs_from_rest():
+    """``frf --structure``: the runs from rest at every frequency of the band's grid (nearly all
+    of its time) counted as they end, then its branches."""
+    from symimpact.forced.orbits.structure_branch import curve_grid
+    from symimpact.maps.structure_curve import structure_curve_map
+    from symimpact.model.structure_model import model_from_dict
+
+    model = model_from_dict({"fe": {"M": [[1, 0], [0, 1]], "K": [[1, -1], [-1, 2]],
+                                    "zeta": 0.015},
+                             "stops": [{"name": "s", "at": 0, "gap": 1, "side": "+",
+                                        "contact": "linear", "k1": 100, "c1": 0}],
+                             "force": {"at": 1, "amplitude": 0.1}})  # fmt: skip
+    events = []
+    curve = structure_curve_map(model.structure, model.dampers, model.force_at, model.F0, 0.6,
+                                0.64, 0.005, model.stops, workers=2,
+                                progress=lambda *ev: events.append(ev))  # fmt: skip
+    runs = [(d, t) for n, d, t in events if n == "runs from rest"]
+    n = len(curve_grid(0.6, 0.64, 0.005))
+    assert runs[0] == (0, n) and runs[-1] == (n, n) and len(curve.settled) == n
+    assert [d for n_, d, _ in events if n_ == "branches"][-1] == len(curve.branches)

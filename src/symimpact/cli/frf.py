@@ -234,8 +234,11 @@ def run_structure(ns) -> None:
     lo, hi, step = structure_band(ns)
     model = ns.structure_model
     args = (model.structure, model.dampers, model.force_at, model.F0)
+    import sys
+
     curve = structure_curve_map(*args, lo, hi, step, model.stops, base=model.base_at,
-                                workers=ns.workers)  # fmt: skip
+                                workers=ns.workers,
+                                progress=sys.stderr.isatty() and not ns.quiet)  # fmt: skip
     branches, notes = curve.branches, curve.notes
     peaks, bare = {}, {}
     for p in model.structure.points:
