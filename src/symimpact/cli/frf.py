@@ -428,7 +428,7 @@ def _propagated(ns, system, forcing, e, omegas, multistart):
 def _not_periodic_lines(frf) -> list[str]:
     """The sweeps' motions that do not repeat (``not_periodic`` of the JSON, the figure's shaded
     envelope), one line a sweep: how many frequencies, over which Ω, and the range of their
-    periods' largest |x|."""
+    periods' largest abs(x)."""
     from ..model.display import omega_text, shown
 
     lines = []

@@ -124,7 +124,7 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
 
     The answer first (issue 80, item 6): the stable branches bold and on top in one colour, the
     unstable ones thin, dashed and pale beneath, the worst case the curve located marked (★),
-    the sweeps' motions that do not repeat as a shaded envelope of their periods' largest |x|
+    the sweeps' motions that do not repeat as a shaded envelope of their periods' largest abs(x)
     (:func:`_draw_envelope`), the other motions the multi-start landed on (not periodic,
     chattering: ×), the located
     bifurcations small and pale, the brute-force sweeps as faint dots, and the primary without
@@ -206,7 +206,7 @@ def draw_frf(ax: Any, frf: Any, sweeps: bool = True) -> None:
 
 def _draw_envelope(ax: Any, frf: Any, W: Any, Y: Any) -> None:
     """The non-periodic bands of the sweeps (``frf.not_periodic``) shaded from the lowest to the
-    highest of their kept periods' largest |x|, each sweep's run of neighbouring frequencies one
+    highest of their kept periods' largest abs(x), each sweep's run of neighbouring frequencies one
     patch (a lone frequency a vertical bar): where a motion does not repeat, the primary's
     amplitude wanders between those bounds from period to period."""
     import numpy as np

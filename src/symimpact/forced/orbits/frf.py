@@ -143,7 +143,7 @@ class FrequencyResponse:
     #: (:func:`.worst_case.beside_peak`); the peak is the largest of them where it is larger
     beside_peak: list = field(default_factory=list)
     #: the swept motions that impact and do not repeat, as (sweep "up" or "down", Ω [rad/s],
-    #: the lowest and the highest of the kept periods' largest |x| [m]): the envelope of the
+    #: the lowest and the highest of the kept periods' largest abs(x) [m]): the envelope of the
     #: non-periodic bands, which no branch draws (a displacement, whatever ``response`` is)
     not_periodic: list[tuple[str, float, float, float]] = field(default_factory=list)
     #: what the ``amplitude`` fields hold: "displacement" (max abs(x)), or another response of
