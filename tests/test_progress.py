@@ -181,3 +181,10 @@ def test_a_structure_curve_counts_its_runs_from_rest():
     n = len(curve_grid(0.6, 0.64, 0.005))
     assert runs[0] == (0, n) and runs[-1] == (n, n) and len(curve.settled) == n
     assert [d for n_, d, _ in events if n_ == "branches"][-1] == len(curve.branches)
+
+
+def test_a_progress_that_is_neither_a_flag_nor_a_callable_is_refused_by_name():
+    from symimpact.errors import ParameterError
+
+    with pytest.raises(ParameterError, match="progress: must be True"):
+        frequency_response(SYSTEM, Forcing(F0=2.0, omega=34.0), 0.6, BAND, progress="yes")

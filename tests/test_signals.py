@@ -185,6 +185,25 @@ def test_a_signal_at_any_moment_ends_the_command_in_one_line(name):
     print(name, seen)
 
 
+@pytest.mark.parametrize("module", ["multiprocessing", "symimpact.io"])
+def test_a_signal_during_the_import_of_what_the_handler_reads_still_ends_in_one_line(module):
+    """The ending handler run while multiprocessing or symimpact.io is half imported (in
+    sys.modules, without the name the handler reads yet: a SIGTERM 0.35 s into a simulate, in
+    the slow set, 2026-12-07) exits 143 with its one line; an AttributeError raised there had
+    surfaced inside the import as "ImportError: cannot import name 'simulate_forced'", exit
+    70."""
+    code = (
+        "import sys, types\n"
+        f"sys.modules[{module!r}] = types.ModuleType({module!r})\n"
+        "from symimpact.cli import _ending_on_signal\n"
+        "_ending_on_signal('simulate')(15, None)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=120)  # fmt: skip
+    assert done.returncode == 143, done.stderr
+    assert done.stderr == "symimpact simulate: ended by signal 15\n"
+
+
 def test_a_signal_during_the_import_of_tqdm_still_ends_in_one_line():
     """The ending handler run while tqdm is half imported (its module in sys.modules, its class
     not yet defined: a SIGINT at 1.39 s into ``design`` on CI) exits 130 with its one line; it

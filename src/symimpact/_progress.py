@@ -31,6 +31,11 @@ class Stages:
     (:data:`Callback`) is called instead.  ``desc`` begins each bar's label (the command)."""
 
     def __init__(self, progress: bool | Callback | None, desc: str = "", file: Any = None) -> None:
+        if not (progress is None or isinstance(progress, bool) or callable(progress)):
+            from .errors import ParameterError
+
+            raise ParameterError("progress", "must be True (a bar on stderr), False or None, or "
+                                             "a callable (stage, done, total)")  # fmt: skip
         self.callback: Callback | None = progress if callable(progress) else None
         self.draw = progress is True
         self.desc = desc

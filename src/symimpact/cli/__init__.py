@@ -140,20 +140,26 @@ def _ending_on_signal(command: str):
     complete, and the leftovers of an ended run are removed by the next one."""
 
     def end(signum, frame) -> None:
-        import multiprocessing
         import os
         import signal
 
-        for child in multiprocessing.active_children():
+        # Each module is read from sys.modules, never imported here, and each of its names with
+        # getattr: a signal that lands while one is being imported finds it partially
+        # initialized, without the name yet.  An AttributeError raised here surfaces in the
+        # main thread inside that import: tqdm's ended a design at 1.39 s as an internal error
+        # (exit 70, not 130), and multiprocessing's or symimpact.io's a simulate at 0.35 s as
+        # "ImportError: cannot import name 'simulate_forced'" (the package's lazy __getattr__
+        # turned it into one).  Where multiprocessing is not imported, no child was started.
+        children = getattr(sys.modules.get("multiprocessing"), "active_children", None)
+        for child in children() if children is not None else ():
             child.terminate()
-        # a signal that lands while tqdm is being imported finds it partially initialized,
-        # without its class yet (the handler then raised AttributeError: exit 70, not 130)
         bar = getattr(sys.modules.get("tqdm"), "tqdm", None)
         if bar is not None and getattr(bar, "_instances", None):
             sys.stderr.write("\n")  # a progress bar is open mid-line: the message gets its own
-        io = sys.modules.get("symimpact.io")
-        if io is not None:  # os._exit runs no finally: the half-written outputs go here
-            io.remove_in_progress()
+        # os._exit runs no finally: the half-written outputs go here
+        remove = getattr(sys.modules.get("symimpact.io"), "remove_in_progress", None)
+        if remove is not None:
+            remove()
         words = "interrupted" if signum == signal.SIGINT else f"ended by signal {signum}"
         print(f"symimpact {command}: {words}", file=sys.stderr, flush=True)
         os._exit(128 + signum)
