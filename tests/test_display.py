@@ -183,3 +183,26 @@ def test_a_compilation_is_announced_on_a_terminal_only(monkeypatch, capsys):
     assert _notices.expected_seconds("symimpact.free._stepper") == table["symimpact.free._stepper"]
     assert _notices.expected_seconds("symimpact.forced._modal_x") is None  # a module, not a prefix
     assert _notices.expected_seconds("symimpact.model.units") is None
+
+
+def test_a_compilation_notice_under_an_open_bar_starts_its_own_line(monkeypatch, capsys):
+    """A curve's stage bar (frf at a terminal) is open mid-line when numba begins a compilation:
+    the notice starts on a new line instead of running on after the bar (seen on a fresh
+    clone: "frf starts:   0%| … | 0/6 [00:00<?, ?Ω/s]symimpact frf: compiling …")."""
+    import sys
+
+    from tqdm import tqdm
+
+    from symimpact import _notices
+
+    monkeypatch.setitem(_notices.COMPILE_SECONDS, __name__, 42.0)
+    monkeypatch.setattr(_notices, "_said", set())
+    monkeypatch.setattr(_notices, "command", "frf")
+    bar = tqdm(total=6, desc="frf starts", file=sys.stderr)
+    try:
+        _notices.compiling(__name__)
+    finally:
+        bar.close()
+    err = capsys.readouterr().err
+    before, _, after = err.partition("symimpact frf: compiling")
+    assert after and before.endswith("\n") and "frf starts" in before

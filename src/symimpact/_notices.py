@@ -55,6 +55,12 @@ def compiling(module: str) -> None:
     _said.add(engine)
     seconds = COMPILE_SECONDS[engine]
     took = f"{seconds / 60:.0f} min" if seconds >= 90 else f"{seconds:.0f} s"
+    # a progress bar open mid-line (a curve's stage, symimpact._progress): the notice on a line
+    # of its own, the bar drawn again below it (read from sys.modules, as a signal handler
+    # does: a half-imported tqdm has no class yet)
+    bar = getattr(sys.modules.get("tqdm"), "tqdm", None)
+    if bar is not None and getattr(bar, "_instances", None):
+        sys.stderr.write("\n")
     print(
         f"symimpact {command}: compiling the simulation engine for this machine, once (about "
         f"{took} of one core; later runs read it from numba's cache in a second; Ctrl-C ends it)",
