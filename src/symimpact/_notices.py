@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import sys
 
+from ._progress import end_open_bar_line
+
 #: CPU seconds of the first compilation of each engine (the module of the function compiled
 #: first), measured with an empty NUMBA_CACHE_DIR by ``python -m benchmarks.first_run``
 #: (benchmark 15, on the 2-core machine of benchmarks/RESULTS.md): the free stepper, the engine of
@@ -55,12 +57,7 @@ def compiling(module: str) -> None:
     _said.add(engine)
     seconds = COMPILE_SECONDS[engine]
     took = f"{seconds / 60:.0f} min" if seconds >= 90 else f"{seconds:.0f} s"
-    # a progress bar open mid-line (a curve's stage, symimpact._progress): the notice on a line
-    # of its own, the bar drawn again below it (read from sys.modules, as a signal handler
-    # does: a half-imported tqdm has no class yet)
-    bar = getattr(sys.modules.get("tqdm"), "tqdm", None)
-    if bar is not None and getattr(bar, "_instances", None):
-        sys.stderr.write("\n")
+    end_open_bar_line()  # a curve's stage bar open mid-line: the notice on a line of its own
     print(
         f"symimpact {command}: compiling the simulation engine for this machine, once (about "
         f"{took} of one core; later runs read it from numba's cache in a second; Ctrl-C ends it)",

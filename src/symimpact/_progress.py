@@ -22,6 +22,16 @@ from typing import Any
 Callback = Callable[[str, int, "int | None"], None]
 
 
+def end_open_bar_line() -> None:
+    """Where a tqdm bar is open mid-line on stderr, end that line, so that a message printed
+    next gets its own.  tqdm is read from sys.modules and its class with getattr, never
+    imported: a signal handler calls this, and a signal that lands while tqdm is being imported
+    finds it without its class yet."""
+    bar = getattr(sys.modules.get("tqdm"), "tqdm", None)
+    if bar is not None and getattr(bar, "_instances", None):
+        sys.stderr.write("\n")
+
+
 class Stages:
     """The progress of one command's stages: :meth:`stage` begins one (and ends the one
     before), :meth:`advance` counts its runs, :meth:`close` ends the last.

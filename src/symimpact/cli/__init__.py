@@ -15,6 +15,7 @@ import re
 import sys
 from collections.abc import Sequence
 
+from .._progress import end_open_bar_line
 from ..errors import SymimpactError
 from . import (
     branch,
@@ -153,9 +154,7 @@ def _ending_on_signal(command: str):
         children = getattr(sys.modules.get("multiprocessing"), "active_children", None)
         for child in children() if children is not None else ():
             child.terminate()
-        bar = getattr(sys.modules.get("tqdm"), "tqdm", None)
-        if bar is not None and getattr(bar, "_instances", None):
-            sys.stderr.write("\n")  # a progress bar is open mid-line: the message gets its own
+        end_open_bar_line()  # a progress bar open mid-line: the message gets its own
         # os._exit runs no finally: the half-written outputs go here
         remove = getattr(sys.modules.get("symimpact.io"), "remove_in_progress", None)
         if remove is not None:

@@ -253,15 +253,11 @@ def run_structure(ns) -> None:
         write_csv(ns.csv, "csv", structure_rows(curve.branches, model.structure.points,
                                                 curve.settled))  # fmt: skip
     if ns.plot:
-        import numpy as np
-
-        from ..forced.orbits.structure_branch import bare_amplitude
+        from ..forced.orbits.structure_branch import bare_curve
         from ..report.plots import plot_structure_curve
 
-        w = np.linspace(lo, hi, 400)
-        curves = {p: (w, np.array([bare_amplitude(model.structure, model.force_at, model.F0, p,
-                                                  x, model.base_at) for x in w]))
-                  for p in model.structure.points}  # fmt: skip
+        curves = {p: bare_curve(model.structure, model.force_at, model.F0, p, lo, hi,
+                                model.base_at) for p in model.structure.points}  # fmt: skip
         plot_structure_curve(curve.branches, model.structure.points, ns.plot,
                              title=f"{len(model.structure.modes)}-mode structure, "
                              f"{len(model.dampers)} damper(s), {len(model.stops)} stop(s)",

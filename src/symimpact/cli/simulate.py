@@ -4,7 +4,6 @@ state."""
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 from .. import budgets
@@ -262,7 +261,7 @@ def run_structure(ns) -> None:
     if ns.plot:
         from ..report.plots import plot_structure_run
 
-        plot_structure_run(res.period_max, res.points, 2 * math.pi / forcing.omega, discard,
+        plot_structure_run(res.period_max, res.points, forcing.period, discard,
                            ns.plot, title=f"{len(res.structure.modes)}-mode structure, Ω "
                            f"{omega_text(forcing.omega)}")  # fmt: skip
     text = (

@@ -385,54 +385,53 @@ def refine_best(
     out = []
     bar = tqdm(desc="refining the best clearance", unit=" curves", disable=not progress,
                leave=True)  # fmt: skip
-    runs = _pool.CurveRuns()
     start = _pool.ended_here(_pool.CURVE_RUNS)
-    done = [start]
+    shown = [start]
 
-    def told(stage: str, n: int, total: int | None) -> None:
+    def curve_runs() -> None:
         """Each curve's runs beside the count of curves, so that the bar moves within one."""
-        runs(stage, n, total)
         now = _pool.ended_here(_pool.CURVE_RUNS)
-        if progress and now - done[0] >= 10:
-            done[0] = now
+        if now - shown[0] >= 10:
+            shown[0] = now
             bar.set_postfix_str(f"{now - start} runs", refresh=True)
 
-    for g in groups:
-        g = g.sort_values("gap")
-        gaps = g["gap"].to_numpy(dtype=float)
-        i = int(np.argmin(g["peak_amplitude"].to_numpy(dtype=float)))
-        first = g.iloc[0]
-        base = _design_system(_DesignBase(system, forcing, e, tuple(w)), by,
-                              [float(first[c]) for c in by])  # fmt: skip
-        cache: dict[float, dict[str, Any]] = {}
+    # the runs of every curve, counted here (_pool.CurveRuns), noted beside the bar
+    with _pool.watching(curve_runs if progress else None):
+        for g in groups:
+            g = g.sort_values("gap")
+            gaps = g["gap"].to_numpy(dtype=float)
+            i = int(np.argmin(g["peak_amplitude"].to_numpy(dtype=float)))
+            first = g.iloc[0]
+            base = _design_system(_DesignBase(system, forcing, e, tuple(w)), by,
+                                  [float(first[c]) for c in by])  # fmt: skip
+            cache: dict[float, dict[str, Any]] = {}
 
-        def row(d: float, sys_=base, cache=cache) -> dict[str, Any]:
-            if d not in cache:
-                runs.last.clear()  # a new curve: its stages count from 0
-                cache[d] = design_row(sys_.with_(gap=d), forcing, e, w, multistart=multistart,
-                                      response=response, progress=told)  # fmt: skip
-                bar.update(1)
-            return cache[d]
+            def row(d: float, sys_=base, cache=cache) -> dict[str, Any]:
+                if d not in cache:
+                    cache[d] = design_row(sys_.with_(gap=d), forcing, e, w, multistart=multistart,
+                                          response=response, progress=_pool.CurveRuns())  # fmt: skip
+                    bar.update(1)
+                return cache[d]
 
-        lo, hi = gaps[max(i - 1, 0)], gaps[min(i + 1, len(gaps) - 1)]
-        best_d = float(gaps[i])
-        if hi > lo:
-            r = minimize_scalar(lambda d: row(float(d))["peak_amplitude"], bounds=(lo, hi),
-                                method="bounded", options={"xatol": tolerance})  # fmt: skip
-            if row(float(r.x))["peak_amplitude"] <= float(g.iloc[i]["peak_amplitude"]):
-                best_d = float(r.x)
-        best_d, walked = _walk_down(best_d, tolerance, lambda d: row(d)["peak_amplitude"])
-        result = {**{c: float(first[c]) for c in by}, "gap": best_d, **row(best_d)}
-        result.update(tolerance=tolerance, grid_gap=float(gaps[i]), evaluations=len(cache),
-                      walk_moves=walked)  # fmt: skip
-        if is_constant(e):  # (the materials' e has no single value to move)
-            for key, de in (("peak_e_minus", -0.1), ("peak_e_plus", 0.1)):
-                ee = min(max(float(e) + de, 0.0), 1.0)
-                result[key] = design_row(base.with_(gap=best_d), forcing, ee, w,
-                                         multistart=multistart,
-                                         response=response)["peak_amplitude"]  # fmt: skip
-                bar.update(1)
-        out.append(result)
+            lo, hi = gaps[max(i - 1, 0)], gaps[min(i + 1, len(gaps) - 1)]
+            best_d = float(gaps[i])
+            if hi > lo:
+                r = minimize_scalar(lambda d: row(float(d))["peak_amplitude"], bounds=(lo, hi),
+                                    method="bounded", options={"xatol": tolerance})  # fmt: skip
+                if row(float(r.x))["peak_amplitude"] <= float(g.iloc[i]["peak_amplitude"]):
+                    best_d = float(r.x)
+            best_d, walked = _walk_down(best_d, tolerance, lambda d: row(d)["peak_amplitude"])
+            result = {**{c: float(first[c]) for c in by}, "gap": best_d, **row(best_d)}
+            result.update(tolerance=tolerance, grid_gap=float(gaps[i]), evaluations=len(cache),
+                          walk_moves=walked)  # fmt: skip
+            if is_constant(e):  # (the materials' e has no single value to move)
+                for key, de in (("peak_e_minus", -0.1), ("peak_e_plus", 0.1)):
+                    ee = min(max(float(e) + de, 0.0), 1.0)
+                    result[key] = design_row(base.with_(gap=best_d), forcing, ee, w,
+                                             multistart=multistart,
+                                             response=response)["peak_amplitude"]  # fmt: skip
+                    bar.update(1)
+            out.append(result)
     bar.close()
     return out
 

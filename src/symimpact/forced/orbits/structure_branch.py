@@ -625,6 +625,23 @@ def bare_amplitude(
     return float(abs(x))
 
 
+def bare_curve(
+    structure: Structure,
+    force_at: Any,
+    F0: Any,
+    point: Any,
+    omega_low: float,
+    omega_high: float,
+    base: Any = 0.0,
+    n: int = 400,
+) -> tuple[np.ndarray, np.ndarray]:
+    """(Ω [rad/s], amplitude [m]) of the bare structure at ``point`` at ``n`` frequencies evenly
+    over [omega_low, omega_high] (:func:`bare_amplitude`): the curve a figure draws, and the grid
+    :func:`bare_peak` refines its maximum from."""
+    w = np.linspace(omega_low, omega_high, n)
+    return w, np.array([bare_amplitude(structure, force_at, F0, point, x, base) for x in w])
+
+
 def bare_peak(structure: Structure, force_at: Any, F0: Any, point: Any, omega_low: float,
               omega_high: float, base: Any = 0.0) -> StructurePeak:  # fmt: skip
     """The bare structure's (no damper, no stop) largest steady amplitude at ``point`` over the
@@ -637,8 +654,8 @@ def bare_peak(structure: Structure, force_at: Any, F0: Any, point: Any, omega_lo
     def minus(w: float) -> float:
         return -bare_amplitude(structure, force_at, F0, point, w, base)
 
-    grid = np.linspace(omega_low, omega_high, 200)
-    values = [minus(w) for w in grid]
+    grid, amplitudes = bare_curve(structure, force_at, F0, point, omega_low, omega_high, base, 200)
+    values = -amplitudes
     i = int(np.argmin(values))
     a, c = grid[max(i - 1, 0)], grid[min(i + 1, len(grid) - 1)]
     found = minimize_scalar(minus, bounds=(a, c), method="bounded", options={"xatol": 1e-12 * c})
