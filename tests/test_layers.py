@@ -22,6 +22,7 @@ PKG = ROOT / "src" / "symimpact"
 LAYERS = ["model", "free", "forced", "maps", "identify", "report", "cli"]
 SHARED = {
     "errors",
+    "_compiled",
     "io",
     "_interrupt",
     "_notices",

@@ -32,9 +32,10 @@ from typing import Any
 import numba
 import numba.core.event
 import numpy as np
-from numba import njit, types
+from numba import types
 
 from . import _notices
+from ._compiled import compiled
 
 #: Status of a compiled run that stopped because a signal asked it to (every loop's own statuses
 #: are small numbers; this one is shared).
@@ -47,7 +48,7 @@ EVERY = 1024
 _read = types.ExternalFunction("read", types.intp(types.intc, types.intp, types.uintp))
 
 
-@njit(cache=True)
+@compiled
 def stop_requested(watch: np.ndarray) -> bool:
     """True when the watch pipe holds SIGINT, SIGTERM or SIGHUP.  ``watch`` (int64, 3) holds the
     pipe's read end (−1: none), a one-byte buffer and, once seen, the signal's number."""

@@ -20,12 +20,12 @@ from ._progress import end_open_bar_line
 #: rule, the compliant contacts' engine and the sampled loads' rigid engine.  The engines not
 #: listed compile in a few seconds, without a notice.
 COMPILE_SECONDS = {
-    "symimpact.free._stepper": 16.0,
-    "symimpact.forced.engine._modal": 175.0,
-    "symimpact.forced.orbits._corrector": 61.0,
+    "symimpact.free._stepper": 15.0,
+    "symimpact.forced.engine._modal": 118.0,
+    "symimpact.forced.orbits._corrector": 22.0,
     "symimpact.forced.engine._chain": 14.0,
-    "symimpact.forced.engine._compliant": 12.0,
-    "symimpact.forced.engine._record_rigid": 4.3,
+    "symimpact.forced.engine._compliant": 11.0,
+    "symimpact.forced.engine._record_rigid": 7.0,
 }
 
 #: The command whose compilations are announced (set by the command line on a terminal).

@@ -16,9 +16,9 @@ from functools import cached_property
 from typing import Any
 
 import numpy as np
-from numba import njit
 
 from .. import _interrupt, budgets
+from .._compiled import compiled
 from ..errors import MethodNotApplicable, ParameterError, SymimpactError
 from ..free import _stepper
 from ..model.checks import bounded, instance, whole_number
@@ -586,7 +586,7 @@ def impact_counts(events: np.ndarray, lo: float, hi: float) -> tuple[int, int]:
     return int(np.count_nonzero(impacts)), int(np.count_nonzero(impacts & ~absorbed))
 
 
-@njit(cache=True)
+@compiled
 def _absorbed(kind, side, release, accumulation):
     """The impacts a later accumulation on their wall ends (a run on one wall since the last
     release or impact on the other wall), one pass (runs have ~1e5 events)."""

@@ -21,8 +21,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._compiled import compiled
 from . import _stepper as st
 
 # columns of a summary row (run_many)
@@ -40,7 +40,7 @@ from . import _stepper as st
 N_ROW = 9
 
 
-@njit(cache=True)
+@compiled
 def prepare(p, x0, xd0, y0, yd0, rtol, rest):
     """Set the tolerances of the contact integration and the rest threshold in ``p`` from the
     initial state; return the initial mechanical energy [J].
@@ -63,7 +63,7 @@ def prepare(p, x0, xd0, y0, yd0, rtol, rest):
     return e_initial
 
 
-@njit(cache=True)
+@compiled
 def ledger(law, p, u, side, e_initial, diss_C, diss_c1):
     """(final energy, residual) [J] of the balance initial = final + dissipated by C + by c₁
     + residual; the final energy includes the contact potential when the run ends in contact."""
@@ -71,7 +71,7 @@ def ledger(law, p, u, side, e_initial, diss_C, diss_c1):
     return e_final, e_initial - e_final - diss_C - diss_c1
 
 
-@njit(cache=True)
+@compiled
 def _slope(t, y, n):
     """Least-squares slope of y against t over the first n points (centred sums)."""
     tm = 0.0
@@ -90,7 +90,7 @@ def _slope(t, y, n):
     return sxy / sxx
 
 
-@njit(cache=True)
+@compiled
 def damping_inclination_of(peaks, npk, omega_n, count):
     """DI [m] of Eq. 36: abs(slope) of the least-squares line through the first ``count``
     positive maxima (t_k, X_k) of x against t' = t·ω_n; NaN with fewer than ``count``."""
@@ -104,7 +104,7 @@ def damping_inclination_of(peaks, npk, omega_n, count):
     return abs(_slope(t, y, count))
 
 
-@njit(cache=True)
+@compiled
 def zeta_eq_of(peaks, npk, omega_n):
     """ζ_eq [1]: −s/ω_n with s the least-squares slope of ln X_k against t_k over the upper
     envelope (the positive maxima that exceed every later one); NaN with fewer than two."""
@@ -124,7 +124,7 @@ def zeta_eq_of(peaks, npk, omega_n):
     return -_slope(t, y, n) / omega_n
 
 
-@njit(cache=True)
+@compiled
 def run_many(law, P, S, T, rtol, rest, max_impacts, out, watch):
     """Run the points of a chunk one after the other and write one summary row each to ``out``.
 

@@ -21,8 +21,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._compiled import compiled
 from .._interrupt import EVERY, INTERRUPTED, stop_requested
 from ..generated import free_flight as _ff
 from ..generated import multiple_scales as _ms
@@ -71,12 +71,12 @@ STATUS_TEXT = {
 # what ends a free flight
 ONSET_CONTACT, ONSET_NONE, ONSET_REST = 0, 1, 2
 
-_x_ff = njit(cache=True)(_ff.main_mass_displacement_scalar)
-_xd_ff = njit(cache=True)(_ff.main_mass_velocity_scalar)
-_T_map = njit(cache=True)(_ms.contact_duration_map_scalar)
-_T_start = njit(cache=True)(_ms.contact_duration_start_scalar)
-_z_pert = njit(cache=True)(_ms.relative_displacement_scalar)
-_zd_pert = njit(cache=True)(_ms.relative_velocity_scalar)
+_x_ff = compiled(_ff.main_mass_displacement_scalar)
+_xd_ff = compiled(_ff.main_mass_velocity_scalar)
+_T_map = compiled(_ms.contact_duration_map_scalar)
+_T_start = compiled(_ms.contact_duration_start_scalar)
+_z_pert = compiled(_ms.relative_displacement_scalar)
+_zd_pert = compiled(_ms.relative_velocity_scalar)
 
 # Dormand–Prince 5(4) tableau
 _C2, _C3, _C4, _C5 = 1 / 5, 3 / 10, 4 / 5, 8 / 9
@@ -121,7 +121,7 @@ def pack(system, rtol, atol_x, atol_v, ba=0.0, free=False, rest_energy=0.0):
     return p
 
 
-@njit(cache=True)
+@compiled
 def contact_force(law: int, p: np.ndarray, delta: float, ddelta: float) -> float:
     """Force pushing the masses apart at penetration δ and rate δ̇ (Eq. 8, 9, 35 + c₁δ̇)."""
     if law == HERTZ:
@@ -133,7 +133,7 @@ def contact_force(law: int, p: np.ndarray, delta: float, ddelta: float) -> float
     return fe + p[P_c1] * ddelta
 
 
-@njit(cache=True)
+@compiled
 def contact_potential(law: int, p: np.ndarray, delta: float) -> float:
     """Elastic energy stored in the contact at penetration δ ≥ 0."""
     if delta <= 0.0:
@@ -145,7 +145,7 @@ def contact_potential(law: int, p: np.ndarray, delta: float) -> float:
     return 0.25 * p[P_a] * delta**4 + 0.5 * p[P_b] * delta * delta
 
 
-@njit(cache=True)
+@compiled
 def _hermite_min(y0: float, y1: float, m0: float, m1: float) -> tuple[float, float]:
     """(least value, where) of the cubic with values y0, y1 and slopes m0, m1 at 0 and 1 over its
     interior critical points in (0, 1); (inf, -1) when it has none (the ends are the caller's)."""
@@ -171,7 +171,7 @@ def _hermite_min(y0: float, y1: float, m0: float, m1: float) -> tuple[float, flo
     return lowest, where
 
 
-@njit(cache=True)
+@compiled
 def _penetration_scale(law: int, p: np.ndarray, v: float) -> float:
     """Largest penetration [m] of an undamped contact of the free pair (reduced mass
     μ = mM/(m + M)) at approach speed v: the contact potential equals ½μv²."""
@@ -187,7 +187,7 @@ def _penetration_scale(law: int, p: np.ndarray, v: float) -> float:
     return math.sqrt(2.0 * e / b)
 
 
-@njit(cache=True)
+@compiled
 def _f(law, p, side, x, xd, y, yd):
     """Right-hand side of Eq. 10 in contact on ``side`` as a 6-tuple: ẋ, ẍ, ẏ, ÿ and the
     dissipation rates Cẋ², c₁δ̇² (scalars, no arrays: the step stays in registers)."""
@@ -204,44 +204,44 @@ def _f(law, p, side, x, xd, y, yd):
     )
 
 
-@njit(cache=True)
+@compiled
 def _stage2(u, h, k1):
     return u + h * _A21 * k1
 
 
-@njit(cache=True)
+@compiled
 def _stage3(u, h, k1, k2):
     return u + h * (_A31 * k1 + _A32 * k2)
 
 
-@njit(cache=True)
+@compiled
 def _stage4(u, h, k1, k2, k3):
     return u + h * (_A41 * k1 + _A42 * k2 + _A43 * k3)
 
 
-@njit(cache=True)
+@compiled
 def _stage5(u, h, k1, k2, k3, k4):
     return u + h * (_A51 * k1 + _A52 * k2 + _A53 * k3 + _A54 * k4)
 
 
-@njit(cache=True)
+@compiled
 def _stage6(u, h, k1, k2, k3, k4, k5):
     return u + h * (_A61 * k1 + _A62 * k2 + _A63 * k3 + _A64 * k4 + _A65 * k5)
 
 
-@njit(cache=True)
+@compiled
 def _stage7(u, h, k1, k3, k4, k5, k6):
     return u + h * (_B1 * k1 + _B3 * k3 + _B4 * k4 + _B5 * k5 + _B6 * k6)
 
 
-@njit(cache=True)
+@compiled
 def _err(h, k1, k3, k4, k5, k6, k7, u, unew, atol, rtol):
     e = h * (_E1 * k1 + _E3 * k3 + _E4 * k4 + _E5 * k5 + _E6 * k6 + _E7 * k7)
     sc = atol + rtol * max(abs(u), abs(unew))
     return (e / sc) ** 2
 
 
-@njit(cache=True)
+@compiled
 def _dp_step(law, p, side, u, k1, h):
     """One Dormand–Prince step of length h from the 6-tuple state u with k1 = f(u).
 
@@ -309,7 +309,7 @@ def _dp_step(law, p, side, u, k1, h):
     return unew, k7, math.sqrt(acc / 4.0)
 
 
-@njit(cache=True)
+@compiled
 def _energy(law, p, u, side):
     x, xd, y, yd = u[0], u[1], u[2], u[3]
     e = 0.5 * p[P_M] * xd * xd + 0.5 * p[P_K] * x * x + 0.5 * p[P_m] * yd * yd
@@ -318,7 +318,7 @@ def _energy(law, p, u, side):
     return e
 
 
-@njit(cache=True)
+@compiled
 def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which):
     """Shortest step θ ∈ (0, h_hi] from u at which event ``which`` vanishes: (θ, state there,
     f of that state).
@@ -367,7 +367,7 @@ def _locate(law, p, side, u, k1, h_hi, g_lo, g_hi, which):
     return hi, out, kout
 
 
-@njit(cache=True)
+@compiled
 def _room(a, n):
     """``a`` if it has a row ``n``, else a copy with twice the rows (amortised growth: no
     buffer ever truncates a log or restarts a run)."""
@@ -378,7 +378,7 @@ def _room(a, n):
     return b
 
 
-@njit(cache=True)
+@compiled
 def _trace_contact_row(trace, ntr, t, u, k):
     """Row ``ntr`` of the trace: time, state, accelerations (from the stage k), contact flag."""
     trace[ntr, 0] = t
@@ -389,7 +389,7 @@ def _trace_contact_row(trace, ntr, t, u, k):
     trace[ntr, 7] = 1.0
 
 
-@njit(cache=True)
+@compiled
 def _trace_rest_row(trace, ntr, t, u):
     """Row ``ntr`` of the trace: the state held from ``t`` on (the run stopped at rest)."""
     trace[ntr, 0] = t
@@ -400,7 +400,7 @@ def _trace_rest_row(trace, ntr, t, u):
     trace[ntr, 7] = 2.0
 
 
-@njit(cache=True)
+@compiled
 def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, record):
     """Integrate one contact from δ = 0; returns (status, t, npk, ntr, done, h_last, peaks,
     trace) with u0 updated in place to the state at the end of contact (or at t_end); ``peaks``
@@ -480,7 +480,7 @@ def _contact(law, p, side, t0, u0, t_end, h_guess, peaks, npk, trace, ntr, recor
     return status, t, npk, ntr, done, h, peaks, trace
 
 
-@njit(cache=True)
+@compiled
 def _perturbation_state(p, side, tau, X0, Xd0, Om, v, out):
     """State (x, ẋ, y, ẏ) at τ into a perturbation contact, and the pair's centre-of-mass state.
 
@@ -503,7 +503,7 @@ def _perturbation_state(p, side, tau, X0, Xd0, Om, v, out):
     return z, zd, X, Xd
 
 
-@njit(cache=True)
+@compiled
 def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk, trace, ntr, record):
     """Contact by the two-variable solution (Eq. 31–33) that conserves momentum.
 
@@ -604,12 +604,12 @@ def _perturbation_contact(p, side, t0, u0, t_end, peaks, npk, trace, ntr, record
     return OK, t0 + t_stop, npk, ntr, done, d_c, d_c1, peaks, trace
 
 
-@njit(cache=True)
+@compiled
 def _z_free(p, tau, x0, xd0, y0, yd0):
     return y0 + yd0 * tau - _x_ff(tau, p[P_M], p[P_K], p[P_C], x0, xd0)
 
 
-@njit(cache=True)
+@compiled
 def _onset(p, x0, xd0, y0, yd0, tau0, T):
     """(τ, code) for free flight from the state at τ = 0, searched on [tau0, T].
 
@@ -684,7 +684,7 @@ def _onset(p, x0, xd0, y0, yd0, tau0, T):
     return T, ONSET_NONE
 
 
-@njit(cache=True)
+@compiled
 def secant_point(lo, hi, flo, fhi):
     """The secant's zero between (lo, flo) and (hi, fhi), or the midpoint where it falls outside
     (lo, hi) or the two values are equal (the Illinois halving can underflow a subnormal value
@@ -698,7 +698,7 @@ def secant_point(lo, hi, flo, fhi):
     return tm
 
 
-@njit(cache=True)
+@compiled
 def _velocity_zero(M, K, C, x0, xd0, lo, hi, flo, fhi):
     """The τ in [lo, hi] where the free-flight velocity ẋ (Eq. 7) falls through zero, given
     ẋ(lo) = flo > 0 ≥ fhi = ẋ(hi): Illinois regula falsi (a secant that halves the value kept
@@ -727,7 +727,7 @@ def _velocity_zero(M, K, C, x0, xd0, lo, hi, flo, fhi):
     return 0.5 * (lo + hi)
 
 
-@njit(cache=True)
+@compiled
 def _free_peaks(p, x0, xd0, t0, tau_a, tau_b, peaks, npk):
     """Record maxima of x (ẋ from + to −, x > 0) in free flight on [tau_a, tau_b]; returns
     (npk, peaks), the buffer grown where it filled."""
@@ -751,7 +751,7 @@ def _free_peaks(p, x0, xd0, t0, tau_a, tau_b, peaks, npk):
     return npk, peaks
 
 
-@njit(cache=True)
+@compiled
 def run(law, p, state0, t_end, impacts, peaks, trace, record, max_impacts, watch):
     """Simulate from state0 = (x, ẋ, y, ẏ) at t = 0 to t_end (or until a signal is seen on
     ``watch``: status INTERRUPTED, :mod:`symimpact._interrupt`).
@@ -880,7 +880,7 @@ def run(law, p, state0, t_end, impacts, peaks, trace, record, max_impacts, watch
     return status, n_imp, npk, ntr, u, diss_C, diss_c1, side, t, impacts, peaks, trace
 
 
-@njit(cache=True)
+@compiled
 def one_contact(law, p, v0):
     """One contact from δ = 0: main mass at rest at x = 0, impact mass at relative speed v0.
 

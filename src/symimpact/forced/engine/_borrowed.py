@@ -17,8 +17,10 @@ Slices of a borrowed view are borrowed too.
 
 from __future__ import annotations
 
-from numba import njit, types
+from numba import types
 from numba.extending import intrinsic
+
+from ..._compiled import compiled
 
 
 @intrinsic
@@ -40,7 +42,7 @@ def borrowed(typingctx, arr):
     return arr(arr), codegen
 
 
-@njit(cache=True)
+@compiled
 def borrowed_config(cfg):
     """The modal engine's configuration tuple (:func:`symimpact.forced.engine._modal_flight._pack`) with each
     of its arrays :func:`borrowed`; the caller keeps ``cfg`` alive."""

@@ -18,8 +18,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ...generated import rigid_impact as _ri
 from ._rigid import (
     E_KIND,
@@ -54,15 +54,15 @@ from ._rigid import (
 PARAMETERS = ("F0", "X_b", "omega", "gap", "e")
 _F0, _XB, _OMEGA, _GAP, _E = range(5)
 
-_gain_main = njit(cache=True)(_ri.saltation_main_gain_scalar)
-_gain_impact = njit(cache=True)(_ri.saltation_impact_gain_scalar)
-_s_main_z = njit(cache=True)(_ri.saltation_main_velocity_z_scalar)
-_s_impact_z = njit(cache=True)(_ri.saltation_impact_velocity_z_scalar)
-_v_after_d_e = njit(cache=True)(_ri.main_velocity_after_d_e_scalar)
-_u_after_d_e = njit(cache=True)(_ri.impact_velocity_after_d_e_scalar)
+_gain_main = compiled(_ri.saltation_main_gain_scalar)
+_gain_impact = compiled(_ri.saltation_impact_gain_scalar)
+_s_main_z = compiled(_ri.saltation_main_velocity_z_scalar)
+_s_impact_z = compiled(_ri.saltation_impact_velocity_z_scalar)
+_v_after_d_e = compiled(_ri.main_velocity_after_d_e_scalar)
+_u_after_d_e = compiled(_ri.impact_velocity_after_d_e_scalar)
 
 
-@njit(cache=True, error_model="numpy")
+@compiled(error_model="numpy")
 def _times(A, B, rows):
     """A @ B for a square ``rows``×``rows`` A and B of ``rows`` rows (the chain's 4×4 and 2×2
     products, written out: BLAS costs more than the product at this size)."""
@@ -76,7 +76,7 @@ def _times(A, B, rows):
     return out
 
 
-@njit(cache=True, error_model="numpy")
+@compiled(error_model="numpy")
 def _accel_t(p, mass, t):
     """∂ẍ/∂t at fixed x, ẋ: the forcing terms of :func:`._rigid._accel` differentiated."""
     th = p[P_W] * t + p[P_PHI]
@@ -85,7 +85,7 @@ def _accel_t(p, mass, t):
     return p[P_W] * (Q * math.cos(th) - P * math.sin(th)) / mass
 
 
-@njit(cache=True, error_model="numpy")
+@compiled(error_model="numpy")
 def _accel_d(p, which, t, mass):
     """∂ẍ/∂p at fixed t, x, ẋ: ẍ = (F0 cos θ − K(x − X_b cos θ) − C(ẋ + X_b Ω sin θ))/mass,
     θ = Ωt + φ (Eq. F1)."""
@@ -101,7 +101,7 @@ def _accel_d(p, which, t, mass):
     return 0.0
 
 
-@njit(cache=True, error_model="numpy")
+@compiled(error_model="numpy")
 def _stuck_at(J2, side, which):
     """(x, ẋ) rows into a sticking phase: δz = 0 (z = s·d/2, which moves with d), δẏ = δẋ."""
     out = np.zeros((4, 5))
@@ -114,7 +114,7 @@ def _stuck_at(J2, side, which):
     return out
 
 
-@njit(cache=True, error_model="numpy")
+@compiled(error_model="numpy")
 def _impact_time_d(row, which):
     """∂t/∂p of an impact at a fixed incoming state: the wall s·z = d/2 moves with d, so
     δt = δd/(2·s·ż) (Eq. F2's impact condition)."""
@@ -123,7 +123,7 @@ def _impact_time_d(row, which):
     return 0.5 / (row[E_SIDE] * (row[E_YD] - row[E_XD]))
 
 
-@njit(cache=True, error_model="numpy")
+@compiled(error_model="numpy")
 def _law_d(p, row, which):
     """∂(x, ẋ⁺, z, ẏ⁺)/∂p of the impact law at fixed velocities before it: in e, the generated
     ``main_velocity_after_d_e`` and ``impact_velocity_after_d_e`` (Eq. F2)."""
@@ -135,7 +135,7 @@ def _law_d(p, row, which):
     return out
 
 
-@njit(cache=True, error_model="numpy")
+@compiled(error_model="numpy")
 def _impact(p, row, J, which):
     """J through an impact: Step 9's saltation matrix, and the parameter column's explicit
     term (G·f⁻ − f⁺)·∂t/∂p plus the law's own derivative (G the impact law's Jacobian, f∓ the
@@ -180,7 +180,7 @@ def _impact(p, row, J, which):
     return out
 
 
-@njit(cache=True, error_model="numpy")
+@compiled(error_model="numpy")
 def _accumulation(p, impact, point, phi, J, flight, which):
     """J through an impact and the accumulation of its chatter (``J`` to just before the
     impact, ``phi`` the primary's Φ from the impact to the accumulation point, ``flight`` that
@@ -246,7 +246,7 @@ def _accumulation(p, impact, point, phi, J, flight, which):
     return out
 
 
-@njit(cache=True, error_model="numpy")
+@compiled(error_model="numpy")
 def rigid_jacobian(p, events, t_end, final_stuck, which, start, end_state):
     """The Jacobian (4×5: the state's columns, then ∂P/∂p for the parameter of code ``which``
     in :data:`PARAMETERS`, zero for -1) of the rigid map along the simulated motion ``events``

@@ -37,9 +37,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from ... import _interrupt, budgets
+from ..._compiled import compiled
 from ..._interrupt import EVERY, INTERRUPTED, stop_requested
 from ...free import _stepper
 from ...free._stepper import P_a, P_b, P_c1, P_k1, P_khz
@@ -87,7 +87,7 @@ def contact_potential(law: str, q: np.ndarray, delta: float) -> float:
     return _stepper.contact_potential(_stepper.LAWS[_base(law)], q, delta)
 
 
-@njit(cache=True)
+@compiled
 def _force(code, q, chi, delta, dd):
     """(F, ∂F/∂δ, ∂F/∂δ̇, the damping part) of the contact force [N] at penetration δ [m] and
     rate δ̇ [m/s]: the elastic laws of Eq. 8 (cubic aδ³ + bδ), Eq. 9 (Hertz k_hz·δ^1.5) and
@@ -111,7 +111,7 @@ def _force(code, q, chi, delta, dd):
     return fe + damp, fe_d, q[P_c1], damp
 
 
-@njit(cache=True)
+@compiled
 def _forces(code, q, chi, delta, dd):
     """:func:`_force` at each of the arrays ``delta`` and ``dd``: (F, ∂F/∂δ, ∂F/∂δ̇)."""
     n = delta.shape[0]
@@ -130,7 +130,7 @@ def forces(code: int, q: np.ndarray, chi: float, delta: np.ndarray, dd: np.ndarr
     return _forces(code, q, float(chi), delta, dd)
 
 
-@njit(cache=True)
+@compiled
 def _rhs(code, q, chi, p, side, t, w, out, n):
     """The contact's equations of motion (module docstring) at time t for the first ``n``
     components of w: the state, the ledger's rates and, with n = NW, Ψ' = AΨ."""
@@ -168,7 +168,7 @@ def _rhs(code, q, chi, p, side, t, w, out, n):
                 out[23], out[24], out[25], out[26] = r0, r1 + a_t, r2, r3
 
 
-@njit(cache=True)
+@compiled
 def _step(code, q, chi, p, side, t, w, k, h, n, tmp, out, kout, atol):
     """One Dormand–Prince step of length h from w at t, with k[0] = f(t, w) (kept): the state
     after it into ``out``, f there into ``kout``; returns the error norm of the motion (x, ẋ, y,
@@ -196,7 +196,7 @@ def _step(code, q, chi, p, side, t, w, k, h, n, tmp, out, kout, atol):
     return math.sqrt(err / 4.0)
 
 
-@njit(cache=True)
+@compiled
 def _locate(code, q, chi, p, side, t, w, k, h_hi, g_lo, g_hi, which, n, tmp, out, kout, atol):
     """The θ in (0, h_hi] at which event ``which`` vanishes on the step from w at t (re-stepped
     with the shorter length, Illinois regula falsi): δ (which 0, the contact's end) or ẋ (which
@@ -241,7 +241,7 @@ def _locate(code, q, chi, p, side, t, w, k, h_hi, g_lo, g_hi, which, n, tmp, out
     return hi
 
 
-@njit(cache=True)
+@compiled
 def _note_extreme(period_max, n_periods, T_f, t, x):
     """Raise the largest abs(x) of the forcing period holding t to abs(x)."""
     kk = int(math.floor(t / T_f))  # noqa: RUF046 (int() spelled out for numba)
@@ -249,7 +249,7 @@ def _note_extreme(period_max, n_periods, T_f, t, x):
         period_max[kk] = max(period_max[kk], abs(x))
 
 
-@njit(cache=True)
+@compiled
 def _contact(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sampled, dt_s,
              atol, work, slope, watch):  # fmt: skip
     """One contact phase from t with w (state, zeroed ledger, Ψ), to its end δ = 0 or t_end.
@@ -263,7 +263,7 @@ def _contact(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sa
                           np.zeros(NW))  # fmt: skip
 
 
-@njit(cache=True)
+@compiled
 def _contact_phase(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_periods, sampled, dt_s,
                    atol, work, slope, watch, k, kout, tmp, out, ev_out, ev_k):  # fmt: skip
     """:func:`_contact` with its scratch arrays (the stages ``k``, ``kout``, ``tmp``, ``out``,
@@ -359,7 +359,7 @@ def _contact_phase(code, q, chi, p, side, t, w, t_end, h, n, period_max, n_perio
         h = hstep * min(5.0, max(0.2, 0.9 * max(err, 1e-10) ** -0.2))
 
 
-@njit(cache=True)
+@compiled
 def _flight_field(p, t, x, v, u, out):
     """The flight's vector field (ẋ, ẍ, ẏ, ÿ) at t (Eq. F1; ÿ = 0)."""
     out[0] = v
@@ -368,7 +368,7 @@ def _flight_field(p, t, x, v, u, out):
     out[3] = 0.0
 
 
-@njit(cache=True)
+@compiled
 def _through_flight(p, tau, G, gt, fa, fb, side):
     """The derivatives (G = ∂state/∂s, gt = ∂t/∂s) carried through a flight of τ from event A
     (field ``fa``) to event B (field ``fb``) on the wall ``side`` (0: B is the run's end, a fixed
@@ -401,7 +401,7 @@ def _through_flight(p, tau, G, gt, fa, fb, side):
     return True
 
 
-@njit(cache=True)
+@compiled
 def _through_contact(w, G, gt, side, slope, ended):
     """The derivatives carried through a contact: Ψ and ψ_t (the located steps' exact
     derivatives with respect to the onset's state and time) applied to (G, gt); at an exit the
@@ -434,7 +434,7 @@ def _through_contact(w, G, gt, side, slope, ended):
     return True
 
 
-@njit(cache=True)
+@compiled
 def _fill_flight(p, t0, x0, v0, z0, u0, t1, sampled, dt_s):
     """The sampled states of the flight from (x0, v0, z0, u0) at t0 up to t1 (Eq. F1)."""
     n_samples = sampled.shape[0]
@@ -451,7 +451,7 @@ def _fill_flight(p, t0, x0, v0, z0, u0, t1, sampled, dt_s):
         sampled[ks, 3] = u0
 
 
-@njit(cache=True)
+@compiled
 def _run(code, q, chi, p, state0, t_end, max_events, samples, variational, budget, watch):
     """The compiled run (see :func:`run`)."""
     M, h = p[_rigid.P_M], p[_rigid.P_h]

@@ -82,8 +82,8 @@ import math
 from pathlib import Path
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ..._interrupt import EVERY, INTERRUPTED, stop_requested
 from ._borrowed import borrowed, borrowed_config
 from ._modal_flight import (
@@ -152,7 +152,7 @@ from ._rigid import (
 )
 
 
-@njit(cache=True)
+@compiled
 def _returns_at_once(cfg, Phi, md, stuck, xb, j, k, e, u, t, q, v_before, ed, vyd, limit, vt):
     """Whether stuck damper j, released by damper k's impulse (restitution e, mass speed u, the
     structure's velocities ``v_before``), would be back on its wall within ``limit`` [s]: its
@@ -179,7 +179,7 @@ def _returns_at_once(cfg, Phi, md, stuck, xb, j, k, e, u, t, q, v_before, ed, vy
     return sigma > 0.0 and a > 0.0 and 2.0 * sigma / (a * (1.0 - ed[j])) <= limit
 
 
-@njit(cache=True)
+@compiled
 def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v, vb):
     """Step 15's impact (Eq. F7) of a mass m with speed u on the point of shapes ``Phi[row]``, the
     structure's velocities ``v`` (changed in place) and the supports' ``vb`` (the point moves at
@@ -213,7 +213,7 @@ def _impulse(pm, cfg, nstuck, Phi, row, m, e, u, v, vb):
     return P, mu
 
 
-@njit(cache=True)
+@compiled
 def _wall_kept(stuck, z, hd, j):
     """The wall (±1) free damper j starts the next flight on where it sits on it, to 1e-9 of its
     half clearance (a mass let go, or met, at the instant of another's event), else 0.  Forgotten,
@@ -225,7 +225,7 @@ def _wall_kept(stuck, z, hd, j):
     return 1 if z[j] > 0.0 else -1
 
 
-@njit(cache=True)
+@compiled
 def _log(events, n_ev, t, x, xd, yd, s, vrel, lost, kind, xd1, yd1, k):
     events = _grow(events, n_ev)
     ev = events[n_ev]
@@ -238,7 +238,7 @@ def _log(events, n_ev, t, x, xd, yd, s, vrel, lost, kind, xd1, yd1, k):
 # --- the monodromy: the flights' transition matrices and the events' saltation matrices -------
 
 
-@njit(cache=True)
+@compiled
 def _flight_jacobian(pm, cfg, K, tau, G):
     """G ← Φ(τ)·G over a flight of τ: per mode Step 8's Φᵢ(τ) (the generated
     ``forced_transition``, which the forcing does not enter) while the modes are uncoupled, else
@@ -268,7 +268,7 @@ def _flight_jacobian(pm, cfg, K, tau, G):
     G[:, :] = F @ G
 
 
-@njit(cache=True)
+@compiled
 def _field(pm, cfg, K, t, q, v, u, out):
     """The state's rate f = (q̇, q̈, ẏ, 0) of the free masses' flight (q̈: each mode's Eq. F1, or
     the coupled structure's, :func:`_stuck_acceleration`)."""
@@ -287,7 +287,7 @@ def _field(pm, cfg, K, t, q, v, u, out):
         out[2 * N + K + k] = 0.0
 
 
-@njit(cache=True)
+@compiled
 def _saltation(DJ, fm, fp, gh, G):
     """G ← S·G with S = D + (f⁺ − D·f⁻)∇hᵀ/(∇h·f⁻): the jump's Jacobian D and the effect of the
     event's time, which moves with the state (h = 0 on the switching surface, f∓ the rates just
@@ -298,7 +298,7 @@ def _saltation(DJ, fm, fp, gh, G):
     G[:, :] = S @ G
 
 
-@njit(cache=True)
+@compiled
 def _timed_saltation(DJ, fm, fp, gh, gt, jt, G):
     """G ← S·G with S = D + (f⁺ − D·f⁻ − ∂J/∂t)∇hᵀ/(∇h·f⁻ + ∂h/∂t): :func:`_saltation` for a
     surface h and a jump J that move with time (a damper's wall on supports that move:
@@ -309,7 +309,7 @@ def _timed_saltation(DJ, fm, fp, gh, gt, jt, G):
     G[:, :] = S @ G
 
 
-@njit(cache=True)
+@compiled
 def _impact_jump(pm, cfg, Phi, k, K, m, e, mu):
     """D: the Jacobian of Step 15's impact law (Eq. F7) of damper k in the state (q, q̇, y, ẏ):
     q̇ += M_s⁻¹φ·P, ẏₖ −= P/m with P = (1 + e)μ(ẏₖ − φᵀq̇), linear in the speeds."""
@@ -335,7 +335,7 @@ def _impact_jump(pm, cfg, Phi, k, K, m, e, mu):
     return DJ
 
 
-@njit(cache=True)
+@compiled
 def _slaved(G, Phi, stuck, N, K):
     """G's rows of each stuck mass k set from its point: while it rides on it, yₖ = φₖᵀq + x_b ± dₖ/2
     and ẏₖ = φₖᵀq̇ + ẋ_b for every motion near this one, so at a fixed time δyₖ = φₖᵀδq and
@@ -352,7 +352,7 @@ def _slaved(G, Phi, stuck, N, K):
             G[2 * N + K + k, c] = du
 
 
-@njit(cache=True)
+@compiled
 def _accel_gradient(pm, cfg, Phi, row, t, xb, out):
     """∂A/∂t, with ∇A written into ``out`` (its q and q̇ entries; the rest 0): A = φᵀq̈ + ẍ_b, the
     acceleration of the point of row ``row`` of ``Phi``, q̈ = M_s⁻¹(Pcos θ + Qsin θ + f_s − C_sq̇
@@ -379,7 +379,7 @@ def _accel_gradient(pm, cfg, Phi, row, t, xb, out):
     return dt
 
 
-@njit(cache=True)
+@compiled
 def _accumulation_row(pm, cfg, Phi, k, K, t, s, w, a, delta, xb, r_i, fp, G, grad, r_inf):
     """r_inf ← δt∞, the row of the accumulation time's change in the run's starting state, for a
     chatter of damper k on its wall s that begins with the impact at t (Step 9's accumulation
@@ -404,14 +404,14 @@ def _accumulation_row(pm, cfg, Phi, k, K, t, s, w, a, delta, xb, r_i, fp, G, gra
     r_inf[:] = scale * r_i + grad @ G
 
 
-@njit(cache=True)
+@compiled
 def _kept_alive(owned, cfgs):
     """Nothing: its call at the end of :func:`run` keeps the run's own arrays and configurations
     alive until then, under the borrowed views the run works with (:mod:`._borrowed`)."""
     return len(owned) + len(cfgs)
 
 
-@njit(cache=True)
+@compiled
 def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se, q0, v0, y0, u0,
         Pout, xb, t0, t_end, max_events, variational, stuck0, held0, energy, watch):  # fmt: skip
     """Simulate the structure (modes: rows of ``pm0``, the one-mode parameter layout of
@@ -951,23 +951,14 @@ def run(pm0, Phi, md, hd, ed, vyd, law, chat, Sphi, sg, sside, sk, sc, srig, se,
     return status, events, n_ev, period_max, ledger, final, G
 
 
-@njit(cache=True)
-def one_mode_run(p, state0, t_end, max_events, variational, energy, watch):
-    """The paper's primary through :func:`run`: one mode of mass M and shape 1 (parameters
-    ``p`` in :mod:`symimpact.forced.engine._rigid`'s layout), one damper, from state0 = (x, ẋ, y, ẏ).
-    ``variational`` is passed on to :func:`run` as it came (callers give False: the one-mode
-    chain is built from the event log, :mod:`symimpact.forced.engine._chain`).  It is an argument, not
-    a constant written here, because numba compiles a callee once for each literal it is given:
-    a ``False`` typed here would compile the whole engine a second time (minutes on a 2-core
-    machine) beside the structure's own signature, which this one now shares; ``energy`` is
-    passed on so too.
-
-    Returns (status, events, n_events, period_max, ledger, final) in the one-mode layout: events
-    with :mod:`symimpact.forced.engine._rigid`'s ten columns, the largest abs(x) of every period, the
-    ledger's first three terms (no stops), final = (t, x, ẋ, y, ẏ, 1.0 if it ended stuck)."""
+@compiled
+def one_mode_arguments(p, state0, t_end, max_events, variational, energy, watch):
+    """:func:`run`'s arguments for the paper's primary: one mode of mass M and shape 1
+    (parameters ``p`` in :mod:`symimpact.forced.engine._rigid`'s layout), one damper, from
+    state0 = (x, ẋ, y, ẏ), no stop; the rest as :func:`run` takes them."""
     pm = p.reshape((1, p.shape[0])).copy()
     one = np.ones((1, 1))
-    status, events, n_ev, period_max, ledger, final, _ = run(
+    return (
         pm, one, np.array([p[P_m]]), np.array([p[P_h]]), np.array([p[P_e]]),
         np.array([p[P_VY]]), np.array([-1]), p[P_CHAT], np.zeros((0, 1)), np.zeros(0),
         np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
@@ -975,11 +966,32 @@ def one_mode_run(p, state0, t_end, max_events, variational, energy, watch):
         state0[2:3].copy(), state0[3:4].copy(), one, 0.0, 0.0, t_end, max_events, variational,
         np.zeros(1), np.zeros(0), energy, watch,
     )  # fmt: skip
+
+
+@compiled
+def one_mode_result(status, events, n_ev, period_max, ledger, final):
+    """:func:`run`'s result in the one-mode layout: (status, events with
+    :mod:`symimpact.forced.engine._rigid`'s ten columns, n_events, the largest abs(x) of every
+    period, the ledger's first three terms (no stops), final = (t, x, ẋ, y, ẏ, 1.0 if it ended
+    stuck))."""
     out = np.array([final[0], final[1], final[2], final[3], final[4], 0.0])
     if final[5] != 0.0:
         out[5] = 1.0
     return (status, events[:, :N_EVENT_COLS].copy(), n_ev, period_max[:, 0].copy(),
             ledger[:3].copy(), out)  # fmt: skip
+
+
+def one_mode_run(p, state0, t_end, max_events, variational, energy, watch):
+    """The paper's primary through :func:`run` (Step 8's flights, Step 9's impacts and
+    sticking): :func:`one_mode_arguments` in, :func:`one_mode_result` out.  Plain Python, so
+    that a one-mode run and a structure's share the one compiled :func:`run` (a compiled wrapper
+    is a second copy of the whole engine to optimise and emit: 19 s of one core on a fresh
+    clone).  Compiled code calls the three itself (:mod:`symimpact.forced.orbits._corrector`).
+    ``variational`` and ``energy`` are passed on to :func:`run` (callers give False for the
+    first: the one-mode chain is built from the event log, :mod:`symimpact.forced.engine._chain`)."""
+    args = one_mode_arguments(p, state0, t_end, max_events, variational, energy, watch)
+    status, events, n_ev, period_max, ledger, final, _ = run(*args)
+    return one_mode_result(status, events, n_ev, period_max, ledger, final)
 
 
 #: The engine's modules, in the order they import each other: the flight, the searches, the

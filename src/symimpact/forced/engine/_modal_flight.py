@@ -14,8 +14,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ...generated import forced_flight as _fl
 from ._borrowed import borrowed_config
 from ._rigid import (
@@ -34,7 +34,7 @@ from ._rigid import (
 )
 
 #: Eq. F1 in the flight's own time (Step 8's ``flight_form``): a, b, c, s of x, then of ẋ, σ, ω_d.
-_form = njit(cache=True)(_fl.flight_form_scalar)
+_form = compiled(_fl.flight_form_scalar)
 #: A flight's form cache (:func:`_free_states`), one per configuration: row i holds mode i's ten
 #: coefficients, its start (qᵢ, q̇ᵢ) and whether the form has them (0: an undamped mode driven
 #: at its own frequency, where Eq. F1 grows like t and has no such form); row N holds the
@@ -61,7 +61,7 @@ KIND_ONSET, KIND_EXIT = 3, 4
 # --- the flight: free modes (Eq. F1 each), or the stuck structure's closed form -----------------
 
 
-@njit(cache=True)
+@compiled
 def _mode_accel(pm, i, mass, t, x, v):
     """Mode i's q̈ᵢ (:func:`symimpact.forced.engine._rigid._accel` on row i of ``pm``)."""
     W, K, C = pm[i, P_W], pm[i, P_K], pm[i, P_C]
@@ -71,7 +71,7 @@ def _mode_accel(pm, i, mass, t, x, v):
     return (P * math.cos(th) + Q * math.sin(th) - C * v - K * x) / mass
 
 
-@njit(cache=True)
+@compiled
 def _mode_jerk(pm, i, mass, t, x, v):
     """Mode i's d³qᵢ/dt³ (:func:`symimpact.forced.engine._rigid._jerk` on row i of ``pm``)."""
     W, K, C = pm[i, P_W], pm[i, P_K], pm[i, P_C]
@@ -82,7 +82,7 @@ def _mode_jerk(pm, i, mass, t, x, v):
     return (W * (Q * math.cos(th) - P * math.sin(th)) - C * a - K * v) / mass
 
 
-@njit(cache=True)
+@compiled
 def _base_x(pm, xb, t):
     """x_b(t) = X_b·cos(Ωt + φ) [m], the supports' displacement (``xb``: X_b; 0 without base
     motion, then exactly 0)."""
@@ -91,7 +91,7 @@ def _base_x(pm, xb, t):
     return xb * math.cos(pm[0, P_W] * t + pm[0, P_PHI])
 
 
-@njit(cache=True)
+@compiled
 def _base_v(pm, xb, t):
     """ẋ_b(t) [m/s]."""
     if xb == 0.0:
@@ -99,7 +99,7 @@ def _base_v(pm, xb, t):
     return -xb * pm[0, P_W] * math.sin(pm[0, P_W] * t + pm[0, P_PHI])
 
 
-@njit(cache=True)
+@compiled
 def _base_a(pm, xb, t):
     """ẍ_b(t) [m/s²]."""
     if xb == 0.0:
@@ -108,7 +108,7 @@ def _base_a(pm, xb, t):
     return -xb * W * W * math.cos(W * t + pm[0, P_PHI])
 
 
-@njit(cache=True)
+@compiled
 def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb):
     """The structure with the dampers of ``stuck[k] != 0`` riding on it and the stops of
     ``contact[s] != 0`` pressed by it: M_s⁻¹, Λ, V, V⁻¹, X̂, K_s, C_s, f_s, q_s, M_s⁻¹
@@ -233,7 +233,7 @@ def _config(pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb):
 MAX_CONFIGS = 64
 
 
-@njit(cache=True)
+@compiled
 def _pattern(stuck, contact):
     """The pattern of stuck dampers and pressed stops as one number, each one's −1, 0 or 1 a
     base-3 digit; −1 where there are too many of them to encode (more than 39)."""
@@ -247,7 +247,7 @@ def _pattern(stuck, contact):
     return code
 
 
-@njit(cache=True)
+@compiled
 def _kept_config(keys, cfgs, pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb):
     """:func:`_config`, computed once per pattern of stuck dampers and pressed stops
     (:func:`_pattern`) in a run: a run's configurations differ only by that pattern, and a
@@ -267,7 +267,7 @@ def _kept_config(keys, cfgs, pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig
     return cfg
 
 
-@njit(cache=True)
+@compiled
 def _working_config(keys, cfgs, pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, srig, xb):
     """:func:`_kept_config` as :func:`run` works with it: borrowed (:mod:`._borrowed`) where
     ``cfgs`` keeps it, as computed where it does not (a pattern that cannot be encoded, or more
@@ -281,7 +281,7 @@ def _working_config(keys, cfgs, pm, Phi, md, stuck, Sphi, sk, sc, sg, contact, s
     return cfg
 
 
-@njit(cache=True)
+@compiled
 def _slowest(lam, masses, pm, W, decoupled):
     """max(Ω, the lowest damped frequency of the flight's modes) [rad/s]: the searches' and the
     periods' maxima's coarsest step is a sixteenth of its period (their bounds certify any step;
@@ -299,7 +299,7 @@ def _slowest(lam, masses, pm, W, decoupled):
     return W if w == math.inf else max(W, w)
 
 
-@njit(cache=True)
+@compiled
 def _mode_constants(pm, i, row):
     """Mode i's constants in a configuration (``pm`` its pm_s), written into columns 13 … of its
     form row (FORM_COLS) once per configuration, not once per flight: whether Eq. F1 has its
@@ -340,7 +340,7 @@ def _mode_constants(pm, i, row):
     row[FC_KMINUS], row[FC_KMINUS + 1] = k.real, k.imag
 
 
-@njit(cache=True)
+@compiled
 def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, masses, wmax,
           wlow):  # fmt: skip
     """The configuration tuple (mats, cplx, 2n, vecs, h, ok, decoupled, pm_s, ω_max, ω_low of
@@ -384,7 +384,7 @@ def _pack(Minv, Ks, Cs, Mfull, Pinv, lam, V, Vinv, Xhat, fs, qs, ok, decoupled, 
     return mats, cplx, n2, vecs, h, ok, decoupled, masses, wmax, wlow, form, held, lmax
 
 
-@njit(cache=True)
+@compiled
 def _pair_weights(lam):
     """wₗ for Re Σₗ wₗVₗcₗe^{λₗτ}, the coupled flight's sum (:func:`_held_free`): the state is
     real, so the terms of two conjugate eigenvalues are conjugate, and the sum is twice the real
@@ -414,7 +414,7 @@ def _pair_weights(lam):
     return w
 
 
-@njit(cache=True)
+@compiled
 def _modes_of(cfg):
     """(Λ, V, V⁻¹, X̂) of a coupled configuration (views into its packed array)."""
     cplx, n2 = cfg[1], cfg[2]
@@ -422,7 +422,7 @@ def _modes_of(cfg):
     return cplx[N2 + n2 + 1, :n2], cplx[:N2, :n2], cplx[N2 : N2 + n2, :N2], cplx[N2 + n2, :N2]
 
 
-@njit(cache=True)
+@compiled
 def _held_config(pm, Sphi, sg, contact, srig, held, Ms, Ks, Cs, fs, Minv, masses):
     """:func:`_config` while rigid stops are held on their walls: the reduced structure in the
     null space of the held points' shapes (:func:`_config`'s text)."""
@@ -489,7 +489,7 @@ def _held_config(pm, Sphi, sg, contact, srig, held, Ms, Ks, Cs, fs, Minv, masses
                  _slowest(lam, masses, pm, W, False))  # fmt: skip
 
 
-@njit(cache=True)
+@compiled
 def _coefficients(pm, cfg, t0, q0, v0):
     """c = V⁻¹(X₀ − X_p(t₀) − (q_s, 0)): the coupled flight's modal amplitudes from (q0, v0) at
     t0 (q_s: the pressed stops' static deflection, :func:`_config`)."""
@@ -504,7 +504,7 @@ def _coefficients(pm, cfg, t0, q0, v0):
     return _cmv(Vinv, X0)
 
 
-@njit(cache=True)
+@compiled
 def _cmv(A, x):
     """A·x for a complex matrix of any shape (a held structure's may have no column)."""
     out = np.zeros(A.shape[0], dtype=np.complex128)
@@ -516,7 +516,7 @@ def _cmv(A, x):
     return out
 
 
-@njit(cache=True)
+@compiled
 def _form_fresh(form, t0, q0, v0):
     """Whether the flight's form cache ``form`` (:func:`_free_states`) holds the flight from
     (q0, v0) at t0."""
@@ -529,7 +529,7 @@ def _form_fresh(form, t0, q0, v0):
     return True
 
 
-@njit(cache=True)
+@compiled
 def _free_states(pm, form, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) by Eq. F1 a time τ after (q0, v0) at t0, written into q and v, while
     the modes are uncoupled (:func:`_states`; the searches' and the ledger's innermost loops call
@@ -571,7 +571,7 @@ def _free_states(pm, form, t0, q0, v0, tau, q, v):
         v[i] = f[4] * cw + f[5] * sw + ex * (f[6] * cd + f[7] * sd)
 
 
-@njit(cache=True)
+@compiled
 def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     """Every mode's (qᵢ, q̇ᵢ) a time τ after (q0, v0) at t0, written into q and v: Eq. F1 per mode
     while no mass sticks, else the stuck structure's closed form (module text, :func:`_held_free`)."""
@@ -584,7 +584,7 @@ def _states(pm, cfg, nstuck, t0, q0, v0, tau, q, v):
     _held_free(pm, hf, cfg[1], cfg[2], cfg[3], tau, q, v)
 
 
-@njit(cache=True)
+@compiled
 def _held_fresh(hf, t0, q0, v0):
     """Whether the coupled flight's cache ``hf`` (:func:`_held_free`) holds the flight from
     (q0, v0) at t0."""
@@ -598,7 +598,7 @@ def _held_fresh(hf, t0, q0, v0):
     return True
 
 
-@njit(cache=True)
+@compiled
 def _sum_at_start(terms, weights, n2, const):
     """A coupled flight's sum at τ = 0 without its transcendentals, for one row ``terms`` of its
     columns (the cache's, :func:`_held_sum`, or a point's projection, :func:`_rows_at`; the
@@ -612,7 +612,7 @@ def _sum_at_start(terms, weights, n2, const):
     return acc
 
 
-@njit(cache=True)
+@compiled
 def _held_fill(pm, cfg, t0, q0, v0):
     """Fill the coupled flight's cache cfg[11] for the flight from (q0, v0) at t0
     (:func:`_held_free`)."""
@@ -636,14 +636,14 @@ def _held_fill(pm, cfg, t0, q0, v0):
     hf[N2 + 1, 1] = 1.0
 
 
-@njit(cache=True)
+@compiled
 def _growth(lam, tau):
     """(Re, Im) of e^{λτ}: one term of the coupled flight's sum (:func:`_held_free`)."""
     ex = math.exp(lam.real * tau)
     return ex * math.cos(lam.imag * tau), ex * math.sin(lam.imag * tau)
 
 
-@njit(cache=True)
+@compiled
 def _held_free(pm, hf, cplx, n2, vecs, tau, q, v):
     """The stuck (coupled) structure's (q, q̇) a time τ into the flight whose cache ``hf`` is
     filled (:func:`_held_fill`), written into q and v: X(τ) = Re Σₗ wₗ(Vₗcₗ)e^{λₗτ} +
@@ -664,7 +664,7 @@ def _held_free(pm, hf, cplx, n2, vecs, tau, q, v):
         v[i] = hf[N2, N + i].real + (v[i] - hf[N2, N + i].imag)
 
 
-@njit(cache=True)
+@compiled
 def _held_sum(pm, hf, cplx, n2, vecs, tau, q, v):
     """S(τ) of :func:`_held_free`, the coupled flight's closed form as its cache's terms sum it,
     written into q and v.  A search evaluates one flight at many τ: the columns wₗVₗcₗ and
@@ -689,7 +689,7 @@ def _held_sum(pm, hf, cplx, n2, vecs, tau, q, v):
             v[i] += hf[N + i, m].real * er - hf[N + i, m].imag * ei
 
 
-@njit(cache=True)
+@compiled
 def _held_rows(pm, cfg, shapes, t0, q0, v0, rows, out):
     """The coupled flight from (q0, v0) at t0 (:func:`_held_free`) projected on each point r of
     ``shapes`` (its row φᵣ), written into ``rows`` (R × 3 × (2N + 2), complex): for d = 0, 1, 2
@@ -731,7 +731,7 @@ def _held_rows(pm, cfg, shapes, t0, q0, v0, rows, out):
         out[r, 3] = _sum_at_start(rows[r, 0], hf[2 * N + 2], n2, c)  # :func:`_rows_at` at τ = 0
 
 
-@njit(cache=True)
+@compiled
 def _rows_at(rows, hf, cplx, n2, W, tau, out):
     """out[r, d] ← dᵈ(φᵣᵀq)/dτᵈ at τ into the flight, d = 0, 1, 2, for each point r of ``rows``
     (:func:`_held_rows`; ``hf``, ``cplx``, ``n2``: the configuration's cache, arrays and 2n,
@@ -754,7 +754,7 @@ def _rows_at(rows, hf, cplx, n2, W, tau, out):
                 out[r, d] += c.real * er - c.imag * ei
 
 
-@njit(cache=True)
+@compiled
 def _stuck_loads(pm, cfg, t, q, v):
     """r = Pcos θ + Qsin θ + f_s − C_sq̇ − K_sq of the coupled structure, P = F + K·X_b,
     Q = −CΩ·X_b per mode (Eq. F1's right side with the pressed stops' springs, dashpots and
@@ -776,7 +776,7 @@ def _stuck_loads(pm, cfg, t, q, v):
     return r
 
 
-@njit(cache=True)
+@compiled
 def _stuck_acceleration(cfg, r, i):
     """q̈ᵢ of the coupled structure: row i of M_s⁻¹r, r its loads (:func:`_stuck_loads`,
     computed once for all i)."""
@@ -787,7 +787,7 @@ def _stuck_acceleration(cfg, r, i):
     return g
 
 
-@njit(cache=True)
+@compiled
 def _free_point_accel(pm, Phi, row, t, q, v, xb):
     """ẍₐ = φᵀq̈ + ẍ_b at the point of row ``row`` of ``Phi`` while the modes are uncoupled: each
     mode's Eq. F1 (:func:`_point_accel`, without the configuration: see :func:`_free_states`)."""
@@ -797,7 +797,7 @@ def _free_point_accel(pm, Phi, row, t, q, v, xb):
     return a
 
 
-@njit(cache=True)
+@compiled
 def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     """ẍₐ = φᵀq̈ + ẍ_b at the point of row ``row`` of ``Phi`` (its shapes; ``xb``: X_b for the
     dampers' points, which move absolutely, 0 for a stop's, relative to the ground): each mode's
@@ -823,7 +823,7 @@ def _point_accel(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     return a
 
 
-@njit(cache=True)
+@compiled
 def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     """d³xₐ/dt³ = φᵀ d³q/dt³ + d³x_b/dt³."""
     N = pm.shape[0]
@@ -857,7 +857,7 @@ def _point_jerk(pm, cfg, nstuck, Phi, row, t, q, v, xb):
     return a
 
 
-@njit(cache=True)
+@compiled
 def _mode_accel_bound(p, f, c, sn, t0, x0, v0, T):
     """:func:`symimpact.forced.engine._rigid._accel_bound` of mode row ``p`` from its configuration's
     constants ``f`` (its form row, :func:`_mode_constants`) and cos θ, sin θ of the flight's
@@ -874,7 +874,7 @@ def _mode_accel_bound(p, f, c, sn, t0, x0, v0, T):
     return bound * (1.0 + 1e-9) + 1e-300
 
 
-@njit(cache=True)
+@compiled
 def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, rows, xb):
     """(A, B): for every damper's point, A ≥ |ẍₐ| and B ≥ |d⁴xₐ/dt⁴| over [t0, t0 + T] of the
     flight (module text), written into A and B (with the base's Ω²X_b and Ω⁴X_b).  ``rows``:
@@ -929,7 +929,7 @@ def _bounds(pm, cfg, nstuck, Phi, t0, q0, v0, T, A, B, rows, xb):
     return A, B
 
 
-@njit(cache=True)
+@compiled
 def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, rows, out, xb):
     """A τ up to which the wall ``side`` the damper of row ``row`` of ``Phi`` just left cannot be
     reached: :func:`symimpact.forced.engine._rigid._held_off` with the point's acceleration
@@ -975,7 +975,7 @@ def _held_off(pm, cfg, nstuck, Phi, row, t0, q0, v0, side, T, A, B, q, v, rows, 
     return tau
 
 
-@njit(cache=True)
+@compiled
 def _dot(Phi, row, v):
     out = 0.0
     for i in range(Phi.shape[1]):

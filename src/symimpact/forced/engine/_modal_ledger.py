@@ -12,8 +12,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ...free._stepper import secant_point
 from ._modal_flight import (
     FC_A,
@@ -61,7 +61,7 @@ from ._rigid import (
 _GL4_X, _GL4_W = np.polynomial.legendre.leggauss(4)
 
 
-@njit(cache=True)
+@compiled
 def _expint_series(z, tau):
     """τ·Σₙ zⁿ/(n + 1)! = (e^z − 1)/z·τ for abs(z) < 0.5, z = κτ, by Horner's rule up to the
     last power whose next term a^(n+1)/(n + 2)! (a = abs(Re z) + abs(Im z) ≥ abs(z)) falls
@@ -79,7 +79,7 @@ def _expint_series(z, tau):
     return tau * acc
 
 
-@njit(cache=True)
+@compiled
 def _expint(k, tau, ek):
     """∫₀^τ e^{κt} dt = (e^{κτ} − 1)/κ for a complex κ from ek = e^{κτ}, by its series where κτ is
     small (there the quotient would cancel, :func:`_expint_series`; a chatter's flights are
@@ -90,7 +90,7 @@ def _expint(k, tau, ek):
     return (ek - 1.0) / k
 
 
-@njit(cache=True)
+@compiled
 def _expint_by(kinv, z, tau, ek):
     """:func:`_expint` with z = κτ and 1/κ given (a mode's constants, :func:`_mode_constants`):
     a product where the quotient was."""
@@ -99,7 +99,7 @@ def _expint_by(kinv, z, tau, ek):
     return (ek - 1.0) * kinv
 
 
-@njit(cache=True)
+@compiled
 def _pair(x0, x1, y0, y1, E0, E1, E2, E3, E4, E5):
     """∫₀^τ Re(x₀e^{μt} + x₁e^{iΩt})·Re(y₀e^{μt} + y₁e^{iΩt}) dt from E₀ … E₅ = ∫ e^{κt} over the
     exponents κ = 2μ, μ + μ̄, μ + iΩ, μ − iΩ, 2iΩ, 0 (Re a·Re b = (Re ab + Re ab̄)/2); scalars,
@@ -116,7 +116,7 @@ def _pair(x0, x1, y0, y1, E0, E1, E2, E3, E4, E5):
     )
 
 
-@njit(cache=True)
+@compiled
 def _mode_ledger(pm, i, t0, x0, v0, tau):
     """(work of mode i's force, dissipation of its Cᵢ) over the flight [t0, t0 + τ] of Eq. F1 in
     closed form, or (NaN, NaN) where Eq. F1 takes another form (at or next to the undamped
@@ -134,7 +134,7 @@ def _mode_ledger(pm, i, t0, x0, v0, tau):
     return _mode_ledger_at(pm, i, f, x0, v0, tau, math.cos(th), math.sin(th), eW, E4)
 
 
-@njit(cache=True)
+@compiled
 def _mode_ledger_at(pm, i, f, x0, v0, tau, c, sn, eW, E4):
     """:func:`_mode_ledger` from mode i's constants ``f`` (its form row, :func:`_mode_constants`)
     with cos θ₀, sin θ₀ of the flight's start, e^{iΩτ} and E4 = ∫₀^τ e^{2iΩt} dt given (the
@@ -175,7 +175,7 @@ def _mode_ledger_at(pm, i, f, x0, v0, tau, c, sn, eW, E4):
     return work, C * _pair(rel_0, rel_1, rel_0, rel_1, E0, E1, E2, E3, E4, E5)
 
 
-@njit(cache=True)
+@compiled
 def _product_integral(x, y, E, Eh, same):
     """∫₀^τ Re(Σ_c x_c e^{μ_c t})·Re(Σ_d y_d e^{μ_d t}) dt = ½ Σ_cd Re(x_c y_d E_cd + x_c ȳ_d Ē'_cd)
     (Re a·Re b = (Re ab + Re ab̄)/2) from E_cd = ∫ e^{(μ_c + μ_d)t} and Eh_cd = ∫ e^{(μ_c + μ̄_d)t}
@@ -197,7 +197,7 @@ def _product_integral(x, y, E, Eh, same):
     return 0.5 * acc
 
 
-@njit(cache=True)
+@compiled
 def _held_ledger(pm, cfg, t0, q0, v0, tau, ledger, Sphi, sc, contact):
     """The coupled flight's ledger (:func:`_flight_ledger`'s integrals) in closed form: q and q̇ are
     sums Re Σ_c x_c e^{μ_c τ} over the flight's kept eigenvalues λₗ, the forcing's iΩ and a
@@ -296,7 +296,7 @@ def _held_ledger(pm, cfg, t0, q0, v0, tau, ledger, Sphi, sc, contact):
         ledger[3] += sc[r] * _product_integral(rel, rel, E, Eh, True)
 
 
-@njit(cache=True)
+@compiled
 def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, contact, dec):
     """The energy ledger over the flight [t0, t0 + τ] (:func:`_segment`, which calls it with
     ``energy``): the work of the modal forces and the dissipation of the Cᵢ (ledger[0],
@@ -367,7 +367,7 @@ def _flight_ledger(pm, cfg, nstuck, t0, q0, v0, tau, ledger, work, Sphi, sc, con
                             ledger[3] += 0.5 * hs * weight * sc[r] * rate * rate
 
 
-@njit(cache=True)
+@compiled
 def _segment(pm, cfg, nstuck, Pout, t0, q0, v0, tau, ledger, period_max, n_periods, work, Sphi,
              sc, contact, rows, out, xb, energy):  # fmt: skip
     """Account for the flight [t0, t0 + τ]: with ``energy``, its energy ledger

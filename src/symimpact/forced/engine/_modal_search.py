@@ -13,8 +13,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ..._interrupt import EVERY, stop_requested
 from ...free._stepper import secant_point
 from ._modal_flight import (
@@ -51,7 +51,7 @@ _INV_N = np.array([0.0] + [1.0 / n for n in range(1, 30)])
 TAYLOR_MAX = 24
 
 
-@njit(cache=True)
+@compiled
 def _point_taylor(pm, cfg, Phi, row, t0, q0, v0, c, h, rows, xb, poly, extra):
     """The degree n and poly[0 … n] of the Taylor polynomial of the point's displacement since
     the flight's start, dx(c + ς) = x_b(t0 + c + ς) − x_b(t0) + φᵀ(q(c + ς) − q0) ≈ Σₖ polyₖςᵏ
@@ -148,7 +148,7 @@ def _point_taylor(pm, cfg, Phi, row, t0, q0, v0, c, h, rows, xb, poly, extra):
     return n
 
 
-@njit(cache=True)
+@compiled
 def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb, q, v, rows, out,
             xb):  # fmt: skip
     """The first τ in (lo, hi] where s·z reaches h (z(lo) = za inside, z(hi) = zb beyond), by
@@ -202,7 +202,7 @@ def _refine(pm, cfg, nstuck, Phi, row, h, t0, q0, v0, z0, u0, s, lo, hi, za, zb,
     return hi
 
 
-@njit(cache=True)
+@compiled
 def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau_safe, A, tau, za,
                  which, wall, tk, q, v, rows, out, xb):  # fmt: skip
     """Whether no free damper meets a wall in [τ, τₖ) when damper ``which`` meets wall ``wall``
@@ -266,7 +266,7 @@ def _none_before(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, tau
     return True
 
 
-@njit(cache=True)
+@compiled
 def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, watch, work, rows,
                  out, xb):  # fmt: skip
     """(τ, damper, side): the first τ in (0, T] at which a free damper's abs(z) reaches its half
@@ -385,7 +385,7 @@ def _next_impact(pm, cfg, nstuck, stuck, Phi, hd, t0, q0, v0, z0, u0, side0, T, 
     return T, -1, 0
 
 
-@njit(cache=True)
+@compiled
 def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_wall, t0, q0, v0,
                   T, watch, work):  # fmt: skip
     """(τ, stop, wall): the first τ in (0, T] at which a stop's contact begins (its point xₛ,
@@ -496,7 +496,7 @@ def _next_contact(pm, cfg, nstuck, Sphi, sg, sside, contact, srig, fresh, fresh_
     return T, -1, 0
 
 
-@njit(cache=True)
+@compiled
 def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, rows, out, xb):
     """(τ, damper): the first τ in (0, T] where a stuck damper's g = sₖ·ẍₐ turns positive (its
     wall would pull; ẍₐ the point's absolute acceleration, with ẍ_b), or (T, −1) (or the τ
@@ -582,7 +582,7 @@ def _release(pm, cfg, nstuck, stuck, Phi, t0, q0, v0, T, watch, work, rows, out,
     return T, -1
 
 
-@njit(cache=True)
+@compiled
 def _held_pulls(pm, cfg, Sphi, contact, srig, t, q, v, out):
     """For each held rigid stop (in their order), w·λ: its wall's reaction force λ on the
     structure times the wall's side w; positive where the wall would have to pull
@@ -609,7 +609,7 @@ def _held_pulls(pm, cfg, Sphi, contact, srig, t, q, v, out):
     return _held_reactions(cfg, Sphi, contact, srig, Mf, out)
 
 
-@njit(cache=True)
+@compiled
 def _held_reactions(cfg, Sphi, contact, srig, Mf, out):
     """w·λ for each held rigid stop from the unconstrained response M_s⁻¹f (or M_s⁻¹φP of an
     impulse): λ = −(ΦₕM_s⁻¹Φₕᵀ)⁻¹Φₕ·M_s⁻¹f.  Returns the number of held stops."""
@@ -631,7 +631,7 @@ def _held_reactions(cfg, Sphi, contact, srig, Mf, out):
     return h
 
 
-@njit(cache=True)
+@compiled
 def _row_response(cfg, Phi, row, P):
     """M_s⁻¹φP: the unconstrained response to an impulse P at the point of row ``row``."""
     Mfull = cfg[0][3]
@@ -643,7 +643,7 @@ def _row_response(cfg, Phi, row, P):
     return out
 
 
-@njit(cache=True)
+@compiled
 def _held_index(contact, srig, i):
     """The stop of the i-th held rigid stop."""
     j = 0
@@ -655,7 +655,7 @@ def _held_index(contact, srig, i):
     return -1
 
 
-@njit(cache=True)
+@compiled
 def _stop_release(pm, cfg, Sphi, contact, srig, t0, q0, v0, T, watch, work):
     """(τ, stop): the first τ in (0, T] where a held rigid stop's wall would pull
     (:func:`_held_pulls` turns positive), or (T, −1) (or the τ reached on a signal)."""
@@ -706,7 +706,7 @@ def _stop_release(pm, cfg, Sphi, contact, srig, t0, q0, v0, T, watch, work):
     return T, -1
 
 
-@njit(cache=True)
+@compiled
 def _stop_impulse(pm, cfg, Sphi, s, e, v):
     """A rigid impact of the point of stop s on its wall, Newton's law with restitution e at the
     point: φᵀq̇⁺ = −e·φᵀq̇⁻ through J = −(1 + e)φᵀq̇/(φᵀM_s⁻¹φ), q̇ += M_s⁻¹φJ (M_s⁻¹ the
@@ -730,7 +730,7 @@ def _stop_impulse(pm, cfg, Sphi, s, e, v):
     return J, 1.0 / inv
 
 
-@njit(cache=True)
+@compiled
 def _stop_jump(pm, cfg, Sphi, s, K, e):
     """D: the Jacobian of a rigid stop's impact law (:func:`_stop_impulse`) in the state
     (q, q̇, y, ẏ): q̇⁺ = q̇ − (1 + e)·w·φᵀq̇/(φᵀw), w = M_s⁻¹φ."""

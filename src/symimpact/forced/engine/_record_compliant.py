@@ -25,8 +25,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ..._interrupt import EVERY, INTERRUPTED, stop_requested
 from ...free import _stepper
 from . import _compliant as _cp
@@ -39,7 +39,7 @@ MAX_CONTACT_STEPS = _cp.MAX_CONTACT_STEPS
 NW = 7  # x, ẋ, y, ẏ (relative to the base under a base acceleration); work, C's, contact's
 
 
-@njit(cache=True)
+@compiled
 def _rhs(code, q, chi, p, side, q0, qd, s, w, out):
     """The contact's equations (module docstring) s into the piece whose record line is
     q0 + qd·s, and the ledger's rates."""
@@ -64,7 +64,7 @@ def _rhs(code, q, chi, p, side, q0, qd, s, w, out):
     out[6] = damp * dd
 
 
-@njit(cache=True)
+@compiled
 def _step(code, q, chi, p, side, q0, qd, s, w, k, h, tmp, out, kout, atol):
     """One Dormand–Prince step of length h from w at s (k[0] = f there, kept): the state after it
     into ``out``, f there into ``kout``; returns the error norm of the motion."""
@@ -91,7 +91,7 @@ def _step(code, q, chi, p, side, q0, qd, s, w, k, h, tmp, out, kout, atol):
     return math.sqrt(err / 4.0)
 
 
-@njit(cache=True)
+@compiled
 def _exit(code, q, chi, p, side, q0, qd, s, w, k, h_hi, g_lo, g_hi, tmp, out, kout, atol):
     """The θ in (0, h_hi] at which δ returns to 0 on the step from w at s (re-stepped with the
     shorter length; Illinois regula falsi, bisecting until a point inside is found when the step
@@ -131,7 +131,7 @@ def _exit(code, q, chi, p, side, q0, qd, s, w, k, h_hi, g_lo, g_hi, tmp, out, ko
     return hi
 
 
-@njit(cache=True)
+@compiled
 def _contact(code, q, chi, p, side, q0, qd, w, L, h, atol, counts):
     """The contact on ``side`` from w (state and ledger) at the start of a piece of length L
     whose record line is q0 + qd·s, to its end δ = 0 or to L.  w is updated in place.  Returns
@@ -191,7 +191,7 @@ def _contact(code, q, chi, p, side, q0, qd, w, L, h, atol, counts):
             h = nxt
 
 
-@njit(cache=True)
+@compiled
 def run(code, q, chi, p, rec, dt, state0, max_events, watch):
     """Simulate from state0 = (x, ẋ, z, ẏ) at t = 0 (relative to the base under a base
     acceleration; z = y − x; a start inside a wall starts a contact) over the record ``rec``

@@ -46,8 +46,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ..._interrupt import EVERY, INTERRUPTED, stop_requested
 from ...free._stepper import secant_point
 from ...generated import sampled_load as _sl
@@ -69,18 +69,18 @@ OK, TOO_MANY_EVENTS = 0, 1
 #: acceleration scale (ω_n²R + |a_b|): rounding alone releases nothing.
 RELEASE = 1e-12
 
-_ramp = njit(cache=True)(_sl.ramp_state_scalar)
+_ramp = compiled(_sl.ramp_state_scalar)
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
 
 
-@njit(cache=True)
+@compiled
 def _base_inertia(p, mu):
     """The mass the base's acceleration loads through the moving mass ``mu`` (M, or M + m
     riding): Γ·M + (mu − M) = mu + (Γ − 1)·M, exactly mu for Γ = 1."""
     return mu + (p[P_GAMMA] - 1.0) * p[P_M]
 
 
-@njit(cache=True)
+@compiled
 def _loads(p, mu, q0, qd):
     """(p0, ṗ, g0, ġ): the load on the moving mass ``mu`` and the impact mass's acceleration
     relative to the base, at the piece's start and their slopes, for the record's line q0 + qd·τ.
@@ -92,7 +92,7 @@ def _loads(p, mu, q0, qd):
     return q0, qd, 0.0, 0.0
 
 
-@njit(cache=True)
+@compiled
 def _decay(mu, K, C, p0, pd, x0, v0):
     """(R, ω_n): the amplitude of the decaying part of Eq. F8's flight and the natural frequency."""
     sigma = C / (2.0 * mu)
@@ -103,14 +103,14 @@ def _decay(mu, K, C, p0, pd, x0, v0):
     return math.sqrt(dx * dx + ((dv + sigma * dx) / wd) ** 2), math.sqrt(wn2)
 
 
-@njit(cache=True)
+@compiled
 def _z(mu, K, C, p0, pd, g0, gd, x0, v0, z0, u0, s):
     """z = y − x a time s into the piece."""
     x, _ = _ramp(s, mu, K, C, p0, pd, x0, v0)
     return z0 + u0 * s + g0 * s * s / 2.0 + gd * s * s * s / 6.0 - (x - x0)
 
 
-@njit(cache=True)
+@compiled
 def _wall_safe(h, side, mu, K, C, p0, pd, g0, gd, x0, v0, z0, u0, A, J, Q):
     """A stretch from the piece's start on which the wall ``side`` is certainly not reached, when
     the piece starts on it (module docstring); 0 otherwise."""
@@ -135,7 +135,7 @@ def _wall_safe(h, side, mu, K, C, p0, pd, g0, gd, x0, v0, z0, u0, A, J, Q):
     return 0.5 * r
 
 
-@njit(cache=True)
+@compiled
 def _value(which, p, side, mu, p0, pd, g0, gd, x0, v0, z0, u0, level, s):
     """s into the piece: side·z − level (``which`` 0: the gap to the wall ``side``) or the stuck
     pair's side·ẍ_abs − level (``which`` 1: the pull the wall would need)."""
@@ -144,7 +144,7 @@ def _value(which, p, side, mu, p0, pd, g0, gd, x0, v0, z0, u0, level, s):
     return _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, s) - level
 
 
-@njit(cache=True)
+@compiled
 def _first_root(which, p, side, mu, p0, pd, g0, gd, x0, v0, z0, u0, level, lo, hi, flo, fhi):
     """Where :func:`_value` reaches 0 in (lo, hi], bracketed by flo < 0 ≤ fhi: Illinois regula
     falsi to 4e-16 of the time (the bracket's end on the reached side is returned)."""
@@ -167,7 +167,7 @@ def _first_root(which, p, side, mu, p0, pd, g0, gd, x0, v0, z0, u0, level, lo, h
     return hi
 
 
-@njit(cache=True)
+@compiled
 def _next_impact(p, mu, p0, pd, g0, gd, x0, v0, z0, u0, side0, L):
     """(s, side): the first s in (0, L] with abs(z) = d/2 in the piece, and its wall; (L, 0) when
     there is none.  ``side0`` is the wall the piece starts on (0: none)."""
@@ -206,7 +206,7 @@ def _next_impact(p, mu, p0, pd, g0, gd, x0, v0, z0, u0, side0, L):
     return L, 0
 
 
-@njit(cache=True)
+@compiled
 def _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, s):
     """side·ẍ_abs of the stuck pair s into the piece: ẍ − g, g the impact mass's acceleration
     relative to the base (−a_b); positive where the wall would have to pull."""
@@ -214,7 +214,7 @@ def _stuck_sign(p, side, mu, p0, pd, g0, gd, x0, v0, s):
     return side * ((p0 + pd * s - p[P_C] * v - p[P_K] * x) / mu - (g0 + gd * s))
 
 
-@njit(cache=True)
+@compiled
 def _release(p, side, mu, p0, pd, g0, gd, x0, v0, L):
     """s in [0, L] where the stuck pair's side·ẍ_abs first turns positive, or L (module
     docstring: certified with |d²ẍ_abs/dτ²| ≤ ω_n⁴R)."""
@@ -250,7 +250,7 @@ def _release(p, side, mu, p0, pd, g0, gd, x0, v0, L):
     return L
 
 
-@njit(cache=True)
+@compiled
 def _account(p, mu, stuck, p0, pd, g0, gd, x0, v0, u0, L, ledger):
     """Add the load's work and C's dissipation over the piece [0, L] to ledger[0], ledger[1]."""
     K, C = p[P_K], p[P_C]
@@ -273,7 +273,7 @@ def _account(p, mu, stuck, p0, pd, g0, gd, x0, v0, u0, L, ledger):
             ledger[1] += wq * C * v * v
 
 
-@njit(cache=True)
+@compiled
 def _grow(a, n):
     """``a`` if it has a row ``n``, else a copy with twice the rows."""
     if n < a.shape[0]:
@@ -283,7 +283,7 @@ def _grow(a, n):
     return b
 
 
-@njit(cache=True)
+@compiled
 def run(p, q, dt, state0, max_events, watch):
     """Simulate from state0 = (x, ẋ, z, ẏ) at t = 0 (relative to the base under a base
     acceleration; z = y − x) over the record ``q`` sampled every ``dt`` (or until a signal is

@@ -31,8 +31,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ..._interrupt import EVERY, stop_requested
 from ...free._stepper import secant_point
 from ...generated import forced_flight as _fl
@@ -49,32 +49,32 @@ N_EVENT_COLS = 10
 KIND_IMPACT, KIND_ACCUMULATION, KIND_RELEASE = 0, 1, 2
 OK, TOO_MANY_EVENTS = 0, 1
 
-_xf = njit(cache=True)(_fl.forced_displacement_scalar)
-_vf = njit(cache=True)(_fl.forced_velocity_scalar)
+_xf = compiled(_fl.forced_displacement_scalar)
+_vf = compiled(_fl.forced_velocity_scalar)
 # both at once, their common subexpressions computed once (122 operations against 189): the
 # structure engine's state (:mod:`._modal`), 1.55 times as fast as the pair in a numba loop of
 # 10 modes (measured); they differ from the pair by rounding (2.7e-14 relative at most over 2000
 # random flights), and the compliant engine keeps the pair: its 300-period transients in the
 # tests of test_compliant_orbits.py reach other states under that rounding
-_xvf = njit(cache=True)(_fl.forced_state_scalar)
+_xvf = compiled(_fl.forced_state_scalar)
 # the flight's transition matrix: the generated derivatives of x(t), ẋ(t) in x0, ẋ0, bundled
-_transition = njit(cache=True)(_fl.forced_transition_scalar)
+_transition = compiled(_fl.forced_transition_scalar)
 # and its derivatives in the forcing, for the map's ∂P/∂p
-_xf_F0 = njit(cache=True)(_fl.forced_displacement_d_F0_scalar)
-_vf_F0 = njit(cache=True)(_fl.forced_velocity_d_F0_scalar)
-_xf_Xb = njit(cache=True)(_fl.forced_displacement_d_X_b_scalar)
-_vf_Xb = njit(cache=True)(_fl.forced_velocity_d_X_b_scalar)
-_xf_W = njit(cache=True)(_fl.forced_displacement_d_Omega_scalar)
-_vf_W = njit(cache=True)(_fl.forced_velocity_d_Omega_scalar)
-_xf_phi = njit(cache=True)(_fl.forced_displacement_d_phi_scalar)
-_vf_phi = njit(cache=True)(_fl.forced_velocity_d_phi_scalar)
-_steady_cos = njit(cache=True)(_fl.steady_cosine_scalar)
-_steady_sin = njit(cache=True)(_fl.steady_sine_scalar)
-_thornton = njit(cache=True)(_hz.thornton_restitution_scalar)
-_thornton_slope = njit(cache=True)(_hz.thornton_separation_slope_scalar)
+_xf_F0 = compiled(_fl.forced_displacement_d_F0_scalar)
+_vf_F0 = compiled(_fl.forced_velocity_d_F0_scalar)
+_xf_Xb = compiled(_fl.forced_displacement_d_X_b_scalar)
+_vf_Xb = compiled(_fl.forced_velocity_d_X_b_scalar)
+_xf_W = compiled(_fl.forced_displacement_d_Omega_scalar)
+_vf_W = compiled(_fl.forced_velocity_d_Omega_scalar)
+_xf_phi = compiled(_fl.forced_displacement_d_phi_scalar)
+_vf_phi = compiled(_fl.forced_velocity_d_phi_scalar)
+_steady_cos = compiled(_fl.steady_cosine_scalar)
+_steady_sin = compiled(_fl.steady_sine_scalar)
+_thornton = compiled(_hz.thornton_restitution_scalar)
+_thornton_slope = compiled(_hz.thornton_separation_slope_scalar)
 
 
-@njit(cache=True)
+@compiled
 def restitution(e, vy, vrel):
     """e of an impact at approach speed ``vrel`` [m/s]: the constant ``e`` where ``vy`` is 0,
     else 1 at or below the yield speed ``vy`` and Thornton's e(vy/vrel) above it (Eq. F5)."""
@@ -85,7 +85,7 @@ def restitution(e, vy, vrel):
     return _thornton(vy / vrel)
 
 
-@njit(cache=True)
+@compiled
 def restitution_slope(e, vy, vrel):
     """ê = d(e·w)/dw, the separation speed's slope in the approach speed ``vrel`` [m/s] (Step
     13): ``e`` where ``vy`` is 0 (a constant e), 1 at or below the yield speed ``vy``,
@@ -101,13 +101,13 @@ def restitution_slope(e, vy, vrel):
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
 
 
-@njit(cache=True)
+@compiled
 def _phase(p, t):
     """Forcing phase Ωt + φ at time t, reduced to [0, 2π)."""
     return (p[P_W] * t + p[P_PHI]) % (2.0 * math.pi)
 
 
-@njit(cache=True)
+@compiled
 def _state(p, mass, t0, x0, v0, tau):
     """Primary's (x, ẋ) a time τ after (x0, v0) at t0, for a moving mass ``mass`` (Eq. F1)."""
     th = _phase(p, t0)
@@ -115,7 +115,7 @@ def _state(p, mass, t0, x0, v0, tau):
     return _xf(tau, *args), _vf(tau, *args)
 
 
-@njit(cache=True)
+@compiled
 def flight_matrices(taus, masses, K, C):
     """Φ(τ) of flights (Step 8, Eq. F1: ∂(x, ẋ)/∂(x0, ẋ0), the generated derivative kernels
     ``forced_displacement_d_x0`` … ``forced_velocity_d_xdot0`` in their bundle
@@ -132,7 +132,7 @@ def flight_matrices(taus, masses, K, C):
     return out
 
 
-@njit(cache=True)
+@compiled
 def flight_parameter_terms(times, masses, xa, va, K, C, F0, X_b, W, phi, which):
     """∂(x, ẋ)/∂p at the end of each flight from its fixed start (time ``times[i]``, state
     ``xa[i]``, ``va[i]``, moving mass ``masses[i]``) to ``times[i + 1]``, the generated
@@ -159,7 +159,7 @@ def flight_parameter_terms(times, masses, xa, va, K, C, F0, X_b, W, phi, which):
     return out
 
 
-@njit(cache=True)
+@compiled
 def _accel(p, mass, t, x, v):
     """ẍ from the equation of motion: (P cos θ + Q sin θ − Cẋ − Kx)/mass (Eq. F1's left side)."""
     th = p[P_W] * t + p[P_PHI]
@@ -168,7 +168,7 @@ def _accel(p, mass, t, x, v):
     return (P * math.cos(th) + Q * math.sin(th) - p[P_C] * v - p[P_K] * x) / mass
 
 
-@njit(cache=True)
+@compiled
 def _jerk(p, mass, t, x, v):
     """d³x/dt³, the derivative of :func:`_accel` along the flight."""
     th = p[P_W] * t + p[P_PHI]
@@ -178,7 +178,7 @@ def _jerk(p, mass, t, x, v):
     return (p[P_W] * (Q * math.cos(th) - P * math.sin(th)) - p[P_C] * a - p[P_K] * v) / mass
 
 
-@njit(cache=True)
+@compiled
 def _accel_bound(p, mass, t0, x0, v0, span):
     """A ≥ |ẍ| over [t0, t0 + span] of the flight from (x0, v0) (module docstring)."""
     M, K, C, W = mass, p[P_K], p[P_C], p[P_W]
@@ -204,14 +204,14 @@ def _accel_bound(p, mass, t0, x0, v0, span):
     return bound * (1.0 + 1e-9) + 1e-300
 
 
-@njit(cache=True)
+@compiled
 def _z(p, t0, x0, v0, z0, u0, tau):
     """z = y − x a time τ into the flight: z0 + u0·τ − (x(τ) − x0)."""
     x, _ = _state(p, p[P_M], t0, x0, v0, tau)
     return z0 + u0 * tau - (x - x0)
 
 
-@njit(cache=True)
+@compiled
 def _held_off(p, t0, x0, v0, side, fd0, T):
     """A τ up to which the wall ``side`` just left cannot be reached: while side·ẍ ≥ 0 the
     relative coordinate f = side·z − d/2 is concave, and with f(0) = 0, f'(0) = fd0 ≤ 0 it stays
@@ -259,7 +259,7 @@ def _held_off(p, t0, x0, v0, side, fd0, T):
     return tau
 
 
-@njit(cache=True)
+@compiled
 def _next_impact(p, t0, x0, v0, z0, u0, side0, T, watch):
     """(τ, side): the first τ in (0, T] with abs(z) = d/2 in the flight from the state at t0, and
     its wall (+1 or −1); (T, 0) when there is none.  ``side0`` is the wall the flight starts on
@@ -326,7 +326,7 @@ def _next_impact(p, t0, x0, v0, z0, u0, side0, T, watch):
     return T, 0
 
 
-@njit(cache=True)
+@compiled
 def _segment(p, mass, t0, x0, v0, tau, ledger, period_max, n_periods):
     """Account for the segment [t0, t0 + τ] of the primary (moving mass ``mass``): the work of
     the forcing and the dissipation of C (ledger[0], ledger[1]) and the largest abs(x) of every
@@ -384,7 +384,7 @@ def _segment(p, mass, t0, x0, v0, tau, ledger, period_max, n_periods):
         v_prev = v_b
 
 
-@njit(cache=True)
+@compiled
 def states_at(ev, times, initial, final_stuck, h, M, m, K, C, F0, X_b, W, phi):
     """The states (x, ẋ, z = y − x, ẏ) at ``times`` [s] of a run whose event log is ``ev``,
     started at ``initial`` (x, ẋ, y, ẏ) at t = 0: the closed-form flight (Eq. F1, the forcing
@@ -412,7 +412,7 @@ def states_at(ev, times, initial, final_stuck, h, M, m, K, C, F0, X_b, W, phi):
     return out
 
 
-@njit(cache=True)
+@compiled
 def _grow(a, n):
     """``a`` if it has a row ``n``, else a copy with twice the rows."""
     if n < a.shape[0]:

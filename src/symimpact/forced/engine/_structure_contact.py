@@ -46,8 +46,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ...free._stepper import secant_point
 from ._compliant import _DP_A, _DP_B, _DP_C, _DP_E, RTOL, _force
 from ._rigid import P_C, P_F0, P_K, P_M, P_PHI, P_W, P_XB
@@ -70,7 +70,7 @@ RIGID = -1
 STUCK = -2
 
 
-@njit(cache=True)
+@compiled
 def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K, Ainv):
     """(q̇, q̈, ẏ, ÿ, the ledger's rates) at time t (module text): the ledger's rates are the
     power of the modal forces (with the masses' inertia −mₖẍ_b under base motion, the ledger
@@ -168,7 +168,7 @@ def _rhs(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, out, N, K, Ainv):
     out[2 * N + 2 * K + 3] = d_s
 
 
-@njit(cache=True)
+@compiled
 def _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, n, tmp, out, kout, atol, N, K,
           Ainv):  # fmt: skip
     """One Dormand–Prince step of length h from w at t, kk[0] = f(t, w): the state after it in
@@ -198,7 +198,7 @@ def _step(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h, n, tmp, out, kou
     return math.sqrt(err / m)
 
 
-@njit(cache=True)
+@compiled
 def _delta(pm, Phi, hd, stp, xb, t, w, k, side, N, K):
     """δₖ on wall ``side`` of the state w at time t (k ≥ K: stop k − K of ``stp``, its
     side·xₛ − g)."""
@@ -213,7 +213,7 @@ def _delta(pm, Phi, hd, stp, xb, t, w, k, side, N, K):
     return side * (w[2 * N + k] - xa) - hd[k]
 
 
-@njit(cache=True)
+@compiled
 def _pull(pm, Phi, xb, t, f, k, side, N):
     """side·ẍₐ of riding damper k's point at t from the rates ``f`` there: positive where its
     wall would pull the mass (Step 15, item 5: the mass is then let go)."""
@@ -224,7 +224,7 @@ def _pull(pm, Phi, xb, t, f, k, side, N):
     return side * acc
 
 
-@njit(cache=True)
+@compiled
 def _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h_hi, g_hi, k, side, n, tmp, out,
             kout, atol, N, K, from_wall, Ainv):  # fmt: skip
     """The θ in (0, h_hi] where δₖ on wall ``side`` changes sign on the step from w at t (δₖ(0)
@@ -284,7 +284,7 @@ def _locate(pm, Phi, md, hd, code, lq, chi, stp, xb, t, w, kk, h_hi, g_hi, k, si
     return hi
 
 
-@njit(cache=True)
+@compiled
 def _note(period_max, n_periods, T_f, t0, h, Pout, pm, xb, w0, w1, N):
     """Raise each output point's per-period maximum of abs(x) over the step [t0, t0 + h] by the
     cubic Hermite interpolant of its x and ẋ at both ends (its extreme where ẋ's quadratic
@@ -327,7 +327,7 @@ def _note(period_max, n_periods, T_f, t0, h, Pout, pm, xb, w0, w1, N):
                 period_max[kp, p] = max(period_max[kp, p], abs(x))
 
 
-@njit(cache=True)
+@compiled
 def _room(events, n_ev):
     """The phase's event log with room for one more row (doubled when full)."""
     if n_ev < events.shape[0]:
@@ -337,7 +337,7 @@ def _room(events, n_ev):
     return grown
 
 
-@njit(cache=True)
+@compiled
 def _ended(events, n_ev, pm, Phi, xb, t, w, k, sides, pressing, N, K):
     """Damper k's contact begins or ends at t (``pressing[k]`` flips): logged as (t, damper,
     wall, kind, δ̇, the point's x and ẋ, the mass's ẏ).  Returns (count, log)."""
@@ -362,7 +362,7 @@ def _ended(events, n_ev, pm, Phi, xb, t, w, k, sides, pressing, N, K):
     return n_ev + 1, events
 
 
-@njit(cache=True)
+@compiled
 def _stop_ended(events, n_ev, stp, t, w, j, sides, pressing, N, K):
     """Stop j − K's contact begins or ends at t (``pressing[j]`` flips): logged as damper j with
     its wall, kind, speed and the point's x and ẋ.  Returns (count, log)."""
@@ -379,7 +379,7 @@ def _stop_ended(events, n_ev, stp, t, w, j, sides, pressing, N, K):
     return n_ev + 1, events
 
 
-@njit(cache=True)
+@compiled
 def mass_inverse(pm, Phi, md, code, stp, N, K):
     """The structure's inverse mass while the riding dampers (code :data:`STUCK`) ride on their
     points and the held rigid stops (``stp``'s column N + 6: the wall, or 0) hold theirs (Step
@@ -421,7 +421,7 @@ def mass_inverse(pm, Phi, md, code, stp, N, K):
     return out
 
 
-@njit(cache=True)
+@compiled
 def _log_row(events, n_ev, t, k, side, kind, rate, x, xd, yd, xd1, yd1, lost):
     """One row of the phase's log (:data:`N_PHASE_COLS`).  Returns (count, log)."""
     events = _room(events, n_ev)
@@ -431,7 +431,7 @@ def _log_row(events, n_ev, t, k, side, kind, rate, x, xd, yd, xd1, yd1, lost):
     return n_ev + 1, events
 
 
-@njit(cache=True)
+@compiled
 def _point(pm, Phi, xb, t, w, k, N):
     """Damper k's point: (xₐ, ẋₐ) = x_b + φₖᵀq, ẋ_b + φₖᵀq̇ at t."""
     W, ph = pm[0, P_W], pm[0, P_PHI]
@@ -442,7 +442,7 @@ def _point(pm, Phi, xb, t, w, k, N):
     return xa, va
 
 
-@njit(cache=True)
+@compiled
 def _stop_point(stp, w, r, N):
     """Stop r's point: (xₛ, ẋₛ) = φᵀq, φᵀq̇ (relative to the ground, which its wall is fixed to)."""
     xs, vs = 0.0, 0.0
@@ -452,7 +452,7 @@ def _stop_point(stp, w, r, N):
     return xs, vs
 
 
-@njit(cache=True)
+@compiled
 def _on_wall(xa, side, h):
     """The position of a free mass just off its wall ``side`` (its point at xa, half clearance
     h), after an impact or where it is let go: four units in the last place of max(h, abs(xa))
@@ -463,7 +463,7 @@ def _on_wall(xa, side, h):
     return xa + side * (h - 4e-16 * max(h, abs(xa)))
 
 
-@njit(cache=True)
+@compiled
 def _let_go(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, j, sides, code, N, K):
     """Let go, at t, riding damper j (its mass set just inside its wall, :func:`_on_wall`) or,
     for j ≥ K, the point held by stop j − K (moved just inside its wall, :func:`_inside`), where
@@ -486,7 +486,7 @@ def _let_go(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, j, sides, code, N, K):
     return n_ev, events, mass_inverse(pm, Phi, md, code, stp, N, K)
 
 
-@njit(cache=True)
+@compiled
 def _kick(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, code, sides, Ainv, phi, minv, d, e, N,
           K):  # fmt: skip
     """An impulse at a point of the structure of shape ``phi`` against a body of inverse mass
@@ -535,7 +535,7 @@ def _kick(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, code, sides, Ainv, phi, 
     return P, 1.0 / inv, Ainv, n_ev, events
 
 
-@njit(cache=True)
+@compiled
 def _rigid_impact(events, n_ev, pm, Phi, md, stp, hd, ed, xb, t, w, k, side, N, K, code, sides,
                   Ainv):  # fmt: skip
     """Rigid damper k meets its wall ``side`` at t (module text): the impulse applied to w
@@ -558,7 +558,7 @@ def _rigid_impact(events, n_ev, pm, Phi, md, stp, hd, ed, xb, t, w, k, side, N, 
     return n_ev, events, e * vrel, Ainv
 
 
-@njit(cache=True)
+@compiled
 def _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, k, side, N, K, code, sides, Ainv):
     """Damper k's chatter on its wall ``side`` reaches its accumulation point at t: the mass and
     its point close plastically (:func:`_kick` with e = 0, the loss ½μ(ẏₖ − ẋₐ)²), and the
@@ -580,7 +580,7 @@ def _closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, k, side, N, K, code, 
     return n_ev, events, Ainv
 
 
-@njit(cache=True)
+@compiled
 def _stop_impact(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, r, side, N, K, code, sides, Ainv):
     """The point of rigid stop r meets its wall ``side`` at t (module text): Newton's law at the
     point, φᵀq̇⁺ = −e·φᵀq̇⁻, through P = −(1 + e)·m_eff·φᵀq̇, m_eff = (φᵀA⁻¹φ)⁻¹, q̇ += A⁻¹φP
@@ -603,7 +603,7 @@ def _stop_impact(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, r, side, N, K, co
     return n_ev, events, e * vapp, Ainv
 
 
-@njit(cache=True)
+@compiled
 def _accumulation(a, e, wsep, chat_limit, t, t_end):
     """Step 9's test after an impact with restitution e that leaves the point (or the mass) at
     the separation speed ``wsep``, the wall accelerating toward it at a: the time 2·wsep/(a(1 −
@@ -616,7 +616,7 @@ def _accumulation(a, e, wsep, chat_limit, t, t_end):
     return -1.0
 
 
-@njit(cache=True)
+@compiled
 def _inside(stp, w, r, side, N):
     """Move stop r's point, just off its wall ``side`` (an impact or a release located on the
     wall's far side by rounding), to four units in the last place inside it, q −= cψ (ψ the
@@ -633,7 +633,7 @@ def _inside(stp, w, r, side, N):
             w[i] += c * stp[r, i]
 
 
-@njit(cache=True)
+@compiled
 def _stop_closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, r, side, N, K, code, sides,
                   Ainv):  # fmt: skip
     """The chatter of rigid stop r's point on its wall ``side`` reaches its accumulation point at
@@ -652,7 +652,7 @@ def _stop_closure(events, n_ev, pm, Phi, md, stp, hd, xb, t, w, r, side, N, K, c
     return n_ev, events, Ainv
 
 
-@njit(cache=True)
+@compiled
 def phase(pm, Phi, md, hd, code0, lq, chi, stp0, xb, Pout, t, q, v, y, u, k0, s0, t_end, period_max,
           atol, ed, chat_limit, contact0, stuck0):  # fmt: skip
     """Integrate from (q, q̇, y, ẏ) at t, where damper k0's contact on wall s0 has just begun,

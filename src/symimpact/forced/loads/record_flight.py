@@ -15,18 +15,18 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from numba import njit
 
+from ..._compiled import compiled
 from ...errors import ParameterError
 from ...generated import sampled_load as _sl
 from ...model import checks
 from ...model.system import ImpactSystem
 from .records import Record, record_participation
 
-_ramp_state = njit(cache=True)(_sl.ramp_state_scalar)
+_ramp_state = compiled(_sl.ramp_state_scalar)
 
 
-@njit(cache=True)
+@compiled
 def _march(M, K, C, p, dt, x0, v0):
     """x, ẋ at every sample of the load p (one flight of Eq. F8 per interval)."""
     n = len(p)

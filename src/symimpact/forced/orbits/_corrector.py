@@ -4,7 +4,7 @@
 y = (s/scale, Ω/unit), F(y) = (P(s; Ω) − s)/scale, with P the stroboscopic map over k periods
 (Step 8's flights, Step 9's impacts, chatter to its accumulation and sticking) and its Jacobian
 carried along the same motion (the monodromy and ∂P/∂Ω, :func:`._chain.rigid_jacobian`).  Each
-Newton step costs one run of the one-mode engine (:func:`._modal.one_mode_run`); from Python the
+Newton step costs one run of the one-mode engine (:func:`._modal.one_mode_run`'s three steps); from Python the
 checks, the result's assembly, the scaling and the linear algebra around it cost three to five
 times the run itself on the short orbits of a curve (measured on the README's system: 165 µs a
 step against 28 µs for the run and its chain).  Here the whole iteration runs compiled, with the
@@ -19,11 +19,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
 from ... import _interrupt
+from ..._compiled import compiled
 from ..engine import _chain, _rigid
-from ..engine._modal import one_mode_run
+from ..engine._modal import one_mode_arguments, one_mode_result, run
 from ..simulation import _EPS, CANCELLATION, MAX_NATURAL_PERIODS, _absorbed
 
 #: Outcomes of :func:`correct` beside the interrupt's status.
@@ -32,7 +32,7 @@ CONVERGED, GRAZED, FAILED = 0, 1, 2
 _OMEGA = _chain.PARAMETERS.index("omega")
 
 
-@njit(cache=True)
+@compiled
 def _refused(p, omega: float, periods: int) -> bool:
     """Whether :func:`symimpact.forced.simulation._simulate` refuses a rigid run at Ω = ``omega``
     over ``periods`` periods: Ω not positive and finite, within the cancelling distance of the
@@ -51,7 +51,7 @@ def _refused(p, omega: float, periods: int) -> bool:
     return not t_end * math.sqrt(K / p[_rigid.P_M]) / (2.0 * math.pi) <= MAX_NATURAL_PERIODS
 
 
-@njit(cache=True)
+@compiled
 def correct(p, y_pred, y_start, tangent, scale, unit, periods, count, max_events, max_newton,
             tol, noise, stall, watch):  # fmt: skip
     """Newton on [F(y) = 0, tᵀ(y − y_pred) = 0] from ``y_start`` (module text), the run's
@@ -79,8 +79,8 @@ def correct(p, y_pred, y_start, tangent, scale, unit, periods, count, max_events
         q[_rigid.P_W] = omega
         t_end = periods * (2.0 * math.pi / omega)
         state0[0], state0[1], state0[2], state0[3] = x, v, x + z, u
-        status, events, n_ev, _, _, final = one_mode_run(q, state0, t_end, max_events, False,
-                                                         False, watch)  # fmt: skip
+        args = one_mode_arguments(q, state0, t_end, max_events, False, False, watch)
+        status, events, n_ev, _, _, final = one_mode_result(*run(*args)[:6])
         if status == _interrupt.INTERRUPTED:
             return status, y
         if status != _rigid.OK:

@@ -1,0 +1,48 @@
+"""The package's compiled functions: numba's ``njit(cache=True)``, compiled once per argument
+type, not once per constant a caller passes.
+
+numba types a constant written in compiled code as a literal (``Literal[int](0)``,
+``Literal[bool](False)``), and a jitted function called with it from compiled code is compiled
+afresh for that value, with every function it calls.  The event-driven engine's helpers are
+called with constants (a wall's side, a column, whether the variational equations run), and
+before this decorator its first compilation built up to nine specialisations of one helper:
+217 s of one core on a fresh clone for the rigid forced engine, 141 s with one specialisation
+per type (benchmark 15 in ``benchmarks/RESULTS.md``), the results bit for bit the same.  The
+branches numba pruned on a literal flag are taken at run time instead (a comparison per call).
+
+``compiled`` is used as numba's decorator is: ``@compiled``, ``compiled(f)`` or
+``compiled(error_model="numpy")(f)``; the result is cached on disk (``NUMBA_CACHE_DIR`` or
+``__pycache__``) as ``njit(cache=True)``'s is.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from numba.core import config, types
+from numba.core.registry import CPUDispatcher
+
+
+class _OneTypeDispatcher(CPUDispatcher):
+    """numba's CPU dispatcher, its calls from compiled code typed without their literal values."""
+
+    def get_call_template(self, args, kws):
+        args = tuple(types.unliteral(a) for a in args)
+        kws = {k: types.unliteral(v) for k, v in kws.items()}
+        return super().get_call_template(args, kws)
+
+
+def compiled(func: Callable | None = None, **options: Any):
+    """``func`` compiled in numba's nopython mode, cached on disk, one specialisation per
+    argument type (module text); ``options`` are numba's (e.g. ``error_model="numpy"``)."""
+
+    def wrap(f: Callable) -> CPUDispatcher:
+        if config.DISABLE_JIT:  # NUMBA_DISABLE_JIT=1, as njit does: the function itself
+            return f
+        targetoptions = {"nopython": True, "boundscheck": None, **options}
+        dispatcher = _OneTypeDispatcher(py_func=f, locals={}, targetoptions=targetoptions)
+        dispatcher.enable_caching()
+        return dispatcher
+
+    return wrap if func is None else wrap(func)
