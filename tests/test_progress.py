@@ -188,3 +188,27 @@ def test_a_progress_that_is_neither_a_flag_nor_a_callable_is_refused_by_name():
 
     with pytest.raises(ParameterError, match="progress: must be True"):
         frequency_response(SYSTEM, Forcing(F0=2.0, omega=34.0), 0.6, BAND, progress="yes")
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["design", "--M", "1", "--K", "1000", "--C", "0.5", "--m", "0.05", "--force", "2 N",
+         "--contact", "rigid", "--e", "0.6", "--omega-range", "31:32:1", "--gaps",
+         "40 mm,50 mm", "--multistart", "0", "--no-refine", "--workers", "1"],
+        ["map", "--vary", "gap=6 mm:30 mm:2 mm", "--executor", "serial", "--xdot0", "0.5",
+         "--t-end", "2"],
+    ],
+    ids=["design", "map"],
+)  # fmt: skip
+def test_nothing_is_drawn_into_a_file(argv, tmp_path):
+    """stderr sent to a file (``2> log``) gets no bar: a cold ``design`` had written every
+    redraw of its two bars into it, 60 kB on one line.  The same map's bar is drawn at a terminal
+    (:func:`test_progress_bar_ends_on_the_last_run` in tests/test_maps.py, through the API)."""
+    log = tmp_path / "log"
+    with open(log, "w") as err:
+        run = subprocess.run([sys.executable, "-m", "symimpact.cli", *argv], stdout=subprocess.PIPE,
+                             stderr=err, text=True, cwd=tmp_path, timeout=600)  # fmt: skip
+    assert run.returncode == 0, log.read_text()
+    text = log.read_text()
+    assert "%|" not in text and "run/s" not in text, text[:500]

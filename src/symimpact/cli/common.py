@@ -855,6 +855,13 @@ def add_quiet(g: Any) -> None:
     g.add_argument("--quiet", action="store_true", help=QUIET_HELP)
 
 
+def progress_drawn(ns: argparse.Namespace) -> bool:
+    """Whether a command draws its progress bars: on stderr when it is a terminal, unless
+    --quiet; never into a pipe or a file (a log would hold every redraw of every bar: a cold
+    ``design`` wrote 60 kB of them), whatever stdout holds (--json included)."""
+    return sys.stderr.isatty() and not getattr(ns, "quiet", False)
+
+
 def add_multistart(g: Any) -> None:
     """--multistart N (:data:`MULTISTART_HELP`)."""
     g.add_argument("--multistart", type=int, default=None, metavar="N", help=MULTISTART_HELP)

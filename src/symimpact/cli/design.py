@@ -14,6 +14,7 @@ from .common import (
     add_system,
     emit,
     forcing_of,
+    progress_drawn,
     structure_band,
     system_from,
     write_csv,
@@ -186,7 +187,7 @@ def run(ns) -> None:
     multistart = FREQUENCIES if ns.multistart is None else ns.multistart
     table = design_map(system, forcing, e, omegas, grid, executor=ns.executor,
                        workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
-                       force=ns.overwrite, progress=not (ns.quiet or ns.json),
+                       force=ns.overwrite, progress=progress_drawn(ns),
                        multistart=multistart, response=response)  # fmt: skip
     rows = table_rows(table)
     if ns.no_refine or len(grid["gap"]) < 2:
@@ -194,7 +195,7 @@ def run(ns) -> None:
     else:
         best = refine_best(table, system, forcing, e, omegas, tolerance=tolerance,
                            multistart=multistart, response=response,
-                           progress=not (ns.quiet or ns.json))  # fmt: skip
+                           progress=progress_drawn(ns))  # fmt: skip
     rows, best = _named(rows, response), _named(best, response)
 
     def k(name: str) -> str:
@@ -368,7 +369,7 @@ def _robust(ns, system, forcing, e_range, omegas, gaps, response: str) -> None:
     res = robust_design(system, forcing, e_range, omegas, gaps, samples=ns.e_samples,
                         multistart=multistart, response=response,
                         executor=ns.executor, workers=ns.workers, scheduler=ns.scheduler,
-                        progress=not (ns.quiet or ns.json))  # fmt: skip
+                        progress=progress_drawn(ns))  # fmt: skip
     gunit = display_unit("gap")
     es = res["e"]
     lines = [f"{len(res['rows'])} clearance(s) at e = " + ", ".join(f"{e:.3g}" for e in es)

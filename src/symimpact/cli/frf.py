@@ -24,6 +24,7 @@ from .common import (
     add_system,
     emit,
     forcing_of,
+    progress_drawn,
     structure_band,
     system_from,
     write_csv,
@@ -234,11 +235,10 @@ def run_structure(ns) -> None:
     lo, hi, step = structure_band(ns)
     model = ns.structure_model
     args = (model.structure, model.dampers, model.force_at, model.F0)
-    import sys
 
     curve = structure_curve_map(*args, lo, hi, step, model.stops, base=model.base_at,
                                 workers=ns.workers,
-                                progress=sys.stderr.isatty() and not ns.quiet)  # fmt: skip
+                                progress=progress_drawn(ns))  # fmt: skip
     branches, notes = curve.branches, curve.notes
     peaks, bare = {}, {}
     for p in model.structure.points:
@@ -324,13 +324,12 @@ def run(ns) -> None:
 
     multistart = FREQUENCIES if ns.multistart is None else count("multistart", ns.multistart, 0,
                                                                  1000)  # fmt: skip
-    import sys
 
     # at a terminal, each stage's runs as they end, with the time it has left (issue 80, item 5)
     frf = frequency_response(system, forcing, e, omegas, sweeps=not ns.no_sweeps, jumps=jumps,
                              folds=ns.folds, embedded=ns.embedded, workers=ns.workers,
                              multistart=multistart,
-                             progress=sys.stderr.isatty() and not ns.quiet)  # fmt: skip
+                             progress=progress_drawn(ns))  # fmt: skip
     if balance is not None:
         return run_beside(ns, system, forcing, e, frf, *balance)
     if response != "displacement":

@@ -6,7 +6,6 @@ impacts is exact for the sampled load (Step 16, Eq. F8)."""
 from __future__ import annotations
 
 import math
-import sys
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -18,6 +17,7 @@ from .common import (
     announce,
     base_participation,
     emit,
+    progress_drawn,
     system_from,
     write_csv,
 )
@@ -393,7 +393,7 @@ def run_random(ns) -> None:
         st, _ = random_ensemble(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,
                                 settle=ns.settle, kind=kind, executor=ns.executor,
                                 workers=ns.workers, scheduler=ns.scheduler, out=ns.out,
-                                force=ns.force, progress=sys.stderr.isatty() and not ns.quiet,
+                                force=ns.force, progress=progress_drawn(ns),
                                 participation=gamma)  # fmt: skip
     else:
         st = random_statistics(system, psd, (f1, f2), T, dt, e=e, realisations=n, seed=seed,

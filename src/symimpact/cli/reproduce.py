@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .common import add_force
+from .common import add_force, progress_drawn
 
 
 def add_parser(sub: Any) -> None:
@@ -44,7 +44,7 @@ def run(ns) -> None:
     if ns.out is None:
         ns.out = "symimpact-report"
 
-    out, sections = reproduce(ns.out, quick=ns.quick, force=ns.force, progress=not ns.quiet)
+    out, sections = reproduce(ns.out, quick=ns.quick, force=ns.force, progress=progress_drawn(ns))
     n_fig = sum(len(s.figures()) for s in sections)
     n_tab = sum(len(s.tables()) for s in sections)
     print(

@@ -13,6 +13,7 @@ from .common import (
     add_system,
     emit,
     fmt,
+    progress_drawn,
     quantity_text,
     system_from,
     write_csv,
@@ -119,7 +120,7 @@ def _points(ns):
     if ns.sets:
         from ..maps import read_sets
 
-        return read_sets(ns.sets, progress=not ns.quiet)
+        return read_sets(ns.sets, progress=progress_drawn(ns))
     grid: dict[str, str] = {}
     for item in ns.vary:
         if "=" not in item:
@@ -166,7 +167,7 @@ def run(ns) -> None:
         out=ns.out,
         force=ns.force,
         chunk_size=ns.chunk_size,
-        progress=not (ns.quiet or ns.json),
+        progress=progress_drawn(ns),
     )
     rows = table_rows(table)
     if ns.csv:
