@@ -5,10 +5,12 @@ numba types a constant written in compiled code as a literal (``Literal[int](0)`
 ``Literal[bool](False)``), and a jitted function called with it from compiled code is compiled
 afresh for that value, with every function it calls.  The event-driven engine's helpers are
 called with constants (a wall's side, a column, whether the variational equations run), and
-before this decorator its first compilation built up to nine specialisations of one helper:
-217 s of one core on a fresh clone for the rigid forced engine, 141 s with one specialisation
-per type (benchmark 15 in ``benchmarks/RESULTS.md``), the results bit for bit the same.  The
-branches numba pruned on a literal flag are taken at run time instead (a comparison per call).
+numba's decorator compiled up to nine specialisations of one helper, and the rigid forced
+engine's first compilation took 35 % longer than with one specialisation per type (one run of
+each on a fresh cache, the same machine; with the one-mode run's compiled wrapper also gone,
+175 s → 120 s of one core: benchmark 15 in ``benchmarks/RESULTS.md``), the results bit for bit
+the same.  The branches numba pruned on a literal flag are taken at run time instead (a
+comparison per call).
 
 ``compiled`` is used as numba's decorator is: ``@compiled``, ``compiled(f)`` or
 ``compiled(error_model="numpy")(f)``; the result is cached on disk (``NUMBA_CACHE_DIR`` or
@@ -33,7 +35,7 @@ class _OneTypeDispatcher(CPUDispatcher):
         return super().get_call_template(args, kws)
 
 
-def compiled(func: Callable | None = None, **options: Any):
+def compiled(func: Callable | None = None, **options: Any) -> Any:
     """``func`` compiled in numba's nopython mode, cached on disk, one specialisation per
     argument type (module text); ``options`` are numba's (e.g. ``error_model="numpy"``)."""
 

@@ -34,7 +34,13 @@ from . import (
     simulate,
     sweep,
 )
-from .common import Parser, apply_engineer_inputs, apply_materials, apply_system_file
+from .common import (
+    Parser,
+    apply_engineer_inputs,
+    apply_materials,
+    apply_system_file,
+    progress_drawn,
+)
 
 #: The subcommands, in the order of ``symimpact --help``.
 SUBCOMMANDS = [reproduce, ritz, modes, fit, contact, contact_duration, simulate, periodic, frf, branch, design,
@@ -288,8 +294,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             previous[sig] = signal.signal(sig, end)
         except ValueError:  # not the main thread (e.g. called from a worker thread)
             pass
-    # a person waits: a first compilation says so (symimpact._notices), unless --quiet
-    if sys.stderr.isatty() and not getattr(ns, "quiet", False):
+    # a person waits: a first compilation says so (symimpact._notices), as the bars are drawn
+    if progress_drawn(ns):
         from .. import _notices
 
         _notices.command = ns.command

@@ -856,9 +856,10 @@ def add_quiet(g: Any) -> None:
 
 
 def progress_drawn(ns: argparse.Namespace) -> bool:
-    """Whether a command draws its progress bars: on stderr when it is a terminal, unless
-    --quiet; never into a pipe or a file (a log would hold every redraw of every bar: a cold
-    ``design`` wrote 60 kB of them), whatever stdout holds (--json included)."""
+    """Whether a command shows its progress (its bars, and the notice of a first compilation,
+    :mod:`symimpact._notices`): on stderr when it is a terminal, unless --quiet; never into a
+    pipe or a file (a log would hold every redraw of every bar: a cold ``design`` wrote 60 kB of
+    them), whatever stdout holds (--json included)."""
     return sys.stderr.isatty() and not getattr(ns, "quiet", False)
 
 
