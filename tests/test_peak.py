@@ -163,3 +163,29 @@ def test_plastic_impacts_give_a_whole_curve_and_its_peak():
     brute = simulate_forced(SYSTEM, Forcing(F0=2.0, omega=p.omega), contact="rigid", e=0.0,
                             periods=600)  # fmt: skip
     assert p.amplitude == pytest.approx(np.max(brute.period_max[-100:]), rel=1e-9)
+
+
+@pytest.mark.parametrize("step", [1.0, 0.5, 0.25, 0.125])
+def test_the_motion_without_impacts_ends_where_x_reaches_the_gap_whatever_the_step(step):
+    """d = 160 mm on the README system: X(Ω) passes d/2 only between 31.3 and 31.9 rad/s, inside
+    one step of 1 rad/s (at 31 and 32 rad/s the primary stays inside the clearance).  The
+    intervals of the motion without impacts end where X = d/2 for every step: there
+    (K − MΩ²)² + (CΩ)² = (F0/(d/2))², a quadratic in Ω² solved in closed form (to 1e-9 rad/s:
+    Brent's method stops at 1e-12).  Before, a 1 rad/s step read the whole band as without
+    impacts and its peak as the resonance's 126.5 mm, beyond the clearance."""
+    from symimpact.forced.orbits.frf import _no_impact
+    from symimpact.forced.orbits.peak import no_impact_peak
+
+    M, K, C, F0, d = 1.0, 1000.0, 0.5, 2.0, 0.16
+    s = ImpactSystem(M=M, K=K, C=C, m=0.05, gap=d, contact="linear", k1=1e6)
+    f = Forcing(F0=F0, omega=30.0)
+    w = np.arange(28.0, 36.0 + step / 2, step)
+    intervals, grazings = _no_impact(s, f, w)
+    # M²u² + (C² − 2KM)u + K² − (2F0/d)² = 0, u = Ω²
+    a, b, c = M**2, C**2 - 2 * K * M, K**2 - (2 * F0 / d) ** 2
+    u = np.sort(np.roots([a, b, c]).real)
+    assert grazings == pytest.approx(np.sqrt(u), abs=1e-9)
+    ends = [(28.0, math.sqrt(u[0])), (math.sqrt(u[1]), 36.0)]
+    assert np.array(intervals) == pytest.approx(np.array(ends), abs=1e-9)
+    peak = no_impact_peak(s, f, intervals)
+    assert peak.amplitude == pytest.approx(d / 2, rel=1e-9) and peak.where == "grazing"

@@ -242,19 +242,31 @@ def test_an_overflowed_jacobian_reads_as_no_accuracy_not_an_error():
 
 
 @pytest.mark.slow
-def test_a_stiff_hunt_crossley_curve_is_drawn(capsys):
-    """k_hz 1e9 N/m^1.5 over 26–40 rad/s (the case as reported; the sweeps' orbits reach the
-    Jacobian above, 45 s into the curve on 2 workers): drawn, not an internal error.  Without
-    the multi-start, which the case does not need (the sweeps and branches reach the Jacobian;
-    measured 83 stable points, peak 91.6 mm, 204 s of one core, where the multi-start had the
-    test at 267 s on both of CI's cores)."""
+def test_a_stiff_hunt_crossley_curve_is_drawn(capsys, monkeypatch):
+    """k_hz 1e9 N/m^1.5 over 26–40 rad/s, the case as reported: drawn, not an internal error,
+    through monodromies whose determinant overflows (counted here: the test fails if the curve
+    no longer reaches one).  Every 2 rad/s, without the multi-start, in this process: 29 s of
+    one core, 59 stable points, 4 overflowed determinants (the reported 0.5 rad/s step took
+    300 s of CI's slow set for the same paths; it adds the 110 mm branch near 31 rad/s, which
+    a 2 rad/s step does not resolve)."""
+    from symimpact.forced.orbits import continuation
+
+    overflowed = []
+
+    def det(A):
+        d = _det(A)
+        overflowed.extend([d] if math.isinf(d) else [])
+        return d
+
+    monkeypatch.setattr(continuation, "_det", det)
     out = _json(capsys, ["frf", *SYS, "--force", "2 N", "--contact", "hunt-crossley",
-                         "--k-hz", "1e9", "--chi", "0.5", "--omega-range", "26:40:0.5",
-                         "--multistart", "0", "--json"])  # fmt: skip
+                         "--k-hz", "1e9", "--chi", "0.5", "--omega-range", "26:40:2",
+                         "--multistart", "0", "--workers", "1", "--json"])  # fmt: skip
     stable = [p for p in out["points"] if p["stable"]]
     assert len(stable) > 20
     assert all(math.isfinite(p["amplitude"]) for p in out["points"])
     assert out["peak"]["amplitude"] > 0.02  # the impacting orbits reach beyond the gap's 10 mm
+    assert overflowed, "no monodromy's determinant overflowed: the case no longer reaches it"
 
 
 def test_a_signal_handler_removes_what_is_half_written(tmp_path):

@@ -905,7 +905,10 @@ def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):
     """The motion without impacts: the impact mass at rest midway while the primary follows its
     linear response X(Ω) (Step 8, Eq. F1) — a steady motion wherever X(Ω) < d/2.  Returns its
     Ω intervals within the band and the frequencies where it grazes (X = d/2), each located by
-    Brent's method between two band frequencies that bracket it (to 1e-12 rad/s)."""
+    Brent's method between two frequencies that bracket it (to 1e-12 rad/s): the band's, and
+    X's one maximum in the band (:func:`~symimpact.forced.orbits.peak.baseline_peak`), so that a
+    resonance reaching past d/2 between two band frequencies is not read as a motion without
+    impacts whatever the band's step."""
     from scipy.optimize import brentq
 
     h = system.gap / 2.0
@@ -913,6 +916,8 @@ def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):
     def excess(omega: float) -> float:
         return float(linear_amplitude(system, forcing, np.array([omega]))[0]) - h
 
+    top = baseline_peak(system, forcing, (float(w[0]), float(w[-1]))).omega
+    w = np.unique(np.append(w, top))  # X rises to its maximum and falls: two crossings at most
     inside = linear_amplitude(system, forcing, w) < h
     ends: list[float] = []
     for k in range(1, len(w)):
