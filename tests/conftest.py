@@ -65,8 +65,6 @@ def boards():
 #: been left to the end: one core idle for minutes).  Only the order changes; each module's
 #: tests stay together and in their own order.
 LONGEST_FIRST = (
-    "test_surfaces_reliability",  # 289 s (one stiff Hunt–Crossley curve)
-    "test_base_excitation",  # 269 s (the shaker's curve)
     "test_readme_commands",  # 483 s in three tests (251 s the guide's design, 192 s task 1)
     "test_fuzz_forced",  # 224 s
     "test_design_refine",  # 221 s
