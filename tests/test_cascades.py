@@ -19,6 +19,7 @@ import numpy as np
 import pytest
 
 from symimpact.forced import Forcing, simulate_forced
+from symimpact.forced.orbits.continuation import branch_starts
 from symimpact.forced.orbits.frf import frequency_response
 from symimpact.model.system import ImpactSystem
 
@@ -63,6 +64,23 @@ def test_cascades_reach_period_16(curve):
     continuation's steps land in it, is checked by simulation below)."""
     assert _stable(curve, 8), "no stable period-8 orbit on the curve"
     assert any(b.period_multiple == 16 for b in curve.branches), "no period-16 branch"
+
+
+def test_every_doubling_of_a_period_8_branch_is_switched_onto(curve):
+    """Each period doubling located on a period-8 branch starts a period-16 branch, both ways
+    from it.  The one at 16.6079 rad/s lies 6.8e-3 rad/s before its branch rejoins the period-4
+    orbits: every usual predictor step (step/8 to step) left the window of the doubled orbits,
+    and no period-16 branch left it (branch_starts' shorter steps, SHORTER_STARTS)."""
+    doublings = [f for b in curve.branches if b.period_multiple == 8
+                 for f in b.bifurcations if f.kind == "period-doubling"]  # fmt: skip
+    assert len(doublings) >= 2
+    for f in doublings:
+        starts = branch_starts(SYSTEM, FORCING.at(f.omega, f.phase), E, f, (BAND[0], BAND[-1]),
+                               periods=8)  # fmt: skip
+        assert [s.periods for s in starts] == [16, 16], f.omega
+        left = [n for n in curve.branches if n.period_multiple == 16
+                and n.origin_omega == f.omega]  # fmt: skip
+        assert left, f"no period-16 branch leaves the doubling at {f.omega} rad/s"
 
 
 @pytest.mark.parametrize("k", [6, 8, 16])

@@ -848,6 +848,13 @@ class BranchStart:
     periods: int
 
 
+#: Shorter predictor steps of branch switching (shares of ``step``), tried where none of the usual
+#: ones lands on the new branch: a period doubling close to a grazing leaves a window of the
+#: doubled orbits narrower than step/8 (the period-8 orbits of tests/test_cascades.py's system
+#: double at 16.6079 rad/s, 6.8e-3 rad/s before they rejoin the period-4 orbits).
+SHORTER_STARTS = np.array([1 / 16, 1 / 32, 1 / 64, 1 / 128])
+
+
 def branch_starts(
     system: ImpactSystem,
     forcing: Forcing,
@@ -915,7 +922,7 @@ def branch_starts(
         direction /= np.linalg.norm(direction)
     starts: list[BranchStart] = []
     for sign in (1.0, -1.0):
-        for ds in (step / 8, step / 4, step / 2, step):
+        for ds in (step / 8, step / 4, step / 2, step, *SHORTER_STARTS * step):
             got = _correct(problem, y_b + sign * ds * direction, direction)
             if got is None or got is GRAZE:
                 continue
