@@ -70,7 +70,7 @@ def test_every_doubling_of_a_period_8_branch_is_switched_onto(curve):
     """Each period doubling located on a period-8 branch starts a period-16 branch, both ways
     from it.  The one at 16.6079 rad/s lies 6.8e-3 rad/s before its branch rejoins the period-4
     orbits: every usual predictor step (step/8 to step) left the window of the doubled orbits,
-    and no period-16 branch left it (branch_starts' shorter steps, SHORTER_STARTS)."""
+    and no period-16 branch left it (branch_starts now tries shorter steps)."""
     doublings = [f for b in curve.branches if b.period_multiple == 8
                  for f in b.bifurcations if f.kind == "period-doubling"]  # fmt: skip
     assert len(doublings) >= 2

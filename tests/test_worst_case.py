@@ -8,6 +8,7 @@ import pytest
 
 from symimpact.forced import Forcing, simulate_forced
 from symimpact.forced.orbits.frf import frequency_response
+from symimpact.forced.orbits.peak import stable_peak
 from symimpact.model.system import ImpactSystem
 
 #: the README system (a resilient contact's law unused: rigid impacts)
@@ -33,13 +34,17 @@ def brute_force(system, F0, e, ws, starts, seed):
 
 
 def test_the_peak_is_not_below_what_a_brute_force_reaches_beside_a_chaotic_band():
-    """e = 0.95, band 25–40 rad/s: the located stable peak, 117.8 mm at a period doubling at
-    30.904 rad/s, borders motions that do not repeat over 30.5–31.2 rad/s, which reach 125 mm
-    near 30.82 rad/s (a scan of 15 frequencies, 3 starts each, measured 125.2 mm).  The curve's
-    worst case is now one of them; a brute force of 24 random frequencies across 30.4–31.3
-    rad/s with 2 random starts each (seed 81) reaches no more than it, to 1 %: the largest
-    excursion of such a motion over a few hundred periods scatters by some 0.3 % from run to
-    run and the brute force reads 400 periods where the curve reads 200."""
+    """e = 0.95, band 25–40 rad/s: the located stable peak, 118.05 mm where a stable period-2
+    run ends at a period doubling at 30.903 rad/s (117.8 mm where the period-1 run it doubles
+    from ends, before branch switching took shorter steps there), borders motions that do not
+    repeat over 30.5–31.2 rad/s, which reach 125 mm near 30.82 rad/s (a scan of 15
+    frequencies, 3 starts each, measured 125.2 mm).  The curve's worst case is now one of them;
+    a brute force of 24 random frequencies across 30.4–31.3 rad/s with 2 random starts each
+    (seed 81) reaches no more than it, to 1 %: the largest excursion of such a motion over a
+    few hundred periods scatters by some 0.3 % from run to run and the brute force reads 400
+    periods where the curve reads 200.  The stable orbit below the located peak is a motion:
+    2000 periods run from it keep its period and amplitude (to 1e-9: its multipliers lie
+    inside the unit circle)."""
     w = np.arange(25.0, 40.0 + 1e-9, 0.25)
     curve = frequency_response(SYSTEM, Forcing(F0=2.0, omega=25.0), 0.95, w)
     peak = curve.peak
@@ -54,7 +59,17 @@ def test_the_peak_is_not_below_what_a_brute_force_reaches_beside_a_chaotic_band(
     reached = brute_force(SYSTEM, 2.0, 0.95, ws, 2, seed=81)
     assert reached.max() <= peak.amplitude * 1.01, (reached.max(), peak.amplitude)
     (note,) = [n for n in curve.notes if "a motion that does not repeat reaches" in n]
-    assert "117.8" in note.replace("0.1178", "117.8") and "rad/s" not in note.split("(at")[0]
+    located = stable_peak(curve.branches, SYSTEM, Forcing(F0=2.0, omega=25.0), 0.95, (25.0, 40.0))
+    assert located.amplitude == pytest.approx(0.11805, rel=1e-4)  # the docs' 118.1 mm
+    assert f"({located.motion}, {located.amplitude:.6g} m, {located.where})" in note
+    assert "rad/s" not in note.split("(at")[0]
+    top = max((p for b in curve.branches for p in b.points if p.stable), key=lambda p: p.amplitude)
+    (k,) = [b.period_multiple for b in curve.branches if top in b.points]
+    x, v, z, u = top.state
+    run = simulate_forced(SYSTEM, Forcing(F0=2.0, omega=25.0).at(top.omega, top.phase), e=0.95,
+                          periods=2000, discard=1900, x0=x, xdot0=v, y0=x + z, ydot0=u)  # fmt: skip
+    assert run.steady.period_multiple == k == 2
+    assert run.steady.amplitude == pytest.approx(top.amplitude, rel=1e-9)
 
 
 def test_a_periodic_peak_with_nothing_larger_beside_it_stays():

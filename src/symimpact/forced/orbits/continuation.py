@@ -848,13 +848,6 @@ class BranchStart:
     periods: int
 
 
-#: Shorter predictor steps of branch switching (shares of ``step``), tried where none of the usual
-#: ones lands on the new branch: a period doubling close to a grazing leaves a window of the
-#: doubled orbits narrower than step/8 (the period-8 orbits of tests/test_cascades.py's system
-#: double at 16.6079 rad/s, 6.8e-3 rad/s before they rejoin the period-4 orbits).
-SHORTER_STARTS = np.array([1 / 16, 1 / 32, 1 / 64, 1 / 128])
-
-
 def branch_starts(
     system: ImpactSystem,
     forcing: Forcing,
@@ -877,10 +870,10 @@ def branch_starts(
     Jacobian [M − I | ∂P/∂p] is singular and v, with the parameter held, spans the direction of
     the branch that crosses the old one (for the symmetry-breaking pitchfork of the symmetric
     orbits and for a period doubling the new branch is tangent to v there).  The predictor steps
-    ±``step``/8 (then /4, /2, 1 where it fails) along (v, 0) in the scaled unknowns and Newton corrects it in the hyperplane normal
-    to that direction, which the old branch does not cross nearby.  Each side gives at most one
-    start; a start of a period doubling that repeats after the old period is dropped (it is the
-    old orbit).  Eq. F1, F2 along the orbits (Step 8, Step 9)."""
+    ±``step``/8 along (v, 0) in the scaled unknowns (then /4, /2, 1, and /16 to /128: a window
+    beside a grazing can be narrow, tests/test_cascades.py) and Newton corrects it in the plane
+    normal to it, which the old branch does not cross nearby.  A side gives one start at most;
+    a doubling's start that repeats after the old period (the old orbit) is dropped.  Eq. F1, F2."""
     system, forcing, e = checked(system, forcing, e)
     checks.instance("bifurcation", bifurcation, Bifurcation, "a Bifurcation of a traced branch")
     checks.choice("parameter", parameter, tuple(PARAMETERS))
@@ -922,7 +915,7 @@ def branch_starts(
         direction /= np.linalg.norm(direction)
     starts: list[BranchStart] = []
     for sign in (1.0, -1.0):
-        for ds in (step / 8, step / 4, step / 2, step, *SHORTER_STARTS * step):
+        for ds in (step / 8, step / 4, step / 2, step, step / 16, step / 32, step / 64, step / 128):
             got = _correct(problem, y_b + sign * ds * direction, direction)
             if got is None or got is GRAZE:
                 continue

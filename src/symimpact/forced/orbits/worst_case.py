@@ -4,8 +4,8 @@ reaches.
 
 A located peak often ends a stable window at a bifurcation (a period doubling, a grazing, a
 fold), and past it the motion need not be periodic: on the README system with e = 0.95 the
-located peak, 117.8 mm at the end of a stable period-1 run (a period doubling at 30.904 rad/s),
-has motions that do not repeat on either side within 3e-3 rad/s, which reach 120 mm.  The
+located stable peak, 118.1 mm at the end of a stable period-2 run (a period doubling at 30.903
+rad/s), has motions that do not repeat beside it, which reach 126 mm.  The
 multi-start (:mod:`symimpact.forced.orbits.coverage`) samples fixed frequencies across the band
 and misses such a narrow neighbourhood.  Here, at the located peak's Ω and at Ω·(1 ± r) for r in
 :data:`OFFSETS`, runs from the multi-start's initial states and from the peak's own orbit settle
@@ -106,8 +106,8 @@ def worst_case(
     the largest one, then as many across ±step/4 about the largest of those, each run from
     rest and from that motion's own state.  Such a motion's amplitude over Ω is smooth on the
     scale of the band's step (its largest excursion over :data:`KEPT` periods scatters by some
-    0.3 % from run to run): on the README system with e = 0.95 it rises from 117.8 mm, the
-    located stable peak, to 125 mm at 30.82 rad/s.  ``tick()`` after each run (a curve's
+    0.3 % from run to run): on the README system with e = 0.95 it rises from 118.1 mm, the
+    located stable peak, to 126 mm at 30.83 rad/s.  ``tick()`` after each run (a curve's
     progress)."""
     near = beside_peak(system, forcing, e, band, peak, branches, tick)
     irregular = [a for a in near if a.kind == "not periodic"] + [
