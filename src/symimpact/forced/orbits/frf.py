@@ -410,7 +410,10 @@ def _frequency_response(system, forcing, e, omegas, starts, sweeps, multistart, 
             _from_rest(system, f, e, omega, failures, follow)
             stages.advance()
         out.baseline = np.column_stack([w, linear_amplitude(system, forcing, w)])
-        out.no_impact, out.no_impact_grazings = _no_impact(system, forcing, w)
+        out.baseline_peak = baseline_peak(system, forcing, band)
+        out.no_impact, out.no_impact_grazings = _no_impact(
+            system, forcing, w, out.baseline_peak.omega
+        )
     except BaseException:
         if multi is not None:
             multi.cancel()
@@ -456,7 +459,6 @@ def _frequency_response(system, forcing, e, omegas, starts, sweeps, multistart, 
         out.coverage.check = _coverage(checked_, out.branches, system, forcing, e, check.ws)
         out.coverage.seed = CHECK_SEED
     _drop_repeated_bifurcations(out.branches, 1e-6 if is_rigid(e) else 1e-5)
-    out.baseline_peak = baseline_peak(system, forcing, band)
     out.peak = curve_peak(out.branches, system, forcing, e, band, out.no_impact, found)
     # the worst case: what a brute force reaches beside the peak (rigid impacts: a compliant
     # contact's runs are classified by its contact onsets, which a mass pressed for whole
@@ -901,14 +903,14 @@ def _drop_repeated_bifurcations(branches: list[Branch], rtol: float = 1e-6) -> N
         b.bifurcations = kept
 
 
-def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):
+def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray, top: float):
     """The motion without impacts: the impact mass at rest midway while the primary follows its
     linear response X(Ω) (Step 8, Eq. F1) — a steady motion wherever X(Ω) < d/2.  Returns its
     Ω intervals within the band and the frequencies where it grazes (X = d/2), each located by
     Brent's method between two frequencies that bracket it (to 1e-12 rad/s): the band's, and
-    X's one maximum in the band (:func:`~symimpact.forced.orbits.peak.baseline_peak`), so that a
-    resonance reaching past d/2 between two band frequencies is not read as a motion without
-    impacts whatever the band's step."""
+    ``top`` [rad/s], X's one maximum in the band (the primary alone's peak,
+    :func:`~symimpact.forced.orbits.peak.baseline_peak`), so that a resonance reaching past d/2
+    between two band frequencies is not read as a motion without impacts whatever the step."""
     from scipy.optimize import brentq
 
     h = system.gap / 2.0
@@ -916,7 +918,6 @@ def _no_impact(system: ImpactSystem, forcing: Forcing, w: np.ndarray):
     def excess(omega: float) -> float:
         return float(linear_amplitude(system, forcing, np.array([omega]))[0]) - h
 
-    top = baseline_peak(system, forcing, (float(w[0]), float(w[-1]))).omega
     w = np.unique(np.append(w, top))  # X rises to its maximum and falls: two crossings at most
     inside = linear_amplitude(system, forcing, w) < h
     ends: list[float] = []
