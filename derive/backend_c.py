@@ -113,8 +113,10 @@ def items(boards: list[Board]) -> dict:
                             "results": results, "ops": ops, "n": len(results),
                             "parts": [c_name(b.module, k.name) for k in bu.parts],
                             "unused": _unused(bu.args, *(k.expr for k in bu.parts))})  # fmt: skip
+        balances = [{"x": x, "c": c_name(b.module, x.name),
+                     "force": c_name(b.module, x.force.name)} for x in b.balances]  # fmt: skip
         modules.append({"board": b, "kernels": kernels, "constants": constants,
-                        "bundles": bundles})  # fmt: skip
+                        "bundles": bundles, "balances": balances})  # fmt: skip
     fixed = []
     for b in boards:
         for fp in b.fixed_points:

@@ -26,7 +26,7 @@ from sympy.logic.boolalg import Boolean
 from sympy.printing.fortran import FCodePrinter
 from sympy.printing.precedence import precedence
 
-from .board import Board
+from .board import Arg, Board
 from .codegen import _env, fixed_point_ast, numeric_constants, project
 
 FOLDER = "fortran"
@@ -173,8 +173,17 @@ def items(boards: list[Board]) -> dict:
                             "parts": [fortran_name(b.module, k.name) for k in bu.parts],
                             "declarations": declarations,
                             "arglist": ", ".join(names[a.name] for a in bu.args)})  # fmt: skip
+        balances = []
+        for x in b.balances:
+            names = fortran_names([Arg(sp.Symbol(n), "", "", 0, 0) for n in ("M", "C", "K", "m")]
+                                  + list(x.params))  # fmt: skip
+            balances.append({"x": x, "f": fortran_name(b.module, x.name), "names": names,
+                             "force": fortran_name(b.module, x.force.name),
+                             "arglist": ", ".join([*names.values()][:4] + ["gap"]
+                                                  + [names[a.name] for a in x.params]),
+                             "paramlist": ", ".join(names[a.name] for a in x.params)})  # fmt: skip
         modules.append({"board": b, "kernels": kernels, "constants": constants,
-                        "bundles": bundles})  # fmt: skip
+                        "bundles": bundles, "balances": balances})  # fmt: skip
     fixed = []
     for b in boards:
         for fp in b.fixed_points:

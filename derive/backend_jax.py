@@ -66,7 +66,10 @@ def render(boards: list[Board]) -> dict[str, str]:
         template = "jax/module.py.j2"
         out[f"{FOLDER}/{b.module}.py"] = _env.get_template(template).render(
             template=f"derive/templates/{template}", board=b, kernels=kernels, fixed=fixed,
-            bundles=bundles,
+            bundles=bundles, balances=[{"name": x.name, "law": x.law, "equation": x.equation,
+                                        "force": x.force, "params": x.params,
+                                        "paramnames": ", ".join(a.name for a in x.params)}
+                                       for x in b.balances],
         )  # fmt: skip
     for name in ("__init__.py", "README.md"):
         template = f"jax/{name}.j2"

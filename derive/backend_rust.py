@@ -120,7 +120,8 @@ def items(boards: list[Board]) -> dict:
             lines, results, _ = bundle_body(bu, RustKernelPrinter, {})
             bundles.append({"b": bu, "lines": lines, "results": results,
                             "unused": _unused(bu.args, *(k.expr for k in bu.parts))})  # fmt: skip
-        modules.append({"board": b, "kernels": kernels, "bundles": bundles})
+        modules.append({"board": b, "kernels": kernels, "bundles": bundles,
+                        "balances": [{"x": x} for x in b.balances]})  # fmt: skip
     fixed = [
         {"fp": fp, "module": b.module, "unused": _unused(fp.args, fp.start, fp.step),
          "x": fp.iterate.name, **_iteration(fp, printer)}

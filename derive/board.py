@@ -144,6 +144,22 @@ class Bundle:
 
 
 @dataclass(frozen=True)
+class Balance:
+    """The alternating frequency–time residual of the impact damper's harmonic balance with one
+    compliant law (Step 17, Eq. F9–F10), emitted as a loop in every target: the coefficients U
+    of x and y (H harmonics, order a₀, a₁, b₁, …) → N time samples → the law's force ``force``
+    (a bundle of F, ∂F/∂δ, ∂F/∂δ̇ in (δ, δ̇, *params)) at each → the residual R(U, ω), its
+    Jacobian ∂R/∂U and ∂R/∂ω."""
+
+    name: str
+    #: the law as a sentence names it ("Hunt–Crossley")
+    law: str
+    force: Bundle
+    params: tuple[Arg, ...]
+    equation: str
+
+
+@dataclass(frozen=True)
 class FixedPoint:
     """A fixed-point iteration to emit as a loop: ``x⁽⁰⁾ = start(args)``,
     ``x⁽ⁱ⁾ = step(x⁽ⁱ⁻¹⁾, args)`` until abs(x⁽ⁱ⁾ − x⁽ⁱ⁻¹⁾) ≤ tol·abs(x⁽ⁱ⁾) or ``max_iter``
@@ -192,6 +208,7 @@ class Board:
         self.constants: list[Constant] = []
         self.fixed_points: list[FixedPoint] = []
         self.bundles: list[Bundle] = []
+        self.balances: list[Balance] = []
         self.values: dict[str, Any] = {}
         #: For each record a notebook describes (its lines, checks, errata, kernels, constants),
         #: the line of the step's ``derive()`` whose statement wrote it, in order (None where no
@@ -305,6 +322,14 @@ class Board:
                 raise ValueError(f"{name}: {k.name} is not a kernel of this board with {names}")
         b = Bundle(name, tuple(parts), returns)
         self.bundles.append(b)
+        return b
+
+    def balance(self, **kwargs: Any) -> Balance:
+        """Declare a :class:`Balance` (the force's bundle must be this board's)."""
+        b = Balance(**kwargs)
+        if not any(b.force is x for x in self.bundles):
+            raise ValueError(f"{b.name}: its force is not a bundle of this board")
+        self.balances.append(b)
         return b
 
     def fixed_point(self, **kwargs: Any) -> FixedPoint:

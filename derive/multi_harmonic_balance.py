@@ -31,7 +31,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .board import Arg, Board
+from .board import Arg, Board, rounding_scale
+
+#: The compliant laws as a sentence names them.
+NAMES = {"linear": "linear", "cubic": "cubic", "hertz": "Hertz", "hunt_crossley": "Hunt–Crossley"}
 
 #: The (degree p, harmonics H) pairs on which the aliasing rule is checked, every coefficient a
 #: symbol.
@@ -237,6 +240,91 @@ def derive() -> Board:
         "the force's cos θ coefficient and its derivatives in k₁, d and A",
     )
 
+    # --- the force at a time sample: each compliant law and its two slopes -----------------------
+    # AFT evaluates the contact where it is known, in time: at each sample the penetration
+    # δ = s·z − d/2 on the wall s = ±1 and its rate δ̇ = s·ż, the law's force F(δ, δ̇) while
+    # δ > 0, and for the Jacobian ∂F/∂δ and ∂F/∂δ̇ (the chain rule through z = y − x does the rest:
+    # the force on m is −s·F, on M its opposite).
+    delta, ddelta = sp.symbols("delta ddelta", real=True)
+    la, lb, khz, chi = sp.symbols("a b k_hz chi", positive=True)
+    a_delta = Arg(delta, "m", "Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0)", 1e-8,
+                  1e-2, log=True)  # fmt: skip
+    a_ddelta = Arg(ddelta, "m/s", "Rate of penetration δ̇ = s·ż", -3.0, 3.0)
+    a_c1 = Arg(c1, "N s/m", "Contact damping c₁", 0.0, 50.0)
+    laws = {
+        "linear": (k1 * delta + c1 * ddelta, (Arg(k1, "N/m", "Stiffness k₁ of the linear contact",
+                                                  1.0, 1e9, log=True), a_c1), "35"),
+        "cubic": (la * delta**3 + lb * delta + c1 * ddelta,
+                  (Arg(la, "N/m^3", "Cubic stiffness a", 1e3, 1e16, log=True),
+                   Arg(lb, "N/m", "Linear stiffness b", 1.0, 1e9, log=True), a_c1), "8"),
+        "hertz": (khz * delta ** sp.Rational(3, 2) + c1 * ddelta,
+                  (Arg(khz, "N/m^1.5", "Hertz contact stiffness K_Hz", 10.0, 1e10, log=True),
+                   a_c1), "9"),
+        "hunt_crossley": (khz * delta ** sp.Rational(3, 2) * (1 + chi * ddelta),
+                          (Arg(khz, "N/m^1.5", "Hertz contact stiffness K_Hz", 10.0, 1e10,
+                               log=True),
+                           Arg(chi, "s/m", "Hunt–Crossley damping χ", 1e-4, 10.0, log=True)),
+                          "F4"),
+    }  # fmt: skip
+    board.check(
+        "Hunt–Crossley's law with χ = 0 is Hertz's with c₁ = 0",
+        "F4",
+        sp.simplify(laws["hunt_crossley"][0].subs(chi, 0) - laws["hertz"][0].subs(c1, 0)) == 0,
+    )
+    forces = {}
+    for law, (expr, params, eq) in laws.items():
+        value = board.kernel(
+            name=f"force_{law}",
+            args=(a_delta, a_ddelta, *params),
+            expr=expr,
+            returns=f"Force of the {NAMES[law]} contact at penetration δ and "
+            "rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample",
+            unit="N",
+            equation=eq,
+            lhs="F",
+            constraints=(sp.StrictGreaterThan(delta, 0),),
+            magnitude=rounding_scale(expr),
+        )
+        forces[law] = board.bundle(
+            f"force_{law}_and_derivatives",
+            [value, *board.derivatives(value, ("delta", "ddelta"))],
+            "the force with its slopes ∂F/∂δ and ∂F/∂δ̇, AFT's Jacobian at a sample",
+        )
+        board.balance(
+            name=f"aft_residual_{law}",
+            law=NAMES[law],
+            force=forces[law],
+            params=params,
+            equation="F9–F10",
+        )
+    # the force at a sample on (M, m) and its slopes in (x, y) and (ẋ, ẏ): the chain rule through
+    # δ = s(y − x) − d/2 and δ̇ = s(ẏ − ẋ), with s² = 1 on either wall
+    x_, y_, xd_, yd_ = sp.symbols("x y xdot ydot", real=True)
+    s_, h_ = sp.symbols("s h", real=True)
+    law = sp.Function("F")
+    d_, dd_ = sp.symbols("delta ddelta", real=True)
+    at = {d_: s_ * (y_ - x_) - h_, dd_: s_ * (yd_ - xd_)}
+    Fs = law(d_, dd_)
+    on_pair = sp.Matrix([s_ * Fs, -s_ * Fs]).subs(at)
+    Fd, Fdd = sp.symbols("F_delta F_ddelta", real=True)
+    slope_of = {sp.Derivative(Fs, d_): Fd, sp.Derivative(Fs, dd_): Fdd}
+    plain = w(
+        "aft_sample_slopes",
+        sp.Matrix.hstack(on_pair.jacobian([x_, y_]), on_pair.jacobian([xd_, yd_]))
+        .subs(s_**2, 1)
+        .subs({v: k for k, v in at.items()})
+        .applyfunc(lambda e: e.doit().xreplace(slope_of)),
+        "At a sample in contact the force on (M, m) is (s·F, −s·F), δ = s(y − x) − d/2 and "
+        "δ̇ = s(ẏ − ẋ): its slopes in (x, y), then in (ẋ, ẏ), s² = 1. These are the blocks the "
+        "emitted residual subtracts from L(ω), P·diag(∂f/∂q)·E + ω·P·diag(∂f/∂q̇)·E_θ (Eq. F10).",
+        "F10",
+    )
+    board.check(
+        "the force's slopes at a sample are (−F_δ, F_δ; F_δ, −F_δ) on either wall",
+        "F10",
+        plain == sp.Matrix([[-Fd, Fd, -Fdd, Fdd], [Fd, -Fd, Fdd, -Fdd]]),
+    )
+
     # --- the onset's kink and the rate of convergence in H -------------------------------------
     s, p, nu = sp.symbols("s p nu", positive=True)
     laplace = w(
@@ -279,6 +367,23 @@ def derive() -> Board:
     )
     onsets = {"linear k₁δ or cubic aδ³ + bδ": 1, "Hertz or Hunt–Crossley k δ¹·⁵": sp.Rational(3, 2),
               "any dashpot c₁δ̇ (a step)": 0}  # fmt: skip
+    # ν read off the laws' own forces at an onset, δ = v₀s and δ̇ = v₀: the exponent of the
+    # leading power of s, s·F_s/F as s → 0⁺
+    v0 = sp.Symbol("v_0", positive=True)
+
+    def onset(expr: sp.Expr, damped: bool) -> sp.Expr:
+        f = expr.subs({delta: v0 * s, ddelta: v0}).subs({} if damped else {c1: 0})
+        return sp.limit(sp.simplify(s * sp.diff(f, s) / f), s, 0, "+")
+
+    read = [onset(laws[n][0], False) for n in ("linear", "cubic", "hertz", "hunt_crossley")]
+    read += [onset(laws[n][0], True) for n in ("linear", "cubic", "hertz")]
+    board.check(
+        "ν of each law read off its force at an onset",
+        "F12",
+        read == [1, 1, sp.Rational(3, 2), sp.Rational(3, 2), 0, 0, 0]
+        and list(onsets.values()) == [1, sp.Rational(3, 2), 0],
+        "linear, cubic 1; Hertz, Hunt–Crossley 3/2; with c₁ > 0 every law 0",
+    )
     w(
         "truncation_orders",
         {law: [str(v), str(v + 2)] for law, v in onsets.items()},

@@ -3940,6 +3940,249 @@ static void check_multi_harmonic_balance_clearance_first_harmonic_d_A(void)
     }
 }
 
+/* multi_harmonic_balance.force_linear: Force of the linear contact at penetration δ and rate δ̇ (δ > 0: in... [N] */
+static void check_multi_harmonic_balance_force_linear(void)
+{
+    static const double expected[3] = { 12867.614853711, 634.7504375789999, 25.7517941441102 };
+    static const double scale[3] = { 25758.66216, 1269.5008751579999, 51.5035882882204 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_k1[3] = { 4.2132e+06, 5.61337e+08, 74.7886 };
+    static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_linear", i, symimpact_multi_harmonic_balance_force_linear(a_delta[i], a_ddelta[i], a_k1[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_linear_batch(3, a_delta, a_ddelta, a_k1, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_linear_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_linear_d_delta: ∂/∂delta of: force of the linear contact at penetration δ and rate δ̇ (δ >... [N/m] */
+static void check_multi_harmonic_balance_force_linear_d_delta(void)
+{
+    static const double expected[3] = { 4213200.0, 561337000.0, 74.7886 };
+    static const double scale[3] = { 8426400.0, 1122674000.0, 149.5772 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_k1[3] = { 4.2132e+06, 5.61337e+08, 74.7886 };
+    static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_linear_d_delta", i, symimpact_multi_harmonic_balance_force_linear_d_delta(a_delta[i], a_ddelta[i], a_k1[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_linear_d_delta_batch(3, a_delta, a_ddelta, a_k1, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_linear_d_delta_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_linear_d_ddelta: ∂/∂ddelta of: force of the linear contact at penetration δ and rate δ̇ (δ >... [N s/m] */
+static void check_multi_harmonic_balance_force_linear_d_ddelta(void)
+{
+    static const double expected[3] = { 7.28757, 39.5751, 21.8627 };
+    static const double scale[3] = { 14.57514, 79.1502, 43.7254 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_k1[3] = { 4.2132e+06, 5.61337e+08, 74.7886 };
+    static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_linear_d_ddelta", i, symimpact_multi_harmonic_balance_force_linear_d_ddelta(a_delta[i], a_ddelta[i], a_k1[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_linear_d_ddelta_batch(3, a_delta, a_ddelta, a_k1, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_linear_d_ddelta_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_cubic: Force of the cubic contact at penetration δ and rate δ̇ (δ > 0: in contact),... [N] */
+static void check_multi_harmonic_balance_force_cubic(void)
+{
+    static const double expected[3] = { 105793.18864241122, 30.97497868142008, 28.934178778962558 };
+    static const double scale[3] = { 211717.66592530243, 61.94995736284016, 57.868357557925115 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_a[3] = { 3.70581e+12, 4.34278e+15, 508922 };
+    static const double a_b[3] = { 20.5004, 1.329e+07, 8615.6 };
+    static const double a_c1[3] = { 40.8312, 6.66248, 22.4937 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_cubic", i, symimpact_multi_harmonic_balance_force_cubic(a_delta[i], a_ddelta[i], a_a[i], a_b[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_cubic_batch(3, a_delta, a_ddelta, a_a, a_b, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_cubic_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_cubic_d_delta: ∂/∂delta of: force of the cubic contact at penetration δ and rate δ̇ (δ > 0:... [N/m] */
+static void check_multi_harmonic_balance_force_cubic_d_delta(void)
+{
+    static const double expected[3] = { 103888375.0049423, 13301376.645713741, 8615.724583985977 };
+    static const double scale[3] = { 207776750.0098846, 26602753.291427482, 17231.449167971954 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_a[3] = { 3.70581e+12, 4.34278e+15, 508922 };
+    static const double a_b[3] = { 20.5004, 1.329e+07, 8615.6 };
+    static const double a_c1[3] = { 40.8312, 6.66248, 22.4937 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_cubic_d_delta", i, symimpact_multi_harmonic_balance_force_cubic_d_delta(a_delta[i], a_ddelta[i], a_a[i], a_b[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_cubic_d_delta_batch(3, a_delta, a_ddelta, a_a, a_b, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_cubic_d_delta_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_cubic_d_ddelta: ∂/∂ddelta of: force of the cubic contact at penetration δ and rate δ̇ (δ >... [N s/m] */
+static void check_multi_harmonic_balance_force_cubic_d_ddelta(void)
+{
+    static const double expected[3] = { 40.8312, 6.66248, 22.4937 };
+    static const double scale[3] = { 81.6624, 13.32496, 44.9874 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_a[3] = { 3.70581e+12, 4.34278e+15, 508922 };
+    static const double a_b[3] = { 20.5004, 1.329e+07, 8615.6 };
+    static const double a_c1[3] = { 40.8312, 6.66248, 22.4937 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_cubic_d_ddelta", i, symimpact_multi_harmonic_balance_force_cubic_d_ddelta(a_delta[i], a_ddelta[i], a_a[i], a_b[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_cubic_d_ddelta_batch(3, a_delta, a_ddelta, a_a, a_b, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_cubic_d_ddelta_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_hertz: Force of the Hertz contact at penetration δ and rate δ̇ (δ > 0: in contact),... [N] */
+static void check_multi_harmonic_balance_force_hertz(void)
+{
+    static const double expected[3] = { 7109.16797530244, 115.27191471279838, 25.734041050981205 };
+    static const double scale[3] = { 14241.76840318288, 230.54382942559675, 51.46808210196241 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hertz", i, symimpact_multi_harmonic_balance_force_hertz(a_delta[i], a_ddelta[i], a_k_hz[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_hertz_batch(3, a_delta, a_ddelta, a_k_hz, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hertz_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_hertz_d_delta: ∂/∂delta of: force of the Hertz contact at penetration δ and rate δ̇ (δ > 0:... [N/m] */
+static void check_multi_harmonic_balance_force_hertz_d_delta(void)
+{
+    static const double expected[3] = { 3494169.355355805, 8139471.667926828, 18.96046997556306 };
+    static const double scale[3] = { 6988338.71071161, 16278943.335853657, 37.92093995112612 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hertz_d_delta", i, symimpact_multi_harmonic_balance_force_hertz_d_delta(a_delta[i], a_ddelta[i], a_k_hz[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_hertz_d_delta_batch(3, a_delta, a_ddelta, a_k_hz, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hertz_d_delta_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_hertz_d_ddelta: ∂/∂ddelta of: force of the Hertz contact at penetration δ and rate δ̇ (δ >... [N s/m] */
+static void check_multi_harmonic_balance_force_hertz_d_ddelta(void)
+{
+    static const double expected[3] = { 7.28757, 39.5751, 21.8627 };
+    static const double scale[3] = { 14.57514, 79.1502, 43.7254 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hertz_d_ddelta", i, symimpact_multi_harmonic_balance_force_hertz_d_ddelta(a_delta[i], a_ddelta[i], a_k_hz[i], a_c1[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_hertz_d_ddelta_batch(3, a_delta, a_ddelta, a_k_hz, a_c1, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hertz_d_ddelta_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_hunt_crossley: Force of the Hunt–Crossley contact at penetration δ and rate δ̇ (δ > 0: in... [N] */
+static void check_multi_harmonic_balance_force_hunt_crossley(void)
+{
+    static const double expected[3] = { 7114.753711902626, 17.87467170659169, 0.003676049249816551 };
+    static const double scale[3] = { 14241.76840318288, 35.74934341318338, 0.007352098499633102 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_chi[3] = { 0.000535496, 0.906803, 0.0153557 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hunt_crossley", i, symimpact_multi_harmonic_balance_force_hunt_crossley(a_delta[i], a_ddelta[i], a_k_hz[i], a_chi[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_hunt_crossley_batch(3, a_delta, a_ddelta, a_k_hz, a_chi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hunt_crossley_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_hunt_crossley_d_delta: ∂/∂delta of: force of the Hunt–Crossley contact at penetration δ and rate δ̇... [N/m] */
+static void check_multi_harmonic_balance_force_hunt_crossley_d_delta(void)
+{
+    static const double expected[3] = { 3491161.165839229, 28692392.17336092, 19.303128838869085 };
+    static const double scale[3] = { 6988338.71071161, 57384784.34672184, 38.60625767773817 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_chi[3] = { 0.000535496, 0.906803, 0.0153557 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hunt_crossley_d_delta", i, symimpact_multi_harmonic_balance_force_hunt_crossley_d_delta(a_delta[i], a_ddelta[i], a_k_hz[i], a_chi[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_hunt_crossley_d_delta_batch(3, a_delta, a_ddelta, a_k_hz, a_chi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hunt_crossley_d_delta_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
+/* multi_harmonic_balance.force_hunt_crossley_d_ddelta: ∂/∂ddelta of: force of the Hunt–Crossley contact at penetration δ and rate... [N s/m] */
+static void check_multi_harmonic_balance_force_hunt_crossley_d_ddelta(void)
+{
+    static const double expected[3] = { 3.8132050064154095, 4.5981218931172805, 5.544626913720924e-05 };
+    static const double scale[3] = { 7.626410012830819, 9.196243786234561, 0.00011089253827441848 };
+    static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+    static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+    static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+    static const double a_chi[3] = { 0.000535496, 0.906803, 0.0153557 };
+    double out[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hunt_crossley_d_ddelta", i, symimpact_multi_harmonic_balance_force_hunt_crossley_d_ddelta(a_delta[i], a_ddelta[i], a_k_hz[i], a_chi[i]), expected[i], scale[i]);
+    }
+    symimpact_multi_harmonic_balance_force_hunt_crossley_d_ddelta_batch(3, a_delta, a_ddelta, a_k_hz, a_chi, out);
+    for (i = 0; i < 3; ++i) {
+        check("symimpact_multi_harmonic_balance_force_hunt_crossley_d_ddelta_batch", i, out[i], expected[i], scale[i]);
+    }
+}
+
 /* fixed_points.contact_duration (from derive/multiple_scales.py): Contact duration T_CD, Eq. 31 iterated from T⁽⁰⁾ to convergence [s] */
 static void check_fixed_points_contact_duration(void)
 {
@@ -5294,6 +5537,233 @@ static void check_multi_harmonic_balance_clearance_first_harmonic_and_derivative
     }
 }
 
+/* multi_harmonic_balance.force_linear_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_multi_harmonic_balance_force_linear_and_derivatives(void)
+{
+    double out[3];
+    double rows[3 * 3];
+    int i;
+    {
+        static const double expected[3] = { 12867.614853711, 634.7504375789999, 25.7517941441102 };
+        static const double scale[3] = { 25758.66216, 1269.5008751579999, 51.5035882882204 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_k1[3] = { 4.2132e+06, 5.61337e+08, 74.7886 };
+        static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_linear_and_derivatives(a_delta[i], a_ddelta[i], a_k1[i], a_c1[i], out);
+            check("symimpact_multi_harmonic_balance_force_linear_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_linear_and_derivatives_batch(3, a_delta, a_ddelta, a_k1, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_linear_and_derivatives_batch[0]", i, rows[3 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 4213200.0, 561337000.0, 74.7886 };
+        static const double scale[3] = { 8426400.0, 1122674000.0, 149.5772 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_k1[3] = { 4.2132e+06, 5.61337e+08, 74.7886 };
+        static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_linear_and_derivatives(a_delta[i], a_ddelta[i], a_k1[i], a_c1[i], out);
+            check("symimpact_multi_harmonic_balance_force_linear_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_linear_and_derivatives_batch(3, a_delta, a_ddelta, a_k1, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_linear_and_derivatives_batch[1]", i, rows[3 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 7.28757, 39.5751, 21.8627 };
+        static const double scale[3] = { 14.57514, 79.1502, 43.7254 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_k1[3] = { 4.2132e+06, 5.61337e+08, 74.7886 };
+        static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_linear_and_derivatives(a_delta[i], a_ddelta[i], a_k1[i], a_c1[i], out);
+            check("symimpact_multi_harmonic_balance_force_linear_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_linear_and_derivatives_batch(3, a_delta, a_ddelta, a_k1, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_linear_and_derivatives_batch[2]", i, rows[3 * i + 2], expected[i], scale[i]);
+        }
+    }
+}
+
+/* multi_harmonic_balance.force_cubic_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_multi_harmonic_balance_force_cubic_and_derivatives(void)
+{
+    double out[3];
+    double rows[3 * 3];
+    int i;
+    {
+        static const double expected[3] = { 105793.18864241122, 30.97497868142008, 28.934178778962558 };
+        static const double scale[3] = { 211717.66592530243, 61.94995736284016, 57.868357557925115 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_a[3] = { 3.70581e+12, 4.34278e+15, 508922 };
+        static const double a_b[3] = { 20.5004, 1.329e+07, 8615.6 };
+        static const double a_c1[3] = { 40.8312, 6.66248, 22.4937 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_cubic_and_derivatives(a_delta[i], a_ddelta[i], a_a[i], a_b[i], a_c1[i], out);
+            check("symimpact_multi_harmonic_balance_force_cubic_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_cubic_and_derivatives_batch(3, a_delta, a_ddelta, a_a, a_b, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_cubic_and_derivatives_batch[0]", i, rows[3 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 103888375.0049423, 13301376.645713741, 8615.724583985977 };
+        static const double scale[3] = { 207776750.0098846, 26602753.291427482, 17231.449167971954 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_a[3] = { 3.70581e+12, 4.34278e+15, 508922 };
+        static const double a_b[3] = { 20.5004, 1.329e+07, 8615.6 };
+        static const double a_c1[3] = { 40.8312, 6.66248, 22.4937 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_cubic_and_derivatives(a_delta[i], a_ddelta[i], a_a[i], a_b[i], a_c1[i], out);
+            check("symimpact_multi_harmonic_balance_force_cubic_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_cubic_and_derivatives_batch(3, a_delta, a_ddelta, a_a, a_b, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_cubic_and_derivatives_batch[1]", i, rows[3 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 40.8312, 6.66248, 22.4937 };
+        static const double scale[3] = { 81.6624, 13.32496, 44.9874 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_a[3] = { 3.70581e+12, 4.34278e+15, 508922 };
+        static const double a_b[3] = { 20.5004, 1.329e+07, 8615.6 };
+        static const double a_c1[3] = { 40.8312, 6.66248, 22.4937 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_cubic_and_derivatives(a_delta[i], a_ddelta[i], a_a[i], a_b[i], a_c1[i], out);
+            check("symimpact_multi_harmonic_balance_force_cubic_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_cubic_and_derivatives_batch(3, a_delta, a_ddelta, a_a, a_b, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_cubic_and_derivatives_batch[2]", i, rows[3 * i + 2], expected[i], scale[i]);
+        }
+    }
+}
+
+/* multi_harmonic_balance.force_hertz_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_multi_harmonic_balance_force_hertz_and_derivatives(void)
+{
+    double out[3];
+    double rows[3 * 3];
+    int i;
+    {
+        static const double expected[3] = { 7109.16797530244, 115.27191471279838, 25.734041050981205 };
+        static const double scale[3] = { 14241.76840318288, 230.54382942559675, 51.46808210196241 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_hertz_and_derivatives(a_delta[i], a_ddelta[i], a_k_hz[i], a_c1[i], out);
+            check("symimpact_multi_harmonic_balance_force_hertz_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_hertz_and_derivatives_batch(3, a_delta, a_ddelta, a_k_hz, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_hertz_and_derivatives_batch[0]", i, rows[3 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 3494169.355355805, 8139471.667926828, 18.96046997556306 };
+        static const double scale[3] = { 6988338.71071161, 16278943.335853657, 37.92093995112612 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_hertz_and_derivatives(a_delta[i], a_ddelta[i], a_k_hz[i], a_c1[i], out);
+            check("symimpact_multi_harmonic_balance_force_hertz_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_hertz_and_derivatives_batch(3, a_delta, a_ddelta, a_k_hz, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_hertz_and_derivatives_batch[1]", i, rows[3 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 7.28757, 39.5751, 21.8627 };
+        static const double scale[3] = { 14.57514, 79.1502, 43.7254 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_c1[3] = { 7.28757, 39.5751, 21.8627 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_hertz_and_derivatives(a_delta[i], a_ddelta[i], a_k_hz[i], a_c1[i], out);
+            check("symimpact_multi_harmonic_balance_force_hertz_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_hertz_and_derivatives_batch(3, a_delta, a_ddelta, a_k_hz, a_c1, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_hertz_and_derivatives_batch[2]", i, rows[3 * i + 2], expected[i], scale[i]);
+        }
+    }
+}
+
+/* multi_harmonic_balance.force_hunt_crossley_and_derivatives: each part at its own recorded points, through the bundle and its _batch twin */
+static void check_multi_harmonic_balance_force_hunt_crossley_and_derivatives(void)
+{
+    double out[3];
+    double rows[3 * 3];
+    int i;
+    {
+        static const double expected[3] = { 7114.753711902626, 17.87467170659169, 0.003676049249816551 };
+        static const double scale[3] = { 14241.76840318288, 35.74934341318338, 0.007352098499633102 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_chi[3] = { 0.000535496, 0.906803, 0.0153557 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives(a_delta[i], a_ddelta[i], a_k_hz[i], a_chi[i], out);
+            check("symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives[0]", i, out[0], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives_batch(3, a_delta, a_ddelta, a_k_hz, a_chi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives_batch[0]", i, rows[3 * i + 0], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 3491161.165839229, 28692392.17336092, 19.303128838869085 };
+        static const double scale[3] = { 6988338.71071161, 57384784.34672184, 38.60625767773817 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_chi[3] = { 0.000535496, 0.906803, 0.0153557 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives(a_delta[i], a_ddelta[i], a_k_hz[i], a_chi[i], out);
+            check("symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives[1]", i, out[1], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives_batch(3, a_delta, a_ddelta, a_k_hz, a_chi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives_batch[1]", i, rows[3 * i + 1], expected[i], scale[i]);
+        }
+    }
+    {
+        static const double expected[3] = { 3.8132050064154095, 4.5981218931172805, 5.544626913720924e-05 };
+        static const double scale[3] = { 7.626410012830819, 9.196243786234561, 0.00011089253827441848 };
+        static const double a_delta[3] = { 0.0030569, 9.34464e-07, 0.000285657 };
+        static const double a_ddelta[3] = { -1.6077, 2.78461, 1.17691 };
+        static const double a_k_hz[3] = { 4.2132e+07, 5.61337e+09, 747.886 };
+        static const double a_chi[3] = { 0.000535496, 0.906803, 0.0153557 };
+        for (i = 0; i < 3; ++i) {
+            symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives(a_delta[i], a_ddelta[i], a_k_hz[i], a_chi[i], out);
+            check("symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives[2]", i, out[2], expected[i], scale[i]);
+        }
+        symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives_batch(3, a_delta, a_ddelta, a_k_hz, a_chi, rows);
+        for (i = 0; i < 3; ++i) {
+            check("symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives_batch[2]", i, rows[3 * i + 2], expected[i], scale[i]);
+        }
+    }
+}
+
 int main(void)
 {
     check_ritz_mode_shape();
@@ -5475,6 +5945,18 @@ int main(void)
     check_multi_harmonic_balance_clearance_first_harmonic_d_k1();
     check_multi_harmonic_balance_clearance_first_harmonic_d_gap();
     check_multi_harmonic_balance_clearance_first_harmonic_d_A();
+    check_multi_harmonic_balance_force_linear();
+    check_multi_harmonic_balance_force_linear_d_delta();
+    check_multi_harmonic_balance_force_linear_d_ddelta();
+    check_multi_harmonic_balance_force_cubic();
+    check_multi_harmonic_balance_force_cubic_d_delta();
+    check_multi_harmonic_balance_force_cubic_d_ddelta();
+    check_multi_harmonic_balance_force_hertz();
+    check_multi_harmonic_balance_force_hertz_d_delta();
+    check_multi_harmonic_balance_force_hertz_d_ddelta();
+    check_multi_harmonic_balance_force_hunt_crossley();
+    check_multi_harmonic_balance_force_hunt_crossley_d_delta();
+    check_multi_harmonic_balance_force_hunt_crossley_d_ddelta();
     check_fixed_points_contact_duration();
     check_fixed_points_contact_duration_newton();
     check_fixed_points_contact_duration_printed();
@@ -5490,6 +5972,10 @@ int main(void)
     check_slow_flow_clearance_for_response_and_derivatives();
     check_sampled_load_ramp_state();
     check_multi_harmonic_balance_clearance_first_harmonic_and_derivatives();
-    printf("symimpact: %ld checks of 179 kernels, 10 bundles and 5 iterations, %ld failed\n", checks, failures);
+    check_multi_harmonic_balance_force_linear_and_derivatives();
+    check_multi_harmonic_balance_force_cubic_and_derivatives();
+    check_multi_harmonic_balance_force_hertz_and_derivatives();
+    check_multi_harmonic_balance_force_hunt_crossley_and_derivatives();
+    printf("symimpact: %ld checks of 191 kernels, 14 bundles and 5 iterations, %ld failed\n", checks, failures);
     return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -6378,6 +6378,192 @@ void symimpact_multi_harmonic_balance_clearance_first_harmonic_d_A_batch(size_t 
     }
 }
 
+/* Eq. 35: F = c_{1} ddelta + \delta k_{1} */
+double symimpact_multi_harmonic_balance_force_linear(double delta, double ddelta, double k1, double c1)
+{
+    return c1*ddelta + delta*k1;
+}
+
+void symimpact_multi_harmonic_balance_force_linear_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k1, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_linear(delta[i], ddelta[i], k1[i], c1[i]);
+    }
+}
+
+/* Eq. 35: \partial F / \partial \delta = k_{1} */
+double symimpact_multi_harmonic_balance_force_linear_d_delta(double delta, double ddelta, double k1, double c1)
+{
+    (void)delta;
+    (void)ddelta;
+    (void)c1;
+    return k1;
+}
+
+void symimpact_multi_harmonic_balance_force_linear_d_delta_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k1, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_linear_d_delta(delta[i], ddelta[i], k1[i], c1[i]);
+    }
+}
+
+/* Eq. 35: \partial F / \partial ddelta = c_{1} */
+double symimpact_multi_harmonic_balance_force_linear_d_ddelta(double delta, double ddelta, double k1, double c1)
+{
+    (void)delta;
+    (void)ddelta;
+    (void)k1;
+    return c1;
+}
+
+void symimpact_multi_harmonic_balance_force_linear_d_ddelta_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k1, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_linear_d_ddelta(delta[i], ddelta[i], k1[i], c1[i]);
+    }
+}
+
+/* Eq. 8: F = a \delta^{3} + b \delta + c_{1} ddelta */
+double symimpact_multi_harmonic_balance_force_cubic(double delta, double ddelta, double a, double b, double c1)
+{
+    return a*pow(delta, 3) + b*delta + c1*ddelta;
+}
+
+void symimpact_multi_harmonic_balance_force_cubic_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict a, const double *restrict b, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_cubic(delta[i], ddelta[i], a[i], b[i], c1[i]);
+    }
+}
+
+/* Eq. 8: \partial F / \partial \delta = 3 a \delta^{2} + b */
+double symimpact_multi_harmonic_balance_force_cubic_d_delta(double delta, double ddelta, double a, double b, double c1)
+{
+    (void)ddelta;
+    (void)c1;
+    return 3*a*pow(delta, 2) + b;
+}
+
+void symimpact_multi_harmonic_balance_force_cubic_d_delta_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict a, const double *restrict b, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_cubic_d_delta(delta[i], ddelta[i], a[i], b[i], c1[i]);
+    }
+}
+
+/* Eq. 8: \partial F / \partial ddelta = c_{1} */
+double symimpact_multi_harmonic_balance_force_cubic_d_ddelta(double delta, double ddelta, double a, double b, double c1)
+{
+    (void)delta;
+    (void)ddelta;
+    (void)a;
+    (void)b;
+    return c1;
+}
+
+void symimpact_multi_harmonic_balance_force_cubic_d_ddelta_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict a, const double *restrict b, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_cubic_d_ddelta(delta[i], ddelta[i], a[i], b[i], c1[i]);
+    }
+}
+
+/* Eq. 9: F = c_{1} ddelta + \delta^{\frac{3}{2}} k_{hz} */
+double symimpact_multi_harmonic_balance_force_hertz(double delta, double ddelta, double k_hz, double c1)
+{
+    return c1*ddelta + pow(delta, 3.0/2.0)*k_hz;
+}
+
+void symimpact_multi_harmonic_balance_force_hertz_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k_hz, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_hertz(delta[i], ddelta[i], k_hz[i], c1[i]);
+    }
+}
+
+/* Eq. 9: \partial F / \partial \delta = \frac{3 \sqrt{\delta} k_{hz}}{2} */
+double symimpact_multi_harmonic_balance_force_hertz_d_delta(double delta, double ddelta, double k_hz, double c1)
+{
+    (void)ddelta;
+    (void)c1;
+    return (3.0/2.0)*sqrt(delta)*k_hz;
+}
+
+void symimpact_multi_harmonic_balance_force_hertz_d_delta_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k_hz, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_hertz_d_delta(delta[i], ddelta[i], k_hz[i], c1[i]);
+    }
+}
+
+/* Eq. 9: \partial F / \partial ddelta = c_{1} */
+double symimpact_multi_harmonic_balance_force_hertz_d_ddelta(double delta, double ddelta, double k_hz, double c1)
+{
+    (void)delta;
+    (void)ddelta;
+    (void)k_hz;
+    return c1;
+}
+
+void symimpact_multi_harmonic_balance_force_hertz_d_ddelta_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k_hz, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_hertz_d_ddelta(delta[i], ddelta[i], k_hz[i], c1[i]);
+    }
+}
+
+/* Eq. F4: F = \delta^{\frac{3}{2}} k_{hz} \left(\chi ddelta + 1\right) */
+double symimpact_multi_harmonic_balance_force_hunt_crossley(double delta, double ddelta, double k_hz, double chi)
+{
+    return pow(delta, 3.0/2.0)*k_hz*(chi*ddelta + 1);
+}
+
+void symimpact_multi_harmonic_balance_force_hunt_crossley_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k_hz, const double *restrict chi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_hunt_crossley(delta[i], ddelta[i], k_hz[i], chi[i]);
+    }
+}
+
+/* Eq. F4: \partial F / \partial \delta = \frac{3 \sqrt{\delta} k_{hz} \left(\chi ddelta + 1\right)}{2} */
+double symimpact_multi_harmonic_balance_force_hunt_crossley_d_delta(double delta, double ddelta, double k_hz, double chi)
+{
+    return (3.0/2.0)*sqrt(delta)*k_hz*(chi*ddelta + 1);
+}
+
+void symimpact_multi_harmonic_balance_force_hunt_crossley_d_delta_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k_hz, const double *restrict chi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_hunt_crossley_d_delta(delta[i], ddelta[i], k_hz[i], chi[i]);
+    }
+}
+
+/* Eq. F4: \partial F / \partial ddelta = \chi \delta^{\frac{3}{2}} k_{hz} */
+double symimpact_multi_harmonic_balance_force_hunt_crossley_d_ddelta(double delta, double ddelta, double k_hz, double chi)
+{
+    (void)ddelta;
+    return chi*pow(delta, 3.0/2.0)*k_hz;
+}
+
+void symimpact_multi_harmonic_balance_force_hunt_crossley_d_ddelta_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k_hz, const double *restrict chi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        out[i] = symimpact_multi_harmonic_balance_force_hunt_crossley_d_ddelta(delta[i], ddelta[i], k_hz[i], chi[i]);
+    }
+}
+
 /* the force's cos θ coefficient and its derivatives in k₁, d and A (symimpact_multi_harmonic_balance_clearance_first_harmonic, symimpact_multi_harmonic_balance_clearance_first_harmonic_d_k1, symimpact_multi_harmonic_balance_clearance_first_harmonic_d_gap, symimpact_multi_harmonic_balance_clearance_first_harmonic_d_A) */
 void symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives(double k1, double gap, double A, double *restrict out)
 {
@@ -6402,6 +6588,448 @@ void symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives_b
     size_t i;
     for (i = 0; i < n; ++i) {
         symimpact_multi_harmonic_balance_clearance_first_harmonic_and_derivatives(k1[i], gap[i], A[i], out + 4 * i);
+    }
+}
+
+/* the force with its slopes ∂F/∂δ and ∂F/∂δ̇, AFT's Jacobian at a sample (symimpact_multi_harmonic_balance_force_linear, symimpact_multi_harmonic_balance_force_linear_d_delta, symimpact_multi_harmonic_balance_force_linear_d_ddelta) */
+void symimpact_multi_harmonic_balance_force_linear_and_derivatives(double delta, double ddelta, double k1, double c1, double *restrict out)
+{
+    out[0] = c1*ddelta + delta*k1;
+    out[1] = k1;
+    out[2] = c1;
+}
+
+void symimpact_multi_harmonic_balance_force_linear_and_derivatives_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k1, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_multi_harmonic_balance_force_linear_and_derivatives(delta[i], ddelta[i], k1[i], c1[i], out + 3 * i);
+    }
+}
+
+/* the force with its slopes ∂F/∂δ and ∂F/∂δ̇, AFT's Jacobian at a sample (symimpact_multi_harmonic_balance_force_cubic, symimpact_multi_harmonic_balance_force_cubic_d_delta, symimpact_multi_harmonic_balance_force_cubic_d_ddelta) */
+void symimpact_multi_harmonic_balance_force_cubic_and_derivatives(double delta, double ddelta, double a, double b, double c1, double *restrict out)
+{
+    out[0] = a*pow(delta, 3) + b*delta + c1*ddelta;
+    out[1] = 3*a*pow(delta, 2) + b;
+    out[2] = c1;
+}
+
+void symimpact_multi_harmonic_balance_force_cubic_and_derivatives_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict a, const double *restrict b, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_multi_harmonic_balance_force_cubic_and_derivatives(delta[i], ddelta[i], a[i], b[i], c1[i], out + 3 * i);
+    }
+}
+
+/* the force with its slopes ∂F/∂δ and ∂F/∂δ̇, AFT's Jacobian at a sample (symimpact_multi_harmonic_balance_force_hertz, symimpact_multi_harmonic_balance_force_hertz_d_delta, symimpact_multi_harmonic_balance_force_hertz_d_ddelta) */
+void symimpact_multi_harmonic_balance_force_hertz_and_derivatives(double delta, double ddelta, double k_hz, double c1, double *restrict out)
+{
+    out[0] = c1*ddelta + pow(delta, 3.0/2.0)*k_hz;
+    out[1] = (3.0/2.0)*sqrt(delta)*k_hz;
+    out[2] = c1;
+}
+
+void symimpact_multi_harmonic_balance_force_hertz_and_derivatives_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k_hz, const double *restrict c1, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_multi_harmonic_balance_force_hertz_and_derivatives(delta[i], ddelta[i], k_hz[i], c1[i], out + 3 * i);
+    }
+}
+
+/* the force with its slopes ∂F/∂δ and ∂F/∂δ̇, AFT's Jacobian at a sample (symimpact_multi_harmonic_balance_force_hunt_crossley, symimpact_multi_harmonic_balance_force_hunt_crossley_d_delta, symimpact_multi_harmonic_balance_force_hunt_crossley_d_ddelta) */
+void symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives(double delta, double ddelta, double k_hz, double chi, double *restrict out)
+{
+    const double _x0 = chi*ddelta + 1;
+    const double _x1 = pow(delta, 3.0/2.0)*k_hz;
+    out[0] = _x0*_x1;
+    out[1] = (3.0/2.0)*_x0*sqrt(delta)*k_hz;
+    out[2] = _x1*chi;
+}
+
+void symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives_batch(size_t n, const double *restrict delta, const double *restrict ddelta, const double *restrict k_hz, const double *restrict chi, double *restrict out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives(delta[i], ddelta[i], k_hz[i], chi[i], out + 3 * i);
+    }
+}
+
+/* Eq. F9–F10: the AFT residual of the impact damper's balance with the linear contact
+ * (symimpact_multi_harmonic_balance_force_linear_and_derivatives at each time sample); see symimpact.h. */
+void symimpact_multi_harmonic_balance_aft_residual_linear(int H, int N, double omega, const double *restrict U, const double *restrict F_ext, double M, double C, double K, double m, double gap, double k1, double c1, double *restrict R, double *restrict J, double *restrict R_omega)
+{
+    const int nh = 2 * H + 1, n = 2 * nh;
+    const double half = 0.5 * gap, Mc[2] = {M, m}, Cc[2] = {C, 0.0}, Kc[2] = {K, 0.0};
+    double e[2 * H + 1], et[2 * H + 1], p[2 * H + 1];  /* one sample's E, E_θ and P columns */
+    int i, j, k, r, c;
+    /* the linear terms, harmonic by harmonic (Eq. F9): x with M, C, K; y with m alone */
+    for (i = 0; i < n; ++i) {
+        R[i] = -F_ext[i];
+        if (R_omega != NULL) {
+            R_omega[i] = 0.0;
+        }
+    }
+    if (J != NULL) {
+        for (i = 0; i < n * n; ++i) {
+            J[i] = 0.0;
+        }
+    }
+    for (c = 0; c < 2; ++c) {
+        const int o = c * nh;
+        R[o] += Kc[c] * U[o];
+        if (J != NULL) {
+            J[o * n + o] = Kc[c];
+        }
+        for (k = 1; k <= H; ++k) {
+            const int ia = o + 2 * k - 1, ib = ia + 1;
+            const double kw = k * omega, dyn = Kc[c] - kw * kw * Mc[c], damp = kw * Cc[c];
+            R[ia] += dyn * U[ia] + damp * U[ib];
+            R[ib] += -damp * U[ia] + dyn * U[ib];
+            if (J != NULL) {
+                J[ia * n + ia] = dyn;
+                J[ia * n + ib] = damp;
+                J[ib * n + ia] = -damp;
+                J[ib * n + ib] = dyn;
+            }
+            if (R_omega != NULL) {
+                const double ddyn = -2.0 * k * kw * Mc[c], ddamp = k * Cc[c];
+                R_omega[ia] += ddyn * U[ia] + ddamp * U[ib];
+                R_omega[ib] += -ddamp * U[ia] + ddyn * U[ib];
+            }
+        }
+    }
+    /* the contact at each of N samples θⱼ = 2πj/N, projected back (Eq. F10) */
+    for (j = 0; j < N; ++j) {
+        const double theta = 2.0 * 3.141592653589793 * j / N;
+        double x = U[0], xt = 0.0, y = U[nh], yt = 0.0, z, zt, side, out[3];
+        e[0] = 1.0;
+        et[0] = 0.0;
+        p[0] = 1.0 / N;
+        for (k = 1; k <= H; ++k) {
+            const double ck = cos(k * theta), sk = sin(k * theta);
+            e[2 * k - 1] = ck;
+            e[2 * k] = sk;
+            et[2 * k - 1] = -k * sk;
+            et[2 * k] = k * ck;
+            p[2 * k - 1] = 2.0 * ck / N;
+            p[2 * k] = 2.0 * sk / N;
+        }
+        for (c = 1; c < nh; ++c) {
+            x += U[c] * e[c];
+            xt += U[c] * et[c];
+            y += U[nh + c] * e[c];
+            yt += U[nh + c] * et[c];
+        }
+        z = y - x;
+        zt = yt - xt;  /* dz/dθ: ż = ω·zt */
+        side = z >= 0.0 ? 1.0 : -1.0;
+        if (!(side * z - half > 0.0)) {
+            continue;  /* between the walls: no force */
+        }
+        symimpact_multi_harmonic_balance_force_linear_and_derivatives(side * z - half, side * omega * zt, k1, c1, out);
+        /* on M: s·F, on m: −s·F; ∂/∂(x, y) of them: (∓F_δ, ±F_δ), of the speeds likewise */
+        for (r = 0; r < nh; ++r) {
+            R[r] -= p[r] * side * out[0];
+            R[nh + r] += p[r] * side * out[0];
+            if (R_omega != NULL) {
+                R_omega[r] -= p[r] * out[2] * zt;
+                R_omega[nh + r] += p[r] * out[2] * zt;
+            }
+            if (J != NULL) {
+                for (c = 0; c < nh; ++c) {
+                    const double a = p[r] * (out[1] * e[c] + omega * out[2] * et[c]);
+                    J[r * n + c] += a;
+                    J[r * n + nh + c] -= a;
+                    J[(nh + r) * n + c] -= a;
+                    J[(nh + r) * n + nh + c] += a;
+                }
+            }
+        }
+    }
+}
+
+/* Eq. F9–F10: the AFT residual of the impact damper's balance with the cubic contact
+ * (symimpact_multi_harmonic_balance_force_cubic_and_derivatives at each time sample); see symimpact.h. */
+void symimpact_multi_harmonic_balance_aft_residual_cubic(int H, int N, double omega, const double *restrict U, const double *restrict F_ext, double M, double C, double K, double m, double gap, double a, double b, double c1, double *restrict R, double *restrict J, double *restrict R_omega)
+{
+    const int nh = 2 * H + 1, n = 2 * nh;
+    const double half = 0.5 * gap, Mc[2] = {M, m}, Cc[2] = {C, 0.0}, Kc[2] = {K, 0.0};
+    double e[2 * H + 1], et[2 * H + 1], p[2 * H + 1];  /* one sample's E, E_θ and P columns */
+    int i, j, k, r, c;
+    /* the linear terms, harmonic by harmonic (Eq. F9): x with M, C, K; y with m alone */
+    for (i = 0; i < n; ++i) {
+        R[i] = -F_ext[i];
+        if (R_omega != NULL) {
+            R_omega[i] = 0.0;
+        }
+    }
+    if (J != NULL) {
+        for (i = 0; i < n * n; ++i) {
+            J[i] = 0.0;
+        }
+    }
+    for (c = 0; c < 2; ++c) {
+        const int o = c * nh;
+        R[o] += Kc[c] * U[o];
+        if (J != NULL) {
+            J[o * n + o] = Kc[c];
+        }
+        for (k = 1; k <= H; ++k) {
+            const int ia = o + 2 * k - 1, ib = ia + 1;
+            const double kw = k * omega, dyn = Kc[c] - kw * kw * Mc[c], damp = kw * Cc[c];
+            R[ia] += dyn * U[ia] + damp * U[ib];
+            R[ib] += -damp * U[ia] + dyn * U[ib];
+            if (J != NULL) {
+                J[ia * n + ia] = dyn;
+                J[ia * n + ib] = damp;
+                J[ib * n + ia] = -damp;
+                J[ib * n + ib] = dyn;
+            }
+            if (R_omega != NULL) {
+                const double ddyn = -2.0 * k * kw * Mc[c], ddamp = k * Cc[c];
+                R_omega[ia] += ddyn * U[ia] + ddamp * U[ib];
+                R_omega[ib] += -ddamp * U[ia] + ddyn * U[ib];
+            }
+        }
+    }
+    /* the contact at each of N samples θⱼ = 2πj/N, projected back (Eq. F10) */
+    for (j = 0; j < N; ++j) {
+        const double theta = 2.0 * 3.141592653589793 * j / N;
+        double x = U[0], xt = 0.0, y = U[nh], yt = 0.0, z, zt, side, out[3];
+        e[0] = 1.0;
+        et[0] = 0.0;
+        p[0] = 1.0 / N;
+        for (k = 1; k <= H; ++k) {
+            const double ck = cos(k * theta), sk = sin(k * theta);
+            e[2 * k - 1] = ck;
+            e[2 * k] = sk;
+            et[2 * k - 1] = -k * sk;
+            et[2 * k] = k * ck;
+            p[2 * k - 1] = 2.0 * ck / N;
+            p[2 * k] = 2.0 * sk / N;
+        }
+        for (c = 1; c < nh; ++c) {
+            x += U[c] * e[c];
+            xt += U[c] * et[c];
+            y += U[nh + c] * e[c];
+            yt += U[nh + c] * et[c];
+        }
+        z = y - x;
+        zt = yt - xt;  /* dz/dθ: ż = ω·zt */
+        side = z >= 0.0 ? 1.0 : -1.0;
+        if (!(side * z - half > 0.0)) {
+            continue;  /* between the walls: no force */
+        }
+        symimpact_multi_harmonic_balance_force_cubic_and_derivatives(side * z - half, side * omega * zt, a, b, c1, out);
+        /* on M: s·F, on m: −s·F; ∂/∂(x, y) of them: (∓F_δ, ±F_δ), of the speeds likewise */
+        for (r = 0; r < nh; ++r) {
+            R[r] -= p[r] * side * out[0];
+            R[nh + r] += p[r] * side * out[0];
+            if (R_omega != NULL) {
+                R_omega[r] -= p[r] * out[2] * zt;
+                R_omega[nh + r] += p[r] * out[2] * zt;
+            }
+            if (J != NULL) {
+                for (c = 0; c < nh; ++c) {
+                    const double a = p[r] * (out[1] * e[c] + omega * out[2] * et[c]);
+                    J[r * n + c] += a;
+                    J[r * n + nh + c] -= a;
+                    J[(nh + r) * n + c] -= a;
+                    J[(nh + r) * n + nh + c] += a;
+                }
+            }
+        }
+    }
+}
+
+/* Eq. F9–F10: the AFT residual of the impact damper's balance with the Hertz contact
+ * (symimpact_multi_harmonic_balance_force_hertz_and_derivatives at each time sample); see symimpact.h. */
+void symimpact_multi_harmonic_balance_aft_residual_hertz(int H, int N, double omega, const double *restrict U, const double *restrict F_ext, double M, double C, double K, double m, double gap, double k_hz, double c1, double *restrict R, double *restrict J, double *restrict R_omega)
+{
+    const int nh = 2 * H + 1, n = 2 * nh;
+    const double half = 0.5 * gap, Mc[2] = {M, m}, Cc[2] = {C, 0.0}, Kc[2] = {K, 0.0};
+    double e[2 * H + 1], et[2 * H + 1], p[2 * H + 1];  /* one sample's E, E_θ and P columns */
+    int i, j, k, r, c;
+    /* the linear terms, harmonic by harmonic (Eq. F9): x with M, C, K; y with m alone */
+    for (i = 0; i < n; ++i) {
+        R[i] = -F_ext[i];
+        if (R_omega != NULL) {
+            R_omega[i] = 0.0;
+        }
+    }
+    if (J != NULL) {
+        for (i = 0; i < n * n; ++i) {
+            J[i] = 0.0;
+        }
+    }
+    for (c = 0; c < 2; ++c) {
+        const int o = c * nh;
+        R[o] += Kc[c] * U[o];
+        if (J != NULL) {
+            J[o * n + o] = Kc[c];
+        }
+        for (k = 1; k <= H; ++k) {
+            const int ia = o + 2 * k - 1, ib = ia + 1;
+            const double kw = k * omega, dyn = Kc[c] - kw * kw * Mc[c], damp = kw * Cc[c];
+            R[ia] += dyn * U[ia] + damp * U[ib];
+            R[ib] += -damp * U[ia] + dyn * U[ib];
+            if (J != NULL) {
+                J[ia * n + ia] = dyn;
+                J[ia * n + ib] = damp;
+                J[ib * n + ia] = -damp;
+                J[ib * n + ib] = dyn;
+            }
+            if (R_omega != NULL) {
+                const double ddyn = -2.0 * k * kw * Mc[c], ddamp = k * Cc[c];
+                R_omega[ia] += ddyn * U[ia] + ddamp * U[ib];
+                R_omega[ib] += -ddamp * U[ia] + ddyn * U[ib];
+            }
+        }
+    }
+    /* the contact at each of N samples θⱼ = 2πj/N, projected back (Eq. F10) */
+    for (j = 0; j < N; ++j) {
+        const double theta = 2.0 * 3.141592653589793 * j / N;
+        double x = U[0], xt = 0.0, y = U[nh], yt = 0.0, z, zt, side, out[3];
+        e[0] = 1.0;
+        et[0] = 0.0;
+        p[0] = 1.0 / N;
+        for (k = 1; k <= H; ++k) {
+            const double ck = cos(k * theta), sk = sin(k * theta);
+            e[2 * k - 1] = ck;
+            e[2 * k] = sk;
+            et[2 * k - 1] = -k * sk;
+            et[2 * k] = k * ck;
+            p[2 * k - 1] = 2.0 * ck / N;
+            p[2 * k] = 2.0 * sk / N;
+        }
+        for (c = 1; c < nh; ++c) {
+            x += U[c] * e[c];
+            xt += U[c] * et[c];
+            y += U[nh + c] * e[c];
+            yt += U[nh + c] * et[c];
+        }
+        z = y - x;
+        zt = yt - xt;  /* dz/dθ: ż = ω·zt */
+        side = z >= 0.0 ? 1.0 : -1.0;
+        if (!(side * z - half > 0.0)) {
+            continue;  /* between the walls: no force */
+        }
+        symimpact_multi_harmonic_balance_force_hertz_and_derivatives(side * z - half, side * omega * zt, k_hz, c1, out);
+        /* on M: s·F, on m: −s·F; ∂/∂(x, y) of them: (∓F_δ, ±F_δ), of the speeds likewise */
+        for (r = 0; r < nh; ++r) {
+            R[r] -= p[r] * side * out[0];
+            R[nh + r] += p[r] * side * out[0];
+            if (R_omega != NULL) {
+                R_omega[r] -= p[r] * out[2] * zt;
+                R_omega[nh + r] += p[r] * out[2] * zt;
+            }
+            if (J != NULL) {
+                for (c = 0; c < nh; ++c) {
+                    const double a = p[r] * (out[1] * e[c] + omega * out[2] * et[c]);
+                    J[r * n + c] += a;
+                    J[r * n + nh + c] -= a;
+                    J[(nh + r) * n + c] -= a;
+                    J[(nh + r) * n + nh + c] += a;
+                }
+            }
+        }
+    }
+}
+
+/* Eq. F9–F10: the AFT residual of the impact damper's balance with the Hunt–Crossley contact
+ * (symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives at each time sample); see symimpact.h. */
+void symimpact_multi_harmonic_balance_aft_residual_hunt_crossley(int H, int N, double omega, const double *restrict U, const double *restrict F_ext, double M, double C, double K, double m, double gap, double k_hz, double chi, double *restrict R, double *restrict J, double *restrict R_omega)
+{
+    const int nh = 2 * H + 1, n = 2 * nh;
+    const double half = 0.5 * gap, Mc[2] = {M, m}, Cc[2] = {C, 0.0}, Kc[2] = {K, 0.0};
+    double e[2 * H + 1], et[2 * H + 1], p[2 * H + 1];  /* one sample's E, E_θ and P columns */
+    int i, j, k, r, c;
+    /* the linear terms, harmonic by harmonic (Eq. F9): x with M, C, K; y with m alone */
+    for (i = 0; i < n; ++i) {
+        R[i] = -F_ext[i];
+        if (R_omega != NULL) {
+            R_omega[i] = 0.0;
+        }
+    }
+    if (J != NULL) {
+        for (i = 0; i < n * n; ++i) {
+            J[i] = 0.0;
+        }
+    }
+    for (c = 0; c < 2; ++c) {
+        const int o = c * nh;
+        R[o] += Kc[c] * U[o];
+        if (J != NULL) {
+            J[o * n + o] = Kc[c];
+        }
+        for (k = 1; k <= H; ++k) {
+            const int ia = o + 2 * k - 1, ib = ia + 1;
+            const double kw = k * omega, dyn = Kc[c] - kw * kw * Mc[c], damp = kw * Cc[c];
+            R[ia] += dyn * U[ia] + damp * U[ib];
+            R[ib] += -damp * U[ia] + dyn * U[ib];
+            if (J != NULL) {
+                J[ia * n + ia] = dyn;
+                J[ia * n + ib] = damp;
+                J[ib * n + ia] = -damp;
+                J[ib * n + ib] = dyn;
+            }
+            if (R_omega != NULL) {
+                const double ddyn = -2.0 * k * kw * Mc[c], ddamp = k * Cc[c];
+                R_omega[ia] += ddyn * U[ia] + ddamp * U[ib];
+                R_omega[ib] += -ddamp * U[ia] + ddyn * U[ib];
+            }
+        }
+    }
+    /* the contact at each of N samples θⱼ = 2πj/N, projected back (Eq. F10) */
+    for (j = 0; j < N; ++j) {
+        const double theta = 2.0 * 3.141592653589793 * j / N;
+        double x = U[0], xt = 0.0, y = U[nh], yt = 0.0, z, zt, side, out[3];
+        e[0] = 1.0;
+        et[0] = 0.0;
+        p[0] = 1.0 / N;
+        for (k = 1; k <= H; ++k) {
+            const double ck = cos(k * theta), sk = sin(k * theta);
+            e[2 * k - 1] = ck;
+            e[2 * k] = sk;
+            et[2 * k - 1] = -k * sk;
+            et[2 * k] = k * ck;
+            p[2 * k - 1] = 2.0 * ck / N;
+            p[2 * k] = 2.0 * sk / N;
+        }
+        for (c = 1; c < nh; ++c) {
+            x += U[c] * e[c];
+            xt += U[c] * et[c];
+            y += U[nh + c] * e[c];
+            yt += U[nh + c] * et[c];
+        }
+        z = y - x;
+        zt = yt - xt;  /* dz/dθ: ż = ω·zt */
+        side = z >= 0.0 ? 1.0 : -1.0;
+        if (!(side * z - half > 0.0)) {
+            continue;  /* between the walls: no force */
+        }
+        symimpact_multi_harmonic_balance_force_hunt_crossley_and_derivatives(side * z - half, side * omega * zt, k_hz, chi, out);
+        /* on M: s·F, on m: −s·F; ∂/∂(x, y) of them: (∓F_δ, ±F_δ), of the speeds likewise */
+        for (r = 0; r < nh; ++r) {
+            R[r] -= p[r] * side * out[0];
+            R[nh + r] += p[r] * side * out[0];
+            if (R_omega != NULL) {
+                R_omega[r] -= p[r] * out[2] * zt;
+                R_omega[nh + r] += p[r] * out[2] * zt;
+            }
+            if (J != NULL) {
+                for (c = 0; c < nh; ++c) {
+                    const double a = p[r] * (out[1] * e[c] + omega * out[2] * et[c]);
+                    J[r * n + c] += a;
+                    J[r * n + nh + c] -= a;
+                    J[(nh + r) * n + c] -= a;
+                    J[(nh + r) * n + nh + c] += a;
+                }
+            }
+        }
     }
 }
 

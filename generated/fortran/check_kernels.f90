@@ -1949,6 +1949,117 @@ program check_kernels
 [0.0479005_dp, 0.725571_dp, 0.00166479_dp])
     call check("multi_harmonic_balance_clearance_first_harmonic_d_A", got, expected, scale)
 
+    ! multi_harmonic_balance.force_linear
+    expected = [12867.614853711_dp, 634.7504375789999_dp, 25.7517941441102_dp]
+    scale = [25758.66216_dp, 1269.5008751579999_dp, 51.5035882882204_dp]
+    got = multi_harmonic_balance_force_linear([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[4.2132e+06_dp, 5.61337e+08_dp, 74.7886_dp], &
+[7.28757_dp, 39.5751_dp, 21.8627_dp])
+    call check("multi_harmonic_balance_force_linear", got, expected, scale)
+
+    ! multi_harmonic_balance.force_linear_d_delta
+    expected = [4213200.0_dp, 561337000.0_dp, 74.7886_dp]
+    scale = [8426400.0_dp, 1122674000.0_dp, 149.5772_dp]
+    got = multi_harmonic_balance_force_linear_d_delta([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[4.2132e+06_dp, 5.61337e+08_dp, 74.7886_dp], &
+[7.28757_dp, 39.5751_dp, 21.8627_dp])
+    call check("multi_harmonic_balance_force_linear_d_delta", got, expected, scale)
+
+    ! multi_harmonic_balance.force_linear_d_ddelta
+    expected = [7.28757_dp, 39.5751_dp, 21.8627_dp]
+    scale = [14.57514_dp, 79.1502_dp, 43.7254_dp]
+    got = multi_harmonic_balance_force_linear_d_ddelta([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[4.2132e+06_dp, 5.61337e+08_dp, 74.7886_dp], &
+[7.28757_dp, 39.5751_dp, 21.8627_dp])
+    call check("multi_harmonic_balance_force_linear_d_ddelta", got, expected, scale)
+
+    ! multi_harmonic_balance.force_cubic
+    expected = [105793.18864241122_dp, 30.97497868142008_dp, 28.934178778962558_dp]
+    scale = [211717.66592530243_dp, 61.94995736284016_dp, 57.868357557925115_dp]
+    got = multi_harmonic_balance_force_cubic([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[3.70581e+12_dp, 4.34278e+15_dp, 508922.0_dp], &
+[20.5004_dp, 1.329e+07_dp, 8615.6_dp], &
+[40.8312_dp, 6.66248_dp, 22.4937_dp])
+    call check("multi_harmonic_balance_force_cubic", got, expected, scale)
+
+    ! multi_harmonic_balance.force_cubic_d_delta
+    expected = [103888375.0049423_dp, 13301376.645713741_dp, 8615.724583985977_dp]
+    scale = [207776750.0098846_dp, 26602753.291427482_dp, 17231.449167971954_dp]
+    got = multi_harmonic_balance_force_cubic_d_delta([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[3.70581e+12_dp, 4.34278e+15_dp, 508922.0_dp], &
+[20.5004_dp, 1.329e+07_dp, 8615.6_dp], &
+[40.8312_dp, 6.66248_dp, 22.4937_dp])
+    call check("multi_harmonic_balance_force_cubic_d_delta", got, expected, scale)
+
+    ! multi_harmonic_balance.force_cubic_d_ddelta
+    expected = [40.8312_dp, 6.66248_dp, 22.4937_dp]
+    scale = [81.6624_dp, 13.32496_dp, 44.9874_dp]
+    got = multi_harmonic_balance_force_cubic_d_ddelta([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[3.70581e+12_dp, 4.34278e+15_dp, 508922.0_dp], &
+[20.5004_dp, 1.329e+07_dp, 8615.6_dp], &
+[40.8312_dp, 6.66248_dp, 22.4937_dp])
+    call check("multi_harmonic_balance_force_cubic_d_ddelta", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hertz
+    expected = [7109.16797530244_dp, 115.27191471279838_dp, 25.734041050981205_dp]
+    scale = [14241.76840318288_dp, 230.54382942559675_dp, 51.46808210196241_dp]
+    got = multi_harmonic_balance_force_hertz([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[7.28757_dp, 39.5751_dp, 21.8627_dp])
+    call check("multi_harmonic_balance_force_hertz", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hertz_d_delta
+    expected = [3494169.355355805_dp, 8139471.667926828_dp, 18.96046997556306_dp]
+    scale = [6988338.71071161_dp, 16278943.335853657_dp, 37.92093995112612_dp]
+    got = multi_harmonic_balance_force_hertz_d_delta([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[7.28757_dp, 39.5751_dp, 21.8627_dp])
+    call check("multi_harmonic_balance_force_hertz_d_delta", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hertz_d_ddelta
+    expected = [7.28757_dp, 39.5751_dp, 21.8627_dp]
+    scale = [14.57514_dp, 79.1502_dp, 43.7254_dp]
+    got = multi_harmonic_balance_force_hertz_d_ddelta([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[7.28757_dp, 39.5751_dp, 21.8627_dp])
+    call check("multi_harmonic_balance_force_hertz_d_ddelta", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hunt_crossley
+    expected = [7114.753711902626_dp, 17.87467170659169_dp, 0.003676049249816551_dp]
+    scale = [14241.76840318288_dp, 35.74934341318338_dp, 0.007352098499633102_dp]
+    got = multi_harmonic_balance_force_hunt_crossley([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[0.000535496_dp, 0.906803_dp, 0.0153557_dp])
+    call check("multi_harmonic_balance_force_hunt_crossley", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hunt_crossley_d_delta
+    expected = [3491161.165839229_dp, 28692392.17336092_dp, 19.303128838869085_dp]
+    scale = [6988338.71071161_dp, 57384784.34672184_dp, 38.60625767773817_dp]
+    got = multi_harmonic_balance_force_hunt_crossley_d_delta([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[0.000535496_dp, 0.906803_dp, 0.0153557_dp])
+    call check("multi_harmonic_balance_force_hunt_crossley_d_delta", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hunt_crossley_d_ddelta
+    expected = [3.8132050064154095_dp, 4.5981218931172805_dp, 5.544626913720924e-05_dp]
+    scale = [7.626410012830819_dp, 9.196243786234561_dp, 0.00011089253827441848_dp]
+    got = multi_harmonic_balance_force_hunt_crossley_d_ddelta([0.0030569_dp, 9.34464e-07_dp, 0.000285657_dp], &
+[-1.6077_dp, 2.78461_dp, 1.17691_dp], &
+[4.2132e+07_dp, 5.61337e+09_dp, 747.886_dp], &
+[0.000535496_dp, 0.906803_dp, 0.0153557_dp])
+    call check("multi_harmonic_balance_force_hunt_crossley_d_ddelta", got, expected, scale)
+
     ! fixed_points.contact_duration
     expected = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
     scale = [0.08107108835283472_dp, 0.005133929624330402_dp, 0.5442714064450578_dp]
@@ -2936,7 +3047,175 @@ row)
     got(3) = row(4)
     call check("multi_harmonic_balance_clearance_first_harmonic_and_derivatives(4)", got, expected, scale)
 
-    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 179 kernels, 10 bundles and 5 iterations, ", &
+    ! multi_harmonic_balance.force_linear_and_derivatives, part 1 (force_linear), at its own points
+    expected = [12867.614853711_dp, 634.7504375789999_dp, 25.7517941441102_dp]
+    scale = [25758.66216_dp, 1269.5008751579999_dp, 51.5035882882204_dp]
+    call multi_harmonic_balance_force_linear_and_derivatives(0.0030569_dp, -1.6077_dp, 4.2132e+06_dp, 7.28757_dp, &
+row)
+    got(1) = row(1)
+    call multi_harmonic_balance_force_linear_and_derivatives(9.34464e-07_dp, 2.78461_dp, 5.61337e+08_dp, 39.5751_dp, &
+row)
+    got(2) = row(1)
+    call multi_harmonic_balance_force_linear_and_derivatives(0.000285657_dp, 1.17691_dp, 74.7886_dp, 21.8627_dp, &
+row)
+    got(3) = row(1)
+    call check("multi_harmonic_balance_force_linear_and_derivatives(1)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_linear_and_derivatives, part 2 (force_linear_d_delta), at its own points
+    expected = [4213200.0_dp, 561337000.0_dp, 74.7886_dp]
+    scale = [8426400.0_dp, 1122674000.0_dp, 149.5772_dp]
+    call multi_harmonic_balance_force_linear_and_derivatives(0.0030569_dp, -1.6077_dp, 4.2132e+06_dp, 7.28757_dp, &
+row)
+    got(1) = row(2)
+    call multi_harmonic_balance_force_linear_and_derivatives(9.34464e-07_dp, 2.78461_dp, 5.61337e+08_dp, 39.5751_dp, &
+row)
+    got(2) = row(2)
+    call multi_harmonic_balance_force_linear_and_derivatives(0.000285657_dp, 1.17691_dp, 74.7886_dp, 21.8627_dp, &
+row)
+    got(3) = row(2)
+    call check("multi_harmonic_balance_force_linear_and_derivatives(2)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_linear_and_derivatives, part 3 (force_linear_d_ddelta), at its own points
+    expected = [7.28757_dp, 39.5751_dp, 21.8627_dp]
+    scale = [14.57514_dp, 79.1502_dp, 43.7254_dp]
+    call multi_harmonic_balance_force_linear_and_derivatives(0.0030569_dp, -1.6077_dp, 4.2132e+06_dp, 7.28757_dp, &
+row)
+    got(1) = row(3)
+    call multi_harmonic_balance_force_linear_and_derivatives(9.34464e-07_dp, 2.78461_dp, 5.61337e+08_dp, 39.5751_dp, &
+row)
+    got(2) = row(3)
+    call multi_harmonic_balance_force_linear_and_derivatives(0.000285657_dp, 1.17691_dp, 74.7886_dp, 21.8627_dp, &
+row)
+    got(3) = row(3)
+    call check("multi_harmonic_balance_force_linear_and_derivatives(3)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_cubic_and_derivatives, part 1 (force_cubic), at its own points
+    expected = [105793.18864241122_dp, 30.97497868142008_dp, 28.934178778962558_dp]
+    scale = [211717.66592530243_dp, 61.94995736284016_dp, 57.868357557925115_dp]
+    call multi_harmonic_balance_force_cubic_and_derivatives(0.0030569_dp, -1.6077_dp, 3.70581e+12_dp, 20.5004_dp, &
+40.8312_dp, row)
+    got(1) = row(1)
+    call multi_harmonic_balance_force_cubic_and_derivatives(9.34464e-07_dp, 2.78461_dp, 4.34278e+15_dp, 1.329e+07_dp, &
+6.66248_dp, row)
+    got(2) = row(1)
+    call multi_harmonic_balance_force_cubic_and_derivatives(0.000285657_dp, 1.17691_dp, 508922.0_dp, 8615.6_dp, &
+22.4937_dp, row)
+    got(3) = row(1)
+    call check("multi_harmonic_balance_force_cubic_and_derivatives(1)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_cubic_and_derivatives, part 2 (force_cubic_d_delta), at its own points
+    expected = [103888375.0049423_dp, 13301376.645713741_dp, 8615.724583985977_dp]
+    scale = [207776750.0098846_dp, 26602753.291427482_dp, 17231.449167971954_dp]
+    call multi_harmonic_balance_force_cubic_and_derivatives(0.0030569_dp, -1.6077_dp, 3.70581e+12_dp, 20.5004_dp, &
+40.8312_dp, row)
+    got(1) = row(2)
+    call multi_harmonic_balance_force_cubic_and_derivatives(9.34464e-07_dp, 2.78461_dp, 4.34278e+15_dp, 1.329e+07_dp, &
+6.66248_dp, row)
+    got(2) = row(2)
+    call multi_harmonic_balance_force_cubic_and_derivatives(0.000285657_dp, 1.17691_dp, 508922.0_dp, 8615.6_dp, &
+22.4937_dp, row)
+    got(3) = row(2)
+    call check("multi_harmonic_balance_force_cubic_and_derivatives(2)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_cubic_and_derivatives, part 3 (force_cubic_d_ddelta), at its own points
+    expected = [40.8312_dp, 6.66248_dp, 22.4937_dp]
+    scale = [81.6624_dp, 13.32496_dp, 44.9874_dp]
+    call multi_harmonic_balance_force_cubic_and_derivatives(0.0030569_dp, -1.6077_dp, 3.70581e+12_dp, 20.5004_dp, &
+40.8312_dp, row)
+    got(1) = row(3)
+    call multi_harmonic_balance_force_cubic_and_derivatives(9.34464e-07_dp, 2.78461_dp, 4.34278e+15_dp, 1.329e+07_dp, &
+6.66248_dp, row)
+    got(2) = row(3)
+    call multi_harmonic_balance_force_cubic_and_derivatives(0.000285657_dp, 1.17691_dp, 508922.0_dp, 8615.6_dp, &
+22.4937_dp, row)
+    got(3) = row(3)
+    call check("multi_harmonic_balance_force_cubic_and_derivatives(3)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hertz_and_derivatives, part 1 (force_hertz), at its own points
+    expected = [7109.16797530244_dp, 115.27191471279838_dp, 25.734041050981205_dp]
+    scale = [14241.76840318288_dp, 230.54382942559675_dp, 51.46808210196241_dp]
+    call multi_harmonic_balance_force_hertz_and_derivatives(0.0030569_dp, -1.6077_dp, 4.2132e+07_dp, 7.28757_dp, &
+row)
+    got(1) = row(1)
+    call multi_harmonic_balance_force_hertz_and_derivatives(9.34464e-07_dp, 2.78461_dp, 5.61337e+09_dp, 39.5751_dp, &
+row)
+    got(2) = row(1)
+    call multi_harmonic_balance_force_hertz_and_derivatives(0.000285657_dp, 1.17691_dp, 747.886_dp, 21.8627_dp, &
+row)
+    got(3) = row(1)
+    call check("multi_harmonic_balance_force_hertz_and_derivatives(1)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hertz_and_derivatives, part 2 (force_hertz_d_delta), at its own points
+    expected = [3494169.355355805_dp, 8139471.667926828_dp, 18.96046997556306_dp]
+    scale = [6988338.71071161_dp, 16278943.335853657_dp, 37.92093995112612_dp]
+    call multi_harmonic_balance_force_hertz_and_derivatives(0.0030569_dp, -1.6077_dp, 4.2132e+07_dp, 7.28757_dp, &
+row)
+    got(1) = row(2)
+    call multi_harmonic_balance_force_hertz_and_derivatives(9.34464e-07_dp, 2.78461_dp, 5.61337e+09_dp, 39.5751_dp, &
+row)
+    got(2) = row(2)
+    call multi_harmonic_balance_force_hertz_and_derivatives(0.000285657_dp, 1.17691_dp, 747.886_dp, 21.8627_dp, &
+row)
+    got(3) = row(2)
+    call check("multi_harmonic_balance_force_hertz_and_derivatives(2)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hertz_and_derivatives, part 3 (force_hertz_d_ddelta), at its own points
+    expected = [7.28757_dp, 39.5751_dp, 21.8627_dp]
+    scale = [14.57514_dp, 79.1502_dp, 43.7254_dp]
+    call multi_harmonic_balance_force_hertz_and_derivatives(0.0030569_dp, -1.6077_dp, 4.2132e+07_dp, 7.28757_dp, &
+row)
+    got(1) = row(3)
+    call multi_harmonic_balance_force_hertz_and_derivatives(9.34464e-07_dp, 2.78461_dp, 5.61337e+09_dp, 39.5751_dp, &
+row)
+    got(2) = row(3)
+    call multi_harmonic_balance_force_hertz_and_derivatives(0.000285657_dp, 1.17691_dp, 747.886_dp, 21.8627_dp, &
+row)
+    got(3) = row(3)
+    call check("multi_harmonic_balance_force_hertz_and_derivatives(3)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hunt_crossley_and_derivatives, part 1 (force_hunt_crossley), at its own points
+    expected = [7114.753711902626_dp, 17.87467170659169_dp, 0.003676049249816551_dp]
+    scale = [14241.76840318288_dp, 35.74934341318338_dp, 0.007352098499633102_dp]
+    call multi_harmonic_balance_force_hunt_crossley_and_derivatives(0.0030569_dp, -1.6077_dp, 4.2132e+07_dp, 0.000535496_dp, &
+row)
+    got(1) = row(1)
+    call multi_harmonic_balance_force_hunt_crossley_and_derivatives(9.34464e-07_dp, 2.78461_dp, 5.61337e+09_dp, 0.906803_dp, &
+row)
+    got(2) = row(1)
+    call multi_harmonic_balance_force_hunt_crossley_and_derivatives(0.000285657_dp, 1.17691_dp, 747.886_dp, 0.0153557_dp, &
+row)
+    got(3) = row(1)
+    call check("multi_harmonic_balance_force_hunt_crossley_and_derivatives(1)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hunt_crossley_and_derivatives, part 2 (force_hunt_crossley_d_delta), at its own points
+    expected = [3491161.165839229_dp, 28692392.17336092_dp, 19.303128838869085_dp]
+    scale = [6988338.71071161_dp, 57384784.34672184_dp, 38.60625767773817_dp]
+    call multi_harmonic_balance_force_hunt_crossley_and_derivatives(0.0030569_dp, -1.6077_dp, 4.2132e+07_dp, 0.000535496_dp, &
+row)
+    got(1) = row(2)
+    call multi_harmonic_balance_force_hunt_crossley_and_derivatives(9.34464e-07_dp, 2.78461_dp, 5.61337e+09_dp, 0.906803_dp, &
+row)
+    got(2) = row(2)
+    call multi_harmonic_balance_force_hunt_crossley_and_derivatives(0.000285657_dp, 1.17691_dp, 747.886_dp, 0.0153557_dp, &
+row)
+    got(3) = row(2)
+    call check("multi_harmonic_balance_force_hunt_crossley_and_derivatives(2)", got, expected, scale)
+
+    ! multi_harmonic_balance.force_hunt_crossley_and_derivatives, part 3 (force_hunt_crossley_d_ddelta), at its own points
+    expected = [3.8132050064154095_dp, 4.5981218931172805_dp, 5.544626913720924e-05_dp]
+    scale = [7.626410012830819_dp, 9.196243786234561_dp, 0.00011089253827441848_dp]
+    call multi_harmonic_balance_force_hunt_crossley_and_derivatives(0.0030569_dp, -1.6077_dp, 4.2132e+07_dp, 0.000535496_dp, &
+row)
+    got(1) = row(3)
+    call multi_harmonic_balance_force_hunt_crossley_and_derivatives(9.34464e-07_dp, 2.78461_dp, 5.61337e+09_dp, 0.906803_dp, &
+row)
+    got(2) = row(3)
+    call multi_harmonic_balance_force_hunt_crossley_and_derivatives(0.000285657_dp, 1.17691_dp, 747.886_dp, 0.0153557_dp, &
+row)
+    got(3) = row(3)
+    call check("multi_harmonic_balance_force_hunt_crossley_and_derivatives(3)", got, expected, scale)
+
+    print '(a, i0, a, i0, a)', "symimpact: ", checks, " checks of 191 kernels, 14 bundles and 5 iterations, ", &
         failures, " failed"
     if (failures /= 0) stop 1
 

@@ -17,7 +17,27 @@ __all__ = [
     "clearance_first_harmonic_d_k1",
     "clearance_first_harmonic_d_gap",
     "clearance_first_harmonic_d_A",
+    "force_linear",
+    "force_linear_d_delta",
+    "force_linear_d_ddelta",
+    "force_cubic",
+    "force_cubic_d_delta",
+    "force_cubic_d_ddelta",
+    "force_hertz",
+    "force_hertz_d_delta",
+    "force_hertz_d_ddelta",
+    "force_hunt_crossley",
+    "force_hunt_crossley_d_delta",
+    "force_hunt_crossley_d_ddelta",
     "clearance_first_harmonic_and_derivatives",
+    "force_linear_and_derivatives",
+    "force_cubic_and_derivatives",
+    "force_hertz_and_derivatives",
+    "force_hunt_crossley_and_derivatives",
+    "aft_residual_linear",
+    "aft_residual_cubic",
+    "aft_residual_hertz",
+    "aft_residual_hunt_crossley",
 ]
 
 
@@ -71,6 +91,153 @@ def clearance_first_harmonic_d_A(k1, gap, A):
 
 
 @jax.jit
+def force_linear(delta, ddelta, k1, c1):
+    r"""Force of the linear contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample [N], paper Eq. 35.
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``k1``: Stiffness k₁ of the linear contact [N/m]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    return c1*ddelta + delta*k1
+
+
+@jax.jit
+def force_linear_d_delta(delta, ddelta, k1, c1):
+    r"""∂/∂delta of: force of the linear contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample (its partial derivative in penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0)) [N/m], paper Eq. 35.
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``k1``: Stiffness k₁ of the linear contact [N/m]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    return k1
+
+
+@jax.jit
+def force_linear_d_ddelta(delta, ddelta, k1, c1):
+    r"""∂/∂ddelta of: force of the linear contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample (its partial derivative in rate of penetration δ̇ = s·ż) [N s/m], paper Eq. 35.
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``k1``: Stiffness k₁ of the linear contact [N/m]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    return c1
+
+
+@jax.jit
+def force_cubic(delta, ddelta, a, b, c1):
+    r"""Force of the cubic contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample [N], paper Eq. 8.
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``a``: Cubic stiffness a [N/m^3]
+    ``b``: Linear stiffness b [N/m]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    return a*delta**3 + b*delta + c1*ddelta
+
+
+@jax.jit
+def force_cubic_d_delta(delta, ddelta, a, b, c1):
+    r"""∂/∂delta of: force of the cubic contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample (its partial derivative in penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0)) [N/m], paper Eq. 8.
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``a``: Cubic stiffness a [N/m^3]
+    ``b``: Linear stiffness b [N/m]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    return 3*a*delta**2 + b
+
+
+@jax.jit
+def force_cubic_d_ddelta(delta, ddelta, a, b, c1):
+    r"""∂/∂ddelta of: force of the cubic contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample (its partial derivative in rate of penetration δ̇ = s·ż) [N s/m], paper Eq. 8.
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``a``: Cubic stiffness a [N/m^3]
+    ``b``: Linear stiffness b [N/m]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    return c1
+
+
+@jax.jit
+def force_hertz(delta, ddelta, k_hz, c1):
+    r"""Force of the Hertz contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample [N], paper Eq. 9.
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    return c1*ddelta + delta**(3/2)*k_hz
+
+
+@jax.jit
+def force_hertz_d_delta(delta, ddelta, k_hz, c1):
+    r"""∂/∂delta of: force of the Hertz contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample (its partial derivative in penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0)) [N/m], paper Eq. 9.
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    return (3/2)*jax.numpy.sqrt(delta)*k_hz
+
+
+@jax.jit
+def force_hertz_d_ddelta(delta, ddelta, k_hz, c1):
+    r"""∂/∂ddelta of: force of the Hertz contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample (its partial derivative in rate of penetration δ̇ = s·ż) [N s/m], paper Eq. 9.
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    return c1
+
+
+@jax.jit
+def force_hunt_crossley(delta, ddelta, k_hz, chi):
+    r"""Force of the Hunt–Crossley contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample [N], Eq. F4 (derived here, beyond the paper).
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``chi``: Hunt–Crossley damping χ [s/m]
+    """
+    return delta**(3/2)*k_hz*(chi*ddelta + 1)
+
+
+@jax.jit
+def force_hunt_crossley_d_delta(delta, ddelta, k_hz, chi):
+    r"""∂/∂delta of: force of the Hunt–Crossley contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample (its partial derivative in penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0)) [N/m], Eq. F4 (derived here, beyond the paper).
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``chi``: Hunt–Crossley damping χ [s/m]
+    """
+    return (3/2)*jax.numpy.sqrt(delta)*k_hz*(chi*ddelta + 1)
+
+
+@jax.jit
+def force_hunt_crossley_d_ddelta(delta, ddelta, k_hz, chi):
+    r"""∂/∂ddelta of: force of the Hunt–Crossley contact at penetration δ and rate δ̇ (δ > 0: in contact), what AFT evaluates at each time sample (its partial derivative in rate of penetration δ̇ = s·ż) [N s/m], Eq. F4 (derived here, beyond the paper).
+
+    ``delta``: Penetration δ = s·z − d/2 into the wall s = ±1 (δ > 0) [m]
+    ``ddelta``: Rate of penetration δ̇ = s·ż [m/s]
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``chi``: Hunt–Crossley damping χ [s/m]
+    """
+    return chi*delta**(3/2)*k_hz
+
+
+@jax.jit
 def clearance_first_harmonic_and_derivatives(k1, gap, A):
     r"""the force's cos θ coefficient and its derivatives in k₁, d and A, Eq. F11 (derived here, beyond the paper): the tuple
     (``clearance_first_harmonic``, ``clearance_first_harmonic_d_k1``, ``clearance_first_harmonic_d_gap``, ``clearance_first_harmonic_d_A``), their common subexpressions computed once.
@@ -94,3 +261,262 @@ def clearance_first_harmonic_and_derivatives(k1, gap, A):
             k1, gap, A,
         )[:4]
     )
+
+
+@jax.jit
+def force_linear_and_derivatives(delta, ddelta, k1, c1):
+    r"""the force with its slopes ∂F/∂δ and ∂F/∂δ̇, AFT's Jacobian at a sample, paper Eq. 35: the tuple
+    (``force_linear``, ``force_linear_d_delta``, ``force_linear_d_ddelta``), their common subexpressions computed once.
+    """
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            c1*ddelta + delta*k1,
+            k1,
+            c1,
+            delta, ddelta, k1, c1,
+        )[:3]
+    )
+
+
+@jax.jit
+def force_cubic_and_derivatives(delta, ddelta, a, b, c1):
+    r"""the force with its slopes ∂F/∂δ and ∂F/∂δ̇, AFT's Jacobian at a sample, paper Eq. 8: the tuple
+    (``force_cubic``, ``force_cubic_d_delta``, ``force_cubic_d_ddelta``), their common subexpressions computed once.
+    """
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            a*delta**3 + b*delta + c1*ddelta,
+            3*a*delta**2 + b,
+            c1,
+            delta, ddelta, a, b, c1,
+        )[:3]
+    )
+
+
+@jax.jit
+def force_hertz_and_derivatives(delta, ddelta, k_hz, c1):
+    r"""the force with its slopes ∂F/∂δ and ∂F/∂δ̇, AFT's Jacobian at a sample, paper Eq. 9: the tuple
+    (``force_hertz``, ``force_hertz_d_delta``, ``force_hertz_d_ddelta``), their common subexpressions computed once.
+    """
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            c1*ddelta + delta**(3/2)*k_hz,
+            (3/2)*jax.numpy.sqrt(delta)*k_hz,
+            c1,
+            delta, ddelta, k_hz, c1,
+        )[:3]
+    )
+
+
+@jax.jit
+def force_hunt_crossley_and_derivatives(delta, ddelta, k_hz, chi):
+    r"""the force with its slopes ∂F/∂δ and ∂F/∂δ̇, AFT's Jacobian at a sample, Eq. F4 (derived here, beyond the paper): the tuple
+    (``force_hunt_crossley``, ``force_hunt_crossley_d_delta``, ``force_hunt_crossley_d_ddelta``), their common subexpressions computed once.
+    """
+    _x0 = chi*ddelta + 1
+    _x1 = delta**(3/2)*k_hz
+    return tuple(
+        jax.numpy.broadcast_arrays(
+            _x0*_x1,
+            (3/2)*_x0*jax.numpy.sqrt(delta)*k_hz,
+            _x1*chi,
+            delta, ddelta, k_hz, chi,
+        )[:3]
+    )
+
+
+@functools.partial(jax.jit, static_argnames=("H", "N"))
+def aft_residual_linear(H, N, omega, U, F_ext, M, C, K, m, gap, k1, c1):
+    r"""The harmonic balance of the impact damper with the linear contact by the alternating
+    frequency–time scheme, Eq. F9–F10 (derived here, beyond the paper): (R, ∂R/∂U, ∂R/∂ω) at (U, ω).
+
+    q = (x, y): the primary (``M``, ``C``, ``K``) and the impact mass ``m`` between walls at
+    ±``gap``/2.  ``U`` holds the coefficients of x then of y in θ = ωt, each (a₀, a₁, b₁, …,
+    a_H, b_H): n = 2(2H + 1) numbers; ``F_ext`` the external force's coefficients in the same
+    order (a force F₀ cos(νθ + φ) on x: ``F_ext[2ν − 1]`` = F₀ cos φ, ``F_ext[2ν]`` = −F₀ sin φ).
+    At each of ``N`` ≥ 2H + 1 samples θⱼ = 2πj/N, δ = s·z − gap/2 with z = y − x, s = sign z,
+    and while δ > 0 the force ``force_linear_and_derivatives`` (on M s·F, on m −s·F);
+    R = L(ω)U − F_ext − P f, L holding K − (kω)²M on harmonic k's diagonal and ±kωC off it.
+    ``H`` and ``N`` are static (each pair compiles once); the result is differentiable in the
+    others, and its Jacobian is the scheme's own, from the law's slopes.
+
+    ``k1``: Stiffness k₁ of the linear contact [N/m]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    jnp = jax.numpy
+    nh = 2 * H + 1
+    k = jnp.arange(1, H + 1)
+    kt = jnp.outer(2.0 * jnp.pi * jnp.arange(N) / N, k)
+    c, s = jnp.cos(kt), jnp.sin(kt)
+    E = jnp.zeros((N, nh)).at[:, 0].set(1.0).at[:, 1::2].set(c).at[:, 2::2].set(s)
+    Et = jnp.zeros((N, nh)).at[:, 1::2].set(-k * s).at[:, 2::2].set(k * c)
+    P = jnp.zeros((nh, N)).at[0].set(1.0 / N).at[1::2].set(2.0 * c.T / N).at[2::2].set(2.0 * s.T / N)
+    # the linear terms, harmonic by harmonic (Eq. F9): x with M, C, K; y with m alone
+    D = jnp.zeros((nh, nh)).at[2 * k - 1, 2 * k].set(k).at[2 * k, 2 * k - 1].set(-k)
+    D2, I = D @ D, jnp.eye(nh)
+    L = jax.scipy.linalg.block_diag(K * I + omega * C * D + omega**2 * M * D2, omega**2 * m * D2)
+    L_omega = jax.scipy.linalg.block_diag(C * D + 2.0 * omega * M * D2, 2.0 * omega * m * D2)
+    # the contact at each sample (Eq. F10); the law is evaluated only where δ > 0 (elsewhere at
+    # δ = 1, discarded: no NaN of δ^1.5 reaches a derivative)
+    X, Y = U[:nh], U[nh:]
+    z, zt = E @ (Y - X), Et @ (Y - X)
+    side = jnp.where(z >= 0.0, 1.0, -1.0)
+    delta = side * z - 0.5 * gap
+    on = delta > 0.0
+    F, F_d, F_dd = (jnp.where(on, v, 0.0) for v in force_linear_and_derivatives(
+        jnp.where(on, delta, 1.0), side * omega * zt, k1, c1))
+    f = P @ (side * F)  # the force on M; on m its opposite
+    R = L @ U - F_ext - jnp.concatenate([f, -f])
+    A = P @ (F_d[:, None] * E + omega * F_dd[:, None] * Et)
+    J = L + jnp.block([[A, -A], [-A, A]])
+    g = P @ (F_dd * zt)
+    R_omega = L_omega @ U - jnp.concatenate([g, -g])
+    return R, J, R_omega
+
+
+@functools.partial(jax.jit, static_argnames=("H", "N"))
+def aft_residual_cubic(H, N, omega, U, F_ext, M, C, K, m, gap, a, b, c1):
+    r"""The harmonic balance of the impact damper with the cubic contact by the alternating
+    frequency–time scheme, Eq. F9–F10 (derived here, beyond the paper): (R, ∂R/∂U, ∂R/∂ω) at (U, ω).
+
+    q = (x, y): the primary (``M``, ``C``, ``K``) and the impact mass ``m`` between walls at
+    ±``gap``/2.  ``U`` holds the coefficients of x then of y in θ = ωt, each (a₀, a₁, b₁, …,
+    a_H, b_H): n = 2(2H + 1) numbers; ``F_ext`` the external force's coefficients in the same
+    order (a force F₀ cos(νθ + φ) on x: ``F_ext[2ν − 1]`` = F₀ cos φ, ``F_ext[2ν]`` = −F₀ sin φ).
+    At each of ``N`` ≥ 2H + 1 samples θⱼ = 2πj/N, δ = s·z − gap/2 with z = y − x, s = sign z,
+    and while δ > 0 the force ``force_cubic_and_derivatives`` (on M s·F, on m −s·F);
+    R = L(ω)U − F_ext − P f, L holding K − (kω)²M on harmonic k's diagonal and ±kωC off it.
+    ``H`` and ``N`` are static (each pair compiles once); the result is differentiable in the
+    others, and its Jacobian is the scheme's own, from the law's slopes.
+
+    ``a``: Cubic stiffness a [N/m^3]
+    ``b``: Linear stiffness b [N/m]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    jnp = jax.numpy
+    nh = 2 * H + 1
+    k = jnp.arange(1, H + 1)
+    kt = jnp.outer(2.0 * jnp.pi * jnp.arange(N) / N, k)
+    c, s = jnp.cos(kt), jnp.sin(kt)
+    E = jnp.zeros((N, nh)).at[:, 0].set(1.0).at[:, 1::2].set(c).at[:, 2::2].set(s)
+    Et = jnp.zeros((N, nh)).at[:, 1::2].set(-k * s).at[:, 2::2].set(k * c)
+    P = jnp.zeros((nh, N)).at[0].set(1.0 / N).at[1::2].set(2.0 * c.T / N).at[2::2].set(2.0 * s.T / N)
+    # the linear terms, harmonic by harmonic (Eq. F9): x with M, C, K; y with m alone
+    D = jnp.zeros((nh, nh)).at[2 * k - 1, 2 * k].set(k).at[2 * k, 2 * k - 1].set(-k)
+    D2, I = D @ D, jnp.eye(nh)
+    L = jax.scipy.linalg.block_diag(K * I + omega * C * D + omega**2 * M * D2, omega**2 * m * D2)
+    L_omega = jax.scipy.linalg.block_diag(C * D + 2.0 * omega * M * D2, 2.0 * omega * m * D2)
+    # the contact at each sample (Eq. F10); the law is evaluated only where δ > 0 (elsewhere at
+    # δ = 1, discarded: no NaN of δ^1.5 reaches a derivative)
+    X, Y = U[:nh], U[nh:]
+    z, zt = E @ (Y - X), Et @ (Y - X)
+    side = jnp.where(z >= 0.0, 1.0, -1.0)
+    delta = side * z - 0.5 * gap
+    on = delta > 0.0
+    F, F_d, F_dd = (jnp.where(on, v, 0.0) for v in force_cubic_and_derivatives(
+        jnp.where(on, delta, 1.0), side * omega * zt, a, b, c1))
+    f = P @ (side * F)  # the force on M; on m its opposite
+    R = L @ U - F_ext - jnp.concatenate([f, -f])
+    A = P @ (F_d[:, None] * E + omega * F_dd[:, None] * Et)
+    J = L + jnp.block([[A, -A], [-A, A]])
+    g = P @ (F_dd * zt)
+    R_omega = L_omega @ U - jnp.concatenate([g, -g])
+    return R, J, R_omega
+
+
+@functools.partial(jax.jit, static_argnames=("H", "N"))
+def aft_residual_hertz(H, N, omega, U, F_ext, M, C, K, m, gap, k_hz, c1):
+    r"""The harmonic balance of the impact damper with the Hertz contact by the alternating
+    frequency–time scheme, Eq. F9–F10 (derived here, beyond the paper): (R, ∂R/∂U, ∂R/∂ω) at (U, ω).
+
+    q = (x, y): the primary (``M``, ``C``, ``K``) and the impact mass ``m`` between walls at
+    ±``gap``/2.  ``U`` holds the coefficients of x then of y in θ = ωt, each (a₀, a₁, b₁, …,
+    a_H, b_H): n = 2(2H + 1) numbers; ``F_ext`` the external force's coefficients in the same
+    order (a force F₀ cos(νθ + φ) on x: ``F_ext[2ν − 1]`` = F₀ cos φ, ``F_ext[2ν]`` = −F₀ sin φ).
+    At each of ``N`` ≥ 2H + 1 samples θⱼ = 2πj/N, δ = s·z − gap/2 with z = y − x, s = sign z,
+    and while δ > 0 the force ``force_hertz_and_derivatives`` (on M s·F, on m −s·F);
+    R = L(ω)U − F_ext − P f, L holding K − (kω)²M on harmonic k's diagonal and ±kωC off it.
+    ``H`` and ``N`` are static (each pair compiles once); the result is differentiable in the
+    others, and its Jacobian is the scheme's own, from the law's slopes.
+
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``c1``: Contact damping c₁ [N s/m]
+    """
+    jnp = jax.numpy
+    nh = 2 * H + 1
+    k = jnp.arange(1, H + 1)
+    kt = jnp.outer(2.0 * jnp.pi * jnp.arange(N) / N, k)
+    c, s = jnp.cos(kt), jnp.sin(kt)
+    E = jnp.zeros((N, nh)).at[:, 0].set(1.0).at[:, 1::2].set(c).at[:, 2::2].set(s)
+    Et = jnp.zeros((N, nh)).at[:, 1::2].set(-k * s).at[:, 2::2].set(k * c)
+    P = jnp.zeros((nh, N)).at[0].set(1.0 / N).at[1::2].set(2.0 * c.T / N).at[2::2].set(2.0 * s.T / N)
+    # the linear terms, harmonic by harmonic (Eq. F9): x with M, C, K; y with m alone
+    D = jnp.zeros((nh, nh)).at[2 * k - 1, 2 * k].set(k).at[2 * k, 2 * k - 1].set(-k)
+    D2, I = D @ D, jnp.eye(nh)
+    L = jax.scipy.linalg.block_diag(K * I + omega * C * D + omega**2 * M * D2, omega**2 * m * D2)
+    L_omega = jax.scipy.linalg.block_diag(C * D + 2.0 * omega * M * D2, 2.0 * omega * m * D2)
+    # the contact at each sample (Eq. F10); the law is evaluated only where δ > 0 (elsewhere at
+    # δ = 1, discarded: no NaN of δ^1.5 reaches a derivative)
+    X, Y = U[:nh], U[nh:]
+    z, zt = E @ (Y - X), Et @ (Y - X)
+    side = jnp.where(z >= 0.0, 1.0, -1.0)
+    delta = side * z - 0.5 * gap
+    on = delta > 0.0
+    F, F_d, F_dd = (jnp.where(on, v, 0.0) for v in force_hertz_and_derivatives(
+        jnp.where(on, delta, 1.0), side * omega * zt, k_hz, c1))
+    f = P @ (side * F)  # the force on M; on m its opposite
+    R = L @ U - F_ext - jnp.concatenate([f, -f])
+    A = P @ (F_d[:, None] * E + omega * F_dd[:, None] * Et)
+    J = L + jnp.block([[A, -A], [-A, A]])
+    g = P @ (F_dd * zt)
+    R_omega = L_omega @ U - jnp.concatenate([g, -g])
+    return R, J, R_omega
+
+
+@functools.partial(jax.jit, static_argnames=("H", "N"))
+def aft_residual_hunt_crossley(H, N, omega, U, F_ext, M, C, K, m, gap, k_hz, chi):
+    r"""The harmonic balance of the impact damper with the Hunt–Crossley contact by the alternating
+    frequency–time scheme, Eq. F9–F10 (derived here, beyond the paper): (R, ∂R/∂U, ∂R/∂ω) at (U, ω).
+
+    q = (x, y): the primary (``M``, ``C``, ``K``) and the impact mass ``m`` between walls at
+    ±``gap``/2.  ``U`` holds the coefficients of x then of y in θ = ωt, each (a₀, a₁, b₁, …,
+    a_H, b_H): n = 2(2H + 1) numbers; ``F_ext`` the external force's coefficients in the same
+    order (a force F₀ cos(νθ + φ) on x: ``F_ext[2ν − 1]`` = F₀ cos φ, ``F_ext[2ν]`` = −F₀ sin φ).
+    At each of ``N`` ≥ 2H + 1 samples θⱼ = 2πj/N, δ = s·z − gap/2 with z = y − x, s = sign z,
+    and while δ > 0 the force ``force_hunt_crossley_and_derivatives`` (on M s·F, on m −s·F);
+    R = L(ω)U − F_ext − P f, L holding K − (kω)²M on harmonic k's diagonal and ±kωC off it.
+    ``H`` and ``N`` are static (each pair compiles once); the result is differentiable in the
+    others, and its Jacobian is the scheme's own, from the law's slopes.
+
+    ``k_hz``: Hertz contact stiffness K_Hz [N/m^1.5]
+    ``chi``: Hunt–Crossley damping χ [s/m]
+    """
+    jnp = jax.numpy
+    nh = 2 * H + 1
+    k = jnp.arange(1, H + 1)
+    kt = jnp.outer(2.0 * jnp.pi * jnp.arange(N) / N, k)
+    c, s = jnp.cos(kt), jnp.sin(kt)
+    E = jnp.zeros((N, nh)).at[:, 0].set(1.0).at[:, 1::2].set(c).at[:, 2::2].set(s)
+    Et = jnp.zeros((N, nh)).at[:, 1::2].set(-k * s).at[:, 2::2].set(k * c)
+    P = jnp.zeros((nh, N)).at[0].set(1.0 / N).at[1::2].set(2.0 * c.T / N).at[2::2].set(2.0 * s.T / N)
+    # the linear terms, harmonic by harmonic (Eq. F9): x with M, C, K; y with m alone
+    D = jnp.zeros((nh, nh)).at[2 * k - 1, 2 * k].set(k).at[2 * k, 2 * k - 1].set(-k)
+    D2, I = D @ D, jnp.eye(nh)
+    L = jax.scipy.linalg.block_diag(K * I + omega * C * D + omega**2 * M * D2, omega**2 * m * D2)
+    L_omega = jax.scipy.linalg.block_diag(C * D + 2.0 * omega * M * D2, 2.0 * omega * m * D2)
+    # the contact at each sample (Eq. F10); the law is evaluated only where δ > 0 (elsewhere at
+    # δ = 1, discarded: no NaN of δ^1.5 reaches a derivative)
+    X, Y = U[:nh], U[nh:]
+    z, zt = E @ (Y - X), Et @ (Y - X)
+    side = jnp.where(z >= 0.0, 1.0, -1.0)
+    delta = side * z - 0.5 * gap
+    on = delta > 0.0
+    F, F_d, F_dd = (jnp.where(on, v, 0.0) for v in force_hunt_crossley_and_derivatives(
+        jnp.where(on, delta, 1.0), side * omega * zt, k_hz, chi))
+    f = P @ (side * F)  # the force on M; on m its opposite
+    R = L @ U - F_ext - jnp.concatenate([f, -f])
+    A = P @ (F_d[:, None] * E + omega * F_dd[:, None] * Et)
+    J = L + jnp.block([[A, -A], [-A, A]])
+    g = P @ (F_dd * zt)
+    R_omega = L_omega @ U - jnp.concatenate([g, -g])
+    return R, J, R_omega

@@ -2168,6 +2168,150 @@ fn multi_harmonic_balance_clearance_first_harmonic_d_A() {
 }
 
 #[test]
+fn multi_harmonic_balance_force_linear() {
+    let expected = [12867.614853711, 634.7504375789999, 25.7517941441102];
+    let scale = [25758.66216, 1269.5008751579999, 51.5035882882204];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+06_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+08_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 74.7886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_linear(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("multi_harmonic_balance::force_linear", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_linear_d_delta() {
+    let expected = [4213200.0, 561337000.0, 74.7886];
+    let scale = [8426400.0, 1122674000.0, 149.5772];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+06_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+08_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 74.7886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_linear_d_delta(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("multi_harmonic_balance::force_linear_d_delta", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_linear_d_ddelta() {
+    let expected = [7.28757, 39.5751, 21.8627];
+    let scale = [14.57514, 79.1502, 43.7254];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+06_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+08_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 74.7886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_linear_d_ddelta(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("multi_harmonic_balance::force_linear_d_ddelta", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_cubic() {
+    let expected = [105793.18864241122, 30.97497868142008, 28.934178778962558];
+    let scale = [211717.66592530243, 61.94995736284016, 57.868357557925115];
+    let points: [[f64; 5]; 3] = [[0.0030569_f64, -1.6077_f64, 3.70581e+12_f64, 20.5004_f64, 40.8312_f64], [9.34464e-07_f64, 2.78461_f64, 4.34278e+15_f64, 1.329e+07_f64, 6.66248_f64], [0.000285657_f64, 1.17691_f64, 508922_f64, 8615.6_f64, 22.4937_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_cubic(p[0], p[1], p[2], p[3], p[4]))
+        .collect();
+    check("multi_harmonic_balance::force_cubic", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_cubic_d_delta() {
+    let expected = [103888375.0049423, 13301376.645713741, 8615.724583985977];
+    let scale = [207776750.0098846, 26602753.291427482, 17231.449167971954];
+    let points: [[f64; 5]; 3] = [[0.0030569_f64, -1.6077_f64, 3.70581e+12_f64, 20.5004_f64, 40.8312_f64], [9.34464e-07_f64, 2.78461_f64, 4.34278e+15_f64, 1.329e+07_f64, 6.66248_f64], [0.000285657_f64, 1.17691_f64, 508922_f64, 8615.6_f64, 22.4937_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_cubic_d_delta(p[0], p[1], p[2], p[3], p[4]))
+        .collect();
+    check("multi_harmonic_balance::force_cubic_d_delta", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_cubic_d_ddelta() {
+    let expected = [40.8312, 6.66248, 22.4937];
+    let scale = [81.6624, 13.32496, 44.9874];
+    let points: [[f64; 5]; 3] = [[0.0030569_f64, -1.6077_f64, 3.70581e+12_f64, 20.5004_f64, 40.8312_f64], [9.34464e-07_f64, 2.78461_f64, 4.34278e+15_f64, 1.329e+07_f64, 6.66248_f64], [0.000285657_f64, 1.17691_f64, 508922_f64, 8615.6_f64, 22.4937_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_cubic_d_ddelta(p[0], p[1], p[2], p[3], p[4]))
+        .collect();
+    check("multi_harmonic_balance::force_cubic_d_ddelta", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hertz() {
+    let expected = [7109.16797530244, 115.27191471279838, 25.734041050981205];
+    let scale = [14241.76840318288, 230.54382942559675, 51.46808210196241];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hertz(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("multi_harmonic_balance::force_hertz", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hertz_d_delta() {
+    let expected = [3494169.355355805, 8139471.667926828, 18.96046997556306];
+    let scale = [6988338.71071161, 16278943.335853657, 37.92093995112612];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hertz_d_delta(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("multi_harmonic_balance::force_hertz_d_delta", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hertz_d_ddelta() {
+    let expected = [7.28757, 39.5751, 21.8627];
+    let scale = [14.57514, 79.1502, 43.7254];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hertz_d_ddelta(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("multi_harmonic_balance::force_hertz_d_ddelta", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hunt_crossley() {
+    let expected = [7114.753711902626, 17.87467170659169, 0.003676049249816551];
+    let scale = [14241.76840318288, 35.74934341318338, 0.007352098499633102];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 0.000535496_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 0.906803_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 0.0153557_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hunt_crossley(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("multi_harmonic_balance::force_hunt_crossley", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hunt_crossley_d_delta() {
+    let expected = [3491161.165839229, 28692392.17336092, 19.303128838869085];
+    let scale = [6988338.71071161, 57384784.34672184, 38.60625767773817];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 0.000535496_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 0.906803_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 0.0153557_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hunt_crossley_d_delta(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("multi_harmonic_balance::force_hunt_crossley_d_delta", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hunt_crossley_d_ddelta() {
+    let expected = [3.8132050064154095, 4.5981218931172805, 5.544626913720924e-05];
+    let scale = [7.626410012830819, 9.196243786234561, 0.00011089253827441848];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 0.000535496_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 0.906803_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 0.0153557_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hunt_crossley_d_ddelta(p[0], p[1], p[2], p[3]))
+        .collect();
+    check("multi_harmonic_balance::force_hunt_crossley_d_ddelta", &got, &expected, &scale);
+}
+
+#[test]
 fn closed_forms_hertz_contact_duration_and_derivatives_0() {
     let expected = [0.00484261680843532, 0.00013456345784133297, 0.38326922517706524];
     let scale = [0.00484261680843532, 0.00013456345784133297, 0.38326922517706524];
@@ -2873,6 +3017,150 @@ fn multi_harmonic_balance_clearance_first_harmonic_and_derivatives_3() {
         .map(|p| symimpact::multi_harmonic_balance::clearance_first_harmonic_and_derivatives(p[0], p[1], p[2])[3])
         .collect();
     check("multi_harmonic_balance::clearance_first_harmonic_and_derivatives[3]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_linear_and_derivatives_0() {
+    let expected = [12867.614853711, 634.7504375789999, 25.7517941441102];
+    let scale = [25758.66216, 1269.5008751579999, 51.5035882882204];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+06_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+08_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 74.7886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_linear_and_derivatives(p[0], p[1], p[2], p[3])[0])
+        .collect();
+    check("multi_harmonic_balance::force_linear_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_linear_and_derivatives_1() {
+    let expected = [4213200.0, 561337000.0, 74.7886];
+    let scale = [8426400.0, 1122674000.0, 149.5772];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+06_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+08_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 74.7886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_linear_and_derivatives(p[0], p[1], p[2], p[3])[1])
+        .collect();
+    check("multi_harmonic_balance::force_linear_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_linear_and_derivatives_2() {
+    let expected = [7.28757, 39.5751, 21.8627];
+    let scale = [14.57514, 79.1502, 43.7254];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+06_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+08_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 74.7886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_linear_and_derivatives(p[0], p[1], p[2], p[3])[2])
+        .collect();
+    check("multi_harmonic_balance::force_linear_and_derivatives[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_cubic_and_derivatives_0() {
+    let expected = [105793.18864241122, 30.97497868142008, 28.934178778962558];
+    let scale = [211717.66592530243, 61.94995736284016, 57.868357557925115];
+    let points: [[f64; 5]; 3] = [[0.0030569_f64, -1.6077_f64, 3.70581e+12_f64, 20.5004_f64, 40.8312_f64], [9.34464e-07_f64, 2.78461_f64, 4.34278e+15_f64, 1.329e+07_f64, 6.66248_f64], [0.000285657_f64, 1.17691_f64, 508922_f64, 8615.6_f64, 22.4937_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_cubic_and_derivatives(p[0], p[1], p[2], p[3], p[4])[0])
+        .collect();
+    check("multi_harmonic_balance::force_cubic_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_cubic_and_derivatives_1() {
+    let expected = [103888375.0049423, 13301376.645713741, 8615.724583985977];
+    let scale = [207776750.0098846, 26602753.291427482, 17231.449167971954];
+    let points: [[f64; 5]; 3] = [[0.0030569_f64, -1.6077_f64, 3.70581e+12_f64, 20.5004_f64, 40.8312_f64], [9.34464e-07_f64, 2.78461_f64, 4.34278e+15_f64, 1.329e+07_f64, 6.66248_f64], [0.000285657_f64, 1.17691_f64, 508922_f64, 8615.6_f64, 22.4937_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_cubic_and_derivatives(p[0], p[1], p[2], p[3], p[4])[1])
+        .collect();
+    check("multi_harmonic_balance::force_cubic_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_cubic_and_derivatives_2() {
+    let expected = [40.8312, 6.66248, 22.4937];
+    let scale = [81.6624, 13.32496, 44.9874];
+    let points: [[f64; 5]; 3] = [[0.0030569_f64, -1.6077_f64, 3.70581e+12_f64, 20.5004_f64, 40.8312_f64], [9.34464e-07_f64, 2.78461_f64, 4.34278e+15_f64, 1.329e+07_f64, 6.66248_f64], [0.000285657_f64, 1.17691_f64, 508922_f64, 8615.6_f64, 22.4937_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_cubic_and_derivatives(p[0], p[1], p[2], p[3], p[4])[2])
+        .collect();
+    check("multi_harmonic_balance::force_cubic_and_derivatives[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hertz_and_derivatives_0() {
+    let expected = [7109.16797530244, 115.27191471279838, 25.734041050981205];
+    let scale = [14241.76840318288, 230.54382942559675, 51.46808210196241];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hertz_and_derivatives(p[0], p[1], p[2], p[3])[0])
+        .collect();
+    check("multi_harmonic_balance::force_hertz_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hertz_and_derivatives_1() {
+    let expected = [3494169.355355805, 8139471.667926828, 18.96046997556306];
+    let scale = [6988338.71071161, 16278943.335853657, 37.92093995112612];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hertz_and_derivatives(p[0], p[1], p[2], p[3])[1])
+        .collect();
+    check("multi_harmonic_balance::force_hertz_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hertz_and_derivatives_2() {
+    let expected = [7.28757, 39.5751, 21.8627];
+    let scale = [14.57514, 79.1502, 43.7254];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 7.28757_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 39.5751_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 21.8627_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hertz_and_derivatives(p[0], p[1], p[2], p[3])[2])
+        .collect();
+    check("multi_harmonic_balance::force_hertz_and_derivatives[2]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hunt_crossley_and_derivatives_0() {
+    let expected = [7114.753711902626, 17.87467170659169, 0.003676049249816551];
+    let scale = [14241.76840318288, 35.74934341318338, 0.007352098499633102];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 0.000535496_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 0.906803_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 0.0153557_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hunt_crossley_and_derivatives(p[0], p[1], p[2], p[3])[0])
+        .collect();
+    check("multi_harmonic_balance::force_hunt_crossley_and_derivatives[0]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hunt_crossley_and_derivatives_1() {
+    let expected = [3491161.165839229, 28692392.17336092, 19.303128838869085];
+    let scale = [6988338.71071161, 57384784.34672184, 38.60625767773817];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 0.000535496_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 0.906803_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 0.0153557_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hunt_crossley_and_derivatives(p[0], p[1], p[2], p[3])[1])
+        .collect();
+    check("multi_harmonic_balance::force_hunt_crossley_and_derivatives[1]", &got, &expected, &scale);
+}
+
+#[test]
+fn multi_harmonic_balance_force_hunt_crossley_and_derivatives_2() {
+    let expected = [3.8132050064154095, 4.5981218931172805, 5.544626913720924e-05];
+    let scale = [7.626410012830819, 9.196243786234561, 0.00011089253827441848];
+    let points: [[f64; 4]; 3] = [[0.0030569_f64, -1.6077_f64, 4.2132e+07_f64, 0.000535496_f64], [9.34464e-07_f64, 2.78461_f64, 5.61337e+09_f64, 0.906803_f64], [0.000285657_f64, 1.17691_f64, 747.886_f64, 0.0153557_f64]];
+    let got: Vec<f64> = points
+        .iter()
+        .map(|p| symimpact::multi_harmonic_balance::force_hunt_crossley_and_derivatives(p[0], p[1], p[2], p[3])[2])
+        .collect();
+    check("multi_harmonic_balance::force_hunt_crossley_and_derivatives[2]", &got, &expected, &scale);
 }
 
 #[test]

@@ -1,0 +1,306 @@
+"""The harmonic balance's AFT residual emitted for importers (issue 83, item 4): in C, Rust,
+Fortran and JAX, each target's R(U, ω), ∂R/∂U and ∂R/∂ω for every compliant law.
+
+Checked against what they do not share: the runtime's balance
+(:mod:`symimpact.forced.orbits.harmonic_balance`: NumPy matrices, the compiled engine's own force
+law) at random coefficients whose relative motion reaches both walls, to 1e-12 of the terms'
+size (the same sums in another order: a few ULPs of the largest term times the 2H + 1 terms);
+the Jacobian and ∂R/∂ω against central differences of the target's own residual (step 1e-6 of
+the coefficients' scale: the truncation error, the third derivative times the step squared, and
+the rounding, 1e-16 of the residual over the step, both below 1e-7 of the Jacobian's size, where
+no sample lies within the step of an onset, which the points are chosen to avoid); and, where the
+runtime converges a balance, the target's residual vanishes there.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from symimpact.forced.contact_law import CompliantContact
+from symimpact.forced.forcing import Forcing
+from symimpact.forced.orbits.harmonic_balance import _problem, hb_orbit
+from symimpact.model.system import ImpactSystem
+from tests.helpers import require_tool
+
+ROOT = Path(__file__).resolve().parent.parent
+GENERATED = ROOT / "generated"
+
+BASE = {"M": 1.0, "K": 1000.0, "C": 0.5, "m": 0.05, "gap": 0.02}
+#: Each law with its parameters as the kernels take them (after δ, δ̇) and the runtime's system.
+LAWS = {
+    "linear": (("k1", "c1"), {"k1": 2e4, "c1": 0.5}, None),
+    "cubic": (("a", "b", "c1"), {"a": 1e9, "b": 1e4, "c1": 0.3}, None),
+    "hertz": (("k_hz", "c1"), {"k_hz": 1e5, "c1": 0.5}, None),
+    "hunt_crossley": (("k_hz", "chi"), {"k_hz": 1e5}, 0.4),
+}
+#: Harmonics and time samples of the cases, and the forcing (2 N at 33 rad/s, phase 0.3).
+CASES = [(3, 16), (7, 29), (12, 48)]
+FORCING = Forcing(F0=2.0, omega=33.0, phase=0.3)
+
+
+def system_and_contact(law: str):
+    _, values, chi = LAWS[law]
+    system = ImpactSystem(**BASE, **values, contact="hertz" if chi else law)
+    return system, CompliantContact(law.replace("_", "-"), chi)
+
+
+def law_parameters(law: str) -> list[float]:
+    names, values, chi = LAWS[law]
+    return [chi if n == "chi" else values[n] for n in names]
+
+
+def coefficients(H: int, N: int, seed: int) -> np.ndarray:
+    """x and y of a motion whose relative motion z = y − x reaches both walls (amplitude about
+    2.5 clearance halves), with smaller higher harmonics; redrawn until no sample lies within
+    1e-5 m of an onset, where a difference step would switch a contact on or off."""
+    rng = np.random.default_rng(seed)
+    nh = 2 * H + 1
+    while True:
+        U = np.zeros(2 * nh)
+        U[1], U[2] = 0.02 * rng.uniform(0.5, 1.0), 0.02 * rng.uniform(-0.5, 0.5)
+        U[nh + 1], U[nh + 2] = -0.01 * rng.uniform(0.5, 1.0), 0.01 * rng.uniform(-0.5, 0.5)
+        for k in range(2, H + 1):
+            U[2 * k - 1 : 2 * k + 1] = rng.normal(0.0, 1e-3 / k**2, 2)
+            U[nh + 2 * k - 1 : nh + 2 * k + 1] = rng.normal(0.0, 2e-3 / k**2, 2)
+        U[0], U[nh] = rng.normal(0.0, 1e-3, 2)
+        kt = np.outer(2 * np.pi * np.arange(N) / N, np.arange(1, H + 1))
+        d = U[nh:] - U[:nh]
+        z = d[0] + np.cos(kt) @ d[1::2] + np.sin(kt) @ d[2::2]
+        if np.min(np.abs(np.abs(z) - BASE["gap"] / 2)) > 1e-5:
+            return U
+
+
+def runtime(law: str, H: int, N: int, U: np.ndarray, w: float):
+    system, contact = system_and_contact(law)
+    problem = _problem(system, FORCING, contact, H, N, 1)
+    R, J, dR_dw, _ = problem.jacobian(U, w)
+    return problem, R, J, dR_dw
+
+
+def forcing_terms(problem) -> np.ndarray:
+    return problem.F_ext.ravel()
+
+
+def assert_close(got: np.ndarray, want: np.ndarray, scale: float, rtol: float, what: str):
+    err = float(np.max(np.abs(got - want)))
+    assert err <= rtol * scale, f"{what}: off by {err:.3g}, {err / scale:.3g} of {scale:.3g}"
+
+
+def check_target(evaluate, law: str, H: int, N: int, seed: int) -> None:
+    """``evaluate(law, H, N, ω, U, F_ext) -> (R, J, R_omega)`` against the runtime and against
+    its own differences (module text)."""
+    U = coefficients(H, N, seed)
+    w = FORCING.omega * (1.0 + 0.05 * (seed % 3))
+    problem, R0, J0, dw0 = runtime(law, H, N, U, w)
+    F = forcing_terms(problem)
+    R, J, dw = evaluate(law, H, N, w, U, F)
+    size = float(np.max(np.abs(problem._linear(w) @ U)) + np.max(np.abs(F)) + np.max(np.abs(R0)))
+    assert_close(R, R0, size, 1e-12, "R against the runtime")
+    jscale = float(np.max(np.abs(J0)))
+    assert_close(J, J0, jscale, 1e-12, "∂R/∂U against the runtime")
+    assert_close(dw, dw0, float(np.max(np.abs(dw0))), 1e-12, "∂R/∂ω against the runtime")
+    # the target's Jacobian against central differences of its own residual
+    step = 1e-6 * float(np.max(np.abs(U)))
+    fd = np.empty_like(J)
+    for j in range(len(U)):
+        d = np.zeros_like(U)
+        d[j] = step
+        fd[:, j] = (evaluate(law, H, N, w, U + d, F)[0] - evaluate(law, H, N, w, U - d, F)[0]) / (
+            2 * step
+        )
+    assert_close(J, fd, jscale, 1e-7, "∂R/∂U against differences")
+    hw = 1e-6 * w
+    fdw = (evaluate(law, H, N, w + hw, U, F)[0] - evaluate(law, H, N, w - hw, U, F)[0]) / (2 * hw)
+    assert_close(dw, fdw, float(np.max(np.abs(dw))), 1e-7, "∂R/∂ω against differences")
+
+
+# --- C ------------------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def c_library(tmp_path_factory):
+    cc = require_tool(os.environ.get("CC", "cc"))
+    out = tmp_path_factory.mktemp("aft_c") / "libsymimpact_aft.so"
+    subprocess.run([cc, "-std=c99", "-Wall", "-Wextra", "-pedantic", "-Werror", "-O2", "-fPIC",
+                    "-shared", "-o", str(out), str(GENERATED / "c" / "symimpact.c"), "-lm"],
+                   check=True, capture_output=True, timeout=600)  # fmt: skip
+    return ctypes.CDLL(str(out))
+
+
+def c_evaluate(lib):
+    def evaluate(law, H, N, w, U, F):
+        f = getattr(lib, f"symimpact_multi_harmonic_balance_aft_residual_{law}")
+        params = law_parameters(law)
+        n = len(U)
+        R, J, dw = np.empty(n), np.empty(n * n), np.empty(n)
+        p = ctypes.POINTER(ctypes.c_double)
+        f.restype = None
+        f.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_double, p, p,
+                      *[ctypes.c_double] * (5 + len(params)), p, p, p]  # fmt: skip
+        U, F = np.ascontiguousarray(U), np.ascontiguousarray(F)
+        f(H, N, w, *(a.ctypes.data_as(p) for a in (U, F)),
+          *(BASE[k] for k in ("M", "C", "K", "m", "gap")), *params,
+          *(a.ctypes.data_as(p) for a in (R, J, dw)))  # fmt: skip
+        return R, J.reshape(n, n), dw
+
+    return evaluate
+
+
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize(("H", "N"), CASES)
+def test_the_c_residual_matches_the_runtime_and_its_own_differences(c_library, law, H, N):
+    check_target(c_evaluate(c_library), law, H, N, seed=H * 31 + N)
+
+
+def test_the_c_residual_vanishes_at_the_runtime_s_balance(c_library):
+    """The runtime's Newton converges the Hertz balance at 34 rad/s (H 10, N 40); the C
+    residual at its coefficients is zero to the runtime's own tolerance (a correction below 1e-10
+    of the clearance's half: the residual below that times the Jacobian's size)."""
+    system, contact = system_and_contact("hertz")
+    forcing = Forcing(F0=2.0, omega=34.0)
+    orbit = hb_orbit(system, forcing, contact, harmonics=10, time_samples=40)
+    U = np.concatenate([orbit.x, orbit.y])
+    problem = _problem(system, forcing, contact, 10, 40, 1)
+    R, J, _ = c_evaluate(c_library)("hertz", 10, 40, 34.0, U, problem.F_ext.ravel())
+    assert np.max(np.abs(R)) <= 1e-9 * np.max(np.abs(J)) * system.gap / 2
+
+
+# --- JAX ----------------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def jax_module():
+    pytest.importorskip("jax")
+    from symimpact.generated.jax import multi_harmonic_balance
+
+    return multi_harmonic_balance
+
+
+def jax_evaluate(module):
+    def evaluate(law, H, N, w, U, F):
+        f = getattr(module, f"aft_residual_{law}")
+        base = [BASE[k] for k in ("M", "C", "K", "m", "gap")]
+        return tuple(np.asarray(v) for v in f(H, N, w, U, F, *base, *law_parameters(law)))
+
+    return evaluate
+
+
+@pytest.mark.parametrize("law", LAWS)
+def test_the_jax_residual_matches_the_runtime_and_jax_s_own_derivatives(jax_module, law):
+    import jax
+
+    H, N = CASES[1]
+    check_target(jax_evaluate(jax_module), law, H, N, seed=7)
+    # the scheme's Jacobian against forward-mode differentiation of its residual (JAX's own
+    # chain rule through the samples, the law evaluated only where δ > 0)
+    f = getattr(jax_module, f"aft_residual_{law}")
+    U = coefficients(H, N, 11)
+    F = forcing_terms(runtime(law, H, N, U, 33.0)[0])
+    rest = [BASE[k] for k in ("M", "C", "K", "m", "gap")] + law_parameters(law)
+    _, J, dw = f(H, N, 33.0, U, F, *rest)
+    J_ad = jax.jacfwd(lambda u: f(H, N, 33.0, u, F, *rest)[0])(U)
+    dw_ad = jax.jacfwd(lambda w: f(H, N, w, U, F, *rest)[0])(33.0)
+    assert_close(np.asarray(J), np.asarray(J_ad), float(np.max(np.abs(J))), 1e-12, "∂R/∂U, AD")
+    assert_close(np.asarray(dw), np.asarray(dw_ad), float(np.max(np.abs(dw))), 1e-12,
+                 "∂R/∂ω, AD")  # fmt: skip
+
+
+# --- Rust and Fortran: a program prints R, J, ∂R/∂ω at the cases' points ----------------------
+
+
+def _points(law: str) -> list[tuple[int, int, float, np.ndarray, np.ndarray]]:
+    out = []
+    for H, N in CASES[:2]:
+        U = coefficients(H, N, H * 31 + N)
+        w = FORCING.omega * 1.05
+        out.append((H, N, w, U, forcing_terms(runtime(law, H, N, U, w)[0])))
+    return out
+
+
+def _check_printed(text: str, law: str) -> None:
+    """The program's lines, one per point: R, then J row by row, then ∂R/∂ω, against the
+    runtime (as :func:`check_target` does, without the differences: those test the scheme,
+    which the C and JAX tests cover, and would cost a build per difference)."""
+    rows = [np.array([float(v) for v in line.split()]) for line in text.strip().splitlines()]
+    for (H, N, w, U, F), row in zip(_points(law), rows, strict=True):
+        n = len(U)
+        R, J, dw = row[:n], row[n : n + n * n].reshape(n, n), row[n + n * n :]
+        problem, R0, J0, dw0 = runtime(law, H, N, U, w)
+        size = float(np.max(np.abs(problem._linear(w) @ U)) + np.max(np.abs(F)))
+        assert_close(R, R0, size, 1e-12, f"{law} R")
+        assert_close(J, J0, float(np.max(np.abs(J0))), 1e-12, f"{law} ∂R/∂U")
+        assert_close(dw, dw0, float(np.max(np.abs(dw0))), 1e-12, f"{law} ∂R/∂ω")
+
+
+def _numbers(values) -> str:
+    return ", ".join(repr(float(v)) for v in values)
+
+
+def test_the_rust_residual_matches_the_runtime(tmp_path):
+    cargo = require_tool("cargo")
+    crate = tmp_path / "aft"
+    (crate / "src").mkdir(parents=True)
+    (crate / "Cargo.toml").write_text(
+        '[package]\nname = "aft"\nversion = "0.1.0"\nedition = "2021"\n\n[dependencies]\n'
+        f'symimpact = {{ path = "{GENERATED / "rust"}" }}\n'
+    )
+    body = []
+    for law in LAWS:
+        for H, N, w, U, F in _points(law):
+            args = ", ".join(repr(v) for v in [BASE[k] for k in ("M", "C", "K", "m", "gap")]
+                             + law_parameters(law))  # fmt: skip
+            body.append(
+                f"    let (r, j, w) = symimpact::multi_harmonic_balance::aft_residual_{law}("
+                f"{H}, {N}, {w!r}, &[{_numbers(U)}], &[{_numbers(F)}], {args});\n"
+                "    let all: Vec<String> = r.iter().chain(j.iter()).chain(w.iter())"
+                '.map(|v| format!("{:e}", v)).collect();\n'
+                '    println!("{}", all.join(" "));\n'
+            )
+    (crate / "src" / "main.rs").write_text("fn main() {\n" + "".join(body) + "}\n")
+    run = subprocess.run([cargo, "run", "--quiet", "--offline", "--release"], cwd=crate,
+                         capture_output=True, text=True, timeout=900,
+                         env={**os.environ, "CARGO_TARGET_DIR": str(tmp_path / "target")})  # fmt: skip
+    assert run.returncode == 0, run.stderr[-3000:]
+    lines = run.stdout.strip().splitlines()
+    per = len(CASES[:2])
+    for i, law in enumerate(LAWS):
+        _check_printed("\n".join(lines[i * per : (i + 1) * per]), law)
+
+
+def test_the_fortran_residual_matches_the_runtime(tmp_path):
+    fc = require_tool("gfortran")
+    calls = []
+    for law in LAWS:
+        for H, N, w, U, F in _points(law):
+            n = len(U)
+            args = ", ".join(f"{v!r}_dp" for v in [BASE[k] for k in ("M", "C", "K", "m", "gap")]
+                             + law_parameters(law))  # fmt: skip
+            values = "".join(f"        U({i + 1}) = {float(v)!r}_dp\n        F({i + 1}) = {float(f)!r}_dp\n"
+                             for i, (v, f) in enumerate(zip(U, F, strict=True)))  # fmt: skip
+            calls.append(
+                f"    block\n        real(dp) :: U({n}), F({n}), R({n}), J({n}, {n}), W({n})\n"
+                + values
+                + f"        call multi_harmonic_balance_aft_residual_{law}({H}, {N}, {w!r}_dp, U, "
+                f"F, {args}, R, J, W)\n"
+                "        write (*, '(*(es25.17e3, 1x))') R, transpose(J), W\n    end block\n"
+            )
+    program = (
+        "program aft\n    use symimpact\n    implicit none\n" + "".join(calls) + "end program aft\n"
+    )
+    (tmp_path / "aft.f90").write_text(program)
+    build = subprocess.run([fc, "-std=f2008", "-O1", "-ffree-line-length-none",
+                            str(GENERATED / "fortran" / "symimpact.f90"), "aft.f90", "-o", "aft"],
+                           cwd=tmp_path, capture_output=True, text=True, timeout=900)  # fmt: skip
+    assert build.returncode == 0, build.stderr[-3000:]
+    run = subprocess.run(["./aft"], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    lines = run.stdout.strip().splitlines()
+    per = len(CASES[:2])
+    for i, law in enumerate(LAWS):
+        _check_printed("\n".join(lines[i * per : (i + 1) * per]), law)
