@@ -148,6 +148,11 @@ def render(boards: list[Board]) -> dict[str, str]:
                 else "",
             )  # fmt: skip
     for b in boards:
+        for x in b.balances:
+            emit("balance.m.j2", octave_name(b.module, x.name), board=b, x=x,
+                 force=octave_name(b.module, x.force.name),
+                 params=", ".join(a.name for a in x.params))  # fmt: skip
+    for b in boards:
         for fp in b.fixed_points:
             hoisted, loop = fixed_point_ast(fp, prefix="c_")
             hoisted_text = [printer.doprint(h) for h in hoisted]

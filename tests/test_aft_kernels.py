@@ -1,15 +1,16 @@
-"""The harmonic balance's AFT residual emitted for importers (issue 83, item 4): in C, Rust,
-Fortran and JAX, each target's R(U, ω), ∂R/∂U and ∂R/∂ω for every compliant law.
+"""The harmonic balance's AFT residual emitted for importers (issue 83, item 4): in C, Octave,
+Rust, Fortran and JAX, each target's R(U, ω), ∂R/∂U and ∂R/∂ω for every compliant law.
 
 Checked against what they do not share: the runtime's balance
 (:mod:`symimpact.forced.orbits.harmonic_balance`: NumPy matrices, the compiled engine's own force
 law) at random coefficients whose relative motion reaches both walls, to 1e-12 of the terms'
 size (the same sums in another order: a few ULPs of the largest term times the 2H + 1 terms);
-the Jacobian and ∂R/∂ω against central differences of the target's own residual (step 1e-6 of
-the coefficients' scale: the truncation error, the third derivative times the step squared, and
-the rounding, 1e-16 of the residual over the step, both below 1e-7 of the Jacobian's size, where
-no sample lies within the step of an onset, which the points are chosen to avoid); and, where the
-runtime converges a balance, the target's residual vanishes there.
+in C and JAX the Jacobian and ∂R/∂ω against central differences of the target's own residual
+(step 1e-6 of the coefficients' scale: the truncation error, the third derivative times the step
+squared, and the rounding, 1e-16 of the residual over the step, both below 1e-7 of the
+Jacobian's size, where no sample lies within the step of an onset, which the points are chosen
+to avoid), and in JAX against ``jax.jacfwd`` of its residual; and, where the runtime converges a
+balance, the C residual vanishes there.
 """
 
 from __future__ import annotations
@@ -304,3 +305,27 @@ def test_the_fortran_residual_matches_the_runtime(tmp_path):
     per = len(CASES[:2])
     for i, law in enumerate(LAWS):
         _check_printed("\n".join(lines[i * per : (i + 1) * per]), law)
+
+
+def test_the_octave_residual_matches_the_runtime(tmp_path):
+    octave = require_tool("octave-cli")
+    lines = []
+    for law in LAWS:
+        for H, N, w, U, F in _points(law):
+            rest = ", ".join(repr(v) for v in [BASE[k] for k in ("M", "C", "K", "m", "gap")]
+                             + law_parameters(law))  # fmt: skip
+            lines.append(
+                f"[R, J, W] = multi_harmonic_balance_aft_residual_{law}({H}, {N}, {w!r}, "
+                f"[{_numbers(U)}], [{_numbers(F)}], {rest});\n"
+                "printf('%.17g ', [R; reshape(J', [], 1); W]); printf('\\n');\n"
+            )
+    script = tmp_path / "aft.m"
+    script.write_text("".join(lines))
+    run = subprocess.run([octave, "--no-gui", "--quiet", "--norc", "--path",
+                          str(GENERATED / "octave"), str(script)],
+                         capture_output=True, text=True, timeout=600)  # fmt: skip
+    assert run.returncode == 0, run.stderr[-3000:]
+    out = run.stdout.strip().splitlines()
+    per = len(CASES[:2])
+    for i, law in enumerate(LAWS):
+        _check_printed("\n".join(out[i * per : (i + 1) * per]), law)
