@@ -2,8 +2,8 @@
 Rust, Fortran and JAX, each target's R(U, ω), ∂R/∂U and ∂R/∂ω for every compliant law.
 
 Checked against what they do not share: the runtime's balance
-(:mod:`symimpact.forced.orbits.harmonic_balance`: NumPy matrices, the compiled engine's own force
-law) at random coefficients whose relative motion reaches both walls, to 1e-12 of the terms'
+(:mod:`symimpact.forced.orbits.harmonic_balance`: NumPy matrices with Step 17's NumPy force
+kernels, which equal the compiled engine's own laws, checked first) at random coefficients whose relative motion reaches both walls, to 1e-12 of the terms'
 size (the same sums in another order: a few ULPs of the largest term times the 2H + 1 terms);
 in C and JAX the Jacobian and ∂R/∂ω against central differences of the target's own residual
 (step 1e-6 of the coefficients' scale: the truncation error, the third derivative times the step
@@ -75,6 +75,31 @@ def coefficients(H: int, N: int, seed: int) -> np.ndarray:
         z = d[0] + np.cos(kt) @ d[1::2] + np.sin(kt) @ d[2::2]
         if np.min(np.abs(np.abs(z) - BASE["gap"] / 2)) > 1e-5:
             return U
+
+
+@pytest.mark.parametrize("law", LAWS)
+def test_the_derived_laws_are_the_engine_s(law):
+    """Step 17's force and slopes (the NumPy bundle the runtime's balance evaluates) against the
+    law the compiled engine integrates, written by hand (engine._compliant._force), at 200
+    penetrations over six decades and rates of either sign: to 1e-13 of the force's terms (a
+    power 1.5 as x·√x in one, x**1.5 in the other: a few ULPs)."""
+    from symimpact.generated import multi_harmonic_balance as step17
+
+    from symimpact.forced.engine import _compliant
+    from symimpact.forced.simulation import _law_parameters
+
+    system, contact = system_and_contact(law)
+    rng = np.random.default_rng(83)
+    delta = 10.0 ** rng.uniform(-8, -2, 200)
+    ddelta = rng.uniform(-3.0, 3.0, 200)
+    chi = 0.0 if contact.chi is None else contact.chi
+    engine = _compliant.forces(_compliant.CODES[contact.law], _law_parameters(system, contact.law),
+                               chi, delta, ddelta)  # fmt: skip
+    derived = getattr(step17, f"force_{law}_and_derivatives")(delta, ddelta, *law_parameters(law))
+    for name, a, b in zip(("F", "∂F/∂δ", "∂F/∂δ̇"), engine, derived, strict=True):
+        b = np.broadcast_to(b, a.shape)
+        terms = np.abs(a) + np.abs(b) + 1e-300
+        assert np.all(np.abs(a - b) <= 1e-13 * terms), (law, name)
 
 
 def runtime(law: str, H: int, N: int, U: np.ndarray, w: float):

@@ -24,7 +24,9 @@ forcing) and the impact mass m, free in its cavity, 𝐌 = diag(M, m), 𝐂 = di
 𝐊 = diag(K, 0).  The contact is one of the compliant laws of the forced simulation
 (:mod:`symimpact.forced.engine._compliant`: cubic Eq. 8, Hertz Eq. 9, linear Eq. 35, each with
 c₁, or Hunt–Crossley Eq. F4): with z = y − x, δ = s·z − d/2 on the wall s = ±1 and F(δ, δ̇) the
-law, the force on m is −s·F while δ > 0 (and on M its opposite), 0 between the walls.  Rigid
+law, the force on m is −s·F while δ > 0 (and on M its opposite), 0 between the walls; F and its
+slopes ∂F/∂δ, ∂F/∂δ̇ at the samples are Step 17's derived kernels, the same laws the
+simulation's engine integrates (tests/test_aft_kernels.py compares the two).  Rigid
 impacts have no force law and are not balanced here (a contact needs many harmonics; a rigid one
 infinitely many): give a compliant law, or read the exact orbits of shooting.
 
@@ -238,23 +240,32 @@ def newton(problem: Problem, U: np.ndarray, w: float, scale: float,
 
 
 def _contact_force(system: ImpactSystem, contact: CompliantContact) -> Force:
-    """f(q, q̇) of the impact damper for q = (x, y) (module text), with its derivatives, from
-    the compiled engine's law (:func:`symimpact.forced.engine._compliant.forces`)."""
-    from ..engine import _compliant
+    """f(q, q̇) of the impact damper for q = (x, y) (module text), with its derivatives: at the
+    samples in contact the law's force and slopes, Step 17's derived bundle
+    ``force_<law>_and_derivatives`` (:mod:`symimpact.generated.multi_harmonic_balance`), and
+    Step 17's chain rule through z = y − x (``aft_sample_slopes``)."""
+    from ...generated import multi_harmonic_balance as step17
     from ..simulation import _law_parameters
 
-    code = _compliant.CODES[contact.law]
-    qv = _law_parameters(system, contact.law)
-    chi = 0.0 if contact.chi is None else float(contact.chi)
+    _law_parameters(system, contact.law)  # a law without its parameters: refused in one line
+    law = contact.law.replace("-", "_")
+    bundle = getattr(step17, f"force_{law}_and_derivatives")
+    params = {
+        "linear": (system.k1, system.c1),
+        "cubic": (system.a, system.b, system.c1),
+        "hertz": (system.k_hz, system.c1),
+        "hunt_crossley": (system.k_hz, 0.0 if contact.chi is None else float(contact.chi)),
+    }[law]
     h = 0.5 * system.gap
 
     def force(q: np.ndarray, qd: np.ndarray):
         z, zd = q[1] - q[0], qd[1] - qd[0]
         s = np.where(z >= 0.0, 1.0, -1.0)
         delta, ddelta = s * z - h, s * zd
-        F, F_d, F_dd = _compliant.forces(code, qv, chi, delta, ddelta)
         on = delta > 0.0
-        F, F_d, F_dd = np.where(on, F, 0.0), np.where(on, F_d, 0.0), np.where(on, F_dd, 0.0)
+        F, F_d, F_dd = np.zeros_like(z), np.zeros_like(z), np.zeros_like(z)
+        if on.any():
+            F[on], F_d[on], F_dd[on] = bundle(delta[on], ddelta[on], *params)
         f = np.stack([s * F, -s * F])  # on M, on m
         # ∂(−sF)/∂z = −F_δ and ∂(−sF)/∂ż = −F_δ̇ on either wall (s² = 1); z = y − x
         fq = np.stack([[-F_d, F_d], [F_d, -F_d]])
