@@ -175,3 +175,30 @@ def test_a_force_on_a_one_mode_reduction_runs(tmp_path, capsys):
             "--duration", "5 s"]  # fmt: skip
     assert main(argv) == 0
     assert "2 realisations of 5 s" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    "command",
+    [["random", "--base-acc-rms", "0.5 g", "--band", "5:100"],
+     ["random", "--base-acc-rms", "0.5 g", "--band", "5:100", "--e", "0.6"],
+     ["shock", "--base-peak", "20 g", "--duration", "5 ms"],
+     ["sweep-sine", "--base-amplitude", "1 mm", "--band", "5:20", "--rate", "1 oct/min"],
+     ["sweep", "--vary", "gap=0.005:0.01:2", "--out", "x.parquet"]],
+    ids=lambda c: " ".join(c[:1] + c[-2:]),
+)  # fmt: skip
+def test_a_file_s_dampers_under_a_one_mode_command_are_refused_in_one_line(
+    command, tmp_path, capsys, monkeypatch
+):
+    """Issue 79: ``random --structure FILE`` with the file's dampers said "needs --e", and with
+    --e "leave it out".  A command that runs one mode (the sampled loads, the free-vibration
+    maps) refuses a file with dampers, stops or loads once, naming --structure and what runs it,
+    whatever else is given."""
+    monkeypatch.chdir(tmp_path)
+    beam = tmp_path / "beam.json"
+    model = {**BEAM, "dampers": [{"name": "tip damper", "at": "tip", "m": "5 g", "gap": "10 mm",
+                                  "e": 0.6}], "force": {"at": "tip", "amplitude": "1 N"}}  # fmt: skip
+    beam.write_text(json.dumps(model))
+    assert main([command[0], "--structure", str(beam), *command[1:]]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "structure:" in err[0] and "--at POINT and --mode I" in err[0], err
+    assert "leave it out" not in err[0] and "--e" not in err[0]

@@ -262,6 +262,12 @@ def apply_engineer_inputs(ns: argparse.Namespace, given: set[str]) -> None:
     if getattr(ns, "structure", None) is not None and hasattr(ns, "at"):
         from ..model.structure_model import has_loads
 
+        if has_loads(ns.structure) and ns.command in ONE_MODE_ONLY:
+            raise ParameterError(
+                "structure", f"{ns.structure} gives dampers, stops or loads, and {ns.command} "
+                "does not run a structure of several modes: give --at POINT and --mode I with "
+                "the damper's options (one mode of a file without them, its participation "
+                "carried), or run simulate, periodic, frf, branch or design on this file")  # fmt: skip
         if has_loads(ns.structure):
             _structure_model(ns, given)
         else:
@@ -342,6 +348,11 @@ def _damping_as_zeta(ns: argparse.Namespace, given: set[str]) -> None:
 _MODEL_GIVES = ("M", "K", "C", "zeta", "q_factor", "loss_factor", "fn", "m", "gap", "a", "b",
                 "k_hz", "k1", "c1", "at", "mode", "impactor", "cavity", "impact_speed", "contact",
                 "e", "chi", "F0", "X_b", "V_b", "A_b")  # fmt: skip
+
+
+#: The commands that take one mode of a structure (--at, --mode) but not a file's dampers,
+#: stops and loads: the sampled loads and the free-vibration maps.
+ONE_MODE_ONLY = ("random", "shock", "sweep-sine", "sweep", "map")
 
 
 def _structure_model(ns: argparse.Namespace, given: set[str]) -> None:
