@@ -77,3 +77,45 @@ def test_a_rigid_damper_is_refused_in_one_line(cantilever):
     with pytest.raises(ParameterError, match="force_at"):
         hb_structure_orbit(structure, dampers(structure, [{"name": "d", "at": "tip", "m": 0.05,
                            "gap": 0.01, "contact": "linear", "k1": 1e5}]), "root", 2.0, omega)  # fmt: skip
+
+
+CANTILEVER_FILE = {
+    "beam": {"type": "cantilever", "E": "210 GPa", "I": BEAM["I"], "rho": "7850 kg/m^3",
+             "A": 4e-4, "L": "1 m", "modes": 2, "zeta": 0.01},
+    "points": {"tip": "1 m", "mid": "0.5 m"},
+    "dampers": [{"name": "tip damper", "at": "tip", "m": "50 g", "gap": "10 mm",
+                 "contact": "hunt-crossley", "k_hz": 1e6, "chi": 2.0}],
+    "force": {"at": "tip", "amplitude": "2 N"},
+}  # fmt: skip
+
+
+def test_the_command_gives_the_structure_s_balance_beside_its_exact_orbit(tmp_path, capsys):
+    """``periodic --structure FILE --method hb``: the balance's amplitudes and their error
+    against shooting's exact orbit at every point, the API's numbers (JSON in SI)."""
+    import json
+
+    from symimpact.cli import main
+
+    path = tmp_path / "cantilever.json"
+    path.write_text(json.dumps(CANTILEVER_FILE))
+    argv = ["periodic", "--structure", str(path), "--freq", "8 Hz", "--method", "hb",
+            "--harmonics", "40"]  # fmt: skip
+    assert main([*argv, "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["harmonics"] == 40 and out["time_samples"] == 160
+    for point in ("tip", "mid"):
+        error = out["amplitudes"][point] / out["exact"]["amplitudes"][point] - 1
+        assert out["hb_error"][point] == pytest.approx(error, rel=1e-12) and abs(error) < 5e-4
+    assert out["stable"] is True and out["exact"]["stable"] is True
+    # refusals, each in one line before anything runs
+    for extra, name in ((["--multiple", "2"], "multiple"), (["--time-samples", "60"],
+                                                             "time-samples")):  # fmt: skip
+        assert main([*argv, *extra]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and f"error: {name}:" in err[0], err
+    rigid = CANTILEVER_FILE | {"dampers": [{"name": "ball", "at": "tip", "m": "50 g",
+                                            "gap": "10 mm", "e": 0.6}]}  # fmt: skip
+    path.write_text(json.dumps(rigid))
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "damper 'ball' has rigid impacts" in err[0], err

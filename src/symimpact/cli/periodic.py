@@ -255,9 +255,9 @@ def _structure_orbit(ns) -> None:
     from ..model.display import omega_text
     from .common import quantity_text
 
-    if ns.method in ("closed-form", "hb"):
-        raise ParameterError("method", f"{ns.method} is the one-mode primary's for now: a "
-                                       "structure's orbits are found by --method shooting")  # fmt: skip
+    if ns.method == "closed-form":
+        raise ParameterError("method", "closed-form is the one-mode primary's: a structure's "
+                                       "orbits are found by --method shooting or hb")  # fmt: skip
     for key, why in (("response", "the responses of a structure's orbit are not built yet: "
                                   "--json gives every point's amplitude"),
                      ("chi", "the file gives each damper's and stop's contact")):  # fmt: skip
@@ -265,6 +265,11 @@ def _structure_orbit(ns) -> None:
             raise ParameterError(key, why)
     model = ns.structure_model
     forcing = structure_forcing(ns)
+    if ns.method == "hb":
+        _structure_balance_checks(ns, model, forcing)
+    elif ns.harmonics is not None or ns.time_samples is not None:
+        raise ParameterError("harmonics" if ns.harmonics is not None else "time-samples",
+                             "applies to --method hb")  # fmt: skip
     warmup = period_count("warmup", "300" if ns.warmup is None else ns.warmup)
     multiple = period_count("multiple", "1" if ns.multiple is None else ns.multiple)
     if not 1 <= multiple <= MAX_MULTIPLE:
@@ -306,7 +311,58 @@ def _structure_orbit(ns) -> None:
         + "\n".join(f"amplitude at {p!r}: {quantity_text('x', a)}"
                     for p, a in o.amplitudes.items())
     )  # fmt: skip
-    emit(ns, o.as_dict(), text)
+    out = o.as_dict()
+    if ns.method == "hb":
+        from ..forced.orbits.harmonic_balance import MAX_HARMONICS
+        from ..forced.orbits.hb_structure import hb_structure_orbit
+        from .loads import count
+
+        H = count("harmonics", "15" if ns.harmonics is None else ns.harmonics, 1, MAX_HARMONICS)
+        N = None if ns.time_samples is None else count("time-samples", ns.time_samples, 1, 1 << 20)
+        if N is not None and N < 2 * H + 1:
+            raise ParameterError("time-samples", f"must be at least 2H + 1 = {2 * H + 1} for H = "
+                                 f"{H} harmonics (fewer samples alias the series itself)")  # fmt: skip
+        hb = hb_structure_orbit(model.structure, model.dampers, model.force_at, model.F0,
+                                forcing.omega, harmonics=H, time_samples=N,
+                                phase=forcing.phase)  # fmt: skip
+        errors = {p: (hb.amplitudes[p] - a) / a for p, a in o.amplitudes.items() if a > 0}
+        out = hb.as_dict() | {"exact": out, "hb_error": errors}
+        text = (
+            f"Ω {omega_text(forcing.omega)}: the {len(model.structure.modes)}-mode structure's "
+            f"orbit by harmonic balance (H = {hb.harmonics}, N = {hb.samples}; {hb.iterations} "
+            f"Newton steps), {'stable' if hb.stable else 'unstable'} by Hill's method (largest "
+            f"|multiplier| {hb.multipliers[0]:.6g}); beside it shooting's exact orbit, "
+            f"{'stable' if o.stable else 'unstable'} (largest |multiplier| {big:.6g})\n"
+            + "\n".join(f"amplitude at {p!r}: {quantity_text('x', hb.amplitudes[p])} by the "
+                        f"balance, {quantity_text('x', a)} exact: error {100 * errors[p]:+.3g} %"
+                        for p, a in o.amplitudes.items() if p in errors)
+            + ("" if hb.stable == o.stable else
+               "\nnote: the balance and shooting disagree on stability; Hill's method sorts "
+               "the exponents of a truncated balance and can keep a spurious one: shooting's "
+               "is exact")
+        )  # fmt: skip
+    emit(ns, out, text)
+
+
+def _structure_balance_checks(ns, model, forcing) -> None:
+    """What the structure's balance does not take, refused in one line: stops, base motion,
+    an orbit of several periods, and (in the balance itself) rigid dampers."""
+    from ..errors import ParameterError
+
+    if model.stops:
+        raise ParameterError("method", "hb balances a structure's compliant dampers, not its "
+                             "stops: --method shooting finds that orbit")  # fmt: skip
+    if model.base_at(forcing.omega) != 0.0:
+        raise ParameterError("method", "hb balances a force on the structure, not base motion: "
+                             "--method shooting finds that orbit")  # fmt: skip
+    rigid = [d.name for d in model.dampers if d.rigid]
+    if rigid:
+        raise ParameterError("method", f"hb needs a compliant contact law; damper {rigid[0]!r} "
+                             "has rigid impacts, which have no force to balance: --method "
+                             "shooting finds that orbit")  # fmt: skip
+    if ns.multiple not in (None, "1", 1):
+        raise ParameterError("multiple", "a structure's balance is of one forcing period: "
+                             "--method shooting finds orbits of several")  # fmt: skip
 
 
 #: The subcommands this module runs.
