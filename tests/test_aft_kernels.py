@@ -162,17 +162,16 @@ def c_library(tmp_path_factory):
 def c_evaluate(lib):
     def evaluate(law, H, N, w, U, F):
         f = getattr(lib, f"symimpact_multi_harmonic_balance_aft_residual_{law}")
-        params = law_parameters(law)
+        args = arguments(law)
         n = len(U)
         R, J, dw = np.empty(n), np.empty(n * n), np.empty(n)
         p = ctypes.POINTER(ctypes.c_double)
         f.restype = None
         f.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_double, p, p,
-                      *[ctypes.c_double] * (5 + len(params)), p, p, p]  # fmt: skip
+                      *[ctypes.c_double] * len(args), p, p, p]  # fmt: skip
         U, F = np.ascontiguousarray(U), np.ascontiguousarray(F)
         f(H, N, w, *(a.ctypes.data_as(p) for a in (U, F)),
-          *(BASE[k] for k in ("M", "C", "K", "m", "gap")), *params,
-          *(a.ctypes.data_as(p) for a in (R, J, dw)))  # fmt: skip
+          *args, *(a.ctypes.data_as(p) for a in (R, J, dw)))  # fmt: skip
         return R, J.reshape(n, n), dw
 
     return evaluate
@@ -197,47 +196,59 @@ def test_the_c_residual_vanishes_at_the_runtime_s_balance(c_library):
     assert np.max(np.abs(R)) <= 1e-9 * np.max(np.abs(J)) * system.gap / 2
 
 
-# --- JAX ----------------------------------------------------------------------------------------
+# --- JAX, in a child process ---------------------------------------------------------------------
+
+#: The child's script: each case's (R, ∂R/∂U, ∂R/∂ω) and jax.jacfwd of R in U and in ω.  JAX
+#: runs in a child process, as in tests/test_jax_kernels.py: it starts threads, and a later test
+#: in this worker that forks a process pool would meet its warning (or a deadlock).
+JAX_CHILD = """
+import sys
+import numpy as np
+import jax
+from symimpact.generated.jax import multi_harmonic_balance as mhb
+
+cases = np.load(sys.argv[1], allow_pickle=True)["cases"]
+out = []
+for law, H, N, w, U, F, rest in cases:
+    f = getattr(mhb, "aft_residual_" + law)
+    R, J, dw = f(H, N, w, U, F, *rest)
+    J_ad = jax.jacfwd(lambda u: f(H, N, w, u, F, *rest)[0])(U)
+    dw_ad = jax.jacfwd(lambda v: f(H, N, v, U, F, *rest)[0])(w)
+    out.append([np.asarray(a) for a in (R, J, dw, J_ad, dw_ad)])
+np.save(sys.argv[2], np.array(out, dtype=object), allow_pickle=True)
+"""
 
 
-@pytest.fixture(scope="module")
-def jax_module():
-    pytest.importorskip("jax")
-    from symimpact.generated.jax import multi_harmonic_balance
+def test_the_jax_residual_matches_the_runtime_and_jax_s_own_derivatives(tmp_path):
+    """JAX's residual against the runtime (1e-12), and its Jacobian and ∂R/∂ω against
+    forward-mode differentiation of its residual (JAX's own chain rule through the samples, the
+    law evaluated only where δ > 0; 1e-12)."""
+    import importlib.util
+    import sys
 
-    return multi_harmonic_balance
-
-
-def jax_evaluate(module):
-    def evaluate(law, H, N, w, U, F):
-        f = getattr(module, f"aft_residual_{law}")
-        base = [BASE[k] for k in ("M", "C", "K", "m", "gap")]
-        return tuple(np.asarray(v) for v in f(H, N, w, U, F, *base, *law_parameters(law)))
-
-    return evaluate
-
-
-@pytest.mark.parametrize("law", LAWS)
-def test_the_jax_residual_matches_the_runtime_and_jax_s_own_derivatives(jax_module, law):
-    import jax
-
-    H, N = CASES[1]
-    check_target(jax_evaluate(jax_module), law, H, N, seed=7)
-    # the scheme's Jacobian against forward-mode differentiation of its residual (JAX's own
-    # chain rule through the samples, the law evaluated only where δ > 0)
-    f = getattr(jax_module, f"aft_residual_{law}")
-    U = coefficients(H, N, 11)
-    F = forcing_terms(runtime(law, H, N, U, 33.0)[0])
-    rest = [BASE[k] for k in ("M", "C", "K", "m", "gap")] + law_parameters(law)
-    _, J, dw = f(H, N, 33.0, U, F, *rest)
-    J_ad = jax.jacfwd(lambda u: f(H, N, 33.0, u, F, *rest)[0])(U)
-    dw_ad = jax.jacfwd(lambda w: f(H, N, w, U, F, *rest)[0])(33.0)
-    assert_close(np.asarray(J), np.asarray(J_ad), float(np.max(np.abs(J))), 1e-12, "∂R/∂U, AD")
-    assert_close(np.asarray(dw), np.asarray(dw_ad), float(np.max(np.abs(dw))), 1e-12,
-                 "∂R/∂ω, AD")  # fmt: skip
+    if importlib.util.find_spec("jax") is None:
+        if os.environ.get("CI"):
+            pytest.fail("jax is not installed (the test extra installs it)")
+        pytest.skip("jax is not installed")
+    cases, wanted = [], []
+    for law in LAWS:
+        for H, N, w, U, F in _points(law):
+            cases.append((law, H, N, w, U, F, arguments(law)))
+            wanted.append((law, H, N, w, U, F))
+    src, dst = tmp_path / "cases.npz", tmp_path / "out.npy"
+    np.savez(src, cases=np.array(cases, dtype=object))
+    run = subprocess.run([sys.executable, "-c", JAX_CHILD, str(src), str(dst)],
+                         capture_output=True, text=True, timeout=900)  # fmt: skip
+    assert run.returncode == 0, run.stderr[-3000:]
+    for (law, H, N, w, U, F), (R, J, dw, J_ad, dw_ad) in zip(
+        wanted, np.load(dst, allow_pickle=True), strict=True
+    ):
+        _check_against_runtime(law, H, N, w, U, F, R, J, dw)
+        assert_close(J, J_ad, float(np.max(np.abs(J))), 1e-12, f"{law} ∂R/∂U, AD")
+        assert_close(dw, dw_ad, float(np.max(np.abs(dw))), 1e-12, f"{law} ∂R/∂ω, AD")
 
 
-# --- Rust and Fortran: a program prints R, J, ∂R/∂ω at the cases' points ----------------------
+# --- Rust, Fortran and Octave: a program prints R, J, ∂R/∂ω at the cases' points ----------
 
 
 def _points(law: str) -> list[tuple[int, int, float, np.ndarray, np.ndarray]]:
@@ -249,19 +260,30 @@ def _points(law: str) -> list[tuple[int, int, float, np.ndarray, np.ndarray]]:
     return out
 
 
-def _check_printed(text: str, law: str) -> None:
-    """The program's lines, one per point: R, then J row by row, then ∂R/∂ω, against the
-    runtime (as :func:`check_target` does, without the differences: those test the scheme,
-    which the C and JAX tests cover, and would cost a build per difference)."""
-    rows = [np.array([float(v) for v in line.split()]) for line in text.strip().splitlines()]
-    for (H, N, w, U, F), row in zip(_points(law), rows, strict=True):
+def _check_against_runtime(law, H, N, w, U, F, R, J, dw) -> None:
+    problem, R0, J0, dw0 = runtime(law, H, N, U, w)
+    size = float(np.max(np.abs(problem._linear(w) @ U)) + np.max(np.abs(F)))
+    assert_close(R, R0, size, 1e-12, f"{law} R")
+    assert_close(J, J0, float(np.max(np.abs(J0))), 1e-12, f"{law} ∂R/∂U")
+    assert_close(dw, dw0, float(np.max(np.abs(dw0))), 1e-12, f"{law} ∂R/∂ω")
+
+
+def _check_printed(stdout: str) -> None:
+    """A program's lines, one per point of :func:`_points` for each law in turn: R, then J row
+    by row, then ∂R/∂ω, against the runtime (as :func:`check_target` does, without the
+    differences: those test the scheme, which the C and JAX tests cover, and would cost a build
+    per difference)."""
+    rows = [np.array([float(v) for v in line.split()]) for line in stdout.strip().splitlines()]
+    points = [(law, *point) for law in LAWS for point in _points(law)]
+    for (law, H, N, w, U, F), row in zip(points, rows, strict=True):
         n = len(U)
-        R, J, dw = row[:n], row[n : n + n * n].reshape(n, n), row[n + n * n :]
-        problem, R0, J0, dw0 = runtime(law, H, N, U, w)
-        size = float(np.max(np.abs(problem._linear(w) @ U)) + np.max(np.abs(F)))
-        assert_close(R, R0, size, 1e-12, f"{law} R")
-        assert_close(J, J0, float(np.max(np.abs(J0))), 1e-12, f"{law} ∂R/∂U")
-        assert_close(dw, dw0, float(np.max(np.abs(dw0))), 1e-12, f"{law} ∂R/∂ω")
+        _check_against_runtime(law, H, N, w, U, F, row[:n], row[n : n + n * n].reshape(n, n),
+                               row[n + n * n :])  # fmt: skip
+
+
+def arguments(law: str) -> list[float]:
+    """M, C, K, m, gap and the law's parameters, as every target takes them."""
+    return [BASE[k] for k in ("M", "C", "K", "m", "gap")] + law_parameters(law)
 
 
 def _numbers(values) -> str:
@@ -279,8 +301,7 @@ def test_the_rust_residual_matches_the_runtime(tmp_path):
     body = []
     for law in LAWS:
         for H, N, w, U, F in _points(law):
-            args = ", ".join(repr(v) for v in [BASE[k] for k in ("M", "C", "K", "m", "gap")]
-                             + law_parameters(law))  # fmt: skip
+            args = ", ".join(repr(v) for v in arguments(law))
             body.append(
                 f"    let (r, j, w) = symimpact::multi_harmonic_balance::aft_residual_{law}("
                 f"{H}, {N}, {w!r}, &[{_numbers(U)}], &[{_numbers(F)}], {args});\n"
@@ -293,10 +314,7 @@ def test_the_rust_residual_matches_the_runtime(tmp_path):
                          capture_output=True, text=True, timeout=900,
                          env={**os.environ, "CARGO_TARGET_DIR": str(tmp_path / "target")})  # fmt: skip
     assert run.returncode == 0, run.stderr[-3000:]
-    lines = run.stdout.strip().splitlines()
-    per = len(CASES[:2])
-    for i, law in enumerate(LAWS):
-        _check_printed("\n".join(lines[i * per : (i + 1) * per]), law)
+    _check_printed(run.stdout)
 
 
 def test_the_fortran_residual_matches_the_runtime(tmp_path):
@@ -305,8 +323,7 @@ def test_the_fortran_residual_matches_the_runtime(tmp_path):
     for law in LAWS:
         for H, N, w, U, F in _points(law):
             n = len(U)
-            args = ", ".join(f"{v!r}_dp" for v in [BASE[k] for k in ("M", "C", "K", "m", "gap")]
-                             + law_parameters(law))  # fmt: skip
+            args = ", ".join(f"{v!r}_dp" for v in arguments(law))
             values = "".join(f"        U({i + 1}) = {float(v)!r}_dp\n        F({i + 1}) = {float(f)!r}_dp\n"
                              for i, (v, f) in enumerate(zip(U, F, strict=True)))  # fmt: skip
             calls.append(
@@ -326,10 +343,7 @@ def test_the_fortran_residual_matches_the_runtime(tmp_path):
     assert build.returncode == 0, build.stderr[-3000:]
     run = subprocess.run(["./aft"], cwd=tmp_path, capture_output=True, text=True, timeout=300)
     assert run.returncode == 0, run.stderr
-    lines = run.stdout.strip().splitlines()
-    per = len(CASES[:2])
-    for i, law in enumerate(LAWS):
-        _check_printed("\n".join(lines[i * per : (i + 1) * per]), law)
+    _check_printed(run.stdout)
 
 
 def test_the_octave_residual_matches_the_runtime(tmp_path):
@@ -337,8 +351,7 @@ def test_the_octave_residual_matches_the_runtime(tmp_path):
     lines = []
     for law in LAWS:
         for H, N, w, U, F in _points(law):
-            rest = ", ".join(repr(v) for v in [BASE[k] for k in ("M", "C", "K", "m", "gap")]
-                             + law_parameters(law))  # fmt: skip
+            rest = ", ".join(repr(v) for v in arguments(law))
             lines.append(
                 f"[R, J, W] = multi_harmonic_balance_aft_residual_{law}({H}, {N}, {w!r}, "
                 f"[{_numbers(U)}], [{_numbers(F)}], {rest});\n"
@@ -350,7 +363,4 @@ def test_the_octave_residual_matches_the_runtime(tmp_path):
                           str(GENERATED / "octave"), str(script)],
                          capture_output=True, text=True, timeout=600)  # fmt: skip
     assert run.returncode == 0, run.stderr[-3000:]
-    out = run.stdout.strip().splitlines()
-    per = len(CASES[:2])
-    for i, law in enumerate(LAWS):
-        _check_printed("\n".join(out[i * per : (i + 1) * per]), law)
+    _check_printed(run.stdout)
