@@ -902,17 +902,26 @@ def announce(ns: argparse.Namespace, estimate: Any, name: str, also: str = "") -
         print(f"symimpact {ns.command}: {estimate.text()}{also}", file=sys.stderr, flush=True)
 
 
+def harmonic_counts(ns) -> tuple[int, int | None]:
+    """(H, N) as ``--harmonics`` (default 15) and ``--time-samples`` (None: the balance's
+    default 4H) give them, each a whole number in its range."""
+    from ..forced.orbits.harmonic_balance import MAX_HARMONICS
+    from .loads import count
+
+    H = count("harmonics", "15" if ns.harmonics is None else ns.harmonics, 1, MAX_HARMONICS)
+    N = None if ns.time_samples is None else count("time-samples", ns.time_samples, 1, 1 << 20)
+    return H, N
+
+
 def harmonics_of(ns, system, forcing, e, multiple: int = 1) -> tuple[int, int]:
     """(H, N) of ``--harmonics`` (default 15) and ``--time-samples`` (default 4H) for a harmonic
     balance of period ``multiple`` (:mod:`symimpact.forced.orbits.harmonic_balance`), checked
     against the system and contact before anything runs; a refusal names the option as the
     command line spells it (``periodic`` and ``frf`` ``--method hb``)."""
     from ..errors import ParameterError
-    from ..forced.orbits.harmonic_balance import MAX_HARMONICS, _checked
-    from .loads import count
+    from ..forced.orbits.harmonic_balance import _checked
 
-    H = count("harmonics", "15" if ns.harmonics is None else ns.harmonics, 1, MAX_HARMONICS)
-    N = None if ns.time_samples is None else count("time-samples", ns.time_samples, 1, 1 << 20)
+    H, N = harmonic_counts(ns)
     try:
         H, N, _ = _checked(system, forcing, e, H, N, multiple)
     except ParameterError as exc:  # the API's names, as the command line spells its options

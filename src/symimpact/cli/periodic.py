@@ -313,12 +313,10 @@ def _structure_orbit(ns) -> None:
     )  # fmt: skip
     out = o.as_dict()
     if ns.method == "hb":
-        from ..forced.orbits.harmonic_balance import MAX_HARMONICS
         from ..forced.orbits.hb_structure import hb_structure_orbit
-        from .loads import count
+        from .common import harmonic_counts
 
-        H = count("harmonics", "15" if ns.harmonics is None else ns.harmonics, 1, MAX_HARMONICS)
-        N = None if ns.time_samples is None else count("time-samples", ns.time_samples, 1, 1 << 20)
+        H, N = harmonic_counts(ns)
         if N is not None and N < 2 * H + 1:
             raise ParameterError("time-samples", f"must be at least 2H + 1 = {2 * H + 1} for H = "
                                  f"{H} harmonics (fewer samples alias the series itself)")  # fmt: skip

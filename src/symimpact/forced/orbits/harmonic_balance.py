@@ -203,16 +203,22 @@ class Problem:
 
 
 def newton(problem: Problem, U: np.ndarray, w: float, scale: float,
-           tol: float = TOL, max_iter: int = MAX_NEWTON) -> tuple[np.ndarray, int, float]:  # fmt: skip
+           tol: float = TOL, max_iter: int = MAX_NEWTON,
+           least_squares: bool = False) -> tuple[np.ndarray, int, float]:  # fmt: skip
     """R(U, ω) = 0 at fixed ω by Newton's method from ``U``, each step halved until the residual
     falls (a contact's samples switch on and off between iterates, where a full step can
-    overshoot): (U, steps, last scaled step)."""
+    overshoot): (U, steps, last scaled step).  With ``least_squares`` each step is the shortest
+    least-squares one (a structure's damper mass with no sample in contact floats: its mean is
+    free, :mod:`symimpact.forced.orbits.hb_structure`)."""
     step = math.inf
     R, J, _, _ = problem.jacobian(U, w)
     norm = float(np.linalg.norm(R))
     for it in range(1, max_iter + 1):
         try:
-            dU = np.linalg.solve(J, -R)
+            if least_squares:
+                dU = np.linalg.lstsq(J, -R, rcond=1e-13)[0]
+            else:
+                dU = np.linalg.solve(J, -R)
         except np.linalg.LinAlgError:
             raise MethodNotApplicable(
                 "hb", "the balance's Jacobian is singular: a fold, or no time sample in contact "
@@ -239,33 +245,42 @@ def newton(problem: Problem, U: np.ndarray, w: float, scale: float,
     raise MethodNotApplicable("hb", f"Newton did not converge (last step {step:.1e} of the scale)")
 
 
+def law_at_samples(law: str, params: tuple, delta: np.ndarray, ddelta: np.ndarray):
+    """(F, ∂F/∂δ, ∂F/∂δ̇) of the compliant ``law`` ("linear", "cubic", "hertz",
+    "hunt-crossley") with its ``params`` (as Step 17's kernels take them) at the penetrations δ
+    and rates δ̇ of the samples: Step 17's derived bundle ``force_<law>_and_derivatives``
+    (:mod:`symimpact.generated.multi_harmonic_balance`) where δ > 0, zero between the walls
+    (the bundle is not evaluated there: δ^1.5 of a negative δ)."""
+    from ...generated import multi_harmonic_balance as step17
+
+    bundle = getattr(step17, f"force_{law.replace('-', '_')}_and_derivatives")
+    F, F_d, F_dd = np.zeros_like(delta), np.zeros_like(delta), np.zeros_like(delta)
+    on = delta > 0.0
+    if on.any():
+        F[on], F_d[on], F_dd[on] = bundle(delta[on], ddelta[on], *params)
+    return F, F_d, F_dd
+
+
 def _contact_force(system: ImpactSystem, contact: CompliantContact) -> Force:
     """f(q, q̇) of the impact damper for q = (x, y) (module text), with its derivatives: at the
     samples in contact the law's force and slopes, Step 17's derived bundle
     ``force_<law>_and_derivatives`` (:mod:`symimpact.generated.multi_harmonic_balance`), and
     Step 17's chain rule through z = y − x (``aft_sample_slopes``)."""
-    from ...generated import multi_harmonic_balance as step17
     from ..simulation import _law_parameters
 
     _law_parameters(system, contact.law)  # a law without its parameters: refused in one line
-    law = contact.law.replace("-", "_")
-    bundle = getattr(step17, f"force_{law}_and_derivatives")
     params = {
         "linear": (system.k1, system.c1),
         "cubic": (system.a, system.b, system.c1),
         "hertz": (system.k_hz, system.c1),
-        "hunt_crossley": (system.k_hz, 0.0 if contact.chi is None else float(contact.chi)),
-    }[law]
+        "hunt-crossley": (system.k_hz, 0.0 if contact.chi is None else float(contact.chi)),
+    }[contact.law]
     h = 0.5 * system.gap
 
     def force(q: np.ndarray, qd: np.ndarray):
         z, zd = q[1] - q[0], qd[1] - qd[0]
         s = np.where(z >= 0.0, 1.0, -1.0)
-        delta, ddelta = s * z - h, s * zd
-        on = delta > 0.0
-        F, F_d, F_dd = np.zeros_like(z), np.zeros_like(z), np.zeros_like(z)
-        if on.any():
-            F[on], F_d[on], F_dd[on] = bundle(delta[on], ddelta[on], *params)
+        F, F_d, F_dd = law_at_samples(contact.law, params, s * z - h, s * zd)
         f = np.stack([s * F, -s * F])  # on M, on m
         # ∂(−sF)/∂z = −F_δ and ∂(−sF)/∂ż = −F_δ̇ on either wall (s² = 1); z = y − x
         fq = np.stack([[-F_d, F_d], [F_d, -F_d]])

@@ -26,18 +26,17 @@ from typing import Any
 import numpy as np
 
 from ..._threads import on_one_blas_thread
-from ...errors import MethodNotApplicable, ParameterError
+from ...errors import ParameterError
 from ...model import checks
 from ...model.units import positive_float, si_float
 from .harmonic_balance import (
     DEFAULT_SAMPLES_PER_HARMONIC,
-    HALVINGS,
     MAX_HARMONICS,
-    MAX_NEWTON,
-    TOL,
     Basis,
     Problem,
     _amplitude,
+    law_at_samples,
+    newton,
 )
 
 
@@ -65,40 +64,33 @@ class HBStructureOrbit:
                 "q": self.q.tolist(), "y": self.y.tolist()}  # fmt: skip
 
 
-def _law(d: Any) -> tuple[Any, tuple[float, ...]]:
-    """Step 17's bundle of damper ``d``'s law and its parameters."""
-    from ...generated import multi_harmonic_balance as step17
-
+def _params(d: Any) -> tuple[float, ...]:
+    """Damper ``d``'s law parameters as Step 17's kernels take them; a rigid damper refused."""
     if d.rigid:
         raise ParameterError(f"dampers.{d.name}", "harmonic balance needs a compliant contact "
                              "law (linear, hertz, hunt-crossley): a rigid impact has no force "
                              "to balance")  # fmt: skip
-    params = {"linear": (d.k1, d.c1), "hertz": (d.k_hz, d.c1),
-              "hunt-crossley": (d.k_hz, d.chi)}[d.contact]  # fmt: skip
-    return getattr(step17, f"force_{d.contact.replace('-', '_')}_and_derivatives"), params
+    return {"linear": (d.k1, d.c1), "hertz": (d.k_hz, d.c1),
+            "hunt-crossley": (d.k_hz, d.chi)}[d.contact]  # fmt: skip
 
 
 def _force(structure: Any, dampers: Any):
     """f(q, q̇) → (f, ∂f/∂q, ∂f/∂q̇) on (modes, dampers) (module text)."""
     N, K = len(structure.modes), len(dampers)
     shapes = structure.shapes([d.at for d in dampers])  # (K, N)
-    laws = [_law(d) for d in dampers]
+    params = [_params(d) for d in dampers]
 
     def force(q: np.ndarray, qd: np.ndarray):
         S = q.shape[1]
         f = np.zeros((N + K, S))
         fq = np.zeros((N + K, N + K, S))
         fv = np.zeros((N + K, N + K, S))
-        for k, (d, (bundle, params)) in enumerate(zip(dampers, laws, strict=True)):
+        for k, (d, p) in enumerate(zip(dampers, params, strict=True)):
             phi = shapes[k]
             z = q[N + k] - phi @ q[:N]
             zd = qd[N + k] - phi @ qd[:N]
             s = np.where(z >= 0.0, 1.0, -1.0)
-            delta, ddelta = s * z - 0.5 * d.gap, s * zd
-            on = delta > 0.0
-            F, F_d, F_dd = np.zeros(S), np.zeros(S), np.zeros(S)
-            if on.any():
-                F[on], F_d[on], F_dd[on] = bundle(delta[on], ddelta[on], *params)
+            F, F_d, F_dd = law_at_samples(d.contact, p, s * z - 0.5 * d.gap, s * zd)
             f[:N] += np.outer(phi, s * F)
             f[N + k] -= s * F
             for g, out in ((F_d, fq), (F_dd, fv)):
@@ -109,34 +101,6 @@ def _force(structure: Any, dampers: Any):
         return f, fq, fv
 
     return force
-
-
-def _newton(problem: Problem, U: np.ndarray, w: float, scale: float) -> tuple[np.ndarray, int]:
-    """R(U, ω) = 0 by Newton's method, each step the least-squares one (a floating mass's mean
-    is free) and halved until the residual falls."""
-    R, J, _, _ = problem.jacobian(U, w)
-    norm = float(np.linalg.norm(R))
-    for it in range(1, MAX_NEWTON + 1):
-        dU = np.linalg.lstsq(J, -R, rcond=1e-13)[0]
-        step = float(np.max(np.abs(dU))) / scale
-        if not math.isfinite(step):
-            break
-        lam = 1.0
-        for _ in range(HALVINGS):
-            trial = U + lam * dU
-            norm_t = float(np.linalg.norm(problem.residual(trial, w)))
-            if norm_t < norm or step < TOL:
-                break
-            lam *= 0.5
-        else:
-            raise MethodNotApplicable("hb", "Newton stalled on the structure's balance (a "
-                                      "contact's onset between samples)")  # fmt: skip
-        U, norm = trial, norm_t
-        if step < TOL:
-            return U, it
-        R, J, _, _ = problem.jacobian(U, w)
-    raise MethodNotApplicable("hb", f"Newton did not converge on the structure's balance in "
-                              f"{MAX_NEWTON} steps")  # fmt: skip
 
 
 def _settled_start(
@@ -218,10 +182,10 @@ def hb_structure_orbit(structure: Any, dampers: Any, force_at: str, F0: Any, ome
         U = np.asarray(start, dtype=float).ravel()
         if U.shape != ((n_modes + K) * m,):
             raise ParameterError("start", f"must hold {(n_modes + K) * m} coefficients")
-        U, it = _newton(problem, U, W, gaps)
+        U, it, _ = newton(problem, U, W, gaps, least_squares=True)
     else:
         U = _settled_start(structure, dampers, force_at, F, W, phi0, problem)
-        U, it = _newton(problem, U, W, gaps)
+        U, it, _ = newton(problem, U, W, gaps, least_squares=True)
     coeffs = U.reshape(n_modes + K, m)
     amplitudes = {p: _amplitude(basis, structure.shapes([p])[0] @ coeffs[:n_modes])
                   for p in structure.points}  # fmt: skip
