@@ -53,6 +53,7 @@ The curve over a band beside the exact one, and the comparison of the two, are
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -101,7 +102,10 @@ class Basis:
     D: np.ndarray = field(repr=False)
 
     @classmethod
+    @functools.lru_cache(maxsize=64)
     def of(cls, H: int, N: int) -> Basis:
+        """The basis of ``H`` harmonics at ``N`` samples, made once for each (H, N) (a curve asks
+        for it at each orbit) and shared: its matrices are read-only."""
         theta = 2.0 * math.pi * np.arange(N) / N
         n = 2 * H + 1
         E, Et, P, D = np.zeros((N, n)), np.zeros((N, n)), np.zeros((n, N)), np.zeros((n, n))
@@ -113,6 +117,8 @@ class Basis:
             Et[:, 2 * k - 1], Et[:, 2 * k] = -k * s, k * c
             P[2 * k - 1, :], P[2 * k, :] = 2.0 * c / N, 2.0 * s / N
             D[2 * k - 1, 2 * k], D[2 * k, 2 * k - 1] = k, -k
+        for a in (E, Et, P, D):
+            a.setflags(write=False)
         return cls(H, N, E, Et, P, D)
 
     def at(self, coefficients: np.ndarray, theta: np.ndarray, derivative: int = 0) -> np.ndarray:
@@ -172,18 +178,17 @@ class Problem:
         L = self._linear(w)
         R = L @ U - self.F_ext.ravel() - (f @ b.P.T).ravel()
         m = 2 * b.H + 1
-        J = L.copy()
-        V = np.zeros((n * m, n * m))  # P diag(∂f/∂q̇) E, for Hill's Δ₁
         _, KC, KM = self._kron
-        dR_dw = (KC + 2.0 * w * KM) @ U
-        for i in range(n):
-            for j in range(n):
-                block_q = (b.P * fq[i, j]) @ b.E
-                block_v = (b.P * fv[i, j]) @ b.E
-                J[i * m : (i + 1) * m, j * m : (j + 1) * m] -= block_q + w * (b.P * fv[i, j]) @ b.Et
-                V[i * m : (i + 1) * m, j * m : (j + 1) * m] = block_v
-                # q̇ = ω·(E_θ Q): the force moves with ω through the speeds
-                dR_dw[i * m : (i + 1) * m] -= b.P @ (fv[i, j] * qt[j])
+
+        def blocks(g: np.ndarray, E: np.ndarray) -> np.ndarray:
+            """The n × n blocks P·diag(g[i, j])·E (each m × m) of each g as one (n m) × (n m)
+            matrix."""
+            return ((b.P * g[..., None, :]) @ E).swapaxes(-3, -2).reshape(*g.shape[:-3], n * m, n * m)
+
+        Bq, V = blocks(np.stack([fq, fv]), b.E)  # V = P diag(∂f/∂q̇) E, for Hill's Δ₁
+        J = L - Bq - w * blocks(fv, b.Et)
+        # q̇ = ω·(E_θ Q): the force moves with ω through the speeds
+        dR_dw = (KC + 2.0 * w * KM) @ U - (np.einsum("ijs,js->is", fv, qt) @ b.P.T).ravel()
         return R, J, dR_dw, V
 
     def exponents(self, U: np.ndarray, w: float) -> np.ndarray:
