@@ -326,13 +326,14 @@ def report_page(folder: Path) -> str:
 def write_pages(app=None) -> None:
     """Write every generated page (called at ``builder-inited``), on both cores.
 
-    The tutorial's commands and the forced checks (the first to compile the simulations' numba
-    code on a fresh machine, minutes) are written in a second process from the start, while this
-    one writes the pages of the derivations (the boards; the notebooks, placed from the boards'
-    notes of where each record was written, no step run again; the regenerating walk-through:
-    about two minutes together) and then the quick report: the build takes about the longer of
-    the two instead of their sum (CI's run of 2026-12-02: tutorial 507 s and report 84 s in the
-    second process, 306 s of derived pages in this one, before the notebooks were placed)."""
+    The tutorial's commands, the forced checks (the first to compile the simulations' numba
+    code on a fresh machine, minutes, unless CI's earlier stage compiled it) and then the quick
+    report are written in a second process from the start, while this one writes the pages of
+    the derivations (the boards; the notebooks, placed from the boards' notes of where each
+    record was written, no step run again; the regenerating walk-through: about 90 s together):
+    the build takes about the longer of the two instead of their sum.  (The report was written
+    here after the derived pages until 2026-12-07: 65 s of the build's 181 s, while the second
+    process had ended after its 15 s.)"""
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
@@ -342,7 +343,6 @@ def write_pages(app=None) -> None:
     with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
         simulated = pool.submit(_write_simulated_pages)
         _write_derived_pages()
-        _timed("report.md", lambda: report_page(OUT / "report"))
         simulated.result()
 
 
@@ -355,14 +355,15 @@ def _timed(name: str, text) -> None:
 
 
 def _write_simulated_pages() -> None:
-    """The pages computed with the runtime but the report: the command line, the tutorial,
-    the forced-response checks."""
+    """The pages computed with the runtime: the command line, the tutorial, the forced-response
+    checks and the quick report."""
     from forced_page import forced_checks_page
     from tutorial_page import tutorial_page
 
     _timed("cli.md", cli_page)
     _timed("tutorial.md", lambda: tutorial_page(OUT / "tutorial", _run_cli))
     _timed("forced.md", forced_checks_page)
+    _timed("report.md", lambda: report_page(OUT / "report"))
 
 
 def _write_derived_pages() -> None:

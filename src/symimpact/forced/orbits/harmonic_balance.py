@@ -183,7 +183,8 @@ class Problem:
         def blocks(g: np.ndarray, E: np.ndarray) -> np.ndarray:
             """The n × n blocks P·diag(g[i, j])·E (each m × m) of each g as one (n m) × (n m)
             matrix."""
-            return ((b.P * g[..., None, :]) @ E).swapaxes(-3, -2).reshape(*g.shape[:-3], n * m, n * m)
+            each = (b.P * g[..., None, :]) @ E  # (…, n, n, m, m)
+            return each.swapaxes(-3, -2).reshape(*g.shape[:-3], n * m, n * m)
 
         Bq, V = blocks(np.stack([fq, fv]), b.E)  # V = P diag(∂f/∂q̇) E, for Hill's Δ₁
         J = L - Bq - w * blocks(fv, b.Et)
