@@ -53,6 +53,7 @@ The curve over a band beside the exact one, and the comparison of the two, are
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from collections.abc import Callable
@@ -501,22 +502,34 @@ def _check_contacts_resolved(system, contact, res, N: int, nu: int) -> None:
             f"ms): the contact is stiffer than the sampling resolves; give at least {need} samples")  # fmt: skip
 
 
-def _orbit(problem: Problem, U: np.ndarray, omega: float, nu: int, it: int) -> HBOrbit:
+def _orbit(problem: Problem, U: np.ndarray, omega: float, nu: int, it: int,
+           stability: bool = True) -> HBOrbit:  # fmt: skip
+    """The balanced coefficients ``U`` at ``omega`` as an orbit, with Hill's stability (without
+    ``stability``: no exponents yet, for an arc that may be dropped; :func:`with_stability`
+    adds them)."""
     b = problem.basis
-    w = omega / nu
-    R = problem.residual(U, w)
-    lam = problem.exponents(U, w)
-    T = 2.0 * math.pi / w
-    mult = sorted((float(abs(np.exp(x * T))) for x in lam), reverse=True)
+    R = problem.residual(U, omega / nu)
     m = 2 * b.H + 1
     force = max(float(np.max(np.abs(problem.F_ext))), 1e-300)
-    return HBOrbit(
+    orbit = HBOrbit(
         omega=float(omega), subharmonic=nu, harmonics=b.H, samples=b.N,
         x=tuple(map(float, U[:m])), y=tuple(map(float, U[m:])),
-        amplitude=_amplitude(b, U[:m]), exponents=tuple(complex(x) for x in lam),
-        multipliers=tuple(mult), stable=all(v < 1.0 for v in mult), iterations=it,
-        residual=float(np.max(np.abs(R))) / force,
+        amplitude=_amplitude(b, U[:m]), exponents=(), multipliers=(), stable=False,
+        iterations=it, residual=float(np.max(np.abs(R))) / force,
     )  # fmt: skip
+    return with_stability(problem, orbit) if stability else orbit
+
+
+def with_stability(problem: Problem, orbit: HBOrbit) -> HBOrbit:
+    """``orbit`` with Hill's exponents, their multipliers' moduli (descending) and its
+    stability (all below 1), from ``problem``'s Jacobian (which the external force does not
+    enter)."""
+    w = orbit.omega / orbit.subharmonic
+    lam = problem.exponents(np.array(orbit.x + orbit.y), w)
+    T = 2.0 * math.pi / w
+    mult = sorted((float(abs(np.exp(x * T))) for x in lam), reverse=True)
+    return dataclasses.replace(orbit, exponents=tuple(complex(x) for x in lam),
+                               multipliers=tuple(mult), stable=all(v < 1.0 for v in mult))  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -558,11 +571,14 @@ def hb_curve(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, 
 
 @on_one_blas_thread
 def arc(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, first: HBOrbit,
-        band: tuple[float, float], direction: int, max_points: int = 2000) -> HBCurve:  # fmt: skip
+        band: tuple[float, float], direction: int, max_points: int = 2000,
+        stability: bool = True) -> HBCurve:  # fmt: skip
     """The branch through the balanced orbit ``first`` (of ``forcing`` at its Ω, whose phase
     the whole branch keeps), followed by pseudo-arclength continuation (module text) with Ω
     rising (``direction`` +1) or falling (−1) from it, until Ω leaves ``band`` (Ω₁, Ω₂) [rad/s]
-    or the corrector fails at the smallest step; ``first`` is the curve's first orbit."""
+    or the corrector fails at the smallest step; ``first`` is the curve's first orbit.  Without
+    ``stability`` the orbits after the first have no Hill exponents yet (a caller that may drop
+    the arc adds them with :func:`with_stability`)."""
     lo, hi = band
     H, N, nu = first.harmonics, first.samples, first.subharmonic
     problem = _problem(system, forcing.at(first.omega), contact, H, N, nu)
@@ -640,6 +656,6 @@ def arc(system: ImpactSystem, forcing: Forcing, contact: CompliantContact, first
         if not lo <= omega <= hi:
             break
         problem.F_ext = _forcing_terms(system, forcing.at(omega), H, nu)
-        orbits.append(_orbit(problem, Y[:-1] * s, omega, nu, 0))
+        orbits.append(_orbit(problem, Y[:-1] * s, omega, nu, 0, stability))
         ds = min(ds * 1.5, 0.05)
     return HBCurve(tuple(orbits), tuple(folds), ended)
